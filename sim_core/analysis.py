@@ -1,0 +1,92 @@
+"""Metrics read off a trajectory, and the outcome they imply (TARGETS.md: "stable" means no body
+but the feet (and hands where the skill calls for it) touches the ground, the pelvis stays above
+half its standing height, and the COM is still (< 0.1 m/s) at the end)."""
+from __future__ import annotations
+
+import numpy as np
+from scipy.spatial import ConvexHull, QhullError
+
+from sim_core.trajectory import Trajectory
+
+FOOT_BODIES = ("FOOTR", "FOOTL", "TOER", "TOEL")
+STILL_SPEED = 0.1            # m/s
+STEP_DISTANCE = 0.03         # m: a foot that slides or steps further than this has stepped
+CONTACT_HEIGHT = 0.005       # m: a contact site this close to the ground supports the body
+
+
+def distance_outside_polygon(point: np.ndarray, polygon_points: np.ndarray) -> float:
+    """Signed distance of a 2-D point outside the convex hull (negative = inside)."""
+    try:
+        hull = ConvexHull(polygon_points)
+    except (QhullError, ValueError):
+        return float("inf")
+    eq = hull.equations                      # rows: a x + b y + c <= 0 inside, (a, b) unit
+    return float(np.max(eq[:, :2] @ point + eq[:, 2]))
+
+
+def com_support_margins(traj: Trajectory, up: np.ndarray | None = None) -> np.ndarray:
+    """Per frame: how far the COM (projected along gravity) lies outside the support polygon."""
+    up = np.array([0, 0, 1.0]) if up is None else up
+    com = traj.arrays["com"]
+    ground = com[:, :2] - com[:, 2:3] * up[:2] / up[2]
+    pts = traj.arrays["support_points"]
+    out = np.empty(len(com))
+    for k in range(len(com)):
+        touching = pts[k, :, 2] < CONTACT_HEIGHT
+        out[k] = distance_outside_polygon(ground[k], pts[k, touching, :2]) if touching.sum() >= 3 else np.inf
+    return out
+
+
+def gravity_up(traj: Trajectory) -> np.ndarray:
+    g = np.array([0, 0, -9.80665])
+    world = traj.meta.get("world", {})
+    if world.get("slope"):
+        from sim_core.character.model import gravity_for_slope
+        g = gravity_for_slope(world["slope"], world["slope_axis"])
+    return -g / np.linalg.norm(g)
+
+
+def evaluate(traj: Trajectory, allowed_contacts=FOOT_BODIES) -> tuple[str, dict]:
+    a = traj.arrays
+    names = traj.body_names
+    pelvis = names.index("PELVIS")
+    allowed = np.array([n in allowed_contacts for n in names])
+    bad_contact = (a["ground_contact"] & ~allowed).any(axis=1)
+    hip_height = 0.5 * (a["body_pos"][:, names.index("ULEGR"), 2] + a["body_pos"][:, names.index("ULEGL"), 2])
+    stand_pelvis = a["body_pos"][0, pelvis, 2]
+    too_low = a["body_pos"][:, pelvis, 2] < 0.5 * stand_pelvis
+    fell_frames = np.nonzero(bad_contact | too_low)[0]
+    fell = len(fell_frames) > 0
+    feet = a["support_points"]
+    slide = np.linalg.norm(feet[:, :, :2] - feet[0:1, :, :2], axis=2).max()
+    lifted = (feet[:, :, 2] > 0.02).any()
+    margins = com_support_margins(traj, gravity_up(traj))
+    final_speed = float(np.linalg.norm(a["com_vel"][-1]))
+    hands = [names.index("HANDR"), names.index("HANDL")]
+    knees = [names.index("LLEGR"), names.index("LLEGL")]
+    hand_below_knee = float(np.max(a["body_pos"][:, knees, 2].mean(axis=1) - a["body_pos"][:, hands, 2].mean(axis=1)))
+    weight = 9.80665 * float(traj.meta.get("total_mass", 0) or 1.0)
+    metrics = {
+        "fell": bool(fell),
+        "fall_time": float(a["time"][fell_frames[0]]) if fell else None,
+        "stepped": bool(slide > STEP_DISTANCE or lifted),
+        "max_foot_slide": float(slide),
+        "com_outside_support_max": float(np.max(margins)),
+        "com_inside_support_throughout": bool(np.all(margins <= 0.0)),
+        "min_pelvis_height": float(np.min(hip_height)),
+        "final_pelvis_height": float(hip_height[-1]),
+        "final_com_speed": final_speed,
+        "max_hand_below_knee": hand_below_knee,
+        "peak_grf": float(np.max(np.linalg.norm(a["grf"], axis=1))),
+        "duration": float(a["time"][-1]),
+    }
+    del weight
+    if fell:
+        outcome = "fell"
+    elif metrics["stepped"]:
+        outcome = "stepped"
+    elif final_speed >= STILL_SPEED:
+        outcome = "not_still"
+    else:
+        outcome = "success"
+    return outcome, metrics

@@ -1,0 +1,77 @@
+"""Mid-level control: behaviours are named state machines with a parameter schema, found by a
+registry (like Rigify's rig types). A behaviour reads the measured state and sets servo targets
+and gains; it never applies forces or sets positions."""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import ClassVar
+
+import mujoco
+import numpy as np
+
+from sim_core.character.spec import CharacterSpec
+from sim_core.control.servo import ServoBank
+from sim_core.errors import UnknownNameError
+from sim_core.schema import Schema
+
+_REGISTRY: dict[str, type["Behaviour"]] = {}
+
+
+def register(cls: type["Behaviour"]) -> type["Behaviour"]:
+    _REGISTRY[cls.name] = cls
+    return cls
+
+
+def behaviour_class(name: str) -> type["Behaviour"]:
+    _load_builtin()
+    try:
+        return _REGISTRY[name]
+    except KeyError:
+        raise UnknownNameError(f"unknown behaviour {name!r}; available: {', '.join(sorted(_REGISTRY))}") from None
+
+
+def available_behaviours() -> list[str]:
+    _load_builtin()
+    return sorted(_REGISTRY)
+
+
+def _load_builtin() -> None:
+    from sim_core.control import balance  # noqa: F401  (registers itself)
+
+
+@dataclass
+class ControlContext:
+    model: mujoco.MjModel
+    data: mujoco.MjData
+    character: CharacterSpec
+    servos: ServoBank
+
+
+class Behaviour:
+    name: ClassVar[str]
+    summary: ClassVar[str]
+    schema: ClassVar[Schema]
+    default_duration: ClassVar[float] = 5.0
+
+    def __init__(self, params: dict[str, float], ctx: ControlContext):
+        self.params = params
+        self.ctx = ctx
+        self.phase_events: list[tuple[float, str]] = []
+
+    def start(self, t: float) -> None:
+        """Called once before the first physics step."""
+
+    def update(self, t: float) -> None:
+        """Called at the control rate; sets servo targets, offsets and gains."""
+        raise NotImplementedError
+
+    def event(self, t: float, name: str) -> None:
+        self.phase_events.append((float(t), name))
+
+    def check_feasible(self) -> None:
+        """Raise ParameterError before simulating if the request cannot be done."""
+
+
+def angle_offsets(values: dict[str, float], servos: ServoBank) -> tuple[np.ndarray, np.ndarray]:
+    names = list(values)
+    return servos.indices(names), np.array([values[n] for n in names])

@@ -1,0 +1,73 @@
+"""The replay log of everything a run changed besides the state: model parameters the controller
+set (servo gains, gravity of a tilting ground) and the applied push forces. Each edit is
+(tick, field, flat index, value); replay re-applies them before the same tick's physics steps."""
+from __future__ import annotations
+
+import numpy as np
+
+# Model/data arrays a run may edit, by name. Replay looks them up with getattr.
+EDITABLE_FIELDS = ("actuator_gainprm", "actuator_biasprm", "opt.gravity", "xfrc_applied")
+
+
+class EditLog:
+    def __init__(self):
+        self.tick = 0
+        self._ticks: list[int] = []
+        self._fields: list[int] = []
+        self._indices: list[int] = []
+        self._values: list[float] = []
+
+    def set_array(self, array: np.ndarray, field: str, rows: np.ndarray, col: int, values: np.ndarray) -> None:
+        """array[rows, col] = values, logged (``array`` must be the live model/data array)."""
+        array[rows, col] = values
+        ncol = array.shape[1]
+        code = EDITABLE_FIELDS.index(field)
+        for r, v in zip(np.atleast_1d(rows), np.atleast_1d(values)):
+            self._append(code, int(r) * ncol + col, float(v))
+
+    def set_flat(self, array: np.ndarray, field: str, values: np.ndarray) -> None:
+        """array[:] = values (flattened), logging only the entries that change."""
+        flat = array.reshape(-1)
+        new = np.asarray(values, dtype=float).reshape(-1)
+        changed = np.nonzero(flat != new)[0]
+        code = EDITABLE_FIELDS.index(field)
+        for i in changed:
+            self._append(code, int(i), float(new[i]))
+        flat[:] = new
+
+    def _append(self, code: int, index: int, value: float) -> None:
+        self._ticks.append(self.tick)
+        self._fields.append(code)
+        self._indices.append(index)
+        self._values.append(value)
+
+    def arrays(self) -> dict[str, np.ndarray]:
+        return {"edit_tick": np.array(self._ticks, dtype=np.int64),
+                "edit_field": np.array(self._fields, dtype=np.int64),
+                "edit_index": np.array(self._indices, dtype=np.int64),
+                "edit_value": np.array(self._values, dtype=np.float64)}
+
+
+def resolve_field(model, data, field: str) -> np.ndarray:
+    if field == "opt.gravity":
+        return model.opt.gravity
+    if field == "xfrc_applied":
+        return data.xfrc_applied
+    return getattr(model, field)
+
+
+class EditPlayer:
+    """Re-applies a recorded edit log tick by tick."""
+
+    def __init__(self, model, data, arrays: dict[str, np.ndarray]):
+        self.targets = [resolve_field(model, data, f).reshape(-1) for f in EDITABLE_FIELDS]
+        self.ticks, self.fields = arrays["edit_tick"], arrays["edit_field"]
+        self.indices, self.values = arrays["edit_index"], arrays["edit_value"]
+        self.cursor = 0
+
+    def apply(self, tick: int) -> None:
+        n = len(self.ticks)
+        while self.cursor < n and self.ticks[self.cursor] == tick:
+            k = self.cursor
+            self.targets[self.fields[k]][self.indices[k]] = self.values[k]
+            self.cursor += 1

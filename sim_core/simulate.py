@@ -1,0 +1,223 @@
+"""The simulation loop: physics at a fixed 1 ms step, the behaviour at the control rate, frames
+recorded into a Trajectory together with the log that replays it bit for bit.
+
+Per control tick, in this order (replay follows the same order):
+  1. apply the edit log of this tick (pushes, gains, gravity) - in a live run, written by the
+     push schedule and the behaviour as they act;
+  2. fresh kinematics (positions, COM, COM velocity) of the current state;
+  3. record a frame;
+  4. the behaviour sets servo targets -> control vector (live run) / read it from the log (replay);
+  5. ``steps_per_tick`` physics steps.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from typing import Callable
+
+import mujoco
+import numpy as np
+
+from sim_core.analysis import evaluate
+from sim_core.character.model import World, compile_model, set_standing_pose
+from sim_core.character.spec import CharacterSpec, load_character
+from sim_core.control.behaviour import Behaviour, ControlContext, behaviour_class
+from sim_core.control.servo import ServoBank
+from sim_core.edit_log import EDITABLE_FIELDS, EditLog, EditPlayer
+from sim_core.errors import ParameterError, SimAthleticsError
+from sim_core.perturbation import Push, PushSchedule
+from sim_core.trajectory import Trajectory
+
+CONTROL_RATE = 200.0          # Hz
+STATE_SPEC = mujoco.mjtState.mjSTATE_INTEGRATION
+
+
+class Cancelled(SimAthleticsError):
+    """The user cancelled a run; nothing was written."""
+
+
+@dataclass
+class RunRequest:
+    behaviour: str
+    character: str | CharacterSpec = "man"
+    params: dict = field(default_factory=dict)
+    duration: float | None = None
+    pushes: list[Push] = field(default_factory=list)
+    world: World = field(default_factory=World)
+    strength: str | float = "human"
+
+    def validated(self) -> tuple[CharacterSpec, type[Behaviour], dict, float]:
+        character = self.character if isinstance(self.character, CharacterSpec) else load_character(self.character)
+        cls = behaviour_class(self.behaviour)
+        params = cls.schema.validate(self.params)
+        duration = cls.default_duration if self.duration is None else self.duration
+        if not (isinstance(duration, (int, float)) and math.isfinite(duration) and 0.01 <= duration <= 3600):
+            raise ParameterError(f"duration={duration!r} s is out of range; allowed range is [0.01, 3600] s")
+        if not (self.strength in ("human", "unlimited") or
+                (isinstance(self.strength, (int, float)) and 0.1 <= self.strength <= 10)):
+            raise ParameterError(f"strength={self.strength!r} must be 'human', 'unlimited' or a factor in [0.1, 10]")
+        for push in self.pushes:
+            push.check()
+        return character, cls, params, float(duration)
+
+
+class Recorder:
+    """Preallocated frame buffers; ``record`` copies the current state in."""
+
+    def __init__(self, model: mujoco.MjModel, n_frames: int, site_ids: np.ndarray):
+        self.model = model
+        self.bodies = np.arange(1, model.nbody)
+        self.root = 1
+        self.site_ids = site_ids
+        self.ground = model.geom("ground").id
+        nb = len(self.bodies)
+        self.buf = {
+            "time": np.zeros(n_frames), "qpos": np.zeros((n_frames, model.nq)),
+            "qvel": np.zeros((n_frames, model.nv)), "body_pos": np.zeros((n_frames, nb, 3)),
+            "body_quat": np.zeros((n_frames, nb, 4)), "com": np.zeros((n_frames, 3)),
+            "com_vel": np.zeros((n_frames, 3)), "grf": np.zeros((n_frames, 3)),
+            "ground_contact": np.zeros((n_frames, nb), dtype=bool),
+            "support_points": np.zeros((n_frames, len(site_ids), 3)), "push_force": np.zeros((n_frames, 3)),
+        }
+        self.n = 0
+
+    def record(self, data: mujoco.MjData) -> None:
+        k, b = self.n, self.buf
+        b["time"][k] = data.time
+        b["qpos"][k] = data.qpos
+        b["qvel"][k] = data.qvel
+        b["body_pos"][k] = data.xpos[self.bodies]
+        b["body_quat"][k] = data.xquat[self.bodies]
+        b["com"][k] = data.subtree_com[self.root]
+        b["com_vel"][k] = data.subtree_linvel[self.root]
+        push = data.xfrc_applied[:, :3].sum(axis=0)
+        b["push_force"][k] = push
+        # cfrc_ext is from the last physics step (contact + applied forces on every body)
+        b["grf"][k] = data.cfrc_ext[self.bodies, 3:].sum(axis=0) - push
+        if data.ncon:
+            geoms = data.contact.geom
+            on_ground = (geoms == self.ground).any(axis=1)
+            others = np.where(geoms[on_ground, 0] == self.ground, geoms[on_ground, 1], geoms[on_ground, 0])
+            touched = self.model.geom_bodyid[others] - 1
+            b["ground_contact"][k, touched] = True
+        b["support_points"][k] = data.site_xpos[self.site_ids]
+        self.n += 1
+
+    def arrays(self) -> dict[str, np.ndarray]:
+        return {name: array[: self.n] for name, array in self.buf.items()}
+
+
+def refresh_kinematics(model: mujoco.MjModel, data: mujoco.MjData) -> None:
+    """Contact forces of the last physics step (cfrc_ext), then positions, COM and COM velocity
+    of the current state."""
+    mujoco.mj_rnePostConstraint(model, data)
+    mujoco.mj_kinematics(model, data)
+    mujoco.mj_comPos(model, data)
+    mujoco.mj_subtreeVel(model, data)
+
+
+def run(request: RunRequest, progress: Callable[[float], None] | None = None,
+        cancelled: Callable[[], bool] | None = None) -> Trajectory:
+    """Validate, simulate and return the trajectory (nothing is written to disk here)."""
+    character, cls, params, duration = request.validated()
+    model, xml = compile_model(character, request.world, request.strength)
+    data = mujoco.MjData(model)
+    set_standing_pose(model, data, character)
+    data.ctrl[:] = data.qpos[[model.jnt_qposadr[model.actuator_trnid[i, 0]] for i in range(model.nu)]]
+    mujoco.mj_forward(model, data)
+
+    log = EditLog()
+    servos = ServoBank(model, data, character, log)
+    behaviour = cls(params, ControlContext(model, data, character, servos))
+    behaviour.check_feasible()
+
+    steps_per_tick = int(round(1.0 / (CONTROL_RATE * model.opt.timestep)))
+    tick_time = steps_per_tick * model.opt.timestep
+    n_ticks = int(math.ceil(duration / tick_time - 1e-9))
+    initial_state = np.zeros(mujoco.mj_stateSize(model, STATE_SPEC))
+    mujoco.mj_getState(model, data, initial_state, STATE_SPEC)
+    mujoco.mj_setState(model, data, initial_state, STATE_SPEC)   # replay starts from exactly this
+    support_sites = behaviour_support_sites(model)
+    recorder = Recorder(model, n_ticks + 1, support_sites)
+    control = np.zeros((n_ticks, model.nu))
+    pushes = PushSchedule(request.pushes, model, data, log)
+
+    for tick in range(n_ticks):
+        log.tick = tick
+        t = data.time
+        pushes.apply(t, 0.5 * tick_time)
+        refresh_kinematics(model, data)
+        if tick == 0:
+            behaviour.start(t)
+        recorder.record(data)
+        behaviour.update(t)
+        servos.write(t)
+        control[tick] = data.ctrl
+        mujoco.mj_step(model, data, nstep=steps_per_tick)
+        if progress and tick % 200 == 0:
+            progress(tick / n_ticks)
+        if cancelled and tick % 50 == 0 and cancelled():
+            raise Cancelled("run cancelled; nothing was written")
+    log.tick = n_ticks
+    refresh_kinematics(model, data)
+    recorder.record(data)
+
+    arrays = recorder.arrays()
+    arrays.update(log.arrays())
+    arrays["initial_state"] = initial_state
+    arrays["control"] = control
+    arrays["body_names"] = np.array([model.body(i).name for i in recorder.bodies])
+    meta = {
+        "model_xml": xml, "character": character.name, "behaviour": cls.name, "params": params,
+        "duration": duration, "pushes": [p.to_dict() for p in request.pushes],
+        "world": {"slope": request.world.slope, "slope_axis": request.world.slope_axis,
+                  "extra_mass": request.world.extra_mass},
+        "strength": request.strength, "total_mass": float(model.body_subtreemass[1]), "timestep": model.opt.timestep, "steps_per_tick": steps_per_tick,
+        "control_rate": CONTROL_RATE, "phase_events": behaviour.phase_events,
+        "edit_fields": list(EDITABLE_FIELDS), "state_spec": int(STATE_SPEC),
+        "dof_names": [model.actuator(i).name for i in range(model.nu)],
+    }
+    trajectory = Trajectory(arrays, meta)
+    outcome, metrics = evaluate(trajectory)
+    trajectory.meta["outcome"] = outcome
+    trajectory.meta["metrics"] = metrics
+    if progress:
+        progress(1.0)
+    return trajectory
+
+
+def behaviour_support_sites(model: mujoco.MjModel) -> np.ndarray:
+    feet = {model.body(n).id for n in ("FOOTR", "FOOTL", "TOER", "TOEL")}
+    return np.array([i for i in range(model.nsite) if model.site_bodyid[i] in feet])
+
+
+def replay(trajectory: Trajectory) -> Trajectory:
+    """Re-run the logged controls and edits on the logged model and initial state."""
+    meta = trajectory.meta
+    model = mujoco.MjModel.from_xml_string(meta["model_xml"])
+    data = mujoco.MjData(model)
+    mujoco.mj_setState(model, data, trajectory.arrays["initial_state"], meta["state_spec"])
+    player = EditPlayer(model, data, trajectory.arrays)
+    control = trajectory.arrays["control"]
+    steps = meta["steps_per_tick"]
+    recorder = Recorder(model, len(control) + 1, behaviour_support_sites(model))
+    for tick in range(len(control)):
+        player.apply(tick)
+        refresh_kinematics(model, data)
+        recorder.record(data)
+        data.ctrl[:] = control[tick]
+        mujoco.mj_step(model, data, nstep=steps)
+    player.apply(len(control))
+    refresh_kinematics(model, data)
+    recorder.record(data)
+    return Trajectory(recorder.arrays(), dict(meta))
+
+
+def largest_difference(a: Trajectory, b: Trajectory) -> float:
+    worst = 0.0
+    for name in ("time", "qpos", "qvel", "body_pos", "body_quat", "com", "com_vel", "grf", "support_points"):
+        x, y = a.arrays[name], b.arrays[name]
+        if x.shape != y.shape:
+            return math.inf
+        worst = max(worst, float(np.max(np.abs(x - y))) if x.size else 0.0)
+    return worst
