@@ -25,6 +25,9 @@ from sim_core.schema import Parameter, Schema
 SPINE_Y = ("spine_l3_y", "spine_l1_y", "spine_t7_y", "spine_t4_y")
 SPINE_SHARE = 0.25           # share of the torso pitch taken by the spine (the rest by the hips)
 STANDING_KNEE_FLEX = 0.10    # rad: knees are never locked straight (law of cosines is singular there)
+CROUCH_LEAN = 0.3          # pelvis pitch per radian of knee flexion: lean into a crouch to keep
+                           # the COM over the feet when the ankles reach their dorsiflexion limit
+HIP_SHARE = 0.5             # hip offset per ankle offset (eqs. 7.1-7.2: half the ankle's)
 
 
 class LegGeometry:
@@ -79,11 +82,14 @@ class Balance(Behaviour):
         Parameter("hold_time", "s", 1.0, 0.0, 600.0, "time to hold the posture before returning"),
         Parameter("return_to_stand", "bool", 1.0, 0.0, 1.0, "1 = return to standing after the hold"),
         Parameter("arm_abduction", "rad", 0.0, -0.5, 1.5, "extra sideways raise of both arms"),
-        Parameter("arm_flexion", "rad", 0.0, -0.8, 2.5, "forward raise of both arms"),
+        Parameter("arm_flexion", "rad", 0.0, -0.8, 2.5,
+                  "forward raise of both arms from hanging (they follow the torso pitch)"),
         Parameter("elbow_flexion", "rad", 0.2, 0.0, 2.4, "elbow bend of both arms"),
         Parameter("head_pitch", "rad", 0.0, -0.8, 0.8, "head nod forward (+) or back (-)"),
         Parameter("com_kp", "rad/m", 4.0, 0.0, 20.0, "COM servo stiffness: ankle offset per metre of COM error (eq. 7.1)"),
         Parameter("com_kv", "rad s/m", 0.8, 0.0, 5.0, "COM servo damping: ankle offset per m/s of COM speed (eq. 7.1)"),
+        Parameter("height_kp", "rad/m", 10.0, 0.0, 20.0,
+                  "pelvis height servo: knee offset per metre of height error (corrects servo sag)"),
     )
 
     def __init__(self, params, ctx: ControlContext):
@@ -96,8 +102,10 @@ class Balance(Behaviour):
         self.i = {n: s.index[n] for n in s.names}
         self.pelvis = m.body("PELVIS").id
         self.feet = [m.body("FOOTR").id, m.body("FOOTL").id]
+        self.hips = [m.body("ULEGR").id, m.body("ULEGL").id]
         self.spine_idx = s.indices(SPINE_Y)
         self.base = ch.standing_pose.copy()
+        self.damping_ratio = s.default_kv / s.default_kp
         self.total_mass = float(m.body_subtreemass[self.pelvis])
         self.stand_height = 0.5 * (self.legs["R"].standing_hip_height() + self.legs["L"].standing_hip_height())
         self.posture_from = None
@@ -159,7 +167,7 @@ class Balance(Behaviour):
         mirror = {"r": 1.0, "l": -1.0}
         for s, sign in mirror.items():
             q[i[f"shoulder_{s}_x"]] = self.base[i[f"shoulder_{s}_x"]] - sign * p["arm_abduction"]
-            q[i[f"shoulder_{s}_z"]] = sign * p["arm_flexion"]
+            q[i[f"shoulder_{s}_z"]] = sign * (p["arm_flexion"] + torso_pitch)   # arms keep hanging
             q[i[f"elbow_{s}_z"]] = sign * p["elbow_flexion"]
         q[i["neck_c2_y"]] = p["head_pitch"]
         return q
@@ -193,19 +201,28 @@ class Balance(Behaviour):
         offset = servos.offset
         offset[:] = 0.0
         angles = servos.angles()
-        pelvis_pitch_goal = posture[1] * (1.0 - SPINE_SHARE)
+        velocities = servos.velocities()
+        knee_flex = 0.5 * (targets[i["knee_r_y"]] + targets[i["knee_l_y"]]) - STANDING_KNEE_FLEX
+        pelvis_pitch_goal = posture[1] * (1.0 - SPINE_SHARE) + CROUCH_LEAN * knee_flex
         pelvis_pitch = pitch_of(d.xmat[self.pelvis], up)
+        hip_height = 0.5 * (d.xpos[self.hips[0], 2] + d.xpos[self.hips[1], 2])
+        knee_offset = self.params["height_kp"] * (hip_height - posture[0])
         for k, side in enumerate("rl"):
+            offset[i[f"knee_{side}_y"]] = knee_offset
             foot = d.xmat[self.feet[k]]
             # ankles keep the feet flat (7.3-7.4) plus the COM servo offset
             ay, ax = i[f"ankle_{side}_y"], i[f"ankle_{side}_x"]
             targets[ay] = angles[ay] - pitch_of(foot, up)
             targets[ax] = angles[ax] - roll_of(foot, up)
-            offset[ay] = delta_x
-            offset[ax] = -delta_y
+            # the servo's damping acts on the ankle rate; shift it onto the foot's own rate so it
+            # does not drag the foot along when the shank rotates over it
+            foot_rate = d.cvel[self.feet[k], :3]
+            frame = foot.reshape(3, 3)
+            offset[ay] = delta_x + self.damping_ratio[ay] * (velocities[ay] - float(foot_rate @ frame[:, 1]))
+            offset[ax] = -delta_y + self.damping_ratio[ax] * (velocities[ax] - float(foot_rate @ frame[:, 0]))
             # hips hold the pelvis attitude; hip offsets are half the ankle's, opposite sign
             hy, hx = i[f"hip_{side}_y"], i[f"hip_{side}_x"]
             targets[hy] = angles[hy] + (pelvis_pitch - pelvis_pitch_goal)
-            offset[hy] = -0.5 * delta_x
-            offset[hx] = 0.5 * delta_y
+            offset[hy] = HIP_SHARE * delta_x
+            offset[hx] = -HIP_SHARE * delta_y
         servos.hold(targets, t)
