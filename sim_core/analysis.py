@@ -14,26 +14,30 @@ STEP_DISTANCE = 0.03         # m: a foot that slides or steps further than this 
 CONTACT_HEIGHT = 0.005       # m: a contact site this close to the ground supports the body
 
 
-def distance_outside_polygon(point: np.ndarray, polygon_points: np.ndarray) -> float:
-    """Signed distance of a 2-D point outside the convex hull (negative = inside)."""
-    try:
-        hull = ConvexHull(polygon_points)
-    except (QhullError, ValueError):
-        return float("inf")
-    eq = hull.equations                      # rows: a x + b y + c <= 0 inside, (a, b) unit
-    return float(np.max(eq[:, :2] @ point + eq[:, 2]))
-
-
 def com_support_margins(traj: Trajectory, up: np.ndarray | None = None) -> np.ndarray:
-    """Per frame: how far the COM (projected along gravity) lies outside the support polygon."""
+    """Per frame: how far the COM (projected along gravity) lies outside the support polygon
+    (inf when fewer than three foot sites touch). A hull is reused while the same sites touch
+    and none has moved more than 1 mm."""
     up = np.array([0, 0, 1.0]) if up is None else up
     com = traj.arrays["com"]
     ground = com[:, :2] - com[:, 2:3] * up[:2] / up[2]
     pts = traj.arrays["support_points"]
-    out = np.empty(len(com))
+    touching_all = pts[:, :, 2] < CONTACT_HEIGHT
+    out = np.full(len(com), np.inf)
+    cached_mask, cached_pts, equations = None, None, None
     for k in range(len(com)):
-        touching = pts[k, :, 2] < CONTACT_HEIGHT
-        out[k] = distance_outside_polygon(ground[k], pts[k, touching, :2]) if touching.sum() >= 3 else np.inf
+        touching = touching_all[k]
+        if touching.sum() < 3:
+            continue
+        p = pts[k, touching, :2]
+        if (cached_mask is None or not np.array_equal(touching, cached_mask)
+                or np.abs(p - cached_pts).max() > 1e-3):
+            try:
+                equations = ConvexHull(p).equations
+            except (QhullError, ValueError):
+                continue
+            cached_mask, cached_pts = touching, p
+        out[k] = float(np.max(equations[:, :2] @ ground[k] + equations[:, 2]))
     return out
 
 
@@ -65,7 +69,6 @@ def evaluate(traj: Trajectory, allowed_contacts=FOOT_BODIES) -> tuple[str, dict]
     hands = [names.index("HANDR"), names.index("HANDL")]
     knees = [names.index("LLEGR"), names.index("LLEGL")]
     hand_below_knee = float(np.max(a["body_pos"][:, knees, 2].mean(axis=1) - a["body_pos"][:, hands, 2].mean(axis=1)))
-    weight = 9.80665 * float(traj.meta.get("total_mass", 0) or 1.0)
     metrics = {
         "fell": bool(fell),
         "fall_time": float(a["time"][fell_frames[0]]) if fell else None,
@@ -80,7 +83,6 @@ def evaluate(traj: Trajectory, allowed_contacts=FOOT_BODIES) -> tuple[str, dict]
         "peak_grf": float(np.max(np.linalg.norm(a["grf"], axis=1))),
         "duration": float(a["time"][-1]),
     }
-    del weight
     if fell:
         outcome = "fell"
     elif metrics["stepped"]:

@@ -93,7 +93,8 @@ class Recorder:
         push = data.xfrc_applied[:, :3].sum(axis=0)
         b["push_force"][k] = push
         # cfrc_ext is from the last physics step (contact + applied forces on every body)
-        b["grf"][k] = data.cfrc_ext[self.bodies, 3:].sum(axis=0) - push
+        if k:                               # no physics step has produced a contact force at frame 0
+            b["grf"][k] = data.cfrc_ext[self.bodies, 3:].sum(axis=0) - push
         if data.ncon:
             geoms = data.contact.geom
             on_ground = (geoms == self.ground).any(axis=1)

@@ -51,7 +51,7 @@ class Trajectory:
         """Write atomically: a failed save leaves no partial file."""
         path = Path(path)
         path.parent.mkdir(parents=True, exist_ok=True)
-        fd, tmp = tempfile.mkstemp(dir=path.parent, suffix=".npz.tmp")
+        fd, tmp = tempfile.mkstemp(dir=path.parent, suffix=".tmp.npz")
         os.close(fd)
         try:
             meta = dict(self.meta, format=FORMAT, version=VERSION)

@@ -83,7 +83,7 @@ WOMAN_STRENGTH_RATIO = 0.65                            # [MILLER93]
 # Servo proportional gains (N m/rad) for the man; kv = KV_RATIO * kp. Chosen empirically, as
 # in [W98 §3.2]: stiff enough to hold the standing pose under gravity with < 2 deg error.
 KP_MAN = {
-    "spine": 2000, "neck_c2": 150, "hip": 1200, "knee": 1200, "ankle": 800, "mt": 100,
+    "spine": 2000, "neck_c2": 150, "hip": 1200, "knee": 1200, "ankle": 800, "mt": 800,
     "clav": 300, "shoulder": 250, "elbow": 80, "wrist": 15,
 }
 KV_RATIO = 0.08

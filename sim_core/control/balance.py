@@ -17,17 +17,20 @@ import math
 import numpy as np
 
 from sim_core.control.behaviour import Behaviour, ControlContext, register
-from sim_core.control.measure import SupportGeometry, pitch_of, roll_of, yaw_of
-from sim_core.control.servo import hermite_blend
+from sim_core.control.crouch import CrouchTable, arm_reach
+from sim_core.control.measure import SupportGeometry
+from sim_core.control.servo import hermite_scalar
 from sim_core.errors import ParameterError
 from sim_core.schema import Parameter, Schema
 
 SPINE_Y = ("spine_l3_y", "spine_l1_y", "spine_t7_y", "spine_t4_y")
 SPINE_SHARE = 0.25           # share of the torso pitch taken by the spine (the rest by the hips)
 STANDING_KNEE_FLEX = 0.10    # rad: knees are never locked straight (law of cosines is singular there)
-CROUCH_LEAN = 0.3          # pelvis pitch per radian of knee flexion: lean into a crouch to keep
-                           # the COM over the feet when the ankles reach their dorsiflexion limit
-HIP_SHARE = 0.5             # hip offset per ankle offset (eqs. 7.1-7.2: half the ankle's)
+CROUCH_TABLE_ROWS = 6      # balanced crouch poses solved between standing and the requested height
+HIP_SHARE = 0.5
+ANKLE_AUTHORITY = 1.0      # share of the torque the foot can take (COP at its edge) used by the ankles
+TOE_SHARE = 1.0            # where between ball (0) and toe tip (1) the front edge of the foot is taken
+EXCESS_TO_HIP = 2.0        # hip flexion per radian of COM demand the ankles cannot deliver
 
 
 class LegGeometry:
@@ -87,7 +90,7 @@ class Balance(Behaviour):
         Parameter("elbow_flexion", "rad", 0.2, 0.0, 2.4, "elbow bend of both arms"),
         Parameter("head_pitch", "rad", 0.0, -0.8, 0.8, "head nod forward (+) or back (-)"),
         Parameter("com_kp", "rad/m", 4.0, 0.0, 20.0, "COM servo stiffness: ankle offset per metre of COM error (eq. 7.1)"),
-        Parameter("com_kv", "rad s/m", 0.8, 0.0, 5.0, "COM servo damping: ankle offset per m/s of COM speed (eq. 7.1)"),
+        Parameter("com_kv", "rad s/m", 2.0, 0.0, 5.0, "COM servo damping: ankle offset per m/s of COM speed (eq. 7.1)"),
         Parameter("height_kp", "rad/m", 10.0, 0.0, 20.0,
                   "pelvis height servo: knee offset per metre of height error (corrects servo sag)"),
     )
@@ -99,16 +102,28 @@ class Balance(Behaviour):
         self.legs = {s: LegGeometry(ch, s) for s in "RL"}
         self.support = SupportGeometry(m)
         s = ctx.servos
-        self.i = {n: s.index[n] for n in s.names}
+        self.i = s.index
         self.pelvis = m.body("PELVIS").id
+        self.total_mass = float(m.body_subtreemass[self.pelvis])
         self.feet = [m.body("FOOTR").id, m.body("FOOTL").id]
         self.hips = [m.body("ULEGR").id, m.body("ULEGL").id]
         self.spine_idx = s.indices(SPINE_Y)
         self.base = ch.standing_pose.copy()
         self.damping_ratio = s.default_kv / s.default_kp
-        self.total_mass = float(m.body_subtreemass[self.pelvis])
+        self.side_index = [{f"{n}_{a}": s.index[f"{n}_{side}_{a}"] for n, a in
+                            (("knee", "y"), ("ankle", "y"), ("ankle", "x"), ("hip", "y"), ("hip", "x"))}
+                           for side in "rl"]
+        self._targets_key, self._targets = None, None
+        # ankle offset that puts the centre of pressure at the front (toe) / back (heel) edge
+        weight_per_foot = 0.5 * self.total_mass * float(np.linalg.norm(m.opt.gravity))
+        ankle = ch.joint_position("FOOTR")
+        sites = [c["pos"] for c in ch.body("FOOTR")["contacts"] + ch.body("TOER")["contacts"]]
+        front = TOE_SHARE * max(p[0] for p in sites) + (1 - TOE_SHARE) * ch.joint_position("TOER")[0] - ankle[0]
+        back = ankle[0] - min(p[0] for p in sites)
+        kp_ankle = ch.dofs[ch.dof_index["ankle_r_y"]].kp
+        self.ankle_limit_front = ANKLE_AUTHORITY * weight_per_foot * front / kp_ankle
+        self.ankle_limit_back = ANKLE_AUTHORITY * weight_per_foot * back / kp_ankle
         self.stand_height = 0.5 * (self.legs["R"].standing_hip_height() + self.legs["L"].standing_hip_height())
-        self.posture_from = None
         self.up = np.array([0.0, 0.0, 1.0])
 
     # ----------------------------------------------------------------- requests
@@ -138,13 +153,16 @@ class Balance(Behaviour):
         if t < t1:
             return stand
         if t < t2 or not p["return_to_stand"]:
-            return stand + (goal - stand) * float(hermite_blend(np.array((t - t1) / p["move_time"])))
+            return stand + (goal - stand) * hermite_scalar((t - t1) / p["move_time"])
         if t < t3:
             return goal
-        return goal + (stand - goal) * float(hermite_blend(np.array((t - t3) / p["move_time"])))
+        return goal + (stand - goal) * hermite_scalar((t - t3) / p["move_time"])
 
     def start(self, t: float) -> None:
         self.up = -self.ctx.model.opt.gravity / np.linalg.norm(self.ctx.model.opt.gravity)
+        goal = self.params["pelvis_height"] or self.stand_height
+        heights = np.linspace(goal, self.stand_height, CROUCH_TABLE_ROWS) if goal != self.stand_height else [goal]
+        self.crouch = CrouchTable(self.ctx.model, self.ctx.character, heights, self.stand_height)
         self.ctx.servos.hold(self.joint_targets(self.standing_posture()), t)
         self.event(t, "stand")
         p = self.params
@@ -159,70 +177,78 @@ class Balance(Behaviour):
         height, torso_pitch = posture[0], posture[1]
         q = self.base.copy()
         i, p = self.i, self.params
-        for side in "RL":
-            leg = self.legs[side]
-            s = side.lower()
-            q[i[f"knee_{s}_y"]] = leg.knee_angle_for(height - leg.ankle_height)
+        knee, _, _, self._crouch_pitch = self.crouch.at(height)
+        q[i["knee_r_y"]] = q[i["knee_l_y"]] = knee
+        reach = arm_reach(height, self.stand_height)
         q[self.spine_idx] = torso_pitch * SPINE_SHARE / len(SPINE_Y)
         mirror = {"r": 1.0, "l": -1.0}
         for s, sign in mirror.items():
             q[i[f"shoulder_{s}_x"]] = self.base[i[f"shoulder_{s}_x"]] - sign * p["arm_abduction"]
-            q[i[f"shoulder_{s}_z"]] = sign * (p["arm_flexion"] + torso_pitch)   # arms keep hanging
+            q[i[f"shoulder_{s}_z"]] = sign * (p["arm_flexion"] + torso_pitch + reach)   # arms keep hanging
             q[i[f"elbow_{s}_z"]] = sign * p["elbow_flexion"]
         q[i["neck_c2_y"]] = p["head_pitch"]
         return q
 
     def update(self, t: float) -> None:
-        d, m, i = self.ctx.data, self.ctx.model, self.i
-        servos = self.ctx.servos
+        d, servos, idx = self.ctx.data, self.ctx.servos, self.side_index
         posture = self.posture(t)
-        targets = self.joint_targets(posture)
-        up = self.up
+        key = tuple(posture)
+        if key != self._targets_key:                 # nominal targets change only while moving
+            self._targets_key, self._targets = key, self.joint_targets(posture)
+        targets = self._targets.copy()
+        ux, uy, uz = self.up
 
-        # heading frame of the pelvis
-        yaw = yaw_of(d.xmat[self.pelvis])
+        # heading frame of the pelvis; COM projected along gravity onto the ground plane
+        pelvis_m = d.xmat[self.pelvis].tolist()
+        yaw = math.atan2(pelvis_m[3], pelvis_m[0])
         c, s = math.cos(yaw), math.sin(yaw)
-        com = d.subtree_com[self.pelvis]
-        com_vel = d.subtree_linvel[self.pelvis]
-        points = self.support.points(d)
-        touching = points[:, 2] < self.support.contact_height
-        pts = points[touching] if touching.any() else points
-        # project COM along gravity onto the ground plane z = 0
-        com_ground = com[:2] - com[2] * up[:2] / up[2]
-        local_pts_x = c * pts[:, 0] + s * pts[:, 1]
-        local_pts_y = -s * pts[:, 0] + c * pts[:, 1]
-        centre = np.array([(local_pts_x.min() + local_pts_x.max()) / 2, (local_pts_y.min() + local_pts_y.max()) / 2])
-        com_local = np.array([c * com_ground[0] + s * com_ground[1], -s * com_ground[0] + c * com_ground[1]])
-        vel_local = np.array([c * com_vel[0] + s * com_vel[1], -s * com_vel[0] + c * com_vel[1]])
+        cx, cy, cz = d.subtree_com[self.pelvis].tolist()
+        vx, vy, _ = d.subtree_linvel[self.pelvis].tolist()
+        gx, gy = cx - cz * ux / uz, cy - cz * uy / uz
+        pts = self.support.supporting_points(d)
+        px = c * pts[:, 0] + s * pts[:, 1]
+        py = -s * pts[:, 0] + c * pts[:, 1]
+        centre_x = 0.5 * (px.min() + px.max())
+        centre_y = 0.5 * (py.min() + py.max())
         kp, kv = self.params["com_kp"], self.params["com_kv"]
-        delta_x = kp * (com_local[0] - centre[0] - posture[2]) + kv * vel_local[0]     # eq. 7.1
-        delta_y = kp * (com_local[1] - centre[1] - posture[3]) + kv * vel_local[1]     # eq. 7.2
+        delta_x = kp * (c * gx + s * gy - centre_x - posture[2]) + kv * (c * vx + s * vy)    # eq. 7.1
+        delta_y = kp * (-s * gx + c * gy - centre_y - posture[3]) + kv * (-s * vx + c * vy)  # eq. 7.2
+
+        # the ankles can only push as hard as the foot can take with its centre of pressure at the
+        # toe (or heel) - beyond that the foot tips over; the rest goes to the hips (hip strategy)
 
         offset = servos.offset
-        offset[:] = 0.0
         angles = servos.angles()
         velocities = servos.velocities()
-        knee_flex = 0.5 * (targets[i["knee_r_y"]] + targets[i["knee_l_y"]]) - STANDING_KNEE_FLEX
-        pelvis_pitch_goal = posture[1] * (1.0 - SPINE_SHARE) + CROUCH_LEAN * knee_flex
-        pelvis_pitch = pitch_of(d.xmat[self.pelvis], up)
+        pelvis_pitch_goal = posture[1] * (1.0 - SPINE_SHARE) + self._crouch_pitch
+        pelvis_pitch = math.atan2(-(pelvis_m[0] * ux + pelvis_m[3] * uy + pelvis_m[6] * uz),
+                                  pelvis_m[2] * ux + pelvis_m[5] * uy + pelvis_m[8] * uz)
         hip_height = 0.5 * (d.xpos[self.hips[0], 2] + d.xpos[self.hips[1], 2])
         knee_offset = self.params["height_kp"] * (hip_height - posture[0])
-        for k, side in enumerate("rl"):
-            offset[i[f"knee_{side}_y"]] = knee_offset
-            foot = d.xmat[self.feet[k]]
-            # ankles keep the feet flat (7.3-7.4) plus the COM servo offset
-            ay, ax = i[f"ankle_{side}_y"], i[f"ankle_{side}_x"]
-            targets[ay] = angles[ay] - pitch_of(foot, up)
-            targets[ax] = angles[ax] - roll_of(foot, up)
-            # the servo's damping acts on the ankle rate; shift it onto the foot's own rate so it
-            # does not drag the foot along when the shank rotates over it
-            foot_rate = d.cvel[self.feet[k], :3]
-            frame = foot.reshape(3, 3)
-            offset[ay] = delta_x + self.damping_ratio[ay] * (velocities[ay] - float(foot_rate @ frame[:, 1]))
-            offset[ax] = -delta_y + self.damping_ratio[ax] * (velocities[ax] - float(foot_rate @ frame[:, 0]))
-            # hips hold the pelvis attitude; hip offsets are half the ankle's, opposite sign
-            hy, hx = i[f"hip_{side}_y"], i[f"hip_{side}_x"]
+        ratio = self.damping_ratio
+        for k in (0, 1):
+            j = idx[k]
+            f = d.xmat[self.feet[k]].tolist()          # row-major 3x3: columns are the foot axes
+            wx, wy, wz = d.cvel[self.feet[k], :3].tolist()
+            foot_pitch = math.atan2(-(f[0] * ux + f[3] * uy + f[6] * uz), f[2] * ux + f[5] * uy + f[8] * uz)
+            foot_roll = math.atan2(f[1] * ux + f[4] * uy + f[7] * uz, f[2] * ux + f[5] * uy + f[8] * uz)
+            pitch_rate = wx * f[1] + wy * f[4] + wz * f[7]
+            roll_rate = wx * f[0] + wy * f[3] + wz * f[6]
+            ay, ax, hy, hx = j["ankle_y"], j["ankle_x"], j["hip_y"], j["hip_x"]
+            offset[j["knee_y"]] = knee_offset
+            # ankles keep the feet flat (7.3-7.4) plus the COM servo offset; the servo's damping
+            # is moved from the ankle rate onto the foot's own rate, so that it does not drag the
+            # foot along when the shank rotates over it
+            # the ankle command (foot-flat term + COM offset) is limited to what the foot can take
+            # with its centre of pressure at the toe tip or the heel; the rest goes to the hips
+            command = min(max(delta_x - foot_pitch, -self.ankle_limit_back), self.ankle_limit_front)
+            excess_x = delta_x - min(max(delta_x, -self.ankle_limit_back), self.ankle_limit_front)
+            targets[ay] = angles[ay]
+            targets[ax] = angles[ax] - foot_roll
+            offset[ay] = command + ratio[ay] * (velocities[ay] - pitch_rate)
+            offset[ax] = -delta_y + ratio[ax] * (velocities[ax] - roll_rate)
+            # hips hold the pelvis attitude, plus half the ankle offset (eqs. 7.1-7.2)
             targets[hy] = angles[hy] + (pelvis_pitch - pelvis_pitch_goal)
-            offset[hy] = HIP_SHARE * delta_x
-            offset[hx] = -HIP_SHARE * delta_y
+            offset[hy] = -HIP_SHARE * delta_x - EXCESS_TO_HIP * excess_x
+            offset[hx] = HIP_SHARE * delta_y
         servos.hold(targets, t)

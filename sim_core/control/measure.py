@@ -26,15 +26,28 @@ def roll_of(xmat: np.ndarray, up: np.ndarray) -> float:
 
 
 class SupportGeometry:
-    """Foot contact sites: which touch the ground, and the centre of their extent."""
+    """Foot contact sites grouped by foot (foot + toe). A foot that touches the ground anywhere
+    contributes all its sites to the support area, so a heel that lifts under a push does not
+    move the centre of support forward (which would make the COM servo give way)."""
 
-    def __init__(self, model: mujoco.MjModel, foot_bodies=("FOOTR", "FOOTL", "TOER", "TOEL")):
-        self.site_ids = np.array([i for i in range(model.nsite)
-                                  if model.site_bodyid[i] in {model.body(b).id for b in foot_bodies}])
+    def __init__(self, model: mujoco.MjModel, feet=(("FOOTR", "TOER"), ("FOOTL", "TOEL"))):
+        groups = []
+        for bodies in feet:
+            ids = {model.body(b).id for b in bodies}
+            groups.append([i for i in range(model.nsite) if model.site_bodyid[i] in ids])
+        self.site_ids = np.array([i for g in groups for i in g])
+        self.foot_of_site = np.array([k for k, g in enumerate(groups) for _ in g])
         self.contact_height = 0.005
 
     def points(self, data: mujoco.MjData) -> np.ndarray:
         return data.site_xpos[self.site_ids]
 
-    def touching(self, data: mujoco.MjData) -> np.ndarray:
-        return self.points(data)[:, 2] < self.contact_height
+    def supporting_points(self, data: mujoco.MjData) -> np.ndarray:
+        """All sites of every foot that touches the ground (all sites if none does)."""
+        points = data.site_xpos[self.site_ids]
+        touching = points[:, 2] < self.contact_height
+        grounded = np.zeros(2, dtype=bool)
+        grounded[self.foot_of_site[touching]] = True
+        if not grounded.any():
+            return points
+        return points[grounded[self.foot_of_site]]

@@ -17,6 +17,12 @@ def hermite_blend(s: np.ndarray) -> np.ndarray:
     return s * s * (3.0 - 2.0 * s)
 
 
+def hermite_scalar(s: float) -> float:
+    """hermite_blend for one number (no array overhead in per-tick code)."""
+    s = 0.0 if s < 0.0 else 1.0 if s > 1.0 else s
+    return s * s * (3.0 - 2.0 * s)
+
+
 class ServoBank:
     def __init__(self, model: mujoco.MjModel, data: mujoco.MjData, character: CharacterSpec, log: EditLog):
         self.model, self.data, self.log = model, data, log

@@ -1,0 +1,119 @@
+"""Balanced crouch poses: for a pelvis height, the knee angle and pelvis pitch that keep the COM
+over the centre of the feet with the feet flat and the ankles inside their dorsiflexion range.
+
+Why: the law of cosines of Wooten eq. 7.5 puts the hips above the ankles, which for a deep
+knee bend needs more ankle dorsiflexion than a human has (the woman's short shank needs ~75
+degrees at 0.47 m); a person leans the trunk forward instead. This solves that pose on the
+model's own kinematics (MuJoCo), like Ooi's sampling of balanced crouch poses (§3.4.2.1), once
+per behaviour for a table of heights; controllers interpolate it.
+"""
+from __future__ import annotations
+
+import math
+
+import mujoco
+import numpy as np
+
+from sim_core.character.spec import CharacterSpec
+
+DORSIFLEXION_USE = 0.75        # share of the ankle's dorsiflexion range a crouch may use
+ARM_REACH_PER_DEPTH = 3.0      # forward arm raise (rad) per unit of relative crouch depth, as people
+ARM_REACH_MAX = 1.4            # reach forward to counterbalance a deep squat
+
+
+def arm_reach(height: float, standing_height: float) -> float:
+    """Forward arm flexion that goes with a crouch to this pelvis height."""
+    depth = max(0.0, (standing_height - height) / standing_height)
+    return min(ARM_REACH_MAX, ARM_REACH_PER_DEPTH * depth)
+
+
+class CrouchTable:
+    def __init__(self, model: mujoco.MjModel, character: CharacterSpec, heights: np.ndarray,
+                 standing_height: float):
+        self.model, self.character = model, character
+        self.data = mujoco.MjData(model)
+        self.q0 = character.standing_pose.copy()
+        jnt = lambda n: model.joint(n).qposadr[0]
+        self.adr = {n: jnt(n) for n in ("knee_r_y", "knee_l_y", "hip_r_y", "hip_l_y", "ankle_r_y", "ankle_l_y")}
+        self.foot = model.body("FOOTR").id
+        self.pelvis = model.body("PELVIS").id
+        self.hips = (model.body("ULEGR").id, model.body("ULEGL").id)
+        ankle = character.joint_position("FOOTR")
+        self.ankle_height = float(ankle[2])
+        sites = [c["pos"] for c in character.body("FOOTR")["contacts"] + character.body("TOER")["contacts"]]
+        self.centre_from_ankle = 0.5 * (max(p[0] for p in sites) + min(p[0] for p in sites)) - float(ankle[0])
+        lo = character.dofs[character.dof_index["ankle_r_y"]].range[0]
+        self.ankle_min = DORSIFLEXION_USE * lo
+        self.standing_height = standing_height
+        self.shoulders = [(model.joint(f"shoulder_{side}_z").qposadr[0], sign) for side, sign in (("r", 1.0), ("l", -1.0))]
+        self.heights = np.asarray(heights, dtype=float)
+        self.table = np.array([self.solve(h) for h in self.heights])   # knee, hip_y, ankle_y, pelvis_pitch
+
+    def _measure(self, knee: float, hip: float, ankle: float) -> tuple[float, float, float]:
+        d, a = self.data, self.adr
+        d.qpos[:] = 0.0
+        d.qpos[3] = 1.0
+        for i, dof in enumerate(self.character.dofs):
+            d.qpos[self.model.joint(dof.name).qposadr[0]] = self.q0[i]
+        for side in "rl":
+            d.qpos[a[f"knee_{side}_y"]] = knee
+            d.qpos[a[f"hip_{side}_y"]] = hip
+            d.qpos[a[f"ankle_{side}_y"]] = ankle
+        reach = arm_reach(self._height, self.standing_height)
+        for adr, sign in self.shoulders:
+            d.qpos[adr] = sign * reach
+        mujoco.mj_kinematics(self.model, d)
+        mujoco.mj_comPos(self.model, d)
+        rot = d.xmat[self.foot].reshape(3, 3)
+        origin = d.xpos[self.foot]
+        hip_mid = 0.5 * (d.xpos[self.hips[0]] + d.xpos[self.hips[1]])
+        height = float((rot.T @ (hip_mid - origin))[2]) + self.ankle_height
+        com_x = float((rot.T @ (d.subtree_com[self.pelvis] - origin))[0]) - self.centre_from_ankle
+        pelvis = rot.T @ d.xmat[self.pelvis].reshape(3, 3)
+        pitch = math.atan2(-pelvis[2, 0], pelvis[2, 2])
+        return height, com_x, pitch
+
+    def solve(self, height: float) -> tuple[float, float, float, float]:
+        """(knee, hip_y, ankle_y, pelvis_pitch) for this pelvis height, COM over the centre of
+        the feet, the pelvis as upright as the usable ankle dorsiflexion allows. Nested
+        bisections: the hip height depends only on ankle and knee, the COM also on the hip."""
+        self._height = height
+        knee_max = self.character.dofs[self.character.dof_index["knee_r_y"]].range[1]
+        hip_lo, hip_hi = self.character.dofs[self.character.dof_index["hip_r_y"]].range
+
+        def knee_for(ankle):
+            return _bisect(lambda k: self._measure(k, 0.0, ankle)[0] - height, 0.0, knee_max, decreasing=True)
+
+        def hip_for(knee, ankle):
+            # flexing the hip (more negative) moves the COM forward
+            return _bisect(lambda h: self._measure(knee, h, ankle)[1], hip_lo, hip_hi, decreasing=True)
+
+        def pose(ankle):
+            knee = knee_for(ankle)
+            if abs(self._measure(knee, 0.0, ankle)[0] - height) > 1e-3:
+                return knee, 0.0, ankle, -math.inf      # legs leaning too far to reach this height
+            hip = hip_for(knee, ankle)
+            return knee, hip, ankle, self._measure(knee, hip, ankle)[2]
+
+        # more dorsiflexion (ankle more negative) lets the trunk stand more upright
+        most = pose(self.ankle_min)
+        if most[3] > 0.0:                     # even the usable dorsiflexion leaves a forward lean
+            return most
+        ankle = _bisect(lambda a: pose(a)[3], self.ankle_min, 0.0, decreasing=False)
+        return pose(ankle)
+
+    def at(self, height: float) -> np.ndarray:
+        """Interpolated (knee, hip_y, ankle_y, pelvis_pitch) for a height inside the table."""
+        return np.array([np.interp(height, self.heights, self.table[:, k]) for k in range(4)])
+
+
+def _bisect(f, lo: float, hi: float, decreasing: bool, iterations: int = 18) -> float:
+    """Root of a monotonic f on [lo, hi] (the nearer end if f does not change sign there)."""
+    sign = -1.0 if decreasing else 1.0
+    for _ in range(iterations):
+        mid = 0.5 * (lo + hi)
+        if sign * f(mid) > 0.0:
+            hi = mid
+        else:
+            lo = mid
+    return 0.5 * (lo + hi)
