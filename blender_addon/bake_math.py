@@ -1,0 +1,254 @@
+"""Trajectory -> per-frame bone channels, as NumPy arrays, without bpy.
+
+Like the passes of Blender's glTF importer (``compute_vnodes``), the bake is a pipeline of small
+named steps, each testable on its own; the bpy layer (:mod:`bake`) only reads the rest matrices
+and writes the resulting arrays in bulk:
+
+  1. ``frame_times``: the scene's frames that fall inside the run, and their times.
+  2. ``resample``: the 200 Hz body poses at those times (linear for positions, slerp for
+     rotations), because a scene's frame rate rarely divides the control rate.
+  3. ``bone_pose_matrices``: each body's world pose -> its bone's pose matrix in armature space.
+     A body frame is world-parallel in the reference pose, so its world rotation *is* the
+     rotation of the body since the rest pose; the bone keeps its own rest orientation on top.
+  4. ``basis_from_pose``: armature-space pose matrices -> Blender's ``matrix_basis`` per bone
+     (pose relative to the rest pose and to the parent's pose): what the F-curves hold.
+  5. ``channels``: root location + quaternion, one quaternion per other bone, with signs made
+     continuous so that interpolation between keys never takes the long way round.
+
+Conventions: quaternions are (w, x, y, z); matrices act on column vectors; arrays of matrices
+are (..., 4, 4).
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from .axes import SIM_TO_BLENDER
+
+# ----------------------------------------------------------------------------- quaternions
+
+
+def quat_to_matrix(q: np.ndarray) -> np.ndarray:
+    q = np.asarray(q, dtype=float)
+    q = q / np.linalg.norm(q, axis=-1, keepdims=True)
+    w, x, y, z = np.moveaxis(q, -1, 0)
+    out = np.empty(q.shape[:-1] + (3, 3))
+    out[..., 0, 0] = 1 - 2 * (y * y + z * z)
+    out[..., 0, 1] = 2 * (x * y - w * z)
+    out[..., 0, 2] = 2 * (x * z + w * y)
+    out[..., 1, 0] = 2 * (x * y + w * z)
+    out[..., 1, 1] = 1 - 2 * (x * x + z * z)
+    out[..., 1, 2] = 2 * (y * z - w * x)
+    out[..., 2, 0] = 2 * (x * z - w * y)
+    out[..., 2, 1] = 2 * (y * z + w * x)
+    out[..., 2, 2] = 1 - 2 * (x * x + y * y)
+    return out
+
+
+def matrix_to_quat(m: np.ndarray) -> np.ndarray:
+    """Rotation matrices (..., 3, 3) -> unit quaternions (w, x, y, z) with w >= 0 (Shepperd's
+    method: the largest of the four candidates is computed from the trace, the others from it,
+    so no branch divides by a small number)."""
+    m = np.asarray(m, dtype=float)
+    shape = m.shape[:-2]
+    m = m.reshape(-1, 3, 3)
+    t = np.stack([m[:, 0, 0] + m[:, 1, 1] + m[:, 2, 2], m[:, 0, 0], m[:, 1, 1], m[:, 2, 2]], axis=1)
+    pick = np.argmax(np.stack([t[:, 0], 2 * t[:, 1] - t[:, 0], 2 * t[:, 2] - t[:, 0], 2 * t[:, 3] - t[:, 0]], 1), 1)
+    q = np.empty((len(m), 4))
+    for case in range(4):
+        s = pick == case
+        if not s.any():
+            continue
+        a = m[s]
+        if case == 0:
+            r = np.sqrt(1.0 + a[:, 0, 0] + a[:, 1, 1] + a[:, 2, 2]) * 2
+            q[s] = np.stack([0.25 * r, (a[:, 2, 1] - a[:, 1, 2]) / r, (a[:, 0, 2] - a[:, 2, 0]) / r,
+                             (a[:, 1, 0] - a[:, 0, 1]) / r], 1)
+        elif case == 1:
+            r = np.sqrt(1.0 + a[:, 0, 0] - a[:, 1, 1] - a[:, 2, 2]) * 2
+            q[s] = np.stack([(a[:, 2, 1] - a[:, 1, 2]) / r, 0.25 * r, (a[:, 0, 1] + a[:, 1, 0]) / r,
+                             (a[:, 0, 2] + a[:, 2, 0]) / r], 1)
+        elif case == 2:
+            r = np.sqrt(1.0 + a[:, 1, 1] - a[:, 0, 0] - a[:, 2, 2]) * 2
+            q[s] = np.stack([(a[:, 0, 2] - a[:, 2, 0]) / r, (a[:, 0, 1] + a[:, 1, 0]) / r, 0.25 * r,
+                             (a[:, 1, 2] + a[:, 2, 1]) / r], 1)
+        else:
+            r = np.sqrt(1.0 + a[:, 2, 2] - a[:, 0, 0] - a[:, 1, 1]) * 2
+            q[s] = np.stack([(a[:, 1, 0] - a[:, 0, 1]) / r, (a[:, 0, 2] + a[:, 2, 0]) / r,
+                             (a[:, 1, 2] + a[:, 2, 1]) / r, 0.25 * r], 1)
+    q *= np.where(q[:, :1] < 0, -1.0, 1.0)
+    q /= np.linalg.norm(q, axis=1, keepdims=True)
+    return q.reshape(shape + (4,))
+
+
+def quat_angle(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """Angle (rad) of the rotation taking ``a`` to ``b`` (either sign of either quaternion)."""
+    d = np.abs(np.sum(np.asarray(a) * np.asarray(b), axis=-1))
+    return 2.0 * np.arccos(np.clip(d, 0.0, 1.0))
+
+
+def slerp(q0: np.ndarray, q1: np.ndarray, u: np.ndarray) -> np.ndarray:
+    """Spherical interpolation (..., 4) with ``u`` broadcast over the leading axes; shortest arc."""
+    q0, q1 = np.asarray(q0, float), np.asarray(q1, float)
+    u = np.asarray(u, float)[..., None]
+    dot = np.sum(q0 * q1, axis=-1, keepdims=True)
+    q1 = np.where(dot < 0, -q1, q1)
+    dot = np.abs(dot)
+    theta = np.arccos(np.clip(dot, -1.0, 1.0))
+    sin = np.sin(theta)
+    small = sin < 1e-9
+    w0 = np.where(small, 1.0 - u, np.sin((1.0 - u) * theta) / np.where(small, 1.0, sin))
+    w1 = np.where(small, u, np.sin(u * theta) / np.where(small, 1.0, sin))
+    out = w0 * q0 + w1 * q1
+    return out / np.linalg.norm(out, axis=-1, keepdims=True)
+
+
+def make_continuous(q: np.ndarray) -> np.ndarray:
+    """Flip signs along axis 0 so that consecutive quaternions are in the same hemisphere (q and
+    -q are the same rotation; F-curves interpolate the components, so a sign jump would spin)."""
+    q = np.array(q, dtype=float)
+    for k in range(1, len(q)):
+        flip = np.sum(q[k] * q[k - 1], axis=-1) < 0
+        q[k][flip] *= -1.0
+    return q
+
+
+# ----------------------------------------------------------------------------- pipeline
+
+def frame_times(duration: float, fps: float, start_frame: int = 1) -> tuple[np.ndarray, np.ndarray]:
+    """(frames, times): one frame per 1/fps from the run's start through its end (inclusive when
+    the end falls on a frame, within a microsecond)."""
+    if not (fps > 0 and math.isfinite(fps)):
+        raise ValueError(f"frame rate {fps!r} must be a positive number")
+    n = int(math.floor(duration * fps + 1e-6)) + 1
+    k = np.arange(n)
+    return start_frame + k.astype(float), k / fps
+
+
+def resample(times: np.ndarray, positions: np.ndarray, quats: np.ndarray, at: np.ndarray):
+    """Body positions (N, B, 3) and quaternions (N, B, 4) sampled at ``times`` -> at ``at`` (M):
+    positions linearly, rotations by slerp between the two neighbouring samples. Times past the
+    end are clamped to the last sample."""
+    times = np.asarray(times, float)
+    at = np.clip(np.asarray(at, float), times[0], times[-1])
+    i = np.clip(np.searchsorted(times, at, side="right") - 1, 0, len(times) - 2)
+    span = times[i + 1] - times[i]
+    u = np.clip((at - times[i]) / np.where(span > 0, span, 1.0), 0.0, 1.0)
+    exact = np.isclose(at, times[i], rtol=0, atol=1e-9)
+    u = np.where(exact, 0.0, u)
+    pos = positions[i] + u[:, None, None] * (positions[i + 1] - positions[i])
+    rot = slerp(quats[i], quats[i + 1], np.broadcast_to(u[:, None], quats[i].shape[:-1]))
+    return pos, rot
+
+
+def bone_pose_matrices(body_pos: np.ndarray, body_quat: np.ndarray, rest: np.ndarray) -> np.ndarray:
+    """World body poses in the sim frame (F, B, 3) / (F, B, 4) -> bone pose matrices (F, B, 4, 4)
+    in armature space: rotation = body rotation (conjugated into Blender's axes) applied to the
+    bone's rest orientation; head = the body frame's origin."""
+    rot = SIM_TO_BLENDER @ quat_to_matrix(body_quat) @ SIM_TO_BLENDER.T
+    out = np.zeros(body_pos.shape[:2] + (4, 4))
+    out[..., :3, :3] = rot @ rest[None, :, :3, :3]
+    out[..., :3, 3] = body_pos @ SIM_TO_BLENDER.T
+    out[..., 3, 3] = 1.0
+    return out
+
+
+def rigid_inverse(m: np.ndarray) -> np.ndarray:
+    out = np.zeros_like(m)
+    rt = np.swapaxes(m[..., :3, :3], -1, -2)
+    out[..., :3, :3] = rt
+    out[..., :3, 3] = -(rt @ m[..., :3, 3:4])[..., 0]
+    out[..., 3, 3] = 1.0
+    return out
+
+
+def basis_from_pose(pose: np.ndarray, rest: np.ndarray, parents: list[int]) -> np.ndarray:
+    """Armature-space pose matrices (F, B, 4, 4) -> ``matrix_basis`` (F, B, 4, 4).
+
+    Blender evaluates ``pose = parent_pose @ (parent_rest^-1 @ rest) @ basis`` (``rest @ basis``
+    for the root) for bones that inherit rotation and scale, so ``basis`` is that solved for.
+    """
+    basis = np.empty_like(pose)
+    inv_rest = rigid_inverse(rest)
+    for b, p in enumerate(parents):
+        if p < 0:
+            basis[:, b] = inv_rest[b] @ pose[:, b]
+        else:
+            rest_local = inv_rest[p] @ rest[b]
+            basis[:, b] = rigid_inverse(rest_local) @ rigid_inverse(pose[:, p]) @ pose[:, b]
+    return basis
+
+
+@dataclass
+class BoneChannels:
+    frames: np.ndarray              # (F,) scene frames
+    names: list[str]                # bone names, index 0 is the root
+    root_location: np.ndarray       # (F, 3) root bone location (bone-local, Blender's convention)
+    rotations: np.ndarray           # (F, B, 4) rotation_quaternion per bone (w, x, y, z)
+    joint_slip: float               # largest translation a non-root basis would need (m): ~0
+
+    def fcurve_values(self):
+        """(data_path, index, bone, values (F,)) for every F-curve to write."""
+        root = self.names[0]
+        for i in range(3):
+            yield f'pose.bones["{root}"].location', i, root, self.root_location[:, i]
+        for b, name in enumerate(self.names):
+            for i in range(4):
+                yield f'pose.bones["{name}"].rotation_quaternion', i, name, self.rotations[:, b, i]
+
+
+def channels(frames: np.ndarray, basis: np.ndarray, names: list[str], parents: list[int]) -> BoneChannels:
+    roots = [b for b, p in enumerate(parents) if p < 0]
+    if roots != [0]:
+        raise ValueError("the first bone must be the only root")
+    rotations = make_continuous(matrix_to_quat(basis[..., :3, :3]))
+    slip = float(np.abs(basis[:, 1:, :3, 3]).max()) if len(names) > 1 else 0.0
+    return BoneChannels(frames, list(names), basis[:, 0, :3, 3].copy(), rotations, slip)
+
+
+def bake_channels(trajectory_arrays: dict, rest: np.ndarray, names: list[str], parents: list[int],
+                  fps: float, start_frame: int = 1, duration: float | None = None) -> BoneChannels:
+    """The whole pipeline: trajectory arrays + the armature's rest matrices -> F-curve channels.
+
+    ``names``/``parents``/``rest`` describe the armature's bones; every bone must be a body of
+    the trajectory (matched by name, so the order of bones and bodies need not agree)."""
+    body_names = [str(n) for n in trajectory_arrays["body_names"]]
+    missing = [n for n in names if n not in body_names]
+    if missing:
+        raise ValueError(f"bones without a simulated body: {', '.join(missing)}")
+    order = [body_names.index(n) for n in names]
+    times = np.asarray(trajectory_arrays["time"], float)
+    times = times - times[0]
+    span = float(times[-1]) if duration is None else min(float(duration), float(times[-1]))
+    frames, at = frame_times(span, fps, start_frame)
+    pos, quat = resample(times, trajectory_arrays["body_pos"][:, order], trajectory_arrays["body_quat"][:, order], at)
+    pose = bone_pose_matrices(pos, quat, rest)
+    return channels(frames, basis_from_pose(pose, rest, parents), names, parents)
+
+
+# ----------------------------------------------------------------------------- checks
+
+def pose_from_channels(ch: BoneChannels, rest: np.ndarray, parents: list[int]) -> np.ndarray:
+    """Forward kinematics as Blender does it (the inverse of ``basis_from_pose``), for tests."""
+    n_frames, n_bones = ch.rotations.shape[:2]
+    basis = np.zeros((n_frames, n_bones, 4, 4))
+    basis[..., :3, :3] = quat_to_matrix(ch.rotations)
+    basis[:, 0, :3, 3] = ch.root_location
+    basis[..., 3, 3] = 1.0
+    pose = np.empty_like(basis)
+    inv_rest = rigid_inverse(rest)
+    for b, p in enumerate(parents):
+        if p < 0:
+            pose[:, b] = rest[b] @ basis[:, b]
+        else:
+            pose[:, b] = pose[:, p] @ (inv_rest[p] @ rest[b]) @ basis[:, b]
+    return pose
+
+
+def body_pose_from_bone(pose: np.ndarray, rest: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Bone pose matrices (armature space) -> body positions and rotation matrices in the sim
+    frame (what a bake must reproduce)."""
+    rot = SIM_TO_BLENDER.T @ (pose[..., :3, :3] @ np.swapaxes(rest[..., :3, :3], -1, -2)) @ SIM_TO_BLENDER
+    return pose[..., :3, 3] @ SIM_TO_BLENDER, rot

@@ -1,0 +1,71 @@
+"""Build-time only (build.py): the rigged skin of a character, written as glTF binary.
+Needs scikit-image, trimesh and pygltflib (requirements-addon.txt); not shipped in the add-on."""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+from ..axes import sim_to_blender_points
+from ..rig_frames import rest_frames
+from . import skin
+from .gltf import write_rig_glb
+
+GRID_SPACING = 0.012        # m: marching-cubes cell; ~21k vertices for the man, ~15k for the woman
+MASS_TOLERANCE = 0.15       # issue 3: skin volume x density within 15 % of each segment's mass
+
+
+@dataclass
+class RigReport:
+    name: str
+    vertices: int
+    faces: int
+    watertight: bool
+    mesh_volume: float                  # m^3, of the final (smoothed) mesh
+    field_volume: float                 # m^3, of the level set it was meshed from
+    segment_mass: dict[str, tuple[float, float]]   # body -> (skin volume x density, spec mass)
+    offsets_mm: dict[str, float]
+    rigid_vertices: float               # fraction of vertices weighted to a single bone
+
+    def worst_mass_error(self) -> tuple[str, float]:
+        name = max(self.segment_mass, key=lambda n: abs(self.segment_mass[n][0] / self.segment_mass[n][1] - 1))
+        skin_mass, mass = self.segment_mass[name]
+        return name, skin_mass / mass - 1.0
+
+    def table(self) -> str:
+        lines = [f"{'body':8s} {'skin kg':>8s} {'spec kg':>8s} {'error':>7s} {'offset':>7s}"]
+        for body, (skin_mass, mass) in self.segment_mass.items():
+            lines.append(f"{body:8s} {skin_mass:8.3f} {mass:8.3f} {100 * (skin_mass / mass - 1):+6.1f}% "
+                         f"{self.offsets_mm[body]:+5.1f}mm")
+        return "\n".join(lines)
+
+
+def build_rig(spec, out_path: Path, spacing: float = GRID_SPACING) -> RigReport:
+    """Skin the character ``spec`` (a CharacterSpec) and write ``out_path`` (.glb)."""
+    bodies = spec.bodies
+    grid = skin.bounding_grid(bodies, spacing)
+    distances = skin.segment_distances(bodies, grid.points().astype(np.float32))
+    edges = skin.tree_edges(bodies)
+    targets = np.array([b["mass"] / b["density"] for b in bodies])
+    offsets, _ = skin.calibrate_offsets(distances, edges, targets, spacing)
+    distances -= offsets[:, None]
+    field = skin.skin_field(distances, edges)
+    volumes = skin.segment_volumes(distances, field, spacing)      # measured on the final field
+    field_volume = float(skin.occupancy(field, spacing).sum() * spacing ** 3)
+    del distances
+    mesh = skin.mesh_from_field(field, grid)
+    vertices_sim = np.asarray(mesh.vertices)
+    joints, weights = skin.joint_weights(bodies, vertices_sim)
+    frames = rest_frames(bodies)
+    write_rig_glb(out_path, spec.name, frames.names, frames.parents, frames.heads,
+                  sim_to_blender_points(vertices_sim), sim_to_blender_points(np.asarray(mesh.vertex_normals)),
+                  np.asarray(mesh.faces), joints, weights,
+                  extras={"sim_athletics_character": spec.name, "root_bone_head": "pelvis centre of mass"})
+    return RigReport(
+        name=spec.name, vertices=len(mesh.vertices), faces=len(mesh.faces),
+        watertight=bool(mesh.is_watertight), mesh_volume=float(mesh.volume), field_volume=field_volume,
+        segment_mass={b["name"]: (float(v * b["density"]), float(b["mass"])) for b, v in zip(bodies, volumes)},
+        offsets_mm={b["name"]: float(o * 1000) for b, o in zip(bodies, offsets)},
+        rigid_vertices=float(np.mean(weights.max(axis=1) > 0.999)),
+    )
