@@ -28,7 +28,6 @@ from sim_core.errors import ParameterError, SimAthleticsError
 from sim_core.perturbation import Push, PushSchedule
 from sim_core.trajectory import Trajectory
 
-CONTROL_RATE = 200.0          # Hz
 STATE_SPEC = mujoco.mjtState.mjSTATE_INTEGRATION
 
 
@@ -66,10 +65,13 @@ class Recorder:
 
     def __init__(self, model: mujoco.MjModel, n_frames: int, site_ids: np.ndarray):
         self.model = model
-        self.bodies = np.arange(1, model.nbody)
+        self.bodies = np.arange(1, model.nbody)        # every body but the world, in model order
         self.root = 1
         self.site_ids = site_ids
+        contiguous = len(site_ids) and np.all(np.diff(site_ids) == 1)
+        self.sites = slice(int(site_ids[0]), int(site_ids[-1]) + 1) if contiguous else site_ids
         self.ground = model.geom("ground").id
+        self.geom_body = model.geom_bodyid - 1
         nb = len(self.bodies)
         self.buf = {
             "time": np.zeros(n_frames), "qpos": np.zeros((n_frames, model.nq)),
@@ -86,22 +88,21 @@ class Recorder:
         b["time"][k] = data.time
         b["qpos"][k] = data.qpos
         b["qvel"][k] = data.qvel
-        b["body_pos"][k] = data.xpos[self.bodies]
-        b["body_quat"][k] = data.xquat[self.bodies]
+        b["body_pos"][k] = data.xpos[1:]
+        b["body_quat"][k] = data.xquat[1:]
         b["com"][k] = data.subtree_com[self.root]
         b["com_vel"][k] = data.subtree_linvel[self.root]
         push = data.xfrc_applied[:, :3].sum(axis=0)
         b["push_force"][k] = push
-        # cfrc_ext is from the last physics step (contact + applied forces on every body)
         if k:                               # no physics step has produced a contact force at frame 0
-            b["grf"][k] = data.cfrc_ext[self.bodies, 3:].sum(axis=0) - push
+            b["grf"][k] = data.cfrc_ext[1:, 3:].sum(axis=0) - push
         if data.ncon:
             geoms = data.contact.geom
-            on_ground = (geoms == self.ground).any(axis=1)
-            others = np.where(geoms[on_ground, 0] == self.ground, geoms[on_ground, 1], geoms[on_ground, 0])
-            touched = self.model.geom_bodyid[others] - 1
-            b["ground_contact"][k, touched] = True
-        b["support_points"][k] = data.site_xpos[self.site_ids]
+            first, second = geoms[:, 0], geoms[:, 1]
+            touched = np.where(first == self.ground, second, np.where(second == self.ground, first, -1))
+            touched = touched[touched >= 0]
+            b["ground_contact"][k, self.geom_body[touched]] = True
+        b["support_points"][k] = data.site_xpos[self.sites]
         self.n += 1
 
     def arrays(self) -> dict[str, np.ndarray]:
@@ -132,7 +133,7 @@ def run(request: RunRequest, progress: Callable[[float], None] | None = None,
     behaviour = cls(params, ControlContext(model, data, character, servos))
     behaviour.check_feasible()
 
-    steps_per_tick = int(round(1.0 / (CONTROL_RATE * model.opt.timestep)))
+    steps_per_tick = int(round(1.0 / (cls.control_rate * model.opt.timestep)))
     tick_time = steps_per_tick * model.opt.timestep
     n_ticks = int(math.ceil(duration / tick_time - 1e-9))
     initial_state = np.zeros(mujoco.mj_stateSize(model, STATE_SPEC))
@@ -174,7 +175,7 @@ def run(request: RunRequest, progress: Callable[[float], None] | None = None,
         "world": {"slope": request.world.slope, "slope_axis": request.world.slope_axis,
                   "extra_mass": request.world.extra_mass},
         "strength": request.strength, "total_mass": float(model.body_subtreemass[1]), "timestep": model.opt.timestep, "steps_per_tick": steps_per_tick,
-        "control_rate": CONTROL_RATE, "phase_events": behaviour.phase_events,
+        "control_rate": cls.control_rate, "phase_events": behaviour.phase_events,
         "edit_fields": list(EDITABLE_FIELDS), "state_spec": int(STATE_SPEC),
         "dof_names": [model.actuator(i).name for i in range(model.nu)],
     }

@@ -71,6 +71,7 @@ class Balance(Behaviour):
     name = "balance"
     summary = "Stand balanced; bend the knees, pitch the torso or shift the COM, and come back (Wooten ch. 7)."
     default_duration = 5.0
+    control_rate = 100.0       # a 10 ms balance loop (human postural reflexes take 50-100 ms)
     schema = Schema(
         Parameter("pelvis_height", "m", 0.0, 0.30, 1.20,
                   "height of the mid-hip point above the ground to move to; 0 = standing height", special=0.0),

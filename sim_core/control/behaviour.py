@@ -52,6 +52,7 @@ class Behaviour:
     summary: ClassVar[str]
     schema: ClassVar[Schema]
     default_duration: ClassVar[float] = 5.0
+    control_rate: ClassVar[float] = 200.0     # Hz at which update() runs; the servos run every step
 
     def __init__(self, params: dict[str, float], ctx: ControlContext):
         self.params = params

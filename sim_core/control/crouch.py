@@ -16,7 +16,7 @@ import numpy as np
 
 from sim_core.character.spec import CharacterSpec
 
-DORSIFLEXION_USE = 0.75        # share of the ankle's dorsiflexion range a crouch may use
+DORSIFLEXION_USE = 0.85        # share of the ankle's dorsiflexion range a crouch may use
 ARM_REACH_PER_DEPTH = 3.0      # forward arm raise (rad) per unit of relative crouch depth, as people
 ARM_REACH_MAX = 1.4            # reach forward to counterbalance a deep squat
 
@@ -32,7 +32,10 @@ class CrouchTable:
                  standing_height: float):
         self.model, self.character = model, character
         self.data = mujoco.MjData(model)
-        self.q0 = character.standing_pose.copy()
+        self.base_qpos = np.zeros(model.nq)
+        self.base_qpos[3] = 1.0                          # root at the origin, upright
+        for i, dof in enumerate(character.dofs):
+            self.base_qpos[model.joint(dof.name).qposadr[0]] = character.standing_pose[i]
         jnt = lambda n: model.joint(n).qposadr[0]
         self.adr = {n: jnt(n) for n in ("knee_r_y", "knee_l_y", "hip_r_y", "hip_l_y", "ankle_r_y", "ankle_l_y")}
         self.foot = model.body("FOOTR").id
@@ -51,10 +54,7 @@ class CrouchTable:
 
     def _measure(self, knee: float, hip: float, ankle: float) -> tuple[float, float, float]:
         d, a = self.data, self.adr
-        d.qpos[:] = 0.0
-        d.qpos[3] = 1.0
-        for i, dof in enumerate(self.character.dofs):
-            d.qpos[self.model.joint(dof.name).qposadr[0]] = self.q0[i]
+        d.qpos[:] = self.base_qpos
         for side in "rl":
             d.qpos[a[f"knee_{side}_y"]] = knee
             d.qpos[a[f"hip_{side}_y"]] = hip
@@ -107,7 +107,7 @@ class CrouchTable:
         return np.array([np.interp(height, self.heights, self.table[:, k]) for k in range(4)])
 
 
-def _bisect(f, lo: float, hi: float, decreasing: bool, iterations: int = 18) -> float:
+def _bisect(f, lo: float, hi: float, decreasing: bool, iterations: int = 15) -> float:
     """Root of a monotonic f on [lo, hi] (the nearer end if f does not change sign there)."""
     sign = -1.0 if decreasing else 1.0
     for _ in range(iterations):
