@@ -1,0 +1,84 @@
+"""The script API: what the operators, the panel and the batch command call.
+
+    from sim_athletics import api            # (blender_addon in a repository checkout)
+    arm = api.add_character(bpy.context, "man")
+    action, trajectory = api.simulate_and_bake(bpy.context, behaviour="balance",
+                                               params={"pelvis_height": 0.52}, duration=3)
+
+Errors a user can cause raise ``sim_core.errors.SimAthleticsError`` (bad parameter, unknown
+behaviour or character) or ``rig.RigError`` (no rig, not a rig) with a one-line message, before
+anything is written.
+"""
+from __future__ import annotations
+
+import sys
+from typing import Callable
+
+from . import bake, rig
+
+
+def parse_params(behaviour: str, params) -> dict[str, float]:
+    """A dict, a list of ``"name=value"`` strings, or one text ``"name=value name=value"``
+    (commas or spaces), validated by the behaviour's schema: the full parameter dict, with the
+    defaults filled in."""
+    from sim_core.control.behaviour import behaviour_class
+    schema = behaviour_class(behaviour).schema
+    if params is None:
+        return schema.validate({})
+    if isinstance(params, str):
+        items = [item for item in params.replace(",", " ").split() if item]
+        return schema.parse_assignments(items)
+    if isinstance(params, (list, tuple)):
+        return schema.parse_assignments([str(item) for item in params])
+    return schema.validate(dict(params))
+
+
+def make_request(character: str, behaviour: str, params, duration: float | None):
+    """A validated RunRequest (raises before anything runs or is written)."""
+    from sim_core.simulate import RunRequest
+    request = RunRequest(behaviour=behaviour, character=character,
+                         params=parse_params(behaviour, params), duration=duration)
+    request.validated()
+    return request
+
+
+def add_character(context, character: str = "man", location=None):
+    return rig.add_character(context, character, location)
+
+
+def console_progress(fraction: float) -> None:
+    """Progress bar on stderr for background mode (the UI uses window_manager.progress_*)."""
+    width = 30
+    done = int(round(fraction * width))
+    sys.stderr.write(f"\rSim Athletics: simulating [{'#' * done}{'.' * (width - done)}] {100 * fraction:5.1f}%")
+    if fraction >= 1.0:
+        sys.stderr.write("\n")
+    sys.stderr.flush()
+
+
+def simulate_and_bake(context, *, behaviour: str, params=None, duration: float | None = None,
+                      armature: str | None = None, start_frame: int | None = None,
+                      fit_scene_range: bool = False,
+                      progress: Callable[[float], None] | None = None,
+                      cancelled: Callable[[], bool] | None = None):
+    """Simulate ``behaviour`` on the rig's character and bake it as a new action on the rig.
+    Keys land on every frame of the scene's frame rate from ``start_frame`` (default: the scene's
+    start). Returns (action, trajectory). Nothing is written if validation, the run or the bake
+    fails or is cancelled."""
+    from sim_core.simulate import run
+    obj = rig.find_rig(context, armature)
+    request = make_request(str(obj[rig.CHARACTER_KEY]), behaviour, params, duration)
+    trajectory = run(request, progress=progress, cancelled=cancelled)
+    action = bake_result(context, obj, trajectory, start_frame, fit_scene_range)
+    return action, trajectory
+
+
+def bake_result(context, obj, trajectory, start_frame: int | None = None, fit_scene_range: bool = False):
+    scene = context.scene
+    fps = bake.scene_fps(scene)
+    start = scene.frame_start if start_frame is None else int(start_frame)
+    action = bake.bake_trajectory(obj, trajectory, fps=fps, start_frame=start)
+    if fit_scene_range:
+        scene.frame_start = start
+        scene.frame_end = int(round(action.frame_range[1]))
+    return action

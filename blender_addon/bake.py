@@ -1,0 +1,89 @@
+"""Write a trajectory onto a rig as a new Action, F-curves filled in bulk.
+
+The arrays come from :mod:`bake_math` (no bpy); this module only reads the rest matrices and
+writes keys with ``keyframe_points.add`` + ``foreach_set`` (one call per curve, not one
+``keyframe_insert`` per key). The user's previous action is stashed in the NLA; if anything fails
+while the action is being filled, the half-made action is removed and nothing is assigned.
+"""
+from __future__ import annotations
+
+import json
+
+import bpy
+import numpy as np
+
+from . import compat
+from .bake_math import BoneChannels, bake_channels
+from .rig import RESULT_KEY, RigError, bone_parents, rest_matrices
+
+ACTION_KEY = "sim_athletics"
+MAX_NAME = 60
+
+
+def action_name(behaviour: str, params: dict, defaults: dict) -> str:
+    """``balance pelvis_height=0.52 move_start=0.3``: the behaviour and the parameters that differ
+    from their defaults (the full set is stored on the action). Blender makes it unique."""
+    changed = [f"{k}={v:g}" for k, v in params.items() if defaults.get(k) != v]
+    name = " ".join([behaviour] + changed) if changed else f"{behaviour} defaults"
+    return name if len(name) <= MAX_NAME else name[: MAX_NAME - 1] + "~"
+
+
+def channels_for(obj: bpy.types.Object, trajectory, fps: float, start_frame: int,
+                 duration: float | None = None) -> BoneChannels:
+    names = [str(n) for n in trajectory.arrays["body_names"]]
+    bones = obj.data.bones
+    for n in names:
+        parent = bones[n].parent
+        if parent is not None and parent.name not in names:
+            raise RigError(f"bone {n!r} has parent {parent.name!r}, which is not a simulated body")
+    return bake_channels(trajectory.arrays, rest_matrices(obj, names), names, bone_parents(obj, names),
+                         fps=fps, start_frame=start_frame, duration=duration)
+
+
+def write_action(obj: bpy.types.Object, ch: BoneChannels, name: str, meta: dict) -> bpy.types.Action:
+    """Create the action, fill every F-curve in bulk, then stash the old action and assign."""
+    curves = list(ch.fcurve_values())
+    action, fcurves, slot = compat.new_action(obj, name, [(path, i, bone) for path, i, bone, _ in curves])
+    try:
+        n = len(ch.frames)
+        co = np.empty(2 * n, dtype=np.float32)
+        co[0::2] = ch.frames
+        linear = np.full(n, compat.LINEAR, dtype=np.int32)
+        for fc, (_, _, _, values) in zip(fcurves, curves):
+            co[1::2] = values
+            points = fc.keyframe_points
+            points.add(n)
+            points.foreach_set("co", co)
+            points.foreach_set("interpolation", linear)
+            fc.update()
+        action[ACTION_KEY] = json.dumps(meta)
+        action.use_fake_user = False
+        for pb in obj.pose.bones:
+            if pb.name in ch.names:
+                pb.rotation_mode = "QUATERNION"
+        compat.assign_action(obj, action, slot)
+    except BaseException:
+        bpy.data.actions.remove(action)
+        raise
+    obj[RESULT_KEY] = json.dumps(dict(meta, action=action.name))
+    return action
+
+
+def bake_trajectory(obj: bpy.types.Object, trajectory, fps: float, start_frame: int = 1,
+                    duration: float | None = None) -> bpy.types.Action:
+    """Trajectory -> a new action on ``obj`` named after the behaviour and its parameters."""
+    from sim_core.control.behaviour import behaviour_class
+    meta = trajectory.meta
+    defaults = behaviour_class(meta["behaviour"]).schema.defaults()
+    ch = channels_for(obj, trajectory, fps, start_frame, duration)
+    info = {
+        "character": meta.get("character"), "behaviour": meta["behaviour"], "params": meta.get("params", {}),
+        "outcome": meta.get("outcome"), "metrics": meta.get("metrics", {}),
+        "fps": fps, "start_frame": start_frame, "frames": len(ch.frames),
+        "frame_end": float(ch.frames[-1]), "duration": float(ch.frames[-1] - ch.frames[0]) / fps,
+    }
+    return write_action(obj, ch, action_name(meta["behaviour"], meta.get("params", {}), defaults), info)
+
+
+def scene_fps(scene) -> float:
+    return scene.render.fps / scene.render.fps_base

@@ -1,0 +1,120 @@
+"""Headless: add a character, simulate a behaviour, bake it, save a .blend.
+
+    blender -b -P <add-on folder>/batch.py -- --character man --behaviour balance \\
+        --set pelvis_height=0.52 --set move_time=1.2 --duration 3 --fps 25 --out out/balance.blend
+
+(In a repository checkout the add-on folder is ``blender_addon``; with Blender as a Python
+module, ``python blender_addon/batch.py --character man ...`` does the same.)
+
+Everything is validated before the scene is touched. Exit status: 0 baked (the outcome is
+printed, whatever it is), 2 bad input (one line on stderr naming the value and what is
+allowed), 3 the run's outcome was not success and ``--require-success`` was given, 1 anything
+else. The .blend is written only after a complete bake (Blender saves through a temporary file).
+"""
+from __future__ import annotations
+
+import argparse
+import importlib
+import sys
+from pathlib import Path
+
+PROG = "sim_athletics"
+
+
+class BatchError(Exception):
+    """Bad input (exit status 2)."""
+
+
+class _Parser(argparse.ArgumentParser):
+    def error(self, message):                 # one line, not usage + message
+        raise BatchError(message)
+
+
+def _package():
+    """The add-on package this file belongs to, however it was started (Blender's -P runs it
+    as __main__, outside its package)."""
+    if __package__:
+        return importlib.import_module(__package__)
+    here = Path(__file__).resolve().parent
+    if str(here.parent) not in sys.path:
+        sys.path.insert(0, str(here.parent))
+    return importlib.import_module(here.name)
+
+
+def parse_args(argv: list[str]) -> argparse.Namespace:
+    p = _Parser(prog=PROG, description="Simulate a behaviour and bake it into a .blend")
+    p.add_argument("--character", default="man", help="character name (rigs/<name>.json); default man")
+    p.add_argument("--behaviour", required=True, help="behaviour name, e.g. balance")
+    p.add_argument("--set", dest="assignments", action="append", default=[], metavar="NAME=VALUE",
+                   help="behaviour parameter (repeatable), SI units: metres, radians, seconds")
+    p.add_argument("--duration", type=float, default=None, help="seconds to simulate (default: the behaviour's)")
+    p.add_argument("--fps", type=int, default=None, help="scene frame rate (default: the file's)")
+    p.add_argument("--start-frame", type=int, default=1, help="frame of the first key (default 1)")
+    p.add_argument("--out", required=True, help="the .blend file to write")
+    p.add_argument("--trajectory", default=None, help="also save the trajectory (.npz)")
+    p.add_argument("--keep-scene", action="store_true", help="add to the loaded file instead of an empty one")
+    p.add_argument("--require-success", action="store_true", help="exit 3 unless the outcome is success")
+    args = p.parse_args(argv)
+    if not args.out.endswith(".blend"):
+        raise BatchError(f"--out {args.out!r} must end in .blend")
+    if args.fps is not None and not 1 <= args.fps <= 1000:
+        raise BatchError(f"--fps {args.fps} is out of range; allowed range is [1, 1000]")
+    return args
+
+
+def script_argv(argv: list[str] | None = None) -> list[str]:
+    """Arguments after '--' (Blender's own come before it)."""
+    argv = sys.argv if argv is None else argv
+    return argv[argv.index("--") + 1:] if "--" in argv else argv[1:]
+
+
+def run(argv: list[str]) -> int:
+    import bpy
+    pkg = _package()
+    api = importlib.import_module(pkg.__name__ + ".api")
+    rig = importlib.import_module(pkg.__name__ + ".rig")
+    from sim_core.errors import SimAthleticsError
+    try:
+        args = parse_args(argv)
+        params = api.parse_params(args.behaviour, args.assignments)
+        api.make_request(args.character, args.behaviour, params, args.duration)   # validate all first
+    except (BatchError, SimAthleticsError) as exc:
+        print(f"{PROG}: error: {exc}", file=sys.stderr)
+        return 2
+
+    if not args.keep_scene:
+        bpy.ops.wm.read_homefile(use_empty=True)
+    if "sim_athletics" not in bpy.types.Scene.bl_rna.properties:
+        pkg.register()
+    context = bpy.context
+    scene = context.scene
+    if args.fps is not None:
+        scene.render.fps, scene.render.fps_base = args.fps, 1.0
+    try:
+        arm = api.add_character(context, args.character)
+        action, trajectory = api.simulate_and_bake(
+            context, armature=arm.name, behaviour=args.behaviour, params=params, duration=args.duration,
+            start_frame=args.start_frame, fit_scene_range=True, progress=api.console_progress)
+    except (SimAthleticsError, rig.RigError) as exc:
+        print(f"{PROG}: error: {exc}", file=sys.stderr)
+        return 2
+    out = Path(args.out).resolve()
+    out.parent.mkdir(parents=True, exist_ok=True)
+    if args.trajectory:
+        trajectory.save(args.trajectory)
+    bpy.ops.wm.save_as_mainfile(filepath=str(out))
+    outcome = trajectory.meta.get("outcome")
+    frames = action.frame_range
+    print(f"{PROG}: baked {action.name!r} onto {arm.name}: frames {frames[0]:g}-{frames[1]:g} at "
+          f"{scene.render.fps / scene.render.fps_base:g} fps, outcome {outcome}; wrote {out}")
+    if args.require_success and outcome != "success":
+        return 3
+    return 0
+
+
+def main(argv: list[str] | None = None) -> None:
+    sys.exit(run(script_argv(argv)))
+
+
+if __name__ == "__main__":
+    main()
