@@ -18,9 +18,9 @@ def com_support_margins(traj: Trajectory, up: np.ndarray | None = None) -> np.nd
     """Per frame: how far the COM (projected along gravity) lies outside the support polygon
     (inf when fewer than three foot sites touch). A hull is reused while the same sites touch
     and none has moved more than 1 mm."""
-    up = np.array([0, 0, 1.0]) if up is None else up
     com = traj.arrays["com"]
-    ground = com[:, :2] - com[:, 2:3] * up[:2] / up[2]
+    up = np.tile([0.0, 0.0, 1.0], (len(com), 1)) if up is None else np.atleast_2d(up)
+    ground = com[:, :2] - com[:, 2:3] * up[:, :2] / up[:, 2:3]
     pts = traj.arrays["support_points"]
     touching_all = pts[:, :, 2] < CONTACT_HEIGHT
     out = np.full(len(com), np.inf)
@@ -42,12 +42,16 @@ def com_support_margins(traj: Trajectory, up: np.ndarray | None = None) -> np.nd
 
 
 def gravity_up(traj: Trajectory) -> np.ndarray:
-    g = np.array([0, 0, -9.80665])
-    world = traj.meta.get("world", {})
-    if world.get("slope"):
-        from sim_core.character.model import gravity_for_slope
-        g = gravity_for_slope(world["slope"], world["slope_axis"])
-    return -g / np.linalg.norm(g)
+    """Up (against gravity) at every frame, from the logged gravity edits."""
+    a = traj.arrays
+    g = np.tile([0.0, 0.0, -9.80665], (len(a["time"]), 1))
+    field = traj.meta.get("edit_fields", []).index("opt.gravity") if "edit_fields" in traj.meta else None
+    if field is not None and len(a["edit_tick"]):
+        for tick, f, index, value in zip(a["edit_tick"], a["edit_field"], a["edit_index"], a["edit_value"]):
+            if f == field:
+                frame = int(round(tick))            # frame k is recorded at tick k
+                g[frame:, index] = value
+    return -g / np.linalg.norm(g, axis=1, keepdims=True)
 
 
 def evaluate(traj: Trajectory, allowed_contacts=FOOT_BODIES) -> tuple[str, dict]:

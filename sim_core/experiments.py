@@ -42,11 +42,12 @@ def push_scan(character: str, step: float = FORCE_STEP, upper: float = 400.0) ->
 
 def slope_holds(character: str, slope_deg: float, axis: str) -> bool:
     world = World(slope=math.radians(slope_deg), slope_axis=axis)
-    trajectory = run(RunRequest("balance", character, world=world, duration=4.0))
+    trajectory = run(RunRequest("balance", character, world=world,
+                                duration=world.slope_start + world.ramp_time + 3.0))
     return trajectory.meta["outcome"] == "success"
 
 
-def steepest_slopes(character: str, step: float = 0.5, upper: float = 50.0) -> dict[str, float]:
+def steepest_slopes(character: str, step: float = 0.5, upper: float = 45.0) -> dict[str, float]:
     return {axis: largest_on_grid(lambda s: slope_holds(character, s, axis), step, upper)
             for axis in ("x+", "x-", "y+")}
 

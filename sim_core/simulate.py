@@ -148,6 +148,8 @@ def run(request: RunRequest, progress: Callable[[float], None] | None = None,
         log.tick = tick
         t = data.time
         pushes.apply(t, 0.5 * tick_time)
+        if request.world.tilting(t):
+            log.set_flat(model.opt.gravity, "opt.gravity", request.world.gravity(t))
         refresh_kinematics(model, data)
         if tick == 0:
             behaviour.start(t)

@@ -27,20 +27,35 @@ TIMESTEP = 0.001
 ARMATURE = 0.01            # kg m^2 on every hinge: numerical regularisation of light distal joints
 FOOT_FRICTION = 1.0
 BODY_FRICTION = 0.8
+SLOPE_RAMP_PER_DEGREE = 0.15   # s per degree: the ground tilts at ~6.7 deg/s
 CONTACT_GROUP = 1          # contype/conaffinity bit for character and world geoms
 
 
 @dataclass
 class World:
     """The world a character is put in. ``slope`` tilts the ground (radians) about the axis
-    named by ``slope_axis``: 'x+' means the ground rises towards +X; implemented by tilting
-    gravity, which is exactly equivalent for a flat plane and keeps the start pose simple."""
+    named by ``slope_axis``: 'x+' means the ground rises towards +X. As in Wooten §7.3 the
+    ground starts level and tilts to the slope along a Hermite curve over ``slope_ramp``
+    seconds from ``slope_start``. The tilt is implemented by turning gravity, which is exactly
+    equivalent for a flat plane; each change is a logged model edit."""
     slope: float = 0.0
     slope_axis: str = "x+"
     extra_mass: dict[str, float] = field(default_factory=dict)   # body -> added kg (backpack)
+    slope_start: float = 0.5
+    slope_ramp: float | None = None            # s; default SLOPE_RAMP_PER_DEGREE per degree
 
-    def gravity(self) -> np.ndarray:
-        return gravity_for_slope(self.slope, self.slope_axis)
+    @property
+    def ramp_time(self) -> float:
+        if self.slope_ramp is not None:
+            return self.slope_ramp
+        return max(1.0, SLOPE_RAMP_PER_DEGREE * math.degrees(self.slope))
+
+    def gravity(self, t: float = 0.0) -> np.ndarray:
+        s = min(max((t - self.slope_start) / self.ramp_time, 0.0), 1.0) if self.slope else 0.0
+        return gravity_for_slope(self.slope * s * s * (3.0 - 2.0 * s), self.slope_axis)
+
+    def tilting(self, t: float) -> bool:
+        return bool(self.slope) and t <= self.slope_start + self.ramp_time + 0.02
 
 
 def gravity_for_slope(slope: float, axis: str) -> np.ndarray:

@@ -26,6 +26,9 @@ from sim_core.schema import Parameter, Schema
 SPINE_Y = ("spine_l3_y", "spine_l1_y", "spine_t7_y", "spine_t4_y")
 SPINE_SHARE = 0.25           # share of the torso pitch taken by the spine (the rest by the hips)
 STANDING_KNEE_FLEX = 0.10    # rad: knees are never locked straight (law of cosines is singular there)
+LEAN_RATE = 0.5            # rad/s of trunk lean per radian of COM error beyond the ankles' reach
+LEAN_LEAK = 0.2            # 1/s: the lean returns to zero when the error is gone
+LEAN_MAX = 0.8             # rad
 CROUCH_TABLE_ROWS = 6      # balanced crouch poses solved between standing and the requested height
 HIP_SHARE = 0.5
 ANKLE_AUTHORITY = 1.0      # share of the torque the foot can take (COP at its edge) used by the ankles
@@ -115,6 +118,7 @@ class Balance(Behaviour):
                             (("knee", "y"), ("ankle", "y"), ("ankle", "x"), ("hip", "y"), ("hip", "x"))}
                            for side in "rl"]
         self._targets_key, self._targets = None, None
+        self._lean = 0.0
         # ankle offset that puts the centre of pressure at the front (toe) / back (heel) edge
         weight_per_foot = 0.5 * self.total_mass * float(np.linalg.norm(m.opt.gravity))
         ankle = ch.joint_position("FOOTR")
@@ -124,8 +128,8 @@ class Balance(Behaviour):
         kp_ankle = ch.dofs[ch.dof_index["ankle_r_y"]].kp
         self.ankle_limit_front = ANKLE_AUTHORITY * weight_per_foot * front / kp_ankle
         self.ankle_limit_back = ANKLE_AUTHORITY * weight_per_foot * back / kp_ankle
+        self.ankle_height = self.legs["R"].ankle_height
         self.stand_height = 0.5 * (self.legs["R"].standing_hip_height() + self.legs["L"].standing_hip_height())
-        self.up = np.array([0.0, 0.0, 1.0])
 
     # ----------------------------------------------------------------- requests
     def target_posture(self) -> np.ndarray:
@@ -160,7 +164,6 @@ class Balance(Behaviour):
         return goal + (stand - goal) * hermite_scalar((t - t3) / p["move_time"])
 
     def start(self, t: float) -> None:
-        self.up = -self.ctx.model.opt.gravity / np.linalg.norm(self.ctx.model.opt.gravity)
         goal = self.params["pelvis_height"] or self.stand_height
         heights = np.linspace(goal, self.stand_height, CROUCH_TABLE_ROWS) if goal != self.stand_height else [goal]
         self.crouch = CrouchTable(self.ctx.model, self.ctx.character, heights, self.stand_height)
@@ -197,7 +200,9 @@ class Balance(Behaviour):
         if key != self._targets_key:                 # nominal targets change only while moving
             self._targets_key, self._targets = key, self.joint_targets(posture)
         targets = self._targets.copy()
-        ux, uy, uz = self.up
+        gravity = self.ctx.model.opt.gravity
+        norm = math.sqrt(gravity[0] ** 2 + gravity[1] ** 2 + gravity[2] ** 2)
+        ux, uy, uz = -gravity[0] / norm, -gravity[1] / norm, -gravity[2] / norm
 
         # heading frame of the pelvis; COM projected along gravity onto the ground plane
         pelvis_m = d.xmat[self.pelvis].tolist()
@@ -212,7 +217,12 @@ class Balance(Behaviour):
         centre_x = 0.5 * (px.min() + px.max())
         centre_y = 0.5 * (py.min() + py.max())
         kp, kv = self.params["com_kp"], self.params["com_kv"]
-        delta_x = kp * (c * gx + s * gy - centre_x - posture[2]) + kv * (c * vx + s * vy)    # eq. 7.1
+        position_x = kp * (c * gx + s * gy - centre_x - posture[2])
+        velocity_x = kv * (c * vx + s * vy)
+        delta_x = position_x + velocity_x                                                # eq. 7.1
+        # the fast hip strategy answers the COM speed the ankles cannot stop (trunk against legs)
+        velocity_excess = velocity_x - min(max(velocity_x, -self.ankle_limit_back), self.ankle_limit_front)
+        hip_x = -HIP_SHARE * velocity_x - EXCESS_TO_HIP * velocity_excess
         delta_y = kp * (-s * gx + c * gy - centre_y - posture[3]) + kv * (-s * vx + c * vy)  # eq. 7.2
 
         # the ankles can only push as hard as the foot can take with its centre of pressure at the
@@ -221,10 +231,19 @@ class Balance(Behaviour):
         offset = servos.offset
         angles = servos.angles()
         velocities = servos.velocities()
-        pelvis_pitch_goal = posture[1] * (1.0 - SPINE_SHARE) + self._crouch_pitch
+        # a COM error the ankles cannot hold for long (a slope, a load) slowly leans the trunk
+        # towards it - the quasi-static complement of the fast hip strategy below
+        clipped = min(max(position_x, -self.ankle_limit_back), self.ankle_limit_front)
+        self._lean += (LEAN_RATE * (clipped - position_x) - LEAN_LEAK * self._lean) / self.control_rate
+        self._lean = min(max(self._lean, -LEAN_MAX), LEAN_MAX)
+        pelvis_pitch_goal = posture[1] * (1.0 - SPINE_SHARE) + self._crouch_pitch + self._lean
         pelvis_pitch = math.atan2(-(pelvis_m[0] * ux + pelvis_m[3] * uy + pelvis_m[6] * uz),
                                   pelvis_m[2] * ux + pelvis_m[5] * uy + pelvis_m[8] * uz)
-        hip_height = 0.5 * (d.xpos[self.hips[0], 2] + d.xpos[self.hips[1], 2])
+        # pelvis height along "up" above the ankles (+ ankle height): the leg configuration,
+        # also on a tilted ground
+        hx_, hy_, hz_ = (0.5 * (d.xpos[self.hips[0]] + d.xpos[self.hips[1]]) -
+                         0.5 * (d.xpos[self.feet[0]] + d.xpos[self.feet[1]])).tolist()
+        hip_height = hx_ * ux + hy_ * uy + hz_ * uz + self.ankle_height
         knee_offset = self.params["height_kp"] * (hip_height - posture[0])
         ratio = self.damping_ratio
         for k in (0, 1):
@@ -243,13 +262,12 @@ class Balance(Behaviour):
             # the ankle command (foot-flat term + COM offset) is limited to what the foot can take
             # with its centre of pressure at the toe tip or the heel; the rest goes to the hips
             command = min(max(delta_x - foot_pitch, -self.ankle_limit_back), self.ankle_limit_front)
-            excess_x = delta_x - min(max(delta_x, -self.ankle_limit_back), self.ankle_limit_front)
             targets[ay] = angles[ay]
             targets[ax] = angles[ax] - foot_roll
             offset[ay] = command + ratio[ay] * (velocities[ay] - pitch_rate)
             offset[ax] = -delta_y + ratio[ax] * (velocities[ax] - roll_rate)
             # hips hold the pelvis attitude, plus half the ankle offset (eqs. 7.1-7.2)
             targets[hy] = angles[hy] + (pelvis_pitch - pelvis_pitch_goal)
-            offset[hy] = -HIP_SHARE * delta_x - EXCESS_TO_HIP * excess_x
+            offset[hy] = hip_x
             offset[hx] = HIP_SHARE * delta_y
         servos.hold(targets, t)
