@@ -84,9 +84,12 @@ def matrix_to_quat(m: np.ndarray) -> np.ndarray:
 
 
 def quat_angle(a: np.ndarray, b: np.ndarray) -> np.ndarray:
-    """Angle (rad) of the rotation taking ``a`` to ``b`` (either sign of either quaternion)."""
-    d = np.abs(np.sum(np.asarray(a) * np.asarray(b), axis=-1))
-    return 2.0 * np.arccos(np.clip(d, 0.0, 1.0))
+    """Angle (rad) of the rotation taking ``a`` to ``b`` (either sign of either quaternion);
+    from the relative quaternion with atan2, accurate for tiny angles (arccos is not)."""
+    a, b = np.broadcast_arrays(np.asarray(a, float), np.asarray(b, float))
+    w = np.sum(a * b, axis=-1)
+    vec = (a[..., :1] * b[..., 1:] - b[..., :1] * a[..., 1:]) - np.cross(a[..., 1:], b[..., 1:])
+    return 2.0 * np.arctan2(np.linalg.norm(vec, axis=-1), np.abs(w))
 
 
 def slerp(q0: np.ndarray, q1: np.ndarray, u: np.ndarray) -> np.ndarray:

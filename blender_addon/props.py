@@ -64,11 +64,19 @@ def params_group(settings, behaviour: str):
     return getattr(settings, group_attr(behaviour))
 
 
+def as_typed(value) -> float:
+    """A panel value as the number the user typed: Blender stores floats in single precision
+    (0.2 comes back as 0.20000000298...), so take the shortest decimal that the float32 rounds
+    to. The same request then gives the same run as the CLI, bit for bit."""
+    import numpy as np
+    return float(str(np.float32(value)))
+
+
 def panel_params(settings, behaviour: str) -> dict[str, float]:
     """The panel's parameter values for ``behaviour`` as the schema's dict (bool -> 0/1)."""
     from sim_core.control.behaviour import behaviour_class
     group = params_group(settings, behaviour)
-    return {p.name: float(getattr(group, p.name)) for p in behaviour_class(behaviour).schema.parameters}
+    return {p.name: as_typed(getattr(group, p.name)) for p in behaviour_class(behaviour).schema.parameters}
 
 
 _ITEMS: dict[str, list] = {}          # enum items must stay referenced while Blender shows them
