@@ -29,6 +29,7 @@ STANDING_KNEE_FLEX = 0.10    # rad: knees are never locked straight (law of cosi
 LEAN_RATE = 0.5            # rad/s of trunk lean per radian of COM error beyond the ankles' reach
 LEAN_LEAK = 0.2            # 1/s: the lean returns to zero when the error is gone
 LEAN_MAX = 0.8             # rad
+CROUCH_COM_TOLERANCE = 0.04  # m: a crouch whose COM misses the centre of the feet by more is refused
 CROUCH_TABLE_ROWS = 6      # balanced crouch poses solved between standing and the requested height
 HIP_SHARE = 0.5
 ANKLE_AUTHORITY = 1.0      # share of the torque the foot can take (COP at its edge) used by the ankles
@@ -141,13 +142,33 @@ class Balance(Behaviour):
         return np.array([self.stand_height, 0.0, 0.0, 0.0])
 
     def check_feasible(self) -> None:
-        knee_max = self.ctx.character.dofs[self.ctx.character.dof_index["knee_r_y"]].range[1]
-        lowest = max(leg.lowest_hip_height(knee_max) for leg in self.legs.values())
+        """Refuse a pelvis height with no balanced crouch pose (COM not over the feet within the
+        joint ranges) or above standing height, before simulating."""
         h = self.params["pelvis_height"]
-        if h and not lowest <= h <= self.stand_height:
-            raise ParameterError(
-                f"parameter pelvis_height={h:g} m is out of reach for {self.ctx.character.name}; "
-                f"allowed range is [{lowest:.3f}, {self.stand_height:.3f}] m (or 0 for standing)")
+        if not h:
+            return
+        # "stable" (TARGETS.md) keeps the pelvis above half its standing height
+        pelvis = self.ctx.character.bodies[0]
+        lowest_stable = 0.5 * pelvis["com"][2] - (pelvis["com"][2] - self.legs["R"].hip_height) + 0.01
+
+        def balanced(height):
+            return (lowest_stable <= height <= self.stand_height
+                    and self._crouch_residual(height) < CROUCH_COM_TOLERANCE)
+        if balanced(h):
+            return
+        lo, hi = 0.3, self.stand_height                  # bisection for the lowest balanced height
+        for _ in range(12):
+            mid = 0.5 * (lo + hi)
+            lo, hi = (lo, mid) if balanced(mid) else (mid, hi)
+        raise ParameterError(
+            f"parameter pelvis_height={h:g} m is out of reach for {self.ctx.character.name} (no balanced "
+            f"crouch with feet flat); allowed range is [{hi:.3f}, {self.stand_height:.3f}] m (or 0 for standing)")
+
+    def _crouch_residual(self, height: float) -> float:
+        """How far the COM of the best crouch pose at this height misses the centre of the feet."""
+        table = CrouchTable(self.ctx.model, self.ctx.character, [height], self.stand_height)
+        knee, hip, ankle, _ = table.table[0]
+        return abs(table.measure(knee, hip, ankle)[1])
 
     def posture(self, t: float) -> np.ndarray:
         p = self.params

@@ -52,7 +52,8 @@ class CrouchTable:
         self.heights = np.asarray(heights, dtype=float)
         self.table = np.array([self.solve(h) for h in self.heights])   # knee, hip_y, ankle_y, pelvis_pitch
 
-    def _measure(self, knee: float, hip: float, ankle: float) -> tuple[float, float, float]:
+    def measure(self, knee: float, hip: float, ankle: float) -> tuple[float, float, float]:
+        """(pelvis height, COM offset from the centre of the feet, pelvis pitch) of a pose."""
         d, a = self.data, self.adr
         d.qpos[:] = self.base_qpos
         for side in "rl":
@@ -82,18 +83,18 @@ class CrouchTable:
         hip_lo, hip_hi = self.character.dofs[self.character.dof_index["hip_r_y"]].range
 
         def knee_for(ankle):
-            return _bisect(lambda k: self._measure(k, 0.0, ankle)[0] - height, 0.0, knee_max, decreasing=True)
+            return _bisect(lambda k: self.measure(k, 0.0, ankle)[0] - height, 0.0, knee_max, decreasing=True)
 
         def hip_for(knee, ankle):
             # flexing the hip (more negative) moves the COM forward
-            return _bisect(lambda h: self._measure(knee, h, ankle)[1], hip_lo, hip_hi, decreasing=True)
+            return _bisect(lambda h: self.measure(knee, h, ankle)[1], hip_lo, hip_hi, decreasing=True)
 
         def pose(ankle):
             knee = knee_for(ankle)
-            if abs(self._measure(knee, 0.0, ankle)[0] - height) > 1e-3:
+            if abs(self.measure(knee, 0.0, ankle)[0] - height) > 1e-3:
                 return knee, 0.0, ankle, -math.inf      # legs leaning too far to reach this height
             hip = hip_for(knee, ankle)
-            return knee, hip, ankle, self._measure(knee, hip, ankle)[2]
+            return knee, hip, ankle, self.measure(knee, hip, ankle)[2]
 
         # more dorsiflexion (ankle more negative) lets the trunk stand more upright
         most = pose(self.ankle_min)

@@ -1,0 +1,152 @@
+"""Schema validation, the CLI's answers to bad input, servo smoothing and the replay log."""
+import json
+import math
+import subprocess
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from sim_core.control.behaviour import available_behaviours, behaviour_class
+from sim_core.control.servo import hermite_blend
+from sim_core.errors import ParameterError
+from sim_core.perturbation import Push
+from sim_core.simulate import RunRequest, largest_difference, replay, run
+from sim_core.trajectory import Trajectory
+
+ROOT = Path(__file__).resolve().parents[1]
+
+
+def cli(*args, cwd=ROOT):
+    return subprocess.run([sys.executable, "-m", "sim_core", *args], cwd=cwd, capture_output=True, text=True)
+
+
+def test_every_parameter_is_documented():
+    for name in available_behaviours():
+        for p in behaviour_class(name).schema.parameters:
+            assert p.help and p.unit and p.minimum < p.maximum
+            assert p.minimum <= p.default <= p.maximum or p.default == p.special
+
+
+@pytest.mark.parametrize("value, message", [
+    ("nan", "pelvis_height=nan is not finite; allowed range for pelvis_height is [0.3, 1.2] m"),
+    ("abc", "pelvis_height='abc' is not a number; allowed range"),
+    ("5", "pelvis_height=5 m is out of range; allowed range for pelvis_height is [0.3, 1.2] m"),
+])
+def test_schema_errors_name_value_and_range(value, message):
+    schema = behaviour_class("balance").schema
+    with pytest.raises(ParameterError) as err:
+        schema.parse_assignments([f"pelvis_height={value}"])
+    assert message in str(err.value)
+
+
+def test_unknown_parameter():
+    with pytest.raises(ParameterError, match="unknown parameter 'height'"):
+        behaviour_class("balance").schema.validate({"height": 1})
+
+
+@pytest.mark.parametrize("args, message", [
+    (["simulate", "balanc"], "unknown behaviour 'balanc'; available: balance"),
+    (["simulate", "balance", "--character", "robot"], "unknown character 'robot'; available: man, woman"),
+    (["simulate", "balance", "--set", "torso_pitch=3"], "torso_pitch=3 rad is out of range; allowed range"),
+    (["simulate", "balance", "--set", "pelvis_height=nan"], "pelvis_height=nan is not finite"),
+    (["simulate", "balance", "--set", "com_kp=high"], "com_kp='high' is not a number"),
+    (["simulate", "balance", "--duration", "-1"], "duration=-1.0 s is out of range"),
+    (["simulate", "balance", "--push", "100@sideways"], "--push '100@sideways' must look like"),
+    (["simulate", "balance", "--set", "pelvis_height=0.31"], "pelvis_height=0.31 m is out of reach for man"),
+])
+def test_cli_bad_input_one_line_nonzero_no_file(tmp_path, args, message):
+    out = tmp_path / "run.npz"
+    result = cli(*args, "--out", str(out))
+    assert result.returncode == 2
+    lines = result.stderr.strip().splitlines()
+    assert len(lines) == 1 and lines[0].startswith("error: ") and message in lines[0], result.stderr
+    assert not out.exists() and list(tmp_path.iterdir()) == []
+
+
+def test_cli_malformed_rig_file(tmp_path):
+    rig = tmp_path / "bad.json"
+    rig.write_text('{"format": "sim_athletics.character", "version": 1, "bodies": [{"name": "A"}]}')
+    result = cli("simulate", "balance", "--character", str(rig), "--out", str(tmp_path / "x.npz"))
+    assert result.returncode == 2 and "has no 'mass'" in result.stderr
+    assert not (tmp_path / "x.npz").exists()
+
+
+def test_cli_list_describe():
+    listing = cli("list")
+    assert listing.returncode == 0 and "balance" in listing.stdout and "woman" in listing.stdout
+    schema = json.loads(cli("describe", "balance").stdout)
+    names = [p["name"] for p in schema["parameters"]]
+    assert {"pelvis_height", "torso_pitch", "com_offset_x", "com_offset_y"} <= set(names)
+
+
+def test_hermite_has_zero_end_slopes():
+    s = np.linspace(0, 1, 1001)
+    h = hermite_blend(s)
+    slope = np.gradient(h, s)
+    assert h[0] == 0 and h[-1] == 1 and abs(slope[0]) < 1e-2 and abs(slope[-1]) < 1e-2
+    assert np.all(np.diff(h) >= 0)
+
+
+def test_servo_targets_never_step():
+    """Control targets change by small increments per 10 ms tick during a knee bend."""
+    traj = run(RunRequest("balance", "man", params=dict(pelvis_height=0.6, move_time=1.0), duration=3.0))
+    knee = traj.meta["dof_names"].index("knee_r_y")
+    steps = np.abs(np.diff(traj.arrays["control"][:, knee]))
+    assert steps.max() < 0.06                   # < 3.5 degrees per tick
+
+
+def test_replay_of_a_pushed_run_is_bit_identical(tmp_path):
+    push = Push(force=80.0, direction_deg=180.0, start=1.0, duration=0.25)
+    traj = run(RunRequest("balance", "man", params=dict(pelvis_height=0.7), pushes=[push], duration=5.0))
+    path = traj.save(tmp_path / "pushed.npz")
+    loaded = Trajectory.load(path)
+    assert largest_difference(loaded, replay(loaded)) == 0.0
+    result = cli("replay", str(path))
+    assert result.returncode == 0
+    assert json.loads(result.stdout.strip().splitlines()[-1])["largest_difference"] == 0.0
+
+
+def test_trajectory_file_contents(tmp_path):
+    traj = run(RunRequest("balance", "woman", duration=0.5))
+    path = traj.save(tmp_path / "t.npz")
+    with np.load(path, allow_pickle=False) as f:
+        n = len(f["time"])
+        assert f["qpos"].shape == (n, 54) and f["qvel"].shape == (n, 53)
+        assert f["body_pos"].shape == (n, 22, 3) and f["body_quat"].shape == (n, 22, 4)
+        assert f["com"].shape == (n, 3) and len(f["body_names"]) == 22
+        assert f["control"].shape[1] == 47 and f["initial_state"].ndim == 1
+        meta = json.loads(str(f["meta"]))
+    for key in ("model_xml", "character", "behaviour", "params", "outcome", "metrics"):
+        assert key in meta
+    assert meta["model_xml"].startswith("<mujoco")
+    np.testing.assert_allclose(np.linalg.norm(traj.arrays["body_quat"], axis=2), 1.0, atol=1e-9)
+
+
+def test_only_external_force_is_the_logged_push():
+    """The edit log holds xfrc_applied entries only for the push, on the sternum, and nothing
+    else ever writes a force: no run without a push has any applied force."""
+    quiet = run(RunRequest("balance", "man", duration=1.0))
+    xfrc = quiet.meta["edit_fields"].index("xfrc_applied")
+    assert not np.any(quiet.arrays["edit_field"] == xfrc)
+    assert not np.any(quiet.arrays["push_force"])
+    pushed = run(RunRequest("balance", "man", pushes=[Push(50.0, 90.0, 0.5, 0.25)], duration=1.5))
+    a = pushed.arrays
+    rows = a["edit_field"] == xfrc
+    sternum_row = [str(n) for n in a["body_names"]].index("STERNUM") + 1      # +1: the world body
+    assert set((a["edit_index"][rows] // 6).tolist()) == {sternum_row}
+    on = np.nonzero(np.linalg.norm(a["push_force"], axis=1))[0]
+    assert math.isclose(len(on) / pushed.meta["control_rate"], 0.25, abs_tol=1e-9)
+    np.testing.assert_allclose(a["push_force"][on[0]], [0.0, 50.0, 0.0], atol=1e-9)
+
+
+def test_source_never_writes_forces_outside_the_push_module():
+    offenders = []
+    for path in (ROOT / "sim_core").rglob("*.py"):
+        text = path.read_text()
+        if path.name in ("perturbation.py", "edit_log.py", "simulate.py", "analysis.py"):
+            continue
+        if "xfrc_applied" in text or "qfrc_applied" in text:
+            offenders.append(path.name)
+    assert offenders == []
