@@ -112,9 +112,8 @@ def make_continuous(q: np.ndarray) -> np.ndarray:
     """Flip signs along axis 0 so that consecutive quaternions are in the same hemisphere (q and
     -q are the same rotation; F-curves interpolate the components, so a sign jump would spin)."""
     q = np.array(q, dtype=float)
-    for k in range(1, len(q)):
-        flip = np.sum(q[k] * q[k - 1], axis=-1) < 0
-        q[k][flip] *= -1.0
+    steps = np.where(np.sum(q[1:] * q[:-1], axis=-1) < 0, -1.0, 1.0)
+    q[1:] *= np.cumprod(steps, axis=0)[..., None]
     return q
 
 
