@@ -69,9 +69,19 @@ def cmd_list(args) -> int:
     return 0
 
 
+def schema_markdown(cls) -> str:
+    """The parameter table of a behaviour as Markdown (the README's tables are made by this)."""
+    rows = [f"| `{p.name}` | {p.unit} | {p.default:g} | {p.minimum:g} … {p.maximum:g} | {p.help} |"
+            for p in cls.schema.parameters]
+    return "\n".join(["| parameter | unit | default | range | meaning |", "| --- | --- | --- | --- | --- |", *rows])
+
+
 def cmd_describe(args) -> int:
     from sim_core.control.behaviour import behaviour_class
     cls = behaviour_class(args.behaviour)
+    if args.markdown:
+        print(schema_markdown(cls))
+        return 0
     print(json.dumps({"behaviour": cls.name, "summary": cls.summary, "default_duration": cls.default_duration,
                       "parameters": cls.schema.to_json_dict()}, indent=1))
     return 0
@@ -126,6 +136,7 @@ def parser() -> argparse.ArgumentParser:
     sub.add_parser("list", help="list behaviours and characters").set_defaults(func=cmd_list)
     d = sub.add_parser("describe", help="print a behaviour's parameter schema as JSON")
     d.add_argument("behaviour")
+    d.add_argument("--markdown", action="store_true", help="print the parameter table as Markdown")
     d.set_defaults(func=cmd_describe)
     s = sub.add_parser("simulate", help="run a behaviour and save its trajectory")
     s.add_argument("behaviour")
@@ -147,7 +158,7 @@ def parser() -> argparse.ArgumentParser:
     r.set_defaults(func=cmd_replay)
     b = sub.add_parser("bench", help="controller-in-the-loop speed against raw mj_step")
     b.add_argument("--duration", default="10")
-    b.add_argument("--repeats", type=int, default=3)
+    b.add_argument("--repeats", type=int, default=5)
     b.set_defaults(func=cmd_bench)
     br = sub.add_parser("balance-report", help="push scan, slopes and backpacks for the balance behaviour")
     br.add_argument("--character", action="append", help="man and/or woman (default both)")

@@ -37,6 +37,7 @@ class ServoBank:
         self.t0 = np.zeros(model.nu)
         self.duration = np.ones(model.nu) * 1e-9
         self.offset = np.zeros(model.nu)      # feedback added on top of the smoothed target
+        self._moving = False
 
     def indices(self, names) -> np.ndarray:
         return np.array([self.index[n] for n in names], dtype=int)
@@ -53,6 +54,7 @@ class ServoBank:
 
     def move_to(self, idx: np.ndarray, goal, duration: float, t: float) -> None:
         """Start a Hermite move of the targets ``idx`` from where they are now to ``goal``."""
+        self._moving = True
         current = self.smoothed_target(t)
         self.start[idx] = current[idx]
         self.goal[idx] = goal
@@ -60,10 +62,12 @@ class ServoBank:
         self.duration[idx] = max(duration, 1e-9)
 
     def hold(self, values: np.ndarray, t: float) -> None:
-        """Set every target at once without smoothing (only at t = 0, before the first step)."""
+        """Set every target at once, without a Hermite move: for behaviours whose targets are
+        feedback laws evaluated every tick (their smoothness comes from the law itself)."""
         self.start[:] = values
         self.goal[:] = values
         self.t0[:] = t
+        self._moving = False
 
     def set_gains(self, idx: np.ndarray, kp, kv) -> None:
         kp = np.broadcast_to(np.asarray(kp, dtype=float), idx.shape)
@@ -73,4 +77,7 @@ class ServoBank:
         self.log.set_array(self.model.actuator_biasprm, "actuator_biasprm", idx, 2, -kv)
 
     def write(self, t: float) -> None:
-        self.data.ctrl[:] = self.smoothed_target(t) + self.offset
+        if self._moving:
+            self.data.ctrl[:] = self.smoothed_target(t) + self.offset
+        else:
+            np.add(self.goal, self.offset, out=self.data.ctrl)
