@@ -1,8 +1,6 @@
 """Fixtures for the add-on tests on Blender as a Python module (PyPI ``bpy``)."""
 import pytest
 
-KNEE_BEND = dict(pelvis_height=0.52, move_start=0.3, move_time=1.2, hold_time=0.5)
-
 
 @pytest.fixture(scope="session")
 def addon():

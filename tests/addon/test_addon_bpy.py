@@ -6,15 +6,14 @@ import math
 import numpy as np
 import pytest
 
-from tests.addon.conftest import KNEE_BEND
-
 bpy = pytest.importorskip("bpy")
 
 from blender_addon import bake_math as bm, compat, props, rig  # noqa: E402
 from blender_addon.axes import SIM_TO_BLENDER  # noqa: E402
 from sim_core.simulate import RunRequest, run  # noqa: E402
 
-FPS = 24                    # Blender's default: frames fall between the 100/200 Hz samples
+FPS = 24                    # Blender's default: frames fall between the simulation's samples
+KNEE_BEND = dict(pelvis_height=0.52, move_start=0.3, move_time=1.2, hold_time=0.5)
 
 
 def _knee_bend_params() -> str:
