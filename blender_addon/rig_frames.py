@@ -15,6 +15,8 @@ Blender's glTF importer has created the bones, the tests check them without Blen
 """
 from __future__ import annotations
 
+import hashlib
+import json
 from dataclasses import dataclass
 
 import numpy as np
@@ -41,6 +43,14 @@ class RestFrames:
         out[:, :3, 0], out[:, :3, 1], out[:, :3, 2], out[:, :3, 3] = x, y, z, self.heads
         out[:, 3, 3] = 1.0
         return out
+
+
+def spec_digest(bodies: list[dict]) -> str:
+    """Fingerprint of what a rig is made from (bodies: names, tree, masses, joints, shapes), stored
+    in the .glb so a stale rig is caught after the spec changes."""
+    keys = ("name", "parent", "mass", "density", "com", "shapes", "joint")
+    text = json.dumps([{k: b.get(k) for k in keys} for b in bodies], sort_keys=True)
+    return hashlib.sha256(text.encode()).hexdigest()[:16]
 
 
 def body_origin(body: dict) -> np.ndarray:

@@ -8,7 +8,7 @@ from pathlib import Path
 import numpy as np
 
 from ..axes import sim_to_blender_points
-from ..rig_frames import rest_frames
+from ..rig_frames import rest_frames, spec_digest
 from . import skin
 from .gltf import write_rig_glb
 
@@ -61,7 +61,8 @@ def build_rig(spec, out_path: Path, spacing: float = GRID_SPACING) -> RigReport:
     write_rig_glb(out_path, spec.name, frames.names, frames.parents, frames.heads,
                   sim_to_blender_points(vertices_sim), sim_to_blender_points(np.asarray(mesh.vertex_normals)),
                   np.asarray(mesh.faces), joints, weights,
-                  extras={"sim_athletics_character": spec.name, "root_bone_head": "pelvis centre of mass"})
+                  extras={"sim_athletics_character": spec.name, "spec_digest": spec_digest(bodies),
+                          "root_bone_head": "pelvis centre of mass"})
     return RigReport(
         name=spec.name, vertices=len(mesh.vertices), faces=len(mesh.faces),
         watertight=bool(mesh.is_watertight), mesh_volume=float(mesh.volume), field_volume=field_volume,

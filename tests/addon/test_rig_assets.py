@@ -7,7 +7,7 @@ import pytest
 
 pytest.importorskip("pygltflib")
 
-from blender_addon.rig_frames import rest_frames            # noqa: E402
+from blender_addon.rig_frames import rest_frames, spec_digest  # noqa: E402
 from blender_addon.rigbuild.gltf import read_rig_glb          # noqa: E402
 from sim_core.character.spec import RIGS_DIR, load_character  # noqa: E402
 
@@ -17,6 +17,12 @@ CHARACTERS = ["man", "woman"]
 @pytest.fixture(scope="module", params=CHARACTERS)
 def rig(request):
     return request.param, read_rig_glb(RIGS_DIR / f"{request.param}.glb"), load_character(request.param)
+
+
+def test_rig_is_built_from_the_current_spec(rig):
+    name, glb, spec = rig
+    assert glb["extras"]["spec_digest"] == spec_digest(spec.bodies), \
+        f"rigs/{name}.glb is stale: the spec changed since it was built; run 'python build.py rigs'"
 
 
 def test_one_bone_per_body_with_its_head_on_the_joint(rig):
