@@ -167,7 +167,7 @@ class Balance(Behaviour):
     def _crouch_residual(self, height: float) -> float:
         """How far the COM of the best crouch pose at this height misses the centre of the feet."""
         table = CrouchTable(self.ctx.model, self.ctx.character, [height], self.stand_height)
-        knee, hip, ankle, _ = table.table[0]
+        knee, hip, ankle = table.table[0, :3]
         return abs(table.measure(knee, hip, ankle)[1])
 
     def posture(self, t: float) -> np.ndarray:
@@ -202,7 +202,7 @@ class Balance(Behaviour):
         height, torso_pitch = posture[0], posture[1]
         q = self.base.copy()
         i, p = self.i, self.params
-        knee, _, _, self._crouch_pitch = self.crouch.at(height)
+        knee, _, _, self._crouch_pitch, self._leg_length = self.crouch.at(height)
         q[i["knee_r_y"]] = q[i["knee_l_y"]] = knee
         reach = arm_reach(height, self.stand_height)
         q[self.spine_idx] = torso_pitch * SPINE_SHARE / len(SPINE_Y)
@@ -260,12 +260,12 @@ class Balance(Behaviour):
         pelvis_pitch_goal = posture[1] * (1.0 - SPINE_SHARE) + self._crouch_pitch + self._lean
         pelvis_pitch = math.atan2(-(pelvis_m[0] * ux + pelvis_m[3] * uy + pelvis_m[6] * uz),
                                   pelvis_m[2] * ux + pelvis_m[5] * uy + pelvis_m[8] * uz)
-        # pelvis height along "up" above the ankles (+ ankle height): the leg configuration,
-        # also on a tilted ground
+        # the knees servo the hip-to-ankle distance of the crouch pose (not the height, which
+        # also changes when the whole body leans, on a slope or under a push)
         hx_, hy_, hz_ = (0.5 * (d.xpos[self.hips[0]] + d.xpos[self.hips[1]]) -
                          0.5 * (d.xpos[self.feet[0]] + d.xpos[self.feet[1]])).tolist()
-        hip_height = hx_ * ux + hy_ * uy + hz_ * uz + self.ankle_height
-        knee_offset = self.params["height_kp"] * (hip_height - posture[0])
+        leg_length = math.sqrt(hx_ * hx_ + hy_ * hy_ + hz_ * hz_)
+        knee_offset = self.params["height_kp"] * (leg_length - self._leg_length)
         ratio = self.damping_ratio
         for k in (0, 1):
             j = idx[k]

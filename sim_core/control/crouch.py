@@ -50,7 +50,8 @@ class CrouchTable:
         self.standing_height = standing_height
         self.shoulders = [(model.joint(f"shoulder_{side}_z").qposadr[0], sign) for side, sign in (("r", 1.0), ("l", -1.0))]
         self.heights = np.asarray(heights, dtype=float)
-        self.table = np.array([self.solve(h) for h in self.heights])   # knee, hip_y, ankle_y, pelvis_pitch
+        rows = [self.solve(h) for h in self.heights]                 # knee, hip_y, ankle_y, pelvis_pitch
+        self.table = np.array([(*row, self.leg_length(*row[:3])) for row in rows])   # + hip-ankle distance
 
     def measure(self, knee: float, hip: float, ankle: float) -> tuple[float, float, float]:
         """(pelvis height, COM offset from the centre of the feet, pelvis pitch) of a pose."""
@@ -103,9 +104,18 @@ class CrouchTable:
         ankle = _bisect(lambda a: pose(a)[3], self.ankle_min, 0.0, decreasing=False)
         return pose(ankle)
 
+    def leg_length(self, knee: float, hip: float, ankle: float) -> float:
+        """Distance from the mid-hip point to the ankles in a pose: what the knees control,
+        whatever the body's lean (a slope, a push)."""
+        self.measure(knee, hip, ankle)
+        d = self.data
+        hip_mid = 0.5 * (d.xpos[self.hips[0]] + d.xpos[self.hips[1]])
+        dx, _, dz = hip_mid - d.xpos[self.foot]          # sagittal plane: the pose is symmetric
+        return float(math.hypot(dx, dz))
+
     def at(self, height: float) -> np.ndarray:
-        """Interpolated (knee, hip_y, ankle_y, pelvis_pitch) for a height inside the table."""
-        return np.array([np.interp(height, self.heights, self.table[:, k]) for k in range(4)])
+        """Interpolated (knee, hip_y, ankle_y, pelvis_pitch, leg_length) for a height in the table."""
+        return np.array([np.interp(height, self.heights, self.table[:, k]) for k in range(5)])
 
 
 def _bisect(f, lo: float, hi: float, decreasing: bool, iterations: int = 15) -> float:
