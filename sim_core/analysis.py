@@ -54,7 +54,9 @@ def gravity_up(traj: Trajectory) -> np.ndarray:
     return -g / np.linalg.norm(g, axis=1, keepdims=True)
 
 
-def evaluate(traj: Trajectory, allowed_contacts=FOOT_BODIES) -> tuple[str, dict]:
+def standard_metrics(traj: Trajectory, allowed_contacts=FOOT_BODIES) -> dict:
+    """Metrics every behaviour reports: falls, steps, COM against the support polygon, pelvis
+    heights, final COM speed, peak ground reaction force."""
     a = traj.arrays
     names = traj.body_names
     pelvis = names.index("PELVIS")
@@ -70,6 +72,7 @@ def evaluate(traj: Trajectory, allowed_contacts=FOOT_BODIES) -> tuple[str, dict]
     lifted = (feet[:, :, 2] > 0.02).any()
     margins = com_support_margins(traj, gravity_up(traj))
     final_speed = float(np.linalg.norm(a["com_vel"][-1]))
+    weight = 9.80665 * float(traj.meta.get("total_mass") or 1.0)
     hands = [names.index("HANDR"), names.index("HANDL")]
     knees = [names.index("LLEGR"), names.index("LLEGL")]
     hand_below_knee = float(np.max(a["body_pos"][:, knees, 2].mean(axis=1) - a["body_pos"][:, hands, 2].mean(axis=1)))
@@ -85,14 +88,18 @@ def evaluate(traj: Trajectory, allowed_contacts=FOOT_BODIES) -> tuple[str, dict]
         "final_com_speed": final_speed,
         "max_hand_below_knee": hand_below_knee,
         "peak_grf": float(np.max(np.linalg.norm(a["grf"], axis=1))),
+        "peak_vertical_grf_body_weights": float(np.max(a["grf"][:, 2]) / weight),
         "duration": float(a["time"][-1]),
     }
-    if fell:
-        outcome = "fell"
-    elif metrics["stepped"]:
-        outcome = "stepped"
-    elif final_speed >= STILL_SPEED:
-        outcome = "not_still"
-    else:
-        outcome = "success"
-    return outcome, metrics
+    return metrics
+
+
+def standing_outcome(metrics: dict) -> str:
+    """'success' for a skill that ends standing still where it started, else the named failure."""
+    if metrics["fell"]:
+        return "fell"
+    if metrics["stepped"]:
+        return "stepped"
+    if metrics["final_com_speed"] >= STILL_SPEED:
+        return "not_still"
+    return "success"

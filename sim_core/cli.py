@@ -116,7 +116,10 @@ def cmd_replay(args) -> int:
 
 def cmd_bench(args) -> int:
     from sim_core.bench import bench
-    result = bench(duration=_finite(args.duration, "--duration"), repeats=args.repeats)
+    from sim_core.control.behaviour import behaviour_class
+    params = behaviour_class(args.behaviour).schema.parse_assignments(args.set or [])
+    result = bench(behaviour=args.behaviour, character=args.character, params=params,
+                   duration=_finite(args.duration, "--duration"), repeats=args.repeats)
     print(f"controller in the loop: {result['controller_in_loop_sim_s_per_wall_s']:.2f} sim s / wall s")
     print(f"raw mj_step:            {result['raw_mj_step_sim_s_per_wall_s']:.2f} sim s / wall s")
     print(f"ratio:                  {result['ratio']:.3f}  (goal >= 0.75)")
@@ -157,6 +160,9 @@ def parser() -> argparse.ArgumentParser:
     r.add_argument("file")
     r.set_defaults(func=cmd_replay)
     b = sub.add_parser("bench", help="controller-in-the-loop speed against raw mj_step")
+    b.add_argument("--behaviour", default="balance")
+    b.add_argument("--character", default="man")
+    b.add_argument("--set", action="append", metavar="NAME=VALUE")
     b.add_argument("--duration", default="10")
     b.add_argument("--repeats", type=int, default=5)
     b.set_defaults(func=cmd_bench)

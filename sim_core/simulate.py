@@ -18,7 +18,6 @@ from typing import Callable
 import mujoco
 import numpy as np
 
-from sim_core.analysis import evaluate
 from sim_core.character.model import World, compile_model, set_standing_pose
 from sim_core.character.spec import CharacterSpec, load_character
 from sim_core.control.behaviour import Behaviour, ControlContext, behaviour_class
@@ -182,7 +181,7 @@ def run(request: RunRequest, progress: Callable[[float], None] | None = None,
         "dof_names": [model.actuator(i).name for i in range(model.nu)],
     }
     trajectory = Trajectory(arrays, meta)
-    outcome, metrics = evaluate(trajectory)
+    outcome, metrics = cls.assess(trajectory)
     trajectory.meta["outcome"] = outcome
     trajectory.meta["metrics"] = metrics
     if progress:

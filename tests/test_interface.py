@@ -150,3 +150,50 @@ def test_source_never_writes_forces_outside_the_push_module():
         if "xfrc_applied" in text or "qfrc_applied" in text:
             offenders.append(path.name)
     assert offenders == []
+
+
+def test_gain_changes_and_hermite_moves_replay_bit_for_bit():
+    """A behaviour that changes servo gains per state and moves targets along Hermite curves:
+    every gain change is in the edit log, and the replay reproduces the run exactly."""
+    from sim_core.control.balance import Balance
+    from sim_core.control.behaviour import _REGISTRY
+
+    class SoftKnees(Balance):
+        name = "_test_soft_knees"
+
+        def update(self, t):
+            super().update(t)
+            servos = self.ctx.servos
+            knees = servos.indices(["knee_r_y", "knee_l_y"])
+            if abs(t - 1.0) < 1e-9:
+                servos.set_gains(knees, servos.default_kp[knees] * 0.5, servos.default_kv[knees] * 0.5)
+            if abs(t - 2.0) < 1e-9:
+                servos.set_gains(knees, servos.default_kp[knees], servos.default_kv[knees])
+
+    _REGISTRY[SoftKnees.name] = SoftKnees
+    try:
+        traj = run(RunRequest(SoftKnees.name, "man", duration=3.0))
+    finally:
+        del _REGISTRY[SoftKnees.name]
+    field = traj.meta["edit_fields"].index("actuator_gainprm")
+    ticks = traj.arrays["edit_tick"][traj.arrays["edit_field"] == field]
+    assert sorted(set(ticks.tolist())) == [100, 200]            # 10 ms ticks: t = 1 s and 2 s
+    assert largest_difference(traj, replay(traj)) == 0.0
+
+
+def test_servo_bank_hermite_move():
+    from sim_core.character.model import compile_model, set_standing_pose
+    from sim_core.character.spec import load_character
+    from sim_core.control.servo import ServoBank
+    from sim_core.edit_log import EditLog
+    import mujoco
+    spec = load_character("man")
+    model, _ = compile_model(spec)
+    data = mujoco.MjData(model)
+    set_standing_pose(model, data, spec)
+    bank = ServoBank(model, data, spec, EditLog())
+    knee = bank.indices(["knee_r_y"])
+    bank.move_to(knee, 1.0, duration=0.5, t=0.0)
+    values = [bank.smoothed_target(t)[knee][0] for t in np.linspace(0, 0.6, 61)]
+    assert values[0] == pytest.approx(0.0) and values[50] == pytest.approx(1.0) and values[-1] == 1.0
+    assert values[25] == pytest.approx(0.5)

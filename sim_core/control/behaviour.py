@@ -36,7 +36,14 @@ def available_behaviours() -> list[str]:
 
 
 def _load_builtin() -> None:
-    from sim_core.control import balance  # noqa: F401  (registers itself)
+    """Import every module of sim_core.control: behaviours register themselves with @register,
+    so a new behaviour needs no list to be edited."""
+    import importlib
+    import pkgutil
+
+    import sim_core.control as package
+    for info in pkgutil.iter_modules(package.__path__):
+        importlib.import_module(f"{package.__name__}.{info.name}")
 
 
 @dataclass
@@ -71,6 +78,14 @@ class Behaviour:
 
     def check_feasible(self) -> None:
         """Raise ParameterError before simulating if the request cannot be done."""
+
+    @classmethod
+    def assess(cls, trajectory) -> tuple[str, dict]:
+        """Outcome and metrics read off a finished run. The default judges a standing skill
+        (TARGETS.md "stable"); behaviours that end in motion override it."""
+        from sim_core.analysis import standing_outcome, standard_metrics
+        metrics = standard_metrics(trajectory)
+        return standing_outcome(metrics), metrics
 
 
 def angle_offsets(values: dict[str, float], servos: ServoBank) -> tuple[np.ndarray, np.ndarray]:
