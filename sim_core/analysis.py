@@ -63,7 +63,7 @@ def standard_metrics(traj: Trajectory, allowed_contacts=FOOT_BODIES) -> dict:
     allowed = np.array([n in allowed_contacts for n in names])
     bad_contact = (a["ground_contact"] & ~allowed).any(axis=1)
     hip_height = 0.5 * (a["body_pos"][:, names.index("ULEGR"), 2] + a["body_pos"][:, names.index("ULEGL"), 2])
-    stand_pelvis = a["body_pos"][0, pelvis, 2]
+    stand_pelvis = a["body_pos"][0, pelvis, 2] - traj.meta.get("start_state", {}).get("height", 0.0)
     too_low = a["body_pos"][:, pelvis, 2] < 0.5 * stand_pelvis
     fell_frames = np.nonzero(bad_contact | too_low)[0]
     fell = len(fell_frames) > 0

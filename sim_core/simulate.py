@@ -34,6 +34,26 @@ class Cancelled(SimAthleticsError):
     """The user cancelled a run; nothing was written."""
 
 
+@dataclass(frozen=True)
+class StartState:
+    """A named test input for the initial state (logged in the trajectory's meta and in its
+    initial_state): the standing pose raised ``height`` metres above the ground, with every body
+    moving at ``velocity`` (m/s, world frame). Used for drop and landing tests; a run never
+    changes the state after t = 0."""
+    height: float = 0.0
+    velocity: tuple[float, float, float] = (0.0, 0.0, 0.0)
+
+    def check(self) -> None:
+        if not (math.isfinite(self.height) and 0.0 <= self.height <= 20.0):
+            raise ParameterError(f"start height={self.height} m is out of range; allowed range is [0, 20] m")
+        if len(self.velocity) != 3 or not all(math.isfinite(v) and abs(v) <= 20.0 for v in self.velocity):
+            raise ParameterError(f"start velocity={self.velocity} m/s: need 3 finite numbers in [-20, 20] m/s")
+
+    def apply(self, data: mujoco.MjData) -> None:
+        data.qpos[2] += self.height
+        data.qvel[:3] = self.velocity
+
+
 @dataclass
 class RunRequest:
     behaviour: str
@@ -43,6 +63,7 @@ class RunRequest:
     pushes: list[Push] = field(default_factory=list)
     world: World = field(default_factory=World)
     strength: str | float = "human"
+    start: StartState = field(default_factory=StartState)
 
     def validated(self) -> tuple[CharacterSpec, type[Behaviour], dict, float]:
         character = self.character if isinstance(self.character, CharacterSpec) else load_character(self.character)
@@ -56,6 +77,7 @@ class RunRequest:
             raise ParameterError(f"strength={self.strength!r} must be 'human', 'unlimited' or a factor in [0.1, 10]")
         for push in self.pushes:
             push.check()
+        self.start.check()
         return character, cls, params, float(duration)
 
 
@@ -76,7 +98,7 @@ class Recorder:
             "time": np.zeros(n_frames), "qpos": np.zeros((n_frames, model.nq)),
             "qvel": np.zeros((n_frames, model.nv)), "body_pos": np.zeros((n_frames, nb, 3)),
             "body_quat": np.zeros((n_frames, nb, 4)), "com": np.zeros((n_frames, 3)),
-            "com_vel": np.zeros((n_frames, 3)), "grf": np.zeros((n_frames, 3)),
+            "com_vel": np.zeros((n_frames, 3)), "angmom": np.zeros((n_frames, 3)), "grf": np.zeros((n_frames, 3)),
             "ground_contact": np.zeros((n_frames, nb), dtype=bool),
             "support_points": np.zeros((n_frames, len(site_ids), 3)), "push_force": np.zeros((n_frames, 3)),
         }
@@ -91,6 +113,7 @@ class Recorder:
         b["body_quat"][k] = data.xquat[1:]
         b["com"][k] = data.subtree_com[self.root]
         b["com_vel"][k] = data.subtree_linvel[self.root]
+        b["angmom"][k] = data.subtree_angmom[self.root]
         push = data.xfrc_applied[:, :3].sum(axis=0)
         b["push_force"][k] = push
         if k:                               # no physics step has produced a contact force at frame 0
@@ -124,6 +147,7 @@ def run(request: RunRequest, progress: Callable[[float], None] | None = None,
     model, xml = compile_model(character, request.world, request.strength)
     data = mujoco.MjData(model)
     set_standing_pose(model, data, character)
+    request.start.apply(data)
     data.ctrl[:] = data.qpos[[model.jnt_qposadr[model.actuator_trnid[i, 0]] for i in range(model.nu)]]
     mujoco.mj_forward(model, data)
 
@@ -175,6 +199,7 @@ def run(request: RunRequest, progress: Callable[[float], None] | None = None,
         "duration": duration, "pushes": [p.to_dict() for p in request.pushes],
         "world": {"slope": request.world.slope, "slope_axis": request.world.slope_axis,
                   "extra_mass": request.world.extra_mass},
+        "start_state": {"height": request.start.height, "velocity": list(request.start.velocity)},
         "strength": request.strength, "total_mass": float(model.body_subtreemass[1]), "timestep": model.opt.timestep, "steps_per_tick": steps_per_tick,
         "control_rate": cls.control_rate, "phase_events": behaviour.phase_events,
         "edit_fields": list(EDITABLE_FIELDS), "state_spec": int(STATE_SPEC),
@@ -218,7 +243,7 @@ def replay(trajectory: Trajectory) -> Trajectory:
 
 def largest_difference(a: Trajectory, b: Trajectory) -> float:
     worst = 0.0
-    for name in ("time", "qpos", "qvel", "body_pos", "body_quat", "com", "com_vel", "grf", "support_points"):
+    for name in ("time", "qpos", "qvel", "body_pos", "body_quat", "com", "com_vel", "angmom", "grf", "support_points"):
         x, y = a.arrays[name], b.arrays[name]
         if x.shape != y.shape:
             return math.inf

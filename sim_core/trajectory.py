@@ -2,7 +2,8 @@
 
 Arrays (N recorded frames at the control rate, B bodies, S foot contact sites):
   time (N), qpos (N x nq), qvel (N x nv), body_names (B), body_pos (N x B x 3, world),
-  body_quat (N x B x 4, world, w first), com (N x 3), com_vel (N x 3), grf (N x 3: ground
+  body_quat (N x B x 4, world, w first), com (N x 3), com_vel (N x 3), angmom (N x 3: whole-body
+  angular momentum about the COM, kg m^2/s), grf (N x 3: ground
   reaction force on the character), ground_contact (N x B: body touches the ground),
   support_points (N x S x 3: foot contact sites), push_force (N x 3).
 Replay log: initial_state (mjSTATE_INTEGRATION), control (K x nu, the control vector of each
@@ -24,7 +25,7 @@ import numpy as np
 
 FORMAT = "sim_athletics.trajectory"
 VERSION = 1
-FRAME_FIELDS = ("time", "qpos", "qvel", "body_pos", "body_quat", "com", "com_vel", "grf",
+FRAME_FIELDS = ("time", "qpos", "qvel", "body_pos", "body_quat", "com", "com_vel", "angmom", "grf",
                 "ground_contact", "support_points", "push_force")
 LOG_FIELDS = ("initial_state", "control", "edit_tick", "edit_field", "edit_index", "edit_value")
 

@@ -26,6 +26,7 @@ from sim_core.schema import Parameter, Schema
 SPINE_Y = ("spine_l3_y", "spine_l1_y", "spine_t7_y", "spine_t4_y")
 SPINE_SHARE = 0.25           # share of the torso pitch taken by the spine (the rest by the hips)
 STANDING_KNEE_FLEX = 0.10    # rad: knees are never locked straight (law of cosines is singular there)
+HIP_STRATEGY_MAX = 0.4     # rad: largest hip offset of the fast hip strategy
 LEAN_RATE = 0.5            # rad/s of trunk lean per radian of COM error beyond the ankles' reach
 LEAN_LEAK = 0.2            # 1/s: the lean returns to zero when the error is gone
 LEAN_MAX = 0.8             # rad
@@ -58,6 +59,15 @@ class LegGeometry:
         c = (u * u + l * l - hip_to_ankle * hip_to_ankle) / (2 * u * l)
         flex = math.pi - math.acos(max(-1.0, min(1.0, c)))
         return flex - self.rest_flex
+
+    def thigh_pitch_for(self, foot_ahead: float, knee_flexion: float) -> float:
+        """Thigh pitch from vertical (+ = foot behind the hip) that puts the ankle ``foot_ahead``
+        metres ahead of the hip with this knee flexion (planar two-link leg)."""
+        u, l = self.upper, self.lower
+        k = knee_flexion + self.rest_flex
+        a, b = u + l * math.cos(k), l * math.sin(k)
+        r = math.hypot(a, b)
+        return math.asin(max(-1.0, min(1.0, -foot_ahead / r))) - math.atan2(b, a)
 
     def standing_hip_height(self) -> float:
         u, l = self.upper, self.lower
@@ -100,8 +110,14 @@ class Balance(Behaviour):
                   "pelvis height servo: knee offset per metre of height error (corrects servo sag)"),
     )
 
-    def __init__(self, params, ctx: ControlContext):
+    def __init__(self, params, ctx: ControlContext, from_height: float | None = None,
+                 from_pitch: float | None = None):
+        """``from_height``, ``from_pitch``: start from this pelvis height and pelvis pitch instead
+        of standing (after a landing), so the hand-over does not jerk."""
         super().__init__(params, ctx)
+        self.from_height = from_height
+        self.from_pitch = from_pitch
+        self.t0 = 0.0
         ch = ctx.character
         m = ctx.model
         self.legs = {s: LegGeometry(ch, s) for s in "RL"}
@@ -170,31 +186,51 @@ class Balance(Behaviour):
         knee, hip, ankle = table.table[0, :3]
         return abs(table.measure(knee, hip, ankle)[1])
 
+    def initial_posture(self) -> np.ndarray:
+        height = self.from_height if self.from_height is not None else self.stand_height
+        torso = 0.0
+        if self.from_pitch is not None:         # the torso pitch that gives the current pelvis pitch
+            torso = (self.from_pitch - self._crouch_pitch_at(height)) / (1.0 - SPINE_SHARE)
+        return np.array([height, torso, 0.0, 0.0])
+
+    def _crouch_pitch_at(self, height: float) -> float:
+        if not hasattr(self, "crouch"):
+            return 0.0
+        return float(self.crouch.at(height)[3])
+
     def posture(self, t: float) -> np.ndarray:
+        """Posture (pelvis height, torso pitch, COM offset x, y) at time t of this behaviour's
+        timeline, which starts when the behaviour starts."""
         p = self.params
-        stand, goal = self.standing_posture(), self.target_posture()
+        t = t - self.t0
+        initial, goal, stand = self.initial_posture(), self.target_posture(), self.standing_posture()
         t1 = p["move_start"]
         t2 = t1 + p["move_time"]
         t3 = t2 + p["hold_time"]
         if t < t1:
-            return stand
+            return initial
         if t < t2 or not p["return_to_stand"]:
-            return stand + (goal - stand) * hermite_scalar((t - t1) / p["move_time"])
+            return initial + (goal - initial) * hermite_scalar((t - t1) / p["move_time"])
         if t < t3:
             return goal
         return goal + (stand - goal) * hermite_scalar((t - t3) / p["move_time"])
 
+    def posture_reached(self, t: float) -> bool:
+        return t - self.t0 >= self.params["move_start"] + self.params["move_time"]
+
     def start(self, t: float) -> None:
+        self.t0 = t
         goal = self.params["pelvis_height"] or self.stand_height
-        heights = np.linspace(goal, self.stand_height, CROUCH_TABLE_ROWS) if goal != self.stand_height else [goal]
+        low = min(goal, self.initial_posture()[0])
+        heights = np.linspace(low, self.stand_height, CROUCH_TABLE_ROWS) if low < self.stand_height else [goal]
         self.crouch = CrouchTable(self.ctx.model, self.ctx.character, heights, self.stand_height)
-        self.ctx.servos.hold(self.joint_targets(self.standing_posture()), t)
-        self.event(t, "stand")
+        self.ctx.servos.hold(self.joint_targets(self.initial_posture()), t)
+        self.event(t, "stand" if self.from_height is None else "balance")
         p = self.params
-        self.event(p["move_start"], "move")
-        self.event(p["move_start"] + p["move_time"], "hold")
+        self.event(t + p["move_start"], "move")
+        self.event(t + p["move_start"] + p["move_time"], "hold")
         if p["return_to_stand"]:
-            self.event(p["move_start"] + p["move_time"] + p["hold_time"], "return")
+            self.event(t + p["move_start"] + p["move_time"] + p["hold_time"], "return")
 
     # ----------------------------------------------------------------- control law
     def joint_targets(self, posture: np.ndarray) -> np.ndarray:
@@ -244,6 +280,7 @@ class Balance(Behaviour):
         # the fast hip strategy answers the COM speed the ankles cannot stop (trunk against legs)
         velocity_excess = velocity_x - min(max(velocity_x, -self.ankle_limit_back), self.ankle_limit_front)
         hip_x = -HIP_SHARE * velocity_x - EXCESS_TO_HIP * velocity_excess
+        hip_x = min(max(hip_x, -HIP_STRATEGY_MAX), HIP_STRATEGY_MAX)
         delta_y = kp * (-s * gx + c * gy - centre_y - posture[3]) + kv * (-s * vx + c * vy)  # eq. 7.2
 
         # the ankles can only push as hard as the foot can take with its centre of pressure at the

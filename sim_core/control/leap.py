@@ -1,0 +1,403 @@
+"""Leaping (Wooten ch. 4) and landing (ch. 6) basis behaviours, and the leap composite skill.
+
+Leap thrust: from a crouch, the hips, knees and ankles extend proximal to distal along Hermite
+curves (vertical leap: full extension in 0.10, 0.15, 0.22 s; broad jump 0.15, 0.20, 0.45 s), the
+ankle servo stiffened (x4.45 vertical, x3.6 broad), the arms swing forward and up; the lift-off
+hip angle tilts the ground reaction force past the COM to set the somersault rate (§4.3).
+
+Landing: in flight the hips place the feet relative to the COM by a PD servo on the feet
+(eq. 6.1) towards the point where the COM's horizontal speed will have died out when it is over
+them (the capture point x + v sqrt(h/g)) plus the calibrated foot servo delta (Table 6.1's role);
+knees flexed, feet parallel to the ground. After touchdown the knees go soft (position gain down,
+damping up) and absorb; when their speed has fallen to 20 % of the touchdown speed the gains
+come back and the balance behaviour takes over.
+"""
+from __future__ import annotations
+
+import json
+import math
+from pathlib import Path
+
+import numpy as np
+
+from sim_core.analysis import standard_metrics
+from sim_core.control.balance import Balance, LegGeometry
+from sim_core.control.crouch import CrouchTable
+from sim_core.control.behaviour import Behaviour, ControlContext, register
+from sim_core.control.measure import SupportGeometry
+from sim_core.control.sequencer import Sequence, Step
+from sim_core.control.servo import hermite_scalar
+from sim_core.errors import ParameterError
+from sim_core.schema import Parameter, Schema
+
+TUNED_DIR = Path(__file__).resolve().parents[2] / "rigs" / "tuned"
+AIRBORNE_HEIGHT = 0.01          # m: every foot site this high above the ground = flight
+TOUCHDOWN_HEIGHT = 0.004        # m: a foot site this low = contact
+VERTICAL_TIMING = (0.10, 0.15, 0.22)     # s to full extension: hip, knee, ankle [W98 §4.1]
+BROAD_TIMING = (0.15, 0.20, 0.45)        # [W98 §4.2]
+ANKLE_GAIN_VERTICAL, ANKLE_GAIN_BROAD = 4.45, 3.6
+LIFTOFF_ANKLE = 0.75            # rad of plantarflexion at the end of the thrust
+SOFT_KNEE_KP, SOFT_KNEE_KV = 0.0, 2.5    # knee gain factors while absorbing a landing [W98 §6.1]
+UPRIGHT_GAIN = 0.5              # share of the pelvis pitch the hips correct while absorbing
+ABSORB_TIME = 0.35              # s: hand over to balance at the latest this long after touchdown
+KNEE_RESTORE = 0.2              # knees stiffen again at 20 % of their touchdown speed [W98 §6.1]
+
+
+def _sides(servos, *names):
+    return [[servos.index[f"{n}_{s}_{a}"] for n, a in (name.split(":") for name in names)] for s in "rl"]
+
+
+class Airborne:
+    """Foot contact state from the foot sites."""
+
+    def __init__(self, model):
+        self.support = SupportGeometry(model)
+
+    def feet_heights(self, data) -> np.ndarray:
+        return self.support.points(data)[:, 2]
+
+    def in_flight(self, data) -> bool:
+        return bool(self.feet_heights(data).min() > AIRBORNE_HEIGHT)
+
+    def touching(self, data) -> bool:
+        return bool(self.feet_heights(data).min() < TOUCHDOWN_HEIGHT)
+
+
+class LeapThrust(Behaviour):
+    """Basis behaviour: explosive proximal-to-distal extension from the current crouch.
+
+    Each joint runs along the path of balanced crouch poses (COM over the feet, see crouch.py)
+    from the crouch height up to standing, the hip in ``timing[0]`` s, the knee in ``timing[1]``,
+    the ankle in ``timing[2]`` (Wooten §4.1's order and times), then the ankles plantarflex to
+    push off. Following balanced poses keeps the ground force near the COM, so the body leaves
+    the ground without spinning; ``liftoff_hip`` flexes (-) or extends (+) the hips at the end
+    to send the force past the COM and set the somersault rate (§4.3)."""
+
+    def __init__(self, params, ctx: ControlContext, crouch_height: float, timing=VERTICAL_TIMING,
+                 ankle_gain=ANKLE_GAIN_VERTICAL, liftoff_hip=0.0, arm_swing=2.5, stand_height=None):
+        super().__init__(params, ctx)
+        self.timing, self.ankle_gain = timing, ankle_gain
+        self.liftoff_hip, self.arm_swing = liftoff_hip, arm_swing
+        self.airborne = Airborne(ctx.model)
+        self.crouch_height = crouch_height
+        self.stand_height = stand_height
+
+    def start(self, t: float) -> None:
+        s = self.ctx.servos
+        s.offset[:] = 0.0
+        self.t0 = t
+        heights = np.linspace(self.crouch_height, self.stand_height, 8)
+        self.path = CrouchTable(self.ctx.model, self.ctx.character, heights, self.stand_height)
+        self.idx = {name: s.indices([f"{name}_r_y", f"{name}_l_y"]) for name in ("hip", "knee", "ankle")}
+        t_hip, t_knee, t_ankle = self.timing
+        for side, sign in (("r", 1.0), ("l", -1.0)):
+            s.move_to(s.indices([f"hip_{side}_x", f"hip_{side}_z", f"ankle_{side}_x"]), 0.0, t_hip, t)
+            s.move_to(s.indices([f"shoulder_{side}_z"]), sign * self.arm_swing, t_knee, t)
+            s.move_to(s.indices([f"elbow_{side}_z"]), sign * 0.2, t_knee, t)
+        spine = [n for n in s.names if n.startswith("spine") and n.endswith("_y")]
+        s.move_to(s.indices(spine), 0.0, t_hip, t)
+        ankles = self.idx["ankle"]
+        s.set_gains(ankles, s.default_kp[ankles] * self.ankle_gain, s.default_kv[ankles] * self.ankle_gain)
+        self.event(t, "thrust")
+
+    def _height(self, t: float, duration: float) -> float:
+        return self.crouch_height + (self.stand_height - self.crouch_height) * hermite_scalar((t - self.t0) / duration)
+
+    def update(self, t: float) -> None:
+        s = self.ctx.servos
+        t_hip, t_knee, t_ankle = self.timing
+        hip = self.path.at(self._height(t, t_hip))[1] + self.liftoff_hip * hermite_scalar((t - self.t0) / t_hip)
+        knee = self.path.at(self._height(t, t_knee))[0]
+        ankle = self.path.at(self._height(t, t_ankle))[2]
+        push = hermite_scalar((t - self.t0 - 0.5 * t_ankle) / (0.5 * t_ankle))
+        ankle = ankle + (LIFTOFF_ANKLE - ankle) * push
+        for name, value in (("hip", hip), ("knee", knee), ("ankle", ankle)):
+            for i in self.idx[name]:
+                s.start[i] = s.goal[i] = value
+        s.t0[self.idx["hip"]] = t
+        s._moving = True
+
+    def lifted_off(self) -> bool:
+        return self.airborne.in_flight(self.ctx.data)
+
+
+class Landing(Behaviour):
+    """Basis behaviour: land from flight and absorb, ready for balance (Wooten ch. 6)."""
+
+    schema = Schema(
+        Parameter("knee_flexion", "rad", 0.9, 0.0, 1.5, "knee bend held in flight, ready to absorb"),
+        Parameter("foot_delta", "m", 0.0, -0.3, 0.3,
+                  "foot servo delta: extra forward placement of the feet relative to the capture point"),
+        Parameter("foot_kp", "rad/m", 3.0, 0.0, 20.0, "hip offset per metre of foot placement error (eq. 6.1)"),
+        Parameter("foot_kv", "rad s/m", 0.3, 0.0, 5.0, "hip offset per m/s of foot speed relative to the COM (eq. 6.1)"),
+    )
+
+    def __init__(self, params, ctx: ControlContext):
+        super().__init__(params, ctx)
+        m, s = ctx.model, ctx.servos
+        self.airborne = Airborne(m)
+        self.pelvis = m.body("PELVIS").id
+        self.feet = [m.body("FOOTR").id, m.body("FOOTL").id]
+        self.hips = [m.body("ULEGR").id, m.body("ULEGL").id]
+        self.leg = LegGeometry(ctx.character, "R")
+        self.idx = [{k: s.index[f"{j}_{side}_{a}"] for k, (j, a) in
+                     {"hip_y": ("hip", "y"), "hip_x": ("hip", "x"), "knee": ("knee", "y"),
+                      "ankle_y": ("ankle", "y"), "ankle_x": ("ankle", "x")}.items()} for side in "rl"]
+        self.knees = s.indices(["knee_r_y", "knee_l_y"])
+        self.stage = "flight"
+        self.touchdown_knee_speed = None
+        self.com_height = float(ctx.data.subtree_com[self.pelvis][2])
+        self.finished_at = None
+
+    def start(self, t: float) -> None:
+        s = self.ctx.servos
+        s.offset[:] = 0.0
+        s.hold(s.smoothed_target(t), t)
+        ankles = s.indices(["ankle_r_y", "ankle_l_y", "ankle_r_x", "ankle_l_x"])
+        s.set_gains(ankles, s.default_kp[ankles], s.default_kv[ankles])
+        for side, sign in (("r", 1.0), ("l", -1.0)):
+            s.move_to(s.indices([f"shoulder_{side}_z"]), sign * 0.6, 0.3, t)
+        self.event(t, "flight")
+
+    @property
+    def finished(self) -> bool:
+        return self.finished_at is not None
+
+    def update(self, t: float) -> None:
+        d, s = self.ctx.data, self.ctx.servos
+        p = self.params
+        m = d.xmat[self.pelvis].tolist()
+        yaw = math.atan2(m[3], m[0])
+        c, sn = math.cos(yaw), math.sin(yaw)
+        com = d.subtree_com[self.pelvis]
+        vel = d.subtree_linvel[self.pelvis]
+        vx, vy = c * vel[0] + sn * vel[1], -sn * vel[0] + c * vel[1]
+        angles, velocities = s.angles(), s.velocities()
+        targets = s.smoothed_target(t)
+        pelvis_pitch = math.atan2(-m[6], m[8])
+        if self.stage == "flight" and self.airborne.touching(d):
+            self.stage = "absorb"
+            self.touchdown_knee_speed = max(abs(float(velocities[self.knees].mean())), 1e-3)
+            s.set_gains(self.knees, s.default_kp[self.knees] * SOFT_KNEE_KP, s.default_kv[self.knees] * SOFT_KNEE_KV)
+            self.touchdown_at = t
+            self.event(t, "touchdown")
+        elif self.stage == "absorb" and abs(float(velocities[self.knees].mean())) < KNEE_RESTORE * self.touchdown_knee_speed:
+            self.stage = "settle"
+            self.knees_stopped_at = angles[self.knees].copy()
+            s.set_gains(self.knees, s.default_kp[self.knees], s.default_kv[self.knees])
+            self.event(t, "knees_restored")
+        if self.finished_at is None and (self.stage == "settle" or (
+                self.stage == "absorb" and t - self.touchdown_at > ABSORB_TIME)):
+            self.finished_at = t
+        for k in (0, 1):
+            j = self.idx[k]
+            f = d.xmat[self.feet[k]].tolist()
+            foot_pitch = math.atan2(-f[6], f[8])
+            foot_roll = math.atan2(f[7], f[8])
+            targets[j["ankle_y"]] = angles[j["ankle_y"]] - foot_pitch      # feet parallel to the ground
+            targets[j["ankle_x"]] = angles[j["ankle_x"]] - foot_roll
+            if self.stage == "flight":
+                # eq. 6.1: a PD servo on the foot's place relative to the COM, aiming where the COM's
+                # horizontal speed will be used up (capture point) plus the foot servo delta; the
+                # thigh is aimed in the world frame, so a pitching pelvis does not swing the feet
+                foot = d.xpos[self.feet[k]]
+                fx = c * (foot[0] - com[0]) + sn * (foot[1] - com[1])
+                capture = vx * math.sqrt(max(self.com_height, 0.5) / 9.81)
+                error = capture + p["foot_delta"] - fx
+                hip = d.xpos[self.hips[k]]
+                hip_from_com = c * (hip[0] - com[0]) + sn * (hip[1] - com[1])
+                wanted = capture + p["foot_delta"] + p["foot_kp"] * 0.05 * error - p["foot_kv"] * 0.05 * vx
+                thigh_pitch = self.leg.thigh_pitch_for(wanted - hip_from_com, p["knee_flexion"])
+                targets[j["knee"]] = p["knee_flexion"]
+                targets[j["hip_y"]] = thigh_pitch - pelvis_pitch
+                targets[j["hip_x"]] = 0.0
+            else:
+                # hips keep the pelvis upright while the knees give; the knees are pure dampers
+                # while absorbing, then hold where they stopped
+                targets[j["hip_y"]] = angles[j["hip_y"]] + UPRIGHT_GAIN * pelvis_pitch
+                if self.stage == "absorb":
+                    targets[j["knee"]] = angles[j["knee"]]
+                else:
+                    targets[j["knee"]] = self.knees_stopped_at[k]
+        s.hold(targets, t)
+
+
+
+@register
+class Land(Sequence):
+    """Composite: land from a fall or a flight, absorb, then balance and stand up."""
+
+    name = "land"
+    summary = "Land from a fall (use a start height / velocity), absorb and stand up balanced (Wooten ch. 6)."
+    default_duration = 3.0
+    schema = Landing.schema
+
+    def steps(self) -> list[Step]:
+        return [Step("land", lambda t: Landing(self.params, self.ctx), lambda b, t: b.finished),
+                Step("balance", lambda t: balance_after_landing(self.ctx))]
+
+    @classmethod
+    def assess(cls, trajectory):
+        return leap_assess(trajectory)
+
+
+def balance_after_landing(ctx: ControlContext) -> Balance:
+    """Balance that starts from the landed crouch (height and pelvis pitch) and stands up."""
+    d, m = ctx.data, ctx.model
+    hips = 0.5 * (d.xpos[m.body("ULEGR").id] + d.xpos[m.body("ULEGL").id])
+    feet = 0.5 * (d.xpos[m.body("FOOTR").id] + d.xpos[m.body("FOOTL").id])
+    pelvis = d.xmat[m.body("PELVIS").id]
+    height = float(hips[2] - feet[2]) + float(ctx.character.joint_position("FOOTR")[2])
+    return Balance(Balance.schema.validate(dict(move_start=0.0, move_time=1.2, return_to_stand=0)), ctx,
+                   from_height=height, from_pitch=math.atan2(-pelvis[6], pelvis[8]))
+
+
+def leap_assess(trajectory) -> tuple[str, dict]:
+    """Outcome of a skill with a flight phase: no fall, ends still and standing; measured COM
+    rise and travel, flight time, peak vertical ground reaction force (body weights)."""
+    metrics = standard_metrics(trajectory)
+    a = trajectory.arrays
+    heights = a["support_points"][:, :, 2].min(axis=1)
+    flying = heights > AIRBORNE_HEIGHT
+    t = a["time"]
+    com = a["com"]
+    metrics["com_rise"] = float(com[:, 2].max() - com[0, 2])
+    metrics["com_travel"] = float(com[-1, 0] - com[0, 0])
+    metrics["com_travel_y"] = float(com[-1, 1] - com[0, 1])
+    if flying.any():
+        first = int(np.argmax(flying))
+        last = len(flying) - 1 - int(np.argmax(flying[::-1]))
+        metrics["liftoff_time"] = float(t[first])
+        metrics["touchdown_time"] = float(t[min(last + 1, len(t) - 1)])
+        metrics["flight_time"] = metrics["touchdown_time"] - metrics["liftoff_time"]
+        after = a["support_points"][last + 1:, :, :2]
+        metrics["foot_slide_after_landing"] = float(
+            np.linalg.norm(after - after[min(int(0.15 * trajectory.meta["control_rate"]), len(after) - 1)], axis=2).max()
+        ) if len(after) else 0.0
+    else:
+        metrics["flight_time"] = 0.0
+        metrics["foot_slide_after_landing"] = 0.0
+    if metrics["fell"]:
+        return "fell", metrics
+    if metrics["flight_time"] == 0.0 and trajectory.meta["behaviour"] != "land":
+        return "no_flight", metrics
+    if metrics["foot_slide_after_landing"] > 0.05:
+        return "stepped", metrics
+    if metrics["final_com_speed"] >= 0.1:
+        return "not_still", metrics
+    return "success", metrics
+
+
+# ------------------------------------------------------------------------------- leap mapping
+DEFAULT_MAPPING = {
+    # Wooten Tables 4.1 / 4.2 as a starting point (crouch pelvis height, torso pitch, COM offset,
+    # arm swing) until scripts/calibrate_leap.py writes rigs/tuned/leap_<character>.json
+    "vertical": {"com_rise": [0.07, 0.22, 0.48, 0.71, 0.95], "crouch_height": [0.85, 0.75, 0.65, 0.55, 0.45],
+                 "torso_pitch": [0.0, 0.5, 1.0, 1.5, 1.8]},
+    "broad": {"com_travel": [0.38, 1.16, 2.12], "crouch_height": [0.72, 0.68, 0.50],
+              "com_offset": [0.05, 0.07, 0.08], "arm_swing": [1.8, 2.8, 3.2]},
+}
+
+
+def load_mapping(character: str) -> dict:
+    path = TUNED_DIR / f"leap_{character}.json"
+    if path.exists():
+        return json.loads(path.read_text())
+    return DEFAULT_MAPPING
+
+
+@register
+class Leap(Sequence):
+    name = "leap"
+    summary = "Vertical leap or standing broad jump: crouch, extend, fly, land, balance (Wooten ch. 4, 6, 8)."
+    default_duration = 5.0
+    schema = Schema(
+        Parameter("height", "m", 0.3, 0.05, 1.2, "commanded rise of the COM above standing (vertical leap)"),
+        Parameter("distance", "m", 0.0, 0.0, 2.5,
+                  "commanded horizontal COM travel (broad jump); 0 = vertical leap"),
+        Parameter("liftoff_hip_angle", "rad", 0.0, -1.0, 0.5,
+                  "hip angle reached at lift-off: flexed (-) or extended (+) sends the ground force "
+                  "past the COM and sets the somersault rate"),
+        Parameter("low_level", "bool", 0.0, 0.0, 1.0,
+                  "1 = use the crouch/pitch/offset/arm values below instead of the calibrated mapping"),
+        Parameter("crouch_height", "m", 0.65, 0.4, 0.95, "pelvis height of the crouch (low_level only)"),
+        Parameter("crouch_pitch", "rad", 1.0, 0.0, 1.8, "torso pitch in the crouch (low_level only)"),
+        Parameter("com_offset", "m", 0.0, -0.05, 0.12, "COM forward of the feet in the crouch (low_level only)"),
+        Parameter("arm_swing", "rad", 2.5, 0.0, 3.2, "forward arm swing during the thrust (low_level only)"),
+        Parameter("crouch_time", "s", 0.8, 0.3, 3.0, "time to sink into the crouch"),
+        Parameter("foot_delta", "m", 0.0, -0.3, 0.3, "landing: foot servo delta (see the land behaviour)"),
+    )
+
+    def settings(self) -> dict:
+        p = self.params
+        if p["low_level"]:
+            return {k: p[k] for k in ("crouch_height", "crouch_pitch", "com_offset", "arm_swing")}
+        mapping = load_mapping(self.ctx.character.name)
+        if p["distance"] > 0:
+            b = mapping["broad"]
+            x = p["distance"]
+            return {"crouch_height": float(np.interp(x, b["com_travel"], b["crouch_height"])),
+                    "crouch_pitch": float(np.interp(x, b["com_travel"], b.get("torso_pitch", [0.6] * len(b["com_travel"])))),
+                    "com_offset": float(np.interp(x, b["com_travel"], b["com_offset"])),
+                    "arm_swing": float(np.interp(x, b["com_travel"], b["arm_swing"]))}
+        v = mapping["vertical"]
+        h = p["height"]
+        return {"crouch_height": float(np.interp(h, v["com_rise"], v["crouch_height"])),
+                "crouch_pitch": float(np.interp(h, v["com_rise"], v["torso_pitch"])),
+                "com_offset": 0.0, "arm_swing": 2.5}
+
+    def check_feasible(self) -> None:
+        p = self.params
+        if p["low_level"]:
+            return
+        mapping = load_mapping(self.ctx.character.name)
+        if p["distance"] > 0:
+            top = max(mapping["broad"]["com_travel"])
+            if p["distance"] > top * 1.05:
+                raise ParameterError(f"parameter distance={p['distance']:g} m is beyond what "
+                                     f"{self.ctx.character.name} can jump with this strength; allowed range is "
+                                     f"[0.3, {top:.2f}] m")
+        else:
+            top = max(mapping["vertical"]["com_rise"])
+            if p["height"] > top * 1.05:
+                raise ParameterError(f"parameter height={p['height']:g} m is infeasible for "
+                                     f"{self.ctx.character.name} with this strength; allowed range is "
+                                     f"[0.05, {top:.2f}] m")
+
+    def _stand_height(self) -> float:
+        legs = [LegGeometry(self.ctx.character, side) for side in "RL"]
+        return 0.5 * sum(leg.standing_hip_height() for leg in legs)
+
+    def steps(self) -> list[Step]:
+        p, ctx = self.params, self.ctx
+        cfg = self.settings()
+        broad = p["distance"] > 0
+        schema = Balance.schema
+
+        def crouch(t):
+            return Balance(schema.validate(dict(pelvis_height=cfg["crouch_height"], torso_pitch=cfg["crouch_pitch"],
+                                                com_offset_x=cfg["com_offset"], move_start=0.2,
+                                                move_time=p["crouch_time"], hold_time=0.0, return_to_stand=0)), ctx)
+
+        def crouched(b, t):
+            return b.posture_reached(t - 0.15)
+
+        def thrust(t):
+            return LeapThrust({}, ctx, cfg["crouch_height"], BROAD_TIMING if broad else VERTICAL_TIMING,
+                              ANKLE_GAIN_BROAD if broad else ANKLE_GAIN_VERTICAL, p["liftoff_hip_angle"],
+                              cfg["arm_swing"], stand_height=self._stand_height())
+
+        def land(t):
+            return Landing(Landing.schema.validate(dict(foot_delta=p["foot_delta"])), ctx)
+
+        def stand(t):
+            return balance_after_landing(ctx)
+
+        return [Step("crouch", crouch, crouched),
+                Step("thrust", thrust, lambda b, t: b.lifted_off()),
+                Step("land", land, lambda b, t: b.finished),
+                Step("balance", stand)]
+
+    @classmethod
+    def assess(cls, trajectory):
+        return leap_assess(trajectory)
