@@ -45,11 +45,14 @@ def build_rig(spec, out_path: Path, spacing: float = GRID_SPACING) -> RigReport:
     """Skin the character ``spec`` (a CharacterSpec) and write ``out_path`` (.glb)."""
     bodies = spec.bodies
     grid = skin.bounding_grid(bodies, spacing)
-    distances = skin.segment_distances(bodies, grid.points().astype(np.float32))
+    points = grid.points().astype(np.float32)
+    distances = skin.segment_distances(bodies, points)
     edges = skin.tree_edges(bodies)
     targets = np.array([b["mass"] / b["density"] for b in bodies])
-    offsets, _ = skin.calibrate_offsets(distances, edges, targets, spacing)
-    distances -= offsets[:, None]
+    offsets_of = skin.Offsets(bodies, points)
+    del points
+    offsets, _ = skin.calibrate_offsets(distances, edges, targets, spacing, offsets_of)
+    distances = offsets_of.apply(distances, offsets)
     field = skin.skin_field(distances, edges)
     volumes = skin.segment_volumes(distances, field, spacing)      # measured on the final field
     field_volume = float(skin.occupancy(field, spacing).sum() * spacing ** 3)

@@ -4,7 +4,9 @@
 Pipeline, each step a function:
   1. ``segment_distances``: signed distance of grid points to every body's shapes (the shapes are
      the spec's, in world coordinates of the reference T-pose, each sized so that its volume x the
-     segment's density = its mass).
+     segment's density = its mass). The torso's slices become one lofted trunk (``TorsoLoft``);
+     a body whose shape stops short of its joint gets a skin-only connector (``connector``: the
+     neck, the ankle).
   2. ``skin_field``: the union of all bodies; neighbouring bodies (parent and child) are joined
      with a smooth minimum so that joints get a fillet instead of a crease, while bodies that
      merely touch (the two thighs, the arm and the chest) keep a hard union and no web between
@@ -28,8 +30,11 @@ from dataclasses import dataclass
 
 import numpy as np
 
-SMOOTH_UNION = 0.025        # m: fillet size where a parent and a child body meet
-BOX_ROUNDING = 0.008        # m: edge radius of boxes and slabs (hands, feet, torso slices)
+SMOOTH_UNION = 0.025        # m: fillet size where a parent and a child limb meet
+SLAB_UNION = 0.04           # m: fillet between the trunk and a limb, the neck or a thigh
+BOX_ROUNDING = 0.008        # m: edge radius of boxes (hands, feet)
+SLAB_ROUNDING = 0.03        # m: edge radius of the trunk's bottom and top
+TRUNK_BLEND = 0.06          # m: half-width of the smooth change between two torso slices
 MAX_INFLUENCES = 4          # weights per vertex (glTF JOINTS_0/WEIGHTS_0)
 
 
@@ -95,27 +100,110 @@ def shape_distance(p: np.ndarray, shape: dict) -> np.ndarray:
     if kind == "box":
         return sdf_box(p, shape["pos"], shape["half"], shape.get("along", (1, 0, 0)), BOX_ROUNDING)
     if kind == "ellipse_slab":
-        return sdf_ellipse_slab(p, shape["pos"], shape["half"], BOX_ROUNDING)
+        return sdf_ellipse_slab(p, shape["pos"], shape["half"], SLAB_ROUNDING)
     raise ValueError(f"unknown shape type {kind!r}")
 
 
+class TorsoLoft:
+    """The torso slices (the spec's ``ellipse_slab`` shapes, stacked along Z) as one trunk: each
+    slice keeps its own ellipse through its middle, and at every spine joint the semi-axes and
+    the centre pass to the next slice's along a smoothstep over +/- ``TRUNK_BLEND`` (at most 90 %
+    of either slice's half-height). The steps become smooth waists and bulges, while each slice's
+    volume stays close to its own (what is added below a joint is taken above it)."""
+
+    def __init__(self, slabs: list[dict]):
+        slabs = sorted(slabs, key=lambda sh: sh["pos"][2])
+        self.columns = np.array([[sh["half"][0], sh["half"][1], sh["pos"][0], sh["pos"][1]] for sh in slabs])
+        self.joints = [0.5 * (lo["pos"][2] + lo["half"][2] + hi["pos"][2] - hi["half"][2])
+                       for lo, hi in zip(slabs, slabs[1:])]
+        self.widths = [min(TRUNK_BLEND, 0.9 * lo["half"][2], 0.9 * hi["half"][2])
+                       for lo, hi in zip(slabs, slabs[1:])]
+        self.z_range = (slabs[0]["pos"][2] - slabs[0]["half"][2], slabs[-1]["pos"][2] + slabs[-1]["half"][2])
+
+    def profile(self, z: np.ndarray) -> np.ndarray:
+        """(N, 4): semi-axis X, semi-axis Y, centre X, centre Y at heights ``z``."""
+        out = np.repeat(self.columns[:1], len(z), axis=0)
+        for k, (joint, width) in enumerate(zip(self.joints, self.widths)):
+            t = _smoothstep((z - joint + width) / (2.0 * width))
+            out += t[:, None] * (self.columns[k + 1] - self.columns[k])
+        return out
+
+    def distance(self, p: np.ndarray, rounding: float = 0.0) -> np.ndarray:
+        a, b, cx, cy = np.moveaxis(self.profile(p[:, 2]), -1, 0)
+        r = min(rounding, 0.45 * float(np.min(np.minimum(a, b))))
+        x, y = p[:, 0] - cx, p[:, 1] - cy
+        ra, rb = a - r, b - r
+        k0 = np.sqrt((x / ra) ** 2 + (y / rb) ** 2)
+        k1 = np.sqrt((x / ra ** 2) ** 2 + (y / rb ** 2) ** 2)
+        d_xy = np.where(k1 > 1e-12, k0 * (k0 - 1.0) / np.maximum(k1, 1e-12), -np.minimum(ra, rb))
+        lo, hi = self.z_range
+        d_z = np.maximum(lo + r - p[:, 2], p[:, 2] - (hi - r))
+        w = np.stack([d_xy, d_z], axis=1)
+        return np.minimum(w.max(axis=1), 0.0) + np.linalg.norm(np.maximum(w, 0.0), axis=1) - r
+
+
+def torso_slices(bodies: list[dict]) -> list[int]:
+    """Bodies whose only shape is an ellipse slab: the pelvis and the spine's slices."""
+    return [i for i, b in enumerate(bodies) if len(b["shapes"]) == 1 and b["shapes"][0]["type"] == "ellipse_slab"]
+
+
 def segment_distances(bodies: list[dict], points: np.ndarray) -> np.ndarray:
-    """(B, N) signed distance of each point to each body's shapes (min over its shapes)."""
+    """(B, N) signed distance of each point to each body's shapes (min over its shapes); the
+    torso slices are cut from one lofted trunk (``TorsoLoft``) by their own height ranges."""
     out = np.empty((len(bodies), len(points)), dtype=np.float32)
+    slices = torso_slices(bodies)
+    if slices:
+        trunk = TorsoLoft([bodies[i]["shapes"][0] for i in slices]).distance(points, SLAB_ROUNDING)
+        for i in slices:
+            sh = bodies[i]["shapes"][0]
+            lo, hi = sh["pos"][2] - sh["half"][2], sh["pos"][2] + sh["half"][2]
+            out[i] = np.maximum(trunk, np.maximum(lo - points[:, 2], points[:, 2] - hi))
     for i, body in enumerate(bodies):
+        if i in slices:
+            continue
         shapes = body["shapes"]
         if not shapes:
             raise ValueError(f"body {body['name']!r} has no shapes to make a skin from")
         d = shape_distance(points, shapes[0])
-        for shape in shapes[1:]:
+        for shape in shapes[1:] + connector(body):
             d = np.minimum(d, shape_distance(points, shape))
         out[i] = d
     return out
 
 
-def tree_edges(bodies: list[dict]) -> list[tuple[int, int]]:
+def connector(body: dict) -> list[dict]:
+    """A skin-only capsule from a body's joint to its shape when the shape stops short of the
+    joint by more than a centimetre (the head's sphere sits 3 cm above the neck joint: this is
+    the neck; the foot's box sits below the ankle). Half the shape's thickness."""
+    if not body.get("joint"):
+        return []
+    joint = np.array(body["joint"]["pos"], dtype=float)
+    shape = body["shapes"][0]
+    if float(shape_distance(joint[None], shape)[0]) <= 0.01:
+        return []
+    if shape["type"] == "capsule":
+        centre, size = 0.5 * (np.array(shape["from"]) + np.array(shape["to"])), shape["radius"]
+    elif shape["type"] == "sphere":
+        centre, size = np.array(shape["pos"]), shape["radius"]
+    else:
+        centre, size = np.array(shape["pos"]), min(shape["half"])
+    return [{"type": "capsule", "from": joint.tolist(), "to": centre.tolist(), "radius": 0.5 * size}]
+
+
+def tree_edges(bodies: list[dict]) -> list[tuple[int, int, float]]:
+    """(parent, child, fillet size) for every joint where two shapes meet: limbs with a small
+    fillet, a limb (or the head) on the trunk with a larger one. Two torso slices need none:
+    they are cut from one lofted trunk and meet without a seam."""
     index = {b["name"]: i for i, b in enumerate(bodies)}
-    return [(index[b["parent"]], i) for i, b in enumerate(bodies) if b.get("parent")]
+    trunk = set(torso_slices(bodies))
+    edges = []
+    for i, b in enumerate(bodies):
+        if b.get("parent"):
+            p = index[b["parent"]]
+            if p in trunk and i in trunk:
+                continue
+            edges.append((p, i, SLAB_UNION if p in trunk or i in trunk else SMOOTH_UNION))
+    return edges
 
 
 def smooth_min(a: np.ndarray, b: np.ndarray, k: float) -> np.ndarray:
@@ -124,9 +212,9 @@ def smooth_min(a: np.ndarray, b: np.ndarray, k: float) -> np.ndarray:
     return np.minimum(a, b) - h * h * k * 0.25
 
 
-def skin_field(distances: np.ndarray, edges: list[tuple[int, int]], k: float = SMOOTH_UNION) -> np.ndarray:
+def skin_field(distances: np.ndarray, edges: list[tuple[int, int, float]]) -> np.ndarray:
     field = distances.min(axis=0)
-    for i, j in edges:
+    for i, j, k in edges:
         field = np.minimum(field, smooth_min(distances[i], distances[j], k))
     return field
 
@@ -195,8 +283,28 @@ def growth_areas(distances: np.ndarray, field: np.ndarray, spacing: float) -> np
     return area + 0.5 * np.bincount(labels, minlength=len(distances)) * spacing ** 2
 
 
+class Offsets:
+    """Moves each body's surface out by its offset. The trunk's slices share one offset that
+    varies smoothly with height (interpolated between the slices' mid-heights), so the lofted
+    trunk stays seamless where two slices with different offsets meet."""
+
+    def __init__(self, bodies: list[dict], points: np.ndarray):
+        self.slices = torso_slices(bodies)
+        self.mids = np.array([bodies[i]["shapes"][0]["pos"][2] for i in self.slices])
+        order = np.argsort(self.mids)
+        self.slices, self.mids = [self.slices[k] for k in order], self.mids[order]
+        self.z = points[:, 2]
+
+    def apply(self, distances: np.ndarray, offsets: np.ndarray) -> np.ndarray:
+        shifted = distances - offsets[:, None]
+        if self.slices:
+            along = np.interp(self.z, self.mids, offsets[self.slices]).astype(distances.dtype)
+            shifted[self.slices] = distances[self.slices] - along
+        return shifted
+
+
 def calibrate_offsets(distances: np.ndarray, edges, targets: np.ndarray, spacing: float,
-                      iterations: int = 30, tolerance: float = 0.01,
+                      offsets_of: Offsets, iterations: int = 40, tolerance: float = 0.01,
                       damping: float = 0.3) -> tuple[np.ndarray, np.ndarray]:
     """Per-body offsets (m, positive = grow) so that each body's assigned interior volume x its
     density matches its mass; returns (offsets, volumes). Damped Newton steps per body: a body
@@ -204,7 +312,7 @@ def calibrate_offsets(distances: np.ndarray, edges, targets: np.ndarray, spacing
     growth from their neighbours, which the next steps correct)."""
     offsets = np.zeros(len(distances), dtype=np.float32)
     for _ in range(iterations):
-        shifted = distances - offsets[:, None]
+        shifted = offsets_of.apply(distances, offsets)
         field = skin_field(shifted, edges)
         volumes = segment_volumes(shifted, field, spacing)
         if np.all(np.abs(volumes / targets - 1.0) < tolerance):
@@ -213,7 +321,7 @@ def calibrate_offsets(distances: np.ndarray, edges, targets: np.ndarray, spacing
         step = damping * (targets - volumes) / area
         offsets = offsets + np.clip(step, -0.005, 0.005).astype(np.float32)
     else:
-        shifted = distances - offsets[:, None]
+        shifted = offsets_of.apply(distances, offsets)
         volumes = segment_volumes(shifted, skin_field(shifted, edges), spacing)
     return offsets, volumes
 
@@ -221,13 +329,19 @@ def calibrate_offsets(distances: np.ndarray, edges, targets: np.ndarray, spacing
 # ----------------------------------------------------------------------------- mesh
 
 def mesh_from_field(field: np.ndarray, grid: Grid, smoothing_iterations: int = 10):
-    """Marching cubes of the zero level, oriented outward, then Taubin-smoothed (trimesh)."""
+    """Marching cubes of the zero level, oriented outward, then Taubin-smoothed (trimesh); only
+    the body's one connected surface is kept."""
     import trimesh
     from skimage.measure import marching_cubes
 
     volume = field.reshape(grid.shape)
     verts, faces, _normals, _values = marching_cubes(volume, level=0.0, spacing=(grid.spacing,) * 3)
     mesh = trimesh.Trimesh(verts + grid.origin, faces, process=True)
+    mesh.update_faces(mesh.nondegenerate_faces())
+    pieces = mesh.split(only_watertight=False)
+    if len(pieces) > 1:          # specks where the field grazes zero between grid points
+        mesh = max(pieces, key=lambda piece: len(piece.faces))
+    mesh.remove_unreferenced_vertices()
     if mesh.volume < 0:
         mesh.invert()
     if smoothing_iterations:
