@@ -36,9 +36,10 @@ TOUCHDOWN_HEIGHT = 0.004        # m: a foot site this low = contact
 VERTICAL_TIMING = (0.10, 0.15, 0.22)     # s to full extension: hip, knee, ankle [W98 §4.1]
 BROAD_TIMING = (0.15, 0.20, 0.45)        # [W98 §4.2]
 ANKLE_GAIN_VERTICAL, ANKLE_GAIN_BROAD = 4.45, 3.6
+THRUST_GAIN = 3.0               # hip and knee servos stiffened for the thrust [W98 §4.3]
 LIFTOFF_ANKLE = 0.75            # rad of plantarflexion at the end of the thrust
-SOFT_KNEE_KP, SOFT_KNEE_KV = 0.0, 2.5    # knee gain factors while absorbing a landing [W98 §6.1]
-UPRIGHT_GAIN = 0.5              # share of the pelvis pitch the hips correct while absorbing
+SOFT_KNEE_KP, SOFT_KNEE_KV = 0.3, 2.5    # knee gain factors while absorbing (the thesis: kp 0; with human
+                                         # torque limits a little spring keeps the squat shallower)
 ABSORB_TIME = 0.35              # s: hand over to balance at the latest this long after touchdown
 KNEE_RESTORE = 0.2              # knees stiffen again at 20 % of their touchdown speed [W98 §6.1]
 
@@ -98,10 +99,15 @@ class LeapThrust(Behaviour):
         s.move_to(s.indices(spine), 0.0, t_hip, t)
         ankles = self.idx["ankle"]
         s.set_gains(ankles, s.default_kp[ankles] * self.ankle_gain, s.default_kv[ankles] * self.ankle_gain)
+        legs = np.concatenate([self.idx["hip"], self.idx["knee"]])
+        s.set_gains(legs, s.default_kp[legs] * THRUST_GAIN, s.default_kv[legs] * THRUST_GAIN)
         self.event(t, "thrust")
 
     def _height(self, t: float, duration: float) -> float:
-        return self.crouch_height + (self.stand_height - self.crouch_height) * hermite_scalar((t - self.t0) / duration)
+        """Ease-in (zero start slope, fastest at the end): the joints are still extending hard
+        when they reach full extension, which is what throws the body up."""
+        x = min(max((t - self.t0) / duration, 0.0), 1.0)
+        return self.crouch_height + (self.stand_height - self.crouch_height) * x * x
 
     def update(self, t: float) -> None:
         s = self.ctx.servos
@@ -140,6 +146,9 @@ class Landing(Behaviour):
         self.feet = [m.body("FOOTR").id, m.body("FOOTL").id]
         self.hips = [m.body("ULEGR").id, m.body("ULEGL").id]
         self.leg = LegGeometry(ctx.character, "R")
+        self.ankle_height = self.leg.ankle_height
+        sites = [c["pos"] for c in ctx.character.body("FOOTR")["contacts"] + ctx.character.body("TOER")["contacts"]]
+        self.sole_centre = 0.5 * (max(q[0] for q in sites) + min(q[0] for q in sites)) - ctx.character.joint_position("FOOTR")[0]
         self.idx = [{k: s.index[f"{j}_{side}_{a}"] for k, (j, a) in
                      {"hip_y": ("hip", "y"), "hip_x": ("hip", "x"), "knee": ("knee", "y"),
                       "ankle_y": ("ankle", "y"), "ankle_x": ("ankle", "x")}.items()} for side in "rl"]
@@ -153,8 +162,9 @@ class Landing(Behaviour):
         s = self.ctx.servos
         s.offset[:] = 0.0
         s.hold(s.smoothed_target(t), t)
-        ankles = s.indices(["ankle_r_y", "ankle_l_y", "ankle_r_x", "ankle_l_x"])
-        s.set_gains(ankles, s.default_kp[ankles], s.default_kv[ankles])
+        stand = 0.5 * sum(LegGeometry(self.ctx.character, side).standing_hip_height() for side in "RL")
+        self.crouch = CrouchTable(self.ctx.model, self.ctx.character, np.linspace(0.5 * stand, stand, 6), stand)
+        s.set_gains(np.arange(len(s.names)), s.default_kp, s.default_kv)     # undo the thrust gains
         for side, sign in (("r", 1.0), ("l", -1.0)):
             s.move_to(s.indices([f"shoulder_{side}_z"]), sign * 0.6, 0.3, t)
         self.event(t, "flight")
@@ -175,9 +185,16 @@ class Landing(Behaviour):
         angles, velocities = s.angles(), s.velocities()
         targets = s.smoothed_target(t)
         pelvis_pitch = math.atan2(-m[6], m[8])
+        crouch_pitch = 0.0
+        if self.stage != "flight":
+            # while the knees give, the hips pitch the trunk as a balanced crouch of this height would
+            hips = 0.5 * (d.xpos[self.hips[0]] + d.xpos[self.hips[1]])
+            feet = 0.5 * (d.xpos[self.feet[0]] + d.xpos[self.feet[1]])
+            crouch_pitch = float(self.crouch.at(float(hips[2] - feet[2]) + self.ankle_height)[3])
         if self.stage == "flight" and self.airborne.touching(d):
             self.stage = "absorb"
             self.touchdown_knee_speed = max(abs(float(velocities[self.knees].mean())), 1e-3)
+            self.knees_touched_at = angles[self.knees].copy()
             s.set_gains(self.knees, s.default_kp[self.knees] * SOFT_KNEE_KP, s.default_kv[self.knees] * SOFT_KNEE_KV)
             self.touchdown_at = t
             self.event(t, "touchdown")
@@ -200,23 +217,23 @@ class Landing(Behaviour):
                 # eq. 6.1: a PD servo on the foot's place relative to the COM, aiming where the COM's
                 # horizontal speed will be used up (capture point) plus the foot servo delta; the
                 # thigh is aimed in the world frame, so a pitching pelvis does not swing the feet
-                foot = d.xpos[self.feet[k]]
-                fx = c * (foot[0] - com[0]) + sn * (foot[1] - com[1])
+                foot = d.xpos[self.feet[k]]            # the ankle; the sole's centre is ahead of it
+                fx = c * (foot[0] - com[0]) + sn * (foot[1] - com[1]) + self.sole_centre
                 capture = vx * math.sqrt(max(self.com_height, 0.5) / 9.81)
                 error = capture + p["foot_delta"] - fx
                 hip = d.xpos[self.hips[k]]
                 hip_from_com = c * (hip[0] - com[0]) + sn * (hip[1] - com[1])
                 wanted = capture + p["foot_delta"] + p["foot_kp"] * 0.05 * error - p["foot_kv"] * 0.05 * vx
-                thigh_pitch = self.leg.thigh_pitch_for(wanted - hip_from_com, p["knee_flexion"])
+                thigh_pitch = self.leg.thigh_pitch_for(wanted - self.sole_centre - hip_from_com, p["knee_flexion"])
                 targets[j["knee"]] = p["knee_flexion"]
                 targets[j["hip_y"]] = thigh_pitch - pelvis_pitch
                 targets[j["hip_x"]] = 0.0
             else:
                 # hips keep the pelvis upright while the knees give; the knees are pure dampers
                 # while absorbing, then hold where they stopped
-                targets[j["hip_y"]] = angles[j["hip_y"]] + UPRIGHT_GAIN * pelvis_pitch
+                targets[j["hip_y"]] = angles[j["hip_y"]] + (pelvis_pitch - crouch_pitch)
                 if self.stage == "absorb":
-                    targets[j["knee"]] = angles[j["knee"]]
+                    targets[j["knee"]] = self.knees_touched_at[k]
                 else:
                     targets[j["knee"]] = self.knees_stopped_at[k]
         s.hold(targets, t)

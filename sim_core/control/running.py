@@ -434,7 +434,7 @@ def _wrap(angle: float) -> float:
     return (angle + math.pi) % (2.0 * math.pi) - math.pi
 
 
-STANCE_KNEE_GAIN = 0.5        # share of the knee's default kp in stance (the knee is a spring)
+STANCE_KNEE_GAIN = 1.0        # share of the knee's default kp in stance (the knee is a spring)
 ATT_GAIN = 1.0                # stance hip: joint-target radians per radian of attitude error
 ATT_DAMP = 1.0
 THRUST_RAMP = 0.05            # s: the thrust targets move in over this time
