@@ -132,11 +132,12 @@ class Recorder:
 
 
 def refresh_kinematics(model: mujoco.MjModel, data: mujoco.MjData) -> None:
-    """Contact forces of the last physics step (cfrc_ext), then positions, COM and COM velocity
-    of the current state."""
+    """Contact forces of the last physics step (cfrc_ext), then positions, COM, body velocities,
+    COM velocity and angular momentum of the current state."""
     mujoco.mj_rnePostConstraint(model, data)
     mujoco.mj_kinematics(model, data)
     mujoco.mj_comPos(model, data)
+    mujoco.mj_comVel(model, data)
     mujoco.mj_subtreeVel(model, data)
 
 

@@ -102,7 +102,11 @@ class CrouchTable:
         if most[3] > 0.0:                     # even the usable dorsiflexion leaves a forward lean
             return most
         ankle = _bisect(lambda a: pose(a)[3], self.ankle_min, 0.0, decreasing=False)
-        return pose(ankle)
+        result = pose(ankle)
+        if not math.isfinite(result[3]):            # the height is out of reach: straightest legs
+            knee = knee_for(0.0)
+            result = (knee, 0.0, 0.0, self.measure(knee, 0.0, 0.0)[2])
+        return result
 
     def leg_length(self, knee: float, hip: float, ankle: float) -> float:
         """Distance from the mid-hip point to the ankles in a pose: what the knees control,

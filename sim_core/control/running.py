@@ -213,6 +213,8 @@ class Running(Behaviour):
         self.ctx.servos.set_gains(np.array(idx), np.array(kps), np.array(kvs))
 
     def _enter(self, t: float, state: int) -> None:
+        if state == TOE:
+            self.t_thrust = t
         self.state = state
         self.t_state = t
         side = "R" if self.active == 0 else "L"
@@ -413,7 +415,13 @@ class Running(Behaviour):
             targets[ji["hy"]] = hy_idle
             targets[ji["hx"]] = hx_idle
             targets[ji["hz"]] = 0.0
-            targets[ji["knee"]] = p["idle_knee"]
+            if state in (TOE, UNLOADING):
+                # the idle leg prepares for its touchdown while the active leg thrusts: the knee
+                # unfolds so that the short flight can swing it out to the placement
+                s_ = hermite_scalar((t - self.t_thrust) / max(IDLE_UNFOLD * self.stance_time, 0.02))
+                targets[ji["knee"]] = p["idle_knee"] + (IDLE_UNFOLD_KNEE - p["idle_knee"]) * s_
+            else:
+                targets[ji["knee"]] = p["idle_knee"]
             targets[ji["ay"]] = -0.2
             targets[ji["ax"]] = 0.0
             targets[ji["mt"]] = 0.0
@@ -434,7 +442,7 @@ def _wrap(angle: float) -> float:
     return (angle + math.pi) % (2.0 * math.pi) - math.pi
 
 
-STANCE_KNEE_GAIN = 1.0        # share of the knee's default kp in stance (the knee is a spring)
+STANCE_KNEE_GAIN = 1.0   # share of the knee's default kp in stance (the knee is a spring)
 ATT_GAIN = 1.0                # stance hip: joint-target radians per radian of attitude error
 ATT_DAMP = 1.0
 THRUST_RAMP = 0.05            # s: the thrust targets move in over this time
@@ -442,6 +450,8 @@ TOUCHDOWN_TOE_UP = 0.20       # rad: foot pitched toe-up at touchdown, heel firs
 FOOT_INWARD = 0.05            # m: the foot lands this far inside the hip, toward the centre line
 ACCEL_MARGIN = 1.0            # m/s: the speed command is at most this above the current speed
 START_ANKLE_LEAN = 0.25       # rad of ankle dorsiflexion target while leaning into the start
+IDLE_UNFOLD = 0.6            # share of the expected stance over which the idle knee unfolds after thrust
+IDLE_UNFOLD_KNEE = 0.6       # rad: idle knee flexion at the end of the unfolding
 ARM_OFFSET = 0.1              # gamma_0 of eq. 5 (rad, forward)
 ELBOW_BASE = 1.3              # rad: running elbow flexion
 ELBOW_SWING = 0.3             # extra elbow flexion per radian of forward arm swing
