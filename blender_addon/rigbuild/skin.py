@@ -81,12 +81,16 @@ def sdf_ellipse_slab(p: np.ndarray, pos, half, rounding: float = 0.0) -> np.ndar
     local = p - np.asarray(pos, float)
     a, b, h = half
     r = min(rounding, 0.45 * min(half))
-    ra, rb = a - r, b - r
-    # ellipse distance, first-order accurate near the curve (exact on the axes)
-    k0 = np.sqrt((local[:, 0] / ra) ** 2 + (local[:, 1] / rb) ** 2)
-    k1 = np.sqrt((local[:, 0] / ra ** 2) ** 2 + (local[:, 1] / rb ** 2) ** 2)
-    d_xy = np.where(k1 > 1e-12, k0 * (k0 - 1.0) / np.maximum(k1, 1e-12), -min(ra, rb))
-    d_z = np.abs(local[:, 2]) - (h - r)
+    return _rounded_elliptic_cylinder(local[:, 0], local[:, 1], np.abs(local[:, 2]) - (h - r), a - r, b - r, r)
+
+
+def _rounded_elliptic_cylinder(x, y, d_z, ra, rb, r) -> np.ndarray:
+    """Distance to an elliptic cylinder (semi-axes ``ra``, ``rb``; ``d_z`` = signed distance to
+    its end planes) grown by ``r``, which rounds its rims. The ellipse distance is the usual
+    first-order one (exact on the axes, accurate near the curve)."""
+    k0 = np.sqrt((x / ra) ** 2 + (y / rb) ** 2)
+    k1 = np.sqrt((x / ra ** 2) ** 2 + (y / rb ** 2) ** 2)
+    d_xy = np.where(k1 > 1e-12, k0 * (k0 - 1.0) / np.maximum(k1, 1e-12), -np.minimum(ra, rb))
     w = np.stack([d_xy, d_z], axis=1)
     return np.minimum(w.max(axis=1), 0.0) + np.linalg.norm(np.maximum(w, 0.0), axis=1) - r
 
@@ -130,16 +134,10 @@ class TorsoLoft:
 
     def distance(self, p: np.ndarray, rounding: float = 0.0) -> np.ndarray:
         a, b, cx, cy = np.moveaxis(self.profile(p[:, 2]), -1, 0)
-        r = min(rounding, 0.45 * float(np.min(np.minimum(a, b))))
-        x, y = p[:, 0] - cx, p[:, 1] - cy
-        ra, rb = a - r, b - r
-        k0 = np.sqrt((x / ra) ** 2 + (y / rb) ** 2)
-        k1 = np.sqrt((x / ra ** 2) ** 2 + (y / rb ** 2) ** 2)
-        d_xy = np.where(k1 > 1e-12, k0 * (k0 - 1.0) / np.maximum(k1, 1e-12), -np.minimum(ra, rb))
+        r = min(rounding, 0.45 * float(self.columns[:, :2].min()))
         lo, hi = self.z_range
         d_z = np.maximum(lo + r - p[:, 2], p[:, 2] - (hi - r))
-        w = np.stack([d_xy, d_z], axis=1)
-        return np.minimum(w.max(axis=1), 0.0) + np.linalg.norm(np.maximum(w, 0.0), axis=1) - r
+        return _rounded_elliptic_cylinder(p[:, 0] - cx, p[:, 1] - cy, d_z, a - r, b - r, r)
 
 
 def torso_slices(bodies: list[dict]) -> list[int]:
