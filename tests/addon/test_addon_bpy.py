@@ -234,3 +234,57 @@ def test_second_bake_gets_a_unique_name_and_stashes_the_first(empty_scene):
     assert names == ["balance defaults", "balance defaults.001"]
     stashed = [s.action.name for t in arm.animation_data.nla_tracks for s in t.strips]
     assert stashed == ["balance defaults"] and arm.animation_data.action.name == "balance defaults.001"
+
+
+class _Layout:
+    """Stands in for a UI layout: records what a panel draws and checks every property exists."""
+
+    def __init__(self, log):
+        self.log = log
+
+    def box(self):
+        return self
+
+    def row(self, **kw):
+        return self
+
+    def column(self, **kw):
+        return self
+
+    def prop(self, data, name, **kw):
+        assert name in data.bl_rna.properties, f"{data} has no property {name!r}"
+        self.log.append(("prop", name))
+
+    def operator(self, idname, **kw):
+        module, name = idname.split(".")
+        assert hasattr(getattr(bpy.ops, module), name), idname
+        self.log.append(("operator", idname))
+
+    def label(self, text="", **kw):
+        self.log.append(("label", text))
+
+
+def test_panel_draws_the_schema_and_the_last_result(empty_scene):
+    from sim_core.control.behaviour import behaviour_class
+    from blender_addon import api
+    from blender_addon.panel import SIMATHLETICS_PT_panel
+    context = empty_scene
+    api.add_character(context, "man")
+    _, trajectory = api.simulate_and_bake(context, behaviour="balance", duration=0.3)
+    context.scene.sim_athletics.behaviour = "balance"
+    log = []
+    panel = type("P", (), {"layout": _Layout(log)})()
+    SIMATHLETICS_PT_panel.draw(panel, context)
+    drawn = [name for kind, name in log if kind == "prop"]
+    assert [p.name for p in behaviour_class("balance").schema.parameters] == \
+        [n for n in drawn if n not in ("character", "behaviour", "duration", "start_frame", "fit_scene_range")]
+    labels = [text for kind, text in log if kind == "label"]
+    assert f"Outcome: {trajectory.meta['outcome']}" in labels
+    assert any(text.startswith("min pelvis height:") for text in labels)
+    assert ("operator", "sim_athletics.simulate_bake") in log
+
+
+def test_invoke_in_background_runs_to_the_end(empty_scene):
+    bpy.ops.sim_athletics.add_character(character="man")
+    assert bpy.ops.sim_athletics.simulate_bake("INVOKE_DEFAULT", behaviour="balance", duration=0.2) == {"FINISHED"}
+    assert empty_scene.view_layer.objects.active.animation_data.action is not None
