@@ -67,6 +67,8 @@ def test_weights_are_normalised_and_blend_across_every_joint(rig):
 @pytest.mark.slow
 @pytest.mark.parametrize("character", CHARACTERS)
 def test_rebuilt_skin_mass_per_segment_within_15_percent(character, tmp_path: Path):
+    pytest.importorskip("skimage")
+    pytest.importorskip("trimesh")
     from blender_addon.rigbuild import MASS_TOLERANCE, build_rig
     report = build_rig(load_character(character), tmp_path / f"{character}.glb")
     print(f"\n{character}: {report.vertices} vertices\n{report.table()}")
