@@ -53,8 +53,14 @@ def build_request(args):
     if strength not in ("human", "unlimited"):
         strength = _finite(strength, "--strength")
     duration = None if args.duration is None else _finite(args.duration, "--duration")
+    from sim_core.simulate import StartState
+    velocity = tuple(_finite(v, "--start-velocity") for v in args.start_velocity.split(","))
+    if len(velocity) != 3:
+        raise ParameterError(f"--start-velocity {args.start_velocity!r} must be three numbers VX,VY,VZ in m/s")
+    start = StartState(height=_finite(args.start_height, "--start-height"), velocity=velocity)
     return RunRequest(args.behaviour, args.character, params=params, duration=duration,
-                      pushes=[Push.parse(p) for p in args.push or []], world=world, strength=strength)
+                      pushes=[Push.parse(p) for p in args.push or []], world=world, strength=strength,
+                      start=start)
 
 
 def cmd_list(args) -> int:
@@ -153,6 +159,8 @@ def parser() -> argparse.ArgumentParser:
                    help="direction in which the ground rises")
     s.add_argument("--backpack", default="0", help="extra mass in kg on the upper torso (CHEST1)")
     s.add_argument("--strength", default="human", help="'human' torque limits, 'unlimited', or a factor")
+    s.add_argument("--start-height", default="0", help="start the standing pose this many metres up (drop tests)")
+    s.add_argument("--start-velocity", default="0,0,0", help="start moving at VX,VY,VZ m/s (landing tests)")
     s.add_argument("--out", help="trajectory file to write (.npz); written only if the run completes")
     s.add_argument("--progress", action="store_true", help="show a progress bar on stderr")
     s.set_defaults(func=cmd_simulate)
