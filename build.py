@@ -7,7 +7,7 @@
                               # dist/sim_athletics-<version>-extension.zip (extension, 4.2+)
     python build.py           # both
 
-The skins need scikit-image, trimesh and pygltflib (requirements-addon.txt). The add-on zips
+The skins need scikit-image, trimesh and pygltflib (pip install -e ".[rigs]"). The add-on zips
 bundle sim_core, the rigs and the wheels of sim_core's dependencies for Linux x86-64 (fetched
 once with ``pip download`` into build/wheels*/ and then reused), so they install offline.
 """
@@ -55,7 +55,7 @@ def build_skin(spec) -> None:
     try:
         from blender_addon.rigbuild import MASS_TOLERANCE, build_rig
     except ImportError as exc:
-        raise SystemExit(f"build.py rigs: {exc.name} is missing; pip install -r requirements-addon.txt "
+        raise SystemExit(f"build.py rigs: {exc.name} is missing; pip install -e ".[rigs]" "
                          "(or use --no-skin)") from None
     report = build_rig(spec, ROOT / "rigs" / f"{spec.name}.glb")
     worst, error = report.worst_mass_error()

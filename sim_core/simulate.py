@@ -154,7 +154,7 @@ def run(request: RunRequest, progress: Callable[[float], None] | None = None,
 
     log = EditLog()
     servos = ServoBank(model, data, character, log)
-    behaviour = cls(params, ControlContext(model, data, character, servos))
+    behaviour = cls(params, ControlContext(model, data, character, servos, control_dt=1.0 / cls.control_rate))
     behaviour.check_feasible()
 
     steps_per_tick = int(round(1.0 / (cls.control_rate * model.opt.timestep)))

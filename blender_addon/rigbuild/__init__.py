@@ -1,5 +1,5 @@
 """Build-time only (build.py): the rigged skin of a character, written as glTF binary.
-Needs scikit-image, trimesh and pygltflib (requirements-addon.txt); not shipped in the add-on."""
+Needs scikit-image, trimesh and pygltflib (pip install -e ".[rigs]"); not shipped in the add-on."""
 from __future__ import annotations
 
 from dataclasses import dataclass

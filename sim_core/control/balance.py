@@ -278,7 +278,9 @@ class Balance(Behaviour):
         velocity_x = kv * (c * vx + s * vy)
         delta_x = position_x + velocity_x                                                # eq. 7.1
         # the fast hip strategy answers the COM speed the ankles cannot stop (trunk against legs)
-        velocity_excess = velocity_x - min(max(velocity_x, -self.ankle_limit_back), self.ankle_limit_front)
+        # (forward only: bending at the hips stops a forward fall; leaning the trunk back to stop
+        # a backward one tips a character that is already behind its heels)
+        velocity_excess = max(velocity_x - self.ankle_limit_front, 0.0)
         hip_x = -HIP_SHARE * velocity_x - EXCESS_TO_HIP * velocity_excess
         hip_x = min(max(hip_x, -HIP_STRATEGY_MAX), HIP_STRATEGY_MAX)
         delta_y = kp * (-s * gx + c * gy - centre_y - posture[3]) + kv * (-s * vx + c * vy)  # eq. 7.2
@@ -292,7 +294,7 @@ class Balance(Behaviour):
         # a COM error the ankles cannot hold for long (a slope, a load) slowly leans the trunk
         # towards it - the quasi-static complement of the fast hip strategy below
         clipped = min(max(position_x, -self.ankle_limit_back), self.ankle_limit_front)
-        self._lean += (LEAN_RATE * (clipped - position_x) - LEAN_LEAK * self._lean) / self.control_rate
+        self._lean += (LEAN_RATE * (clipped - position_x) - LEAN_LEAK * self._lean) * self.ctx.control_dt
         self._lean = min(max(self._lean, -LEAN_MAX), LEAN_MAX)
         pelvis_pitch_goal = posture[1] * (1.0 - SPINE_SHARE) + self._crouch_pitch + self._lean
         pelvis_pitch = math.atan2(-(pelvis_m[0] * ux + pelvis_m[3] * uy + pelvis_m[6] * uz),

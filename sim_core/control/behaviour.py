@@ -52,6 +52,7 @@ class ControlContext:
     data: mujoco.MjData
     character: CharacterSpec
     servos: ServoBank
+    control_dt: float = 0.01          # s between update() calls of this run
 
 
 class Behaviour:

@@ -154,6 +154,7 @@ class Landing(Behaviour):
                       "ankle_y": ("ankle", "y"), "ankle_x": ("ankle", "x")}.items()} for side in "rl"]
         self.knees = s.indices(["knee_r_y", "knee_l_y"])
         self.stage = "flight"
+        self.last_fx = [None, None]
         self.touchdown_knee_speed = None
         self.com_height = float(ctx.data.subtree_com[self.pelvis][2])
         self.finished_at = None
@@ -219,14 +220,15 @@ class Landing(Behaviour):
                 # thigh is aimed in the world frame, so a pitching pelvis does not swing the feet
                 foot = d.xpos[self.feet[k]]            # the ankle; the sole's centre is ahead of it
                 fx = c * (foot[0] - com[0]) + sn * (foot[1] - com[1]) + self.sole_centre
-                capture = vx * math.sqrt(max(self.com_height, 0.5) / 9.81)
-                error = capture + p["foot_delta"] - fx
+                fx_rate = 0.0 if self.last_fx[k] is None else (fx - self.last_fx[k]) / self.ctx.control_dt
+                self.last_fx[k] = fx
+                wanted = vx * math.sqrt(max(self.com_height, 0.5) / 9.81) + p["foot_delta"]
                 hip = d.xpos[self.hips[k]]
                 hip_from_com = c * (hip[0] - com[0]) + sn * (hip[1] - com[1])
-                wanted = capture + p["foot_delta"] + p["foot_kp"] * 0.05 * error - p["foot_kv"] * 0.05 * vx
                 thigh_pitch = self.leg.thigh_pitch_for(wanted - self.sole_centre - hip_from_com, p["knee_flexion"])
+                correction = -p["foot_kp"] * (wanted - fx) + p["foot_kv"] * fx_rate     # eq. 6.1
                 targets[j["knee"]] = p["knee_flexion"]
-                targets[j["hip_y"]] = thigh_pitch - pelvis_pitch
+                targets[j["hip_y"]] = thigh_pitch - pelvis_pitch + correction
                 targets[j["hip_x"]] = 0.0
             else:
                 # hips keep the pelvis upright while the knees give; the knees are pure dampers
