@@ -55,7 +55,7 @@ def build_skin(spec) -> None:
     try:
         from blender_addon.rigbuild import MASS_TOLERANCE, build_rig
     except ImportError as exc:
-        raise SystemExit(f"build.py rigs: {exc.name} is missing; pip install -e ".[rigs]" "
+        raise SystemExit(f"build.py rigs: {exc.name} is missing; pip install -e '.[rigs]' "
                          "(or use --no-skin)") from None
     report = build_rig(spec, ROOT / "rigs" / f"{spec.name}.glb")
     worst, error = report.worst_mass_error()
