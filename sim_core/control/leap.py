@@ -40,6 +40,7 @@ THRUST_GAIN = 3.0               # hip and knee servos stiffened for the thrust [
 LIFTOFF_ANKLE = 0.75            # rad of plantarflexion at the end of the thrust
 SOFT_KNEE_KP, SOFT_KNEE_KV = 0.3, 2.5    # knee gain factors while absorbing (the thesis: kp 0; with human
                                          # torque limits a little spring keeps the squat shallower)
+COM_KP, COM_KV = 4.0, 2.0      # the balance behaviour's COM servo gains (eq. 7.1), used while absorbing
 ABSORB_TIME = 0.35              # s: hand over to balance at the latest this long after touchdown
 KNEE_RESTORE = 0.2              # knees stiffen again at 20 % of their touchdown speed [W98 §6.1]
 
@@ -133,7 +134,11 @@ class Landing(Behaviour):
     schema = Schema(
         Parameter("knee_flexion", "rad", 0.9, 0.0, 1.5, "knee bend held in flight, ready to absorb"),
         Parameter("foot_delta", "m", 0.0, -0.3, 0.3,
-                  "foot servo delta: extra forward placement of the feet relative to the capture point"),
+                  "foot servo delta: extra forward placement of the feet, added to the calibrated one "
+                  "for the horizontal speed (rigs/tuned/landing_<character>.json, Table 6.1's role)"),
+        Parameter("foot_lead_time", "s", 0.2, 0.0, 0.6,
+                  "feet land this many seconds of horizontal COM travel ahead of the COM "
+                  "(0.3 s ~ the capture point of a standing human)"),
         Parameter("foot_kp", "rad/m", 3.0, 0.0, 20.0, "hip offset per metre of foot placement error (eq. 6.1)"),
         Parameter("foot_kv", "rad s/m", 0.3, 0.0, 5.0, "hip offset per m/s of foot speed relative to the COM (eq. 6.1)"),
     )
@@ -147,6 +152,8 @@ class Landing(Behaviour):
         self.hips = [m.body("ULEGR").id, m.body("ULEGL").id]
         self.leg = LegGeometry(ctx.character, "R")
         self.ankle_height = self.leg.ankle_height
+        balance = Balance(Balance.schema.defaults(), ctx)
+        self.ankle_front, self.ankle_back = balance.ankle_limit_front, balance.ankle_limit_back
         sites = [c["pos"] for c in ctx.character.body("FOOTR")["contacts"] + ctx.character.body("TOER")["contacts"]]
         self.sole_centre = 0.5 * (max(q[0] for q in sites) + min(q[0] for q in sites)) - ctx.character.joint_position("FOOTR")[0]
         self.idx = [{k: s.index[f"{j}_{side}_{a}"] for k, (j, a) in
@@ -154,6 +161,7 @@ class Landing(Behaviour):
                       "ankle_y": ("ankle", "y"), "ankle_x": ("ankle", "x")}.items()} for side in "rl"]
         self.knees = s.indices(["knee_r_y", "knee_l_y"])
         self.stage = "flight"
+        self.calibrated_delta = None
         self.last_fx = [None, None]
         self.touchdown_knee_speed = None
         self.com_height = float(ctx.data.subtree_com[self.pelvis][2])
@@ -192,6 +200,12 @@ class Landing(Behaviour):
             hips = 0.5 * (d.xpos[self.hips[0]] + d.xpos[self.hips[1]])
             feet = 0.5 * (d.xpos[self.feet[0]] + d.xpos[self.feet[1]])
             crouch_pitch = float(self.crouch.at(float(hips[2] - feet[2]) + self.ankle_height)[3])
+        ankle_command = 0.0
+        if self.stage != "flight":
+            points = self.airborne.support.supporting_points(d)
+            px = c * points[:, 0] + sn * points[:, 1]
+            com_x = c * com[0] + sn * com[1]
+            ankle_command = COM_KP * (com_x - 0.5 * (px.min() + px.max())) + COM_KV * vx
         if self.stage == "flight" and self.airborne.touching(d):
             self.stage = "absorb"
             self.touchdown_knee_speed = max(abs(float(velocities[self.knees].mean())), 1e-3)
@@ -214,6 +228,10 @@ class Landing(Behaviour):
             foot_roll = math.atan2(f[7], f[8])
             targets[j["ankle_y"]] = angles[j["ankle_y"]] - foot_pitch      # feet parallel to the ground
             targets[j["ankle_x"]] = angles[j["ankle_x"]] - foot_roll
+            if self.stage != "flight":
+                # on the ground the ankles already servo the COM over the feet (eq. 7.1), within
+                # what the feet can take, while the knees absorb
+                targets[j["ankle_y"]] += min(max(ankle_command, -self.ankle_back), self.ankle_front)
             if self.stage == "flight":
                 # eq. 6.1: a PD servo on the foot's place relative to the COM, aiming where the COM's
                 # horizontal speed will be used up (capture point) plus the foot servo delta; the
@@ -222,7 +240,9 @@ class Landing(Behaviour):
                 fx = c * (foot[0] - com[0]) + sn * (foot[1] - com[1]) + self.sole_centre
                 fx_rate = 0.0 if self.last_fx[k] is None else (fx - self.last_fx[k]) / self.ctx.control_dt
                 self.last_fx[k] = fx
-                wanted = vx * math.sqrt(max(self.com_height, 0.5) / 9.81) + p["foot_delta"]
+                if self.calibrated_delta is None:          # the horizontal speed of this flight
+                    self.calibrated_delta = calibrated_foot_delta(self.ctx.character.name, vx)
+                wanted = vx * p["foot_lead_time"] + self.calibrated_delta + p["foot_delta"]
                 hip = d.xpos[self.hips[k]]
                 hip_from_com = c * (hip[0] - com[0]) + sn * (hip[1] - com[1])
                 thigh_pitch = self.leg.thigh_pitch_for(wanted - self.sole_centre - hip_from_com, p["knee_flexion"])
@@ -305,6 +325,16 @@ def leap_assess(trajectory) -> tuple[str, dict]:
     if metrics["final_com_speed"] >= 0.1:
         return "not_still", metrics
     return "success", metrics
+
+
+def calibrated_foot_delta(character: str, horizontal_speed: float) -> float:
+    """Foot servo delta for this horizontal speed from scripts/calibrate_landing.py's table
+    (0 where there is none)."""
+    path = TUNED_DIR / f"landing_{character}.json"
+    if not path.exists():
+        return 0.0
+    table = json.loads(path.read_text())["foot_delta"]
+    return float(np.interp(horizontal_speed, table["speed"], table["delta"]))
 
 
 # ------------------------------------------------------------------------------- leap mapping
