@@ -1,6 +1,9 @@
-"""Calibrate the vertical leap (the role of Wooten's Table 4.1): run leaps over a range of crouch
-heights with the low-level settings, measure the COM rise each one achieves and whether it lands
-balanced, and write the mapping commanded rise -> crouch height, torso pitch to
+"""Calibrate the vertical leap (the role of Wooten's Table 4.1). For each crouch height:
+  1. find the lift-off hip angle and crouch COM offset that leave the ground with no somersault
+     (angular momentum about the COM ~ 0) and no drift (horizontal COM speed ~ 0), by Newton's
+     method on thrust-only runs;
+  2. run the whole leap with them and measure the COM rise and whether it lands balanced.
+Writes the mapping commanded rise -> crouch height, COM offset, neutral lift-off hip angle to
 rigs/tuned/leap_<character>.json, which the leap behaviour interpolates. Rerun after any change
 to the model or the controllers:
 
@@ -17,22 +20,68 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
-import numpy as np                                          # noqa: E402
+import numpy as np                                              # noqa: E402
 
-from sim_core.control.leap import DEFAULT_MAPPING, TUNED_DIR   # noqa: E402
-from sim_core.simulate import RunRequest, run               # noqa: E402
+from sim_core.control.leap import AIRBORNE_HEIGHT, DEFAULT_MAPPING, TUNED_DIR   # noqa: E402
+from sim_core.simulate import RunRequest, run                   # noqa: E402
 
-CROUCH_FRACTIONS = (0.93, 0.88, 0.83, 0.78, 0.73, 0.68, 0.63, 0.59)   # of the standing hip height
-DURATION = 4.5
+CROUCH_FRACTIONS = (0.9, 0.85, 0.8, 0.75, 0.7, 0.66, 0.62, 0.59)   # of the standing hip height
+THRUST_ONLY = 1.7            # s: crouch (0.2 + 0.8 + 0.15 s) and the thrust, up to just after lift-off
+LEAP_DURATION = 4.5
+NEWTON_STEPS = 3
+ARM_SWING = 1.0              # rad: a forward swing that adds height without spinning the body
+
+
+def liftoff_state(character, crouch_height, hip, offset):
+    params = dict(low_level=1, crouch_height=crouch_height, crouch_pitch=0.0, com_offset=offset,
+                  liftoff_hip_angle=hip, arm_swing=ARM_SWING)
+    traj = run(RunRequest("leap", character, params=params, duration=THRUST_ONLY))
+    flying = traj.arrays["support_points"][:, :, 2].min(axis=1) > AIRBORNE_HEIGHT
+    if not flying.any():
+        return None
+    k = int(np.argmax(flying))
+    mass = traj.meta["total_mass"]
+    # angular momentum as a pitch rate of a ~ 15 kg m^2 body, to weigh it like the speed in m/s
+    return np.array([traj.arrays["angmom"][k, 1] / 15.0, traj.arrays["com_vel"][k, 0]]), mass
+
+
+def neutral_settings(character, crouch_height):
+    """Newton steps on (lift-off hip angle, COM offset) towards no spin and no drift at lift-off;
+    returns the best point seen and its residual."""
+    x = np.array([0.0, 0.0])
+    best = (np.inf, x.copy(), None)
+    for _ in range(NEWTON_STEPS + 1):
+        base = liftoff_state(character, crouch_height, *x)
+        if base is None:
+            break
+        f = base[0]
+        if np.linalg.norm(f) < best[0]:
+            best = (float(np.linalg.norm(f)), x.copy(), f)
+        if np.abs(f).max() < 0.03:
+            break
+        jac = np.zeros((2, 2))
+        for i, eps in enumerate((0.05, 0.01)):
+            probe = x.copy()
+            probe[i] += eps
+            shifted = liftoff_state(character, crouch_height, *probe)
+            if shifted is None:
+                return best[1], best[2]
+            jac[:, i] = (shifted[0] - f) / eps
+        step = np.linalg.lstsq(jac, -f, rcond=None)[0]
+        x = np.clip(x + np.clip(step, [-0.2, -0.02], [0.2, 0.02]), [-0.6, -0.05], [0.4, 0.08])
+    return best[1], best[2]
 
 
 def trial(args):
     character, crouch_height = args
-    params = dict(low_level=1, crouch_height=crouch_height, crouch_pitch=0.0, arm_swing=2.5)
-    traj = run(RunRequest("leap", character, params=params, duration=DURATION))
+    (hip, offset), residual = neutral_settings(character, crouch_height)
+    params = dict(low_level=1, crouch_height=crouch_height, crouch_pitch=0.0, com_offset=float(offset),
+                  liftoff_hip_angle=float(hip), arm_swing=ARM_SWING)
+    traj = run(RunRequest("leap", character, params=params, duration=LEAP_DURATION))
     m = traj.meta["metrics"]
-    return {"crouch_height": crouch_height, "com_rise": m["com_rise"], "outcome": traj.meta["outcome"],
-            "flight_time": m.get("flight_time", 0.0)}
+    return {"crouch_height": crouch_height, "liftoff_hip": float(hip), "com_offset": float(offset),
+            "residual": None if residual is None else [float(r) for r in residual],
+            "com_rise": m["com_rise"], "outcome": traj.meta["outcome"]}
 
 
 def calibrate(character: str, processes: int) -> dict:
@@ -44,20 +93,22 @@ def calibrate(character: str, processes: int) -> dict:
     with Pool(processes) as pool:
         results = pool.map(trial, [(character, h) for h in heights])
     for r in results:
-        print(f"  {character}: crouch {r['crouch_height']:.3f} m -> COM rise {r['com_rise']:.3f} m, {r['outcome']}")
-    good = [r for r in results if r["outcome"] == "success"]
-    good.sort(key=lambda r: r["com_rise"])
+        print(f"  {character}: crouch {r['crouch_height']:.3f} m, hip {r['liftoff_hip']:+.2f} rad, offset "
+              f"{r['com_offset']:+.3f} m (residual {r['residual']}) -> COM rise {r['com_rise']:.3f} m, {r['outcome']}")
+    good = sorted((r for r in results if r["outcome"] == "success"), key=lambda r: r["com_rise"])
     rows, best = [], -1.0
     for r in good:                                   # keep a monotonic mapping
         if r["com_rise"] > best + 0.01:
             rows.append(r)
             best = r["com_rise"]
-    mapping = {"character": character, "script": "scripts/calibrate_leap.py", "trials": results,
-               "vertical": {"com_rise": [r["com_rise"] for r in rows],
-                            "crouch_height": [r["crouch_height"] for r in rows],
-                            "torso_pitch": [0.0 for _ in rows]},
-               "broad": DEFAULT_MAPPING["broad"], "broad_calibrated": False}
-    return mapping
+    return {"character": character, "script": "scripts/calibrate_leap.py", "trials": results,
+            "vertical": {"com_rise": [r["com_rise"] for r in rows],
+                         "crouch_height": [r["crouch_height"] for r in rows],
+                         "torso_pitch": [0.0 for _ in rows],
+                         "com_offset": [r["com_offset"] for r in rows],
+                         "liftoff_hip": [r["liftoff_hip"] for r in rows],
+                         "arm_swing": [ARM_SWING for _ in rows]},
+            "broad": DEFAULT_MAPPING["broad"], "broad_calibrated": False}
 
 
 def main() -> int:

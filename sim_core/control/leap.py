@@ -139,8 +139,8 @@ class Landing(Behaviour):
         Parameter("foot_lead_time", "s", 0.2, 0.0, 0.6,
                   "feet land this many seconds of horizontal COM travel ahead of the COM "
                   "(0.3 s ~ the capture point of a standing human)"),
-        Parameter("foot_kp", "rad/m", 3.0, 0.0, 20.0, "hip offset per metre of foot placement error (eq. 6.1)"),
-        Parameter("foot_kv", "rad s/m", 0.3, 0.0, 5.0, "hip offset per m/s of foot speed relative to the COM (eq. 6.1)"),
+        Parameter("foot_kp", "rad/m", 8.0, 0.0, 20.0, "hip offset per metre of foot placement error (eq. 6.1)"),
+        Parameter("foot_kv", "rad s/m", 0.5, 0.0, 5.0, "hip offset per m/s of foot speed relative to the COM (eq. 6.1)"),
     )
 
     def __init__(self, params, ctx: ControlContext):
@@ -288,7 +288,7 @@ def balance_after_landing(ctx: ControlContext) -> Balance:
     pelvis = d.xmat[m.body("PELVIS").id]
     height = float(hips[2] - feet[2]) + float(ctx.character.joint_position("FOOTR")[2])
     return Balance(Balance.schema.validate(dict(move_start=0.0, move_time=1.2, return_to_stand=0)), ctx,
-                   from_height=height, from_pitch=math.atan2(-pelvis[6], pelvis[8]))
+                   from_height=height)
 
 
 def leap_assess(trajectory) -> tuple[str, dict]:
@@ -309,6 +309,11 @@ def leap_assess(trajectory) -> tuple[str, dict]:
         metrics["liftoff_time"] = float(t[first])
         metrics["touchdown_time"] = float(t[min(last + 1, len(t) - 1)])
         metrics["flight_time"] = metrics["touchdown_time"] - metrics["liftoff_time"]
+        weight = 9.80665 * trajectory.meta["total_mass"]
+        metrics["peak_thrust_grf_body_weights"] = float(a["grf"][:first + 1, 2].max() / weight)
+        metrics["peak_landing_grf_body_weights"] = float(a["grf"][last:, 2].max() / weight) if last < len(t) else 0.0
+        metrics["liftoff_angular_momentum"] = float(a["angmom"][first, 1])
+        metrics["liftoff_horizontal_speed"] = float(a["com_vel"][first, 0])
         after = a["support_points"][last + 1:, :, :2]
         metrics["foot_slide_after_landing"] = float(
             np.linalg.norm(after - after[min(int(0.15 * trajectory.meta["control_rate"]), len(after) - 1)], axis=2).max()
@@ -365,14 +370,14 @@ class Leap(Sequence):
         Parameter("distance", "m", 0.0, 0.0, 2.5,
                   "commanded horizontal COM travel (broad jump); 0 = vertical leap"),
         Parameter("liftoff_hip_angle", "rad", 0.0, -1.0, 0.5,
-                  "hip angle reached at lift-off: flexed (-) or extended (+) sends the ground force "
-                  "past the COM and sets the somersault rate"),
+                  "hip flexion (-) or extension (+) at lift-off beyond the calibrated neutral (0 = no "
+                  "somersault): sends the ground force past the COM and sets the somersault rate"),
         Parameter("low_level", "bool", 0.0, 0.0, 1.0,
                   "1 = use the crouch/pitch/offset/arm values below instead of the calibrated mapping"),
         Parameter("crouch_height", "m", 0.65, 0.4, 0.95, "pelvis height of the crouch (low_level only)"),
         Parameter("crouch_pitch", "rad", 1.0, 0.0, 1.8, "torso pitch in the crouch (low_level only)"),
         Parameter("com_offset", "m", 0.0, -0.05, 0.12, "COM forward of the feet in the crouch (low_level only)"),
-        Parameter("arm_swing", "rad", 2.5, 0.0, 3.2, "forward arm swing during the thrust (low_level only)"),
+        Parameter("arm_swing", "rad", 1.0, 0.0, 3.2, "forward arm swing during the thrust (low_level only)"),
         Parameter("crouch_time", "s", 0.8, 0.3, 3.0, "time to sink into the crouch"),
         Parameter("foot_delta", "m", 0.0, -0.3, 0.3, "landing: foot servo delta (see the land behaviour)"),
     )
@@ -380,7 +385,9 @@ class Leap(Sequence):
     def settings(self) -> dict:
         p = self.params
         if p["low_level"]:
-            return {k: p[k] for k in ("crouch_height", "crouch_pitch", "com_offset", "arm_swing")}
+            settings = {k: p[k] for k in ("crouch_height", "crouch_pitch", "com_offset", "arm_swing")}
+            settings["liftoff_hip"] = p["liftoff_hip_angle"]
+            return settings
         mapping = load_mapping(self.ctx.character.name)
         if p["distance"] > 0:
             b = mapping["broad"]
@@ -388,12 +395,16 @@ class Leap(Sequence):
             return {"crouch_height": float(np.interp(x, b["com_travel"], b["crouch_height"])),
                     "crouch_pitch": float(np.interp(x, b["com_travel"], b.get("torso_pitch", [0.6] * len(b["com_travel"])))),
                     "com_offset": float(np.interp(x, b["com_travel"], b["com_offset"])),
-                    "arm_swing": float(np.interp(x, b["com_travel"], b["arm_swing"]))}
+                    "arm_swing": float(np.interp(x, b["com_travel"], b["arm_swing"])),
+                    "liftoff_hip": p["liftoff_hip_angle"]}
         v = mapping["vertical"]
         h = p["height"]
+        neutral = v.get("liftoff_hip", [0.0] * len(v["com_rise"]))
         return {"crouch_height": float(np.interp(h, v["com_rise"], v["crouch_height"])),
                 "crouch_pitch": float(np.interp(h, v["com_rise"], v["torso_pitch"])),
-                "com_offset": 0.0, "arm_swing": 2.5}
+                "com_offset": float(np.interp(h, v["com_rise"], v.get("com_offset", [0.0] * len(v["com_rise"])))),
+                "arm_swing": float(np.interp(h, v["com_rise"], v.get("arm_swing", [1.0] * len(v["com_rise"])))),
+                "liftoff_hip": float(np.interp(h, v["com_rise"], neutral)) + p["liftoff_hip_angle"]}
 
     def check_feasible(self) -> None:
         p = self.params
@@ -433,7 +444,7 @@ class Leap(Sequence):
 
         def thrust(t):
             return LeapThrust({}, ctx, cfg["crouch_height"], BROAD_TIMING if broad else VERTICAL_TIMING,
-                              ANKLE_GAIN_BROAD if broad else ANKLE_GAIN_VERTICAL, p["liftoff_hip_angle"],
+                              ANKLE_GAIN_BROAD if broad else ANKLE_GAIN_VERTICAL, cfg["liftoff_hip"],
                               cfg["arm_swing"], stand_height=self._stand_height())
 
         def land(t):
