@@ -412,17 +412,27 @@ class Leap(Sequence):
             return
         mapping = load_mapping(self.ctx.character.name)
         if p["distance"] > 0:
+            if not mapping.get("broad_calibrated", True):
+                raise ParameterError("the broad jump is not calibrated yet (distance must be 0); "
+                                     "low_level=1 runs it with explicit settings")
             top = max(mapping["broad"]["com_travel"])
             if p["distance"] > top * 1.05:
                 raise ParameterError(f"parameter distance={p['distance']:g} m is beyond what "
                                      f"{self.ctx.character.name} can jump with this strength; allowed range is "
                                      f"[0.3, {top:.2f}] m")
         else:
-            top = max(mapping["vertical"]["com_rise"])
+            rises = mapping["vertical"]["com_rise"]
+            if not rises:
+                raise ParameterError(f"the vertical leap of {self.ctx.character.name} is not calibrated: run "
+                                     f"scripts/calibrate_leap.py (or use low_level=1)")
+            top, bottom = max(rises), min(rises)
+            if p["height"] < bottom * 0.9:
+                raise ParameterError(f"parameter height={p['height']:g} m is below the calibrated leaps of "
+                                     f"{self.ctx.character.name}; allowed range is [{bottom:.2f}, {top:.2f}] m")
             if p["height"] > top * 1.05:
                 raise ParameterError(f"parameter height={p['height']:g} m is infeasible for "
-                                     f"{self.ctx.character.name} with this strength; allowed range is "
-                                     f"[0.05, {top:.2f}] m")
+                                     f"{self.ctx.character.name} with human torque limits; allowed range is "
+                                     f"[{bottom:.2f}, {top:.2f}] m")
 
     def _stand_height(self) -> float:
         legs = [LegGeometry(self.ctx.character, side) for side in "RL"]
