@@ -20,7 +20,7 @@ def main() -> int:
     text = readme.read_text()
     for name in available_behaviours():
         block = f"<!-- schema:{name} -->\n{schema_markdown(behaviour_class(name))}\n<!-- /schema:{name} -->"
-        pattern = re.compile(rf"<!-- schema:{name} -->\n.*?\n<!-- /schema:{name} -->", re.S)
+        pattern = re.compile(rf"<!-- schema:{name} -->\n(?:.*?\n)?<!-- /schema:{name} -->", re.S)
         if pattern.search(text):
             text = pattern.sub(lambda _: block, text)
         else:
