@@ -56,6 +56,8 @@ FLIGHT, LOADING, HEEL, HEEL_TOE, TOE, UNLOADING, START = range(7)
 STATE_NAMES = ("flight", "loading", "heel", "heel_toe", "toe", "unloading", "start")
 
 CONTACT_HEIGHT = 0.004      # m: a foot contact sphere this close to the ground touches it
+MIRROR_ACTUAL = False
+MIN_FLIGHT = 0.02           # s: a touchdown of the new active leg is not taken before this
 LOADING_TIME = 0.010        # s: contact held this long before the stance laws take over
 SWAP_BLEND = 0.06           # s: Hermite blend of the new active leg's targets after lift-off
 GRAVITY = 9.80665
@@ -108,21 +110,21 @@ class Running(Behaviour):
         Parameter("turn_after", "m", 15.0, 2.0, 200.0, "course 1-3: distance run straight before the turn or the loops"),
         Parameter("lean", "1", 1.0, 0.0, 1.5, "share of the lean into a turn that balances the centripetal force (atan(v^2 / (g r)))"),
         Parameter("lookahead", "m", 2.5, 0.5, 10.0, "path following: distance along the path of the point the runner heads for"),
-        Parameter("ground_speed_matching", "m", _tuned("ground_speed_matching", 0.10), 0.0, 0.3,
+        Parameter("ground_speed_matching", "m", _tuned("ground_speed_matching", 0.098), 0.0, 0.3,
                   "tuned: how much further forward the foot swings during flight before it is brought back to touchdown"),
-        Parameter("stance_pitch", "rad", _tuned("stance_pitch", 0.08), -0.1, 0.4,
+        Parameter("stance_pitch", "rad", _tuned("stance_pitch", 0.052), -0.1, 0.4,
                   "tuned: forward pitch of the pelvis the stance hip holds"),
-        Parameter("thrust_time", "1", _tuned("thrust_time", 0.40), 0.2, 0.7,
+        Parameter("thrust_time", "1", _tuned("thrust_time", 0.344), 0.2, 0.7,
                   "tuned: share of the expected stance time after which the ankle thrusts (toe state)"),
-        Parameter("ankle_extension", "rad", _tuned("ankle_extension", 0.45), 0.0, 0.87,
+        Parameter("ankle_extension", "rad", _tuned("ankle_extension", 0.568), 0.0, 0.87,
                   "tuned: ankle plantarflexion the stance ankle extends to in thrust"),
-        Parameter("knee_extension", "rad", _tuned("knee_extension", 0.10), 0.0, 0.8,
+        Parameter("knee_extension", "rad", _tuned("knee_extension", 0.455), 0.0, 0.8,
                   "tuned: knee angle the stance knee extends to in thrust"),
-        Parameter("speed_gain", "s", _tuned("speed_gain", 0.08), 0.0, 0.3,
+        Parameter("speed_gain", "s", _tuned("speed_gain", 0.055), 0.0, 0.3,
                   "k of eqs. 1-2: extra forward placement of the foot per m/s of speed error"),
-        Parameter("touchdown_leg", "m", _tuned("touchdown_leg", 0.90), 0.75, 0.95,
+        Parameter("touchdown_leg", "m", _tuned("touchdown_leg", 0.907), 0.75, 0.95,
                   "hip-to-heel distance at touchdown (fixes z_hh of eqs. 1-2)"),
-        Parameter("idle_knee", "rad", _tuned("idle_knee", 1.6), 0.5, 2.4, "knee flexion of the idle (shortened) leg"),
+        Parameter("idle_knee", "rad", _tuned("idle_knee", 1.606), 0.5, 2.4, "knee flexion of the idle (shortened) leg"),
         Parameter("arm_swing", "1", _tuned("arm_swing", 0.8), 0.0, 2.0,
                   "k of eq. 5: shoulder swing per radian of the opposite hip's swing"),
         Parameter("start_lean", "s", 0.35, 0.1, 1.0, "time the standing body leans forward before the first push-off"),
@@ -145,6 +147,7 @@ class Running(Behaviour):
                        ay=ix[f"ankle_{c}_y"], ax=ix[f"ankle_{c}_x"], mt=ix[f"mt_{c}_y"],
                        sx=ix[f"shoulder_{c}_x"], sy=ix[f"shoulder_{c}_y"], sz=ix[f"shoulder_{c}_z"],
                        ez=ix[f"elbow_{c}_z"]) for c in "rl"]
+        self.hip_joint_ids = np.array([m.joint(f"hip_{c}_{ax}").id for c in "rl" for ax in "yxz"])
         self.leg_idx = [s.indices([f"hip_{c}_y", f"hip_{c}_x", f"hip_{c}_z", f"knee_{c}_y", f"ankle_{c}_y",
                                    f"ankle_{c}_x", f"mt_{c}_y"]) for c in "rl"]
         self.neck_y = ix["neck_c2_y"]
@@ -176,59 +179,78 @@ class Running(Behaviour):
 
     # --------------------------------------------------------------------- start
     def start(self, t: float) -> None:
-        d = self.ctx.data
+        s = self.ctx.servos
         self.targets = self.base.tolist()
+        self.kp = self.kp0.tolist()          # current gains (the torque-commanded servos need them)
+        self.kv = self.kv0.tolist()
         self.active = 1                      # the left leg pushes off first
         self.state = START
         self.t_state = t
         self.t_touchdown = t
         self.t_liftoff = t
-        self.stance_time = 0.30              # expected stance duration t_s (from the last stance)
+        self.t_thrust = t
+        self.stance_time = 0.30              # expected stance duration t_s (the last stance's)
         self.flight_time = 0.10
-        self.contact_since = None
         self.idle_lo = [0.0, 0.0]            # idle hip (y, x) at the last lift-off
         self.active_lo = [0.0, 0.0]          # active hip (y, x) at the last lift-off
-        self.active_goal = [0.0, 0.0, 0.0]   # desired active hip (y, x, z)
         self.blend_from = None
-        self.knee_touchdown = 0.2
+        self.knee_touchdown = 0.3
+        self.ankle_touchdown = 0.0
         self.ankle_flat = 0.0
         self.heading_goal = self.params["facing"]
         self.roll_goal = 0.0
-        self.speed_goal = 0.0
-        self.step_count = 0
+        self.previous_goal = {}
         self.event(t, "start")
 
     # --------------------------------------------------------------------- helpers
-    def _set_leg_gains(self, leg: int, kp: dict, kv_ratio: float | None = None) -> None:
-        """Gains of one leg's servos by joint key (hip, knee, ankle, mt); logged for replay."""
+    def _set_gains(self, leg: int, scales: dict) -> None:
+        """Gains of one leg's servos by joint key (hy, hx, hz, knee, ay, ax, mt) as shares of the
+        default (kp, kv); logged for replay."""
         j = self.j[leg]
-        names = {"hip": ("hy", "hx", "hz"), "knee": ("knee",), "ankle": ("ay", "ax"), "mt": ("mt",)}
         idx, kps, kvs = [], [], []
-        for key, value in kp.items():
-            for n in names[key]:
-                i = j[n]
-                idx.append(i)
-                kps.append(self.kp0[i] * value)
-                kvs.append(self.kv0[i] * value if kv_ratio is None else self.kp0[i] * value * kv_ratio)
-        self.ctx.servos.set_gains(np.array(idx), np.array(kps), np.array(kvs))
+        for key, (kp_share, kv_share) in scales.items():
+            i = j[key]
+            kp, kv = float(self.kp0[i] * kp_share), float(self.kv0[i] * kv_share)
+            if kp == self.kp[i] and kv == self.kv[i]:
+                continue
+            idx.append(i)
+            kps.append(kp)
+            kvs.append(kv)
+            self.kp[i], self.kv[i] = kp, kv
+        if idx:
+            self.ctx.servos.set_gains(np.array(idx), np.array(kps), np.array(kvs))
 
     def _enter(self, t: float, state: int) -> None:
-        if state == TOE:
-            self.t_thrust = t
         self.state = state
         self.t_state = t
-        side = "R" if self.active == 0 else "L"
-        self.event(t, f"{STATE_NAMES[state]}_{side}")
         a = self.active
+        self.event(t, f"{STATE_NAMES[state]}_{'R' if a == 0 else 'L'}")
         if state == FLIGHT:
-            self._set_leg_gains(a, {"hip": 1.0, "knee": 1.0, "ankle": 1.0, "mt": 0.5})
-            self._set_leg_gains(1 - a, {"hip": 1.0, "knee": 0.6, "ankle": 0.5, "mt": 0.3})
+            self._set_gains(a, FLIGHT_GAINS)
+            self._set_gains(1 - a, IDLE_GAINS)
+        elif state == LOADING:
+            self._set_gains(a, STANCE_HIP_GAINS)
         elif state == HEEL:
-            self._set_leg_gains(a, {"knee": STANCE_KNEE_GAIN, "ankle": 0.3})
+            self._set_gains(a, {"knee": (STANCE_KNEE_GAIN, STANCE_KNEE_GAIN), "ay": (HEEL_ANKLE_GAIN, HEEL_ANKLE_GAIN)})
         elif state == HEEL_TOE:
-            self._set_leg_gains(a, {"knee": STANCE_KNEE_GAIN, "ankle": 1.0})
+            self._set_gains(a, {"knee": (STANCE_KNEE_GAIN, STANCE_KNEE_GAIN), "ay": (1.0, 1.0)})
         elif state == TOE:
-            self._set_leg_gains(a, {"knee": 1.0, "ankle": 1.0})
+            self.t_thrust = t
+            self._set_gains(a, {"knee": (1.0, 1.0), "ay": (1.0, 1.0)})
+
+    def _liftoff(self, t: float, q: list, targets: list) -> None:
+        """The active leg has left the ground: it becomes the idle leg, the other the active one."""
+        a, i = self.active, 1 - self.active
+        ja, ji = self.j[a], self.j[i]
+        self.stance_time = min(0.45, max(0.12, 0.5 * self.stance_time + 0.5 * (t - self.t_touchdown)))
+        self.t_liftoff = t
+        self.active_lo = [q[ji["hy"]], q[ji["hx"]]]      # the new active leg's hip now
+        self.idle_lo = [q[ja["hy"]], q[ja["hx"]]]        # the new idle leg's hip now
+        self.blend_from = [targets[ji[k]] for k in BLENDED]
+        self.active = i
+        self.previous_goal = {}
+        self.event(t, "liftoff")
+        self._enter(t, FLIGHT)
 
     # --------------------------------------------------------------------- control
     def update(self, t: float) -> None:
@@ -237,9 +259,10 @@ class Running(Behaviour):
         servos = self.ctx.servos
         q = servos.angles().tolist()
         qd = servos.velocities().tolist()
+        force = d.actuator_force.tolist()
         m = d.xmat[self.pelvis].tolist()
         wx, wy, wz = d.cvel[self.pelvis, :3].tolist()
-        cx, cy, cz = d.subtree_com[self.pelvis].tolist()
+        cx, cy, _ = d.subtree_com[self.pelvis].tolist()
         vx, vy, vz = d.subtree_linvel[self.pelvis].tolist()
         z = d.site_xpos[self.foot_sites, 2].tolist()
         heel = [min(z[0], z[1]) < CONTACT_HEIGHT, min(z[6], z[7]) < CONTACT_HEIGHT]
@@ -252,44 +275,43 @@ class Running(Behaviour):
         pitch_rate = wx * m[1] + wy * m[4] + wz * m[7]
         roll_rate = wx * m[0] + wy * m[3] + wz * m[6]
 
-        # ---- steering: facing direction (or pure pursuit on the path) and lean into the turn
-        if self.follower is not None:
-            goal = self.follower.heading(cx, cy)
-        else:
-            goal = p["facing"]
+        # ---- steering: facing direction (or pure pursuit on the path), lean into the turn
+        goal = self.follower.heading(cx, cy) if self.follower is not None else p["facing"]
         speed_now = math.hypot(vx, vy)
-        turn = _wrap(goal - self.heading_goal)
-        max_turn = 2.0 * max(speed_now, 1.0) / max(p["turn_radius"], 1.5) / self.control_rate
-        self.heading_goal = _wrap(self.heading_goal + max(-max_turn, min(max_turn, turn)))
-        turn_rate = max(-max_turn, min(max_turn, turn)) * self.control_rate
+        max_turn = TURN_RATE_PER_SPEED * max(speed_now, 1.0) / self.control_rate
+        turn = max(-max_turn, min(max_turn, _wrap(goal - self.heading_goal)))
+        self.heading_goal = _wrap(self.heading_goal + turn)
+        turn_rate = turn * self.control_rate
         roll_target = -p["lean"] * math.atan(speed_now * turn_rate / GRAVITY)
-        self.roll_goal += 0.05 * (roll_target - self.roll_goal)
+        self.roll_goal += ROLL_FILTER * (roll_target - self.roll_goal)
         heading = self.heading_goal
         ch, sh = math.cos(heading), math.sin(heading)
-        # commanded speed ramps up from the stand (the foot is placed to accelerate by <= 1 m/s per step)
+        # the speed command ramps up from the stand: the foot is placed to accelerate at most
+        # ACCEL_MARGIN above the current speed
         speed_cmd = min(p["speed"], speed_now + ACCEL_MARGIN)
         vxd, vyd = speed_cmd * ch, speed_cmd * sh
 
-        a = self.active
-        i = 1 - a
-        ja, ji = self.j[a], self.j[i]
         targets = self.targets
+        a = self.active
+        ja = self.j[a]
 
-        # ---- state transitions of the active leg
+        # ---- state transitions of the active leg (Fig. 3)
         state = self.state
         if state == START:
-            lean_done = t - self.t_state >= p["start_lean"]
-            if lean_done:
-                # the left leg pushes off (toe state), the right becomes the idle leg
+            if t - self.t_state >= p["start_lean"]:
+                ji = self.j[1 - a]
                 self.idle_lo = [q[ji["hy"]], q[ji["hx"]]]
                 self.active_lo = [q[ja["hy"]], q[ja["hx"]]]
                 self.t_touchdown = t - 0.5 * self.stance_time
+                self.ankle_flat = q[ja["ay"]]
+                self._set_gains(a, STANCE_HIP_GAINS)
                 self._enter(t, TOE)
         elif state == FLIGHT:
-            if touch[a]:
+            if touch[a] and t - self.t_liftoff >= MIN_FLIGHT:
                 self.flight_time = 0.5 * self.flight_time + 0.5 * (t - self.t_liftoff)
                 self.t_touchdown = t
                 self.knee_touchdown = q[ja["knee"]]
+                self.ankle_touchdown = q[ja["ay"]]
                 self._enter(t, LOADING)
         elif state == LOADING:
             if not touch[a]:
@@ -306,125 +328,81 @@ class Running(Behaviour):
         elif state == HEEL_TOE:
             if t - self.t_touchdown >= p["thrust_time"] * self.stance_time:
                 self._enter(t, TOE)
-        elif state in (TOE, UNLOADING):
-            if state == TOE and (not heel[a]) and t - self.t_touchdown >= self.stance_time * 0.85:
-                self._enter(t, UNLOADING)
+        elif state == TOE:
             if not touch[a]:
-                # lift-off: the legs swap roles
-                self.stance_time = min(0.45, max(0.12, 0.5 * self.stance_time + 0.5 * (t - self.t_touchdown)))
-                self.t_liftoff = t
-                self.step_count += 1
-                self.active_lo = [q[ji["hy"]], q[ji["hx"]]]      # the new active leg's hip now
-                self.idle_lo = [q[ja["hy"]], q[ja["hx"]]]        # the new idle leg's hip now
-                self.blend_from = [targets[ji["hy"]], targets[ji["hx"]], targets[ji["hz"]],
-                                   targets[ji["knee"]], targets[ji["ay"]]]
-                self.active = a = i
-                i = 1 - a
-                ja, ji = self.j[a], self.j[i]
-                self.event(t, "liftoff")
-                self._enter(t, FLIGHT)
-            elif touch[i] and state == UNLOADING:
-                pass
+                self._liftoff(t, q, targets)
+            elif not heel[a] and t - self.t_thrust >= UNLOADING_AFTER * self.stance_time:
+                self._enter(t, UNLOADING)
+        elif state == UNLOADING:
+            if not touch[a]:
+                self._liftoff(t, q, targets)
         state = self.state
+        a = self.active
+        i = 1 - a
+        ja, ji = self.j[a], self.j[i]
+        kp, kv = self.kp, self.kv
 
         # ---- active leg
-        r = self.ratio
         if state == START:
-            s = hermite_scalar((t - self.t_state) / p["start_lean"])
-            for leg in (0, 1):
-                jj = self.j[leg]
-                targets[jj["ay"]] = -START_ANKLE_LEAN * s
-                targets[jj["knee"]] = 0.15 * s
-                targets[jj["hy"]] = q[jj["hy"]] + (pitch - p["stance_pitch"] * s) + r[jj["hy"]] * (qd[jj["hy"]] + pitch_rate)
-            hy_goal = targets[ja["hy"]]
-            hx_goal = 0.0
-        elif state == FLIGHT:
-            leg = self.legs[a]
-            hip = d.xpos[self.hip_body[a]].tolist()
-            ts = self.stance_time
-            lf = leg.foot_length
-            x_hh = 0.5 * (ts * vx - ch * lf) + p["speed_gain"] * (vx - vxd)
-            y_hh = 0.5 * (ts * vy - sh * lf) + p["speed_gain"] * (vy - vyd)
-            # lateral: toward the centre line (feet land nearly under the body)
-            side = -1.0 if a == 0 else 1.0
-            x_hh += -side * sh * FOOT_INWARD
-            y_hh += side * -ch * FOOT_INWARD
-            # ground speed matching: further forward early in flight, brought back before touchdown
-            phase = (t - self.t_liftoff) / max(self.flight_time, 0.03)
-            gsm = p["ground_speed_matching"] * (1.0 - hermite_scalar((phase - 0.3) / 0.7))
-            x_hh += gsm * ch
-            y_hh += gsm * sh
-            reach = math.hypot(x_hh, y_hh)
-            limit = 0.6 * p["touchdown_leg"]
-            if reach > limit:
-                x_hh *= limit / reach
-                y_hh *= limit / reach
-            z_hh = math.sqrt(max(p["touchdown_leg"] ** 2 - x_hh * x_hh - y_hh * y_hh, 0.01))
-            fx, fz = leg.ankle_from_heel(TOUCHDOWN_TOE_UP)
-            ax_w, ay_w, az_w = x_hh + fx * ch, y_hh + fx * sh, -z_hh + fz
-            # world -> pelvis frame (R^T v); m is row-major world-from-pelvis
-            px = m[0] * ax_w + m[3] * ay_w + m[6] * az_w
-            py = m[1] * ax_w + m[4] * ay_w + m[7] * az_w
-            pz = m[2] * ax_w + m[5] * ay_w + m[8] * az_w
-            hy_goal, hx_goal, knee_goal = leg.hip_knee_for(px, py, pz)
-            hz_goal = max(-0.4, min(0.4, _wrap(heading - yaw))) * (1.0 if a == 0 else 1.0)
-            # ankle: foot pitched toe-up at touchdown (pitch of the foot = pelvis pitch + hip + knee + ankle)
-            ankle_goal = -TOUCHDOWN_TOE_UP - pitch - hy_goal - knee_goal
-            blend = hermite_scalar((t - self.t_liftoff) / SWAP_BLEND) if self.blend_from else 1.0
-            goals = (hy_goal, hx_goal, hz_goal, knee_goal, ankle_goal)
-            keys = ("hy", "hx", "hz", "knee", "ay")
-            for k_, key in enumerate(keys):
-                start = self.blend_from[k_] if self.blend_from else goals[k_]
-                targets[ja[key]] = start + (goals[k_] - start) * blend
-            targets[ja["ax"]] = 0.0
-            targets[ja["mt"]] = 0.0
+            # lean forward over the feet: ankles let the shanks tip forward, hips hold the pelvis
+            s_ = hermite_scalar((t - self.t_state) / p["start_lean"])
+            for jj in self.j:
+                targets[jj["ay"]] = -START_ANKLE_LEAN * s_
+                targets[jj["knee"]] = START_KNEE * s_
+                targets[jj["hy"]] = -START_HIP * s_
             hy_goal, hx_goal = targets[ja["hy"]], targets[ja["hx"]]
+        elif state == FLIGHT:
+            hy_goal, hx_goal = self._place_foot(t, p, a, ja, m, pitch, yaw, heading, ch, sh, vx, vy, vz, vxd, vyd)
+            if MIRROR_ACTUAL:
+                hy_goal, hx_goal = q[ja["hy"]], q[ja["hx"]]
         else:
-            # stance: the hip servos the body attitude (roll, pitch, yaw); damping acts on the
-            # body's rates (the servo's own damping on the joint rate is cancelled)
-            pitch_goal = p["stance_pitch"]
-            e_pitch = pitch - pitch_goal
+            # stance: the hip servos the body attitude (roll, pitch, yaw) as a torque on the
+            # pelvis, net of the idle hip's torque (so the swinging leg does not tip the body)
+            e_pitch = pitch - p["stance_pitch"]
             e_roll = roll - self.roll_goal
             e_yaw = _wrap(yaw - heading)
-            targets[ja["hy"]] = q[ja["hy"]] + ATT_GAIN * e_pitch + r[ja["hy"]] * (qd[ja["hy"]] + ATT_DAMP * pitch_rate)
-            targets[ja["hx"]] = q[ja["hx"]] + ATT_GAIN * e_roll + r[ja["hx"]] * (qd[ja["hx"]] + ATT_DAMP * roll_rate)
-            targets[ja["hz"]] = q[ja["hz"]] + ATT_GAIN * e_yaw + r[ja["hz"]] * (qd[ja["hz"]] + ATT_DAMP * wz)
-            if state in (LOADING, HEEL, HEEL_TOE):
+            share = hermite_scalar((t - self.t_touchdown) / ATTITUDE_ONSET) if state != UNLOADING else \
+                1.0 - hermite_scalar((t - self.t_state) / ATTITUDE_ONSET)
+            # restoring torque on the pelvis (world frame): roll about its x axis, pitch about
+            # its y axis, yaw about the vertical
+            t_roll = -(ROLL_KP * e_roll + ROLL_KD * roll_rate)
+            t_pitch = -(PITCH_KP * e_pitch + PITCH_KD * pitch_rate)
+            t_yaw = -(YAW_KP * e_yaw + YAW_KD * wz)
+            bx = t_roll * m[0] + t_pitch * m[1]
+            by = t_roll * m[3] + t_pitch * m[4]
+            bz = t_roll * m[6] + t_pitch * m[7] + t_yaw
+            # hip actuators push the pelvis with -sum(tau_j axis_j): the stance hip supplies
+            # the restoring torque and cancels the idle hip's reaction
+            axes = d.xaxis[self.hip_joint_ids].tolist()
+            sa, ia = axes[:3], axes[3:]
+            if a == 1:
+                sa, ia = ia, sa
+            fi = (force[ji["hy"]], force[ji["hx"]], force[ji["hz"]])
+            bx = -bx - (ia[0][0] * fi[0] + ia[1][0] * fi[1] + ia[2][0] * fi[2])
+            by = -by - (ia[0][1] * fi[0] + ia[1][1] * fi[1] + ia[2][1] * fi[2])
+            bz = -bz - (ia[0][2] * fi[0] + ia[1][2] * fi[1] + ia[2][2] * fi[2])
+            taus = _solve3(sa[0], sa[1], sa[2], bx, by, bz)
+            for key, tau in zip(("hy", "hx", "hz"), taus):
+                j_ = ja[key]
+                tau *= share
+                targets[j_] = q[j_] + (tau + kv[j_] * qd[j_]) / kp[j_]
+            if state in (LOADING, HEEL):
                 targets[ja["knee"]] = self.knee_touchdown
-                if state == HEEL:
-                    # let the foot come down flat
-                    targets[ja["ay"]] = -(pitch + q[ja["hy"]] + q[ja["knee"]])
-                elif state == HEEL_TOE:
-                    targets[ja["ay"]] = self.ankle_flat
+                targets[ja["ay"]] = self.ankle_touchdown
+            elif state == HEEL_TOE:
+                targets[ja["knee"]] = self.knee_touchdown
+                targets[ja["ay"]] = self.ankle_flat
             else:
-                s = hermite_scalar((t - self.t_state) / THRUST_RAMP)
-                targets[ja["knee"]] = self.knee_touchdown + (p["knee_extension"] - self.knee_touchdown) * s
-                targets[ja["ay"]] = p["ankle_extension"]
+                s_ = hermite_scalar((t - self.t_thrust) / THRUST_RAMP)
+                targets[ja["knee"]] = self.knee_touchdown + (p["knee_extension"] - self.knee_touchdown) * s_
+                targets[ja["ay"]] = self.ankle_flat + (p["ankle_extension"] - self.ankle_flat) * s_
             targets[ja["ax"]] = 0.0
             targets[ja["mt"]] = 0.0
-            hy_goal, hx_goal = targets[ja["hy"]], targets[ja["hx"]]
-        self.active_goal = [hy_goal, hx_goal]
+            hy_goal, hx_goal = q[ja["hy"]], q[ja["hx"]]
 
         # ---- idle leg: shortened, hip mirroring the active hip (eqs. 3-4)
         if state != START:
-            hy_idle = self.idle_lo[0] - (hy_goal - self.active_lo[0])
-            hx_idle = self.idle_lo[1] - (hx_goal - self.active_lo[1])
-            side = 1.0 if i == 0 else -1.0           # +x adducts the right hip, abducts the left
-            hx_idle = side * max(-0.15, min(0.05, side * hx_idle))
-            hy_idle = max(-1.2, min(0.5, hy_idle))
-            targets[ji["hy"]] = hy_idle
-            targets[ji["hx"]] = hx_idle
-            targets[ji["hz"]] = 0.0
-            if state in (TOE, UNLOADING):
-                # the idle leg prepares for its touchdown while the active leg thrusts: the knee
-                # unfolds so that the short flight can swing it out to the placement
-                s_ = hermite_scalar((t - self.t_thrust) / max(IDLE_UNFOLD * self.stance_time, 0.02))
-                targets[ji["knee"]] = p["idle_knee"] + (IDLE_UNFOLD_KNEE - p["idle_knee"]) * s_
-            else:
-                targets[ji["knee"]] = p["idle_knee"]
-            targets[ji["ay"]] = -0.2
-            targets[ji["ax"]] = 0.0
-            targets[ji["mt"]] = 0.0
+            self._idle_leg(t, p, state, ji, i, hy_goal, hx_goal, pitch)
 
         # ---- arms (eq. 5): each shoulder swings against the opposite hip; elbows cycle with it
         k_arm = p["arm_swing"]
@@ -435,23 +413,146 @@ class Running(Behaviour):
             targets[jj["sz"]] = sign * swing
             targets[jj["ez"]] = sign * (ELBOW_BASE + ELBOW_SWING * swing)
         targets[self.neck_y] = -p["stance_pitch"]
-        servos.hold(np.array(targets), t)
+
+        # ---- eq. 6's desired velocity: the servos are position actuators (tau = kp (ctrl - q) -
+        # kv qdot), so a moving target is led by kv/kp times its rate, else a swing lags it
+        tracked = [ji["hy"], ji["hx"], ji["knee"]]
+        if state == FLIGHT:
+            tracked += [ja["hy"], ja["hx"], ja["knee"], ja["ay"]]
+        command = list(targets)
+        previous = self.previous_goal
+        rate = self.control_rate
+        for j_ in tracked:
+            if j_ in previous:
+                v_ = (targets[j_] - previous[j_]) * rate
+                v_ = FF_MAX if v_ > FF_MAX else -FF_MAX if v_ < -FF_MAX else v_
+                command[j_] += kv[j_] / kp[j_] * v_
+        self.previous_goal = {j_: targets[j_] for j_ in tracked}
+        servos.hold(np.array(command), t)
+
+    def _place_foot(self, t, p, a, ja, m, pitch, yaw, heading, ch, sh, vx, vy, vz, vxd, vyd):
+        """Flight: hip, knee and ankle targets that put the heel at the touchdown point of
+        eqs. 1-2 (plus the ground-speed-matching swing), by leg inverse kinematics."""
+        targets = self.targets
+        leg = self.legs[a]
+        hip = self.ctx.data.xpos[self.hip_body[a]].tolist()
+        ts = self.stance_time
+        lf = leg.foot_length
+        x_hh = 0.5 * (ts * vx - ch * lf) + p["speed_gain"] * (vx - vxd) - PLACE_BACK * ch          # eq. 1
+        y_hh = 0.5 * (ts * vy - sh * lf) + p["speed_gain"] * (vy - vyd) - PLACE_BACK * sh          # eq. 2
+        inward = FOOT_INWARD if a == 0 else -FOOT_INWARD                          # right foot lands left of its hip
+        x_hh -= sh * inward
+        y_hh += ch * inward
+        reach = math.hypot(x_hh, y_hh)
+        limit = PLACEMENT_LIMIT * p["touchdown_leg"]
+        if reach > limit:
+            x_hh *= limit / reach
+            y_hh *= limit / reach
+        z_hh = math.sqrt(max(p["touchdown_leg"] ** 2 - x_hh * x_hh - y_hh * y_hh, 0.01))
+        # ground speed matching: swung further forward during flight, brought back over the last
+        # GSM_RETRACT s before the predicted touchdown (ballistic hip height reaching z_hh)
+        drop = hip[2] - z_hh
+        to_touchdown = (vz + math.sqrt(vz * vz + 2.0 * GRAVITY * max(drop, 0.0))) / GRAVITY
+        gsm = p["ground_speed_matching"] * hermite_scalar(to_touchdown / GSM_RETRACT)
+        x_hh += gsm * ch
+        y_hh += gsm * sh
+        fx, fz = leg.ankle_from_heel(TOUCHDOWN_TOE_UP)
+        ax_w, ay_w, az_w = x_hh + fx * ch, y_hh + fx * sh, -z_hh + fz
+        px = m[0] * ax_w + m[3] * ay_w + m[6] * az_w              # world -> pelvis frame
+        py = m[1] * ax_w + m[4] * ay_w + m[7] * az_w
+        pz = m[2] * ax_w + m[5] * ay_w + m[8] * az_w
+        hy_goal, hx_goal, knee_goal = leg.hip_knee_for(px, py, pz)
+        hz_goal = max(-HIP_YAW_LIMIT, min(HIP_YAW_LIMIT, _wrap(heading - yaw)))
+        # the foot pitched toe-up so that the heel lands first (foot pitch = pelvis pitch + hip + knee + ankle)
+        ankle_goal = -TOUCHDOWN_TOE_UP - pitch - hy_goal - knee_goal
+        goals = (hy_goal, hx_goal, hz_goal, knee_goal, ankle_goal)
+        blend = hermite_scalar((t - self.t_liftoff) / SWAP_BLEND) if self.blend_from else 1.0
+        for k, key in enumerate(BLENDED):
+            start = self.blend_from[k] if self.blend_from else goals[k]
+            targets[ja[key]] = start + (goals[k] - start) * blend
+        targets[ja["ax"]] = 0.0
+        targets[ja["mt"]] = 0.0
+        return targets[ja["hy"]], targets[ja["hx"]]
+
+    def _idle_leg(self, t, p, state, ji, i, hy_goal, hx_goal, pitch):
+        """Eqs. 3-4: the idle hip mirrors the active hip about their lift-off angles, shortened
+        (knee folded, ankle flexed) so the toe clears the ground; it is kept on schedule to be
+        forward by the end of stance and unfolds its knee while the active leg thrusts."""
+        targets = self.targets
+        hy_idle = self.idle_lo[0] - (hy_goal - self.active_lo[0])
+        hx_idle = self.idle_lo[1] - (hx_goal - self.active_lo[1])
+        if state not in (FLIGHT, START):
+            s_ = hermite_scalar((t - self.t_touchdown) / max(self.stance_time, 0.05))
+            schedule = self.idle_lo[0] + (IDLE_FORWARD_THIGH - pitch - self.idle_lo[0]) * s_
+            hy_idle = min(hy_idle, schedule)
+        side = 1.0 if i == 0 else -1.0                  # +x adducts the right hip, abducts the left
+        hx_idle = side * max(-IDLE_ABDUCTION, min(IDLE_ADDUCTION, side * hx_idle))
+        targets[ji["hy"]] = max(-1.3, min(0.5, hy_idle))
+        targets[ji["hx"]] = hx_idle
+        targets[ji["hz"]] = 0.0
+        if state in (TOE, UNLOADING) and IDLE_UNFOLD > 0:
+            s_ = hermite_scalar((t - self.t_thrust) / max(IDLE_UNFOLD * self.stance_time, 0.02))
+            targets[ji["knee"]] = p["idle_knee"] + (IDLE_UNFOLD_KNEE - p["idle_knee"]) * s_
+        else:
+            targets[ji["knee"]] = p["idle_knee"]
+        targets[ji["ay"]] = IDLE_ANKLE
+        targets[ji["ax"]] = 0.0
+        targets[ji["mt"]] = 0.0
+
+
+def _solve3(a1, a2, a3, bx, by, bz):
+    """Coefficients (c1, c2, c3) with c1 a1 + c2 a2 + c3 a3 = b for 3-vectors (Cramer's rule);
+    the hip's three axes never line up within its joint range."""
+    det = (a1[0] * (a2[1] * a3[2] - a2[2] * a3[1]) - a2[0] * (a1[1] * a3[2] - a1[2] * a3[1])
+           + a3[0] * (a1[1] * a2[2] - a1[2] * a2[1]))
+    if abs(det) < 1e-6:
+        return 0.0, 0.0, 0.0
+    c1 = (bx * (a2[1] * a3[2] - a2[2] * a3[1]) - a2[0] * (by * a3[2] - bz * a3[1]) + a3[0] * (by * a2[2] - bz * a2[1])) / det
+    c2 = (a1[0] * (by * a3[2] - bz * a3[1]) - bx * (a1[1] * a3[2] - a1[2] * a3[1]) + a3[0] * (a1[1] * bz - a1[2] * by)) / det
+    c3 = (a1[0] * (a2[1] * bz - a2[2] * by) - a2[0] * (a1[1] * bz - a1[2] * by) + bx * (a1[1] * a2[2] - a1[2] * a2[1])) / det
+    return c1, c2, c3
 
 
 def _wrap(angle: float) -> float:
     return (angle + math.pi) % (2.0 * math.pi) - math.pi
 
 
-STANCE_KNEE_GAIN = 1.0   # share of the knee's default kp in stance (the knee is a spring)
-ATT_GAIN = 1.0                # stance hip: joint-target radians per radian of attitude error
-ATT_DAMP = 1.0
+BLENDED = ("hy", "hx", "hz", "knee", "ay")   # targets blended from idle to active after lift-off
+# gains as shares of the character's default (kp, kv)
+FLIGHT_GAINS = {"hy": (1.0, 1.0), "hx": (1.0, 1.0), "hz": (1.0, 1.0), "knee": (1.0, 1.0), "ay": (1.0, 1.0),
+                "ax": (1.0, 1.0), "mt": (0.5, 0.5)}
+IDLE_GAINS = {"hy": (1.0, 1.0), "hx": (1.0, 1.0), "hz": (1.0, 1.0), "knee": (0.6, 0.6), "ay": (0.5, 0.5),
+              "ax": (0.5, 0.5), "mt": (0.3, 0.3)}
+STANCE_HIP_SHARE = 0.1        # stance hip servos are torque-commanded: low kp so 5 ms holds drift little
+STANCE_HIP_GAINS = {"hy": (STANCE_HIP_SHARE, STANCE_HIP_SHARE), "hx": (STANCE_HIP_SHARE, STANCE_HIP_SHARE),
+                    "hz": (STANCE_HIP_SHARE, STANCE_HIP_SHARE)}
+STANCE_KNEE_GAIN = 0.68        # share of the knee's default kp in stance (the knee is a spring)
+HEEL_ANKLE_GAIN = 0.191         # heel contact: a soft ankle lets the foot come down flat
+PITCH_KP, PITCH_KD = 2232.0, 223.0    # N m/rad, N m s/rad: body pitch servo of the stance hip
+ROLL_KP, ROLL_KD = 2079.0, 208.0
+YAW_KP, YAW_KD = 558.0, 70.0
+ATTITUDE_ONSET = 0.02         # s: the attitude torque fades in after touchdown, out in unloading
+UNLOADING_AFTER = 0.5         # share of the expected stance after thrust when the leg unloads
 THRUST_RAMP = 0.05            # s: the thrust targets move in over this time
-TOUCHDOWN_TOE_UP = 0.20       # rad: foot pitched toe-up at touchdown, heel first
-FOOT_INWARD = 0.05            # m: the foot lands this far inside the hip, toward the centre line
+TOUCHDOWN_TOE_UP = 0.117       # rad: foot pitched toe-up at touchdown, heel first
+FOOT_INWARD = 0.00894            # m: the foot lands this far inside the hip, toward the centre line
+PLACE_BACK = 0.198
+PLACEMENT_LIMIT = 0.6         # the hip-to-heel distance on the ground is at most this share of the leg
+HIP_YAW_LIMIT = 0.4           # rad
 ACCEL_MARGIN = 1.0            # m/s: the speed command is at most this above the current speed
-START_ANKLE_LEAN = 0.25       # rad of ankle dorsiflexion target while leaning into the start
-IDLE_UNFOLD = 0.6            # share of the expected stance over which the idle knee unfolds after thrust
-IDLE_UNFOLD_KNEE = 0.6       # rad: idle knee flexion at the end of the unfolding
+TURN_RATE_PER_SPEED = 0.4     # rad/s of heading change per m/s of speed
+ROLL_FILTER = 0.05
+START_ANKLE_LEAN = 0.20       # rad of ankle dorsiflexion while leaning into the start
+START_KNEE = 0.3
+START_HIP = 0.2
+GSM_RETRACT = 0.08            # s before the predicted touchdown over which the swung-forward foot is brought back
+IDLE_FORWARD_THIGH = -0.443     # rad: forward angle (from vertical) the idle thigh reaches by the end of stance
+IDLE_UNFOLD = 0.6             # share of the expected stance over which the idle knee unfolds after thrust
+IDLE_UNFOLD_KNEE = 1.16        # rad: idle knee flexion at the end of the unfolding
+IDLE_ANKLE = -0.2
+IDLE_ABDUCTION = 0.15
+IDLE_ADDUCTION = 0.05
+FF_MAX = 12.0                 # rad/s: cap on a target's rate used as feed-forward
 ARM_OFFSET = 0.1              # gamma_0 of eq. 5 (rad, forward)
 ELBOW_BASE = 1.3              # rad: running elbow flexion
 ELBOW_SWING = 0.3             # extra elbow flexion per radian of forward arm swing
