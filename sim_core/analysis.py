@@ -11,6 +11,7 @@ from sim_core.trajectory import Trajectory
 FOOT_BODIES = ("FOOTR", "FOOTL", "TOER", "TOEL")
 STILL_SPEED = 0.1            # m/s
 STEP_DISTANCE = 0.03         # m: a foot that slides or steps further than this has stepped
+LIFT_HEIGHT = 0.02           # m: a foot whose every contact site is this high is off the ground
 CONTACT_HEIGHT = 0.005       # m: a contact site this close to the ground supports the body
 
 
@@ -69,7 +70,10 @@ def standard_metrics(traj: Trajectory, allowed_contacts=FOOT_BODIES) -> dict:
     fell = len(fell_frames) > 0
     feet = a["support_points"]
     slide = np.linalg.norm(feet[:, :, :2] - feet[0:1, :, :2], axis=2).max()
-    lifted = (feet[:, :, 2] > 0.02).any()
+    # a foot has stepped when all of it leaves the ground (a heel rising while the toes stay down
+    # is part of balancing, not a step)
+    sides = np.array(traj.meta.get("support_site_side", ["R"] * feet.shape[1]))
+    lifted = any(bool((feet[:, sides == side, 2] > LIFT_HEIGHT).all(axis=1).any()) for side in set(sides))
     margins = com_support_margins(traj, gravity_up(traj))
     final_speed = float(np.linalg.norm(a["com_vel"][-1]))
     weight = 9.80665 * float(traj.meta.get("total_mass") or 1.0)

@@ -205,6 +205,7 @@ def run(request: RunRequest, progress: Callable[[float], None] | None = None,
         "control_rate": cls.control_rate, "phase_events": behaviour.phase_events,
         "edit_fields": list(EDITABLE_FIELDS), "state_spec": int(STATE_SPEC),
         "dof_names": [model.actuator(i).name for i in range(model.nu)],
+        "support_site_side": [model.body(model.site_bodyid[i]).name[-1] for i in support_sites],
     }
     trajectory = Trajectory(arrays, meta)
     outcome, metrics = cls.assess(trajectory)

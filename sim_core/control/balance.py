@@ -26,7 +26,7 @@ from sim_core.schema import Parameter, Schema
 SPINE_Y = ("spine_l3_y", "spine_l1_y", "spine_t7_y", "spine_t4_y")
 SPINE_SHARE = 0.25           # share of the torso pitch taken by the spine (the rest by the hips)
 STANDING_KNEE_FLEX = 0.10    # rad: knees are never locked straight (law of cosines is singular there)
-HIP_STRATEGY_MAX = 0.4     # rad: largest hip offset of the fast hip strategy
+HIP_STRATEGY_MAX = 0.8     # rad: largest hip offset of the fast hip strategy
 LEAN_RATE = 0.5            # rad/s of trunk lean per radian of COM error beyond the ankles' reach
 LEAN_LEAK = 0.2            # 1/s: the lean returns to zero when the error is gone
 LEAN_MAX = 0.8             # rad
@@ -35,7 +35,7 @@ CROUCH_TABLE_ROWS = 6      # balanced crouch poses solved between standing and t
 HIP_SHARE = 0.5
 ANKLE_AUTHORITY = 1.0      # share of the torque the foot can take (COP at its edge) used by the ankles
 TOE_SHARE = 1.0            # where between ball (0) and toe tip (1) the front edge of the foot is taken
-EXCESS_TO_HIP = 2.0        # hip flexion per radian of COM demand the ankles cannot deliver
+EXCESS_TO_HIP = 4.0        # hip flexion per radian of COM demand the ankles cannot deliver
 
 
 class LegGeometry:
