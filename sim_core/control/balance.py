@@ -310,8 +310,9 @@ class Balance(Behaviour):
             j = idx[k]
             f = d.xmat[self.feet[k]].tolist()          # row-major 3x3: columns are the foot axes
             wx, wy, wz = d.cvel[self.feet[k], :3].tolist()
-            foot_pitch = math.atan2(-(f[0] * ux + f[3] * uy + f[6] * uz), f[2] * ux + f[5] * uy + f[8] * uz)
-            foot_roll = math.atan2(f[1] * ux + f[4] * uy + f[7] * uz, f[2] * ux + f[5] * uy + f[8] * uz)
+            # flat on the ground: pitch and roll against the ground's normal (world Z), not gravity
+            foot_pitch = math.atan2(-f[6], f[8])
+            foot_roll = math.atan2(f[7], f[8])
             pitch_rate = wx * f[1] + wy * f[4] + wz * f[7]
             roll_rate = wx * f[0] + wy * f[3] + wz * f[6]
             ay, ax, hy, hx = j["ankle_y"], j["ankle_x"], j["hip_y"], j["hip_x"]
