@@ -34,6 +34,10 @@ class Cancelled(SimAthleticsError):
     """The user cancelled a run; nothing was written."""
 
 
+class UnstableSimulation(SimAthleticsError):
+    """MuJoCo reported diverging accelerations: the run is not physics any more."""
+
+
 @dataclass(frozen=True)
 class StartState:
     """A named test input for the initial state (logged in the trajectory's meta and in its
@@ -182,6 +186,10 @@ def run(request: RunRequest, progress: Callable[[float], None] | None = None,
         servos.write(t)
         control[tick] = data.ctrl
         mujoco.mj_step(model, data, nstep=steps_per_tick)
+        if data.warning[mujoco.mjtWarning.mjWARN_BADQACC].number:
+            raise UnstableSimulation(
+                f"the simulation became numerically unstable at t={t:.3f} s (accelerations blew "
+                f"up); nothing was written - lower the gains or the strength, or shorten the step")
         if progress and tick % 200 == 0:
             progress(tick / n_ticks)
         if cancelled and tick % 50 == 0 and cancelled():

@@ -197,3 +197,17 @@ def test_servo_bank_hermite_move():
     values = [bank.smoothed_target(t)[knee][0] for t in np.linspace(0, 0.6, 61)]
     assert values[0] == pytest.approx(0.0) and values[50] == pytest.approx(1.0) and values[-1] == 1.0
     assert values[25] == pytest.approx(0.5)
+
+
+def test_a_diverging_simulation_is_reported_not_reset():
+    """MuJoCo silently resets a diverging state (a teleport); the run must stop with an error."""
+    import sim_core.control.leap as leap
+    from sim_core.simulate import UnstableSimulation
+    original = leap.THRUST_GAIN
+    leap.THRUST_GAIN = 6.0                 # far too stiff without torque limits
+    try:
+        with pytest.raises(UnstableSimulation, match="numerically unstable at t=1.8"):
+            run(RunRequest("leap", "man", params=dict(low_level=1, crouch_height=0.58), duration=2.5,
+                           strength="unlimited"))
+    finally:
+        leap.THRUST_GAIN = original
