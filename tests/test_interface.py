@@ -207,7 +207,8 @@ def test_a_diverging_simulation_is_reported_not_reset():
     leap.THRUST_GAIN = 6.0                 # far too stiff without torque limits
     try:
         with pytest.raises(UnstableSimulation, match="numerically unstable at t=1.8"):
-            run(RunRequest("leap", "man", params=dict(low_level=1, crouch_height=0.58), duration=2.5,
+            run(RunRequest("leap", "man", params=dict(low_level=1, crouch_height=0.58, crouch_pitch=0.0),
+                           duration=2.5,
                            strength="unlimited"))
     finally:
         leap.THRUST_GAIN = original
