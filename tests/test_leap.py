@@ -64,7 +64,7 @@ def test_leap_replays_bit_for_bit():
     assert largest_difference(traj, replay(traj)) == 0.0
 
 
-@pytest.mark.parametrize("name, height", [("man", 0.2), ("man", 0.4), ("woman", 0.16), ("woman", 0.25)])
+@pytest.mark.parametrize("name, height", [("man", 0.2), ("man", 0.35), ("woman", 0.16), ("woman", 0.25)])
 def test_commanded_vertical_leap_is_reached_and_lands_balanced(name, height):
     """TARGETS.md: COM rise within +-10 % (+-3 cm below 0.3 m), ending balanced."""
     traj = run(RunRequest("leap", name, params=dict(height=height), duration=5.0))
@@ -76,7 +76,18 @@ def test_commanded_vertical_leap_is_reached_and_lands_balanced(name, height):
     assert m["peak_thrust_grf_body_weights"] <= 6.0
 
 
+@pytest.mark.parametrize("name, distance", [("man", 0.5), ("man", 1.0), ("woman", 0.9)])
+def test_broad_jump_travels_the_commanded_distance_and_lands_balanced(name, distance):
+    """TARGETS.md: COM travel within +-10 %, ending balanced (at distances the script calibrated)."""
+    traj = run(RunRequest("leap", name, params=dict(distance=distance), duration=5.0))
+    m = traj.meta["metrics"]
+    assert traj.meta["outcome"] == "success", m
+    assert abs(m["com_travel"] - distance) <= 0.1 * distance
+
+
 def test_infeasible_and_bad_leaps_are_refused_before_simulating():
+    with pytest.raises(ParameterError, match="distance=1.8 m has no calibrated broad jump within 10 %"):
+        run(RunRequest("leap", "man", params=dict(distance=1.8)))
     with pytest.raises(ParameterError, match="height=1.1 m is infeasible for man"):
         run(RunRequest("leap", "man", params=dict(height=1.1)))
     with pytest.raises(ParameterError, match="height=-0.2 m is out of range"):

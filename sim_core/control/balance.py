@@ -215,6 +215,18 @@ class Balance(Behaviour):
             return goal
         return goal + (stand - goal) * hermite_scalar((t - t3) / p["move_time"])
 
+    def com_ahead_of_support(self) -> float:
+        """How far the COM (projected along gravity) is ahead of the centre of the feet, in the
+        pelvis heading frame (m)."""
+        d = self.ctx.data
+        m = d.xmat[self.pelvis]
+        yaw = math.atan2(m[3], m[0])
+        c, s = math.cos(yaw), math.sin(yaw)
+        pts = self.support.supporting_points(d)
+        px = c * pts[:, 0] + s * pts[:, 1]
+        com = d.subtree_com[self.pelvis]
+        return float(c * com[0] + s * com[1] - 0.5 * (px.min() + px.max()))
+
     def posture_reached(self, t: float) -> bool:
         return t - self.t0 >= self.params["move_start"] + self.params["move_time"]
 

@@ -36,6 +36,7 @@ TOUCHDOWN_HEIGHT = 0.004        # m: a foot site this low = contact
 VERTICAL_TIMING = (0.10, 0.15, 0.22)     # s to full extension: hip, knee, ankle [W98 §4.1]
 BROAD_TIMING = (0.15, 0.20, 0.45)        # [W98 §4.2]
 ANKLE_GAIN_VERTICAL, ANKLE_GAIN_BROAD = 4.45, 3.6
+BROAD_TRIGGER = 0.8             # share of the crouch's COM offset that triggers a broad jump's thrust
 THRUST_GAIN = 3.0               # hip and knee servos stiffened for the thrust [W98 §4.3]
 LIFTOFF_ANKLE = 0.75            # rad of plantarflexion at the end of the thrust
 SOFT_KNEE_KP, SOFT_KNEE_KV = 0.3, 2.5    # knee gain factors while absorbing (the thesis: kp 0; with human
@@ -369,14 +370,14 @@ class Leap(Sequence):
         Parameter("height", "m", 0.3, 0.05, 1.2, "commanded rise of the COM above standing (vertical leap)"),
         Parameter("distance", "m", 0.0, 0.0, 2.5,
                   "commanded horizontal COM travel (broad jump); 0 = vertical leap"),
-        Parameter("liftoff_hip_angle", "rad", 0.0, -1.0, 0.5,
+        Parameter("liftoff_hip_angle", "rad", 0.0, -1.0, 1.0,
                   "hip flexion (-) or extension (+) at lift-off beyond the calibrated neutral (0 = no "
                   "somersault): sends the ground force past the COM and sets the somersault rate"),
         Parameter("low_level", "bool", 0.0, 0.0, 1.0,
                   "1 = use the crouch/pitch/offset/arm values below instead of the calibrated mapping"),
         Parameter("crouch_height", "m", 0.65, 0.4, 0.95, "pelvis height of the crouch (low_level only)"),
         Parameter("crouch_pitch", "rad", 1.0, 0.0, 1.8, "torso pitch in the crouch (low_level only)"),
-        Parameter("com_offset", "m", 0.0, -0.05, 0.12, "COM forward of the feet in the crouch (low_level only)"),
+        Parameter("com_offset", "m", 0.0, -0.05, 0.25, "COM forward of the feet in the crouch (low_level only)"),
         Parameter("arm_swing", "rad", 1.0, 0.0, 3.2, "forward arm swing during the thrust (low_level only)"),
         Parameter("crouch_time", "s", 0.8, 0.3, 3.0, "time to sink into the crouch"),
         Parameter("foot_delta", "m", 0.0, -0.3, 0.3, "landing: foot servo delta (see the land behaviour)"),
@@ -392,11 +393,11 @@ class Leap(Sequence):
         if p["distance"] > 0:
             b = mapping["broad"]
             x = p["distance"]
-            return {"crouch_height": float(np.interp(x, b["com_travel"], b["crouch_height"])),
-                    "crouch_pitch": float(np.interp(x, b["com_travel"], b.get("torso_pitch", [0.6] * len(b["com_travel"])))),
-                    "com_offset": float(np.interp(x, b["com_travel"], b["com_offset"])),
-                    "arm_swing": float(np.interp(x, b["com_travel"], b["arm_swing"])),
-                    "liftoff_hip": p["liftoff_hip_angle"]}
+            # the nearest calibrated jump (the broad jump's distance is not smooth in its settings)
+            k = int(np.argmin(np.abs(np.asarray(b["com_travel"]) - x)))
+            return {"crouch_height": b["crouch_height"][k], "crouch_pitch": b["torso_pitch"][k],
+                    "com_offset": b["com_offset"][k], "arm_swing": b["arm_swing"][k],
+                    "liftoff_hip": b["liftoff_hip"][k] + p["liftoff_hip_angle"]}
         v = mapping["vertical"]
         h = p["height"]
         neutral = v.get("liftoff_hip", [0.0] * len(v["com_rise"]))
@@ -415,11 +416,13 @@ class Leap(Sequence):
             if not mapping.get("broad_calibrated", True):
                 raise ParameterError("the broad jump is not calibrated yet (distance must be 0); "
                                      "low_level=1 runs it with explicit settings")
-            top = max(mapping["broad"]["com_travel"])
-            if p["distance"] > top * 1.05:
-                raise ParameterError(f"parameter distance={p['distance']:g} m is beyond what "
-                                     f"{self.ctx.character.name} can jump with this strength; allowed range is "
-                                     f"[0.3, {top:.2f}] m")
+            travels = np.asarray(mapping["broad"]["com_travel"])
+            nearest = travels[int(np.argmin(np.abs(travels - p["distance"])))]
+            if abs(nearest - p["distance"]) > 0.1 * p["distance"]:
+                raise ParameterError(
+                    f"parameter distance={p['distance']:g} m has no calibrated broad jump within 10 % for "
+                    f"{self.ctx.character.name} (nearest {nearest:.2f} m; calibrated "
+                    f"{travels.min():.2f} .. {travels.max():.2f} m; scripts/calibrate_leap.py)")
         else:
             rises = mapping["vertical"]["com_rise"]
             if not rises:
@@ -450,6 +453,10 @@ class Leap(Sequence):
                                                 move_time=p["crouch_time"], hold_time=0.0, return_to_stand=0)), ctx)
 
         def crouched(b, t):
+            if broad:
+                # broad jump: thrust once the COM, leaning forward, has left the middle of the
+                # feet by the requested offset (Wooten §4.2: it would fall out of the support next)
+                return b.posture_reached(t) or b.com_ahead_of_support() > BROAD_TRIGGER * cfg["com_offset"]
             return b.posture_reached(t - 0.15)
 
         def thrust(t):
