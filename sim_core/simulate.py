@@ -12,6 +12,7 @@ Per control tick, in this order (replay follows the same order):
 from __future__ import annotations
 
 import math
+import time
 from dataclasses import dataclass, field
 from typing import Callable
 
@@ -172,6 +173,7 @@ def run(request: RunRequest, progress: Callable[[float], None] | None = None,
     control = np.zeros((n_ticks, model.nu))
     pushes = PushSchedule(request.pushes, model, data, log)
 
+    loop_start = time.perf_counter()
     for tick in range(n_ticks):
         log.tick = tick
         t = data.time
@@ -197,6 +199,7 @@ def run(request: RunRequest, progress: Callable[[float], None] | None = None,
     log.tick = n_ticks
     refresh_kinematics(model, data)
     recorder.record(data)
+    loop_seconds = time.perf_counter() - loop_start
 
     arrays = recorder.arrays()
     arrays.update(log.arrays())
@@ -213,6 +216,7 @@ def run(request: RunRequest, progress: Callable[[float], None] | None = None,
         "control_rate": cls.control_rate, "phase_events": behaviour.phase_events,
         "edit_fields": list(EDITABLE_FIELDS), "state_spec": int(STATE_SPEC),
         "dof_names": [model.actuator(i).name for i in range(model.nu)],
+        "wall_seconds_in_loop": loop_seconds,
         "support_site_side": [model.body(model.site_bodyid[i]).name[-1] for i in support_sites],
     }
     trajectory = Trajectory(arrays, meta)

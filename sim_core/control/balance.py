@@ -203,7 +203,7 @@ class Balance(Behaviour):
         timeline, which starts when the behaviour starts."""
         p = self.params
         t = t - self.t0
-        initial, goal, stand = self.initial_posture(), self.target_posture(), self.standing_posture()
+        initial, goal, stand = self._postures
         t1 = p["move_start"]
         t2 = t1 + p["move_time"]
         t3 = t2 + p["hold_time"]
@@ -236,6 +236,7 @@ class Balance(Behaviour):
         low = min(goal, self.initial_posture()[0])
         heights = np.linspace(low, self.stand_height, CROUCH_TABLE_ROWS) if low < self.stand_height else [goal]
         self.crouch = CrouchTable(self.ctx.model, self.ctx.character, heights, self.stand_height)
+        self._postures = (self.initial_posture(), self.target_posture(), self.standing_posture())
         self.ctx.servos.hold(self.joint_targets(self.initial_posture()), t)
         self.event(t, "stand" if self.from_height is None else "balance")
         p = self.params

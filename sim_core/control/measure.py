@@ -37,6 +37,7 @@ class SupportGeometry:
             groups.append([i for i in range(model.nsite) if model.site_bodyid[i] in ids])
         self.site_ids = np.array([i for g in groups for i in g])
         self.foot_of_site = np.array([k for k, g in enumerate(groups) for _ in g])
+        self.right, self.left = self.foot_of_site == 0, self.foot_of_site == 1
         self.contact_height = 0.005
 
     def points(self, data: mujoco.MjData) -> np.ndarray:
@@ -45,9 +46,9 @@ class SupportGeometry:
     def supporting_points(self, data: mujoco.MjData) -> np.ndarray:
         """All sites of every foot that touches the ground (all sites if none does)."""
         points = data.site_xpos[self.site_ids]
-        touching = points[:, 2] < self.contact_height
-        grounded = np.zeros(2, dtype=bool)
-        grounded[self.foot_of_site[touching]] = True
-        if not grounded.any():
+        low = points[:, 2] < self.contact_height
+        right = bool(low[self.right].any())
+        left = bool(low[self.left].any())
+        if right == left:                       # both feet down (or both up: use them all)
             return points
-        return points[grounded[self.foot_of_site]]
+        return points[self.right] if right else points[self.left]
