@@ -173,9 +173,9 @@ def _add_shape(body, shape: dict, origin: np.ndarray, name: str) -> None:
 
 
 def _exclude_touching_pairs(spec: mujoco.MjSpec, character: CharacterSpec) -> None:
-    """Bodies whose shapes already touch in the standing pose (e.g. thigh and thigh, upper arm
-    and chest) would push each other apart from the first step; exclude those pairs, keep all
-    others colliding so limbs cannot pass through each other."""
+    """Bodies whose shapes already touch in the standing pose (e.g. an upper arm against the
+    chest) would push each other apart from the first step; exclude those pairs, keep all others
+    colliding so limbs cannot pass through each other. (Parent and child never collide in MuJoCo.)"""
     model = spec.compile()
     data = mujoco.MjData(model)
     set_standing_pose(model, data, character)
@@ -187,11 +187,6 @@ def _exclude_touching_pairs(spec: mujoco.MjSpec, character: CharacterSpec) -> No
             continue
         b1, b2 = model.geom_bodyid[c.geom1], model.geom_bodyid[c.geom2]
         pairs.add(tuple(sorted((model.body(b1).name, model.body(b2).name))))
-    # arms swing past the torso and thighs past each other in every skill: exclude them too
-    for side in "RL":
-        for torso in ("PELVIS", "CHEST3", "CHEST2", "CHEST1", "STERNUM", "CHEST" + side):
-            pairs.add(tuple(sorted(("UARM" + side, torso))))
-    pairs.add(("ULEGL", "ULEGR"))
     for a, b in sorted(pairs):
         spec.add_exclude(bodyname1=a, bodyname2=b)
 
