@@ -1,0 +1,92 @@
+"""Filmstrip of a baked skill, like the thesis's figures: simulate, bake onto the rigged skin,
+render frames at fixed intervals headless (Cycles on the CPU) and lay them side by side.
+
+    python scripts/filmstrip.py leap --set height=0.35 --frames 8 --out docs/leap_filmstrip.png
+
+Needs the bpy module (pip install -e ".[test]")."""
+from __future__ import annotations
+
+import argparse
+import math
+import sys
+import tempfile
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(ROOT))
+
+
+def main(argv=None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("behaviour")
+    parser.add_argument("--character", default="man")
+    parser.add_argument("--set", action="append", default=[], metavar="NAME=VALUE")
+    parser.add_argument("--duration", type=float, default=None)
+    parser.add_argument("--frames", type=int, default=8, help="pictures in the strip")
+    parser.add_argument("--start", type=float, default=0.0, help="first picture at this time (s)")
+    parser.add_argument("--end", type=float, default=None, help="last picture at this time (s)")
+    parser.add_argument("--size", type=int, default=260, help="height of one picture in pixels")
+    parser.add_argument("--out", required=True)
+    args = parser.parse_args(argv)
+
+    import bpy
+    from PIL import Image
+
+    from blender_addon import api
+
+    bpy.ops.wm.read_factory_settings(use_empty=True)
+    scene = bpy.context.scene
+    scene.render.fps = 30
+    params = dict(item.split("=", 1) for item in args.set)
+    rig = api.add_character(bpy.context, args.character)
+    action, trajectory = api.simulate_and_bake(bpy.context, behaviour=args.behaviour, params=params,
+                                               duration=args.duration)
+    last = trajectory.arrays["time"][-1]
+    end = last if args.end is None else min(args.end, last)
+    times = [args.start + (end - args.start) * k / max(args.frames - 1, 1) for k in range(args.frames)]
+
+    # ground, light, a side camera looking at the character's path (the sim's X is Blender's -Y)
+    bpy.ops.mesh.primitive_plane_add(size=40)
+    sun = bpy.data.objects.new("sun", bpy.data.lights.new("sun", type="SUN"))
+    sun.data.energy = 3.0
+    sun.rotation_euler = (math.radians(50), 0, math.radians(30))
+    scene.collection.objects.link(sun)
+    travel = float(trajectory.arrays["com"][-1, 0] - trajectory.arrays["com"][0, 0])
+    camera = bpy.data.objects.new("camera", bpy.data.cameras.new("camera"))
+    camera.location = (4.2, -travel / 2, 1.0)
+    camera.rotation_euler = (math.radians(90), 0, math.radians(90))
+    camera.data.lens = 50
+    scene.collection.objects.link(camera)
+    scene.camera = camera
+    scene.render.engine = "CYCLES"
+    scene.cycles.device = "CPU"
+    scene.cycles.samples = 16
+    scene.render.resolution_x = int(args.size * 0.6)
+    scene.render.resolution_y = args.size
+    scene.world = bpy.data.worlds.new("world")
+    scene.world.use_nodes = True
+    scene.world.node_tree.nodes["Background"].inputs[0].default_value = (0.75, 0.78, 0.85, 1.0)
+
+    pictures = []
+    with tempfile.TemporaryDirectory() as tmp:
+        for k, t in enumerate(times):
+            scene.frame_set(scene.frame_start + int(round(t * scene.render.fps)))
+            scene.render.filepath = str(Path(tmp) / f"f{k:02d}.png")
+            bpy.ops.render.render(write_still=True)
+            pictures.append(Image.open(scene.render.filepath).convert("RGB"))
+        width = sum(p.width for p in pictures)
+        strip = Image.new("RGB", (width, pictures[0].height), "white")
+        x = 0
+        for picture in pictures:
+            strip.paste(picture, (x, 0))
+            x += picture.width
+        Path(args.out).parent.mkdir(parents=True, exist_ok=True)
+        strip.save(args.out)
+    print(f"wrote {args.out}: {args.frames} frames from {args.start:.2f} to {end:.2f} s, outcome "
+          f"{trajectory.meta['outcome']}")
+    del rig, action
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
