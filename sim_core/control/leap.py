@@ -37,6 +37,11 @@ VERTICAL_TIMING = (0.10, 0.15, 0.22)     # s to full extension: hip, knee, ankle
 BROAD_TIMING = (0.15, 0.20, 0.45)        # [W98 §4.2]
 ANKLE_GAIN_VERTICAL, ANKLE_GAIN_BROAD = 4.45, 3.6
 BROAD_TRIGGER = 0.8             # share of the crouch's COM offset that triggers a broad jump's thrust
+THRUST_DAMPING = 1.0            # share of the stiffened servos' damping kept in the thrust. Damping
+                                # brakes fast extension: at 0.3 the same crouch rises 0.36 -> 0.66 m
+                                # (man, human torque limits) but leaves spinning and lands worse;
+                                # kept at 1.0 until the landing handles those leaps
+BROAD_THRUST_DAMPING = 1.0      # the broad jump's (its calibration is for it)
 THRUST_GAIN = 3.0               # hip and knee servos stiffened for the thrust [W98 §4.3]
 LIFTOFF_ANKLE = 0.75            # rad of plantarflexion at the end of the thrust
 SOFT_KNEE_KP, SOFT_KNEE_KV = 0.3, 2.5    # knee gain factors while absorbing (the thesis: kp 0; with human
@@ -77,13 +82,15 @@ class LeapThrust(Behaviour):
     to send the force past the COM and set the somersault rate (§4.3)."""
 
     def __init__(self, params, ctx: ControlContext, crouch_height: float, timing=VERTICAL_TIMING,
-                 ankle_gain=ANKLE_GAIN_VERTICAL, liftoff_hip=0.0, arm_swing=2.5, stand_height=None):
+                 ankle_gain=ANKLE_GAIN_VERTICAL, liftoff_hip=0.0, arm_swing=2.5, stand_height=None,
+                 damping=THRUST_DAMPING):
         super().__init__(params, ctx)
         self.timing, self.ankle_gain = timing, ankle_gain
         self.liftoff_hip, self.arm_swing = liftoff_hip, arm_swing
         self.airborne = Airborne(ctx.model)
         self.crouch_height = crouch_height
         self.stand_height = stand_height
+        self.damping = damping
 
     def start(self, t: float) -> None:
         s = self.ctx.servos
@@ -100,9 +107,10 @@ class LeapThrust(Behaviour):
         spine = [n for n in s.names if n.startswith("spine") and n.endswith("_y")]
         s.move_to(s.indices(spine), 0.0, t_hip, t)
         ankles = self.idx["ankle"]
-        s.set_gains(ankles, s.default_kp[ankles] * self.ankle_gain, s.default_kv[ankles] * self.ankle_gain)
+        s.set_gains(ankles, s.default_kp[ankles] * self.ankle_gain,
+                    s.default_kv[ankles] * self.ankle_gain * self.damping)
         legs = np.concatenate([self.idx["hip"], self.idx["knee"]])
-        s.set_gains(legs, s.default_kp[legs] * THRUST_GAIN, s.default_kv[legs] * THRUST_GAIN)
+        s.set_gains(legs, s.default_kp[legs] * THRUST_GAIN, s.default_kv[legs] * THRUST_GAIN * self.damping)
         self.event(t, "thrust")
 
     def _height(self, t: float, duration: float) -> float:
@@ -462,7 +470,8 @@ class Leap(Sequence):
         def thrust(t):
             return LeapThrust({}, ctx, cfg["crouch_height"], BROAD_TIMING if broad else VERTICAL_TIMING,
                               ANKLE_GAIN_BROAD if broad else ANKLE_GAIN_VERTICAL, cfg["liftoff_hip"],
-                              cfg["arm_swing"], stand_height=self._stand_height())
+                              cfg["arm_swing"], stand_height=self._stand_height(),
+                              damping=BROAD_THRUST_DAMPING if broad else THRUST_DAMPING)
 
         def land(t):
             return Landing(Landing.schema.validate(dict(foot_delta=p["foot_delta"])), ctx)
