@@ -110,21 +110,21 @@ class Running(Behaviour):
         Parameter("turn_after", "m", 15.0, 2.0, 200.0, "course 1-3: distance run straight before the turn or the loops"),
         Parameter("lean", "1", 1.0, 0.0, 1.5, "share of the lean into a turn that balances the centripetal force (atan(v^2 / (g r)))"),
         Parameter("lookahead", "m", 2.5, 0.5, 10.0, "path following: distance along the path of the point the runner heads for"),
-        Parameter("ground_speed_matching", "m", _tuned("ground_speed_matching", 0.098), 0.0, 0.3,
+        Parameter("ground_speed_matching", "m", _tuned("ground_speed_matching", 0.010), 0.0, 0.3,
                   "tuned: how much further forward the foot swings during flight before it is brought back to touchdown"),
-        Parameter("stance_pitch", "rad", _tuned("stance_pitch", 0.052), -0.1, 0.4,
+        Parameter("stance_pitch", "rad", _tuned("stance_pitch", 0.100), -0.1, 0.4,
                   "tuned: forward pitch of the pelvis the stance hip holds"),
-        Parameter("thrust_time", "1", _tuned("thrust_time", 0.344), 0.2, 0.7,
+        Parameter("thrust_time", "1", _tuned("thrust_time", 0.289), 0.2, 0.7,
                   "tuned: share of the expected stance time after which the ankle thrusts (toe state)"),
-        Parameter("ankle_extension", "rad", _tuned("ankle_extension", 0.568), 0.0, 0.87,
+        Parameter("ankle_extension", "rad", _tuned("ankle_extension", 0.658), 0.0, 0.87,
                   "tuned: ankle plantarflexion the stance ankle extends to in thrust"),
-        Parameter("knee_extension", "rad", _tuned("knee_extension", 0.455), 0.0, 0.8,
+        Parameter("knee_extension", "rad", _tuned("knee_extension", 0.307), 0.0, 0.8,
                   "tuned: knee angle the stance knee extends to in thrust"),
-        Parameter("speed_gain", "s", _tuned("speed_gain", 0.055), 0.0, 0.3,
+        Parameter("speed_gain", "s", _tuned("speed_gain", 0.073), 0.0, 0.3,
                   "k of eqs. 1-2: extra forward placement of the foot per m/s of speed error"),
-        Parameter("touchdown_leg", "m", _tuned("touchdown_leg", 0.907), 0.75, 0.95,
+        Parameter("touchdown_leg", "m", _tuned("touchdown_leg", 0.902), 0.75, 0.95,
                   "hip-to-heel distance at touchdown (fixes z_hh of eqs. 1-2)"),
-        Parameter("idle_knee", "rad", _tuned("idle_knee", 1.606), 0.5, 2.4, "knee flexion of the idle (shortened) leg"),
+        Parameter("idle_knee", "rad", _tuned("idle_knee", 1.474), 0.5, 2.4, "knee flexion of the idle (shortened) leg"),
         Parameter("arm_swing", "1", _tuned("arm_swing", 0.8), 0.0, 2.0,
                   "k of eq. 5: shoulder swing per radian of the opposite hip's swing"),
         Parameter("start_lean", "s", 0.35, 0.1, 1.0, "time the standing body leans forward before the first push-off"),
@@ -226,8 +226,11 @@ class Running(Behaviour):
         a = self.active
         self.event(t, f"{STATE_NAMES[state]}_{'R' if a == 0 else 'L'}")
         if state == FLIGHT:
-            self._set_gains(a, FLIGHT_GAINS)
-            self._set_gains(1 - a, IDLE_GAINS)
+            g, gi, gk = FLIGHT_HIP_GAIN, IDLE_HIP_GAIN, IDLE_KNEE_GAIN
+            self._set_gains(a, {"hy": (g, g), "hx": (g, g), "hz": (g, g), "knee": (1.0, 1.0), "ay": (1.0, 1.0),
+                                "ax": (1.0, 1.0), "mt": (0.5, 0.5)})
+            self._set_gains(1 - a, {"hy": (gi, gi), "hx": (gi, gi), "hz": (gi, gi), "knee": (gk, gk), "ay": (0.5, 0.5),
+                                    "ax": (0.5, 0.5), "mt": (0.3, 0.3)})
         elif state == LOADING:
             self._set_gains(a, STANCE_HIP_GAINS)
         elif state == HEEL:
@@ -411,6 +414,7 @@ class Running(Behaviour):
             sign = 1.0 if leg == 0 else -1.0
             swing = -k_arm * q[opposite["hy"]] + ARM_OFFSET
             targets[jj["sz"]] = sign * swing
+            targets[jj["sx"]] = self.base[jj["sx"]] - sign * ARM_ABDUCTION      # arms clear the torso
             targets[jj["ez"]] = sign * (ELBOW_BASE + ELBOW_SWING * swing)
         targets[self.neck_y] = -p["stance_pitch"]
 
@@ -519,24 +523,23 @@ def _wrap(angle: float) -> float:
 
 BLENDED = ("hy", "hx", "hz", "knee", "ay")   # targets blended from idle to active after lift-off
 # gains as shares of the character's default (kp, kv)
-FLIGHT_GAINS = {"hy": (1.0, 1.0), "hx": (1.0, 1.0), "hz": (1.0, 1.0), "knee": (1.0, 1.0), "ay": (1.0, 1.0),
-                "ax": (1.0, 1.0), "mt": (0.5, 0.5)}
-IDLE_GAINS = {"hy": (1.0, 1.0), "hx": (1.0, 1.0), "hz": (1.0, 1.0), "knee": (0.6, 0.6), "ay": (0.5, 0.5),
-              "ax": (0.5, 0.5), "mt": (0.3, 0.3)}
+FLIGHT_HIP_GAIN = 1.02
+IDLE_HIP_GAIN = 1.04
+IDLE_KNEE_GAIN = 0.615
 STANCE_HIP_SHARE = 0.1        # stance hip servos are torque-commanded: low kp so 5 ms holds drift little
 STANCE_HIP_GAINS = {"hy": (STANCE_HIP_SHARE, STANCE_HIP_SHARE), "hx": (STANCE_HIP_SHARE, STANCE_HIP_SHARE),
                     "hz": (STANCE_HIP_SHARE, STANCE_HIP_SHARE)}
-STANCE_KNEE_GAIN = 0.68        # share of the knee's default kp in stance (the knee is a spring)
-HEEL_ANKLE_GAIN = 0.191         # heel contact: a soft ankle lets the foot come down flat
-PITCH_KP, PITCH_KD = 2232.0, 223.0    # N m/rad, N m s/rad: body pitch servo of the stance hip
-ROLL_KP, ROLL_KD = 2079.0, 208.0
-YAW_KP, YAW_KD = 558.0, 70.0
+STANCE_KNEE_GAIN = 0.672        # share of the knee's default kp in stance (the knee is a spring)
+HEEL_ANKLE_GAIN = 0.182         # heel contact: a soft ankle lets the foot come down flat
+PITCH_KP, PITCH_KD = 1330.0, 133.0    # N m/rad, N m s/rad: body pitch servo of the stance hip
+ROLL_KP, ROLL_KD = 2560.0, 256.0
+YAW_KP, YAW_KD = 1126.0, 141.0
 ATTITUDE_ONSET = 0.02         # s: the attitude torque fades in after touchdown, out in unloading
 UNLOADING_AFTER = 0.5         # share of the expected stance after thrust when the leg unloads
 THRUST_RAMP = 0.05            # s: the thrust targets move in over this time
-TOUCHDOWN_TOE_UP = 0.117       # rad: foot pitched toe-up at touchdown, heel first
-FOOT_INWARD = 0.00894            # m: the foot lands this far inside the hip, toward the centre line
-PLACE_BACK = 0.198
+TOUCHDOWN_TOE_UP = 0.0951       # rad: foot pitched toe-up at touchdown, heel first
+FOOT_INWARD = 0.00903            # m: the foot lands this far inside the hip, toward the centre line
+PLACE_BACK = 0.191
 PLACEMENT_LIMIT = 0.6         # the hip-to-heel distance on the ground is at most this share of the leg
 HIP_YAW_LIMIT = 0.4           # rad
 ACCEL_MARGIN = 1.0            # m/s: the speed command is at most this above the current speed
@@ -546,13 +549,14 @@ START_ANKLE_LEAN = 0.20       # rad of ankle dorsiflexion while leaning into the
 START_KNEE = 0.3
 START_HIP = 0.2
 GSM_RETRACT = 0.08            # s before the predicted touchdown over which the swung-forward foot is brought back
-IDLE_FORWARD_THIGH = -0.443     # rad: forward angle (from vertical) the idle thigh reaches by the end of stance
+IDLE_FORWARD_THIGH = -0.458     # rad: forward angle (from vertical) the idle thigh reaches by the end of stance
 IDLE_UNFOLD = 0.6             # share of the expected stance over which the idle knee unfolds after thrust
-IDLE_UNFOLD_KNEE = 1.16        # rad: idle knee flexion at the end of the unfolding
+IDLE_UNFOLD_KNEE = 1.17        # rad: idle knee flexion at the end of the unfolding
 IDLE_ANKLE = -0.2
 IDLE_ABDUCTION = 0.15
-IDLE_ADDUCTION = 0.05
+IDLE_ADDUCTION = -0.05
 FF_MAX = 12.0                 # rad/s: cap on a target's rate used as feed-forward
+ARM_ABDUCTION = 0.2           # rad: the arms are held this far out from hanging
 ARM_OFFSET = 0.1              # gamma_0 of eq. 5 (rad, forward)
 ELBOW_BASE = 1.3              # rad: running elbow flexion
 ELBOW_SWING = 0.3             # extra elbow flexion per radian of forward arm swing
