@@ -50,6 +50,7 @@ from sim_core.schema import Parameter, Schema
 
 TUNED_DIR = Path(__file__).resolve().parents[2] / "rigs" / "tuned"
 TUNED_NAMES = ("ground_speed_matching", "stance_pitch", "thrust_time", "ankle_extension", "knee_extension")
+TABLE_NAMES = TUNED_NAMES + ("speed_gain", "touchdown_leg", "idle_knee")
 
 # states of the active leg (Hodgins 1995 Fig. 3)
 FLIGHT, LOADING, HEEL, HEEL_TOE, TOE, UNLOADING, START = range(7)
@@ -57,27 +58,60 @@ STATE_NAMES = ("flight", "loading", "heel", "heel_toe", "toe", "unloading", "sta
 
 CONTACT_HEIGHT = 0.004      # m: a foot contact sphere this close to the ground touches it
 MIRROR_ACTUAL = False
+FLYING_START_SPEED = 1.0    # m/s: a run that starts moving faster than this starts in flight
+FLYING_START_STANCE = 0.22  # s: expected stance time of its first step
 MIN_FLIGHT = 0.02           # s: a touchdown of the new active leg is not taken before this
 LOADING_TIME = 0.010        # s: contact held this long before the stance laws take over
 SWAP_BLEND = 0.06           # s: Hermite blend of the new active leg's targets after lift-off
 GRAVITY = 9.80665
 
 
-def tuned_defaults(character: str = "man") -> dict[str, float]:
-    """Tuned values for a character (rigs/tuned/running_<name>.json), or {} if none."""
-    path = TUNED_DIR / f"running_{character}.json"
-    try:
-        data = json.loads(path.read_text())
-    except (FileNotFoundError, json.JSONDecodeError):
-        return {}
-    return {k: float(v) for k, v in data.get("parameters", {}).items()}
+TUNED = -1.0                # the value of a tuned parameter that means "as tuned for the running speed"
+# fallback design values (the table in rigs/tuned/running_<character>.json overrides them)
+FALLBACK_TABLE = {"ground_speed_matching": 0.010, "stance_pitch": 0.100, "thrust_time": 0.289,
+                  "ankle_extension": 0.658, "knee_extension": 0.307, "speed_gain": 0.073,
+                  "touchdown_leg": 0.902, "idle_knee": 1.474}
 
 
-_TUNED = tuned_defaults("man")
+class SpeedTable:
+    """Tuned values of some parameters as functions of the running speed (piecewise linear,
+    held constant beyond the ends): Hodgins et al. tune the thrust timing "30-50 % depending on
+    forward speed"; this is where such schedules live, as data."""
+
+    def __init__(self, speeds: list[float], values: dict[str, list[float] | float]):
+        self.speeds = [float(v) for v in speeds]
+        self.values = {k: ([float(x) for x in v] if isinstance(v, (list, tuple)) else [float(v)] * len(self.speeds))
+                       for k, v in values.items()}
+
+    @classmethod
+    def load(cls, character: str = "man") -> "SpeedTable":
+        """rigs/tuned/running_<character>.json (the man's if the character has none), else the
+        built-in fallback values."""
+        for name in (character, "man"):
+            path = TUNED_DIR / f"running_{name}.json"
+            try:
+                data = json.loads(path.read_text())
+            except (FileNotFoundError, json.JSONDecodeError):
+                continue
+            values = dict(FALLBACK_TABLE)
+            values.update(data.get("parameters", {}))
+            return cls(data.get("speeds", [3.5]), values)
+        return cls([3.5], FALLBACK_TABLE)
+
+    def at(self, name: str, speed: float) -> float:
+        xs, ys = self.speeds, self.values[name]
+        if speed <= xs[0]:
+            return ys[0]
+        for k in range(1, len(xs)):
+            if speed <= xs[k]:
+                f = (speed - xs[k - 1]) / (xs[k] - xs[k - 1])
+                return ys[k - 1] + f * (ys[k] - ys[k - 1])
+        return ys[-1]
 
 
-def _tuned(name: str, fallback: float) -> float:
-    return _TUNED.get(name, fallback)
+def _tuned_parameter(name, unit, minimum, maximum, help_text) -> Parameter:
+    return Parameter(name, unit, TUNED, minimum, maximum, f"{help_text}; -1 = the tuned value for the speed",
+                     special=TUNED)
 
 
 class RunningSchema(Schema):
@@ -110,22 +144,17 @@ class Running(Behaviour):
         Parameter("turn_after", "m", 15.0, 2.0, 200.0, "course 1-3: distance run straight before the turn or the loops"),
         Parameter("lean", "1", 1.0, 0.0, 1.5, "share of the lean into a turn that balances the centripetal force (atan(v^2 / (g r)))"),
         Parameter("lookahead", "m", 2.5, 0.5, 10.0, "path following: distance along the path of the point the runner heads for"),
-        Parameter("ground_speed_matching", "m", _tuned("ground_speed_matching", 0.010), 0.0, 0.3,
-                  "tuned: how much further forward the foot swings during flight before it is brought back to touchdown"),
-        Parameter("stance_pitch", "rad", _tuned("stance_pitch", 0.100), -0.1, 0.4,
-                  "tuned: forward pitch of the pelvis the stance hip holds"),
-        Parameter("thrust_time", "1", _tuned("thrust_time", 0.289), 0.2, 0.7,
-                  "tuned: share of the expected stance time after which the ankle thrusts (toe state)"),
-        Parameter("ankle_extension", "rad", _tuned("ankle_extension", 0.658), 0.0, 0.87,
-                  "tuned: ankle plantarflexion the stance ankle extends to in thrust"),
-        Parameter("knee_extension", "rad", _tuned("knee_extension", 0.307), 0.0, 0.8,
-                  "tuned: knee angle the stance knee extends to in thrust"),
-        Parameter("speed_gain", "s", _tuned("speed_gain", 0.073), 0.0, 0.3,
-                  "k of eqs. 1-2: extra forward placement of the foot per m/s of speed error"),
-        Parameter("touchdown_leg", "m", _tuned("touchdown_leg", 0.902), 0.75, 0.95,
-                  "hip-to-heel distance at touchdown (fixes z_hh of eqs. 1-2)"),
-        Parameter("idle_knee", "rad", _tuned("idle_knee", 1.474), 0.5, 2.4, "knee flexion of the idle (shortened) leg"),
-        Parameter("arm_swing", "1", _tuned("arm_swing", 0.8), 0.0, 2.0,
+        _tuned_parameter("ground_speed_matching", "m", 0.0, 0.3,
+                         "tuned: how much further forward the foot swings during flight before it is brought back to touchdown"),
+        _tuned_parameter("stance_pitch", "rad", -0.1, 0.4, "tuned: forward pitch of the pelvis the stance hip holds"),
+        _tuned_parameter("thrust_time", "1", 0.2, 0.7,
+                         "tuned: share of the expected stance time after which the ankle thrusts (toe state)"),
+        _tuned_parameter("ankle_extension", "rad", 0.0, 0.87, "tuned: ankle plantarflexion the stance ankle extends to in thrust"),
+        _tuned_parameter("knee_extension", "rad", 0.0, 0.8, "tuned: knee angle the stance knee extends to in thrust"),
+        _tuned_parameter("speed_gain", "s", 0.0, 0.3, "k of eqs. 1-2: extra forward placement of the foot per m/s of speed error"),
+        _tuned_parameter("touchdown_leg", "m", 0.75, 0.95, "hip-to-heel distance at touchdown (fixes z_hh of eqs. 1-2)"),
+        _tuned_parameter("idle_knee", "rad", 0.5, 2.4, "knee flexion of the idle (shortened) leg"),
+        Parameter("arm_swing", "1", 0.8, 0.0, 2.0,
                   "k of eq. 5: shoulder swing per radian of the opposite hip's swing"),
         Parameter("start_lean", "s", 0.35, 0.1, 1.0, "time the standing body leans forward before the first push-off"),
     )
@@ -156,26 +185,54 @@ class Running(Behaviour):
         self.kp0 = s.default_kp.copy()
         self.kv0 = s.default_kv.copy()
         self.ratio = (s.default_kv / s.default_kp).tolist()
+        self.table = SpeedTable.load(ch.name)
+        self.scheduled = [n for n in self.table.values if n in params and params[n] == TUNED]
+        self.p = dict(params)
+        self._schedule(0.0)
         self.path = self._path()
         self.follower = PathFollower(self.path, params["lookahead"]) if self.path is not None else None
 
     def _path(self):
-        p = self.params
-        if "path" in p:
-            return np.asarray(p["path"], dtype=float)
-        course = int(round(p["course"]))
-        if course == 1:
-            return turn_path(p["turn_angle"], p["turn_after"], p["turn_radius"])
-        if course == 2:
-            return figure_eight_path(p["turn_radius"], p["turn_after"])
-        if course == 3:
-            return circle_path(p["turn_radius"], p["turn_after"])
-        return None
+        return _path_for(self.params)
+
+    def _schedule(self, speed: float) -> None:
+        """Effective values of the tuned parameters left at -1: the table at this speed."""
+        for name in self.scheduled:
+            self.p[name] = self.table.at(name, speed)
 
     def check_feasible(self) -> None:
         p = self.params
         if abs(p["course"] - round(p["course"])) > 1e-9:
             raise ParameterError(f"parameter course={p['course']:g} must be a whole number 0, 1, 2 or 3")
+
+    @classmethod
+    def assess(cls, trajectory) -> tuple[str, dict]:
+        """Success = no fall for the whole run (TARGETS.md "Running"); metrics: the standard ones,
+        the gait over the last 10 s (sim_core.gait), the time the run took to reach 90 % of the
+        commanded speed from the stand, and for a path the lateral deviation from it."""
+        from sim_core.analysis import standard_metrics
+        from sim_core.gait import gait_metrics, stride_attitude_variation
+        from sim_core.control.running_path import path_deviation
+        metrics = standard_metrics(trajectory)
+        for key in ("stepped", "max_foot_slide", "com_outside_support_max", "com_inside_support_throughout",
+                    "final_com_speed", "max_hand_below_knee"):
+            metrics.pop(key, None)                   # standing-skill metrics, meaningless in a run
+        a = trajectory.arrays
+        params = trajectory.meta["params"]
+        gait = gait_metrics(trajectory)
+        metrics["gait"] = gait
+        speed = np.linalg.norm(a["com_vel"][:, :2], axis=1)
+        reached = np.nonzero(speed >= 0.9 * params["speed"])[0]
+        metrics["time_to_90pct_speed"] = float(a["time"][reached[0]]) if len(reached) else None
+        metrics["stride_attitude_variation"] = stride_attitude_variation(trajectory, t_from=max(0.0, a["time"][-1] - 10.0))
+        path = _path_for(params)
+        if path is not None:
+            t0 = _first_time_on_path(a, path)
+            sel = a["time"] >= t0
+            deviation = path_deviation(path, a["com"][sel, :2])
+            metrics["path_deviation_mean"] = float(deviation.mean()) if deviation.size else None
+            metrics["path_deviation_max"] = float(deviation.max()) if deviation.size else None
+        return ("fell" if metrics["fell"] else "success"), metrics
 
     # --------------------------------------------------------------------- start
     def start(self, t: float) -> None:
@@ -200,6 +257,22 @@ class Running(Behaviour):
         self.heading_goal = self.params["facing"]
         self.roll_goal = 0.0
         self.previous_goal = {}
+        self.speed_trim = 0.0
+        d = self.ctx.data
+        vx, vy, _ = d.subtree_linvel[self.pelvis].tolist()
+        if math.hypot(vx, vy) > FLYING_START_SPEED:
+            # a running start state (RunRequest.start: the body already moving): the right leg
+            # is placed for the first touchdown, as after a lift-off of the left
+            q = self.ctx.servos.angles().tolist()
+            ja, ji = self.j[0], self.j[1]
+            self.active = 0
+            self.active_lo = [q[ja["hy"]], q[ja["hx"]]]
+            self.idle_lo = [q[ji["hy"]], q[ji["hx"]]]
+            self.stance_time = FLYING_START_STANCE
+            self._schedule(math.hypot(vx, vy))
+            self.event(t, "flying_start")
+            self._enter(t, FLIGHT)
+            return
         self.event(t, "start")
 
     # --------------------------------------------------------------------- helpers
@@ -258,7 +331,7 @@ class Running(Behaviour):
     # --------------------------------------------------------------------- control
     def update(self, t: float) -> None:
         d = self.ctx.data
-        p = self.params
+        p = self.p
         servos = self.ctx.servos
         q = servos.angles().tolist()
         qd = servos.velocities().tolist()
@@ -301,16 +374,26 @@ class Running(Behaviour):
         # ---- state transitions of the active leg (Fig. 3)
         state = self.state
         if state == START:
-            if t - self.t_state >= p["start_lean"]:
+            # the lean ends when the body falls forward fast enough to step into the run
+            if vx * ch + vy * sh >= START_SPEED or t - self.t_state >= p["start_lean"] + START_TIMEOUT:
                 ji = self.j[1 - a]
                 self.idle_lo = [q[ji["hy"]], q[ji["hx"]]]
                 self.active_lo = [q[ja["hy"]], q[ja["hx"]]]
-                self.t_touchdown = t - 0.5 * self.stance_time
+                self.t_touchdown = t
+                self.t_liftoff = t
+                self.stance_time = START_STANCE
                 self.ankle_flat = q[ja["ay"]]
+                self.knee_touchdown = q[ja["knee"]]
                 self._set_gains(a, STANCE_HIP_GAINS)
-                self._enter(t, TOE)
+                self._set_gains(1 - a, {"hy": (1.0, 1.0), "hx": (1.0, 1.0), "hz": (1.0, 1.0), "knee": (0.6, 0.6),
+                                        "ay": (0.5, 0.5), "ax": (0.5, 0.5), "mt": (0.3, 0.3)})
+                self._enter(t, HEEL_TOE)
         elif state == FLIGHT:
             if touch[a] and t - self.t_liftoff >= MIN_FLIGHT:
+                self._schedule(speed_now)
+                # a slow integral of the speed error trims the placement (steady-state speed)
+                trim = self.speed_trim + SPEED_TRIM_GAIN * (speed_cmd - speed_now)
+                self.speed_trim = max(-SPEED_TRIM_MAX, min(SPEED_TRIM_MAX, trim))
                 self.flight_time = 0.5 * self.flight_time + 0.5 * (t - self.t_liftoff)
                 self.t_touchdown = t
                 self.knee_touchdown = q[ja["knee"]]
@@ -347,12 +430,13 @@ class Running(Behaviour):
 
         # ---- active leg
         if state == START:
-            # lean forward over the feet: ankles let the shanks tip forward, hips hold the pelvis
+            # lean forward over the feet: the ankles tip the straight body forward like an
+            # inverted pendulum, the hips hold the pelvis pitch, the knees give a little
             s_ = hermite_scalar((t - self.t_state) / p["start_lean"])
             for jj in self.j:
                 targets[jj["ay"]] = -START_ANKLE_LEAN * s_
                 targets[jj["knee"]] = START_KNEE * s_
-                targets[jj["hy"]] = -START_HIP * s_
+                targets[jj["hy"]] = q[jj["hy"]] + (pitch - START_PITCH * s_) + self.kv[jj["hy"]] / self.kp[jj["hy"]] * (qd[jj["hy"]] + pitch_rate)
             hy_goal, hx_goal = targets[ja["hy"]], targets[ja["hx"]]
         elif state == FLIGHT:
             hy_goal, hx_goal = self._place_foot(t, p, a, ja, m, pitch, yaw, heading, ch, sh, vx, vy, vz, vxd, vyd)
@@ -399,13 +483,17 @@ class Running(Behaviour):
                 s_ = hermite_scalar((t - self.t_thrust) / THRUST_RAMP)
                 targets[ja["knee"]] = self.knee_touchdown + (p["knee_extension"] - self.knee_touchdown) * s_
                 targets[ja["ay"]] = self.ankle_flat + (p["ankle_extension"] - self.ankle_flat) * s_
+                if state == UNLOADING and UNLOAD_KNEE > 0:
+                    # the knee starts to fold so that the toe leaves the ground
+                    u_ = hermite_scalar((t - self.t_state) / UNLOAD_RAMP)
+                    targets[ja["knee"]] += (UNLOAD_KNEE - targets[ja["knee"]]) * u_
             targets[ja["ax"]] = 0.0
             targets[ja["mt"]] = 0.0
             hy_goal, hx_goal = q[ja["hy"]], q[ja["hx"]]
 
         # ---- idle leg: shortened, hip mirroring the active hip (eqs. 3-4)
         if state != START:
-            self._idle_leg(t, p, state, ji, i, hy_goal, hx_goal, pitch)
+            self._idle_leg(t, p, state, ji, i, hy_goal, hx_goal, pitch, speed_now)
 
         # ---- arms (eq. 5): each shoulder swings against the opposite hip; elbows cycle with it
         k_arm = p["arm_swing"]
@@ -442,8 +530,12 @@ class Running(Behaviour):
         hip = self.ctx.data.xpos[self.hip_body[a]].tolist()
         ts = self.stance_time
         lf = leg.foot_length
-        x_hh = 0.5 * (ts * vx - ch * lf) + p["speed_gain"] * (vx - vxd) - PLACE_BACK * ch          # eq. 1
-        y_hh = 0.5 * (ts * vy - sh * lf) + p["speed_gain"] * (vy - vyd) - PLACE_BACK * sh          # eq. 2
+        # eqs. 1-2; departure: the foot lands PLACE_BACK closer to the hip than eq. 1 says (our
+        # stance is not symmetric about mid-stance: the hip passes over the foot early), less
+        # when running slowly, where the stance sweep t_s xdot is short
+        back = PLACE_BACK * min(1.0, math.hypot(vx, vy) / PLACE_BACK_SPEED) + self.speed_trim
+        x_hh = 0.5 * (ts * vx - ch * lf) + p["speed_gain"] * (vx - vxd) - back * ch          # eq. 1
+        y_hh = 0.5 * (ts * vy - sh * lf) + p["speed_gain"] * (vy - vyd) - back * sh          # eq. 2
         inward = FOOT_INWARD if a == 0 else -FOOT_INWARD                          # right foot lands left of its hip
         x_hh -= sh * inward
         y_hh += ch * inward
@@ -478,7 +570,7 @@ class Running(Behaviour):
         targets[ja["mt"]] = 0.0
         return targets[ja["hy"]], targets[ja["hx"]]
 
-    def _idle_leg(self, t, p, state, ji, i, hy_goal, hx_goal, pitch):
+    def _idle_leg(self, t, p, state, ji, i, hy_goal, hx_goal, pitch, speed_now):
         """Eqs. 3-4: the idle hip mirrors the active hip about their lift-off angles, shortened
         (knee folded, ankle flexed) so the toe clears the ground; it is kept on schedule to be
         forward by the end of stance and unfolds its knee while the active leg thrusts."""
@@ -492,16 +584,40 @@ class Running(Behaviour):
         side = 1.0 if i == 0 else -1.0                  # +x adducts the right hip, abducts the left
         hx_idle = side * max(-IDLE_ABDUCTION, min(IDLE_ADDUCTION, side * hx_idle))
         targets[ji["hy"]] = max(-1.3, min(0.5, hy_idle))
+        # a slow runner folds the idle leg less (people jog with the foot low)
+        idle_knee = min(p["idle_knee"], max(IDLE_KNEE_MIN, IDLE_KNEE_PER_SPEED * speed_now))
         targets[ji["hx"]] = hx_idle
         targets[ji["hz"]] = 0.0
         if state in (TOE, UNLOADING) and IDLE_UNFOLD > 0:
             s_ = hermite_scalar((t - self.t_thrust) / max(IDLE_UNFOLD * self.stance_time, 0.02))
-            targets[ji["knee"]] = p["idle_knee"] + (IDLE_UNFOLD_KNEE - p["idle_knee"]) * s_
+            targets[ji["knee"]] = idle_knee + (IDLE_UNFOLD_KNEE - idle_knee) * s_
         else:
-            targets[ji["knee"]] = p["idle_knee"]
+            targets[ji["knee"]] = idle_knee
         targets[ji["ay"]] = IDLE_ANKLE
         targets[ji["ax"]] = 0.0
         targets[ji["mt"]] = 0.0
+
+
+def _path_for(p: dict):
+    """The polyline a run follows: the user's points, a built-in course, or None (facing)."""
+    if "path" in p:
+        return np.asarray(p["path"], dtype=float)
+    course = int(round(p["course"]))
+    if course == 1:
+        return turn_path(p["turn_angle"], p["turn_after"], p["turn_radius"])
+    if course == 2:
+        return figure_eight_path(p["turn_radius"], p["turn_after"])
+    if course == 3:
+        return circle_path(p["turn_radius"], p["turn_after"])
+    return None
+
+
+def _first_time_on_path(a: dict, path: np.ndarray, within: float = 0.5) -> float:
+    """The deviation is measured once the runner is up to speed along the path (from the first
+    time it is running and within ``within`` m of it), not while it accelerates from the stand."""
+    speed = np.linalg.norm(a["com_vel"][:, :2], axis=1)
+    moving = np.nonzero(speed > 2.0)[0]
+    return float(a["time"][moving[0]]) if len(moving) else float(a["time"][-1])
 
 
 def _solve3(a1, a2, a3, bx, by, bz):
@@ -523,38 +639,48 @@ def _wrap(angle: float) -> float:
 
 BLENDED = ("hy", "hx", "hz", "knee", "ay")   # targets blended from idle to active after lift-off
 # gains as shares of the character's default (kp, kv)
-FLIGHT_HIP_GAIN = 1.02
-IDLE_HIP_GAIN = 1.04
-IDLE_KNEE_GAIN = 0.615
+FLIGHT_HIP_GAIN = 1.11
+IDLE_HIP_GAIN = 1.02
+IDLE_KNEE_GAIN = 0.681
 STANCE_HIP_SHARE = 0.1        # stance hip servos are torque-commanded: low kp so 5 ms holds drift little
 STANCE_HIP_GAINS = {"hy": (STANCE_HIP_SHARE, STANCE_HIP_SHARE), "hx": (STANCE_HIP_SHARE, STANCE_HIP_SHARE),
                     "hz": (STANCE_HIP_SHARE, STANCE_HIP_SHARE)}
-STANCE_KNEE_GAIN = 0.672        # share of the knee's default kp in stance (the knee is a spring)
-HEEL_ANKLE_GAIN = 0.182         # heel contact: a soft ankle lets the foot come down flat
-PITCH_KP, PITCH_KD = 1330.0, 133.0    # N m/rad, N m s/rad: body pitch servo of the stance hip
-ROLL_KP, ROLL_KD = 2560.0, 256.0
-YAW_KP, YAW_KD = 1126.0, 141.0
+STANCE_KNEE_GAIN = 0.683        # share of the knee's default kp in stance (the knee is a spring)
+HEEL_ANKLE_GAIN = 0.331         # heel contact: a soft ankle lets the foot come down flat
+PITCH_KP, PITCH_KD = 1486.0, 149.0    # N m/rad, N m s/rad: body pitch servo of the stance hip
+ROLL_KP, ROLL_KD = 2752.0, 275.0
+YAW_KP, YAW_KD = 1109.0, 139.0
 ATTITUDE_ONSET = 0.02         # s: the attitude torque fades in after touchdown, out in unloading
-UNLOADING_AFTER = 0.5         # share of the expected stance after thrust when the leg unloads
+UNLOAD_KNEE = 0.836             # rad: knee flexion the unloading leg folds to (0 = it does not)
+UNLOAD_RAMP = 0.06
+UNLOADING_AFTER = 0.556         # share of the expected stance after thrust when the leg unloads
 THRUST_RAMP = 0.05            # s: the thrust targets move in over this time
-TOUCHDOWN_TOE_UP = 0.0951       # rad: foot pitched toe-up at touchdown, heel first
-FOOT_INWARD = 0.00903            # m: the foot lands this far inside the hip, toward the centre line
-PLACE_BACK = 0.191
+TOUCHDOWN_TOE_UP = 0.14       # rad: foot pitched toe-up at touchdown, heel first
+FOOT_INWARD = 0.00373            # m: the foot lands this far inside the hip, toward the centre line
+SPEED_TRIM_GAIN = 0.0101       # m of placement trim per m/s of speed error, per step
+SPEED_TRIM_MAX = 0.15
+PLACE_BACK = 0.187
+PLACE_BACK_SPEED = 3.0       # m/s above which the full PLACE_BACK applies
 PLACEMENT_LIMIT = 0.6         # the hip-to-heel distance on the ground is at most this share of the leg
 HIP_YAW_LIMIT = 0.4           # rad
-ACCEL_MARGIN = 1.0            # m/s: the speed command is at most this above the current speed
+ACCEL_MARGIN = 0.231            # m/s: the speed command is at most this above the current speed
 TURN_RATE_PER_SPEED = 0.4     # rad/s of heading change per m/s of speed
 ROLL_FILTER = 0.05
 START_ANKLE_LEAN = 0.20       # rad of ankle dorsiflexion while leaning into the start
-START_KNEE = 0.3
-START_HIP = 0.2
+START_KNEE = 0.15             # rad of knee flexion while leaning
+START_PITCH = 0.1             # rad: pelvis pitch the hips hold while leaning
+START_SPEED = 0.6             # m/s: forward COM speed at which the lean turns into the first push-off
+START_TIMEOUT = 1.0           # s after the lean at which the push-off starts whatever the speed
+START_STANCE = 0.3            # s: expected duration of the first (push-off) stance
 GSM_RETRACT = 0.08            # s before the predicted touchdown over which the swung-forward foot is brought back
-IDLE_FORWARD_THIGH = -0.458     # rad: forward angle (from vertical) the idle thigh reaches by the end of stance
+IDLE_FORWARD_THIGH = -0.552     # rad: forward angle (from vertical) the idle thigh reaches by the end of stance
 IDLE_UNFOLD = 0.6             # share of the expected stance over which the idle knee unfolds after thrust
-IDLE_UNFOLD_KNEE = 1.17        # rad: idle knee flexion at the end of the unfolding
+IDLE_UNFOLD_KNEE = 1.15        # rad: idle knee flexion at the end of the unfolding
 IDLE_ANKLE = -0.2
+IDLE_KNEE_MIN = 0.6           # rad: idle knee flexion of a slow (starting) runner
+IDLE_KNEE_PER_SPEED = 0.403    # rad per m/s: the idle knee folds more the faster the run
 IDLE_ABDUCTION = 0.15
-IDLE_ADDUCTION = -0.05
+IDLE_ADDUCTION = -0.0573
 FF_MAX = 12.0                 # rad/s: cap on a target's rate used as feed-forward
 ARM_ABDUCTION = 0.2           # rad: the arms are held this far out from hanging
 ARM_OFFSET = 0.1              # gamma_0 of eq. 5 (rad, forward)

@@ -1,0 +1,171 @@
+"""Measure the running behaviour and write the results into docs/running.md (between the
+<!-- results --> markers) and the figures docs/running_*.png.
+
+    python3 scripts/running_report.py            # everything (several minutes on 2 cores)
+    python3 scripts/running_report.py --quick    # shorter runs, no 100 s runs
+
+Every number comes from a simulation started from the standing pose (the issue asks for a start
+from a stand), read off the trajectory by sim_core.gait and the behaviour's own assess().
+"""
+from __future__ import annotations
+
+import argparse
+import math
+import re
+import sys
+import time
+from multiprocessing import Pool
+from pathlib import Path
+
+import numpy as np
+
+ROOT = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(ROOT))
+
+from sim_core.gait import HUMAN_FIG12, SIMULATED_1997  # noqa: E402
+
+DOC = ROOT / "docs" / "running.md"
+SPEEDS = (2.5, 3.0, 3.5, 4.0, 4.5, 5.0)
+
+
+def simulate(job):
+    """(name, params, duration) -> summary dict (run in a worker process)."""
+    from sim_core.simulate import RunRequest, run
+    name, params, duration = job
+    started = time.perf_counter()
+    traj = run(RunRequest("running", "man", params=params, duration=duration))
+    m = traj.meta["metrics"]
+    out = {"name": name, "params": params, "duration": duration, "outcome": traj.meta["outcome"],
+           "fall_time": m["fall_time"], "gait": m["gait"], "time_to_90pct_speed": m["time_to_90pct_speed"],
+           "path_deviation_mean": m.get("path_deviation_mean"), "path_deviation_max": m.get("path_deviation_max"),
+           "stride_attitude_variation": m.get("stride_attitude_variation"), "wall_s": time.perf_counter() - started}
+    a = traj.arrays
+    if name.startswith("phase"):
+        dof = traj.meta["dof_names"]
+        import mujoco
+        model = mujoco.MjModel.from_xml_string(traj.meta["model_xml"])
+        sel = a["time"] >= a["time"][-1] - 3.0
+        out["hip"] = -a["qpos"][sel, model.joint("hip_r_y").qposadr[0]].tolist()     # flexion positive
+        out["knee"] = a["qpos"][sel, model.joint("knee_r_y").qposadr[0]].tolist()
+    if name.startswith(("turn", "eight")):
+        out["xy"] = a["com"][::4, :2].tolist()
+    if name.startswith("start"):
+        out["t"] = a["time"][::4].tolist()
+        out["speed"] = np.linalg.norm(a["com_vel"][::4, :2], axis=1).tolist()
+    return out
+
+
+def jobs(quick: bool) -> list:
+    d = 14.0 if quick else 20.0
+    out = [(f"speed {v}", {"speed": v}, d) for v in SPEEDS]
+    out.append(("phase 4.83", {"speed": 4.83}, d))
+    out.append(("start 3.5", {"speed": 3.5}, 8.0))
+    out.append(("turn 90", {"speed": 3.5, "course": 1, "turn_angle": math.pi / 2, "turn_radius": 5.0,
+                            "turn_after": 15.0}, 16.0 if quick else 20.0))
+    out.append(("eight", {"speed": 3.5, "course": 2, "turn_radius": 6.0, "turn_after": 12.0}, 30.0 if quick else 45.0))
+    if not quick:
+        out += [(f"long {v}", {"speed": v}, 100.0) for v in (3.0, 4.5)]
+    return out
+
+
+def fmt(x, digits=2):
+    return "–" if x is None or (isinstance(x, float) and math.isnan(x)) else f"{x:.{digits}f}"
+
+
+def results_markdown(res: dict) -> str:
+    lines = ["Measured by `python3 scripts/running_report.py` (man, human strength, every run from the standing pose).", ""]
+    lines += ["| commanded m/s | outcome | mean speed, last 10 s | error | steps/s | step length m | stance/step % |",
+              "| --- | --- | --- | --- | --- | --- | --- |"]
+    for v in SPEEDS:
+        r = res[f"speed {v}"]
+        g = r["gait"]
+        err = (g["mean_speed"] - v) / v * 100
+        outcome = r["outcome"] if r["outcome"] == "success" else f"fell at {r['fall_time']:.1f} s"
+        lines.append(f"| {v} | {outcome} | {fmt(g['mean_speed'])} | {err:+.1f} % | {fmt(g['step_frequency'])} | "
+                     f"{fmt(g['step_length'])} | {fmt(g['stance_fraction'], 1)} |")
+    lines += ["", "Gait at 4.83 m/s beside Hodgins & Pollard 1997, Fig. 12 (man):", "",
+              "| quantity | simulated here | human | error | 1997 simulation |", "| --- | --- | --- | --- | --- |"]
+    g = res["phase 4.83"]["gait"]
+    human, sim97 = HUMAN_FIG12["man"], SIMULATED_1997["man"]
+    for key, label, digits in (("mean_speed", "speed m/s", 2), ("step_frequency", "step frequency steps/s", 2),
+                               ("step_length", "step length m", 2), ("stance_fraction", "stance/step %", 1)):
+        h = human["speed" if key == "mean_speed" else key]
+        value = g[key]
+        err = "–" if value is None else f"{(value - h) / h * 100:+.1f} %"
+        lines.append(f"| {label} | {fmt(value, digits)} | {h} | {err} | {sim97['speed' if key == 'mean_speed' else key]} |")
+    outcome = res["phase 4.83"]["outcome"]
+    lines += ["", f"(outcome of that run: {outcome})", "", "| check | outcome | measured |", "| --- | --- | --- |"]
+    s = res["start 3.5"]
+    lines.append(f"| start from a stand into 3.5 m/s | {s['outcome']} | 90 % of 3.5 m/s reached at "
+                 f"{fmt(s['time_to_90pct_speed'])} s (goal: within 5 s) |")
+    for key, label in (("turn 90", "90° left turn, radius 5 m, at 3.5 m/s"), ("eight", "figure eight, loops of radius 6 m, at 3.5 m/s")):
+        r = res[key]
+        lines.append(f"| {label} | {r['outcome'] if r['outcome'] == 'success' else 'fell at %.1f s' % r['fall_time']} | lateral deviation "
+                     f"mean {fmt(r['path_deviation_mean'])} m, max {fmt(r['path_deviation_max'])} m (goal: mean < 0.3 m) |")
+    for v in (3.0, 4.5):
+        r = res.get(f"long {v}")
+        if r:
+            lines.append(f"| 100 s at {v} m/s | {r['outcome'] if r['outcome'] == 'success' else 'fell at %.1f s' % r['fall_time']} | "
+                         f"mean speed over the last 10 s {fmt(r['gait']['mean_speed'])} m/s |")
+    return "\n".join(lines)
+
+
+def figures(res: dict) -> None:
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    r = res["phase 4.83"]
+    fig, ax = plt.subplots(figsize=(4.5, 4.5))
+    ax.plot(np.degrees(r["hip"]), np.degrees(r["knee"]), lw=1.0)
+    ax.set_xlabel("hip flexion (deg)")
+    ax.set_ylabel("knee flexion (deg)")
+    ax.set_title("Right hip vs knee, last 3 s at 4.83 m/s\n(cf. Hodgins et al. 1995, Fig. 6)", fontsize=9)
+    ax.grid(alpha=0.3)
+    fig.tight_layout()
+    fig.savefig(ROOT / "docs" / "running_phase.png", dpi=110)
+    plt.close(fig)
+
+    from sim_core.control.running import _path_for
+    from sim_core.control.behaviour import behaviour_class
+    schema = behaviour_class("running").schema
+    fig, axes = plt.subplots(1, 2, figsize=(9, 4.2))
+    for ax, key in zip(axes, ("turn 90", "eight")):
+        path = _path_for(schema.validate(res[key]["params"]))
+        xy = np.array(res[key]["xy"])
+        ax.plot(path[:, 0], path[:, 1], "k--", lw=0.8, label="path")
+        ax.plot(xy[:, 0], xy[:, 1], lw=1.0, label="COM")
+        ax.set_aspect("equal")
+        ax.set_title(key, fontsize=9)
+        ax.legend(fontsize=7)
+        ax.grid(alpha=0.3)
+    fig.tight_layout()
+    fig.savefig(ROOT / "docs" / "running_paths.png", dpi=110)
+    plt.close(fig)
+
+
+def main(argv=None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("--quick", action="store_true")
+    ap.add_argument("--workers", type=int, default=2)
+    args = ap.parse_args(argv)
+    started = time.perf_counter()
+    with Pool(args.workers) as pool:
+        res = {r["name"]: r for r in pool.map(simulate, jobs(args.quick), chunksize=1)}
+    for r in res.values():
+        g = r["gait"]
+        print(f"{r['name']:12s} {r['outcome']:8s} fall={fmt(r['fall_time'])} v={fmt(g['mean_speed'])} "
+              f"f={fmt(g['step_frequency'])} L={fmt(g['step_length'])} stance%={fmt(g['stance_fraction'], 1)} "
+              f"dev={fmt(r['path_deviation_mean'])} t90={fmt(r['time_to_90pct_speed'])} wall={r['wall_s']:.0f}s")
+    figures(res)
+    block = results_markdown(res)
+    text = DOC.read_text()
+    new = re.sub(r"<!-- results -->\n.*?<!-- /results -->", lambda _: f"<!-- results -->\n{block}\n<!-- /results -->",
+                 text, flags=re.S)
+    DOC.write_text(new)
+    print(block)
+    print(f"total {time.perf_counter() - started:.0f} s")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
