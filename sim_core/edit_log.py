@@ -6,7 +6,7 @@ from __future__ import annotations
 import numpy as np
 
 # Model/data arrays a run may edit, by name. Replay looks them up with getattr.
-EDITABLE_FIELDS = ("actuator_gainprm", "actuator_biasprm", "opt.gravity", "xfrc_applied")
+EDITABLE_FIELDS = ("actuator_gainprm", "actuator_biasprm", "opt.gravity", "push_force")
 
 
 class EditLog:
@@ -51,8 +51,9 @@ class EditLog:
 def resolve_field(model, data, field: str) -> np.ndarray:
     if field == "opt.gravity":
         return model.opt.gravity
-    if field == "xfrc_applied":
-        return data.xfrc_applied
+    if field == "push_force":                    # the pushes' forces (sim_core.perturbation)
+        from sim_core.perturbation import applied_forces
+        return applied_forces(data)
     return getattr(model, field)
 
 

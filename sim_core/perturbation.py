@@ -60,6 +60,11 @@ class Push:
         return asdict(self)
 
 
+def applied_forces(data) -> np.ndarray:
+    """The one array through which a push acts (world-frame force and torque at each body's COM)."""
+    return data.xfrc_applied
+
+
 class PushSchedule:
     def __init__(self, pushes, model, data, log: EditLog):
         self.pushes = list(pushes)
@@ -77,4 +82,4 @@ class PushSchedule:
                     wrench[0, :3] = push.vector()
                 row = np.array([self.body_ids[k]])
                 for col in range(3):
-                    self.log.set_array(self.data.xfrc_applied, "xfrc_applied", row, col, wrench[0, col:col + 1])
+                    self.log.set_array(applied_forces(self.data), "push_force", row, col, wrench[0, col:col + 1])

@@ -128,7 +128,7 @@ def test_only_external_force_is_the_logged_push():
     """The edit log holds xfrc_applied entries only for the push, on the sternum, and nothing
     else ever writes a force: no run without a push has any applied force."""
     quiet = run(RunRequest("balance", "man", duration=1.0))
-    xfrc = quiet.meta["edit_fields"].index("xfrc_applied")
+    xfrc = quiet.meta["edit_fields"].index("push_force")
     assert not np.any(quiet.arrays["edit_field"] == xfrc)
     assert not np.any(quiet.arrays["push_force"])
     pushed = run(RunRequest("balance", "man", pushes=[Push(50.0, 90.0, 0.5, 0.25)], duration=1.5))
