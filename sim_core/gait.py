@@ -77,22 +77,22 @@ def contacts(traj: Trajectory, t_from: float = 0.0) -> list[Contact]:
     return sorted(found, key=lambda c: c.start)
 
 
-def gait_metrics(traj: Trajectory, window: float = 10.0) -> dict:
-    """Gait over the last ``window`` seconds (or the whole run if shorter than twice that):
+def gait_metrics(traj: Trajectory, window: float = 10.0, until: float | None = None) -> dict:
+    """Gait over the last ``window`` seconds before ``until`` (a fall; default the end of the run):
     mean speed (m/s, mean horizontal COM speed), step frequency (steps/s: touchdowns of either
     foot per second), step length (m: mean speed / step frequency, as in Fig. 12), stance/step
     (%: contact time of a foot over the time between successive touchdowns), flight time,
     and the alternation of feet."""
     a = traj.arrays
     time = a["time"]
-    t_end = float(time[-1])
+    t_end = float(time[-1]) if until is None else min(float(until), float(time[-1]))
     t_from = max(0.0, t_end - window)
-    sel = time >= t_from
+    sel = (time >= t_from) & (time <= t_end)
     speed = np.linalg.norm(a["com_vel"][sel, :2], axis=1)
     xy = a["com"][sel, :2]
     travelled = float(np.sum(np.linalg.norm(np.diff(xy, axis=0), axis=1)))
     mean_speed = travelled / max(float(time[sel][-1] - time[sel][0]), 1e-9)
-    steps = [c for c in contacts(traj) if c.start >= t_from]
+    steps = [c for c in contacts(traj) if t_from <= c.start and c.end <= t_end]
     result = {
         "window_s": float(t_end - t_from),
         "mean_speed": mean_speed,

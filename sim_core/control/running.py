@@ -219,10 +219,11 @@ class Running(Behaviour):
             metrics.pop(key, None)                   # standing-skill metrics, meaningless in a run
         a = trajectory.arrays
         params = trajectory.meta["params"]
-        gait = gait_metrics(trajectory)
+        gait = gait_metrics(trajectory, until=metrics["fall_time"])
         metrics["gait"] = gait
         speed = np.linalg.norm(a["com_vel"][:, :2], axis=1)
-        reached = np.nonzero(speed >= 0.9 * params["speed"])[0]
+        upright = a["time"] < (metrics["fall_time"] if metrics["fell"] else np.inf)
+        reached = np.nonzero((speed >= 0.9 * params["speed"]) & upright)[0]
         metrics["time_to_90pct_speed"] = float(a["time"][reached[0]]) if len(reached) else None
         metrics["stride_attitude_variation"] = stride_attitude_variation(trajectory, t_from=max(0.0, a["time"][-1] - 10.0))
         path = _path_for(params)
@@ -258,6 +259,7 @@ class Running(Behaviour):
         self.roll_goal = 0.0
         self.previous_goal = {}
         self.speed_trim = 0.0
+        self.lateral_drift = 0.0
         d = self.ctx.data
         vx, vy, _ = d.subtree_linvel[self.pelvis].tolist()
         if math.hypot(vx, vy) > FLYING_START_SPEED:
@@ -366,6 +368,7 @@ class Running(Behaviour):
         # ACCEL_MARGIN above the current speed
         speed_cmd = min(p["speed"], speed_now + ACCEL_MARGIN)
         vxd, vyd = speed_cmd * ch, speed_cmd * sh
+        self.lateral_drift += DRIFT_FILTER / self.control_rate * ((-sh * vx + ch * vy) - self.lateral_drift)
 
         targets = self.targets
         a = self.active
@@ -493,7 +496,7 @@ class Running(Behaviour):
 
         # ---- idle leg: shortened, hip mirroring the active hip (eqs. 3-4)
         if state != START:
-            self._idle_leg(t, p, state, ji, i, hy_goal, hx_goal, pitch, speed_now)
+            self._idle_leg(t, p, state, ji, i, hy_goal, hx_goal, pitch, speed_now, pitch_rate)
 
         # ---- arms (eq. 5): each shoulder swings against the opposite hip; elbows cycle with it
         k_arm = p["arm_swing"]
@@ -536,6 +539,11 @@ class Running(Behaviour):
         back = PLACE_BACK * min(1.0, math.hypot(vx, vy) / PLACE_BACK_SPEED) + self.speed_trim
         x_hh = 0.5 * (ts * vx - ch * lf) + p["speed_gain"] * (vx - vxd) - back * ch          # eq. 1
         y_hh = 0.5 * (ts * vy - sh * lf) + p["speed_gain"] * (vy - vyd) - back * sh          # eq. 2
+        # a sideways drift (the sway of each step averaged out over about a stride) is corrected
+        # harder than eq. 2's k does
+        lateral = self.lateral_drift
+        x_hh -= sh * LATERAL_GAIN * lateral
+        y_hh += ch * LATERAL_GAIN * lateral
         inward = FOOT_INWARD if a == 0 else -FOOT_INWARD                          # right foot lands left of its hip
         x_hh -= sh * inward
         y_hh += ch * inward
@@ -570,7 +578,7 @@ class Running(Behaviour):
         targets[ja["mt"]] = 0.0
         return targets[ja["hy"]], targets[ja["hx"]]
 
-    def _idle_leg(self, t, p, state, ji, i, hy_goal, hx_goal, pitch, speed_now):
+    def _idle_leg(self, t, p, state, ji, i, hy_goal, hx_goal, pitch, speed_now, pitch_rate):
         """Eqs. 3-4: the idle hip mirrors the active hip about their lift-off angles, shortened
         (knee folded, ankle flexed) so the toe clears the ground; it is kept on schedule to be
         forward by the end of stance and unfolds its knee while the active leg thrusts."""
@@ -583,6 +591,10 @@ class Running(Behaviour):
             hy_idle = min(hy_idle, schedule)
         side = 1.0 if i == 0 else -1.0                  # +x adducts the right hip, abducts the left
         hx_idle = side * max(-IDLE_ABDUCTION, min(IDLE_ADDUCTION, side * hx_idle))
+        if state == FLIGHT:
+            # in the air the body's angular momentum is fixed: swinging the idle leg back
+            # pitches the trunk back (and forward, forward) - the only pitch control there is
+            hy_idle += IDLE_PITCH_GAIN * (pitch - p["stance_pitch"]) + IDLE_PITCH_DAMP * pitch_rate
         targets[ji["hy"]] = max(-1.3, min(0.5, hy_idle))
         # a slow runner folds the idle leg less (people jog with the foot low)
         idle_knee = min(p["idle_knee"], max(IDLE_KNEE_MIN, IDLE_KNEE_PER_SPEED * speed_now))
@@ -612,9 +624,9 @@ def _path_for(p: dict):
     return None
 
 
-def _first_time_on_path(a: dict, path: np.ndarray, within: float = 0.5) -> float:
-    """The deviation is measured once the runner is up to speed along the path (from the first
-    time it is running and within ``within`` m of it), not while it accelerates from the stand."""
+def _first_time_on_path(a: dict, path: np.ndarray) -> float:
+    """The deviation is measured once the runner is running (faster than 2 m/s), not while it
+    leans and accelerates out of the stand."""
     speed = np.linalg.norm(a["com_vel"][:, :2], axis=1)
     moving = np.nonzero(speed > 2.0)[0]
     return float(a["time"][moving[0]]) if len(moving) else float(a["time"][-1])
@@ -661,6 +673,8 @@ SPEED_TRIM_GAIN = 0.0101       # m of placement trim per m/s of speed error, per
 SPEED_TRIM_MAX = 0.15
 PLACE_BACK = 0.187
 PLACE_BACK_SPEED = 3.0       # m/s above which the full PLACE_BACK applies
+DRIFT_FILTER = 2.0            # 1/s: low-pass of the sideways speed (about a stride)
+LATERAL_GAIN = 0.1            # s: extra sideways placement per m/s of sideways speed error
 PLACEMENT_LIMIT = 0.6         # the hip-to-heel distance on the ground is at most this share of the leg
 HIP_YAW_LIMIT = 0.4           # rad
 ACCEL_MARGIN = 0.231            # m/s: the speed command is at most this above the current speed
@@ -679,6 +693,8 @@ IDLE_UNFOLD_KNEE = 1.15        # rad: idle knee flexion at the end of the unfold
 IDLE_ANKLE = -0.2
 IDLE_KNEE_MIN = 0.6           # rad: idle knee flexion of a slow (starting) runner
 IDLE_KNEE_PER_SPEED = 0.403    # rad per m/s: the idle knee folds more the faster the run
+IDLE_PITCH_GAIN = 4.0         # idle hip extension per radian of trunk pitch error, in flight
+IDLE_PITCH_DAMP = 0.3         # ... per rad/s of pitch rate
 IDLE_ABDUCTION = 0.15
 IDLE_ADDUCTION = -0.0573
 FF_MAX = 12.0                 # rad/s: cap on a target's rate used as feed-forward
