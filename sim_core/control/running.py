@@ -57,7 +57,6 @@ FLIGHT, LOADING, HEEL, HEEL_TOE, TOE, UNLOADING, START = range(7)
 STATE_NAMES = ("flight", "loading", "heel", "heel_toe", "toe", "unloading", "start")
 
 CONTACT_HEIGHT = 0.004      # m: a foot contact sphere this close to the ground touches it
-MIRROR_ACTUAL = False
 FLYING_START_SPEED = 1.0    # m/s: a run that starts moving faster than this starts in flight
 FLYING_START_STANCE = 0.22  # s: expected stance time of its first step
 MIN_FLIGHT = 0.02           # s: a touchdown of the new active leg is not taken before this
@@ -255,11 +254,13 @@ class Running(Behaviour):
         self.knee_touchdown = 0.3
         self.ankle_touchdown = 0.0
         self.ankle_flat = 0.0
-        self.heading_goal = self.params["facing"]
+        m_ = self.ctx.data.xmat[self.pelvis]
+        self.heading_goal = math.atan2(m_[3], m_[0])     # turns from where the body faces, gradually
         self.roll_goal = 0.0
         self.previous_goal = {}
         self.speed_trim = 0.0
         self.lateral_drift = 0.0
+        self.turn_rate = 0.0
         d = self.ctx.data
         vx, vy, _ = d.subtree_linvel[self.pelvis].tolist()
         if math.hypot(vx, vy) > FLYING_START_SPEED:
@@ -360,7 +361,8 @@ class Running(Behaviour):
         turn = max(-max_turn, min(max_turn, _wrap(goal - self.heading_goal)))
         self.heading_goal = _wrap(self.heading_goal + turn)
         turn_rate = turn * self.control_rate
-        roll_target = -p["lean"] * math.atan(speed_now * turn_rate / GRAVITY)
+        self.turn_rate += ROLL_FILTER * (turn_rate - self.turn_rate)
+        roll_target = -p["lean"] * math.atan(speed_now * self.turn_rate / GRAVITY)
         self.roll_goal += ROLL_FILTER * (roll_target - self.roll_goal)
         heading = self.heading_goal
         ch, sh = math.cos(heading), math.sin(heading)
@@ -443,8 +445,6 @@ class Running(Behaviour):
             hy_goal, hx_goal = targets[ja["hy"]], targets[ja["hx"]]
         elif state == FLIGHT:
             hy_goal, hx_goal = self._place_foot(t, p, a, ja, m, pitch, yaw, heading, ch, sh, vx, vy, vz, vxd, vyd)
-            if MIRROR_ACTUAL:
-                hy_goal, hx_goal = q[ja["hy"]], q[ja["hx"]]
         else:
             # stance: the hip servos the body attitude (roll, pitch, yaw) as a torque on the
             # pelvis, net of the idle hip's torque (so the swinging leg does not tip the body)
@@ -541,9 +541,12 @@ class Running(Behaviour):
         y_hh = 0.5 * (ts * vy - sh * lf) + p["speed_gain"] * (vy - vyd) - back * sh          # eq. 2
         # a sideways drift (the sway of each step averaged out over about a stride) is corrected
         # harder than eq. 2's k does
-        lateral = self.lateral_drift
-        x_hh -= sh * LATERAL_GAIN * lateral
-        y_hh += ch * LATERAL_GAIN * lateral
+        # in a turn the foot lands outside the curve, so that the ground pushes the body round
+        # it (centripetal acceleration v * omega, as a share of g, times a lever in metres)
+        outward = TURN_PLACE_GAIN * math.hypot(vx, vy) * self.turn_rate / GRAVITY
+        lateral = LATERAL_GAIN * self.lateral_drift - outward
+        x_hh -= sh * lateral
+        y_hh += ch * lateral
         inward = FOOT_INWARD if a == 0 else -FOOT_INWARD                          # right foot lands left of its hip
         x_hh -= sh * inward
         y_hh += ch * inward
@@ -674,6 +677,7 @@ SPEED_TRIM_MAX = 0.15
 PLACE_BACK = 0.187
 PLACE_BACK_SPEED = 3.0       # m/s above which the full PLACE_BACK applies
 DRIFT_FILTER = 2.0            # 1/s: low-pass of the sideways speed (about a stride)
+TURN_PLACE_GAIN = 1.0         # m: outward placement per g of centripetal acceleration
 LATERAL_GAIN = 0.1            # s: extra sideways placement per m/s of sideways speed error
 PLACEMENT_LIMIT = 0.6         # the hip-to-heel distance on the ground is at most this share of the leg
 HIP_YAW_LIMIT = 0.4           # rad
