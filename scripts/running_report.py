@@ -40,14 +40,14 @@ def simulate(job):
            "path_deviation_mean": m.get("path_deviation_mean"), "path_deviation_max": m.get("path_deviation_max"),
            "stride_attitude_variation": m.get("stride_attitude_variation"), "wall_s": time.perf_counter() - started}
     a = traj.arrays
-    if name.startswith("phase"):
+    if name in ("phase 4.83", "speed 4.0"):
         dof = traj.meta["dof_names"]
         import mujoco
         model = mujoco.MjModel.from_xml_string(traj.meta["model_xml"])
         sel = a["time"] >= a["time"][-1] - 3.0
         out["hip"] = -a["qpos"][sel, model.joint("hip_r_y").qposadr[0]].tolist()     # flexion positive
         out["knee"] = a["qpos"][sel, model.joint("knee_r_y").qposadr[0]].tolist()
-    if name.startswith(("turn", "eight")):
+    if name.startswith(("turn", "eight", "circle")):
         out["xy"] = a["com"][::4, :2].tolist()
     if name.startswith("start"):
         out["t"] = a["time"][::4].tolist()
@@ -60,9 +60,10 @@ def jobs(quick: bool) -> list:
     out = [(f"speed {v}", {"speed": v}, d) for v in SPEEDS]
     out.append(("phase 4.83", {"speed": 4.83}, d))
     out.append(("start 3.5", {"speed": 3.5}, 8.0))
-    out.append(("turn 90", {"speed": 3.5, "course": 1, "turn_angle": math.pi / 2, "turn_radius": 5.0,
-                            "turn_after": 15.0}, 16.0 if quick else 20.0))
-    out.append(("eight", {"speed": 3.5, "course": 2, "turn_radius": 6.0, "turn_after": 12.0}, 30.0 if quick else 45.0))
+    out.append(("turn 90", {"speed": 3.5, "course": 1, "turn_angle": math.pi / 2, "turn_radius": 10.0,
+                            "turn_after": 25.0}, 24.0))
+    out.append(("eight", {"speed": 3.5, "course": 2, "turn_radius": 10.0, "turn_after": 25.0}, 40.0))
+    out.append(("circle 40", {"speed": 3.5, "course": 3, "turn_radius": 40.0, "turn_after": 15.0}, 24.0))
     if not quick:
         out += [(f"long {v}", {"speed": v}, 100.0) for v in (3.0, 4.5)]
     return out
@@ -98,7 +99,9 @@ def results_markdown(res: dict) -> str:
     s = res["start 3.5"]
     lines.append(f"| start from a stand into 3.5 m/s | {s['outcome']} | 90 % of 3.5 m/s reached at "
                  f"{fmt(s['time_to_90pct_speed'])} s (goal: within 5 s) |")
-    for key, label in (("turn 90", "90° left turn, radius 5 m, at 3.5 m/s"), ("eight", "figure eight, loops of radius 6 m, at 3.5 m/s")):
+    for key, label in (("turn 90", "90° left turn, radius 10 m, at 3.5 m/s"),
+                       ("eight", "figure eight, loops of radius 10 m, at 3.5 m/s"),
+                       ("circle 40", "circle of radius 40 m at 3.5 m/s")):
         r = res[key]
         lines.append(f"| {label} | {r['outcome'] if r['outcome'] == 'success' else 'fell at %.1f s' % r['fall_time']} | lateral deviation "
                      f"mean {fmt(r['path_deviation_mean'])} m, max {fmt(r['path_deviation_max'])} m (goal: mean < 0.3 m) |")
@@ -115,11 +118,13 @@ def figures(res: dict) -> None:
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     r = res["phase 4.83"]
+    if r["outcome"] != "success":                  # a fall's last seconds are no gait: use 4.0 m/s
+        r = res["speed 4.0"]
     fig, ax = plt.subplots(figsize=(4.5, 4.5))
     ax.plot(np.degrees(r["hip"]), np.degrees(r["knee"]), lw=1.0)
     ax.set_xlabel("hip flexion (deg)")
     ax.set_ylabel("knee flexion (deg)")
-    ax.set_title("Right hip vs knee, last 3 s at 4.83 m/s\n(cf. Hodgins et al. 1995, Fig. 6)", fontsize=9)
+    ax.set_title(f"Right hip vs knee, last 3 s at {r['params']['speed']} m/s\n(cf. Hodgins et al. 1995, Fig. 6)", fontsize=9)
     ax.grid(alpha=0.3)
     fig.tight_layout()
     fig.savefig(ROOT / "docs" / "running_phase.png", dpi=110)
@@ -128,14 +133,15 @@ def figures(res: dict) -> None:
     from sim_core.control.running import _path_for
     from sim_core.control.behaviour import behaviour_class
     schema = behaviour_class("running").schema
-    fig, axes = plt.subplots(1, 2, figsize=(9, 4.2))
-    for ax, key in zip(axes, ("turn 90", "eight")):
+    fig, axes = plt.subplots(1, 3, figsize=(13, 4.2))
+    for ax, key in zip(axes, ("turn 90", "eight", "circle 40")):
         path = _path_for(schema.validate(res[key]["params"]))
         xy = np.array(res[key]["xy"])
         ax.plot(path[:, 0], path[:, 1], "k--", lw=0.8, label="path")
         ax.plot(xy[:, 0], xy[:, 1], lw=1.0, label="COM")
+        r = res[key]
+        ax.set_title(f"{key}: {r['outcome']}" + ("" if r["outcome"] == "success" else f" at {r['fall_time']:.1f} s"), fontsize=9)
         ax.set_aspect("equal")
-        ax.set_title(key, fontsize=9)
         ax.legend(fontsize=7)
         ax.grid(alpha=0.3)
     fig.tight_layout()

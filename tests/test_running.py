@@ -1,0 +1,162 @@
+"""Running (Hodgins et al. 1995; Hodgins & Pollard 1997), measured off the simulation and compared
+with TARGETS.md "Running". Every run starts from the standing pose.
+
+Targets the controller does not reach yet are listed in SHORTFALLS (see docs/running.md): for
+those, a miss is reported as xfail with the measured figures in the reason, and a hit passes;
+every other case must meet its target."""
+import math
+
+import mujoco
+import numpy as np
+import pytest
+
+from sim_core.character.model import compile_model, set_standing_pose
+from sim_core.character.spec import load_character
+from sim_core.control.running_leg import RunnerLeg
+from sim_core.control.running_path import PathFollower, path_deviation, turn_path
+from sim_core.errors import ParameterError
+from sim_core.gait import HUMAN_FIG12, compare_with_human
+from sim_core.simulate import RunRequest, largest_difference, replay, run
+
+SPEED_TOLERANCE = 0.05          # TARGETS.md: mean speed over the last 10 s within 5 %
+FIG12_TOLERANCE = 0.10          # TARGETS.md: each gait figure within 10 % of the human one
+PATH_DEVIATION_GOAL = 0.3       # m, mean lateral deviation from the path
+# measured shortfalls (docs/running.md, "Limitations"): the runner falls before reaching these
+SHORTFALLS = {"speed 4.5", "speed 5.0", "100 s at 4.5", "gait 4.83", "90-degree turn", "figure eight"}
+
+
+def miss(case, message):
+    """Fail, or xfail if the case is a documented shortfall."""
+    if case in SHORTFALLS:
+        pytest.xfail(f"{case}: {message}")
+    pytest.fail(f"{case}: {message}")
+
+
+def run_running(duration, **params):
+    return run(RunRequest("running", "man", params=params, duration=duration))
+
+
+def not_fallen(traj):
+    m = traj.meta["metrics"]
+    return traj.meta["outcome"] == "success" and not m["fell"]
+
+
+# --------------------------------------------------------------------------- fast checks
+@pytest.mark.parametrize("params, words", [
+    ({"speed": 2.4}, ["speed=2.4", "[2.5, 5]"]),
+    ({"speed": 5.1}, ["speed=5.1", "[2.5, 5]"]),
+    ({"speed": float("nan")}, ["speed", "not finite"]),
+    ({"path": [[0.0, 0.0]]}, ["path", "at least 2"]),
+    ({"path": [[0.0, 0.0], [0.0, 0.0], [0.01, 0.0]]}, ["path", "degenerate"]),
+    ({"path": "0,0; 1,0"}, ["path", "degenerate"]),
+    ({"path": "0,0; a,b"}, ["path"]),
+    ({"course": 1.5}, ["course=1.5"]),
+])
+def test_bad_input_is_refused_before_simulating(params, words):
+    with pytest.raises(ParameterError) as err:
+        run(RunRequest("running", "man", params=params, duration=1.0))
+    for word in words:
+        assert word in str(err.value)
+
+
+def test_leg_inverse_kinematics_puts_the_ankle_where_asked():
+    """The closed-form leg IK of the flight controller, checked on the model's own kinematics."""
+    ch = load_character("man")
+    model, _ = compile_model(ch)
+    data = mujoco.MjData(model)
+    for side, c in (("R", "r"), ("L", "l")):
+        leg = RunnerLeg(ch, side)
+        for target in [(0.3, 0.0, -0.8), (0.1, 0.05, -0.85), (-0.2, -0.05, -0.7), (0.35, 0.1, -0.6)]:
+            set_standing_pose(model, data, ch)
+            hy, hx, knee = leg.hip_knee_for(*target)
+            for name, value in ((f"hip_{c}_y", hy), (f"hip_{c}_x", hx), (f"knee_{c}_y", knee)):
+                data.qpos[model.joint(name).qposadr[0]] = value
+            mujoco.mj_kinematics(model, data)
+            ankle = data.xpos[model.body("FOOT" + side).id] - data.xpos[model.body("ULEG" + side).id]
+            np.testing.assert_allclose(ankle, target, atol=0.01)
+
+
+def test_path_follower_heads_along_a_turn():
+    path = turn_path(math.pi / 2, 5.0, 3.0)
+    follower = PathFollower(path, lookahead=2.0)
+    assert follower.heading(0.0, 0.0) == pytest.approx(0.0, abs=1e-9)
+    for x, y in ((2.0, 0.0), (4.0, 0.0), (6.5, 0.4), (7.6, 1.5), (8.0, 3.0)):   # walked along the path
+        follower.heading(x, y)
+    assert follower.heading(8.0, 4.0) == pytest.approx(math.pi / 2, abs=0.05)
+    assert path_deviation(path, np.array([[2.0, 0.3], [8.0, 5.0]])) == pytest.approx([0.3, 0.0], abs=1e-6)
+
+
+def test_replay_of_a_run_is_bit_identical():
+    traj = run_running(2.0, speed=3.5)
+    assert largest_difference(traj, replay(traj)) == 0.0
+
+
+# --------------------------------------------------------------------------- behaviour
+@pytest.mark.parametrize("speed", [2.5, 3.0, 3.5, 4.0, 4.5, 5.0])
+def test_commanded_speed_is_held(speed):
+    """From a stand, 20 s: no fall, and the mean speed over the last 10 s within 5 %."""
+    traj = run_running(20.0, speed=speed)
+    m = traj.meta["metrics"]
+    measured = m["gait"]["mean_speed"]
+    if not not_fallen(traj):
+        miss(f"speed {speed}", f"fell at {m['fall_time']:.1f} s (mean speed before it {measured:.2f} m/s)")
+    print(f"commanded {speed} m/s: mean speed over the last 10 s {measured:.3f} m/s")
+    if abs(measured - speed) > SPEED_TOLERANCE * speed:
+        miss(f"speed {speed}", f"mean speed {measured:.3f} m/s, {100 * (measured - speed) / speed:+.1f} %")
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("speed", [3.0, 4.5])
+def test_100_s_without_falling(speed):
+    traj = run_running(100.0, speed=speed)
+    if not not_fallen(traj):
+        miss(f"100 s at {speed}", f"fell at {traj.meta['metrics']['fall_time']:.1f} s")
+
+
+def test_start_from_a_stand_into_3_5_m_s_within_5_s():
+    traj = run_running(8.0, speed=3.5)
+    m = traj.meta["metrics"]
+    assert not_fallen(traj)
+    print(f"90 % of 3.5 m/s reached {m['time_to_90pct_speed']} s after the start")
+    assert m["time_to_90pct_speed"] is not None and m["time_to_90pct_speed"] <= 5.0
+
+
+def test_gait_at_4_83_m_s_against_fig_12():
+    traj = run_running(20.0, speed=4.83)
+    if not not_fallen(traj):
+        miss("gait 4.83", f"fell at {traj.meta['metrics']['fall_time']:.1f} s")
+    comparison = compare_with_human(traj.meta["metrics"]["gait"], "man")
+    for key, row in comparison.items():
+        print(f"{key}: simulated {row['simulated']:.3f}, human {row['human']} (Fig. 12), "
+              f"error {100 * row['relative_error']:+.1f} %")
+    worst = max(abs(row["relative_error"]) for row in comparison.values())
+    if worst > FIG12_TOLERANCE:
+        miss("gait 4.83", f"off the human figures by up to {100 * worst:.0f} % (goal 10 %)")
+
+
+@pytest.mark.parametrize("course, params, duration", [
+    ("90-degree turn", dict(course=1, turn_angle=math.pi / 2, turn_radius=10.0, turn_after=25.0), 24.0),
+    ("figure eight", dict(course=2, turn_radius=10.0, turn_after=25.0), 40.0),
+])
+def test_steering_along_a_path(course, params, duration):
+    traj = run_running(duration, speed=3.5, **params)
+    m = traj.meta["metrics"]
+    deviation = f"lateral deviation mean {m['path_deviation_mean']:.3f} m, max {m['path_deviation_max']:.3f} m"
+    print(f"{course}: {deviation}")
+    if not not_fallen(traj):
+        miss(course, f"fell at {m['fall_time']:.1f} s; {deviation}")
+    if m["path_deviation_mean"] >= PATH_DEVIATION_GOAL:
+        miss(course, f"{deviation} (goal: mean < 0.3 m)")
+
+
+def test_a_gentle_curve_is_followed():
+    """What steering does work: a circle of 40 m radius at 3.5 m/s (curvature 0.025 1/m)."""
+    traj = run_running(24.0, speed=3.5, course=3, turn_radius=40.0, turn_after=15.0)
+    m = traj.meta["metrics"]
+    assert not_fallen(traj), f"fell at {m['fall_time']} s"
+    print(f"circle r = 40 m: lateral deviation mean {m['path_deviation_mean']:.3f} m, max {m['path_deviation_max']:.3f} m")
+    assert m["path_deviation_mean"] < PATH_DEVIATION_GOAL
+
+
+def test_human_figures_are_the_papers():
+    assert HUMAN_FIG12["man"] == {"speed": 4.83, "step_frequency": 2.92, "step_length": 1.66, "stance_fraction": 57.9}
