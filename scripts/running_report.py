@@ -45,7 +45,7 @@ def simulate(job):
         import mujoco
         model = mujoco.MjModel.from_xml_string(traj.meta["model_xml"])
         sel = a["time"] >= a["time"][-1] - 3.0
-        out["hip"] = -a["qpos"][sel, model.joint("hip_r_y").qposadr[0]].tolist()     # flexion positive
+        out["hip"] = (-a["qpos"][sel, model.joint("hip_r_y").qposadr[0]]).tolist()    # flexion positive
         out["knee"] = a["qpos"][sel, model.joint("knee_r_y").qposadr[0]].tolist()
     if name.startswith(("turn", "eight", "circle")):
         out["xy"] = a["com"][::4, :2].tolist()
@@ -57,15 +57,14 @@ def simulate(job):
 
 def jobs(quick: bool) -> list:
     d = 14.0 if quick else 20.0
-    out = [(f"speed {v}", {"speed": v}, d) for v in SPEEDS]
+    out = [] if quick else [(f"long {v}", {"speed": v}, 100.0) for v in (3.0, 4.5)]   # longest first
+    out += [(f"speed {v}", {"speed": v}, d) for v in SPEEDS]
     out.append(("phase 4.83", {"speed": 4.83}, d))
     out.append(("start 3.5", {"speed": 3.5}, 8.0))
     out.append(("turn 90", {"speed": 3.5, "course": 1, "turn_angle": math.pi / 2, "turn_radius": 10.0,
                             "turn_after": 25.0}, 24.0))
     out.append(("eight", {"speed": 3.5, "course": 2, "turn_radius": 10.0, "turn_after": 25.0}, 40.0))
     out.append(("circle 40", {"speed": 3.5, "course": 3, "turn_radius": 40.0, "turn_after": 15.0}, 24.0))
-    if not quick:
-        out += [(f"long {v}", {"speed": v}, 100.0) for v in (3.0, 4.5)]
     return out
 
 
