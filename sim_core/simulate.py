@@ -150,7 +150,8 @@ def run(request: RunRequest, progress: Callable[[float], None] | None = None,
         cancelled: Callable[[], bool] | None = None) -> Trajectory:
     """Validate, simulate and return the trajectory (nothing is written to disk here)."""
     character, cls, params, duration = request.validated()
-    model, xml = compile_model(character, request.world, request.strength)
+    world = cls.scene(params, request.world)
+    model, xml = compile_model(character, world, request.strength)
     data = mujoco.MjData(model)
     set_standing_pose(model, data, character)
     request.start.apply(data)
@@ -178,8 +179,8 @@ def run(request: RunRequest, progress: Callable[[float], None] | None = None,
         log.tick = tick
         t = data.time
         pushes.apply(t, 0.5 * tick_time)
-        if request.world.tilting(t):
-            log.set_flat(model.opt.gravity, "opt.gravity", request.world.gravity(t))
+        if world.tilting(t):
+            log.set_flat(model.opt.gravity, "opt.gravity", world.gravity(t))
         refresh_kinematics(model, data)
         if tick == 0:
             behaviour.start(t)
@@ -192,11 +193,14 @@ def run(request: RunRequest, progress: Callable[[float], None] | None = None,
             raise UnstableSimulation(
                 f"the simulation became numerically unstable at t={t:.3f} s (accelerations blew "
                 f"up); nothing was written - lower the gains or the strength, or shorten the step")
+        if behaviour.run_complete:
+            control = control[:tick + 1]
+            break
         if progress and tick % 200 == 0:
             progress(tick / n_ticks)
         if cancelled and tick % 50 == 0 and cancelled():
             raise Cancelled("run cancelled; nothing was written")
-    log.tick = n_ticks
+    log.tick = len(control)
     refresh_kinematics(model, data)
     recorder.record(data)
     loop_seconds = time.perf_counter() - loop_start
@@ -208,9 +212,10 @@ def run(request: RunRequest, progress: Callable[[float], None] | None = None,
     arrays["body_names"] = np.array([model.body(i).name for i in recorder.bodies])
     meta = {
         "model_xml": xml, "character": character.name, "behaviour": cls.name, "params": params,
-        "duration": duration, "pushes": [p.to_dict() for p in request.pushes],
-        "world": {"slope": request.world.slope, "slope_axis": request.world.slope_axis,
-                  "extra_mass": request.world.extra_mass},
+        "duration": duration if len(control) == n_ticks else float(len(control) * tick_time),
+        "ended_early": len(control) < n_ticks, "pushes": [p.to_dict() for p in request.pushes],
+        "world": {"slope": world.slope, "slope_axis": world.slope_axis,
+                  "extra_mass": world.extra_mass, "platform": world.platform},
         "start_state": {"height": request.start.height, "velocity": list(request.start.velocity)},
         "strength": request.strength, "total_mass": float(model.body_subtreemass[1]), "timestep": model.opt.timestep, "steps_per_tick": steps_per_tick,
         "control_rate": cls.control_rate, "phase_events": behaviour.phase_events,

@@ -28,6 +28,11 @@ ARMATURE = 0.01            # kg m^2 on every hinge: numerical regularisation of 
 FOOT_FRICTION = 1.0
 BODY_FRICTION = 0.8
 SLOPE_RAMP_PER_DEGREE = 0.15   # s per degree: the ground tilts at ~6.7 deg/s
+PLATFORM_HEEL_GAP = 0.02   # m: the platform's edge is this far behind the heels
+PLATFORM_LENGTH, PLATFORM_WIDTH, PLATFORM_THICKNESS = 5.0, 2.0, 0.3     # m (FINA: >= 6 x 2 m)
+# thigh against belly: the rigid shapes would stop a pike or tuck well before a human's soft
+# tissue does (thighs on the chest); the hip's range of motion limits the flexion instead
+SOFT_TISSUE_PAIRS = [(f"ULEG{side}", chest) for side in "RL" for chest in ("CHEST3", "CHEST2", "CHEST1")]
 CONTACT_GROUP = 1          # contype/conaffinity bit for character and world geoms
 
 
@@ -37,12 +42,19 @@ class World:
     named by ``slope_axis``: 'x+' means the ground rises towards +X. As in Wooten §7.3 the
     ground starts level and tilts to the slope along a Hermite curve over ``slope_ramp``
     seconds from ``slope_start``. The tilt is implemented by turning gravity, which is exactly
-    equivalent for a flat plane; each change is a logged model edit."""
+    equivalent for a flat plane; each change is a logged model edit.
+
+    ``platform`` > 0 makes a diving platform: the character stands on a platform whose top is
+    the z = 0 plane (so every standing controller works unchanged) and whose edge is just behind
+    the heels (the -X side, where a diver standing backwards has the water); the water surface
+    is ``platform`` metres below. Water is not simulated: the dive ends at entry (Wooten §8.2.1
+    lets entering the water end the run)."""
     slope: float = 0.0
     slope_axis: str = "x+"
     extra_mass: dict[str, float] = field(default_factory=dict)   # body -> added kg (backpack)
     slope_start: float = 0.5
     slope_ramp: float | None = None            # s; default SLOPE_RAMP_PER_DEGREE per degree
+    platform: float = 0.0                      # m: height of a diving platform above the water (0 = none)
 
     @property
     def ramp_time(self) -> float:
@@ -91,7 +103,16 @@ def build_mjspec(character: CharacterSpec, world: World | None = None, strength:
     spec.compiler.autolimits = True
     spec.compiler.degree = False          # every angle in the spec is in radians
 
-    ground = spec.worldbody.add_geom(name="ground", type=mujoco.mjtGeom.mjGEOM_PLANE, size=[0, 0, 0.05])
+    if world.platform > 0:
+        edge = min(c["pos"][0] for c in character.body("FOOTR")["contacts"]) - PLATFORM_HEEL_GAP
+        ground = spec.worldbody.add_geom(name="ground", type=mujoco.mjtGeom.mjGEOM_BOX,
+                                         size=[PLATFORM_LENGTH / 2, PLATFORM_WIDTH / 2, PLATFORM_THICKNESS / 2],
+                                         pos=[edge + PLATFORM_LENGTH / 2, 0, -PLATFORM_THICKNESS / 2])
+        water = spec.worldbody.add_geom(name="water", type=mujoco.mjtGeom.mjGEOM_PLANE, size=[20, 20, 0.05],
+                                        pos=[0, 0, -world.platform], rgba=[0.2, 0.4, 0.8, 0.5])
+        water.contype = water.conaffinity = 0               # seen, not felt: the dive ends at entry
+    else:
+        ground = spec.worldbody.add_geom(name="ground", type=mujoco.mjtGeom.mjGEOM_PLANE, size=[0, 0, 0.05])
     ground.friction = [FOOT_FRICTION, 0.005, 0.0001]
     ground.contype = ground.conaffinity = CONTACT_GROUP
 
@@ -187,6 +208,7 @@ def _exclude_touching_pairs(spec: mujoco.MjSpec, character: CharacterSpec) -> No
             continue
         b1, b2 = model.geom_bodyid[c.geom1], model.geom_bodyid[c.geom2]
         pairs.add(tuple(sorted((model.body(b1).name, model.body(b2).name))))
+    pairs |= {tuple(sorted(pair)) for pair in SOFT_TISSUE_PAIRS}
     for a, b in sorted(pairs):
         spec.add_exclude(bodyname1=a, bodyname2=b)
 

@@ -77,6 +77,18 @@ class Behaviour:
     def event(self, t: float, name: str) -> None:
         self.phase_events.append((float(t), name))
 
+    @classmethod
+    def scene(cls, params: dict[str, float], world):
+        """The world this behaviour runs in, given the requested one (e.g. a dive adds its
+        platform). Default: the requested world."""
+        return world
+
+    @property
+    def run_complete(self) -> bool:
+        """True when the skill has ended before the requested duration (e.g. a dive at water
+        entry); the run stops there."""
+        return False
+
     def check_feasible(self) -> None:
         """Raise ParameterError before simulating if the request cannot be done."""
 
