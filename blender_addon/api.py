@@ -14,7 +14,7 @@ from __future__ import annotations
 import sys
 from typing import Callable
 
-from . import bake, rig
+from . import bake, rig, scenery
 
 
 def parse_params(behaviour: str, params) -> dict[str, float]:
@@ -78,6 +78,7 @@ def bake_result(context, obj, trajectory, start_frame: int | None = None, fit_sc
     fps = bake.scene_fps(scene)
     start = scene.frame_start if start_frame is None else int(start_frame)
     action = bake.bake_trajectory(obj, trajectory, fps=fps, start_frame=start)
+    scenery.add_scenery(context, obj, trajectory)
     if fit_scene_range:
         scene.frame_start = start
         scene.frame_end = int(round(action.frame_range[1]))

@@ -26,10 +26,13 @@ def main(argv=None) -> int:
     parser.add_argument("--start", type=float, default=0.0, help="first picture at this time (s)")
     parser.add_argument("--end", type=float, default=None, help="last picture at this time (s)")
     parser.add_argument("--size", type=int, default=260, help="height of one picture in pixels")
+    parser.add_argument("--follow", action="store_true",
+                        help="the camera follows the COM (dives: the body falls 10 m); default: fixed")
     parser.add_argument("--out", required=True)
     args = parser.parse_args(argv)
 
     import bpy
+    import numpy as np
     from PIL import Image
 
     from blender_addon import api
@@ -46,7 +49,8 @@ def main(argv=None) -> int:
     times = [args.start + (end - args.start) * k / max(args.frames - 1, 1) for k in range(args.frames)]
 
     # ground, light, a side camera looking at the character's path (the sim's X is Blender's -Y)
-    bpy.ops.mesh.primitive_plane_add(size=40)
+    if not trajectory.meta.get("world", {}).get("platform"):     # a dive brings its platform and water
+        bpy.ops.mesh.primitive_plane_add(size=40)
     sun = bpy.data.objects.new("sun", bpy.data.lights.new("sun", type="SUN"))
     sun.data.energy = 3.0
     sun.rotation_euler = (math.radians(50), 0, math.radians(30))
@@ -69,8 +73,13 @@ def main(argv=None) -> int:
 
     pictures = []
     with tempfile.TemporaryDirectory() as tmp:
+        com = trajectory.arrays["com"]
+        sim_time = trajectory.arrays["time"]
         for k, t in enumerate(times):
             scene.frame_set(scene.frame_start + int(round(t * scene.render.fps)))
+            if args.follow:          # sim (x, y, z) -> Blender (y, -x, z)
+                c = com[min(int(np.searchsorted(sim_time, t)), len(com) - 1)]
+                camera.location = (4.2, -float(c[0]), float(c[2]))
             scene.render.filepath = str(Path(tmp) / f"f{k:02d}.png")
             bpy.ops.render.render(write_still=True)
             pictures.append(Image.open(scene.render.filepath).convert("RGB"))

@@ -1,0 +1,45 @@
+"""The simulated world's fixed objects in the Blender scene, so a baked skill is seen where it
+happened: a dive's platform and water surface. Objects are made once per scene and named
+``SimAthletics platform`` / ``SimAthletics water``; an existing object of that name is reused,
+never replaced (the user may have moved or restyled it)."""
+from __future__ import annotations
+
+import bpy
+import mujoco
+import numpy as np
+from mathutils import Matrix
+
+from .axes import SIM_TO_BLENDER
+
+PLATFORM_NAME, WATER_NAME = "SimAthletics platform", "SimAthletics water"
+
+
+def add_scenery(context, armature, trajectory) -> list:
+    """Add the platform and water of ``trajectory``'s world (if any), in the armature object's
+    frame. Returns the objects made."""
+    platform = float(trajectory.meta.get("world", {}).get("platform", 0.0) or 0.0)
+    if platform <= 0:
+        return []
+    model = mujoco.MjModel.from_xml_string(trajectory.meta["model_xml"])
+    ground = model.geom("ground").id
+    made = []
+    if PLATFORM_NAME not in bpy.data.objects:
+        made.append(_box(context, PLATFORM_NAME, model.geom_pos[ground], model.geom_size[ground], armature))
+    if WATER_NAME not in bpy.data.objects:
+        made.append(_box(context, WATER_NAME, np.array([0.0, 0.0, -platform - 0.005]),
+                         np.array([20.0, 20.0, 0.005]), armature))
+    return made
+
+
+def _box(context, name: str, centre_sim: np.ndarray, half_size_sim: np.ndarray, armature):
+    """An axis-aligned box given in the simulation frame, placed in the armature's frame."""
+    mesh = bpy.data.meshes.new(name)
+    corners = np.array([[sx, sy, sz] for sx in (-1, 1) for sy in (-1, 1) for sz in (-1, 1)], dtype=float)
+    points = (centre_sim + corners * half_size_sim) @ SIM_TO_BLENDER.T
+    faces = [(0, 1, 3, 2), (4, 6, 7, 5), (0, 4, 5, 1), (2, 3, 7, 6), (0, 2, 6, 4), (1, 5, 7, 3)]
+    mesh.from_pydata([tuple(p) for p in points], [], faces)
+    mesh.update()
+    obj = bpy.data.objects.new(name, mesh)
+    obj.matrix_world = armature.matrix_world @ Matrix.Identity(4)
+    context.scene.collection.objects.link(obj)
+    return obj

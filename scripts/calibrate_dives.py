@@ -1,0 +1,180 @@
+"""Calibrate the take-off of each platform dive by simulation and write the table the dive
+behaviour reads (rigs/tuned/dives_<character>.json) - the role of the hand tuning Wooten
+describes in §8.2.1 ("about five hours of effort" per dive), done by a search.
+
+For each dive of the character the search (cross-entropy method over the five leap settings:
+crouch height, torso pitch, backward COM offset, lift-off hip angle, arm swing) minimises
+
+    score = 10 * hit_platform + 10 * |somersaults - wanted| + 10 * |twists - wanted|
+            + max(0, entry angle from vertical - 5 deg) / 10 deg          (no water entry: 100)
+
+with every quantity read off the simulated dive. The table also records the largest take-off
+angular momentum seen per dive group without touching the platform, which the dive's
+feasibility check uses to refuse dives the flight cannot hold.
+
+    python3 scripts/calibrate_dives.py                      # both characters, their dives
+    python3 scripts/calibrate_dives.py --character woman --iterations 4 --population 10
+"""
+from __future__ import annotations
+
+import argparse
+import json
+import time
+
+import numpy as np
+
+from sim_core.control.dive import GROUPS, TUNED_DIR, Dive
+from sim_core.errors import ParameterError
+from sim_core.simulate import RunRequest, run
+
+DIVES = {   # Wooten §8.2.1: the man's two and the woman's two 10 m dives
+    "man": [dict(group=0, somersaults=1.5, twists=0.0, position=1),      # inward 1 1/2 pike
+            dict(group=1, somersaults=1.5, twists=0.5, position=2)],     # back 1 1/2 with 1/2 twist
+    "woman": [dict(group=0, somersaults=2.5, twists=0.0, position=1),    # inward 2 1/2 pike
+              dict(group=1, somersaults=1.5, twists=2.5, position=2)],   # back 1 1/2 with 2 1/2 twists
+}
+SPACE = {  # name: (low, high) per group
+    "crouch_height": {"inward": (0.5, 0.8), "back": (0.5, 0.8)},
+    "crouch_pitch": {"inward": (0.0, 0.6), "back": (0.0, 0.6)},
+    "com_offset": {"inward": (-0.25, -0.05), "back": (-0.25, -0.05)},
+    "liftoff_hip": {"inward": (-2.0, -0.6), "back": (0.3, 1.6)},
+    "arm_swing": {"inward": (-1.0, 3.2), "back": (1.0, 3.2)},
+    "twist_lead": {"inward": (0.3, 1.4), "back": (0.3, 1.4)},      # twisting dives only
+}
+
+
+class Capacity:
+    """Disables the feasibility check while calibrating (the check reads this table)."""
+
+    def __enter__(self):
+        self.saved = Dive.rotation_capacity
+        Dive.rotation_capacity = lambda self: 99.0
+
+    def __exit__(self, *exc):
+        Dive.rotation_capacity = self.saved
+
+
+def evaluate(character: str, dive: dict, settings: dict) -> tuple[float, dict]:
+    params = dict(dive, low_level=1, **settings)
+    try:
+        trajectory = run(RunRequest("dive", character, params=params, duration=4.5))
+    except ParameterError:
+        return 100.0, {}
+    m = dict(trajectory.meta["metrics"], outcome=trajectory.meta["outcome"])
+    if not m.get("entered_water"):
+        return 100.0, m
+    score = (10.0 * m["hit_platform"] + 10.0 * abs(m["somersaults"] - dive["somersaults"])
+             + 10.0 * abs(m["twists"] - dive["twists"]) + max(0.0, m["entry_angle_from_vertical_deg"] - 5.0) / 10.0)
+    if m["somersault_direction"] != ("forward" if dive["group"] == 0 else "backward"):
+        score += 10.0
+    return score, m
+
+
+def search(character: str, dive: dict, iterations: int, population: int, seed: int, start: dict | None = None) -> dict:
+    """Cross-entropy search from the middle of the space, or from ``start`` (the table's present
+    settings for this dive) with a narrower spread; then ``refine``."""
+    group = GROUPS[dive["group"]]
+    names = [n for n in SPACE if n != "twist_lead" or dive["twists"]]
+    low = np.array([SPACE[n][group][0] for n in names])
+    high = np.array([SPACE[n][group][1] for n in names])
+    rng = np.random.default_rng(seed)
+    mean, std = 0.5 * (low + high), 0.35 * (high - low)
+    if start and all(n in start for n in names):
+        mean, std = np.array([start[n] for n in names]), 0.12 * (high - low)
+    best = (np.inf, None, None)
+    momentum = 0.0
+    for iteration in range(iterations):
+        samples = np.clip(rng.normal(mean, std, size=(population, len(names))), low, high)
+        if iteration == 0 and best[1] is None:
+            samples[0] = mean
+        scored = []
+        for x in samples:
+            settings = {n: round(float(v), 4) for n, v in zip(names, x)}
+            score, m = evaluate(character, dive, settings)
+            scored.append((score, x))
+            if m.get("entered_water") and not m.get("hit_platform"):
+                momentum = max(momentum, abs(m["takeoff_angular_momentum"]))
+            if score < best[0]:
+                best = (score, settings, m)
+        scored.sort(key=lambda s: s[0])
+        elite = np.array([x for _, x in scored[: max(2, population // 3)]])
+        mean, std = elite.mean(axis=0), np.maximum(elite.std(axis=0), 0.03 * (high - low))
+        m = best[2] or {}
+        print(f"  {character} {group} iteration {iteration + 1}/{iterations}: best score {best[0]:.3f} "
+              f"({m.get('outcome')}, {m.get('somersaults', 0):.2f} somersaults, {m.get('twists', 0):.2f} twists, "
+              f"entry {m.get('entry_angle_from_vertical_deg', 0):.0f} deg)", flush=True)
+        if m.get("outcome") == "success" and m.get("entry_angle_from_vertical_deg", 90) < 8.0:
+            break
+    best = refine(character, dive, best, names, low, high)
+    score, settings, m = best
+    keep = ("outcome", "somersaults", "twists", "entry_angle_from_vertical_deg", "takeoff_angular_momentum",
+            "flight_time", "angular_momentum_drift", "hit_platform")
+    return {**dive, "settings": settings, "score": round(float(score), 4),
+            "measured": {k: m.get(k) for k in keep}, "largest_momentum_clear": round(momentum, 2)}
+
+
+REFINE = {True: ("liftoff_hip", "twist_lead"), False: ("liftoff_hip", "com_offset")}
+REFINE_STEPS = 5
+
+
+def refine(character: str, dive: dict, best: tuple, names: list, low, high) -> tuple:
+    """A grid over the two settings the dive is most sensitive to (the lift-off hip angle, and
+    the twist lead or the lean), around the search's best, +-15 % of their ranges; keeps the cell
+    whose own score plus its neighbours' mean is lowest, so that the table holds a setting that
+    still works when the state at take-off differs a little."""
+    first, second = REFINE[bool(dive["twists"])]
+    i, j = names.index(first), names.index(second)
+    centre = best[1]
+    axes = [np.clip(centre[n] + np.linspace(-0.15, 0.15, REFINE_STEPS) * (high[k] - low[k]), low[k], high[k])
+            for n, k in ((first, i), (second, j))]
+    grid = np.full((REFINE_STEPS, REFINE_STEPS), np.inf)
+    runs = {}
+    for a, va in enumerate(axes[0]):
+        for b, vb in enumerate(axes[1]):
+            settings = dict(centre, **{first: round(float(va), 4), second: round(float(vb), 4)})
+            grid[a, b], m = evaluate(character, dive, settings)
+            runs[a, b] = (grid[a, b], settings, m)
+    robust = np.full_like(grid, np.inf)
+    for a in range(REFINE_STEPS):
+        for b in range(REFINE_STEPS):
+            around = grid[max(a - 1, 0):a + 2, max(b - 1, 0):b + 2]
+            robust[a, b] = grid[a, b] + np.mean(around)
+    a, b = np.unravel_index(np.argmin(robust), robust.shape)
+    print(f"  {character} {GROUPS[dive['group']]} refined over {first} x {second}: "
+          f"{np.sum(grid < 2.0)} of {grid.size} cells score < 2; chosen score {grid[a, b]:.3f}", flush=True)
+    return runs[a, b]
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--character", choices=sorted(DIVES), action="append")
+    parser.add_argument("--iterations", type=int, default=5)
+    parser.add_argument("--population", type=int, default=12)
+    parser.add_argument("--seed", type=int, default=1)
+    parser.add_argument("--fresh", action="store_true", help="search from the middle of the space, not from the table")
+    parser.add_argument("--only", type=int, action="append",
+                        help="calibrate only the dive with this index in the character's list; keep the others' table rows")
+    args = parser.parse_args()
+    for character in args.character or sorted(DIVES):
+        started = time.time()
+        path = TUNED_DIR / f"dives_{character}.json"
+        old = json.loads(path.read_text())["dives"] if path.exists() else []
+        with Capacity():
+            dives = [search(character, dive, args.iterations, args.population, args.seed,
+                            old[k]["settings"] if k < len(old) and not args.fresh else None)
+                     if args.only is None or k in args.only or k >= len(old) else old[k]
+                     for k, dive in enumerate(DIVES[character])]
+        limits = {"rise": 0.3, "angular_momentum": {
+            group: max([d["largest_momentum_clear"] for d in dives if GROUPS[d["group"]] == group] + [0.0])
+            for group in GROUPS}}
+        tmp = path.with_suffix(".tmp")
+        tmp.write_text(json.dumps({"character": character, "script": "scripts/calibrate_dives.py",
+                                   "search": vars(args), "dives": dives, "limits": limits}, indent=1) + "\n")
+        tmp.replace(path)
+        print(f"{character}: wrote {path} in {time.time() - started:.0f} s")
+        for d in dives:
+            print(f"  {d['measured']}")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,353 @@
+"""10 m platform dives (Wooten §8.2.1), built only by sequencing the basis behaviours:
+balance (crouch, leaning) -> leap (thrust with the lift-off hip angle that sets the somersault
+rate) -> tumble (pike, tuck or layout; arm throw for twists) -> entry (straight "line", arms
+overhead) -> the run ends when the hands or head reach the water.
+
+The diver stands backwards at the edge (heels over the water, -X); an inward dive somersaults
+forward (towards the platform), a back dive backward. Opening for the entry is a state-based
+transition: the controller predicts, from the measured angular momentum and the ballistic time
+left to the water, how far the body will still turn once straightened, and opens when that is
+what remains of the dive's rotation (Wooten opened on timing; ch. 5's summary proposes state).
+
+The leap settings per dive (crouch, lean, lift-off hip angle, arm swing) come from
+``rigs/tuned/dives_<character>.json``, written by ``scripts/calibrate_dives.py``.
+"""
+from __future__ import annotations
+
+import dataclasses
+import json
+import math
+
+import numpy as np
+
+from sim_core.control.balance import Balance, LegGeometry
+from sim_core.control.behaviour import register
+from sim_core.control.leap import ANKLE_GAIN_VERTICAL, TUNED_DIR, VERTICAL_TIMING, LeapThrust
+from sim_core.control.sequencer import Sequence, Step
+from sim_core.control.tumble import FlightRotation, Tumble, position_inertia, position_radius
+from sim_core.errors import ParameterError
+from sim_core.schema import Parameter, Schema
+
+GRAVITY = 9.80665
+GROUPS = ("inward", "back")
+LEAP_SETTINGS = ("crouch_height", "crouch_pitch", "com_offset", "liftoff_hip", "arm_swing", "twist_lead")
+LEAN_TRIGGER = 1.0         # share of a backward COM offset that triggers the thrust
+TAKEOFF_CLEAR = 0.05       # s without contact that make a take-off
+PLATFORM_MARGIN = 0.05     # m of room kept between the turning body and the platform
+FEET_CLEARANCE = 0.15      # m: the position is taken once the feet are this far past the platform's edge
+POSITION_MOVE = 0.15       # s after take-off before the position is held (in the feasibility estimate)
+DEFAULT_LIMITS = {"rise": 0.3, "angular_momentum": {"inward": 40.0, "back": 50.0}}
+SNAP = 3.0                 # hip, knee and spine gains x3 for the moves into and out of the position
+OPEN_MOVE = 0.2            # s: the servo move from the position to the line
+OPEN_TIME = 0.25            # s: time to straighten from the position into the line
+TWIST_STOP_LEAD = 0.15      # s of the measured twist rate: arms come back this early
+ENTRY_REACH = 1.15          # share of the standing COM height: hands below the COM in the line
+
+DEFAULT_SETTINGS = {       # until scripts/calibrate_dives.py has written the table
+    "inward": {"crouch_height": 0.70, "crouch_pitch": 0.4, "com_offset": -0.04, "liftoff_hip": -0.8, "arm_swing": 2.5},
+    "back": {"crouch_height": 0.70, "crouch_pitch": 0.2, "com_offset": -0.04, "liftoff_hip": 0.6, "arm_swing": 3.0},
+}
+
+
+def dive_name(p: dict) -> str:
+    position = ("layout", "pike", "tuck")[int(round(p["position"]))]
+    twists = f" with {p['twists']:g} twists" if p["twists"] else ""
+    return f"{GROUPS[int(round(p['group']))]} {p['somersaults']:g} somersault {position}{twists}"
+
+
+def load_settings(character: str, p: dict) -> dict:
+    """Leap settings for this dive: the calibrated dive of the same group that is most alike
+    (same position, then twists, then somersaults), else the defaults."""
+    group = GROUPS[int(round(p["group"]))]
+    path = TUNED_DIR / f"dives_{character}.json"
+    table = [d for d in json.loads(path.read_text())["dives"] if GROUPS[d["group"]] == group] if path.exists() else []
+    if not table:
+        return dict(DEFAULT_SETTINGS[group])
+    best = min(table, key=lambda d: (d["position"] != int(round(p["position"])), abs(d["twists"] - p["twists"]),
+                                     abs(d["somersaults"] - p["somersaults"])))
+    return dict(best["settings"])
+
+
+@register
+class Dive(Sequence):
+    name = "dive"
+    summary = "Platform dive: leap backwards off the edge, somersault and twist in flight, enter the water straight (Wooten §8.2.1)."
+    default_duration = 4.0
+    schema = Schema(
+        Parameter("group", "1", 0.0, 0.0, 1.0, "0 = inward (somersault towards the platform), 1 = back (away from it)"),
+        Parameter("somersaults", "1", 1.5, 0.5, 3.5, "somersaults before entry (x.5 = head first)"),
+        Parameter("twists", "1", 0.0, 0.0, 3.0, "twists (full turns about the long axis), by an arm throw in flight"),
+        Parameter("position", "1", 1.0, 0.0, 2.0, "0 = layout (straight), 1 = pike, 2 = tuck"),
+        Parameter("platform_height", "m", 10.0, 3.0, 10.0, "platform height above the water"),
+        Parameter("low_level", "bool", 0.0, 0.0, 1.0, "1 = use the leap settings below instead of the calibrated ones"),
+        Parameter("crouch_height", "m", 0.70, 0.5, 0.95, "pelvis height of the crouch (low_level only)"),
+        Parameter("crouch_pitch", "rad", 0.3, 0.0, 1.5, "torso pitch in the crouch (low_level only)"),
+        Parameter("com_offset", "m", -0.04, -0.25, 0.1,
+                  "COM forward (+) of the middle of the feet in the crouch; behind it (-) the diver leans back and thrusts once the COM has moved that far (low_level only)"),
+        Parameter("liftoff_hip", "rad", 0.0, -2.0, 2.0,
+                  "hip flexion (-, forward somersault) or extension (+, backward) at lift-off (low_level only)"),
+        Parameter("arm_swing", "rad", 2.5, -1.0, 3.2, "arm swing during the thrust, forward and up (+) or back (-) (low_level only)"),
+        Parameter("twist_lead", "s", 0.6, 0.0, 1.5,
+                  "twisting dives: open and throw the arms at the latest this long before the predicted entry "
+                  "(low_level only)"),
+    )
+
+    @classmethod
+    def scene(cls, params, world):
+        return dataclasses.replace(world, platform=params["platform_height"])
+
+    # ------------------------------------------------------------------ settings and checks
+    @property
+    def direction(self) -> float:
+        return 1.0 if int(round(self.params["group"])) == 0 else -1.0     # inward = forward somersault
+
+    def settings(self) -> dict:
+        p = self.params
+        if p["low_level"]:
+            return {k: p[k] for k in LEAP_SETTINGS}
+        return {"twist_lead": self.schema.by_name["twist_lead"].default, **load_settings(self.ctx.character.name, p)}
+
+    def check_feasible(self) -> None:
+        p = self.params
+        if abs(p["somersaults"] * 2 - round(p["somersaults"] * 2)) > 1e-9:
+            raise ParameterError(f"parameter somersaults={p['somersaults']:g} must be a whole or half number")
+        if abs(p["twists"] * 2 - round(p["twists"] * 2)) > 1e-9:
+            raise ParameterError(f"parameter twists={p['twists']:g} must be a whole or half number")
+        capacity = self.rotation_capacity()
+        if p["somersaults"] > capacity:
+            raise ParameterError(
+                f"a {dive_name(p)} cannot be completed from {p['platform_height']:g} m by the "
+                f"{self.ctx.character.name}: the flight allows at most {capacity:.2f} somersaults in this position "
+                f"with the largest calibrated take-off angular momentum")
+
+    def rotation_capacity(self) -> float:
+        """Somersaults the flight from this platform allows: the largest take-off angular
+        momentum the calibration reached for this group without touching the platform, spent in
+        the position for the flight time less the take-off and opening, and in the line for the
+        rest."""
+        path = TUNED_DIR / f"dives_{self.ctx.character.name}.json"
+        group = GROUPS[int(round(self.params["group"]))]
+        limits = json.loads(path.read_text())["limits"] if path.exists() else DEFAULT_LIMITS
+        momentum = limits["angular_momentum"][group]
+        flight = self.flight_time(limits["rise"])
+        straight = min(flight, OPEN_TIME + POSITION_MOVE)
+        angle = momentum * ((flight - straight) / self._position_inertia() + straight / self._line_inertia())
+        return angle / (2 * math.pi)
+
+    def flight_time(self, rise: float) -> float:
+        drop = self.params["platform_height"] + rise - self._entry_reach()
+        return math.sqrt(2 * rise / GRAVITY) + math.sqrt(2 * max(drop, 0.0) / GRAVITY)
+
+    def _entry_reach(self) -> float:
+        return ENTRY_REACH * float(self.ctx.character.bodies[0]["com"][2])
+
+    def _position_inertia(self) -> float:
+        return position_inertia(self.ctx.model, self.ctx.character,
+                                ("layout", "pike", "tuck")[int(round(self.params["position"]))])
+
+    def _line_inertia(self) -> float:
+        if not hasattr(self, "_line"):
+            self._line = position_inertia(self.ctx.model, self.ctx.character, "line")
+        return self._line
+
+    # ------------------------------------------------------------------ the script
+    def steps(self) -> list[Step]:
+        p, ctx = self.params, self.ctx
+        cfg = self.cfg = self.settings()
+        self.rotation = FlightRotation(ctx.model, ctx.data)
+        self.target = 2 * math.pi * p["somersaults"]
+        self.twist_target = 2 * math.pi * p["twists"]
+        self.entered = False
+        stand = 0.5 * sum(LegGeometry(ctx.character, side).standing_hip_height() for side in "RL")
+
+        def crouch(t):
+            return Balance(Balance.schema.validate(dict(
+                pelvis_height=cfg["crouch_height"], torso_pitch=cfg["crouch_pitch"], com_offset_x=cfg["com_offset"],
+                move_start=0.2, move_time=0.8, hold_time=0.0, return_to_stand=0)), ctx)
+
+        def thrust(t):
+            return LeapThrust({}, ctx, cfg["crouch_height"], VERTICAL_TIMING, ANKLE_GAIN_VERTICAL,
+                              cfg["liftoff_hip"], cfg["arm_swing"], stand_height=stand)
+
+        def tumble(t):
+            self.rotation.takeoff(t)
+            self.takeoff_time = t
+            position = p["position"]
+            return _Aerial(Tumble.schema.validate(dict(position=position, stiffness=SNAP)), ctx, self.rotation, self)
+
+        def entry(t):
+            return _Aerial(Tumble.schema.validate(dict(position=3, move_time=OPEN_MOVE, stiffness=SNAP)), ctx,
+                           self.rotation, self)
+
+        def crouched(b, t):
+            # leaning back: thrust once the COM, moving back, has left the middle of the feet by the
+            # share LEAN_TRIGGER of the requested offset (as the broad jump leans forward, §4.2)
+            if cfg["com_offset"] < 0 and b.com_ahead_of_support() < LEAN_TRIGGER * cfg["com_offset"]:
+                return True
+            return b.posture_reached(t - 0.15)
+
+        return [Step("crouch", crouch, crouched),
+                Step("thrust", thrust, lambda b, t: b.lifted_off()),
+                Step("tumble", tumble, lambda b, t: self.time_to_open(t)),
+                Step("entry", entry)]
+
+    # ------------------------------------------------------------------ transitions
+    def time_to_open(self, t: float) -> bool:
+        """Open when the rotation the straight body will still make before the hands reach the
+        water (at the line's rate for the measured angular momentum, plus about half the
+        difference over the opening) equals what the dive has left."""
+        d = self.ctx.data
+        remaining = self.target - self.direction * self.rotation.whole_body
+        rate_now = self.direction * self.rotation.rate()
+        rate_line = self.direction * float(d.subtree_angmom[1][1]) / self._line_inertia()
+        z, vz = float(d.subtree_com[1][2]), float(d.subtree_linvel[1][2])
+        drop = z - (-self.params["platform_height"] + self._entry_reach())
+        time_left = (vz + math.sqrt(max(vz * vz + 2 * GRAVITY * drop, 0.0))) / GRAVITY
+        coming = rate_line * time_left + 0.5 * (rate_now - rate_line) * OPEN_TIME
+        if self.twist_target and time_left <= self.cfg["twist_lead"]:
+            return True                  # the twist needs this long in the layout
+        if time_left <= OPEN_TIME:
+            return True                  # enter straight even if the rotation falls short
+        return coming >= remaining
+
+    def start(self, t: float) -> None:
+        super().start(t)
+        self.rotation.reset(t)
+
+    def update(self, t: float) -> None:
+        self.rotation.update(t)
+        super().update(t)
+
+    @property
+    def run_complete(self) -> bool:
+        if self.index < 2:
+            return False
+        d, m = self.ctx.data, self.ctx.model
+        lowest = min(float(d.xpos[m.body(n).id][2]) for n in ("HANDR", "HANDL", "HEAD", "FOOTR", "FOOTL"))
+        return lowest < -self.params["platform_height"]
+
+    @classmethod
+    def assess(cls, trajectory):
+        return dive_assess(trajectory)
+
+
+class _Aerial(Tumble):
+    """The tumble step of a dive: straight until the feet are clear of the platform (a pike or
+    tuck swings the legs towards it), then its position; the twist throw and stop by the twist
+    count measured so far."""
+
+    def __init__(self, params, ctx, rotation, dive: Dive):
+        super().__init__(params, ctx, rotation)
+        self.dive = dive
+        m = ctx.model
+        ground = m.geom("ground").id
+        self.edge = float(m.geom_pos[ground][0] - m.geom_size[ground][0])
+        self.feet = [m.body(n).id for n in ("FOOTR", "FOOTL", "TOER", "TOEL")]
+        self.clear = self.params["position"] in (0, 3)
+        self.twist_done = False
+        position = ("layout", "pike", "tuck", "line")[int(round(self.params["position"]))]
+        self.radius = position_radius(m, ctx.character, position)
+
+    def start(self, t: float) -> None:
+        if self.clear:
+            super().start(t)
+            return
+        s = self.ctx.servos                 # keep the lift-off shape until clear
+        s.offset[:] = 0.0
+        s.set_gains(np.arange(len(s.names)), s.default_kp, s.default_kv)
+        s.move_to(np.arange(len(s.names)), s.angles().copy(), 0.05, t)
+
+    def _clear_of_platform(self) -> bool:
+        """The body can turn in its position without touching the platform: the COM is higher
+        above the platform, or farther past its edge, than the position's reach; or the feet are
+        already past the edge."""
+        d = self.ctx.data
+        com = d.subtree_com[1]
+        if com[2] - self.radius > PLATFORM_MARGIN or com[0] + self.radius < self.edge - PLATFORM_MARGIN:
+            return True
+        return max(float(d.xpos[b][0]) for b in self.feet) < self.edge - FEET_CLEARANCE
+
+    def update(self, t: float) -> None:
+        super().update(t)
+        if not self.clear and self._clear_of_platform():
+            self.clear = True
+            super().start(t)
+        dive = self.dive
+        if not dive.twist_target or self.params["position"] != 3:
+            return
+        if not self.twisting and not self.twist_done:
+            self.throw_twist(t, 1.0)
+        elif self.twisting:
+            rate = abs(float(self.ctx.data.qvel[5]))
+            if abs(self.rotation.twist) + rate * TWIST_STOP_LEAD >= dive.twist_target:
+                self.stop_twist(t)
+                self.twist_done = True
+
+
+def takeoff_index(contact: np.ndarray, clear_frames: int) -> int | None:
+    """First frame of the first run of at least ``clear_frames`` frames without contact, after
+    a contact (a single frame without contact during the push is not a take-off)."""
+    touched = np.nonzero(contact)[0]
+    if len(touched) == 0:
+        return None
+    k = int(touched[0])
+    while k < len(contact):
+        if not contact[k] and not contact[k:k + clear_frames].any():
+            return k
+        k += 1
+    return None
+
+
+def dive_assess(trajectory) -> tuple[str, dict]:
+    """Somersaults and twists measured between take-off and entry, the body's angle from the
+    vertical at entry, angular momentum drift in flight, platform clearance."""
+    a = trajectory.arrays
+    meta = trajectory.meta
+    names = list(a["body_names"])
+    pelvis, head = names.index("PELVIS"), names.index("HEAD")
+    feet = [names.index("FOOTR"), names.index("FOOTL")]
+    on_platform = a["ground_contact"].any(axis=1)
+    metrics: dict = {}
+    start = takeoff_index(on_platform, int(TAKEOFF_CLEAR * meta["control_rate"]))
+    end = len(a["time"]) - 1
+    if start is None or start >= end:
+        return "no_flight", metrics
+    later = np.nonzero(on_platform[start:])[0]
+    metrics["hit_platform"] = bool(len(later))
+    t = a["time"]
+    quat = a["body_quat"][:, pelvis]
+    # pelvis long axis (local z) in the world: third column of the rotation matrix
+    w, x, y, z = quat.T
+    axis_x = 2 * (x * z + w * y)
+    axis_z = 1 - 2 * (x * x + y * y)
+    pitch = np.unwrap(np.arctan2(axis_x, axis_z))
+    somersault = float(pitch[end] - pitch[0])          # from the upright start
+    twist_rate = a["qvel"][:, 5]
+    twist = float(np.sum(twist_rate[start:end]) * (t[1] - t[0]))
+    body_axis = a["body_pos"][end, head] - 0.5 * (a["body_pos"][end, feet[0]] + a["body_pos"][end, feet[1]])
+    p = meta["params"]
+    head_first = abs(p["somersaults"] % 1.0 - 0.5) < 1e-6        # x.5 somersaults end head down
+    wanted = -1.0 if head_first else 1.0
+    entry_angle = math.degrees(math.acos(np.clip(wanted * body_axis[2] / np.linalg.norm(body_axis), -1.0, 1.0)))
+    momentum = a["angmom"][start:end + 1]
+    drift = float(np.abs(momentum - momentum[0]).max() / max(np.linalg.norm(momentum[0]), 1e-9))
+    metrics.update({
+        "dive": dive_name(p), "takeoff_time": float(t[start]), "entry_time": float(t[end]),
+        "flight_time": float(t[end] - t[start]),
+        "somersaults": abs(somersault) / (2 * math.pi), "somersault_direction": "forward" if somersault > 0 else "backward",
+        "twists": abs(twist) / (2 * math.pi), "entry_angle_from_vertical_deg": entry_angle,
+        "head_first": bool(body_axis[2] < 0), "takeoff_angular_momentum": float(momentum[0, 1]),
+        "angular_momentum_drift": drift, "entered_water": bool(meta.get("ended_early", False)),
+        "takeoff_twist_rate": float(twist_rate[start]),
+    })
+    wanted_direction = "forward" if int(round(p["group"])) == 0 else "backward"
+    if not metrics["entered_water"]:
+        return "no_entry", metrics
+    if metrics["hit_platform"]:
+        return "hit_platform", metrics
+    if (abs(metrics["somersaults"] - p["somersaults"]) > 0.25 or abs(metrics["twists"] - p["twists"]) > 0.25
+            or metrics["somersault_direction"] != wanted_direction):
+        return "wrong_rotation", metrics
+    if entry_angle > 20.0:
+        return "entry_not_vertical", metrics
+    return "success", metrics

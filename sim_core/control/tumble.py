@@ -1,0 +1,231 @@
+"""Tumbling (Wooten ch. 5): somersaults and twists in flight, from the angular momentum the leap
+gave the body.
+
+Once airborne nothing can change the whole-body angular momentum H about the COM; the tumbling
+controller changes the body's shape instead. A layout, pike or tuck (predetermined angles of the
+hips, knees, spine and arms, ``POSITIONS``) lowers the moment of inertia about the somersault
+axis and so raises the somersault rate; ``tightness`` blends between the layout and the full
+position. A twist is started in flight, with no twist at take-off, by an asymmetric arm throw
+(Frohlich's torque-free twist, §5.2): one arm goes up over the head and the other down across
+the body, the body tilts out of the plane of H, and part of H becomes rotation about the long
+axis; bringing the arms back stops it.
+
+``FlightRotation`` measures the somersault angle (the pelvis's long axis turning in the
+vertical plane of the somersault) and the twist angle (the pelvis's rotation about its long
+axis) that transitions and the assessment read.
+"""
+from __future__ import annotations
+
+import math
+
+import mujoco
+import numpy as np
+
+from sim_core.character.model import set_standing_pose
+from sim_core.control.behaviour import Behaviour, ControlContext
+from sim_core.schema import Parameter, Schema
+
+POSITION_NAMES = ("layout", "pike", "tuck")
+_SPINE_FLEXED = {"spine_l3_y": 0.26, "spine_l1_y": 0.26, "spine_t7_y": 0.21, "spine_t4_y": 0.21, "neck_c2_y": 0.8}
+# joint angles (rad) of each position; "*" is r or l, arm angles are the right side's (mirrored
+# for the left); joints not named keep the standing pose (straight, arms hanging: shoulder x is
+# the arm's elevation in the frontal plane, 1.43 hanging, 0 sideways, -1.5 overhead; shoulder z
+# swings it forward in the sagittal plane)
+POSITIONS = {
+    "layout": {},
+    "pike": {"hip_*_y": -2.18, **_SPINE_FLEXED, "shoulder_*_z": 0.3, "elbow_*_z": 0.0},
+    "tuck": {"hip_*_y": -2.18, "knee_*_y": 2.62, **_SPINE_FLEXED, "shoulder_*_z": 0.5, "elbow_*_z": 1.8},
+    # the entry "line": straight, arms overhead (a head-first water entry)
+    "line": {"shoulder_*_x": -1.5, "shoulder_*_z": 0.0, "elbow_*_z": 0.0},
+}
+# the asymmetric arm throw that starts a twist (§5.2), from the line: the right arm stays up by
+# the head, the left comes down to the side in the frontal plane, which tilts the body out of
+# the plane of the angular momentum; direction -1 mirrors it
+TWIST_THROW = {"shoulder_r_x": -1.5, "shoulder_l_x": -1.43}
+SNAP_DAMPING = 2.0          # a stiffened move is damped twice as much again: fast but overdamped (with
+                            # critical damping the 1 ms step let the flight's angular momentum drift ~1 %)
+POINTED_TOES = 0.7          # rad of ankle plantarflexion in flight
+SEED_INERTIA = {"man": {"layout": 18.31, "pike": 5.84, "tuck": 4.84},
+                "woman": {"layout": 7.43, "pike": 2.52, "tuck": 1.92}}   # kg m^2, Wooten Fig. 5.2
+
+
+def _is_mirrored(name: str) -> bool:
+    """Arm dofs whose left angle is the negative of the right's (the rig's mirrored axes)."""
+    return name.startswith(("shoulder", "elbow")) and name.endswith(("_x", "_z"))
+
+
+def position_angles(position: str) -> dict[str, float]:
+    """Joint name -> angle of a named position, both sides spelled out."""
+    out = {}
+    for name, value in POSITIONS[position].items():
+        if "*" not in name:
+            out[name] = value
+            continue
+        for side, sign in (("r", 1.0), ("l", -1.0)):
+            out[name.replace("*", side)] = value * sign if _is_mirrored(name) else value
+    return out
+
+
+def twist_angles(direction: float) -> dict[str, float]:
+    """Arm angles of the twisting throw; direction -1 throws the other way (left arm up)."""
+    if direction >= 0:
+        return dict(TWIST_THROW)
+    out = {}
+    for name, value in TWIST_THROW.items():
+        other = name.replace("_r_", "_#_").replace("_l_", "_r_").replace("_#_", "_l_")
+        out[other] = -value if _is_mirrored(name) else value
+    return out
+
+
+def inertia_about_com(model: mujoco.MjModel, data: mujoco.MjData) -> np.ndarray:
+    """Whole-body inertia tensor (world frame, kg m^2) about the COM of the current state."""
+    com = data.subtree_com[1]
+    total = np.zeros((3, 3))
+    for b in range(1, model.nbody):
+        rotation = data.ximat[b].reshape(3, 3)
+        r = data.xipos[b] - com
+        total += rotation @ np.diag(model.body_inertia[b]) @ rotation.T
+        total += model.body_mass[b] * (r @ r * np.eye(3) - np.outer(r, r))
+    return total
+
+
+def _posed(model: mujoco.MjModel, character, position: str) -> mujoco.MjData:
+    data = mujoco.MjData(model)
+    set_standing_pose(model, data, character)
+    for name, value in position_angles(position).items():
+        data.qpos[model.joint(name).qposadr[0]] = value
+    mujoco.mj_kinematics(model, data)
+    mujoco.mj_comPos(model, data)
+    return data
+
+
+def position_inertia(model: mujoco.MjModel, character, position: str) -> float:
+    """Moment of inertia about the somersault (lateral, Y) axis of a named position, the body
+    upright, read off MuJoCo's kinematics of the model."""
+    return float(inertia_about_com(model, _posed(model, character, position))[1, 1])
+
+
+def position_radius(model: mujoco.MjModel, character, position: str) -> float:
+    """Farthest reach (m) of the feet, hands and head from the COM in a named position: how much
+    room the body needs to turn in it."""
+    data = _posed(model, character, position)
+    ends = [model.body(n).id for n in ("TOER", "TOEL", "HANDR", "HANDL", "HEAD", "FOOTR", "FOOTL")]
+    return float(max(np.linalg.norm(data.xpos[b] - data.subtree_com[1]) for b in ends))
+
+
+class FlightRotation:
+    """Rotation measures of a skill, updated every control tick:
+
+    * ``somersault``: angle (rad, + forward) of the pelvis's long axis in the vertical X-Z plane,
+      unwrapped, from upright (a skill's rotation counts from the standing start, not from a
+      leaning take-off). Right for a straight body; while the body folds or opens the pelvis
+      turns against the legs.
+    * ``whole_body``: from take-off (``takeoff``), the whole body's mean somersault angle: the
+      principal axis of the body's inertia at take-off, then the integral of H_y / I_yy (the
+      rate of the mass-weighted mean frame, which folding and opening do not turn). This is what
+      a dive has left to turn, whatever its shape.
+    * ``twist``: the pelvis's rotation about its long axis since take-off (rad).
+    """
+
+    def __init__(self, model: mujoco.MjModel, data: mujoco.MjData):
+        self.model, self.data = model, data
+        self.pelvis = model.body("PELVIS").id
+        self.flying = False
+        self.reset(0.0)
+
+    def _raw(self) -> float:
+        m = self.data.xmat[self.pelvis]
+        return math.atan2(m[2], m[8])           # long (z) axis: x component, z component
+
+    def reset(self, t: float) -> None:
+        self.t = t
+        self.last = self._raw()
+        self.somersault = self.last
+        self.whole_body = self.somersault
+        self.twist = 0.0
+
+    def takeoff(self, t: float) -> None:
+        """Start the whole-body angle at the body's long principal axis (the branch nearest the
+        pelvis's angle) and the twist at zero."""
+        self.update(t)
+        inertia = inertia_about_com(self.model, self.data)
+        # long axis = least inertia in the X-Z plane; its angle from vertical towards +X
+        axis = 0.5 * math.atan2(-2.0 * inertia[0, 2], inertia[0, 0] - inertia[2, 2])
+        self.whole_body = axis + math.pi * round((self.somersault - axis) / math.pi)
+        self.twist = 0.0
+        self.flying = True
+
+    def update(self, t: float) -> None:
+        raw = self._raw()
+        self.somersault += (raw - self.last + math.pi) % (2 * math.pi) - math.pi
+        self.last = raw
+        dt = t - self.t
+        self.twist += float(self.data.qvel[5]) * dt      # free joint: local angular velocity
+        if self.flying:
+            self.whole_body += self.rate() * dt
+        self.t = t
+
+    def rate(self) -> float:
+        """Mean somersault rate of the whole body (rad/s): H_y / I_yy about the COM."""
+        return float(self.data.subtree_angmom[1][1]) / float(inertia_about_com(self.model, self.data)[1, 1])
+
+
+class Tumble(Behaviour):
+    """Basis behaviour: take a position in flight and hold it; optionally throw the arms to
+    twist, and bring them back when the twist is done. The sequence decides when to leave."""
+
+    schema = Schema(
+        Parameter("position", "1", 1.0, 0.0, 3.0, "0 = layout, 1 = pike, 2 = tuck, 3 = line (straight, arms overhead)"),
+        Parameter("tightness", "1", 1.0, 0.0, 1.0, "share of the position's joint angles (0 = layout, 1 = full)"),
+        Parameter("move_time", "s", 0.25, 0.05, 1.0, "time to move into the position"),
+        Parameter("stiffness", "1", 1.0, 1.0, 4.0,
+                  "gain factor of the hip, knee and spine servos while moving into the position (a snap)"),
+    )
+
+    def __init__(self, params, ctx: ControlContext, rotation: FlightRotation | None = None):
+        super().__init__(params, ctx)
+        self.rotation = rotation or FlightRotation(ctx.model, ctx.data)
+        self.twisting = False
+
+    def _targets(self) -> dict[str, float]:
+        """Joint targets: the standing pose moved ``tightness`` of the way to the position's
+        angles; toes pointed."""
+        character = self.ctx.character
+        straight = {d.name: v for d, v in zip(character.dofs, character.standing_pose)}
+        position = ("layout", "pike", "tuck", "line")[int(round(self.params["position"]))]
+        k = self.params["tightness"] if position != "line" else 1.0
+        targets = {name: value + k * (position_angles(position).get(name, value) - value)
+                   for name, value in straight.items()}
+        for side in "rl":
+            targets[f"ankle_{side}_y"] = POINTED_TOES
+        return targets
+
+    def start(self, t: float) -> None:
+        s = self.ctx.servos
+        s.offset[:] = 0.0
+        s.set_gains(np.arange(len(s.names)), s.default_kp, s.default_kv)
+        trunk_and_legs = s.indices([n for n in s.names if n.startswith(("hip", "knee", "spine"))])
+        k = self.params["stiffness"]
+        damping = k * (SNAP_DAMPING if k > 1.0 else 1.0)
+        s.set_gains(trunk_and_legs, s.default_kp[trunk_and_legs] * k, s.default_kv[trunk_and_legs] * damping)
+        targets = self._targets()
+        s.move_to(s.indices(list(targets)), np.array(list(targets.values())), self.params["move_time"], t)
+        self.event(t, "tumble")
+
+    def throw_twist(self, t: float, direction: float, duration: float = 0.25) -> None:
+        s = self.ctx.servos
+        arms = twist_angles(direction)
+        s.move_to(s.indices(list(arms)), np.array(list(arms.values())), duration, t)
+        self.twisting = True
+        self.event(t, "twist_throw")
+
+    def stop_twist(self, t: float, duration: float = 0.2) -> None:
+        s = self.ctx.servos
+        targets = {n: v for n, v in self._targets().items() if n.startswith(("shoulder", "elbow"))}
+        s.move_to(s.indices(list(targets)), np.array(list(targets.values())), duration, t)
+        self.twisting = False
+        self.event(t, "twist_stop")
+
+    def update(self, t: float) -> None:
+        """The position is held by the servos; the rotation is measured by the owner."""
+
