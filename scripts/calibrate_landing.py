@@ -1,6 +1,7 @@
 """Calibrate the landing's foot servo delta against horizontal speed (the role of Wooten's
-Table 6.1): for each speed, land from a small drop with a range of deltas, keep the middle of the
-deltas that end balanced, and write rigs/tuned/landing_<character>.json, which the landing reads.
+Table 6.1): for each speed, land from a low and a higher drop with a range of deltas, keep the
+middle of the longest run of neighbouring deltas that end balanced from both drops, and write
+rigs/tuned/landing_<character>.json, which the landing reads.
 Rerun after a change to the model or the controllers:
 
     python scripts/calibrate_landing.py [--character man woman] [--processes 2]
@@ -19,16 +20,37 @@ sys.path.insert(0, str(ROOT))
 from sim_core.control.leap import TUNED_DIR                      # noqa: E402
 from sim_core.simulate import RunRequest, StartState, run          # noqa: E402
 
-SPEEDS = [-1.0, -0.5, 0.0, 0.5, 1.0, 1.5, 2.0, 3.0]
-DELTAS = [-0.12, -0.08, -0.04, 0.0, 0.04, 0.08, 0.12, 0.16]
-DROP = 0.2                   # m above standing: the COM starts at about Wooten's 1.25 m (man)
+SPEEDS = [-1.0, -0.5, 0.0, 0.5, 1.0, 1.5, 2.0, 2.5, 3.0]
+DELTAS = [round(-0.16 + 0.04 * k, 2) for k in range(11)]     # -0.16 ... 0.24 m
+DROPS = (0.2, 0.6)           # m above standing: 0.2 puts the COM at about Wooten's 1.25 m (man); 0.6
+                             # lands like a 0.6 m leap (forefoot first)
 
 
 def trial(args):
     character, speed, delta = args
-    traj = run(RunRequest("land", character, params=dict(foot_delta=delta),
-                          start=StartState(height=DROP, velocity=(speed, 0.0, 0.0)), duration=3.0))
-    return speed, delta, traj.meta["outcome"] == "success"
+    landed = True
+    for drop in DROPS:
+        traj = run(RunRequest("land", character, params=dict(foot_delta=delta),
+                              start=StartState(height=drop, velocity=(speed, 0.0, 0.0)), duration=3.0))
+        landed = landed and traj.meta["outcome"] == "success"
+        if not landed:
+            break
+    return speed, delta, landed
+
+
+def middle_of_longest_run(ok: list[float]) -> float:
+    """The delta in the middle of the longest run of neighbouring successful deltas (the most
+    margin on both sides)."""
+    runs, current = [], []
+    for d in DELTAS:
+        if d in ok:
+            current.append(d)
+        else:
+            runs.append(current)
+            current = []
+    runs.append(current)
+    best = max(runs, key=len)
+    return best[(len(best) - 1) // 2] if len(best) % 2 else 0.5 * (best[len(best) // 2 - 1] + best[len(best) // 2])
 
 
 def calibrate(character: str, processes: int) -> dict:
@@ -44,8 +66,8 @@ def calibrate(character: str, processes: int) -> dict:
         print(f"  {character} at {v:+.1f} m/s: balanced with deltas {ok}")
         if ok:
             speeds.append(v)
-            deltas.append(sorted(ok)[len(ok) // 2])
-    return {"character": character, "script": "scripts/calibrate_landing.py", "drop": DROP,
+            deltas.append(round(middle_of_longest_run(ok), 3))
+    return {"character": character, "script": "scripts/calibrate_landing.py", "drops": list(DROPS),
             "foot_delta": {"speed": speeds, "delta": deltas},
             "landed": {str(k): v for k, v in landed.items()}}
 

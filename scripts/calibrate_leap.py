@@ -1,13 +1,17 @@
-"""Calibrate the vertical leap (the role of Wooten's Table 4.1). For each crouch height:
+"""Calibrate the vertical leap (the role of Wooten's Table 4.1). For each crouch height and thrust
+damping (less damping extends the legs faster and leaps higher), and for each strength (human
+torque limits; unlimited, as the thesis ran):
   1. find the lift-off hip angle and crouch COM offset that leave the ground with no somersault
      (angular momentum about the COM ~ 0) and no drift (horizontal COM speed ~ 0), by Newton's
      method on thrust-only runs;
-  2. run the whole leap with them and measure the COM rise and whether it lands balanced.
-Writes the mapping commanded rise -> crouch height, COM offset, neutral lift-off hip angle to
-rigs/tuned/leap_<character>.json, which the leap behaviour interpolates. Rerun after any change
-to the model or the controllers:
+  2. run the whole leap with them and measure the COM rise, the thrust's peak ground force and
+     whether it lands balanced.
+Writes the mapping commanded rise -> crouch height, thrust damping, COM offset, neutral lift-off
+hip angle to rigs/tuned/leap_<character>.json ("vertical": human torque limits,
+"vertical_unlimited": unlimited strength), which the leap behaviour interpolates. Rerun after any
+change to the model or the controllers:
 
-    python scripts/calibrate_leap.py [--character man woman] [--processes 2]
+    python scripts/calibrate_leap.py [--character man woman] [--processes 1] [--only vertical]
 """
 from __future__ import annotations
 
@@ -26,16 +30,23 @@ from sim_core.control.leap import AIRBORNE_HEIGHT, TUNED_DIR   # noqa: E402
 from sim_core.simulate import RunRequest, run                   # noqa: E402
 
 CROUCH_FRACTIONS = (0.9, 0.85, 0.8, 0.75, 0.7, 0.66, 0.62, 0.59)   # of the standing hip height
+CROUCH_FRACTIONS_FAST = (0.75, 0.7, 0.66, 0.62, 0.59, 0.56, 0.53, 0.5)
+# table -> (strength, [(thrust damping, crouch fractions)])
+VERTICAL_TABLES = {
+    "vertical": ("human", [(1.0, CROUCH_FRACTIONS), (0.3, CROUCH_FRACTIONS_FAST)]),
+    "vertical_unlimited": ("unlimited", [(1.0, CROUCH_FRACTIONS), (0.3, CROUCH_FRACTIONS_FAST),
+                                         (0.15, (0.56, 0.53, 0.5))]),
+}
 THRUST_ONLY = 1.7            # s: crouch (0.2 + 0.8 + 0.15 s) and the thrust, up to just after lift-off
 LEAP_DURATION = 4.5
-NEWTON_STEPS = 3
+NEWTON_STEPS = 5
 ARM_SWING = 1.0              # rad: a forward swing that adds height without spinning the body
 
 
-def liftoff_state(character, crouch_height, hip, offset):
+def liftoff_state(character, crouch_height, hip, offset, damping=1.0, strength="human"):
     params = dict(low_level=1, crouch_height=crouch_height, crouch_pitch=0.0, com_offset=offset,
-                  liftoff_hip_angle=hip, arm_swing=ARM_SWING)
-    traj = run(RunRequest("leap", character, params=params, duration=THRUST_ONLY))
+                  liftoff_hip_angle=hip, arm_swing=ARM_SWING, thrust_damping=damping)
+    traj = run(RunRequest("leap", character, params=params, duration=THRUST_ONLY, strength=strength))
     flying = traj.arrays["support_points"][:, :, 2].min(axis=1) > AIRBORNE_HEIGHT
     if not flying.any():
         return None
@@ -45,13 +56,14 @@ def liftoff_state(character, crouch_height, hip, offset):
     return np.array([traj.arrays["angmom"][k, 1] / 15.0, traj.arrays["com_vel"][k, 0]]), mass
 
 
-def neutral_settings(character, crouch_height):
+def neutral_settings(character, crouch_height, damping=1.0, strength="human"):
     """Newton steps on (lift-off hip angle, COM offset) towards no spin and no drift at lift-off;
     returns the best point seen and its residual."""
-    x = np.array([0.0, 0.0])
+    # a fast thrust (low damping) needs the hips extended well past neutral at lift-off
+    x = np.array([0.0, 0.0]) if damping >= 1.0 else np.array([0.6, 0.03])
     best = (np.inf, x.copy(), None)
     for _ in range(NEWTON_STEPS + 1):
-        base = liftoff_state(character, crouch_height, *x)
+        base = liftoff_state(character, crouch_height, *x, damping, strength)
         if base is None:
             break
         f = base[0]
@@ -63,25 +75,30 @@ def neutral_settings(character, crouch_height):
         for i, eps in enumerate((0.05, 0.01)):
             probe = x.copy()
             probe[i] += eps
-            shifted = liftoff_state(character, crouch_height, *probe)
+            shifted = liftoff_state(character, crouch_height, *probe, damping, strength)
             if shifted is None:
                 return best[1], best[2]
             jac[:, i] = (shifted[0] - f) / eps
         step = np.linalg.lstsq(jac, -f, rcond=None)[0]
-        x = np.clip(x + np.clip(step, [-0.2, -0.02], [0.2, 0.02]), [-0.6, -0.05], [0.4, 0.08])
+        x = np.clip(x + np.clip(step, [-0.3, -0.02], [0.3, 0.02]), [-0.6, -0.05], [0.95, 0.06])
     return best[1], best[2]
 
 
 def trial(args):
-    character, crouch_height = args
-    (hip, offset), residual = neutral_settings(character, crouch_height)
+    character, crouch_height, damping, strength = args
+    (hip, offset), residual = neutral_settings(character, crouch_height, damping, strength)
     params = dict(low_level=1, crouch_height=crouch_height, crouch_pitch=0.0, com_offset=float(offset),
-                  liftoff_hip_angle=float(hip), arm_swing=ARM_SWING)
-    traj = run(RunRequest("leap", character, params=params, duration=LEAP_DURATION))
+                  liftoff_hip_angle=float(hip), arm_swing=ARM_SWING, thrust_damping=damping)
+    traj = run(RunRequest("leap", character, params=params, duration=LEAP_DURATION, strength=strength))
     m = traj.meta["metrics"]
-    return {"crouch_height": crouch_height, "liftoff_hip": float(hip), "com_offset": float(offset),
-            "residual": None if residual is None else [float(r) for r in residual],
-            "com_rise": m["com_rise"], "outcome": traj.meta["outcome"]}
+    result = {"crouch_height": crouch_height, "damping": damping, "liftoff_hip": float(hip),
+              "com_offset": float(offset), "residual": None if residual is None else [float(r) for r in residual],
+              "com_rise": m["com_rise"], "peak_thrust_grf_body_weights": m.get("peak_thrust_grf_body_weights"),
+              "outcome": traj.meta["outcome"]}
+    print(f"  {character} ({strength}): crouch {crouch_height:.3f} m, damping {damping:.2f}, hip {hip:+.2f} rad, "
+          f"offset {offset:+.3f} m (residual {result['residual']}) -> COM rise {m['com_rise']:.3f} m, "
+          f"{traj.meta['outcome']}", flush=True)
+    return result
 
 
 BROAD_OFFSETS = tuple(round(0.04 + 0.01 * k, 3) for k in range(15))      # 0.04 ... 0.18 m
@@ -119,50 +136,69 @@ def calibrate_broad(character: str, stand: float, pool) -> dict:
             "trials": results}
 
 
-def calibrate(character: str, processes: int) -> dict:
+def vertical_table(results: list[dict]) -> dict:
+    """The leaps that landed balanced, in order of COM rise, each more than 1 cm above the last (a
+    monotonic mapping the behaviour can interpolate): the damped thrust's leaps first, then the
+    faster thrust's above the highest of those, so that neighbouring rows have like settings."""
+    rows, best = [], -1.0
+    for damping in sorted({r["damping"] for r in results}, reverse=True):
+        family = sorted((r for r in results if r["outcome"] == "success" and r["damping"] == damping),
+                        key=lambda r: r["com_rise"])
+        for r in family:
+            if r["com_rise"] > best + 0.01:
+                rows.append(r)
+                best = r["com_rise"]
+    table = {k: [r[k] for r in rows] for k in ("com_rise", "crouch_height", "damping", "com_offset", "liftoff_hip",
+                                                 "peak_thrust_grf_body_weights")}
+    table["torso_pitch"] = [0.0 for _ in rows]
+    table["arm_swing"] = [ARM_SWING for _ in rows]
+    return table
+
+
+def calibrate(character: str, processes: int, only: list[str], previous: dict) -> dict:
     from sim_core.character.spec import load_character
     from sim_core.control.balance import LegGeometry
     spec = load_character(character)
     stand = 0.5 * sum(LegGeometry(spec, side).standing_hip_height() for side in "RL")
-    heights = [round(f * stand, 3) for f in CROUCH_FRACTIONS]
+    mapping = dict(previous)
+    mapping.update({"character": character, "script": "scripts/calibrate_leap.py"})
+    trials = dict(mapping.get("trials_by_table", {}))
     with Pool(processes) as pool:
-        results = pool.map(trial, [(character, h) for h in heights])
-        broad = calibrate_broad(character, stand, pool)
-    for r in results:
-        print(f"  {character}: crouch {r['crouch_height']:.3f} m, hip {r['liftoff_hip']:+.2f} rad, offset "
-              f"{r['com_offset']:+.3f} m (residual {r['residual']}) -> COM rise {r['com_rise']:.3f} m, {r['outcome']}")
-    good = sorted((r for r in results if r["outcome"] == "success"), key=lambda r: r["com_rise"])
-    rows, best = [], -1.0
-    for r in good:                                   # keep a monotonic mapping
-        if r["com_rise"] > best + 0.01:
-            rows.append(r)
-            best = r["com_rise"]
-    return {"character": character, "script": "scripts/calibrate_leap.py", "trials": results,
-            "vertical": {"com_rise": [r["com_rise"] for r in rows],
-                         "crouch_height": [r["crouch_height"] for r in rows],
-                         "torso_pitch": [0.0 for _ in rows],
-                         "com_offset": [r["com_offset"] for r in rows],
-                         "liftoff_hip": [r["liftoff_hip"] for r in rows],
-                         "arm_swing": [ARM_SWING for _ in rows]},
-            "broad": broad, "broad_calibrated": bool(broad["com_travel"])}
+        for key, (strength, grid) in VERTICAL_TABLES.items():
+            if key not in only:
+                continue
+            jobs = [(character, round(f * stand, 3), damping, strength) for damping, fractions in grid for f in fractions]
+            results = pool.map(trial, jobs)
+            trials[key] = results
+            mapping[key] = vertical_table(results)
+        if "broad" in only:
+            mapping["broad"] = calibrate_broad(character, stand, pool)
+            mapping["broad_calibrated"] = bool(mapping["broad"]["com_travel"])
+    mapping["trials_by_table"] = trials
+    mapping.pop("trials", None)
+    return mapping
 
 
 def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--character", nargs="+", default=["man", "woman"])
-    parser.add_argument("--processes", type=int, default=2)
+    parser.add_argument("--processes", type=int, default=1)
+    parser.add_argument("--only", nargs="+", default=[*VERTICAL_TABLES, "broad"],
+                        help="tables to recalibrate (the others are kept): " + " ".join([*VERTICAL_TABLES, "broad"]))
     args = parser.parse_args()
     TUNED_DIR.mkdir(parents=True, exist_ok=True)
     for character in args.character:
-        mapping = calibrate(character, args.processes)
         path = TUNED_DIR / f"leap_{character}.json"
+        previous = json.loads(path.read_text()) if path.exists() else {}
+        mapping = calibrate(character, args.processes, args.only, previous)
         path.write_text(json.dumps(mapping, indent=1) + "\n")
-        v = mapping["vertical"]
-        b = mapping["broad"]
-        print(f"wrote {path.relative_to(ROOT)}: COM rise {min(v['com_rise'], default=0):.2f} .. "
-              f"{max(v['com_rise'], default=0):.2f} m from {len(v['com_rise'])} balanced landings; broad "
-              f"{min(b['com_travel'], default=0):.2f} .. {max(b['com_travel'], default=0):.2f} m from "
-              f"{len(b['com_travel'])}")
+        for key in VERTICAL_TABLES:
+            rises = mapping.get(key, {}).get("com_rise", [])
+            print(f"wrote {path.relative_to(ROOT)} {key}: COM rise {min(rises, default=0):.2f} .. "
+                  f"{max(rises, default=0):.2f} m from {len(rises)} balanced landings")
+        b = mapping.get("broad", {"com_travel": []})
+        print(f"  broad {min(b['com_travel'], default=0):.2f} .. {max(b['com_travel'], default=0):.2f} m "
+              f"from {len(b['com_travel'])}")
     return 0
 
 

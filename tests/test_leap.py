@@ -1,6 +1,7 @@
-"""Leaping and landing (Wooten ch. 4, 6): what works today, measured off the simulation.
-The full targets of TARGETS.md (leaps to 0.6 m with human torque limits, broad jumps, landings
-with horizontal speed, jumps to a target) are not reached yet; see the README."""
+"""Leaping and landing (Wooten ch. 4, 6): what works today, measured off the simulation and
+compared with TARGETS.md. Not reached yet (see the README and docs/leap_report.md): broad jumps
+between the calibrated distances and beyond ~1 m, landings with horizontal speeds up to 3 m/s,
+jumps to a target."""
 import numpy as np
 import pytest
 
@@ -17,13 +18,15 @@ def first_flight(traj):
     return start, end
 
 
-@pytest.mark.parametrize("height", [0.3, 0.6])
-def test_drop_landing_ends_balanced(height):
-    traj = run(RunRequest("land", "man", start=StartState(height=height), duration=3.0))
+@pytest.mark.parametrize("name, height", [("man", 0.3), ("man", 0.8), ("woman", 0.92), ("woman", 1.15)])
+def test_drop_landing_ends_balanced(name, height):
+    """Seed (Wooten §6.2): the man recovers from a 1.15 m drop, the woman from 0.92 m (the man lands
+    0.8 m and 1.3 m but not 0.9-1.2 m with the calibrated foot servo delta: docs/leap_report.md)."""
+    traj = run(RunRequest("land", name, start=StartState(height=height), duration=3.0))
     m = traj.meta["metrics"]
     assert traj.meta["outcome"] == "success", m
     assert m["final_com_speed"] < 0.1 and not m["fell"]
-    assert m["final_pelvis_height"] > 0.85               # stood back up
+    assert m["final_pelvis_height"] > (0.85 if name == "man" else 0.75)      # stood back up
 
 
 @pytest.mark.parametrize("height", [0.2, 0.4])
@@ -64,19 +67,25 @@ def test_leap_replays_bit_for_bit():
     assert largest_difference(traj, replay(traj)) == 0.0
 
 
-@pytest.mark.parametrize("name, height", [("man", 0.2), ("man", 0.35), ("woman", 0.16), ("woman", 0.25)])
-def test_commanded_vertical_leap_is_reached_and_lands_balanced(name, height):
-    """TARGETS.md: COM rise within +-10 % (+-3 cm below 0.3 m), ending balanced."""
-    traj = run(RunRequest("leap", name, params=dict(height=height), duration=5.0))
+@pytest.mark.parametrize("name, height, strength", [
+    ("man", 0.2, "human"), ("man", 0.35, "human"), ("man", 0.6, "human"),
+    ("woman", 0.16, "human"), ("woman", 0.25, "human"), ("woman", 0.35, "human"),
+    ("man", 0.9, "unlimited"), ("woman", 0.45, "unlimited")])
+def test_commanded_vertical_leap_is_reached_and_lands_balanced(name, height, strength):
+    """TARGETS.md: COM rise within +-10 % (+-3 cm below 0.3 m), ending balanced. The man reaches
+    the 0.6 m target with human torque limits; not yet reached: the woman's 0.6 m (human, her
+    calibrated leaps end at 0.38 m) and 1.0 m with unlimited strength (man 0.93 m, woman 0.46 m)."""
+    traj = run(RunRequest("leap", name, params=dict(height=height), duration=5.0, strength=strength))
     m = traj.meta["metrics"]
     assert traj.meta["outcome"] == "success", m
     tolerance = 0.03 if height < 0.3 else 0.1 * height
     assert abs(m["com_rise"] - height) <= tolerance
-    # seed simulation: 5.8 x body weight at 0.5 m; goal <= 3.5 x (reached by the man, not the woman)
-    assert m["peak_thrust_grf_body_weights"] <= 6.0
+    # seed simulation: 5.8 x body weight at 0.5 m; goal <= 3.5 x (measured per height in the report)
+    if strength == "human":
+        assert m["peak_thrust_grf_body_weights"] <= 6.0
 
 
-@pytest.mark.parametrize("name, distance", [("man", 0.2), ("man", 1.0), ("woman", 0.9)])
+@pytest.mark.parametrize("name, distance", [("man", 0.2), ("woman", 0.45), ("woman", 1.25)])
 def test_broad_jump_travels_the_commanded_distance_and_lands_balanced(name, distance):
     """TARGETS.md: COM travel within +-10 %, ending balanced (at distances the script calibrated)."""
     traj = run(RunRequest("leap", name, params=dict(distance=distance), duration=5.0))
@@ -88,8 +97,11 @@ def test_broad_jump_travels_the_commanded_distance_and_lands_balanced(name, dist
 def test_infeasible_and_bad_leaps_are_refused_before_simulating():
     with pytest.raises(ParameterError, match="distance=1.8 m has no calibrated broad jump within 10 %"):
         run(RunRequest("leap", "man", params=dict(distance=1.8)))
-    with pytest.raises(ParameterError, match="height=1.1 m is infeasible for man"):
+    with pytest.raises(ParameterError, match=r"height=1.1 m is infeasible for man with human torque limits; "
+                                             r"allowed range is \[0.1\d, 0.\d\d\] m"):
         run(RunRequest("leap", "man", params=dict(height=1.1)))
+    with pytest.raises(ParameterError, match="height=1.2 m is infeasible for woman with unlimited strength"):
+        run(RunRequest("leap", "woman", params=dict(height=1.2), strength="unlimited"))
     with pytest.raises(ParameterError, match="height=-0.2 m is out of range"):
         run(RunRequest("leap", "man", params=dict(height=-0.2)))
     with pytest.raises(ParameterError, match="start height=-1"):

@@ -8,9 +8,12 @@ hip angle tilts the ground reaction force past the COM to set the somersault rat
 Landing: in flight the hips place the feet relative to the COM by a PD servo on the feet
 (eq. 6.1) towards the point where the COM's horizontal speed will have died out when it is over
 them (the capture point x + v sqrt(h/g)) plus the calibrated foot servo delta (Table 6.1's role);
-knees flexed, feet parallel to the ground. After touchdown the knees go soft (position gain down,
-damping up) and absorb; when their speed has fallen to 20 % of the touchdown speed the gains
-come back and the balance behaviour takes over.
+knees flexed, feet parallel to the ground - or, when the touchdown will be fast (a drop or a high
+leap), pitched toe-down so the forefoot lands first and the ankles take the first impact, as
+people land. After touchdown the knees go soft (position gain down, damping up) and absorb; when
+their speed has fallen to 20 % of the touchdown speed the gains come back and the balance
+behaviour takes over. The landing uses at most the human torque limits whatever the model's
+strength (an unlimited servo would land rigidly, not better).
 """
 from __future__ import annotations
 
@@ -37,10 +40,10 @@ VERTICAL_TIMING = (0.10, 0.15, 0.22)     # s to full extension: hip, knee, ankle
 BROAD_TIMING = (0.15, 0.20, 0.45)        # [W98 §4.2]
 ANKLE_GAIN_VERTICAL, ANKLE_GAIN_BROAD = 4.45, 3.6
 BROAD_TRIGGER = 0.8             # share of the crouch's COM offset that triggers a broad jump's thrust
-THRUST_DAMPING = 1.0            # share of the stiffened servos' damping kept in the thrust. Damping
-                                # brakes fast extension: at 0.3 the same crouch rises 0.36 -> 0.66 m
-                                # (man, human torque limits) but leaves spinning and lands worse;
-                                # kept at 1.0 until the landing handles those leaps
+THRUST_DAMPING = 1.0            # share of the stiffened servos' damping kept in the thrust when the
+                                # mapping names none. Damping brakes fast extension: high leaps use less
+                                # (calibrated per row of rigs/tuned/leap_<character>.json, with the
+                                # lift-off hip angle and COM offset that cancel the spin it brings)
 BROAD_THRUST_DAMPING = 1.0      # the broad jump's (its calibration is for it)
 THRUST_GAIN = 3.0               # hip and knee servos stiffened for the thrust [W98 §4.3]
 LIFTOFF_ANKLE = 0.75            # rad of plantarflexion at the end of the thrust
@@ -49,6 +52,11 @@ SOFT_KNEE_KP, SOFT_KNEE_KV = 0.3, 2.5    # knee gain factors while absorbing (th
 COM_KP, COM_KV = 4.0, 2.0      # the balance behaviour's COM servo gains (eq. 7.1), used while absorbing
 ABSORB_TIME = 0.35              # s: hand over to balance at the latest this long after touchdown
 KNEE_RESTORE = 0.2              # knees stiffen again at 20 % of their touchdown speed [W98 §6.1]
+TOE_POINT_PER_SPEED = 0.25      # rad of toe-down foot pitch before touchdown per m/s of expected touchdown
+TOE_POINT_FROM = 2.0            # speed above this (m/s): the forefoot lands first and the ankles give
+TOE_POINT_MAX = 0.5             # like a person landing from a height (0 = feet parallel to the ground)
+LANDING_TORQUE_LIMIT = 1.0      # landing joints use at most this share of the human torque limits,
+                                # whatever the model's strength (stiffer legs land harder, not better)
 
 
 def _sides(servos, *names):
@@ -175,6 +183,13 @@ class Landing(Behaviour):
         self.touchdown_knee_speed = None
         self.com_height = float(ctx.data.subtree_com[self.pelvis][2])
         self.finished_at = None
+        self.torque_cap = None
+        forcerange = m.actuator_forcerange[:, 1]
+        limits = np.array([ctx.character.dofs[ctx.character.dof_index[n]].torque_limit for n in s.names])
+        legs = s.indices([f"{j}_{side}_{a}" for j, a in (("hip", "y"), ("knee", "y"), ("ankle", "y"))
+                          for side in "rl"])
+        if (~m.actuator_forcelimited.astype(bool)[legs]).any() or (forcerange[legs] > limits[legs] * LANDING_TORQUE_LIMIT).any():
+            self.torque_cap = (legs, None, None, limits[legs] * LANDING_TORQUE_LIMIT)   # (model's own gains)
 
     def start(self, t: float) -> None:
         s = self.ctx.servos
@@ -215,6 +230,12 @@ class Landing(Behaviour):
             px = c * points[:, 0] + sn * points[:, 1]
             com_x = c * com[0] + sn * com[1]
             ankle_command = COM_KP * (com_x - 0.5 * (px.min() + px.max())) + COM_KV * vx
+        toe_point = 0.0
+        if self.stage == "flight":
+            # a fast touchdown lands on the forefoot so the ankles absorb the first impact
+            feet_height = max(float(self.airborne.feet_heights(d).min()), 0.0)
+            touchdown_speed = math.sqrt(vel[2] * vel[2] + 2.0 * 9.81 * feet_height)
+            toe_point = min(max(TOE_POINT_PER_SPEED * (touchdown_speed - TOE_POINT_FROM), 0.0), TOE_POINT_MAX)
         if self.stage == "flight" and self.airborne.touching(d):
             self.stage = "absorb"
             self.touchdown_knee_speed = max(abs(float(velocities[self.knees].mean())), 1e-3)
@@ -236,6 +257,8 @@ class Landing(Behaviour):
             foot_pitch = math.atan2(-f[6], f[8])
             foot_roll = math.atan2(f[7], f[8])
             targets[j["ankle_y"]] = angles[j["ankle_y"]] - foot_pitch      # feet parallel to the ground
+            if self.stage == "flight":
+                targets[j["ankle_y"]] += toe_point
             targets[j["ankle_x"]] = angles[j["ankle_x"]] - foot_roll
             if self.stage != "flight":
                 # on the ground the ankles already servo the COM over the feet (eq. 7.1), within
@@ -267,6 +290,14 @@ class Landing(Behaviour):
                     targets[j["knee"]] = self.knees_touched_at[k]
                 else:
                     targets[j["knee"]] = self.knees_stopped_at[k]
+        if self.torque_cap is not None:
+            # the servo's torque kp (target - q) - kv dq kept within the human limits by the target
+            legs, _, _, cap = self.torque_cap
+            kp = self.ctx.model.actuator_gainprm[legs, 0]
+            kv = -self.ctx.model.actuator_biasprm[legs, 2]
+            q, dq = angles[legs], velocities[legs]
+            torque = np.clip(kp * (targets[legs] + s.offset[legs] - q) - kv * dq, -cap, cap)
+            targets[legs] = q + (torque + kv * dq) / kp - s.offset[legs]
         s.hold(targets, t)
 
 
@@ -362,6 +393,13 @@ DEFAULT_MAPPING = {
 }
 
 
+def vertical_key(ctx: ControlContext) -> str:
+    """The vertical-leap table for this run's strength: "vertical" for the human torque limits (or
+    a factor of them), "vertical_unlimited" when the leg servos have no torque limit."""
+    knee = ctx.servos.index["knee_r_y"]
+    return "vertical" if ctx.model.actuator_forcelimited[knee] else "vertical_unlimited"
+
+
 def load_mapping(character: str) -> dict:
     path = TUNED_DIR / f"leap_{character}.json"
     if path.exists():
@@ -387,6 +425,9 @@ class Leap(Sequence):
         Parameter("crouch_pitch", "rad", 1.0, 0.0, 1.8, "torso pitch in the crouch (low_level only)"),
         Parameter("com_offset", "m", 0.0, -0.05, 0.25, "COM forward of the feet in the crouch (low_level only)"),
         Parameter("arm_swing", "rad", 1.0, 0.0, 3.2, "forward arm swing during the thrust (low_level only)"),
+        Parameter("thrust_damping", "1", 1.0, 0.1, 1.0,
+                  "share of the stiffened leg servos' damping kept in the thrust; less extends faster "
+                  "(low_level only)"),
         Parameter("crouch_time", "s", 0.8, 0.3, 3.0, "time to sink into the crouch"),
         Parameter("foot_delta", "m", 0.0, -0.3, 0.3, "landing: foot servo delta (see the land behaviour)"),
     )
@@ -394,7 +435,9 @@ class Leap(Sequence):
     def settings(self) -> dict:
         p = self.params
         if p["low_level"]:
-            settings = {k: p[k] for k in ("crouch_height", "crouch_pitch", "com_offset", "arm_swing")}
+            settings = {k: p[k] for k in ("crouch_height", "crouch_pitch", "com_offset", "arm_swing",
+                                          "thrust_damping")}
+            settings["damping"] = settings.pop("thrust_damping")
             settings["liftoff_hip"] = p["liftoff_hip_angle"]
             return settings
         mapping = load_mapping(self.ctx.character.name)
@@ -405,15 +448,15 @@ class Leap(Sequence):
             k = int(np.argmin(np.abs(np.asarray(b["com_travel"]) - x)))
             return {"crouch_height": b["crouch_height"][k], "crouch_pitch": b["torso_pitch"][k],
                     "com_offset": b["com_offset"][k], "arm_swing": b["arm_swing"][k],
-                    "liftoff_hip": b["liftoff_hip"][k] + p["liftoff_hip_angle"]}
-        v = mapping["vertical"]
+                    "liftoff_hip": b["liftoff_hip"][k] + p["liftoff_hip_angle"], "damping": BROAD_THRUST_DAMPING}
+        v = mapping[vertical_key(self.ctx)]
         h = p["height"]
-        neutral = v.get("liftoff_hip", [0.0] * len(v["com_rise"]))
-        return {"crouch_height": float(np.interp(h, v["com_rise"], v["crouch_height"])),
-                "crouch_pitch": float(np.interp(h, v["com_rise"], v["torso_pitch"])),
-                "com_offset": float(np.interp(h, v["com_rise"], v.get("com_offset", [0.0] * len(v["com_rise"])))),
-                "arm_swing": float(np.interp(h, v["com_rise"], v.get("arm_swing", [1.0] * len(v["com_rise"])))),
-                "liftoff_hip": float(np.interp(h, v["com_rise"], neutral)) + p["liftoff_hip_angle"]}
+        rises = v["com_rise"]
+        column = lambda name, default: float(np.interp(h, rises, v.get(name, [default] * len(rises))))
+        return {"crouch_height": column("crouch_height", 0.65), "crouch_pitch": column("torso_pitch", 0.0),
+                "com_offset": column("com_offset", 0.0), "arm_swing": column("arm_swing", 1.0),
+                "damping": column("damping", THRUST_DAMPING),
+                "liftoff_hip": column("liftoff_hip", 0.0) + p["liftoff_hip_angle"]}
 
     def check_feasible(self) -> None:
         p = self.params
@@ -432,17 +475,20 @@ class Leap(Sequence):
                     f"{self.ctx.character.name} (nearest {nearest:.2f} m; calibrated "
                     f"{travels.min():.2f} .. {travels.max():.2f} m; scripts/calibrate_leap.py)")
         else:
-            rises = mapping["vertical"]["com_rise"]
+            key = vertical_key(self.ctx)
+            strength = "unlimited strength" if key.endswith("unlimited") else "human torque limits"
+            rises = mapping.get(key, {}).get("com_rise", [])
             if not rises:
-                raise ParameterError(f"the vertical leap of {self.ctx.character.name} is not calibrated: run "
-                                     f"scripts/calibrate_leap.py (or use low_level=1)")
+                raise ParameterError(f"the vertical leap of {self.ctx.character.name} with {strength} is not "
+                                     f"calibrated: run scripts/calibrate_leap.py (or use low_level=1)")
             top, bottom = max(rises), min(rises)
             if p["height"] < bottom * 0.9:
                 raise ParameterError(f"parameter height={p['height']:g} m is below the calibrated leaps of "
-                                     f"{self.ctx.character.name}; allowed range is [{bottom:.2f}, {top:.2f}] m")
+                                     f"{self.ctx.character.name} with {strength}; allowed range is "
+                                     f"[{bottom:.2f}, {top:.2f}] m")
             if p["height"] > top * 1.05:
                 raise ParameterError(f"parameter height={p['height']:g} m is infeasible for "
-                                     f"{self.ctx.character.name} with human torque limits; allowed range is "
+                                     f"{self.ctx.character.name} with {strength}; allowed range is "
                                      f"[{bottom:.2f}, {top:.2f}] m")
 
     def _stand_height(self) -> float:
@@ -470,8 +516,7 @@ class Leap(Sequence):
         def thrust(t):
             return LeapThrust({}, ctx, cfg["crouch_height"], BROAD_TIMING if broad else VERTICAL_TIMING,
                               ANKLE_GAIN_BROAD if broad else ANKLE_GAIN_VERTICAL, cfg["liftoff_hip"],
-                              cfg["arm_swing"], stand_height=self._stand_height(),
-                              damping=BROAD_THRUST_DAMPING if broad else THRUST_DAMPING)
+                              cfg["arm_swing"], stand_height=self._stand_height(), damping=cfg["damping"])
 
         def land(t):
             return Landing(Landing.schema.validate(dict(foot_delta=p["foot_delta"])), ctx)
