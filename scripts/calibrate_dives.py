@@ -139,10 +139,27 @@ def refine(character: str, dive: dict, best: tuple, names: list, low, high) -> t
         for b in range(REFINE_STEPS):
             around = grid[max(a - 1, 0):a + 2, max(b - 1, 0):b + 2]
             robust[a, b] = grid[a, b] + np.mean(around)
+    if not (grid < 2.0).any():
+        print(f"  {character} {GROUPS[dive['group']]} refined over {first} x {second}: no cell scores < 2; "
+              f"keeping the search's best ({best[0]:.3f})", flush=True)
+        return best if best[0] <= grid.min() else runs[np.unravel_index(np.argmin(grid), grid.shape)]
     a, b = np.unravel_index(np.argmin(robust), robust.shape)
     print(f"  {character} {GROUPS[dive['group']]} refined over {first} x {second}: "
           f"{np.sum(grid < 2.0)} of {grid.size} cells score < 2; chosen score {grid[a, b]:.3f}", flush=True)
     return runs[a, b]
+
+
+def table_limits(dives: list[dict]) -> dict:
+    """What the dive's feasibility check allows: per group the largest take-off angular momentum
+    seen without touching the platform; the most twists a calibrated dive made while its
+    somersaults were right (within a quarter turn)."""
+    twists = [d["measured"]["twists"] for d in dives
+              if d["measured"].get("somersaults") is not None and not d["measured"].get("hit_platform")
+              and abs(d["measured"]["somersaults"] - d["somersaults"]) <= 0.25]
+    return {"rise": 0.3,
+            "angular_momentum": {group: max([d["largest_momentum_clear"] for d in dives
+                                             if GROUPS[d["group"]] == group] + [0.0]) for group in GROUPS},
+            "twists": round(max(twists + [0.0]), 3)}
 
 
 def main() -> None:
@@ -151,6 +168,8 @@ def main() -> None:
     parser.add_argument("--iterations", type=int, default=5)
     parser.add_argument("--population", type=int, default=12)
     parser.add_argument("--seed", type=int, default=1)
+    parser.add_argument("--limits-only", action="store_true",
+                        help="only recompute the table's limits from its rows (after a change of this script's rules)")
     parser.add_argument("--fresh", action="store_true", help="search from the middle of the space, not from the table")
     parser.add_argument("--only", type=int, action="append",
                         help="calibrate only the dive with this index in the character's list; keep the others' table rows")
@@ -159,14 +178,18 @@ def main() -> None:
         started = time.time()
         path = TUNED_DIR / f"dives_{character}.json"
         old = json.loads(path.read_text())["dives"] if path.exists() else []
+        if args.limits_only:
+            table = json.loads(path.read_text())
+            table["limits"] = table_limits(old)
+            path.write_text(json.dumps(table, indent=1) + "\n")
+            print(f"{character}: limits {table['limits']}")
+            continue
         with Capacity():
             dives = [search(character, dive, args.iterations, args.population, args.seed,
                             old[k]["settings"] if k < len(old) and not args.fresh else None)
                      if args.only is None or k in args.only or k >= len(old) else old[k]
                      for k, dive in enumerate(DIVES[character])]
-        limits = {"rise": 0.3, "angular_momentum": {
-            group: max([d["largest_momentum_clear"] for d in dives if GROUPS[d["group"]] == group] + [0.0])
-            for group in GROUPS}}
+        limits = table_limits(dives)
         tmp = path.with_suffix(".tmp")
         tmp.write_text(json.dumps({"character": character, "script": "scripts/calibrate_dives.py",
                                    "search": vars(args), "dives": dives, "limits": limits}, indent=1) + "\n")

@@ -36,7 +36,7 @@ TAKEOFF_CLEAR = 0.05       # s without contact that make a take-off
 PLATFORM_MARGIN = 0.05     # m of room kept between the turning body and the platform
 FEET_CLEARANCE = 0.15      # m: the position is taken once the feet are this far past the platform's edge
 POSITION_MOVE = 0.15       # s after take-off before the position is held (in the feasibility estimate)
-DEFAULT_LIMITS = {"rise": 0.3, "angular_momentum": {"inward": 40.0, "back": 50.0}}
+DEFAULT_LIMITS = {"rise": 0.3, "angular_momentum": {"inward": 40.0, "back": 50.0}, "twists": 0.5}
 SNAP = 3.0                 # hip, knee and spine gains x3 for the moves into and out of the position
 OPEN_MOVE = 0.2            # s: the servo move from the position to the line
 OPEN_TIME = 0.25            # s: time to straighten from the position into the line
@@ -53,6 +53,10 @@ def dive_name(p: dict) -> str:
     position = ("layout", "pike", "tuck")[int(round(p["position"]))]
     twists = f" with {p['twists']:g} twists" if p["twists"] else ""
     return f"{GROUPS[int(round(p['group']))]} {p['somersaults']:g} somersault {position}{twists}"
+
+
+def _article(name: str) -> str:
+    return ("an " if name[0] in "aeiou" else "a ") + name
 
 
 def load_settings(character: str, p: dict) -> dict:
@@ -113,10 +117,19 @@ class Dive(Sequence):
             raise ParameterError(f"parameter somersaults={p['somersaults']:g} must be a whole or half number")
         if abs(p["twists"] * 2 - round(p["twists"] * 2)) > 1e-9:
             raise ParameterError(f"parameter twists={p['twists']:g} must be a whole or half number")
+        limits = self.limits()
+        if limits["angular_momentum"][GROUPS[int(round(p["group"]))]] <= 0:
+            raise ParameterError(
+                f"the {self.ctx.character.name} has no calibrated {GROUPS[int(round(p['group']))]} take-off that clears "
+                f"the platform (scripts/calibrate_dives.py found none)")
+        if p["twists"] > limits.get("twists", 0.0) + 0.25:
+            raise ParameterError(
+                f"{_article(dive_name(p))} cannot be completed by the {self.ctx.character.name}: the arm throw made at most "
+                f"{limits.get('twists', 0.0):.2f} twists in a calibrated dive (allowed: that + 0.25)")
         capacity = self.rotation_capacity()
         if p["somersaults"] > capacity:
             raise ParameterError(
-                f"a {dive_name(p)} cannot be completed from {p['platform_height']:g} m by the "
+                f"{_article(dive_name(p))} cannot be completed from {p['platform_height']:g} m by the "
                 f"{self.ctx.character.name}: the flight allows at most {capacity:.2f} somersaults in this position "
                 f"with the largest calibrated take-off angular momentum")
 
@@ -125,14 +138,17 @@ class Dive(Sequence):
         momentum the calibration reached for this group without touching the platform, spent in
         the position for the flight time less the take-off and opening, and in the line for the
         rest."""
-        path = TUNED_DIR / f"dives_{self.ctx.character.name}.json"
         group = GROUPS[int(round(self.params["group"]))]
-        limits = json.loads(path.read_text())["limits"] if path.exists() else DEFAULT_LIMITS
+        limits = self.limits()
         momentum = limits["angular_momentum"][group]
         flight = self.flight_time(limits["rise"])
         straight = min(flight, OPEN_TIME + POSITION_MOVE)
         angle = momentum * ((flight - straight) / self._position_inertia() + straight / self._line_inertia())
         return angle / (2 * math.pi)
+
+    def limits(self) -> dict:
+        path = TUNED_DIR / f"dives_{self.ctx.character.name}.json"
+        return json.loads(path.read_text())["limits"] if path.exists() else DEFAULT_LIMITS
 
     def flight_time(self, rise: float) -> float:
         drop = self.params["platform_height"] + rise - self._entry_reach()

@@ -1,0 +1,125 @@
+"""Tumbling and diving report: moments of inertia of the positions beside Wooten's Fig. 5.2, the
+four 10 m platform dives of §8.2.1 measured off the simulation, and a plot of the somersault and
+twist rates in flight (like Figs. 5.3 and 5.7). Writes docs/tumbling.md's results block and
+docs/tumbling_rates.png.
+
+    python3 scripts/tumble_report.py
+"""
+from __future__ import annotations
+
+import re
+import sys
+from pathlib import Path
+
+import mujoco
+import numpy as np
+
+ROOT = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(ROOT))
+
+from sim_core.character.model import compile_model  # noqa: E402
+from sim_core.character.spec import load_character  # noqa: E402
+from sim_core.control.dive import dive_name  # noqa: E402
+from sim_core.control.tumble import SEED_INERTIA, inertia_about_com, position_inertia  # noqa: E402
+from sim_core.errors import ParameterError  # noqa: E402
+from sim_core.simulate import RunRequest, run  # noqa: E402
+
+DOC = ROOT / "docs" / "tumbling.md"
+PLOT = ROOT / "docs" / "tumbling_rates.png"
+DIVES = [("man", dict(group=0, somersaults=1.5, twists=0.0, position=1)),
+         ("man", dict(group=1, somersaults=1.5, twists=0.5, position=2)),
+         ("woman", dict(group=0, somersaults=2.5, twists=0.0, position=1)),
+         ("woman", dict(group=1, somersaults=1.5, twists=2.5, position=2))]
+
+
+def inertia_series(trajectory) -> np.ndarray:
+    """Whole-body moment of inertia about the somersault axis at every frame."""
+    model = mujoco.MjModel.from_xml_string(trajectory.meta["model_xml"])
+    data = mujoco.MjData(model)
+    out = []
+    for q in trajectory.arrays["qpos"]:
+        data.qpos[:] = q
+        mujoco.mj_kinematics(model, data)
+        mujoco.mj_comPos(model, data)
+        out.append(inertia_about_com(model, data)[1, 1])
+    return np.array(out)
+
+
+def inertia_table() -> list[str]:
+    lines = ["| character | position | this model, kg m² | Wooten Fig. 5.2 | difference |", "| --- | --- | --- | --- | --- |"]
+    for character in ("man", "woman"):
+        spec = load_character(character)
+        model, _ = compile_model(spec)
+        for position in ("layout", "pike", "tuck"):
+            value = position_inertia(model, spec, position)
+            seed = SEED_INERTIA[character][position]
+            lines.append(f"| {character} | {position} | {value:.2f} | {seed:.2f} | {100 * (value / seed - 1):+.1f} % |")
+    return lines
+
+
+def dive_rows() -> tuple[list[str], dict]:
+    lines = ["| character | dive | outcome | somersaults | twists | entry angle from vertical | take-off angular momentum kg m²/s | flight s | momentum drift in flight | tightest I in flight kg m² |",
+             "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"]
+    runs = {}
+    for character, params in DIVES:
+        name = dive_name({**params, "platform_height": 10.0})
+        try:
+            traj = run(RunRequest("dive", character, params=params, duration=4.5))
+        except ParameterError as error:
+            lines.append(f"| {character} | {name} | refused: {error} | | | | | | | |")
+            continue
+        m = traj.meta["metrics"]
+        runs[(character, name)] = traj
+        tight = float(inertia_series(traj)[int(np.searchsorted(traj.arrays["time"], m["takeoff_time"])):].min())
+        lines.append(f"| {character} | {name} | {traj.meta['outcome']} | {m['somersaults']:.2f} | {m['twists']:.2f} | "
+                     f"{m['entry_angle_from_vertical_deg']:.0f}° | {m['takeoff_angular_momentum']:.1f} | "
+                     f"{m['flight_time']:.2f} | {100 * m['angular_momentum_drift']:.2f} % | {tight:.2f} |")
+        print(lines[-1], flush=True)
+    return lines, runs
+
+
+def plot(runs: dict) -> None:
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, axes = plt.subplots(1, 2, figsize=(11, 4))
+    for ax, (key, traj) in zip(axes, list(runs.items())[:2]):
+        a = traj.arrays
+        t = a["time"]
+        inertia = inertia_series(traj)
+        somersault_rate = np.abs(a["angmom"][:, 1]) / inertia
+        ax.plot(t, somersault_rate, label="somersault rate |H_y| / I_y (rad/s)")
+        ax.plot(t, np.abs(a["qvel"][:, 5]), label="twist rate, about the long axis (rad/s)")
+        ax.plot(t, inertia, label="I_y (kg m²)", alpha=0.6)
+        marks = [(traj.meta["metrics"]["takeoff_time"], "take-off")]
+        marks += [(time, event) for time, event in traj.meta["phase_events"]
+                  if event in ("entry", "twist_throw", "twist_stop") and (time, event) not in marks]
+        top = ax.get_ylim()[1]
+        for k, (time, event) in enumerate(marks):
+            ax.axvline(time, color="grey", lw=0.6)
+            ax.text(time + 0.01, top * (0.98 - 0.12 * (k % 2)), event.replace("_", " "), rotation=90, fontsize=7, va="top")
+        ax.set_title(f"{key[0]}: {key[1]}")
+        ax.set_xlabel("time (s)")
+        ax.set_xlim(traj.meta["metrics"]["takeoff_time"] - 0.3, t[-1])
+        ax.legend(fontsize=7, loc="upper left")
+    fig.tight_layout()
+    fig.savefig(PLOT, dpi=110)
+
+
+def main() -> int:
+    lines = ["Measured by `python3 scripts/tumble_report.py`.", "",
+             "Moments of inertia about the somersault axis (positions as commanded, body upright):", ""]
+    lines += inertia_table()
+    dives, runs = dive_rows()
+    lines += ["", "10 m platform dives (rotation counted from the standing start to the hands reaching the water):", ""]
+    lines += dives
+    plot(runs)
+    text = DOC.read_text()
+    block = "<!-- results -->\n" + "\n".join(lines) + "\n<!-- /results -->"
+    DOC.write_text(re.sub(r"<!-- results -->.*<!-- /results -->", lambda _: block, text, flags=re.S))
+    print(f"wrote {DOC} and {PLOT}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
