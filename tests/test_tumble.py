@@ -110,3 +110,14 @@ def test_platform_world_holds_the_diver_and_the_water_is_not_felt():
     assert abs(a["com"][-1, 2] - a["com"][0, 2]) < 0.1
     assert traj.meta["world"]["platform"] == 10.0
     assert math.isclose(float(np.min(a["support_points"][:, :, 2])), 0.0, abs_tol=0.01)
+
+
+@pytest.mark.parametrize("params, match", [
+    (dict(group=0, somersaults=2.5, position=1), "at most .* somersaults"),        # inward 2 1/2 pike
+    (dict(group=1, somersaults=1.5, twists=2.5, position=2), "at most .* twists"),  # back 1 1/2 with 2 1/2 twists
+])
+def test_the_womans_seed_dives_beyond_her_takeoff_are_refused_with_the_reason(params, match):
+    """Not reached (see docs/tumbling.md): her calibrated take-offs do not give the rotation;
+    the request is refused before simulating, naming the limit."""
+    with pytest.raises(ParameterError, match=match):
+        run(RunRequest("dive", "woman", params=params))
