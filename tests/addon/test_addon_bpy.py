@@ -288,3 +288,29 @@ def test_invoke_in_background_runs_to_the_end(empty_scene):
     bpy.ops.sim_athletics.add_character(character="man")
     assert bpy.ops.sim_athletics.simulate_bake("INVOKE_DEFAULT", behaviour="balance", duration=0.2) == {"FINISHED"}
     assert empty_scene.view_layer.objects.active.animation_data.action is not None
+
+
+def test_a_dive_is_baked_with_its_platform_and_water(empty_scene):
+    """The dive through the operator: the baked pelvis falls the platform's height and ends at the
+    water; the platform and water appear once, under fixed names, where the simulation had them."""
+    from blender_addon import scenery
+    context = empty_scene
+    context.scene.render.fps, context.scene.render.fps_base = FPS, 1.0
+    assert bpy.ops.sim_athletics.add_character(character="man") == {"FINISHED"}
+    arm = context.view_layer.objects.active
+    params = "group=0 somersaults=1.5 position=1"
+    assert bpy.ops.sim_athletics.simulate_bake(behaviour="dive", params=params, duration=4.5, start_frame=1) == {"FINISHED"}
+    platform, water = bpy.data.objects[scenery.PLATFORM_NAME], bpy.data.objects[scenery.WATER_NAME]
+    top = max((platform.matrix_world @ v.co).z for v in platform.data.vertices)
+    surface = max((water.matrix_world @ v.co).z for v in water.data.vertices)
+    assert top == pytest.approx(0.0, abs=1e-6) and surface == pytest.approx(-10.0, abs=0.01)
+    action = arm.animation_data.action
+    last = int(action.frame_range[1])
+    context.scene.frame_set(1)
+    start = (arm.matrix_world @ arm.pose.bones["PELVIS"].head).z
+    context.scene.frame_set(last)
+    end = (arm.matrix_world @ arm.pose.bones["PELVIS"].head).z
+    assert start > 0.8 and end < -8.0
+    # a second bake reuses the scenery instead of duplicating it
+    assert bpy.ops.sim_athletics.simulate_bake(behaviour="dive", params=params, duration=4.5, start_frame=1) == {"FINISHED"}
+    assert len([o for o in bpy.data.objects if o.name.startswith("SimAthletics")]) == 2
