@@ -115,17 +115,18 @@ def search(character: str, dive: dict, iterations: int, population: int, seed: i
 
 REFINE = {True: ("liftoff_hip", "twist_lead"), False: ("liftoff_hip", "com_offset")}
 REFINE_STEPS = 5
+REFINE_SPAN = 0.06          # share of each range either side of the best
 
 
 def refine(character: str, dive: dict, best: tuple, names: list, low, high) -> tuple:
     """A grid over the two settings the dive is most sensitive to (the lift-off hip angle, and
-    the twist lead or the lean), around the search's best, +-15 % of their ranges; keeps the cell
+    the twist lead or the lean), around the search's best, +-6 % of their ranges; keeps the cell
     whose own score plus its neighbours' mean is lowest, so that the table holds a setting that
     still works when the state at take-off differs a little."""
     first, second = REFINE[bool(dive["twists"])]
     i, j = names.index(first), names.index(second)
     centre = best[1]
-    axes = [np.clip(centre[n] + np.linspace(-0.15, 0.15, REFINE_STEPS) * (high[k] - low[k]), low[k], high[k])
+    axes = [np.clip(centre[n] + np.linspace(-REFINE_SPAN, REFINE_SPAN, REFINE_STEPS) * (high[k] - low[k]), low[k], high[k])
             for n, k in ((first, i), (second, j))]
     grid = np.full((REFINE_STEPS, REFINE_STEPS), np.inf)
     runs = {}

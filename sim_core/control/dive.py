@@ -39,7 +39,7 @@ POSITION_MOVE = 0.15       # s after take-off before the position is held (in th
 DEFAULT_LIMITS = {"rise": 0.3, "angular_momentum": {"inward": 40.0, "back": 50.0}, "twists": 0.5}
 SNAP = 3.0                 # hip, knee and spine gains x3 for the moves into and out of the position
 OPEN_MOVE = 0.2            # s: the servo move from the position to the line
-OPEN_TIME = 0.25            # s: time to straighten from the position into the line
+OPEN_TIME = 0.18            # s: time to straighten from the position into the line
 TWIST_STOP_LEAD = 0.15      # s of the measured twist rate: arms come back this early
 ENTRY_REACH = 1.15          # share of the standing COM height: hands below the COM in the line
 
