@@ -29,6 +29,9 @@ from sim_core.perturbation import Push, PushSchedule
 from sim_core.trajectory import Trajectory
 
 STATE_SPEC = mujoco.mjtState.mjSTATE_INTEGRATION
+# MuJoCo's answer to a diverging state is to reset it (a teleport): any of these ends the run
+DIVERGENCE_WARNINGS = (mujoco.mjtWarning.mjWARN_BADQACC, mujoco.mjtWarning.mjWARN_BADQPOS,
+                       mujoco.mjtWarning.mjWARN_BADQVEL)
 
 
 class Cancelled(SimAthleticsError):
@@ -189,7 +192,7 @@ def run(request: RunRequest, progress: Callable[[float], None] | None = None,
         servos.write(t)
         control[tick] = data.ctrl
         mujoco.mj_step(model, data, nstep=steps_per_tick)
-        if data.warning[mujoco.mjtWarning.mjWARN_BADQACC].number:
+        if any(data.warning[w].number for w in DIVERGENCE_WARNINGS):
             raise UnstableSimulation(
                 f"the simulation became numerically unstable at t={t:.3f} s (accelerations blew "
                 f"up); nothing was written - lower the gains or the strength, or shorten the step")
