@@ -20,18 +20,16 @@ import math
 
 import numpy as np
 
-from sim_core.control.balance import Balance, LegGeometry
 from sim_core.control.behaviour import register
-from sim_core.control.leap import ANKLE_GAIN_VERTICAL, TUNED_DIR, VERTICAL_TIMING, LeapThrust
+from sim_core.control.leap import TUNED_DIR
 from sim_core.control.sequencer import Sequence, Step
+from sim_core.control.takeoff import GRAVITY, SETTINGS, takeoff_steps, time_to_fall_to, rotation_to_come
 from sim_core.control.tumble import FlightRotation, Tumble, position_inertia, position_radius
 from sim_core.errors import ParameterError
 from sim_core.schema import Parameter, Schema
 
-GRAVITY = 9.80665
 GROUPS = ("inward", "back")
-LEAP_SETTINGS = ("crouch_height", "crouch_pitch", "com_offset", "liftoff_hip", "arm_swing", "twist_lead")
-LEAN_TRIGGER = 1.0         # share of a backward COM offset that triggers the thrust
+LEAP_SETTINGS = SETTINGS + ("twist_lead",)
 TAKEOFF_CLEAR = 0.05       # s without contact that make a take-off
 PLATFORM_MARGIN = 0.05     # m of room kept between the turning body and the platform
 FEET_CLEARANCE = 0.15      # m: the position is taken once the feet are this far past the platform's edge
@@ -174,16 +172,6 @@ class Dive(Sequence):
         self.target = 2 * math.pi * p["somersaults"]
         self.twist_target = 2 * math.pi * p["twists"]
         self.entered = False
-        stand = 0.5 * sum(LegGeometry(ctx.character, side).standing_hip_height() for side in "RL")
-
-        def crouch(t):
-            return Balance(Balance.schema.validate(dict(
-                pelvis_height=cfg["crouch_height"], torso_pitch=cfg["crouch_pitch"], com_offset_x=cfg["com_offset"],
-                move_start=0.2, move_time=0.8, hold_time=0.0, return_to_stand=0)), ctx)
-
-        def thrust(t):
-            return LeapThrust({}, ctx, cfg["crouch_height"], VERTICAL_TIMING, ANKLE_GAIN_VERTICAL,
-                              cfg["liftoff_hip"], cfg["arm_swing"], stand_height=stand)
 
         def tumble(t):
             self.rotation.takeoff(t)
@@ -195,17 +183,8 @@ class Dive(Sequence):
             return _Aerial(Tumble.schema.validate(dict(position=3, move_time=OPEN_MOVE, stiffness=SNAP)), ctx,
                            self.rotation, self)
 
-        def crouched(b, t):
-            # leaning back: thrust once the COM, moving back, has left the middle of the feet by the
-            # share LEAN_TRIGGER of the requested offset (as the broad jump leans forward, §4.2)
-            if cfg["com_offset"] < 0 and b.com_ahead_of_support() < LEAN_TRIGGER * cfg["com_offset"]:
-                return True
-            return b.posture_reached(t - 0.15)
-
-        return [Step("crouch", crouch, crouched),
-                Step("thrust", thrust, lambda b, t: b.lifted_off()),
-                Step("tumble", tumble, lambda b, t: self.time_to_open(t)),
-                Step("entry", entry)]
+        return takeoff_steps(ctx, cfg) + [Step("tumble", tumble, lambda b, t: self.time_to_open(t)),
+                                          Step("entry", entry)]
 
     # ------------------------------------------------------------------ transitions
     def time_to_open(self, t: float) -> bool:
@@ -216,10 +195,9 @@ class Dive(Sequence):
         remaining = self.target - self.direction * self.rotation.whole_body
         rate_now = self.direction * self.rotation.rate()
         rate_line = self.direction * float(d.subtree_angmom[1][1]) / self._line_inertia()
-        z, vz = float(d.subtree_com[1][2]), float(d.subtree_linvel[1][2])
-        drop = z - (-self.params["platform_height"] + self._entry_reach())
-        time_left = (vz + math.sqrt(max(vz * vz + 2 * GRAVITY * drop, 0.0))) / GRAVITY
-        coming = rate_line * time_left + 0.5 * (rate_now - rate_line) * OPEN_TIME
+        time_left = time_to_fall_to(float(d.subtree_com[1][2]), float(d.subtree_linvel[1][2]),
+                                    -self.params["platform_height"] + self._entry_reach())
+        coming = rotation_to_come(rate_now, rate_line, time_left, OPEN_TIME)
         if self.twist_target and time_left <= self.cfg["twist_lead"]:
             return True                  # the twist needs this long in the layout
         if time_left <= OPEN_TIME:

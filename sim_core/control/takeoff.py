@@ -1,0 +1,51 @@
+"""Take-off for rotating skills (dives, standing somersaults): the balance behaviour crouches and
+leans, the leap thrust extends the legs and ends with the lift-off hip angle that sets the
+somersault rate (Wooten §4.3); and the prediction that times the opening out of a tuck or pike
+(how far the body will still turn before it reaches the water or the ground)."""
+from __future__ import annotations
+
+import math
+
+from sim_core.control.balance import Balance, LegGeometry
+from sim_core.control.behaviour import ControlContext
+from sim_core.control.leap import ANKLE_GAIN_VERTICAL, VERTICAL_TIMING, LeapThrust
+from sim_core.control.sequencer import Step
+
+GRAVITY = 9.80665
+LEAN_TRIGGER = 1.0         # share of a backward COM offset that triggers the thrust
+SETTINGS = ("crouch_height", "crouch_pitch", "com_offset", "liftoff_hip", "arm_swing")
+
+
+def takeoff_steps(ctx: ControlContext, cfg: dict) -> list[Step]:
+    """Crouch (leaning by ``com_offset``), then thrust until the feet leave the ground. Leaning
+    back (``com_offset`` < 0), the thrust starts once the COM, moving back, has left the middle of
+    the feet by that much (as the broad jump leans forward, §4.2)."""
+    stand = 0.5 * sum(LegGeometry(ctx.character, side).standing_hip_height() for side in "RL")
+
+    def crouch(t):
+        return Balance(Balance.schema.validate(dict(
+            pelvis_height=cfg["crouch_height"], torso_pitch=cfg["crouch_pitch"], com_offset_x=cfg["com_offset"],
+            move_start=0.2, move_time=0.8, hold_time=0.0, return_to_stand=0)), ctx)
+
+    def crouched(b, t):
+        if cfg["com_offset"] < 0 and b.com_ahead_of_support() < LEAN_TRIGGER * cfg["com_offset"]:
+            return True
+        return b.posture_reached(t - 0.15)
+
+    def thrust(t):
+        return LeapThrust({}, ctx, cfg["crouch_height"], VERTICAL_TIMING, ANKLE_GAIN_VERTICAL,
+                          cfg["liftoff_hip"], cfg["arm_swing"], stand_height=stand)
+
+    return [Step("crouch", crouch, crouched), Step("thrust", thrust, lambda b, t: b.lifted_off())]
+
+
+def time_to_fall_to(z: float, vz: float, z_end: float) -> float:
+    """Ballistic time (s) until a COM at height z moving up at vz comes down to z_end."""
+    drop = z - z_end
+    return (vz + math.sqrt(max(vz * vz + 2 * GRAVITY * drop, 0.0))) / GRAVITY
+
+
+def rotation_to_come(rate_now: float, rate_open: float, time_left: float, open_time: float) -> float:
+    """Rotation (rad) the body will still make if it opens now: at the open shape's rate for the
+    time left, plus about half the difference of the rates over the opening."""
+    return rate_open * time_left + 0.5 * (rate_now - rate_open) * open_time
