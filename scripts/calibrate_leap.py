@@ -41,6 +41,8 @@ THRUST_ONLY = 1.7            # s: crouch (0.2 + 0.8 + 0.15 s) and the thrust, up
 LEAP_DURATION = 4.5
 NEWTON_STEPS = 5
 ARM_SWING = 1.0              # rad: a forward swing that adds height without spinning the body
+FALLBACK_HIPS = (-0.3, 0.0, 0.3, 0.6, 0.9)      # rad: lift-off hip angles tried when Newton leaves a fast thrust spinning
+FALLBACK_OFFSETS = (-0.05, 0.0)      # m: crouch COM offsets tried with them
 
 
 def liftoff_state(character, crouch_height, hip, offset, damping=1.0, strength="human"):
@@ -90,10 +92,23 @@ def trial(args):
     params = dict(low_level=1, crouch_height=crouch_height, crouch_pitch=0.0, com_offset=float(offset),
                   liftoff_hip_angle=float(hip), arm_swing=ARM_SWING, thrust_damping=damping)
     traj = run(RunRequest("leap", character, params=params, duration=LEAP_DURATION, strength=strength))
+    if traj.meta["outcome"] != "success" and damping < 1.0:
+        # a fast thrust whose spin and drift Newton could not both cancel: of a few lift-off hip
+        # angles and offsets around the usual ones, keep the leap that lands balanced and travels least
+        landed = []
+        for h in FALLBACK_HIPS:
+            for o in FALLBACK_OFFSETS:
+                p = dict(params, liftoff_hip_angle=h, com_offset=o)
+                t = run(RunRequest("leap", character, params=p, duration=LEAP_DURATION, strength=strength))
+                if t.meta["outcome"] == "success":
+                    landed.append((abs(t.meta["metrics"]["com_travel"]), h, o, t))
+        if landed:
+            _, hip, offset, traj = min(landed, key=lambda x: x[0])
+            residual = None
     m = traj.meta["metrics"]
     result = {"crouch_height": crouch_height, "damping": damping, "liftoff_hip": float(hip),
               "com_offset": float(offset), "residual": None if residual is None else [float(r) for r in residual],
-              "com_rise": m["com_rise"], "peak_thrust_grf_body_weights": m.get("peak_thrust_grf_body_weights"),
+              "com_rise": m["com_rise"], "com_travel": m["com_travel"], "peak_thrust_grf_body_weights": m.get("peak_thrust_grf_body_weights"),
               "outcome": traj.meta["outcome"]}
     print(f"  {character} ({strength}): crouch {crouch_height:.3f} m, damping {damping:.2f}, hip {hip:+.2f} rad, "
           f"offset {offset:+.3f} m (residual {result['residual']}) -> COM rise {m['com_rise']:.3f} m, "
@@ -148,8 +163,8 @@ def vertical_table(results: list[dict]) -> dict:
             if r["com_rise"] > best + 0.01:
                 rows.append(r)
                 best = r["com_rise"]
-    table = {k: [r[k] for r in rows] for k in ("com_rise", "crouch_height", "damping", "com_offset", "liftoff_hip",
-                                                 "peak_thrust_grf_body_weights")}
+    table = {k: [r.get(k) for r in rows] for k in ("com_rise", "crouch_height", "damping", "com_offset",
+                                                     "liftoff_hip", "peak_thrust_grf_body_weights", "com_travel")}
     table["torso_pitch"] = [0.0 for _ in rows]
     table["arm_swing"] = [ARM_SWING for _ in rows]
     return table
