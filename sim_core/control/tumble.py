@@ -79,14 +79,12 @@ def twist_angles(direction: float) -> dict[str, float]:
 
 def inertia_about_com(model: mujoco.MjModel, data: mujoco.MjData) -> np.ndarray:
     """Whole-body inertia tensor (world frame, kg m^2) about the COM of the current state."""
-    com = data.subtree_com[1]
-    total = np.zeros((3, 3))
-    for b in range(1, model.nbody):
-        rotation = data.ximat[b].reshape(3, 3)
-        r = data.xipos[b] - com
-        total += rotation @ np.diag(model.body_inertia[b]) @ rotation.T
-        total += model.body_mass[b] * (r @ r * np.eye(3) - np.outer(r, r))
-    return total
+    rotation = data.ximat[1:].reshape(-1, 3, 3)
+    own = np.einsum("bij,bj,bkj->ik", rotation, model.body_inertia[1:], rotation)
+    r = data.xipos[1:] - data.subtree_com[1]
+    mass = model.body_mass[1:]
+    parallel = np.eye(3) * float(mass @ np.einsum("bi,bi->b", r, r)) - np.einsum("b,bi,bj->ij", mass, r, r)
+    return own + parallel
 
 
 def _posed(model: mujoco.MjModel, character, position: str) -> mujoco.MjData:
@@ -161,13 +159,17 @@ class FlightRotation:
         self.last = raw
         dt = t - self.t
         self.twist += float(self.data.qvel[5]) * dt      # free joint: local angular velocity
+        self._rate = None
         if self.flying:
             self.whole_body += self.rate() * dt
         self.t = t
 
     def rate(self) -> float:
-        """Mean somersault rate of the whole body (rad/s): H_y / I_yy about the COM."""
-        return float(self.data.subtree_angmom[1][1]) / float(inertia_about_com(self.model, self.data)[1, 1])
+        """Mean somersault rate of the whole body (rad/s): H_y / I_yy about the COM (of the state
+        at the last ``update``)."""
+        if getattr(self, "_rate", None) is None:
+            self._rate = float(self.data.subtree_angmom[1][1]) / float(inertia_about_com(self.model, self.data)[1, 1])
+        return self._rate
 
 
 class Tumble(Behaviour):
