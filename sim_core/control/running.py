@@ -82,10 +82,16 @@ class SpeedTable:
         self.values = {k: ([float(x) for x in v] if isinstance(v, (list, tuple)) else [float(v)] * len(self.speeds))
                        for k, v in values.items()}
 
+    # the table under evaluation while scripts/tune_running.py scores a candidate (set in its
+    # worker process only, so that what is scored is exactly the table that would be written)
+    override: "SpeedTable | None" = None
+
     @classmethod
     def load(cls, character: str = "man") -> "SpeedTable":
         """rigs/tuned/running_<character>.json (the man's if the character has none), else the
         built-in fallback values."""
+        if cls.override is not None:
+            return cls.override
         for name in (character, "man"):
             path = TUNED_DIR / f"running_{name}.json"
             try:
@@ -96,6 +102,14 @@ class SpeedTable:
             values.update(data.get("parameters", {}))
             return cls(data.get("speeds", [3.5]), values)
         return cls([3.5], FALLBACK_TABLE)
+
+    def with_row(self, speed: float, row: dict[str, float]) -> "SpeedTable":
+        """A copy with the values of ``row`` at ``speed`` (a new row if the speed is new; the
+        other parameters of a new row interpolated from the table)."""
+        speeds = sorted(set(self.speeds) | {float(speed)})
+        values = {n: [row[n] if (abs(v - speed) < 1e-9 and n in row) else self.at(n, v) for v in speeds]
+                  for n in self.values}
+        return SpeedTable(speeds, values)
 
     def at(self, name: str, speed: float) -> float:
         xs, ys = self.speeds, self.values[name]
@@ -260,7 +274,8 @@ class Running(Behaviour):
         self.previous_goal = {}
         self.speed_trim = 0.0
         self.lateral_drift = 0.0
-        self.turn_rate = 0.0
+        self.turn_rate = 0.0                 # heading rate, low-passed (for the lean and the outward step)
+        self.heading_rate = 0.0              # rad/s: rate of the heading goal (smooth: limited acceleration)
         d = self.ctx.data
         vx, vy, _ = d.subtree_linvel[self.pelvis].tolist()
         if math.hypot(vx, vy) > FLYING_START_SPEED:
@@ -357,11 +372,16 @@ class Running(Behaviour):
         # ---- steering: facing direction (or pure pursuit on the path), lean into the turn
         goal = self.follower.heading(cx, cy) if self.follower is not None else p["facing"]
         speed_now = math.hypot(vx, vy)
-        max_turn = TURN_RATE_PER_SPEED * max(speed_now, 1.0) / self.control_rate
-        turn = max(-max_turn, min(max_turn, _wrap(goal - self.heading_goal)))
-        self.heading_goal = _wrap(self.heading_goal + turn)
-        turn_rate = turn * self.control_rate
-        self.turn_rate += ROLL_FILTER * (turn_rate - self.turn_rate)
+        # the heading goal turns toward the goal at a rate proportional to the error, limited in
+        # rate and in acceleration, so the yaw the stance hip asks for changes smoothly (an abrupt
+        # change of facing direction makes the runner fall: Hodgins et al. 1995, Discussion)
+        max_rate = TURN_RATE_PER_SPEED * max(speed_now, 1.0)
+        wanted = HEADING_GAIN * _wrap(goal - self.heading_goal)
+        wanted = max(-max_rate, min(max_rate, wanted))
+        step = TURN_ACCEL / self.control_rate
+        self.heading_rate += max(-step, min(step, wanted - self.heading_rate))
+        self.heading_goal = _wrap(self.heading_goal + self.heading_rate / self.control_rate)
+        self.turn_rate += ROLL_FILTER * (self.heading_rate - self.turn_rate)
         roll_target = -p["lean"] * math.atan(speed_now * self.turn_rate / GRAVITY)
         self.roll_goal += ROLL_FILTER * (roll_target - self.roll_goal)
         heading = self.heading_goal
@@ -450,14 +470,14 @@ class Running(Behaviour):
             # pelvis, net of the idle hip's torque (so the swinging leg does not tip the body)
             e_pitch = pitch - p["stance_pitch"]
             e_roll = roll - self.roll_goal
-            e_yaw = _wrap(yaw - heading)
+            e_yaw = max(-YAW_ERROR_LIMIT, min(YAW_ERROR_LIMIT, _wrap(yaw - heading)))
             share = hermite_scalar((t - self.t_touchdown) / ATTITUDE_ONSET) if state != UNLOADING else \
                 1.0 - hermite_scalar((t - self.t_state) / ATTITUDE_ONSET)
             # restoring torque on the pelvis (world frame): roll about its x axis, pitch about
             # its y axis, yaw about the vertical
             t_roll = -(ROLL_KP * e_roll + ROLL_KD * roll_rate)
             t_pitch = -(PITCH_KP * e_pitch + PITCH_KD * pitch_rate)
-            t_yaw = -(YAW_KP * e_yaw + YAW_KD * wz)
+            t_yaw = -(YAW_KP * e_yaw + YAW_KD * (wz - self.heading_rate))     # damped relative to the turn
             bx = t_roll * m[0] + t_pitch * m[1]
             by = t_roll * m[3] + t_pitch * m[4]
             bz = t_roll * m[6] + t_pitch * m[7] + t_yaw
@@ -683,6 +703,9 @@ PLACEMENT_LIMIT = 0.6         # the hip-to-heel distance on the ground is at mos
 HIP_YAW_LIMIT = 0.4           # rad
 ACCEL_MARGIN = 0.231            # m/s: the speed command is at most this above the current speed
 TURN_RATE_PER_SPEED = 0.4     # rad/s of heading change per m/s of speed
+HEADING_GAIN = 2.0            # 1/s: heading rate per radian of heading error
+TURN_ACCEL = 1.0              # rad/s^2: the heading rate changes at most this fast
+YAW_ERROR_LIMIT = 0.4         # rad: yaw error the stance hip acts on (limits the yaw change asked of one stance)
 ROLL_FILTER = 0.05
 START_ANKLE_LEAN = 0.20       # rad of ankle dorsiflexion while leaning into the start
 START_KNEE = 0.15             # rad of knee flexion while leaning
