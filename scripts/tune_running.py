@@ -20,6 +20,15 @@ so that a parameter set is not scored on one lucky sequence):
       + W_SPEED * |v - v_d| / v_d                     speed error, mean over the last 5 s
       + W_HEAD  * mean |a_head| / g                   head acceleration (smoothness), last 5 s
       + W_ATT   * mean |d(roll, pitch, yaw)| per stride   stride-to-stride attitude variation (rad)
+      + W_GAIT  * (|f - f_h| / f_h + |s - s_h| / s_h) / 2   gait against the human (v_d >= 4.5 only)
+
+where the gait term compares the step frequency f and the stance/step fraction s over the last
+10 s with the man's figures of Hodgins & Pollard 1997 Fig. 12 (f_h = 2.92 steps/s, s_h = 57.9 %,
+measured at 4.83 m/s; the step length then follows from the speed). The paper adjusted its
+penalties "to convert a stride where the feet of the runner were barely skimming over the ground
+to a stride that was more bouncy"; this term is that adjustment, applied at the fast end of the
+table (4.5 m/s and above), where Fig. 12's speed lies. A run that falls before it has three steps
+in the window gets the term's value for a skimming gait (1.0).
 
 Each evaluation runs its scenarios in a pool of ``--workers`` processes (2 on the project's
 machine). The search is time-boxed by ``--minutes``; the best point found is written only if it
@@ -45,17 +54,23 @@ sys.path.insert(0, str(ROOT))
 
 from sim_core.control.running import TABLE_NAMES, TUNED_DIR, TUNED_NAMES, Running, SpeedTable  # noqa: E402
 
-W_FALL, W_SPEED, W_HEAD, W_ATT = 10.0, 4.0, 0.05, 2.0
+W_FALL, W_SPEED, W_HEAD, W_ATT, W_GAIT = 10.0, 4.0, 0.05, 2.0, 2.0
+GAIT_FROM = 4.5                 # m/s: the gait term applies at and above this speed
 GRAVITY = 9.80665
 
 
 def scenario(args) -> dict:
     """One run from a stand; the terms of the evaluation function."""
-    from sim_core.gait import head_acceleration, stride_attitude_variation
+    from sim_core.gait import HUMAN_FIG12, head_acceleration, stride_attitude_variation
     from sim_core.simulate import RunRequest, run
-    params, speed, start_lean, duration, character, strength = args
-    traj = run(RunRequest("running", character, params=dict(params, speed=speed, start_lean=start_lean),
-                          duration=duration, strength=strength))
+    from sim_core.control.running import SpeedTable
+    table, speed, start_lean, duration, character, strength = args
+    SpeedTable.override = SpeedTable(table["speeds"], table["values"])     # the candidate table
+    try:
+        traj = run(RunRequest("running", character, params={"speed": speed, "start_lean": start_lean},
+                              duration=duration, strength=strength))
+    finally:
+        SpeedTable.override = None
     m = traj.meta["metrics"]
     a = traj.arrays
     t_up = m["fall_time"] if m["fell"] else duration
@@ -66,7 +81,14 @@ def scenario(args) -> dict:
     att = stride_attitude_variation(traj, t_from=max(0.0, end - 5.0)) if not m["fell"] else float("nan")
     if not math.isfinite(att):
         att = 0.5
-    return {"speed": speed, "t_up": t_up, "mean_speed": v, "head_acc_g": head, "attitude_variation": att}
+    g, human = m["gait"], HUMAN_FIG12[character if character in HUMAN_FIG12 else "man"]
+    if g.get("step_frequency") is None:
+        gait = 1.0
+    else:
+        gait = 0.5 * (abs(g["step_frequency"] - human["step_frequency"]) / human["step_frequency"]
+                      + abs(g["stance_fraction"] - human["stance_fraction"]) / human["stance_fraction"])
+    return {"speed": speed, "t_up": t_up, "mean_speed": v, "head_acc_g": head, "attitude_variation": att,
+            "gait_error": gait}
 
 
 def evaluation(terms: list[dict], duration: float) -> float:
@@ -74,28 +96,37 @@ def evaluation(terms: list[dict], duration: float) -> float:
     for s in terms:
         total += (W_FALL * (1.0 - s["t_up"] / duration) + W_SPEED * abs(s["mean_speed"] - s["speed"]) / s["speed"]
                   + W_HEAD * s["head_acc_g"] + W_ATT * s["attitude_variation"])
+        if s["speed"] >= GAIT_FROM - 1e-9:
+            total += W_GAIT * s["gait_error"]
     return total / len(terms)
 
 
 class Evaluator:
-    def __init__(self, pool, speed, duration, character, strength):
-        self.pool, self.speed, self.duration = pool, speed, duration
+    """Scores a candidate row of the table at one speed: the runs use the stored table with that
+    row replaced (the runner accelerates through the lower rows), i.e. exactly what would be
+    written."""
+
+    def __init__(self, pool, table, names, speed, duration, character, strength):
+        self.pool, self.table, self.names, self.speed, self.duration = pool, table, names, speed, duration
         self.character, self.strength = character, strength
         self.history: list[tuple[list[float], float]] = []
 
     def __call__(self, x) -> float:
-        params = dict(zip(TUNED_NAMES, map(float, x)))
+        candidate = self.table.with_row(self.speed, dict(zip(self.names, map(float, x))))
+        table = {"speeds": candidate.speeds, "values": candidate.values}
         v = self.speed
-        jobs = [(params, v, 0.35, self.duration, self.character, self.strength),
-                (params, v, 0.5, self.duration, self.character, self.strength)]
+        jobs = [(table, v, 0.35, self.duration, self.character, self.strength),
+                (table, v, 0.5, self.duration, self.character, self.strength)]
         terms = self.pool.map(scenario, jobs)
         score = evaluation(terms, self.duration)
         self.history.append((list(map(float, x)), score))
+        print(f"  {len(self.history):4d} {score:8.4f} " + " ".join(
+            f"t_up={s['t_up']:.1f} v={s['mean_speed']:.2f} gait={s['gait_error']:.2f}" for s in terms), flush=True)
         return score
 
 
-def bounds() -> list[tuple[float, float]]:
-    return [(Running.schema.by_name[n].minimum, Running.schema.by_name[n].maximum) for n in TUNED_NAMES]
+def bounds(names=TUNED_NAMES) -> list[tuple[float, float]]:
+    return [(Running.schema.by_name[n].minimum, Running.schema.by_name[n].maximum) for n in names]
 
 
 def anneal(evaluate, x0, deadline, max_evaluations, seed):
@@ -109,7 +140,7 @@ def anneal(evaluate, x0, deadline, max_evaluations, seed):
         return time.monotonic() > deadline
 
     try:
-        dual_annealing(evaluate, bounds(), x0=np.array(x0), maxfun=max_evaluations, seed=seed,
+        dual_annealing(evaluate, bounds(evaluate.names), x0=np.array(x0), maxfun=max_evaluations, seed=seed,
                        callback=track, no_local_search=True, initial_temp=2000.0)
     except StopIteration:
         pass
@@ -118,7 +149,7 @@ def anneal(evaluate, x0, deadline, max_evaluations, seed):
 
 def cma_search(evaluate, x0, deadline, max_evaluations, seed):
     import cma  # optional dependency
-    lo, hi = np.array(bounds()).T
+    lo, hi = np.array(bounds(evaluate.names)).T
     scale = hi - lo
     es = cma.CMAEvolutionStrategy(((np.array(x0) - lo) / scale).tolist(), 0.1,
                                   {"bounds": [0, 1], "seed": seed, "maxfevals": max_evaluations, "verbose": -9})
@@ -142,6 +173,88 @@ def write_atomically(path: Path, data: dict) -> None:
     os.replace(tmp, path)
 
 
+# ------------------------------------------------------------------ steering constants
+# The steering laws' constants (module constants of sim_core.control.running, and the defaults of
+# the lean and look-ahead parameters) only act when the heading goal turns, so they are searched
+# on paths, not per speed:
+#
+#     E_steer = mean over the courses of  W_FALL  * (1 - t_up / T)
+#                                       + W_SPEED * |v - v_d| / v_d        (mean speed, whole run after 5 s)
+#                                       + W_PATH  * min(mean lateral deviation, 1 m)
+#
+# on a 90-degree turn of radius 10 m (24 s) and a figure eight of loops of radius 10 m (40 s),
+# both at 3.5 m/s from a stand. The result is printed; the constants are copied into running.py
+# by hand (they are code, with their search noted beside them).
+W_PATH = 4.0
+STEERING_CONSTANTS = {            # name: (low, high)
+    "TURN_ACCEL": (0.1, 3.0), "HEADING_GAIN": (0.5, 4.0), "TURN_PLACE_GAIN": (0.0, 2.0),
+    "LATERAL_GAIN": (0.0, 0.4), "YAW_ERROR_LIMIT": (0.05, 0.4), "TURN_RATE_PER_SPEED": (0.1, 0.6),
+    "lean": (0.0, 1.5), "lookahead": (1.0, 6.0)}
+STEERING_COURSES = (
+    ({"course": 1, "turn_angle": math.pi / 2, "turn_radius": 10.0, "turn_after": 25.0}, 24.0),
+    ({"course": 2, "turn_radius": 10.0, "turn_after": 25.0}, 40.0),
+)
+
+
+def steering_scenario(args) -> dict:
+    import sim_core.control.running as running
+    from sim_core.simulate import RunRequest, run
+    values, course, duration, speed = args
+    params = dict(course, speed=speed)
+    saved = {}
+    for name, value in values.items():
+        if name in running.Running.schema.by_name:
+            params[name] = value
+        else:
+            saved[name] = getattr(running, name)
+            setattr(running, name, value)
+    try:
+        traj = run(RunRequest("running", "man", params=params, duration=duration))
+    finally:
+        for name, value in saved.items():
+            setattr(running, name, value)
+    m = traj.meta["metrics"]
+    a = traj.arrays
+    t_up = m["fall_time"] if m["fell"] else duration
+    sel = (a["time"] >= 5.0) & (a["time"] <= t_up)
+    v = float(np.mean(np.linalg.norm(a["com_vel"][sel, :2], axis=1))) if sel.any() else 0.0
+    dev = m.get("path_deviation_mean")
+    return {"t_up": t_up, "duration": duration, "mean_speed": v, "deviation": 1.0 if dev is None else float(dev)}
+
+
+def steering_search(args) -> int:
+    import sim_core.control.running as running
+    names = list(STEERING_CONSTANTS)
+    lo = np.array([STEERING_CONSTANTS[n][0] for n in names])
+    hi = np.array([STEERING_CONSTANTS[n][1] for n in names])
+    x0 = np.array([running.Running.schema.by_name[n].default if n in running.Running.schema.by_name
+                   else getattr(running, n) for n in names], dtype=float)
+    speed = 3.5
+    history = []
+    with Pool(args.workers) as pool:
+        def evaluate(x) -> float:
+            values = dict(zip(names, map(float, x)))
+            terms = pool.map(steering_scenario, [(values, c, d, speed) for c, d in STEERING_COURSES])
+            score = float(np.mean([W_FALL * (1 - s["t_up"] / s["duration"]) + W_SPEED * abs(s["mean_speed"] - speed) / speed
+                                   + W_PATH * min(s["deviation"], 1.0) for s in terms]))
+            history.append((values, score))
+            print(f"  {len(history):4d} {score:8.4f} " + " ".join(f"t_up={s['t_up']:.1f} v={s['mean_speed']:.2f} dev={s['deviation']:.2f}"
+                                                                for s in terms) + " " + json.dumps({k: round(v, 4) for k, v in values.items()}), flush=True)
+            return score
+        import cma
+        deadline = time.monotonic() + 60.0 * args.minutes
+        baseline = evaluate(x0)
+        es = cma.CMAEvolutionStrategy(((x0 - lo) / (hi - lo)).clip(0, 1).tolist(), 0.2,
+                                      {"bounds": [0, 1], "seed": args.seed, "maxfevals": args.max_evaluations, "verbose": -9})
+        while not es.stop() and time.monotonic() < deadline:
+            z = es.ask()
+            es.tell(z, [evaluate(lo + np.array(zi) * (hi - lo)) for zi in z])
+    best = min(history, key=lambda h: h[1])
+    print(f"steering: {len(history)} evaluations, baseline {baseline:.4f}, best {best[1]:.4f}")
+    print(json.dumps(best[0], indent=1))
+    return 0
+
+
 def main(argv=None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--character", default="man")
@@ -152,9 +265,15 @@ def main(argv=None) -> int:
     ap.add_argument("--max-evaluations", type=int, default=300, help="per speed")
     ap.add_argument("--method", choices=("anneal", "cma"), default="anneal")
     ap.add_argument("--workers", type=int, default=2)
+    ap.add_argument("--names", nargs="+", default=list(TUNED_NAMES), choices=list(TABLE_NAMES),
+                    help="parameters searched (default the five of Hodgins & Pollard; the table has three more)")
     ap.add_argument("--seed", type=int, default=1)
     ap.add_argument("--evaluate", action="store_true", help="only score the current table")
+    ap.add_argument("--steering", action="store_true",
+                    help="search the steering constants on a 90-degree turn and a figure eight (CMA-ES; prints them)")
     args = ap.parse_args(argv)
+    if args.steering:
+        return steering_search(args)
     strength = args.strength if args.strength in ("human", "unlimited") else float(args.strength)
     table = SpeedTable.load(args.character)
     path = TUNED_DIR / f"running_{args.character}.json"
@@ -167,10 +286,10 @@ def main(argv=None) -> int:
     new_values = {}
     with Pool(args.workers) as pool:
         for k, speed in enumerate(args.speeds):
-            x0 = [table.at(n, speed) for n in TUNED_NAMES]
-            evaluate = Evaluator(pool, speed, args.duration, args.character, strength)
+            x0 = [table.at(n, speed) for n in args.names]
+            evaluate = Evaluator(pool, table, args.names, speed, args.duration, args.character, strength)
             if args.evaluate:
-                print(f"{speed} m/s: evaluation {evaluate(x0):.4f} at {dict(zip(TUNED_NAMES, x0))}")
+                print(f"{speed} m/s: evaluation {evaluate(x0):.4f} at {dict(zip(args.names, x0))}")
                 continue
             remaining = started + 60.0 * args.minutes - time.monotonic()
             deadline = time.monotonic() + remaining / (len(args.speeds) - k)
@@ -179,30 +298,25 @@ def main(argv=None) -> int:
             baseline = evaluate.history[0][1]
             print(f"{speed} m/s: {len(evaluate.history)} evaluations, baseline {baseline:.4f}, best {best['f']:.4f}",
                   flush=True)
-            print(json.dumps(dict(zip(TUNED_NAMES, best["x"])), indent=1), flush=True)
+            print(json.dumps(dict(zip(args.names, best["x"])), indent=1), flush=True)
             if best["f"] < baseline:
                 new_values[speed] = best["x"]
+                table = table.with_row(speed, dict(zip(args.names, map(float, best["x"]))))   # the next speed starts from it
                 per_speed[str(speed)] = {"score": best["f"], "baseline_score": baseline,
-                                         "evaluations": len(evaluate.history)}
+                                         "evaluations": len(evaluate.history), "searched": list(args.names),
+                                         "method": args.method}
     if args.evaluate or not new_values:
         if not args.evaluate:
             print("no improvement on the current table; nothing written")
         return 0
-    speeds = sorted(set(table.speeds) | set(new_values))
-    values = {}
-    for n in TABLE_NAMES:
-        column = []
-        for v in speeds:
-            if v in new_values and n in TUNED_NAMES:
-                column.append(round(float(new_values[v][TUNED_NAMES.index(n)]), 4))
-            else:
-                column.append(round(table.at(n, v), 4))
-        values[n] = column
+    speeds = table.speeds
+    values = {n: [round(table.at(n, v), 4) for v in speeds] for n in TABLE_NAMES}
     elapsed = time.monotonic() - started
     write_atomically(path, {
         "behaviour": "running", "character": args.character, "speeds": speeds, "parameters": values,
         "evaluation": {"weights": {"fall": W_FALL, "speed": W_SPEED, "head_acceleration": W_HEAD,
-                                   "attitude_variation": W_ATT},
+                                   "attitude_variation": W_ATT, "gait_fig12": W_GAIT},
+                       "gait_term_from_m_s": GAIT_FROM,
                        "runs": "two per speed from a stand (lean 0.35 s and 0.5 s)",
                        "duration_s": args.duration, "strength": args.strength, "per_speed": per_speed},
         "search": {"method": args.method, "minutes": round(elapsed / 60, 2), "seed": args.seed},

@@ -4,7 +4,9 @@ with TARGETS.md "Running". Every run starts from the standing pose.
 Targets the controller does not reach yet are listed in SHORTFALLS (see docs/running.md): for
 those, a miss is reported as xfail with the measured figures in the reason, and a hit passes;
 every other case must meet its target."""
+import importlib.util
 import math
+from pathlib import Path
 
 import mujoco
 import numpy as np
@@ -12,12 +14,14 @@ import pytest
 
 from sim_core.character.model import compile_model, set_standing_pose
 from sim_core.character.spec import load_character
+from sim_core.control.running import SpeedTable
 from sim_core.control.running_leg import RunnerLeg
 from sim_core.control.running_path import PathFollower, path_deviation, turn_path
 from sim_core.errors import ParameterError
 from sim_core.gait import HUMAN_FIG12, compare_with_human
 from sim_core.simulate import RunRequest, largest_difference, replay, run
 
+ROOT = Path(__file__).resolve().parents[1]
 SPEED_TOLERANCE = 0.05          # TARGETS.md: mean speed over the last 10 s within 5 %
 FIG12_TOLERANCE = 0.10          # TARGETS.md: each gait figure within 10 % of the human one
 PATH_DEVIATION_GOAL = 0.3       # m, mean lateral deviation from the path
@@ -156,6 +160,29 @@ def test_a_gentle_curve_is_followed():
     assert not_fallen(traj), f"fell at {m['fall_time']} s"
     print(f"circle r = 40 m: lateral deviation mean {m['path_deviation_mean']:.3f} m, max {m['path_deviation_max']:.3f} m")
     assert m["path_deviation_mean"] < PATH_DEVIATION_GOAL
+
+
+def test_a_tuned_row_replaces_only_its_speed():
+    """The tuner scores a candidate row inside the stored table (what it scores is what it writes)."""
+    table = SpeedTable([2.5, 4.0], {"thrust_time": [0.2, 0.4], "idle_knee": [1.0, 2.0]})
+    new = table.with_row(4.5, {"thrust_time": 0.5})
+    assert new.speeds == [2.5, 4.0, 4.5]
+    assert new.at("thrust_time", 4.5) == 0.5 and new.at("thrust_time", 4.0) == 0.4
+    assert new.at("idle_knee", 4.5) == 2.0                        # not searched: the table's value
+    assert table.with_row(4.0, {"idle_knee": 1.5}).values["idle_knee"] == [1.0, 1.5]
+
+
+def test_evaluation_function_adds_the_fig_12_gait_at_the_fast_end():
+    """scripts/tune_running.py's evaluation (docs/running.md): the gait term against Fig. 12
+    counts from 4.5 m/s up, not at the slower speeds."""
+    spec = importlib.util.spec_from_file_location("tune_running", ROOT / "scripts" / "tune_running.py")
+    tune = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(tune)
+    run_ = {"t_up": 20.0, "mean_speed": 4.5, "head_acc_g": 0.0, "attitude_variation": 0.0, "gait_error": 0.4}
+    assert tune.evaluation([dict(run_, speed=4.5)], 20.0) == pytest.approx(tune.W_GAIT * 0.4)
+    assert tune.evaluation([dict(run_, speed=3.5, mean_speed=3.5)], 20.0) == pytest.approx(0.0)
+    fell = dict(run_, speed=4.5, t_up=10.0, mean_speed=4.05)
+    assert tune.evaluation([fell], 20.0) == pytest.approx(tune.W_FALL * 0.5 + tune.W_SPEED * 0.1 + tune.W_GAIT * 0.4)
 
 
 def test_human_figures_are_the_papers():
