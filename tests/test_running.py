@@ -153,13 +153,22 @@ def test_steering_along_a_path(course, params, duration):
         miss(course, f"{deviation} (goal: mean < 0.3 m)")
 
 
-def test_a_gentle_curve_is_followed():
-    """What steering does work: a circle of 40 m radius at 3.5 m/s (curvature 0.025 1/m)."""
-    traj = run_running(24.0, speed=3.5, course=3, turn_radius=40.0, turn_after=15.0)
+@pytest.mark.parametrize("label, params, duration", [
+    ("circle r = 40 m", dict(course=3, turn_radius=40.0, turn_after=15.0), 24.0),
+    ("90-degree turn r = 30 m", dict(course=1, turn_angle=math.pi / 2, turn_radius=30.0, turn_after=25.0), 32.0),
+])
+def test_a_gentle_curve_is_followed(label, params, duration):
+    """What steering does work at 3.5 m/s: a circle of 40 m radius (curvature 0.025 1/m) and a
+    90-degree turn of 30 m radius, run in and out of, without a fall and on the path."""
+    traj = run_running(duration, speed=3.5, **params)
     m = traj.meta["metrics"]
-    assert not_fallen(traj), f"fell at {m['fall_time']} s"
-    print(f"circle r = 40 m: lateral deviation mean {m['path_deviation_mean']:.3f} m, max {m['path_deviation_max']:.3f} m")
+    assert not_fallen(traj), f"{label}: fell at {m['fall_time']} s"
+    print(f"{label}: lateral deviation mean {m['path_deviation_mean']:.3f} m, max {m['path_deviation_max']:.3f} m")
     assert m["path_deviation_mean"] < PATH_DEVIATION_GOAL
+    heading = math.atan2(*traj.arrays["com_vel"][-1, 1::-1])
+    expected = params.get("turn_angle", None)
+    if expected is not None:                      # left the curve running in the new direction
+        assert abs(heading - expected) < 0.3
 
 
 def test_a_tuned_row_replaces_only_its_speed():
