@@ -55,6 +55,7 @@ KNEE_RESTORE = 0.2              # knees stiffen again at 20 % of their touchdown
 TOE_POINT_PER_SPEED = 0.25      # rad of toe-down foot pitch before touchdown per m/s of expected touchdown
 TOE_POINT_FROM = 2.0            # speed above this (m/s): the forefoot lands first and the ankles give
 TOE_POINT_MAX = 0.5             # like a person landing from a height (0 = feet parallel to the ground)
+TOE_FADE_SPEED = (0.5, 1.5)     # m/s of horizontal COM speed over which the toe-down pitch fades out
 LANDING_TORQUE_LIMIT = 1.0      # landing joints use at most this share of the human torque limits,
                                 # whatever the model's strength (stiffer legs land harder, not better)
 
@@ -236,6 +237,9 @@ class Landing(Behaviour):
             feet_height = max(float(self.airborne.feet_heights(d).min()), 0.0)
             touchdown_speed = math.sqrt(vel[2] * vel[2] + 2.0 * 9.81 * feet_height)
             toe_point = min(max(TOE_POINT_PER_SPEED * (touchdown_speed - TOE_POINT_FROM), 0.0), TOE_POINT_MAX)
+            # moving forward or back fast, the feet land flat: the whole sole has to stop the COM's
+            # horizontal speed (the forefoot alone would let the ankles give way)
+            toe_point *= min(max((TOE_FADE_SPEED[1] - abs(vx)) / (TOE_FADE_SPEED[1] - TOE_FADE_SPEED[0]), 0.0), 1.0)
         if self.stage == "flight" and self.airborne.touching(d):
             self.stage = "absorb"
             self.touchdown_knee_speed = max(abs(float(velocities[self.knees].mean())), 1e-3)
