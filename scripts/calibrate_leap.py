@@ -43,6 +43,7 @@ NEWTON_STEPS = 5
 ARM_SWING = 1.0              # rad: a forward swing that adds height without spinning the body
 FALLBACK_HIPS = (-0.3, 0.0, 0.3, 0.6, 0.9)      # rad: lift-off hip angles tried when Newton leaves a fast thrust spinning
 FALLBACK_OFFSETS = (-0.05, 0.0)      # m: crouch COM offsets tried with them
+FALLBACK_FOOT_DELTAS = (0.04, 0.08, -0.04)   # m: landing foot servo deltas tried first
 
 
 def liftoff_state(character, crouch_height, hip, offset, damping=1.0, strength="human"):
@@ -92,6 +93,15 @@ def trial(args):
     params = dict(low_level=1, crouch_height=crouch_height, crouch_pitch=0.0, com_offset=float(offset),
                   liftoff_hip_angle=float(hip), arm_swing=ARM_SWING, thrust_damping=damping)
     traj = run(RunRequest("leap", character, params=params, duration=LEAP_DURATION, strength=strength))
+    foot_delta = 0.0
+    if traj.meta["outcome"] != "success" and damping < 1.0:
+        # first a small correction of where the feet land (the landing's foot servo delta)
+        for d in FALLBACK_FOOT_DELTAS:
+            t = run(RunRequest("leap", character, params=dict(params, foot_delta=d), duration=LEAP_DURATION,
+                               strength=strength))
+            if t.meta["outcome"] == "success":
+                traj, foot_delta = t, d
+                break
     if traj.meta["outcome"] != "success" and damping < 1.0:
         # a fast thrust whose spin and drift Newton could not both cancel: of a few lift-off hip
         # angles and offsets around the usual ones, keep the leap that lands balanced and travels least
@@ -106,7 +116,7 @@ def trial(args):
             _, hip, offset, traj = min(landed, key=lambda x: x[0])
             residual = None
     m = traj.meta["metrics"]
-    result = {"crouch_height": crouch_height, "damping": damping, "liftoff_hip": float(hip),
+    result = {"crouch_height": crouch_height, "damping": damping, "liftoff_hip": float(hip), "foot_delta": foot_delta,
               "com_offset": float(offset), "residual": None if residual is None else [float(r) for r in residual],
               "com_rise": m["com_rise"], "com_travel": m["com_travel"], "peak_thrust_grf_body_weights": m.get("peak_thrust_grf_body_weights"),
               "outcome": traj.meta["outcome"]}
@@ -164,7 +174,9 @@ def vertical_table(results: list[dict]) -> dict:
                 rows.append(r)
                 best = r["com_rise"]
     table = {k: [r.get(k) for r in rows] for k in ("com_rise", "crouch_height", "damping", "com_offset",
-                                                     "liftoff_hip", "peak_thrust_grf_body_weights", "com_travel")}
+                                                     "liftoff_hip", "peak_thrust_grf_body_weights", "com_travel",
+                                                     "foot_delta")}
+    table["foot_delta"] = [d or 0.0 for d in table["foot_delta"]]
     table["torso_pitch"] = [0.0 for _ in rows]
     table["arm_swing"] = [ARM_SWING for _ in rows]
     return table

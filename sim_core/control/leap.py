@@ -459,7 +459,7 @@ class Leap(Sequence):
         column = lambda name, default: float(np.interp(h, rises, v.get(name, [default] * len(rises))))
         return {"crouch_height": column("crouch_height", 0.65), "crouch_pitch": column("torso_pitch", 0.0),
                 "com_offset": column("com_offset", 0.0), "arm_swing": column("arm_swing", 1.0),
-                "damping": column("damping", THRUST_DAMPING),
+                "damping": column("damping", THRUST_DAMPING), "foot_delta": column("foot_delta", 0.0),
                 "liftoff_hip": column("liftoff_hip", 0.0) + p["liftoff_hip_angle"]}
 
     def check_feasible(self) -> None:
@@ -523,7 +523,9 @@ class Leap(Sequence):
                               cfg["arm_swing"], stand_height=self._stand_height(), damping=cfg["damping"])
 
         def land(t):
-            return Landing(Landing.schema.validate(dict(foot_delta=p["foot_delta"])), ctx)
+            # the calibrated leap's own correction of the landing's foot servo delta, plus the user's
+            delta = min(max(p["foot_delta"] + cfg.get("foot_delta", 0.0), -0.3), 0.3)
+            return Landing(Landing.schema.validate(dict(foot_delta=delta)), ctx)
 
         def stand(t):
             return balance_after_landing(ctx)
