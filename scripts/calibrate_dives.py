@@ -23,35 +23,39 @@ import time
 
 import numpy as np
 
-from sim_core.control.dive import GROUPS, TUNED_DIR, Dive
+from sim_core.control.dive import FORWARD_ROTATING, GROUPS, TUNED_DIR, Dive
 from sim_core.errors import ParameterError
 from sim_core.simulate import RunRequest, run
 
-DIVES = {   # Wooten §8.2.1: the man's two and the woman's two 10 m dives
+DIVES = {   # Wooten §8.2.1: the man's two and the woman's two 10 m dives; then dives beyond the seed
     "man": [dict(group=0, somersaults=1.5, twists=0.0, position=1),      # inward 1 1/2 pike
-            dict(group=1, somersaults=1.5, twists=0.5, position=2)],     # back 1 1/2 with 1/2 twist
+            dict(group=1, somersaults=1.5, twists=0.5, position=2),      # back 1 1/2 with 1/2 twist
+            dict(group=2, somersaults=1.5, twists=0.0, position=1),      # forward 1 1/2 pike
+            dict(group=3, somersaults=1.5, twists=0.0, position=2)],     # reverse 1 1/2 tuck
     "woman": [dict(group=0, somersaults=2.5, twists=0.0, position=1),    # inward 2 1/2 pike
-              dict(group=1, somersaults=1.5, twists=2.5, position=2)],   # back 1 1/2 with 2 1/2 twists
+              dict(group=1, somersaults=1.5, twists=2.5, position=2),    # back 1 1/2 with 2 1/2 twists
+              dict(group=2, somersaults=1.5, twists=0.0, position=1),    # forward 1 1/2 pike
+              dict(group=3, somersaults=1.5, twists=0.0, position=2)],   # reverse 1 1/2 tuck
 }
 SPACE = {  # name: (low, high) per group
-    "crouch_height": {"inward": (0.5, 0.8), "back": (0.5, 0.8)},
-    "crouch_pitch": {"inward": (0.0, 0.6), "back": (0.0, 0.6)},
-    "com_offset": {"inward": (-0.25, -0.05), "back": (-0.25, -0.05)},
-    "liftoff_hip": {"inward": (-2.0, -0.6), "back": (0.3, 1.6)},
-    "arm_swing": {"inward": (-1.0, 3.2), "back": (1.0, 3.2)},
-    "twist_lead": {"inward": (0.3, 1.4), "back": (0.3, 1.4)},      # twisting dives only
+    "crouch_height": {g: (0.5, 0.8) for g in GROUPS},
+    "crouch_pitch": {g: (0.0, 0.6) for g in GROUPS},
+    "com_offset": {"inward": (-0.25, -0.05), "back": (-0.25, -0.05), "forward": (0.05, 0.25), "reverse": (0.05, 0.25)},
+    "liftoff_hip": {"inward": (-2.0, -0.6), "back": (0.3, 1.6), "forward": (-2.0, -0.6), "reverse": (0.3, 1.6)},
+    "arm_swing": {"inward": (-1.0, 3.2), "back": (1.0, 3.2), "forward": (-1.0, 3.2), "reverse": (1.0, 3.2)},
+    "twist_lead": {g: (0.3, 1.4) for g in GROUPS},      # twisting dives only
 }
 
 
 class Capacity:
-    """Disables the feasibility check while calibrating (the check reads this table)."""
+    """Lifts the feasibility limits while calibrating (the check reads the table being made)."""
 
     def __enter__(self):
-        self.saved = Dive.rotation_capacity
-        Dive.rotation_capacity = lambda self: 99.0
+        self.saved = Dive.limits
+        Dive.limits = lambda self: {"rise": 0.3, "angular_momentum": {g: 999.0 for g in GROUPS}, "twists": 99.0}
 
     def __exit__(self, *exc):
-        Dive.rotation_capacity = self.saved
+        Dive.limits = self.saved
 
 
 def evaluate(character: str, dive: dict, settings: dict) -> tuple[float, dict]:
@@ -65,7 +69,7 @@ def evaluate(character: str, dive: dict, settings: dict) -> tuple[float, dict]:
         return 100.0, m
     score = (10.0 * m["hit_platform"] + 10.0 * abs(m["somersaults"] - dive["somersaults"])
              + 10.0 * abs(m["twists"] - dive["twists"]) + max(0.0, m["entry_angle_from_vertical_deg"] - 5.0) / 10.0)
-    if m["somersault_direction"] != ("forward" if dive["group"] == 0 else "backward"):
+    if m["somersault_direction"] != ("forward" if GROUPS[dive["group"]] in FORWARD_ROTATING else "backward"):
         score += 10.0
     return score, m
 

@@ -26,10 +26,14 @@ from sim_core.simulate import RunRequest, run  # noqa: E402
 
 DOC = ROOT / "docs" / "tumbling.md"
 PLOT = ROOT / "docs" / "tumbling_rates.png"
-DIVES = [("man", dict(group=0, somersaults=1.5, twists=0.0, position=1)),
+DIVES = [("man", dict(group=0, somersaults=1.5, twists=0.0, position=1)),       # Wooten §8.2.1's four
          ("man", dict(group=1, somersaults=1.5, twists=0.5, position=2)),
          ("woman", dict(group=0, somersaults=2.5, twists=0.0, position=1)),
-         ("woman", dict(group=1, somersaults=1.5, twists=2.5, position=2))]
+         ("woman", dict(group=1, somersaults=1.5, twists=2.5, position=2)),
+         ("man", dict(group=2, somersaults=1.5, twists=0.0, position=1)),       # beyond the seed: facing the water
+         ("man", dict(group=3, somersaults=1.5, twists=0.0, position=2)),
+         ("woman", dict(group=2, somersaults=1.5, twists=0.0, position=1)),
+         ("woman", dict(group=3, somersaults=1.5, twists=0.0, position=2))]
 
 
 def inertia_series(trajectory) -> np.ndarray:
@@ -111,7 +115,8 @@ def main() -> int:
              "Moments of inertia about the somersault axis (positions as commanded, body upright):", ""]
     lines += inertia_table()
     dives, runs = dive_rows()
-    lines += ["", "10 m platform dives (rotation counted from the standing start to the hands reaching the water):", ""]
+    lines += ["", "10 m platform dives (rotation counted from the standing start to the hands reaching the water); "
+              "the first four are Wooten's (§8.2.1), the rest face the water (forward, reverse groups):", ""]
     lines += dives
     plot(runs)
     text = DOC.read_text()

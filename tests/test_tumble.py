@@ -12,8 +12,10 @@ from sim_core.errors import ParameterError
 from sim_core.simulate import RunRequest, largest_difference, replay, run
 
 MAN_DIVES = {
-    "inward 1.5 pike": dict(group=0, somersaults=1.5, twists=0.0, position=1),
+    "inward 1.5 pike": dict(group=0, somersaults=1.5, twists=0.0, position=1),       # Wooten §8.2.1
     "back 1.5 with 0.5 twist": dict(group=1, somersaults=1.5, twists=0.5, position=2),
+    "forward 1.5 pike": dict(group=2, somersaults=1.5, twists=0.0, position=1),      # facing the water
+    "reverse 1.5 tuck": dict(group=3, somersaults=1.5, twists=0.0, position=2),
 }
 
 

@@ -28,7 +28,7 @@ ARMATURE = 0.01            # kg m^2 on every hinge: numerical regularisation of 
 FOOT_FRICTION = 1.0
 BODY_FRICTION = 0.8
 SLOPE_RAMP_PER_DEGREE = 0.15   # s per degree: the ground tilts at ~6.7 deg/s
-PLATFORM_HEEL_GAP = 0.02   # m: the platform's edge is this far behind the heels
+PLATFORM_HEEL_GAP = 0.02   # m: the platform's edge is this far behind the heels (or ahead of the toes)
 PLATFORM_LENGTH, PLATFORM_WIDTH, PLATFORM_THICKNESS = 5.0, 2.0, 0.3     # m (FINA: >= 6 x 2 m)
 # thigh against belly: the rigid shapes would stop a pike or tuck well before a human's soft
 # tissue does (thighs on the chest); the hip's range of motion limits the flexion instead
@@ -46,7 +46,8 @@ class World:
 
     ``platform`` > 0 makes a diving platform: the character stands on a platform whose top is
     the z = 0 plane (so every standing controller works unchanged) and whose edge is just behind
-    the heels (the -X side, where a diver standing backwards has the water); the water surface
+    the heels (the -X side, where a diver standing backwards has the water) or, with
+    ``platform_edge='ahead'``, just ahead of the toes (facing the water); the water surface
     is ``platform`` metres below. Water is not simulated: the dive ends at entry (Wooten §8.2.1
     lets entering the water end the run)."""
     slope: float = 0.0
@@ -55,6 +56,7 @@ class World:
     slope_start: float = 0.5
     slope_ramp: float | None = None            # s; default SLOPE_RAMP_PER_DEGREE per degree
     platform: float = 0.0                      # m: height of a diving platform above the water (0 = none)
+    platform_edge: str = "behind"              # 'behind' the heels (water at -X) or 'ahead' of the toes (+X)
 
     @property
     def ramp_time(self) -> float:
@@ -104,10 +106,14 @@ def build_mjspec(character: CharacterSpec, world: World | None = None, strength:
     spec.compiler.degree = False          # every angle in the spec is in radians
 
     if world.platform > 0:
-        edge = min(c["pos"][0] for c in character.body("FOOTR")["contacts"]) - PLATFORM_HEEL_GAP
+        sites = [c["pos"][0] for c in character.body("FOOTR")["contacts"] + character.body("TOER")["contacts"]]
+        if world.platform_edge == "ahead":         # facing the water: the edge just ahead of the toes
+            centre = max(sites) + PLATFORM_HEEL_GAP - PLATFORM_LENGTH / 2
+        else:                                      # backwards: the edge just behind the heels
+            centre = min(sites) - PLATFORM_HEEL_GAP + PLATFORM_LENGTH / 2
         ground = spec.worldbody.add_geom(name="ground", type=mujoco.mjtGeom.mjGEOM_BOX,
                                          size=[PLATFORM_LENGTH / 2, PLATFORM_WIDTH / 2, PLATFORM_THICKNESS / 2],
-                                         pos=[edge + PLATFORM_LENGTH / 2, 0, -PLATFORM_THICKNESS / 2])
+                                         pos=[centre, 0, -PLATFORM_THICKNESS / 2])
         water = spec.worldbody.add_geom(name="water", type=mujoco.mjtGeom.mjGEOM_PLANE, size=[20, 20, 0.05],
                                         pos=[0, 0, -world.platform], rgba=[0.2, 0.4, 0.8, 0.5])
         water.contype = water.conaffinity = 0               # seen, not felt: the dive ends at entry

@@ -3,8 +3,10 @@ balance (crouch, leaning) -> leap (thrust with the lift-off hip angle that sets 
 rate) -> tumble (pike, tuck or layout; arm throw for twists) -> entry (straight "line", arms
 overhead) -> the run ends when the hands or head reach the water.
 
-The diver stands backwards at the edge (heels over the water, -X); an inward dive somersaults
-forward (towards the platform), a back dive backward. Opening for the entry is a state-based
+The diver stands backwards at the edge (heels at the edge, water at -X) for the inward group
+(somersaulting forward, towards the platform) and the back group (backward), or faces the water
+(toes at the edge) for the forward group (forward) and the reverse group (backward, towards the
+platform). Opening for the entry is a state-based
 transition: the controller predicts, from the measured angular momentum and the ballistic time
 left to the water, how far the body will still turn once straightened, and opens when that is
 what remains of the dive's rotation (Wooten opened on timing; ch. 5's summary proposes state).
@@ -28,13 +30,16 @@ from sim_core.control.tumble import FlightRotation, Tumble, position_inertia, po
 from sim_core.errors import ParameterError
 from sim_core.schema import Parameter, Schema
 
-GROUPS = ("inward", "back")
+GROUPS = ("inward", "back", "forward", "reverse")
+FORWARD_ROTATING = ("inward", "forward")      # the others somersault backward
+FACING_THE_WATER = ("forward", "reverse")     # the others stand backwards, heels at the edge
 LEAP_SETTINGS = SETTINGS + ("twist_lead",)
 TAKEOFF_CLEAR = 0.05       # s without contact that make a take-off
 PLATFORM_MARGIN = 0.05     # m of room kept between the turning body and the platform
 FEET_CLEARANCE = 0.15      # m: the position is taken once the feet are this far past the platform's edge
 POSITION_MOVE = 0.15       # s after take-off before the position is held (in the feasibility estimate)
-DEFAULT_LIMITS = {"rise": 0.3, "angular_momentum": {"inward": 40.0, "back": 50.0}, "twists": 0.5}
+DEFAULT_LIMITS = {"rise": 0.3, "angular_momentum": {"inward": 40.0, "back": 50.0, "forward": 40.0, "reverse": 40.0},
+                  "twists": 0.5}
 SNAP = 3.0                 # hip, knee and spine gains x3 for the moves into and out of the position
 OPEN_MOVE = 0.2            # s: the servo move from the position to the line
 OPEN_TIME = 0.18            # s: time to straighten from the position into the line
@@ -42,6 +47,8 @@ TWIST_STOP_LEAD = 0.15      # s of the measured twist rate: arms come back this 
 ENTRY_REACH = 1.15          # share of the standing COM height: hands below the COM in the line
 
 DEFAULT_SETTINGS = {       # until scripts/calibrate_dives.py has written the table
+    "forward": {"crouch_height": 0.60, "crouch_pitch": 0.3, "com_offset": 0.15, "liftoff_hip": -1.5, "arm_swing": 1.0},
+    "reverse": {"crouch_height": 0.60, "crouch_pitch": 0.0, "com_offset": 0.12, "liftoff_hip": 1.0, "arm_swing": 3.2},
     "inward": {"crouch_height": 0.70, "crouch_pitch": 0.4, "com_offset": -0.04, "liftoff_hip": -0.8, "arm_swing": 2.5},
     "back": {"crouch_height": 0.70, "crouch_pitch": 0.2, "com_offset": -0.04, "liftoff_hip": 0.6, "arm_swing": 3.0},
 }
@@ -76,7 +83,9 @@ class Dive(Sequence):
     summary = "Platform dive: leap backwards off the edge, somersault and twist in flight, enter the water straight (Wooten §8.2.1)."
     default_duration = 4.0
     schema = Schema(
-        Parameter("group", "1", 0.0, 0.0, 1.0, "0 = inward (somersault towards the platform), 1 = back (away from it)"),
+        Parameter("group", "1", 0.0, 0.0, 3.0,
+                  "standing backwards: 0 = inward (somersault towards the platform), 1 = back (away from it); "
+                  "facing the water: 2 = forward, 3 = reverse (somersault back towards the platform)"),
         Parameter("somersaults", "1", 1.5, 0.5, 3.5, "somersaults before entry (x.5 = head first)"),
         Parameter("twists", "1", 0.0, 0.0, 3.0, "twists (full turns about the long axis), by an arm throw in flight"),
         Parameter("position", "1", 1.0, 0.0, 2.0, "0 = layout (straight), 1 = pike, 2 = tuck"),
@@ -84,8 +93,8 @@ class Dive(Sequence):
         Parameter("low_level", "bool", 0.0, 0.0, 1.0, "1 = use the leap settings below instead of the calibrated ones"),
         Parameter("crouch_height", "m", 0.70, 0.5, 0.95, "pelvis height of the crouch (low_level only)"),
         Parameter("crouch_pitch", "rad", 0.3, 0.0, 1.5, "torso pitch in the crouch (low_level only)"),
-        Parameter("com_offset", "m", -0.04, -0.25, 0.1,
-                  "COM forward (+) of the middle of the feet in the crouch; behind it (-) the diver leans back and thrusts once the COM has moved that far (low_level only)"),
+        Parameter("com_offset", "m", -0.04, -0.25, 0.25,
+                  "COM ahead (+) of or behind (-) the middle of the feet: the diver leans and thrusts once the COM has moved that far (low_level only)"),
         Parameter("liftoff_hip", "rad", 0.0, -2.0, 2.0,
                   "hip flexion (-, forward somersault) or extension (+, backward) at lift-off (low_level only)"),
         Parameter("arm_swing", "rad", 2.5, -1.0, 3.2, "arm swing during the thrust, forward and up (+) or back (-) (low_level only)"),
@@ -96,12 +105,14 @@ class Dive(Sequence):
 
     @classmethod
     def scene(cls, params, world):
-        return dataclasses.replace(world, platform=params["platform_height"])
+        facing = GROUPS[int(round(params["group"]))] in FACING_THE_WATER
+        return dataclasses.replace(world, platform=params["platform_height"], platform_edge="ahead" if facing else "behind")
 
     # ------------------------------------------------------------------ settings and checks
     @property
     def direction(self) -> float:
-        return 1.0 if int(round(self.params["group"])) == 0 else -1.0     # inward = forward somersault
+        """+1 for a forward somersault, -1 for a backward one."""
+        return 1.0 if GROUPS[int(round(self.params["group"]))] in FORWARD_ROTATING else -1.0
 
     def settings(self) -> dict:
         p = self.params
@@ -116,7 +127,7 @@ class Dive(Sequence):
         if abs(p["twists"] * 2 - round(p["twists"] * 2)) > 1e-9:
             raise ParameterError(f"parameter twists={p['twists']:g} must be a whole or half number")
         limits = self.limits()
-        if limits["angular_momentum"][GROUPS[int(round(p["group"]))]] <= 0:
+        if limits["angular_momentum"].get(GROUPS[int(round(p["group"]))], 0.0) <= 0:
             raise ParameterError(
                 f"the {self.ctx.character.name} has no calibrated {GROUPS[int(round(p['group']))]} take-off that clears "
                 f"the platform (scripts/calibrate_dives.py found none)")
@@ -138,7 +149,7 @@ class Dive(Sequence):
         rest."""
         group = GROUPS[int(round(self.params["group"]))]
         limits = self.limits()
-        momentum = limits["angular_momentum"][group]
+        momentum = limits["angular_momentum"].get(group, 0.0)
         flight = self.flight_time(limits["rise"])
         straight = min(flight, OPEN_TIME + POSITION_MOVE)
         angle = momentum * ((flight - straight) / self._position_inertia() + straight / self._line_inertia())
@@ -235,7 +246,9 @@ class _Aerial(Tumble):
         self.dive = dive
         m = ctx.model
         ground = m.geom("ground").id
-        self.edge = float(m.geom_pos[ground][0] - m.geom_size[ground][0])
+        # the side of the platform the water is on: -1 (-X, standing backwards) or +1 (facing it)
+        self.water_side = 1.0 if GROUPS[int(round(dive.params["group"]))] in FACING_THE_WATER else -1.0
+        self.edge = float(m.geom_pos[ground][0] + self.water_side * m.geom_size[ground][0])
         self.feet = [m.body(n).id for n in ("FOOTR", "FOOTL", "TOER", "TOEL")]
         self.clear = self.params["position"] in (0, 3)
         self.twist_done = False
@@ -257,9 +270,10 @@ class _Aerial(Tumble):
         already past the edge."""
         d = self.ctx.data
         com = d.subtree_com[1]
-        if com[2] - self.radius > PLATFORM_MARGIN or com[0] + self.radius < self.edge - PLATFORM_MARGIN:
+        past = self.water_side * (com[0] - self.edge)           # how far the COM is out over the water
+        if com[2] - self.radius > PLATFORM_MARGIN or past - self.radius > PLATFORM_MARGIN:
             return True
-        return max(float(d.xpos[b][0]) for b in self.feet) < self.edge - FEET_CLEARANCE
+        return min(self.water_side * (float(d.xpos[b][0]) - self.edge) for b in self.feet) > FEET_CLEARANCE
 
     def update(self, t: float) -> None:
         super().update(t)
@@ -334,7 +348,7 @@ def dive_assess(trajectory) -> tuple[str, dict]:
         "angular_momentum_drift": drift, "entered_water": bool(meta.get("ended_early", False)),
         "takeoff_twist_rate": float(twist_rate[start]),
     })
-    wanted_direction = "forward" if int(round(p["group"])) == 0 else "backward"
+    wanted_direction = "forward" if GROUPS[int(round(p["group"]))] in FORWARD_ROTATING else "backward"
     if not metrics["entered_water"]:
         return "no_entry", metrics
     if metrics["hit_platform"]:

@@ -18,8 +18,8 @@ SETTINGS = ("crouch_height", "crouch_pitch", "com_offset", "liftoff_hip", "arm_s
 
 def takeoff_steps(ctx: ControlContext, cfg: dict) -> list[Step]:
     """Crouch (leaning by ``com_offset``), then thrust until the feet leave the ground. Leaning
-    back (``com_offset`` < 0), the thrust starts once the COM, moving back, has left the middle of
-    the feet by that much (as the broad jump leans forward, §4.2)."""
+    (back, ``com_offset`` < 0, or forward, > 0), the thrust starts once the COM, moving, has left
+    the middle of the feet by that much (as the broad jump leans forward, §4.2)."""
     stand = 0.5 * sum(LegGeometry(ctx.character, side).standing_hip_height() for side in "RL")
 
     def crouch(t):
@@ -28,7 +28,10 @@ def takeoff_steps(ctx: ControlContext, cfg: dict) -> list[Step]:
             move_start=0.2, move_time=0.8, hold_time=0.0, return_to_stand=0)), ctx)
 
     def crouched(b, t):
-        if cfg["com_offset"] < 0 and b.com_ahead_of_support() < LEAN_TRIGGER * cfg["com_offset"]:
+        lean = cfg["com_offset"]
+        if lean < 0 and b.com_ahead_of_support() < LEAN_TRIGGER * lean:
+            return True
+        if lean > 0 and b.com_ahead_of_support() > LEAN_TRIGGER * lean:
             return True
         return b.posture_reached(t - 0.15)
 
