@@ -58,6 +58,22 @@ def test_man_dive_rotations_and_entry(man_dives, name):
     assert not m["hit_platform"] and m["entered_water"]
 
 
+WOMAN_DIVES = {
+    "forward 1.5 pike": dict(group=2, somersaults=1.5, twists=0.0, position=1),     # facing the water
+    "reverse 1.5 tuck": dict(group=3, somersaults=1.5, twists=0.0, position=2),
+}
+
+
+@pytest.mark.parametrize("name", list(WOMAN_DIVES))
+def test_woman_dive_rotations_entry_and_momentum(name):
+    traj = run(RunRequest("dive", "woman", params=WOMAN_DIVES[name], duration=4.5))
+    m = traj.meta["metrics"]
+    assert traj.meta["outcome"] == "success", m
+    assert abs(m["somersaults"] - 1.5) <= 0.25 and m["twists"] <= 0.25
+    assert m["entry_angle_from_vertical_deg"] < 20.0 and m["head_first"] and not m["hit_platform"]
+    assert m["angular_momentum_drift"] < 0.01
+
+
 @pytest.mark.parametrize("name", list(MAN_DIVES))
 def test_angular_momentum_is_constant_in_every_flight(man_dives, name):
     """Physics check: only gravity acts in flight, so the whole-body angular momentum about the
