@@ -20,7 +20,6 @@ sys.path.insert(0, str(ROOT))
 import matplotlib                                                      # noqa: E402
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt                                        # noqa: E402
-import numpy as np                                                     # noqa: E402
 
 from sim_core.control.leap import load_mapping                          # noqa: E402
 from sim_core.errors import ParameterError                              # noqa: E402
@@ -34,6 +33,19 @@ BROAD_DISTANCES = {"man": (0.3, 0.5, 0.75, 1.0, 1.1, 1.3, 1.6, 1.9, 2.1),
 DROPS = [round(0.1 * k, 1) for k in range(1, 21)]          # 0.1 ... 2.0 m
 SPEEDS = [-1.0, -0.5, 0.0, 0.5, 1.0, 1.5, 2.0, 2.5, 3.0]
 SPEED_DROP = 0.2        # m: the standing COM (~1.05 m man) raised to about the thesis's 1.25 m
+
+
+def label_axes(ax, title: str, xlabel: str, ylabel: str) -> None:
+    ax.set_title(title)
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel(ylabel)
+    ax.legend(fontsize=7)
+
+
+def save_figure(fig, name: str) -> None:
+    fig.tight_layout()
+    fig.savefig(ROOT / "docs" / name, dpi=110)
+    plt.close(fig)
 
 
 def leap(args):
@@ -102,13 +114,8 @@ def main() -> int:
         ax.plot([0, 1.1], [0, 1.1], "k--", lw=0.8, label="achieved = commanded")
         ax.fill_between([0, 0.3, 0.3, 1.1], [-0.03, 0.27, 0.27, 0.99], [0.03, 0.33, 0.33, 1.21], color="0.9", zorder=0,
                         label="tolerance (TARGETS.md)")
-        ax.set_title(f"{character}: vertical leap")
-        ax.set_xlabel("commanded COM rise (m)")
-        ax.set_ylabel("achieved COM rise (m)")
-        ax.legend(fontsize=7)
-    fig.tight_layout()
-    fig.savefig(ROOT / "docs" / "leap_commanded.png", dpi=110)
-    plt.close(fig)
+        label_axes(ax, f"{character}: vertical leap", "commanded COM rise (m)", "achieved COM rise (m)")
+    save_figure(fig, "leap_commanded.png")
     for strength, key in STRENGTHS.items():
         lines += [f"### {strength} strength", "",
                   "| character | commanded (m) | achieved (m) | within tolerance | horizontal COM travel (m) "
@@ -143,13 +150,8 @@ def main() -> int:
         refused = [r["distance"] for r in broads if r["character"] == character and "refused" in r]
         ax.scatter(refused, [0.0] * len(refused), c="0.5", marker="|", s=200, label="refused (not calibrated)")
         ax.plot([0, 2.3], [0, 2.3], "k--", lw=0.8, label="achieved = commanded")
-        ax.set_title(f"{character}: broad jump (human strength)")
-        ax.set_xlabel("commanded COM travel (m)")
-        ax.set_ylabel("achieved COM travel (m)")
-        ax.legend(fontsize=7)
-    fig.tight_layout()
-    fig.savefig(ROOT / "docs" / "leap_broad.png", dpi=110)
-    plt.close(fig)
+        label_axes(ax, f"{character}: broad jump (human strength)", "commanded COM travel (m)", "achieved COM travel (m)")
+    save_figure(fig, "leap_broad.png")
     for r in broads:
         if "refused" in r:
             lines.append(f"| {r['character']} | {r['distance']:.2f} | - | - | - | refused: "
