@@ -1,7 +1,9 @@
 """Calibrate the landing's foot servo delta against horizontal speed (the role of Wooten's
 Table 6.1): for each speed, land from a low and a higher drop with a range of deltas, keep the
 middle of the longest run of neighbouring deltas that end balanced from both drops, and write
-rigs/tuned/landing_<character>.json, which the landing reads.
+rigs/tuned/landing_<character>.json, which the landing reads. Then the extra delta for fast
+touchdowns (high drops and leaps, vertical touchdown speed above FAST_FROM): the one of
+FAST_DELTAS that lands the most drops from rest of HIGH_DROPS (the smallest on a tie).
 Rerun after a change to the model or the controllers:
 
     python scripts/calibrate_landing.py [--character man woman] [--processes 2]
@@ -24,6 +26,24 @@ SPEEDS = [-1.0, -0.5, 0.0, 0.5, 1.0, 1.5, 2.0, 2.5, 3.0]
 DELTAS = [round(-0.16 + 0.04 * k, 2) for k in range(11)]     # -0.16 ... 0.24 m
 DROPS = (0.2, 0.6)           # m above standing: 0.2 puts the COM at about Wooten's 1.25 m (man); 0.6
                              # lands like a 0.6 m leap (forefoot first)
+
+
+FAST_FROM, FAST_RAMP = 4.1, 0.2     # m/s: the extra delta ramps in over this vertical touchdown speed
+FAST_DELTAS = [0.0, 0.02, 0.04, 0.06, 0.08]
+HIGH_DROPS = [0.8, 0.9, 1.0, 1.1, 1.15, 1.2, 1.3]
+
+
+def fast_touchdown(character: str, table: dict) -> dict:
+    """Scan the extra delta for fast touchdowns one value at a time (each trial reads the table)."""
+    path = TUNED_DIR / f"landing_{character}.json"
+    landed = {}
+    for extra in FAST_DELTAS:
+        path.write_text(json.dumps(dict(table, fast_touchdown={"speed": FAST_FROM, "ramp": FAST_RAMP, "delta": extra})))
+        landed[extra] = [drop for drop in HIGH_DROPS
+                         if run(RunRequest("land", character, start=StartState(height=drop), duration=3.0)).meta["outcome"] == "success"]
+        print(f"  {character} fast touchdown extra {extra:+.2f} m: lands drops {landed[extra]}")
+    best = max(FAST_DELTAS, key=lambda e: (len(landed[e]), -abs(e)))
+    return {"speed": FAST_FROM, "ramp": FAST_RAMP, "delta": best, "landed": {str(k): v for k, v in landed.items()}}
 
 
 def trial(args):
@@ -81,6 +101,7 @@ def main() -> int:
     for character in args.character:
         table = calibrate(character, args.processes)
         path = TUNED_DIR / f"landing_{character}.json"
+        table["fast_touchdown"] = fast_touchdown(character, table)
         path.write_text(json.dumps(table, indent=1) + "\n")
         print(f"wrote {path.relative_to(ROOT)}: speeds {table['foot_delta']['speed']}")
     return 0

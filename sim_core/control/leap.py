@@ -51,6 +51,7 @@ SOFT_KNEE_KP, SOFT_KNEE_KV = 0.3, 2.5    # knee gain factors while absorbing (th
                                          # torque limits a little spring keeps the squat shallower)
 COM_KP, COM_KV = 4.0, 2.0      # the balance behaviour's COM servo gains (eq. 7.1), used while absorbing
 ABSORB_TIME = 0.35              # s: hand over to balance at the latest this long after touchdown
+TOUCHDOWN_COM = 0.95            # share of the standing COM height at touchdown (predicts the touchdown speed)
 KNEE_RESTORE = 0.2              # knees stiffen again at 20 % of their touchdown speed [W98 §6.1]
 TOE_POINT_PER_SPEED = 0.25      # rad of toe-down foot pitch before touchdown per m/s of expected touchdown
 TOE_POINT_FROM = 2.0            # speed above this (m/s): the forefoot lands first and the ankles give
@@ -183,6 +184,7 @@ class Landing(Behaviour):
         self.last_fx = [None, None]
         self.touchdown_knee_speed = None
         self.com_height = float(ctx.data.subtree_com[self.pelvis][2])
+        self.touchdown_com = TOUCHDOWN_COM * float(ctx.character.bodies[0]["com"][2])
         self.finished_at = None
         self.torque_cap = None
         forcerange = m.actuator_forcerange[:, 1]
@@ -276,8 +278,10 @@ class Landing(Behaviour):
                 fx = c * (foot[0] - com[0]) + sn * (foot[1] - com[1]) + self.sole_centre
                 fx_rate = 0.0 if self.last_fx[k] is None else (fx - self.last_fx[k]) / self.ctx.control_dt
                 self.last_fx[k] = fx
-                if self.calibrated_delta is None:          # the horizontal speed of this flight
-                    self.calibrated_delta = calibrated_foot_delta(self.ctx.character.name, vx)
+                if self.calibrated_delta is None:          # the horizontal and touchdown speeds of this flight
+                    touchdown = math.sqrt(max(vel[2] ** 2 + 2 * 9.80665 * max(com[2] - self.touchdown_com, 0.0), 0.0))
+                    self.calibrated_delta = (calibrated_foot_delta(self.ctx.character.name, vx)
+                                             + fast_touchdown_delta(self.ctx.character.name, touchdown))
                 wanted = vx * p["foot_lead_time"] + self.calibrated_delta + p["foot_delta"]
                 hip = d.xpos[self.hips[k]]
                 hip_from_com = c * (hip[0] - com[0]) + sn * (hip[1] - com[1])
@@ -374,6 +378,16 @@ def leap_assess(trajectory) -> tuple[str, dict]:
     if metrics["final_com_speed"] >= 0.1:
         return "not_still", metrics
     return "success", metrics
+
+
+def fast_touchdown_delta(character: str, touchdown_speed: float) -> float:
+    """Extra foot servo delta for a fast touchdown (a high drop or leap) from the same table:
+    ramps in from ``speed`` over ``ramp`` m/s of vertical touchdown speed (0 where there is none)."""
+    path = TUNED_DIR / f"landing_{character}.json"
+    entry = json.loads(path.read_text()).get("fast_touchdown") if path.exists() else None
+    if not entry:
+        return 0.0
+    return entry["delta"] * min(max((touchdown_speed - entry["speed"]) / entry["ramp"], 0.0), 1.0)
 
 
 def calibrated_foot_delta(character: str, horizontal_speed: float) -> float:
