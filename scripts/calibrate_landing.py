@@ -28,7 +28,7 @@ DROPS = (0.2, 0.6)           # m above standing: 0.2 puts the COM at about Woote
                              # lands like a 0.6 m leap (forefoot first)
 
 
-FAST_FROM, FAST_RAMP = 4.1, 0.2     # m/s: the extra delta ramps in over this vertical touchdown speed
+FAST_FROM, FAST_RAMP = 3.9, 0.2     # m/s: the extra delta ramps in over this vertical touchdown speed
 FAST_DELTAS = [0.0, 0.02, 0.04, 0.06, 0.08]
 HIGH_DROPS = [0.8, 0.9, 1.0, 1.1, 1.15, 1.2, 1.3]
 

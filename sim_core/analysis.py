@@ -6,6 +6,7 @@ from __future__ import annotations
 import numpy as np
 from scipy.spatial import ConvexHull, QhullError
 
+from sim_core.ballistics import GRAVITY
 from sim_core.trajectory import Trajectory
 
 FOOT_BODIES = ("FOOTR", "FOOTL", "TOER", "TOEL")
@@ -45,7 +46,7 @@ def com_support_margins(traj: Trajectory, up: np.ndarray | None = None) -> np.nd
 def gravity_up(traj: Trajectory) -> np.ndarray:
     """Up (against gravity) at every frame, from the logged gravity edits."""
     a = traj.arrays
-    g = np.tile([0.0, 0.0, -9.80665], (len(a["time"]), 1))
+    g = np.tile([0.0, 0.0, -GRAVITY], (len(a["time"]), 1))
     field = traj.meta.get("edit_fields", []).index("opt.gravity") if "edit_fields" in traj.meta else None
     if field is not None and len(a["edit_tick"]):
         for tick, f, index, value in zip(a["edit_tick"], a["edit_field"], a["edit_index"], a["edit_value"]):
@@ -76,7 +77,7 @@ def standard_metrics(traj: Trajectory, allowed_contacts=FOOT_BODIES) -> dict:
     lifted = any(bool((feet[:, sides == side, 2] > LIFT_HEIGHT).all(axis=1).any()) for side in set(sides))
     margins = com_support_margins(traj, gravity_up(traj))
     final_speed = float(np.linalg.norm(a["com_vel"][-1]))
-    weight = 9.80665 * float(traj.meta.get("total_mass") or 1.0)
+    weight = GRAVITY * float(traj.meta.get("total_mass") or 1.0)
     hands = [names.index("HANDR"), names.index("HANDL")]
     knees = [names.index("LLEGR"), names.index("LLEGL")]
     hand_below_knee = float(np.max(a["body_pos"][:, knees, 2].mean(axis=1) - a["body_pos"][:, hands, 2].mean(axis=1)))

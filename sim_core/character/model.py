@@ -21,6 +21,7 @@ from dataclasses import dataclass, field
 import mujoco
 import numpy as np
 
+from sim_core.ballistics import GRAVITY
 from sim_core.character.spec import CharacterSpec
 
 TIMESTEP = 0.001
@@ -73,7 +74,7 @@ class World:
 
 
 def gravity_for_slope(slope: float, axis: str) -> np.ndarray:
-    g = 9.80665
+    g = GRAVITY
     # ground rising towards +X by angle a == gravity tilted to pull towards -X in the ground frame
     direction = {"x+": np.array([-1.0, 0, 0]), "x-": np.array([1.0, 0, 0]),
                  "y+": np.array([0, -1.0, 0]), "y-": np.array([0, 1.0, 0])}[axis]

@@ -24,6 +24,7 @@ from pathlib import Path
 import numpy as np
 
 from sim_core.analysis import standard_metrics
+from sim_core.ballistics import GRAVITY
 from sim_core.control.balance import Balance, LegGeometry
 from sim_core.control.crouch import CrouchTable
 from sim_core.control.behaviour import Behaviour, ControlContext, register
@@ -51,7 +52,6 @@ SOFT_KNEE_KP, SOFT_KNEE_KV = 0.3, 2.5    # knee gain factors while absorbing (th
                                          # torque limits a little spring keeps the squat shallower)
 COM_KP, COM_KV = 4.0, 2.0      # the balance behaviour's COM servo gains (eq. 7.1), used while absorbing
 ABSORB_TIME = 0.35              # s: hand over to balance at the latest this long after touchdown
-TOUCHDOWN_COM = 0.95            # share of the standing COM height at touchdown (predicts the touchdown speed)
 KNEE_RESTORE = 0.2              # knees stiffen again at 20 % of their touchdown speed [W98 §6.1]
 TOE_POINT_PER_SPEED = 0.25      # rad of toe-down foot pitch before touchdown per m/s of expected touchdown
 TOE_POINT_FROM = 2.0            # speed above this (m/s): the forefoot lands first and the ankles give
@@ -184,7 +184,6 @@ class Landing(Behaviour):
         self.last_fx = [None, None]
         self.touchdown_knee_speed = None
         self.com_height = float(ctx.data.subtree_com[self.pelvis][2])
-        self.touchdown_com = TOUCHDOWN_COM * float(ctx.character.bodies[0]["com"][2])
         self.finished_at = None
         self.torque_cap = None
         forcerange = m.actuator_forcerange[:, 1]
@@ -217,7 +216,7 @@ class Landing(Behaviour):
         c, sn = math.cos(yaw), math.sin(yaw)
         com = d.subtree_com[self.pelvis]
         vel = d.subtree_linvel[self.pelvis]
-        vx, vy = c * vel[0] + sn * vel[1], -sn * vel[0] + c * vel[1]
+        vx = c * vel[0] + sn * vel[1]
         angles, velocities = s.angles(), s.velocities()
         targets = s.smoothed_target(t)
         pelvis_pitch = math.atan2(-m[6], m[8])
@@ -237,7 +236,7 @@ class Landing(Behaviour):
         if self.stage == "flight":
             # a fast touchdown lands on the forefoot so the ankles absorb the first impact
             feet_height = max(float(self.airborne.feet_heights(d).min()), 0.0)
-            touchdown_speed = math.sqrt(vel[2] * vel[2] + 2.0 * 9.81 * feet_height)
+            touchdown_speed = math.sqrt(vel[2] * vel[2] + 2.0 * GRAVITY * feet_height)
             toe_point = min(max(TOE_POINT_PER_SPEED * (touchdown_speed - TOE_POINT_FROM), 0.0), TOE_POINT_MAX)
             # moving forward or back fast, the feet land flat: the whole sole has to stop the COM's
             # horizontal speed (the forefoot alone would let the ankles give way)
@@ -279,9 +278,7 @@ class Landing(Behaviour):
                 fx_rate = 0.0 if self.last_fx[k] is None else (fx - self.last_fx[k]) / self.ctx.control_dt
                 self.last_fx[k] = fx
                 if self.calibrated_delta is None:          # the horizontal and touchdown speeds of this flight
-                    touchdown = math.sqrt(max(vel[2] ** 2 + 2 * 9.80665 * max(com[2] - self.touchdown_com, 0.0), 0.0))
-                    self.calibrated_delta = (calibrated_foot_delta(self.ctx.character.name, vx)
-                                             + fast_touchdown_delta(self.ctx.character.name, touchdown))
+                    self.calibrated_delta = calibrated_foot_delta(self.ctx.character.name, vx, touchdown_speed)
                 wanted = vx * p["foot_lead_time"] + self.calibrated_delta + p["foot_delta"]
                 hip = d.xpos[self.hips[k]]
                 hip_from_com = c * (hip[0] - com[0]) + sn * (hip[1] - com[1])
@@ -333,7 +330,6 @@ def balance_after_landing(ctx: ControlContext) -> Balance:
     d, m = ctx.data, ctx.model
     hips = 0.5 * (d.xpos[m.body("ULEGR").id] + d.xpos[m.body("ULEGL").id])
     feet = 0.5 * (d.xpos[m.body("FOOTR").id] + d.xpos[m.body("FOOTL").id])
-    pelvis = d.xmat[m.body("PELVIS").id]
     height = float(hips[2] - feet[2]) + float(ctx.character.joint_position("FOOTR")[2])
     return Balance(Balance.schema.validate(dict(move_start=0.0, move_time=1.2, return_to_stand=0)), ctx,
                    from_height=height)
@@ -357,7 +353,7 @@ def leap_assess(trajectory) -> tuple[str, dict]:
         metrics["liftoff_time"] = float(t[first])
         metrics["touchdown_time"] = float(t[min(last + 1, len(t) - 1)])
         metrics["flight_time"] = metrics["touchdown_time"] - metrics["liftoff_time"]
-        weight = 9.80665 * trajectory.meta["total_mass"]
+        weight = GRAVITY * trajectory.meta["total_mass"]
         metrics["peak_thrust_grf_body_weights"] = float(a["grf"][:first + 1, 2].max() / weight)
         metrics["peak_landing_grf_body_weights"] = float(a["grf"][last:, 2].max() / weight) if last < len(t) else 0.0
         metrics["liftoff_angular_momentum"] = float(a["angmom"][first, 1])
@@ -380,24 +376,20 @@ def leap_assess(trajectory) -> tuple[str, dict]:
     return "success", metrics
 
 
-def fast_touchdown_delta(character: str, touchdown_speed: float) -> float:
-    """Extra foot servo delta for a fast touchdown (a high drop or leap) from the same table:
-    ramps in from ``speed`` over ``ramp`` m/s of vertical touchdown speed (0 where there is none)."""
-    path = TUNED_DIR / f"landing_{character}.json"
-    entry = json.loads(path.read_text()).get("fast_touchdown") if path.exists() else None
-    if not entry:
-        return 0.0
-    return entry["delta"] * min(max((touchdown_speed - entry["speed"]) / entry["ramp"], 0.0), 1.0)
-
-
-def calibrated_foot_delta(character: str, horizontal_speed: float) -> float:
-    """Foot servo delta for this horizontal speed from scripts/calibrate_landing.py's table
-    (0 where there is none)."""
+def calibrated_foot_delta(character: str, horizontal_speed: float, touchdown_speed: float = 0.0) -> float:
+    """Foot servo delta from scripts/calibrate_landing.py's table (0 where there is none): for
+    the horizontal speed, plus the extra for a fast touchdown (a high drop or leap), which ramps
+    in from ``speed`` over ``ramp`` m/s of expected vertical touchdown speed."""
     path = TUNED_DIR / f"landing_{character}.json"
     if not path.exists():
         return 0.0
-    table = json.loads(path.read_text())["foot_delta"]
-    return float(np.interp(horizontal_speed, table["speed"], table["delta"]))
+    table = json.loads(path.read_text())
+    by_speed = table["foot_delta"]
+    delta = float(np.interp(horizontal_speed, by_speed["speed"], by_speed["delta"]))
+    fast = table.get("fast_touchdown")
+    if fast:
+        delta += fast["delta"] * min(max((touchdown_speed - fast["speed"]) / fast["ramp"], 0.0), 1.0)
+    return delta
 
 
 # ------------------------------------------------------------------------------- leap mapping

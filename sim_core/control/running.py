@@ -40,6 +40,7 @@ from pathlib import Path
 
 import numpy as np
 
+from sim_core.ballistics import GRAVITY, time_to_fall_to
 from sim_core.control.behaviour import Behaviour, ControlContext, register
 from sim_core.control.running_leg import RunnerLeg
 from sim_core.control.running_path import (PathFollower, circle_path, figure_eight_path, parse_points,
@@ -62,7 +63,6 @@ FLYING_START_STANCE = 0.22  # s: expected stance time of its first step
 MIN_FLIGHT = 0.02           # s: a touchdown of the new active leg is not taken before this
 LOADING_TIME = 0.010        # s: contact held this long before the stance laws take over
 SWAP_BLEND = 0.06           # s: Hermite blend of the new active leg's targets after lift-off
-GRAVITY = 9.80665
 
 
 TUNED = -1.0                # the value of a tuned parameter that means "as tuned for the running speed"
@@ -578,8 +578,7 @@ class Running(Behaviour):
         z_hh = math.sqrt(max(p["touchdown_leg"] ** 2 - x_hh * x_hh - y_hh * y_hh, 0.01))
         # ground speed matching: swung further forward during flight, brought back over the last
         # GSM_RETRACT s before the predicted touchdown (ballistic hip height reaching z_hh)
-        drop = hip[2] - z_hh
-        to_touchdown = (vz + math.sqrt(vz * vz + 2.0 * GRAVITY * max(drop, 0.0))) / GRAVITY
+        to_touchdown = time_to_fall_to(hip[2], vz, z_hh)
         gsm = p["ground_speed_matching"] * hermite_scalar(to_touchdown / GSM_RETRACT)
         x_hh += gsm * ch
         y_hh += gsm * sh

@@ -1,17 +1,14 @@
-"""Take-off for rotating skills (dives, standing somersaults): the balance behaviour crouches and
+"""Take-off for rotating skills (the dives): the balance behaviour crouches and
 leans, the leap thrust extends the legs and ends with the lift-off hip angle that sets the
 somersault rate (Wooten §4.3); and the prediction that times the opening out of a tuck or pike
 (how far the body will still turn before it reaches the water or the ground)."""
 from __future__ import annotations
-
-import math
 
 from sim_core.control.balance import Balance, LegGeometry
 from sim_core.control.behaviour import ControlContext
 from sim_core.control.leap import ANKLE_GAIN_VERTICAL, VERTICAL_TIMING, LeapThrust
 from sim_core.control.sequencer import Step
 
-GRAVITY = 9.80665
 LEAN_TRIGGER = 1.0         # share of a backward COM offset that triggers the thrust
 SETTINGS = ("crouch_height", "crouch_pitch", "com_offset", "liftoff_hip", "arm_swing")
 
@@ -40,12 +37,6 @@ def takeoff_steps(ctx: ControlContext, cfg: dict) -> list[Step]:
                           cfg["liftoff_hip"], cfg["arm_swing"], stand_height=stand)
 
     return [Step("crouch", crouch, crouched), Step("thrust", thrust, lambda b, t: b.lifted_off())]
-
-
-def time_to_fall_to(z: float, vz: float, z_end: float) -> float:
-    """Ballistic time (s) until a COM at height z moving up at vz comes down to z_end."""
-    drop = z - z_end
-    return (vz + math.sqrt(max(vz * vz + 2 * GRAVITY * drop, 0.0))) / GRAVITY
 
 
 def rotation_to_come(rate_now: float, rate_open: float, time_left: float, open_time: float) -> float:
