@@ -7,7 +7,6 @@ from __future__ import annotations
 import bpy
 import mujoco
 import numpy as np
-from mathutils import Matrix
 
 from .axes import SIM_TO_BLENDER
 
@@ -40,6 +39,6 @@ def _box(context, name: str, centre_sim: np.ndarray, half_size_sim: np.ndarray, 
     mesh.from_pydata([tuple(p) for p in points], [], faces)
     mesh.update()
     obj = bpy.data.objects.new(name, mesh)
-    obj.matrix_world = armature.matrix_world @ Matrix.Identity(4)
+    obj.matrix_world = armature.matrix_world.copy()
     context.scene.collection.objects.link(obj)
     return obj

@@ -47,7 +47,7 @@ SPACE = {  # name: (low, high) per group
 }
 
 
-class Capacity:
+class NoLimits:
     """Lifts the feasibility limits while calibrating (the check reads the table being made)."""
 
     def __enter__(self):
@@ -189,7 +189,7 @@ def main() -> None:
             path.write_text(json.dumps(table, indent=1) + "\n")
             print(f"{character}: limits {table['limits']}")
             continue
-        with Capacity():
+        with NoLimits():
             dives = [search(character, dive, args.iterations, args.population, args.seed,
                             old[k]["settings"] if k < len(old) and not args.fresh else None)
                      if args.only is None or k in args.only or k >= len(old) else old[k]

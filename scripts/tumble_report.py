@@ -51,12 +51,11 @@ def inertia_series(trajectory) -> np.ndarray:
 
 def inertia_table() -> list[str]:
     lines = ["| character | position | this model, kg m² | Wooten Fig. 5.2 | difference |", "| --- | --- | --- | --- | --- |"]
-    for character in ("man", "woman"):
+    for character, seeds in SEED_INERTIA.items():
         spec = load_character(character)
         model, _ = compile_model(spec)
-        for position in ("layout", "pike", "tuck"):
+        for position, seed in seeds.items():
             value = position_inertia(model, spec, position)
-            seed = SEED_INERTIA[character][position]
             lines.append(f"| {character} | {position} | {value:.2f} | {seed:.2f} | {100 * (value / seed - 1):+.1f} % |")
     return lines
 

@@ -27,7 +27,7 @@ from sim_core.control.leap import TUNED_DIR
 from sim_core.control.sequencer import Sequence, Step
 from sim_core.ballistics import GRAVITY, time_to_fall_to
 from sim_core.control.takeoff import SETTINGS, rotation_to_come, takeoff_steps
-from sim_core.control.tumble import FlightRotation, Tumble, position_inertia, position_radius
+from sim_core.control.tumble import FlightRotation, Tumble, position_inertia, position_name, position_radius
 from sim_core.errors import ParameterError
 from sim_core.schema import Parameter, Schema
 
@@ -55,10 +55,13 @@ DEFAULT_SETTINGS = {       # until scripts/calibrate_dives.py has written the ta
 }
 
 
+def group_name(p: dict) -> str:
+    return GROUPS[int(round(p["group"]))]
+
+
 def dive_name(p: dict) -> str:
-    position = ("layout", "pike", "tuck")[int(round(p["position"]))]
     twists = f" with {p['twists']:g} twists" if p["twists"] else ""
-    return f"{GROUPS[int(round(p['group']))]} {p['somersaults']:g} somersault {position}{twists}"
+    return f"{group_name(p)} {p['somersaults']:g} somersault {position_name(p['position'])}{twists}"
 
 
 def _article(name: str) -> str:
@@ -68,7 +71,7 @@ def _article(name: str) -> str:
 def load_settings(character: str, p: dict) -> dict:
     """Leap settings for this dive: the calibrated dive of the same group that is most alike
     (same position, then twists, then somersaults), else the defaults."""
-    group = GROUPS[int(round(p["group"]))]
+    group = group_name(p)
     path = TUNED_DIR / f"dives_{character}.json"
     table = [d for d in json.loads(path.read_text())["dives"] if GROUPS[d["group"]] == group] if path.exists() else []
     if not table:
@@ -106,14 +109,14 @@ class Dive(Sequence):
 
     @classmethod
     def scene(cls, params, world):
-        facing = GROUPS[int(round(params["group"]))] in FACING_THE_WATER
+        facing = group_name(params) in FACING_THE_WATER
         return dataclasses.replace(world, platform=params["platform_height"], platform_edge="ahead" if facing else "behind")
 
     # ------------------------------------------------------------------ settings and checks
     @property
     def direction(self) -> float:
         """+1 for a forward somersault, -1 for a backward one."""
-        return 1.0 if GROUPS[int(round(self.params["group"]))] in FORWARD_ROTATING else -1.0
+        return 1.0 if group_name(self.params) in FORWARD_ROTATING else -1.0
 
     def settings(self) -> dict:
         p = self.params
@@ -128,29 +131,27 @@ class Dive(Sequence):
         if abs(p["twists"] * 2 - round(p["twists"] * 2)) > 1e-9:
             raise ParameterError(f"parameter twists={p['twists']:g} must be a whole or half number")
         limits = self.limits()
-        if limits["angular_momentum"].get(GROUPS[int(round(p["group"]))], 0.0) <= 0:
+        if limits["angular_momentum"].get(group_name(p), 0.0) <= 0:
             raise ParameterError(
-                f"the {self.ctx.character.name} has no calibrated {GROUPS[int(round(p['group']))]} take-off that clears "
+                f"the {self.ctx.character.name} has no calibrated {group_name(p)} take-off that clears "
                 f"the platform (scripts/calibrate_dives.py found none)")
         if p["twists"] > limits.get("twists", 0.0) + 0.25:
             raise ParameterError(
                 f"{_article(dive_name(p))} cannot be completed by the {self.ctx.character.name}: the arm throw made at most "
                 f"{limits.get('twists', 0.0):.2f} twists in a calibrated dive (allowed: that + 0.25)")
-        capacity = self.rotation_capacity()
+        capacity = self.rotation_capacity(limits)
         if p["somersaults"] > capacity:
             raise ParameterError(
                 f"{_article(dive_name(p))} cannot be completed from {p['platform_height']:g} m by the "
                 f"{self.ctx.character.name}: the flight allows at most {capacity:.2f} somersaults in this position "
                 f"with the largest calibrated take-off angular momentum")
 
-    def rotation_capacity(self) -> float:
+    def rotation_capacity(self, limits: dict) -> float:
         """Somersaults the flight from this platform allows: the largest take-off angular
         momentum the calibration reached for this group without touching the platform, spent in
         the position for the flight time less the take-off and opening, and in the line for the
         rest."""
-        group = GROUPS[int(round(self.params["group"]))]
-        limits = self.limits()
-        momentum = limits["angular_momentum"].get(group, 0.0)
+        momentum = limits["angular_momentum"].get(group_name(self.params), 0.0)
         flight = self.flight_time(limits["rise"])
         straight = min(flight, OPEN_TIME + POSITION_MOVE)
         angle = momentum * ((flight - straight) / self._position_inertia() + straight / self._line_inertia())
@@ -168,8 +169,7 @@ class Dive(Sequence):
         return ENTRY_REACH * float(self.ctx.character.bodies[0]["com"][2])
 
     def _position_inertia(self) -> float:
-        return position_inertia(self.ctx.model, self.ctx.character,
-                                ("layout", "pike", "tuck")[int(round(self.params["position"]))])
+        return position_inertia(self.ctx.model, self.ctx.character, position_name(self.params["position"]))
 
     def _line_inertia(self) -> float:
         if not hasattr(self, "_line"):
@@ -183,13 +183,11 @@ class Dive(Sequence):
         self.rotation = FlightRotation(ctx.model, ctx.data)
         self.target = 2 * math.pi * p["somersaults"]
         self.twist_target = 2 * math.pi * p["twists"]
-        self.entered = False
+        self.entry_bodies = [ctx.model.body(n).id for n in ("HANDR", "HANDL", "HEAD", "FOOTR", "FOOTL")]
 
         def tumble(t):
             self.rotation.takeoff(t)
-            self.takeoff_time = t
-            position = p["position"]
-            return _Aerial(Tumble.schema.validate(dict(position=position, stiffness=SNAP)), ctx, self.rotation, self)
+            return _Aerial(Tumble.schema.validate(dict(position=p["position"], stiffness=SNAP)), ctx, self.rotation, self)
 
         def entry(t):
             return _Aerial(Tumble.schema.validate(dict(position=3, move_time=OPEN_MOVE, stiffness=SNAP)), ctx,
@@ -228,8 +226,7 @@ class Dive(Sequence):
     def run_complete(self) -> bool:
         if self.index < 2:
             return False
-        d, m = self.ctx.data, self.ctx.model
-        lowest = min(float(d.xpos[m.body(n).id][2]) for n in ("HANDR", "HANDL", "HEAD", "FOOTR", "FOOTL"))
+        lowest = min(float(self.ctx.data.xpos[b][2]) for b in self.entry_bodies)
         return lowest < -self.params["platform_height"]
 
     @classmethod
@@ -248,13 +245,12 @@ class _Aerial(Tumble):
         m = ctx.model
         ground = m.geom("ground").id
         # the side of the platform the water is on: -1 (-X, standing backwards) or +1 (facing it)
-        self.water_side = 1.0 if GROUPS[int(round(dive.params["group"]))] in FACING_THE_WATER else -1.0
+        self.water_side = 1.0 if group_name(dive.params) in FACING_THE_WATER else -1.0
         self.edge = float(m.geom_pos[ground][0] + self.water_side * m.geom_size[ground][0])
         self.feet = [m.body(n).id for n in ("FOOTR", "FOOTL", "TOER", "TOEL")]
         self.clear = self.params["position"] in (0, 3)
         self.twist_done = False
-        position = ("layout", "pike", "tuck", "line")[int(round(self.params["position"]))]
-        self.radius = position_radius(m, ctx.character, position)
+        self.radius = position_radius(m, ctx.character, position_name(self.params["position"]))
 
     def start(self, t: float) -> None:
         if self.clear:
@@ -285,7 +281,7 @@ class _Aerial(Tumble):
         if not dive.twist_target or self.params["position"] != 3:
             return
         if not self.twisting and not self.twist_done:
-            self.throw_twist(t, 1.0)
+            self.throw_twist(t)
         elif self.twisting:
             rate = abs(float(self.ctx.data.qvel[5]))
             if abs(self.rotation.twist) + rate * TWIST_STOP_LEAD >= dive.twist_target:
@@ -335,8 +331,8 @@ def dive_assess(trajectory) -> tuple[str, dict]:
     twist = float(np.sum(twist_rate[start:end]) * (t[1] - t[0]))
     body_axis = a["body_pos"][end, head] - 0.5 * (a["body_pos"][end, feet[0]] + a["body_pos"][end, feet[1]])
     p = meta["params"]
-    head_first = abs(p["somersaults"] % 1.0 - 0.5) < 1e-6        # x.5 somersaults end head down
-    wanted = -1.0 if head_first else 1.0
+    ends_head_first = abs(p["somersaults"] % 1.0 - 0.5) < 1e-6        # x.5 somersaults end head down
+    wanted = -1.0 if ends_head_first else 1.0
     entry_angle = math.degrees(math.acos(np.clip(wanted * body_axis[2] / np.linalg.norm(body_axis), -1.0, 1.0)))
     momentum = a["angmom"][start:end + 1]
     drift = float(np.abs(momentum - momentum[0]).max() / max(np.linalg.norm(momentum[0]), 1e-9))
@@ -349,7 +345,7 @@ def dive_assess(trajectory) -> tuple[str, dict]:
         "angular_momentum_drift": drift, "entered_water": bool(meta.get("ended_early", False)),
         "takeoff_twist_rate": float(twist_rate[start]),
     })
-    wanted_direction = "forward" if GROUPS[int(round(p["group"]))] in FORWARD_ROTATING else "backward"
+    wanted_direction = "forward" if group_name(p) in FORWARD_ROTATING else "backward"
     if not metrics["entered_water"]:
         return "no_entry", metrics
     if metrics["hit_platform"]:

@@ -25,7 +25,7 @@ from sim_core.character.model import set_standing_pose
 from sim_core.control.behaviour import Behaviour, ControlContext
 from sim_core.schema import Parameter, Schema
 
-POSITION_NAMES = ("layout", "pike", "tuck")
+POSITION_NAMES = ("layout", "pike", "tuck", "line")     # by the schemas' position codes 0-3
 _SPINE_FLEXED = {"spine_l3_y": 0.26, "spine_l1_y": 0.26, "spine_t7_y": 0.21, "spine_t4_y": 0.21, "neck_c2_y": 0.8}
 # joint angles (rad) of each position; "*" is r or l, arm angles are the right side's (mirrored
 # for the left); joints not named keep the standing pose (straight, arms hanging: shoulder x is
@@ -40,7 +40,7 @@ POSITIONS = {
 }
 # the asymmetric arm throw that starts a twist (§5.2), from the line: the right arm stays up by
 # the head, the left comes down to the side in the frontal plane, which tilts the body out of
-# the plane of the angular momentum; direction -1 mirrors it
+# the plane of the angular momentum
 TWIST_THROW = {"shoulder_r_x": -1.5, "shoulder_l_x": -1.43}
 SNAP_DAMPING = 2.0          # a stiffened move is damped twice as much again: fast but overdamped (with
                             # critical damping the 1 ms step let the flight's angular momentum drift ~1 %)
@@ -66,15 +66,9 @@ def position_angles(position: str) -> dict[str, float]:
     return out
 
 
-def twist_angles(direction: float) -> dict[str, float]:
-    """Arm angles of the twisting throw; direction -1 throws the other way (left arm up)."""
-    if direction >= 0:
-        return dict(TWIST_THROW)
-    out = {}
-    for name, value in TWIST_THROW.items():
-        other = name.replace("_r_", "_#_").replace("_l_", "_r_").replace("_#_", "_l_")
-        out[other] = -value if _is_mirrored(name) else value
-    return out
+def position_name(code: float) -> str:
+    """The position a schema's code (0 layout, 1 pike, 2 tuck, 3 line) names."""
+    return POSITION_NAMES[int(round(code))]
 
 
 def inertia_about_com(model: mujoco.MjModel, data: mujoco.MjData) -> np.ndarray:
@@ -194,7 +188,7 @@ class Tumble(Behaviour):
         angles; toes pointed."""
         character = self.ctx.character
         straight = {d.name: v for d, v in zip(character.dofs, character.standing_pose)}
-        position = ("layout", "pike", "tuck", "line")[int(round(self.params["position"]))]
+        position = position_name(self.params["position"])
         k = self.params["tightness"] if position != "line" else 1.0
         targets = {name: value + k * (position_angles(position).get(name, value) - value)
                    for name, value in straight.items()}
@@ -214,10 +208,9 @@ class Tumble(Behaviour):
         s.move_to(s.indices(list(targets)), np.array(list(targets.values())), self.params["move_time"], t)
         self.event(t, "tumble")
 
-    def throw_twist(self, t: float, direction: float, duration: float = 0.25) -> None:
+    def throw_twist(self, t: float, duration: float = 0.25) -> None:
         s = self.ctx.servos
-        arms = twist_angles(direction)
-        s.move_to(s.indices(list(arms)), np.array(list(arms.values())), duration, t)
+        s.move_to(s.indices(list(TWIST_THROW)), np.array(list(TWIST_THROW.values())), duration, t)
         self.twisting = True
         self.event(t, "twist_throw")
 
