@@ -26,8 +26,9 @@ from sim_core.control.behaviour import register
 from sim_core.control.leap import TUNED_DIR
 from sim_core.control.sequencer import Sequence, Step
 from sim_core.ballistics import GRAVITY, time_to_fall_to
-from sim_core.control.takeoff import SETTINGS, rotation_to_come, takeoff_steps
-from sim_core.control.tumble import FlightRotation, Tumble, position_inertia, position_name, position_radius
+from sim_core.control.takeoff import SETTINGS, takeoff_steps
+from sim_core.control.tumble import (FlightRotation, Tumble, position_inertia, position_name, position_radius,
+                                    rotation_to_come)
 from sim_core.errors import ParameterError
 from sim_core.schema import Parameter, Schema
 

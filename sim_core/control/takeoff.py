@@ -1,7 +1,6 @@
-"""Take-off for rotating skills (the dives): the balance behaviour crouches and
-leans, the leap thrust extends the legs and ends with the lift-off hip angle that sets the
-somersault rate (Wooten §4.3); and the prediction that times the opening out of a tuck or pike
-(how far the body will still turn before it reaches the water or the ground)."""
+"""Take-off for rotating skills (the dives): the balance behaviour crouches and leans, the leap
+thrust extends the legs and ends with the lift-off hip angle that sets the somersault rate
+(Wooten §4.3)."""
 from __future__ import annotations
 
 from sim_core.control.balance import Balance, LegGeometry
@@ -37,9 +36,3 @@ def takeoff_steps(ctx: ControlContext, cfg: dict) -> list[Step]:
                           cfg["liftoff_hip"], cfg["arm_swing"], stand_height=stand)
 
     return [Step("crouch", crouch, crouched), Step("thrust", thrust, lambda b, t: b.lifted_off())]
-
-
-def rotation_to_come(rate_now: float, rate_open: float, time_left: float, open_time: float) -> float:
-    """Rotation (rad) the body will still make if it opens now: at the open shape's rate for the
-    time left, plus about half the difference of the rates over the opening."""
-    return rate_open * time_left + 0.5 * (rate_now - rate_open) * open_time

@@ -224,3 +224,8 @@ class Tumble(Behaviour):
     def update(self, t: float) -> None:
         """The position is held by the servos; the rotation is measured by the owner."""
 
+
+def rotation_to_come(rate_now: float, rate_open: float, time_left: float, open_time: float) -> float:
+    """Rotation (rad) the body will still make if it opens now: at the open shape's rate for the
+    time left, plus about half the difference of the rates over the opening."""
+    return rate_open * time_left + 0.5 * (rate_now - rate_open) * open_time
