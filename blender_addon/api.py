@@ -42,6 +42,18 @@ def make_request(character: str, behaviour: str, params, duration: float | None)
     return request
 
 
+def target_from_object(obj, target) -> dict[str, float]:
+    """The jump target parameters (target_x, target_y, target_z) for a scene object (an Empty, a
+    box...): its origin, in the rig's start frame, from the middle of the character's feet."""
+    import numpy as np
+    from sim_core.character.spec import load_character
+    from sim_core.control.target_jump import target_params
+    from .axes import BLENDER_TO_SIM
+    local = obj.matrix_world.inverted() @ target.matrix_world.translation
+    point = BLENDER_TO_SIM @ np.array(local[:3], dtype=float)
+    return {k: round(v, 4) for k, v in target_params(load_character(str(obj[rig.CHARACTER_KEY])), point).items()}
+
+
 def add_character(context, character: str = "man", location=None):
     return rig.add_character(context, character, location)
 
@@ -58,15 +70,21 @@ def console_progress(fraction: float) -> None:
 
 def simulate_and_bake(context, *, behaviour: str, params=None, duration: float | None = None,
                       armature: str | None = None, start_frame: int | None = None,
-                      fit_scene_range: bool = False,
+                      fit_scene_range: bool = False, target: str | None = None,
                       progress: Callable[[float], None] | None = None,
                       cancelled: Callable[[], bool] | None = None):
     """Simulate ``behaviour`` on the rig's character and bake it as a new action on the rig.
     Keys land on every frame of the scene's frame rate from ``start_frame`` (default: the scene's
-    start). Returns (action, trajectory). Nothing is written if validation, the run or the bake
-    fails or is cancelled."""
+    start). ``target``: name of a scene object whose origin sets a jump's target parameters.
+    Returns (action, trajectory). Nothing is written if validation, the run or the bake fails or
+    is cancelled."""
+    import bpy
     from sim_core.simulate import run
     obj = rig.find_rig(context, armature)
+    if target:
+        if target not in bpy.data.objects:
+            raise rig.RigError(f"target object {target!r} is not in this file")
+        params = {**parse_params(behaviour, params), **target_from_object(obj, bpy.data.objects[target])}
     request = make_request(str(obj[rig.CHARACTER_KEY]), behaviour, params, duration)
     trajectory = run(request, progress=progress, cancelled=cancelled)
     action = bake_result(context, obj, trajectory, start_frame, fit_scene_range)

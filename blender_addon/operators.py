@@ -71,7 +71,7 @@ class SIMATHLETICS_OT_simulate_bake(bpy.types.Operator):
             params = api.parse_params(behaviour, params)
         duration = self.duration if is_set("duration") and self.duration > 0 else settings.duration
         return {
-            "behaviour": behaviour, "params": params, "duration": duration if duration > 0 else None,
+            "behaviour": behaviour, "params": params, "target": settings.target_object, "duration": duration if duration > 0 else None,
             "start_frame": self.start_frame if is_set("start_frame") else settings.start_frame,
             "armature": self.armature if is_set("armature") and self.armature else None,
             "fit_scene_range": settings.fit_scene_range,
@@ -81,6 +81,8 @@ class SIMATHLETICS_OT_simulate_bake(bpy.types.Operator):
         """Validate everything before simulating: (rig object, request, settings)."""
         s = self._settings(context)
         obj = rig.find_rig(context, s["armature"])
+        if s["target"] is not None and props.takes_target(s["behaviour"]):
+            s["params"] = api.parse_params(s["behaviour"], {**s["params"], **api.target_from_object(obj, s["target"])})
         request = api.make_request(str(obj[rig.CHARACTER_KEY]), s["behaviour"], s["params"], s["duration"])
         return obj, request, s
 

@@ -35,6 +35,8 @@ class SIMATHLETICS_PT_panel(bpy.types.Panel):
         if settings.behaviour:
             cls = behaviour_class(settings.behaviour)
             group = props.params_group(settings, settings.behaviour)
+            if props.takes_target(settings.behaviour):
+                layout.prop(settings, "target_object")
             col = layout.column(align=True)
             for p in cls.schema.parameters:
                 col.prop(group, p.name)

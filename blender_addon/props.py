@@ -56,6 +56,16 @@ def parameter_property(p):
     return FloatProperty(**kw)
 
 
+TARGET_PARAMETERS = ("target_x", "target_y", "target_z")
+
+
+def takes_target(behaviour: str) -> bool:
+    """True when the behaviour's schema has a target point (a jump to a target)."""
+    from sim_core.control.behaviour import behaviour_class
+    names = {p.name for p in behaviour_class(behaviour).schema.parameters}
+    return all(n in names for n in TARGET_PARAMETERS)
+
+
 def group_attr(behaviour: str) -> str:
     return "params_" + "".join(c if c.isalnum() else "_" for c in behaviour)
 
@@ -108,6 +118,10 @@ def _build_classes() -> list[type]:
                                    description="Scene frame of the run's first key"),
         "fit_scene_range": BoolProperty(name="Fit scene range", default=False,
                                         description="Set the scene's start/end frames to the bake"),
+        "target_object": PointerProperty(
+            name="Target", type=bpy.types.Object,
+            description="Object (an Empty, a box...) whose origin sets the target of a jump: it overrides "
+                        "the target parameters, measured from the middle of the character's feet"),
     }
     for name in available_behaviours():
         schema = behaviour_class(name).schema

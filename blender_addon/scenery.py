@@ -1,7 +1,8 @@
 """The simulated world's fixed objects in the Blender scene, so a baked skill is seen where it
-happened: a dive's platform and water surface. Objects are made once per scene and named
-``SimAthletics platform`` / ``SimAthletics water``; an existing object of that name is reused,
-never replaced (the user may have moved or restyled it)."""
+happened: a dive's platform and water surface, the boxes a jump lands on. Objects are made once
+per scene and named ``SimAthletics platform`` / ``SimAthletics water`` / ``SimAthletics box 0``...;
+an existing object of that name is reused, never replaced (the user may have moved or restyled
+it)."""
 from __future__ import annotations
 
 import bpy
@@ -11,17 +12,23 @@ import numpy as np
 from .axes import SIM_TO_BLENDER
 
 PLATFORM_NAME, WATER_NAME = "SimAthletics platform", "SimAthletics water"
+BOX_NAME = "SimAthletics box {}"
 
 
 def add_scenery(context, armature, trajectory) -> list:
-    """Add the platform and water of ``trajectory``'s world (if any), in the armature object's
-    frame. Returns the objects made."""
-    platform = float(trajectory.meta.get("world", {}).get("platform", 0.0) or 0.0)
+    """Add the platform and water, and the boxes, of ``trajectory``'s world (if any), in the
+    armature object's frame. Returns the objects made."""
+    world = trajectory.meta.get("world", {})
+    made = []
+    for k, (x, y, height, length, width) in enumerate(world.get("boxes", [])):
+        if BOX_NAME.format(k) not in bpy.data.objects:
+            made.append(_box(context, BOX_NAME.format(k), np.array([x, y, height / 2]),
+                             np.array([length / 2, width / 2, height / 2]), armature))
+    platform = float(world.get("platform", 0.0) or 0.0)
     if platform <= 0:
-        return []
+        return made
     model = mujoco.MjModel.from_xml_string(trajectory.meta["model_xml"])
     ground = model.geom("ground").id
-    made = []
     if PLATFORM_NAME not in bpy.data.objects:
         made.append(_box(context, PLATFORM_NAME, model.geom_pos[ground], model.geom_size[ground], armature))
     if WATER_NAME not in bpy.data.objects:

@@ -7,6 +7,7 @@ import numpy as np
 from scipy.spatial import ConvexHull, QhullError
 
 from sim_core.ballistics import GRAVITY
+from sim_core.control.measure import surface_under
 from sim_core.trajectory import Trajectory
 
 FOOT_BODIES = ("FOOTR", "FOOTL", "TOER", "TOEL")
@@ -14,6 +15,13 @@ STILL_SPEED = 0.1            # m/s
 STEP_DISTANCE = 0.03         # m: a foot that slides or steps further than this has stepped
 LIFT_HEIGHT = 0.02           # m: a foot whose every contact site is this high is off the ground
 CONTACT_HEIGHT = 0.005       # m: a contact site this close to the ground supports the body
+
+
+def feet_above_surface(trajectory) -> np.ndarray:
+    """Per frame and foot site: height above the ground or the box under it."""
+    points = trajectory.arrays["support_points"]
+    boxes = trajectory.meta.get("world", {}).get("boxes", ())
+    return points[:, :, 2] - surface_under(points, boxes) if boxes else points[:, :, 2]
 
 
 def com_support_margins(traj: Trajectory, up: np.ndarray | None = None) -> np.ndarray:
@@ -24,7 +32,7 @@ def com_support_margins(traj: Trajectory, up: np.ndarray | None = None) -> np.nd
     up = np.tile([0.0, 0.0, 1.0], (len(com), 1)) if up is None else np.atleast_2d(up)
     ground = com[:, :2] - com[:, 2:3] * up[:, :2] / up[:, 2:3]
     pts = traj.arrays["support_points"]
-    touching_all = pts[:, :, 2] < CONTACT_HEIGHT
+    touching_all = feet_above_surface(traj) < CONTACT_HEIGHT
     out = np.full(len(com), np.inf)
     cached_mask, cached_pts, equations = None, None, None
     for k in range(len(com)):
@@ -74,7 +82,8 @@ def standard_metrics(traj: Trajectory, allowed_contacts=FOOT_BODIES) -> dict:
     # a foot has stepped when all of it leaves the ground (a heel rising while the toes stay down
     # is part of balancing, not a step)
     sides = np.array(traj.meta.get("support_site_side", ["R"] * feet.shape[1]))
-    lifted = any(bool((feet[:, sides == side, 2] > LIFT_HEIGHT).all(axis=1).any()) for side in set(sides))
+    heights = feet_above_surface(traj)
+    lifted = any(bool((heights[:, sides == side] > LIFT_HEIGHT).all(axis=1).any()) for side in set(sides))
     margins = com_support_margins(traj, gravity_up(traj))
     final_speed = float(np.linalg.norm(a["com_vel"][-1]))
     weight = GRAVITY * float(traj.meta.get("total_mass") or 1.0)

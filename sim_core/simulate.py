@@ -99,7 +99,7 @@ class Recorder:
         self.site_ids = site_ids
         contiguous = len(site_ids) and np.all(np.diff(site_ids) == 1)
         self.sites = slice(int(site_ids[0]), int(site_ids[-1]) + 1) if contiguous else site_ids
-        self.ground = model.geom("ground").id
+        self.world_geom = model.geom_bodyid == 0           # the ground, boxes (what the body stands on)
         self.geom_body = model.geom_bodyid - 1
         nb = len(self.bodies)
         self.buf = {
@@ -129,7 +129,8 @@ class Recorder:
         if data.ncon:
             geoms = data.contact.geom
             first, second = geoms[:, 0], geoms[:, 1]
-            touched = np.where(first == self.ground, second, np.where(second == self.ground, first, -1))
+            world = self.world_geom
+            touched = np.where(world[first], second, np.where(world[second], first, -1))
             touched = touched[touched >= 0]
             b["ground_contact"][k, self.geom_body[touched]] = True
         b["support_points"][k] = data.site_xpos[self.sites]
@@ -153,7 +154,7 @@ def run(request: RunRequest, progress: Callable[[float], None] | None = None,
         cancelled: Callable[[], bool] | None = None) -> Trajectory:
     """Validate, simulate and return the trajectory (nothing is written to disk here)."""
     character, cls, params, duration = request.validated()
-    world = cls.scene(params, request.world)
+    world = cls.scene(params, request.world, character)
     model, xml = compile_model(character, world, request.strength)
     data = mujoco.MjData(model)
     set_standing_pose(model, data, character)
@@ -219,7 +220,7 @@ def run(request: RunRequest, progress: Callable[[float], None] | None = None,
         "ended_early": len(control) < n_ticks, "pushes": [p.to_dict() for p in request.pushes],
         "world": {"slope": world.slope, "slope_axis": world.slope_axis,
                   "extra_mass": world.extra_mass, "platform": world.platform,
-                  "platform_edge": world.platform_edge},
+                  "platform_edge": world.platform_edge, "boxes": [list(b) for b in world.boxes]},
         "start_state": {"height": request.start.height, "velocity": list(request.start.velocity)},
         "strength": request.strength, "total_mass": float(model.body_subtreemass[1]), "timestep": model.opt.timestep, "steps_per_tick": steps_per_tick,
         "control_rate": cls.control_rate, "phase_events": behaviour.phase_events,

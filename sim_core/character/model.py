@@ -58,6 +58,8 @@ class World:
     slope_ramp: float | None = None            # s; default SLOPE_RAMP_PER_DEGREE per degree
     platform: float = 0.0                      # m: height of a diving platform above the water (0 = none)
     platform_edge: str = "behind"              # 'behind' the heels (water at -X) or 'ahead' of the toes (+X)
+    boxes: tuple = ()                          # ((x, y, height, length, width), ...) m: boxes on the ground,
+                                               # centred at (x, y), to jump onto (geoms "box0", "box1", ...)
 
     @property
     def ramp_time(self) -> float:
@@ -122,6 +124,12 @@ def build_mjspec(character: CharacterSpec, world: World | None = None, strength:
         ground = spec.worldbody.add_geom(name="ground", type=mujoco.mjtGeom.mjGEOM_PLANE, size=[0, 0, 0.05])
     ground.friction = [FOOT_FRICTION, 0.005, 0.0001]
     ground.contype = ground.conaffinity = CONTACT_GROUP
+    for k, (x, y, height, length, width) in enumerate(world.boxes):
+        box = spec.worldbody.add_geom(name=f"box{k}", type=mujoco.mjtGeom.mjGEOM_BOX,
+                                      size=[length / 2, width / 2, height / 2], pos=[x, y, height / 2],
+                                      rgba=[0.6, 0.5, 0.4, 1])
+        box.friction = [FOOT_FRICTION, 0.005, 0.0001]
+        box.contype = box.conaffinity = CONTACT_GROUP
 
     torque_scale = _torque_scale(strength)
     frames: dict[str, np.ndarray] = {}
@@ -211,7 +219,7 @@ def _exclude_touching_pairs(spec: mujoco.MjSpec, character: CharacterSpec) -> No
     pairs = set()
     ground = model.geom("ground").id
     for c in data.contact[: data.ncon]:
-        if ground in (c.geom1, c.geom2):
+        if model.geom_bodyid[c.geom1] == 0 or model.geom_bodyid[c.geom2] == 0:     # the world's geoms
             continue
         b1, b2 = model.geom_bodyid[c.geom1], model.geom_bodyid[c.geom2]
         pairs.add(tuple(sorted((model.body(b1).name, model.body(b2).name))))

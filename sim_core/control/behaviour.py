@@ -78,9 +78,9 @@ class Behaviour:
         self.phase_events.append((float(t), name))
 
     @classmethod
-    def scene(cls, params: dict[str, float], world):
-        """The world this behaviour runs in, given the requested one (e.g. a dive adds its
-        platform). Default: the requested world."""
+    def scene(cls, params: dict[str, float], world, character=None):
+        """The world this behaviour runs in, given the requested one and the character (e.g. a
+        dive adds its platform, a jump a box under its target). Default: the requested world."""
         return world
 
     @property

@@ -109,7 +109,7 @@ class Dive(Sequence):
     )
 
     @classmethod
-    def scene(cls, params, world):
+    def scene(cls, params, world, character=None):
         facing = group_name(params) in FACING_THE_WATER
         return dataclasses.replace(world, platform=params["platform_height"], platform_edge="ahead" if facing else "behind")
 

@@ -23,7 +23,7 @@ from pathlib import Path
 
 import numpy as np
 
-from sim_core.analysis import standard_metrics
+from sim_core.analysis import feet_above_surface, standard_metrics
 from sim_core.ballistics import GRAVITY
 from sim_core.control.balance import Balance, LegGeometry
 from sim_core.control.crouch import CrouchTable
@@ -72,7 +72,7 @@ class Airborne:
         self.support = SupportGeometry(model)
 
     def feet_heights(self, data) -> np.ndarray:
-        return self.support.points(data)[:, 2]
+        return self.support.heights(data)
 
     def in_flight(self, data) -> bool:
         return bool(self.feet_heights(data).min() > AIRBORNE_HEIGHT)
@@ -160,6 +160,12 @@ class Landing(Behaviour):
                   "(0.3 s ~ the capture point of a standing human)"),
         Parameter("foot_kp", "rad/m", 8.0, 0.0, 20.0, "hip offset per metre of foot placement error (eq. 6.1)"),
         Parameter("foot_kv", "rad s/m", 0.5, 0.0, 5.0, "hip offset per m/s of foot speed relative to the COM (eq. 6.1)"),
+        Parameter("swing_arms", "bool", 0.0, 0.0, 1.0,
+                  "1 = swing the arms to arm_flexion in flight; 0 = hold them as the take-off left them"),
+        Parameter("arm_flexion", "rad", 0.6, -1.0, 3.0,
+                  "forward raise of the arms they swing to in flight (from a high take-off swing, down "
+                  "and back to below 0 pitches the trunk back, so the feet can reach forward)"),
+        Parameter("arm_time", "s", 0.3, 0.1, 1.0, "duration of that arm swing"),
     )
 
     def __init__(self, params, ctx: ControlContext):
@@ -200,8 +206,11 @@ class Landing(Behaviour):
         stand = 0.5 * sum(LegGeometry(self.ctx.character, side).standing_hip_height() for side in "RL")
         self.crouch = CrouchTable(self.ctx.model, self.ctx.character, np.linspace(0.5 * stand, stand, 6), stand)
         s.set_gains(np.arange(len(s.names)), s.default_kp, s.default_kv)     # undo the thrust gains
-        for side, sign in (("r", 1.0), ("l", -1.0)):
-            s.move_to(s.indices([f"shoulder_{side}_z"]), sign * 0.6, 0.3, t)
+        # the arms swing in flight (their targets are set every tick: update() holds all targets)
+        self.shoulders = s.indices(["shoulder_r_z", "shoulder_l_z"])
+        self.arm_from = s.smoothed_target(t)[self.shoulders].copy()
+        self.arm_to = np.array([1.0, -1.0]) * self.params["arm_flexion"]
+        self.arm_t0 = t
         self.event(t, "flight")
 
     @property
@@ -303,6 +312,9 @@ class Landing(Behaviour):
             q, dq = angles[legs], velocities[legs]
             torque = np.clip(kp * (targets[legs] + s.offset[legs] - q) - kv * dq, -cap, cap)
             targets[legs] = q + (torque + kv * dq) / kp - s.offset[legs]
+        if p["swing_arms"]:
+            swing = hermite_scalar((t - self.arm_t0) / p["arm_time"])
+            targets[self.shoulders] = self.arm_from + (self.arm_to - self.arm_from) * swing
         s.hold(targets, t)
 
 
@@ -340,8 +352,7 @@ def leap_assess(trajectory) -> tuple[str, dict]:
     rise and travel, flight time, peak vertical ground reaction force (body weights)."""
     metrics = standard_metrics(trajectory)
     a = trajectory.arrays
-    heights = a["support_points"][:, :, 2].min(axis=1)
-    flying = heights > AIRBORNE_HEIGHT
+    flying = feet_above_surface(trajectory).min(axis=1) > AIRBORNE_HEIGHT
     t = a["time"]
     com = a["com"]
     metrics["com_rise"] = float(com[:, 2].max() - com[0, 2])
@@ -440,6 +451,13 @@ class Leap(Sequence):
                   "(low_level only)"),
         Parameter("crouch_time", "s", 0.8, 0.3, 3.0, "time to sink into the crouch"),
         Parameter("foot_delta", "m", 0.0, -0.3, 0.3, "landing: foot servo delta (see the land behaviour)"),
+        Parameter("landing_swing_arms", "bool", 0.0, 0.0, 1.0,
+                  "landing: 1 = swing the arms to landing_arm_flexion in flight (0 = hold them)"),
+        Parameter("landing_arm_flexion", "rad", 0.6, -1.0, 3.0,
+                  "landing: forward raise of the arms they swing to in flight (below 0: down and back, "
+                  "which pitches the trunk back so the feet reach forward)"),
+        Parameter("landing_foot_lead_time", "s", 0.2, 0.0, 0.6,
+                  "landing: the feet land this many seconds of horizontal COM travel ahead of the COM"),
     )
 
     def settings(self) -> dict:
@@ -505,16 +523,20 @@ class Leap(Sequence):
         legs = [LegGeometry(self.ctx.character, side) for side in "RL"]
         return 0.5 * sum(leg.standing_hip_height() for leg in legs)
 
+    def is_broad(self) -> bool:
+        return self.params["distance"] > 0
+
     def steps(self) -> list[Step]:
         p, ctx = self.params, self.ctx
         cfg = self.settings()
-        broad = p["distance"] > 0
+        broad = self.is_broad()
         schema = Balance.schema
 
         def crouch(t):
             return Balance(schema.validate(dict(pelvis_height=cfg["crouch_height"], torso_pitch=cfg["crouch_pitch"],
                                                 com_offset_x=cfg["com_offset"], move_start=0.2,
-                                                move_time=p["crouch_time"], hold_time=0.0, return_to_stand=0)), ctx)
+                                                move_time=cfg["crouch_time"] if "crouch_time" in cfg else p["crouch_time"], hold_time=0.0,
+                                                return_to_stand=0)), ctx)
 
         def crouched(b, t):
             if broad:
@@ -530,8 +552,10 @@ class Leap(Sequence):
 
         def land(t):
             # the calibrated leap's own correction of the landing's foot servo delta, plus the user's
-            delta = min(max(p["foot_delta"] + cfg.get("foot_delta", 0.0), -0.3), 0.3)
-            return Landing(Landing.schema.validate(dict(foot_delta=delta)), ctx)
+            delta = min(max(p.get("foot_delta", 0.0) + cfg.get("foot_delta", 0.0), -0.3), 0.3)
+            landing = {k: cfg.get(k, p.get("landing_" + k, Landing.schema.defaults()[k]))
+                       for k in ("swing_arms", "arm_flexion", "foot_lead_time")}
+            return Landing(Landing.schema.validate(dict(foot_delta=delta, **landing)), ctx)
 
         def stand(t):
             return balance_after_landing(ctx)

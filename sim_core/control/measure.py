@@ -25,6 +25,29 @@ def roll_of(xmat: np.ndarray, up: np.ndarray) -> float:
     return math.atan2(float(np.dot(m[:, 1], up)), float(np.dot(m[:, 2], up)))
 
 
+def surface_under(points: np.ndarray, boxes) -> np.ndarray:
+    """Height of what is under each point (..., 3 or 2): the top of a box whose footprint holds it,
+    else the ground (0). ``boxes``: World.boxes, ((x, y, height, length, width), ...)."""
+    points = np.asarray(points)
+    under = np.zeros(points.shape[:-1])
+    for x, y, height, length, width in boxes:
+        inside = (np.abs(points[..., 0] - x) <= length / 2) & (np.abs(points[..., 1] - y) <= width / 2)
+        under = np.where(inside, np.maximum(under, height), under)
+    return under
+
+
+def boxes_of(model: mujoco.MjModel) -> tuple:
+    """World.boxes read back off a compiled model (geoms named box0, box1, ...)."""
+    boxes = []
+    while True:
+        try:
+            geom = model.geom(f"box{len(boxes)}")
+        except KeyError:
+            return tuple(boxes)
+        (x, y, z), (hx, hy, hz) = model.geom_pos[geom.id], model.geom_size[geom.id]
+        boxes.append((float(x), float(y), float(2 * hz), float(2 * hx), float(2 * hy)))
+
+
 class SupportGeometry:
     """Foot contact sites grouped by foot (foot + toe). A foot that touches the ground anywhere
     contributes all its sites to the support area, so a heel that lifts under a push does not
@@ -39,14 +62,22 @@ class SupportGeometry:
         self.foot_of_site = np.array([k for k, g in enumerate(groups) for _ in g])
         self.right, self.left = self.foot_of_site == 0, self.foot_of_site == 1
         self.contact_height = 0.005
+        self.boxes = boxes_of(model)
 
     def points(self, data: mujoco.MjData) -> np.ndarray:
         return data.site_xpos[self.site_ids]
 
+    def heights(self, data: mujoco.MjData) -> np.ndarray:
+        """Height of every site above what is under it (the ground or a box)."""
+        points = data.site_xpos[self.site_ids]
+        if not self.boxes:
+            return points[:, 2]
+        return points[:, 2] - surface_under(points, self.boxes)
+
     def supporting_points(self, data: mujoco.MjData) -> np.ndarray:
         """All sites of every foot that touches the ground (all sites if none does)."""
         points = data.site_xpos[self.site_ids]
-        low = points[:, 2] < self.contact_height
+        low = self.heights(data) < self.contact_height
         right = bool(low[self.right].any())
         left = bool(low[self.left].any())
         if right == left:                       # both feet down (or both up: use them all)

@@ -314,3 +314,28 @@ def test_a_dive_is_baked_with_its_platform_and_water(empty_scene):
     # a second bake reuses the scenery instead of duplicating it
     assert bpy.ops.sim_athletics.simulate_bake(behaviour="dive", params=params, duration=4.5, start_frame=1) == {"FINISHED"}
     assert len([o for o in bpy.data.objects if o.name.startswith("SimAthletics")]) == 2
+
+
+def test_a_jump_takes_its_target_from_an_empty(empty_scene):
+    """The panel's Target object sets the jump's target, measured from the middle of the feet in
+    the rig's frame wherever the rig stands; the baked jump lands on it."""
+    from mathutils import Vector
+    from sim_core.character.spec import load_character
+    from sim_core.control.target_jump import start_feet_centre
+    context = empty_scene
+    assert bpy.ops.sim_athletics.add_character(character="man") == {"FINISHED"}
+    arm = context.view_layer.objects.active
+    arm.location, arm.rotation_euler = (2.0, 1.0, 0.0), (0.0, 0.0, 0.5)
+    context.view_layer.update()
+    centre = start_feet_centre(load_character("man"))
+    spot = bpy.data.objects.new("landing spot", None)
+    context.scene.collection.objects.link(spot)
+    spot.location = arm.matrix_world @ Vector(SIM_TO_BLENDER @ np.array([centre[0] + 1.0, centre[1], 0.0]))
+    context.view_layer.update()
+    context.scene.sim_athletics.target_object = spot
+    assert bpy.ops.sim_athletics.simulate_bake(behaviour="jump_to_target", params="plan_trials=0",
+                                               duration=3.5) == {"FINISHED"}
+    result = json.loads(arm[rig.RESULT_KEY])
+    assert result["params"]["target_x"] == pytest.approx(1.0, abs=1e-9)
+    assert result["params"]["target_y"] == pytest.approx(0.0, abs=1e-9)
+    assert result["outcome"] == "success" and result["metrics"]["landing_error"] <= 0.05

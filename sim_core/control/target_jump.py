@@ -1,0 +1,380 @@
+"""Jump to a target the animator places (Ooi 2015): a landing point, an air time, a wind-up time.
+
+*Path estimation* (Ooi §3.4.1): the COM leaves the ground at the take-off point and must come
+down at the touchdown point ``air_time`` later, so the take-off velocity is
+``v = d / T + (0, 0, g T / 2)``. A request whose take-off speed is beyond what the character's
+legs have ever given it (its strongest calibrated vertical leap) is refused before anything is
+simulated, with the numbers.
+
+*Planning by simulation*: Ooi moved the pelvis kinematically; here the leap's own controllers
+do all the work (balance crouch, proximal-to-distal thrust, landing, balance - the broad jump of
+leap.py), so the wind-up pose, lean, arm swing, lift-off hip angle and the landing's foot delta
+that land the feet on the target are found by searching over whole simulated jumps (the
+cross-entropy method, seeded from the request, so the same request always gives the same plan).
+Each trial is judged by what the simulation did: the middle of the feet at touchdown, the time
+the feet were off the ground, and whether the jump ended balanced. The final run repeats the
+best trial's settings - the same simulation - so its outcome is the plan's. Plans for the
+usual targets are kept as data (rigs/tuned/jump_targets_<character>.json, written by
+scripts/plan_jumps.py); any other request is planned when it is run (about a minute).
+"""
+from __future__ import annotations
+
+import dataclasses
+import json
+import math
+import sys
+from pathlib import Path
+
+import numpy as np
+
+from sim_core.analysis import feet_above_surface
+from sim_core.ballistics import GRAVITY
+from sim_core.control.behaviour import register
+from sim_core.control.measure import surface_under
+from sim_core.control.leap import AIRBORNE_HEIGHT, TUNED_DIR, Leap, leap_assess, load_mapping, vertical_key
+from sim_core.errors import ParameterError
+from sim_core.schema import Parameter, Schema
+
+# where the COM is, relative to the middle of the feet, at take-off and at touchdown of a broad
+# jump (measured on the man's calibrated 1.0 m jump; used only for the path estimate)
+TAKEOFF_COM = (0.30, 1.00)          # m ahead of the feet, m above them
+TOUCHDOWN_COM = (-0.25, 0.90)       # m ahead of the feet (behind: the feet land in front), m above
+WINDUP_OVERHEAD = 0.45              # s of the wind-up that are not the crouch: standing still, thrust
+LANDING_TOLERANCE = 0.05            # m: landing point within this of the target
+AIR_TIME_TOLERANCE = 0.05           # s
+PLAN_MARGIN = 0.6                   # the search aims inside this share of the tolerances
+
+# the leap's low-level settings the planner searches, with their ranges
+KNOBS = {
+    "crouch_height": (0.48, 0.80), "crouch_pitch": (0.0, 0.5), "com_offset": (0.0, 0.20),
+    "liftoff_hip": (-0.2, 1.0), "vertical_thrust": (0.0, 1.0), "arm_swing": (0.5, 3.0), "damping": (0.3, 1.0),
+    "foot_delta": (-0.15, 0.15), "swing_arms": (0.0, 1.0), "arm_flexion": (-1.0, 1.0),
+    "foot_lead_time": (0.15, 0.35),
+}
+LANDING_PRIOR = {"foot_delta": 0.0, "swing_arms": 0.0, "arm_flexion": 0.6, "foot_lead_time": 0.2}
+
+
+def search_prior(character: str, target) -> dict:
+    """Where the search starts without a stored plan nearby: the calibrated broad jump nearest the
+    distance (leap.py's mapping) on the ground; onto a box, a deep vertical leap leaning forward
+    with the hips extending at lift-off; with the landing's defaults."""
+    mapping = load_mapping(character)
+    if target[2] > 0:
+        prior = dict(BOX_PRIOR, **LANDING_PRIOR)
+    else:
+        broad = mapping["broad"]
+        distance = float(np.hypot(target[0], target[1]))
+        k = int(np.argmin(np.abs(np.asarray(broad["com_travel"]) - distance)))
+        prior = {"crouch_height": broad["crouch_height"][k], "crouch_pitch": broad["torso_pitch"][k],
+                 "com_offset": broad["com_offset"][k], "liftoff_hip": broad["liftoff_hip"][k],
+                 "arm_swing": broad["arm_swing"][k], "damping": 1.0, "vertical_thrust": 0.0, **LANDING_PRIOR}
+    return {n: min(max(float(prior[n]), KNOBS[n][0]), KNOBS[n][1]) for n in KNOBS}
+
+
+def takeoff_velocity(start: np.ndarray, end: np.ndarray, air_time: float) -> np.ndarray:
+    """Ooi §3.4.1: the velocity that carries a point from ``start`` to ``end`` in ``air_time``
+    under gravity."""
+    v = (np.asarray(end, dtype=float) - np.asarray(start, dtype=float)) / air_time
+    v[2] += 0.5 * GRAVITY * air_time
+    return v
+
+
+def path_estimate(target, air_time: float) -> np.ndarray:
+    """Take-off velocity of the COM for a landing of the middle of the feet at ``target`` (m,
+    relative to the middle of the feet at the start; z = height of the landing surface)."""
+    target = np.asarray(target, dtype=float)
+    distance = math.hypot(target[0], target[1])
+    ahead = target[:2] / distance if distance > 1e-9 else np.array([1.0, 0.0])
+    start = np.array([*(TAKEOFF_COM[0] * ahead), TAKEOFF_COM[1]])
+    end = np.array([*(target[:2] + TOUCHDOWN_COM[0] * ahead), target[2] + TOUCHDOWN_COM[1]])
+    return takeoff_velocity(start, end, air_time)
+
+
+def takeoff_capacity(character: str, key: str) -> float:
+    """The fastest take-off (m/s) the character's calibrated vertical leaps reach."""
+    rises = load_mapping(character).get(key, {}).get("com_rise", [])
+    return math.sqrt(2.0 * GRAVITY * max(rises)) if rises else 0.0
+
+
+BOX_PRIOR = {"crouch_height": 0.55, "crouch_pitch": 0.0, "com_offset": 0.12, "liftoff_hip": 0.8,
+             "arm_swing": 2.0, "damping": 0.3, "vertical_thrust": 1.0}    # where a box jump's search starts
+BOX_LENGTH, BOX_WIDTH = 0.6, 1.0    # m: a box under a raised target, centred on it
+
+
+def scene_for(character, target, world=None):
+    """The world of a jump: the requested one, plus a box under a raised target."""
+    from sim_core.character.model import World
+    from sim_core.character.spec import load_character
+    world = world or World()
+    if target[2] <= 0:
+        return world
+    if isinstance(character, str):
+        character = load_character(character)
+    centre = start_feet_centre(character)
+    box = (float(centre[0] + target[0]), float(centre[1] + target[1]), float(target[2]), BOX_LENGTH, BOX_WIDTH)
+    return dataclasses.replace(world, boxes=tuple(world.boxes) + (box,))
+
+
+def start_feet_centre(character) -> np.ndarray:
+    """Middle of the feet (x, y) of the standing start pose, in the simulation frame: the point
+    that targets are given from."""
+    points = [c["pos"] for body in ("FOOTR", "TOER", "FOOTL", "TOEL") for c in character.body(body)["contacts"]]
+    return np.mean(np.asarray(points, dtype=float)[:, :2], axis=0)
+
+
+def target_params(character, point) -> dict:
+    """The target parameters for a point (m) in the simulation frame of the character's start,
+    e.g. an object placed in a Blender scene."""
+    centre = start_feet_centre(character)
+    return {"target_x": float(point[0] - centre[0]), "target_y": float(point[1] - centre[1]),
+            "target_z": float(point[2])}
+
+
+def landing_measures(trajectory) -> dict:
+    """Read off a jump: the middle of the feet at the start and at touchdown, air time, wind-up
+    time (first move to lift-off), and the outcome."""
+    a = trajectory.arrays
+    feet = a["support_points"]
+    flying = feet_above_surface(trajectory).min(axis=1) > AIRBORNE_HEIGHT
+    outcome, metrics = leap_assess(trajectory)
+    start = feet[0, :, :2].mean(axis=0)
+    result = {"outcome": outcome, "air_time": 0.0, "landing": [float("nan")] * 2, "landing_height": float("nan"),
+              "windup_time": float("nan")}
+    if flying.any():
+        first = int(np.argmax(flying))
+        down = ~flying[first:]
+        touchdown = first + int(np.argmax(down)) if down.any() else len(flying) - 1
+        result["landing"] = (feet[touchdown, :, :2].mean(axis=0) - start).tolist()
+        result["landing_height"] = float(surface_under(feet[touchdown, :, :2].mean(axis=0),
+                                                       trajectory.meta.get("world", {}).get("boxes", ())))
+        result["windup_time"] = float(metrics["liftoff_time"])
+        result["air_time"] = float(a["time"][touchdown] - a["time"][first])
+    return result
+
+
+def trial_cost(measured: dict, target, air_time: float) -> float:
+    """Tolerances used: landing error and air-time error in units of their tolerances, plus a
+    fixed price for not ending balanced."""
+    landing = np.asarray(measured["landing"], dtype=float)
+    if not np.isfinite(landing).all():
+        return 1e3
+    error = float(np.linalg.norm(landing - np.asarray(target[:2], dtype=float)))
+    error += abs(measured.get("landing_height", 0.0) - float(target[2]))      # landed on the wrong surface
+    cost = error / LANDING_TOLERANCE + abs(measured["air_time"] - air_time) / AIR_TIME_TOLERANCE
+    return cost + (0.0 if measured["outcome"] == "success" else 20.0)
+
+
+def within_tolerance(measured: dict, target, air_time: float, margin: float = 1.0) -> bool:
+    landing = np.asarray(measured["landing"], dtype=float)
+    return (measured["outcome"] == "success" and np.isfinite(landing).all()
+            and float(np.linalg.norm(landing - np.asarray(target[:2], dtype=float))) <= LANDING_TOLERANCE * margin
+            and abs(measured["air_time"] - air_time) <= AIR_TIME_TOLERANCE * margin
+            and abs(measured.get("landing_height", 0.0) - float(target[2])) < 0.01)
+
+
+def leap_params(settings: dict, target, windup_time: float) -> dict:
+    """The leap's low-level parameters for these settings (the planner's trials run the leap; a
+    vertical-leap thrust when ``vertical_thrust``, else the broad jump's)."""
+    vertical = settings["vertical_thrust"] > 0.5
+    return {"low_level": 1, "distance": 0.0 if vertical else max(float(target[0]), 0.05),
+            "crouch_height": settings["crouch_height"], "crouch_pitch": settings["crouch_pitch"],
+            "com_offset": settings["com_offset"], "liftoff_hip_angle": settings["liftoff_hip"],
+            "arm_swing": settings["arm_swing"], "thrust_damping": settings["damping"],
+            "foot_delta": settings["foot_delta"], "crouch_time": crouch_time(windup_time),
+            **{"landing_" + k: v for k, v in landing_settings(settings).items()}}
+
+
+def landing_settings(settings: dict) -> dict:
+    """The landing's settings among the planner's (the leap passes them to its landing)."""
+    return {"swing_arms": float(settings["swing_arms"] > 0.5), "arm_flexion": settings["arm_flexion"],
+            "foot_lead_time": settings["foot_lead_time"]}
+
+
+def crouch_time(windup_time: float) -> float:
+    return max(windup_time - WINDUP_OVERHEAD, 0.3)
+
+
+def plan_jump(character: str, target, air_time: float, windup_time: float, strength="human",
+              trials: int = 120, population: int = 12, elite: int = 4, progress=None) -> dict:
+    """Search the leap's settings for a jump that lands the middle of the feet on ``target`` in
+    ``air_time`` and ends balanced. The search starts from the stored plan found nearest the
+    target (continuation: a longer jump starts from a shorter one), or from the calibrated broad
+    jump nearest the distance. Returns {"settings", "measured", "trials", "found"}."""
+    from sim_core.simulate import RunRequest, run
+
+    names = list(KNOBS)
+    low = np.array([KNOBS[n][0] for n in names])
+    high = np.array([KNOBS[n][1] for n in names])
+    prior = nearest_found_plan(character, target, strength) or search_prior(character, target)
+    prior = {n: prior.get(n, search_prior(character, target)[n]) for n in names}
+    mean = np.array([prior[n] for n in names])
+    std = 0.25 * (high - low)
+    rng = np.random.default_rng(_stable_seed(target, air_time, windup_time))
+    best = None
+    done = 0
+    duration = windup_time + air_time + 2.0
+    world = scene_for(character, target)
+    while done < trials:
+        batch = []
+        for k in range(min(population, trials - done)):
+            x = mean if (done == 0 and k == 0) else np.clip(mean + std * rng.standard_normal(len(names)), low, high)
+            settings = {n: float(v) for n, v in zip(names, x)}
+            trajectory = run(RunRequest("leap", character, params=leap_params(settings, target, windup_time),
+                                        duration=duration, strength=strength, world=world))
+            measured = landing_measures(trajectory)
+            cost = trial_cost(measured, target, air_time)
+            batch.append((cost, x, settings, measured))
+            if best is None or cost < best[0]:
+                best = (cost, x, settings, measured)
+            done += 1
+            if progress:
+                progress(done, trials, best[3])
+            if within_tolerance(best[3], target, air_time, PLAN_MARGIN):
+                break
+        if within_tolerance(best[3], target, air_time, PLAN_MARGIN):
+            break
+        batch.sort(key=lambda item: item[0])
+        chosen = np.array([item[1] for item in batch[:elite]])
+        mean = 0.5 * mean + 0.5 * chosen.mean(axis=0)
+        std = np.maximum(0.5 * std + 0.5 * chosen.std(axis=0), 0.02 * (high - low))
+    return {"settings": best[2], "measured": best[3], "trials": done,
+            "found": within_tolerance(best[3], target, air_time)}
+
+
+def _stable_seed(target, air_time: float, windup_time: float) -> int:
+    """A seed from the request's numbers (Python's hash of floats is stable, but be explicit)."""
+    values = [round(float(v) * 1000) for v in (*target, air_time, windup_time)]
+    seed = 17
+    for v in values:
+        seed = (seed * 1_000_003 + v) % (2 ** 31)
+    return seed
+
+
+def plans_path(character: str) -> Path:
+    return TUNED_DIR / f"jump_targets_{character}.json"
+
+
+def stored_plan(character: str, request: dict) -> dict | None:
+    path = plans_path(character)
+    if not path.exists():
+        return None
+    for plan in json.loads(path.read_text())["plans"]:
+        if all(abs(plan["request"][k] - request[k]) < 1e-6 for k in REQUEST_KEYS) \
+                and plan["request"].get("strength", "human") == request.get("strength", "human"):
+            return plan
+    return None
+
+
+REQUEST_KEYS = ("target_x", "target_y", "target_z", "air_time", "windup_time")
+
+
+def nearest_found_plan(character: str, target, strength="human") -> dict | None:
+    """Settings of the stored plan that found a jump onto the same height, nearest ``target``
+    (None if there is none)."""
+    path = plans_path(character)
+    plans = [p for p in json.loads(path.read_text())["plans"]
+             if p["found"] and p["request"].get("strength", "human") == strength
+             and abs(p["request"]["target_z"] - float(target[2])) < 1e-6] if path.exists() else []
+    if not plans:
+        return None
+    def distance(p):        # nearest; of two as near, the longer jump (shortening one is easier)
+        where = (p["request"]["target_x"], p["request"]["target_y"], p["request"]["target_z"])
+        return round(math.dist(where, tuple(float(v) for v in target)), 6), -math.hypot(*where[:2])
+    return dict(min(plans, key=distance)["settings"])
+
+
+@register
+class JumpToTarget(Leap):
+    name = "jump_to_target"
+    summary = ("Jump so that the feet land on a target point, with a given air time and wind-up time "
+               "(Ooi 2015), by the leap and landing controllers; the settings are planned by simulation.")
+    default_duration = 5.0
+    schema = Schema(
+        Parameter("target_x", "m", 1.0, -2.5, 2.5, "landing point of the middle of the feet, forward of "
+                  "the middle of the feet at the start"),
+        Parameter("target_y", "m", 0.0, -2.0, 2.0, "landing point, to the left (+) of the start"),
+        Parameter("target_z", "m", 0.0, -1.0, 1.0, "height of the surface landed on (0 = the ground)"),
+        Parameter("air_time", "s", 0.45, 0.05, 1.5, "time the feet are off the ground"),
+        Parameter("windup_time", "s", 1.25, 0.75, 3.0, "time from the first move to lift-off"),
+        Parameter("plan_trials", "count", 120, 0, 600,
+                  "simulated trial jumps the planner may run for a request that has no stored plan "
+                  "(0 = only stored plans)"),
+    )
+
+    def request(self) -> dict:
+        p = self.params
+        request = {k: float(p[k]) for k in REQUEST_KEYS}
+        request["strength"] = "human" if vertical_key(self.ctx) == "vertical" else "unlimited"
+        return request
+
+    @classmethod
+    def scene(cls, params, world, character=None):
+        return scene_for(character, (params["target_x"], params["target_y"], params["target_z"]), world)
+
+    def is_broad(self) -> bool:
+        return self.plan["settings"].get("vertical_thrust", 0.0) <= 0.5
+
+    def check_feasible(self) -> None:
+        p = self.params
+        name = self.ctx.character.name
+        target = np.array([p["target_x"], p["target_y"], p["target_z"]])
+        if p["target_z"] < 0.0:
+            raise ParameterError(f"parameter target_z={p['target_z']:g} m: jumping down (starting on a box) is "
+                                 f"not implemented yet; allowed range is [0, 1] m (0 = the ground, more = onto a box)")
+        if abs(p["target_y"]) > 1e-9:
+            raise ParameterError(f"parameter target_y={p['target_y']:g} m: sideways jumps are not implemented "
+                                 f"yet (the take-off pushes in the sagittal plane); allowed value is 0")
+        if p["target_x"] <= 0.0:
+            raise ParameterError(f"parameter target_x={p['target_x']:g} m: the jump goes forward; allowed "
+                                 f"range is (0, 2.5] m")
+        velocity = path_estimate(target, p["air_time"])
+        capacity = takeoff_capacity(name, vertical_key(self.ctx))
+        speed = float(np.linalg.norm(velocity))
+        if speed > capacity:
+            raise ParameterError(
+                f"target ({p['target_x']:g}, {p['target_y']:g}, {p['target_z']:g}) m in air_time={p['air_time']:g} s "
+                f"needs a take-off at {speed:.2f} m/s (path estimate: {velocity[0]:.2f} forward, "
+                f"{velocity[2]:.2f} up); the strongest take-off of {name} is {capacity:.2f} m/s - "
+                f"allow a longer or shorter air time, or a nearer target")
+        plan = stored_plan(name, self.request())
+        if plan is None:
+            if p["plan_trials"] < 1:
+                raise ParameterError(f"no stored plan for this jump of {name} and plan_trials=0; allowed range "
+                                     f"of plan_trials is [1, 600] to plan it now (scripts/plan_jumps.py stores plans)")
+            plan = plan_jump(self.ctx.character.name, target, p["air_time"], p["windup_time"], self.request()["strength"],
+                             trials=int(p["plan_trials"]), progress=_print_progress)
+        if not plan["found"]:
+            m = plan["measured"]
+            raise ParameterError(
+                f"no jump of {name} found that lands within {LANDING_TOLERANCE * 100:.0f} cm of "
+                f"({p['target_x']:g}, {p['target_y']:g}) m with air_time={p['air_time']:g} s "
+                f"(+-{AIR_TIME_TOLERANCE:g} s) and ends balanced, in {plan['trials']} simulated trials; the "
+                f"nearest landed at ({m['landing'][0]:.2f}, {m['landing'][1]:.2f}) m after {m['air_time']:.2f} s "
+                f"({m['outcome']})")
+        self.plan = plan
+
+    def settings(self) -> dict:
+        settings = {k: self.plan["settings"][k] for k in
+                    ("crouch_height", "crouch_pitch", "com_offset", "arm_swing", "damping", "liftoff_hip", "foot_delta")}
+        settings["crouch_time"] = crouch_time(self.params["windup_time"])
+        settings.update(landing_settings(self.plan["settings"]))
+        return settings
+
+    @classmethod
+    def assess(cls, trajectory):
+        outcome, metrics = leap_assess(trajectory)
+        measured = landing_measures(trajectory)
+        p = trajectory.meta["params"]
+        metrics["landing_x"], metrics["landing_y"] = measured["landing"]
+        metrics["landing_error"] = float(math.hypot(measured["landing"][0] - p["target_x"],
+                                                    measured["landing"][1] - p["target_y"]))
+        metrics["air_time_error"] = measured["air_time"] - p["air_time"]
+        metrics["windup_time"] = measured["windup_time"]
+        return outcome, metrics
+
+
+def _print_progress(done: int, total: int, best: dict) -> None:
+    if done % 12 == 0 or done == total:
+        print(f"planning the jump: {done}/{total} trials, nearest so far lands at "
+              f"({best['landing'][0]:.2f}, {best['landing'][1]:.2f}) m after {best['air_time']:.2f} s "
+              f"({best['outcome']})", file=sys.stderr, flush=True)
