@@ -27,7 +27,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 from sim_core.control.target_jump import (AIR_TIME_TOLERANCE, LANDING_TOLERANCE, REQUEST_KEYS,  # noqa: E402
-                                          plan_jump, plans_path)
+                                          plan_jump, plans_path, stored_plan)
 from sim_core.errors import ParameterError  # noqa: E402
 from sim_core.simulate import RunRequest, run  # noqa: E402
 
@@ -89,6 +89,9 @@ def report(characters) -> None:
                 trajectory = run(RunRequest("jump_to_target", character, params={**params, "plan_trials": 0}))
             except ParameterError as exc:
                 rows.append(f"| {character} | {label} | - | - | - | refused: {exc} |")
+                stored = stored_plan(character, {**params, "strength": "human"})
+                if stored is not None and not params["target_y"] and not params["target_z"]:
+                    points.append((character, params["target_x"], stored["measured"]["landing"][0], False))
                 continue
             m = trajectory.meta["metrics"]
             ok = (trajectory.meta["outcome"] == "success" and m["landing_error"] <= LANDING_TOLERANCE
@@ -134,9 +137,10 @@ def _plot(points) -> None:
             xs = [p[1] for p in points if p[0] == character and p[3] == ok]
             ys = [p[2] for p in points if p[0] == character and p[3] == ok]
             if xs:
-                ax.scatter(xs, ys, marker=marker, facecolors=None if ok else "none",
-                           edgecolors="C0" if character == "man" else "C1", color="C0" if character == "man" else "C1",
-                           label=f"{character}{'' if ok else ' (missed)'}")
+                colour = "C0" if character == "man" else "C1"
+                ax.scatter(xs, ys, marker=marker, s=90 if character == "man" else 40,
+                           facecolors=colour if ok else "none", edgecolors=colour,
+                           label=f"{character}" if ok else f"{character}: best trial found (refused)")
     ax.set_xlabel("commanded landing point, forward (m)")
     ax.set_ylabel("achieved landing point (m)")
     ax.set_title("Jump to a target (planned jumps)")

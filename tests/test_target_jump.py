@@ -55,13 +55,16 @@ def test_bad_requests_are_refused_before_simulating(params, words):
         assert word in str(refused.value)
 
 
-def _stored(character: str, x: float) -> dict | None:
+BOX_DISTANCE, BOX_AIR_TIME = 0.6, 0.6      # scripts/plan_jumps.py's box requests
+
+
+def _stored(character: str, x: float, z: float = 0.0, air_time: float = AIR_TIME) -> dict | None:
     path = plans_path(character)
     plans = json.loads(path.read_text())["plans"] if path.exists() else []
     for plan in plans:
         r = plan["request"]
-        if abs(r["target_x"] - x) < 1e-9 and r["target_y"] == 0 and r["target_z"] == 0 \
-                and abs(r["air_time"] - AIR_TIME) < 1e-9 and abs(r["windup_time"] - WINDUP_TIME) < 1e-9:
+        if abs(r["target_x"] - x) < 1e-9 and r["target_y"] == 0 and abs(r["target_z"] - z) < 1e-9 \
+                and abs(r["air_time"] - air_time) < 1e-9 and abs(r["windup_time"] - WINDUP_TIME) < 1e-9:
             return plan
     return None
 
@@ -84,3 +87,22 @@ def test_forward_jump_lands_on_the_target(character, x):
     assert abs(m["air_time_error"]) <= AIR_TIME_TOLERANCE
     # the run is the plan's trial: the same simulation
     assert m["landing_x"] == pytest.approx(plan["measured"]["landing"][0], abs=1e-9)
+
+
+@pytest.mark.parametrize("character", ["man", "woman"])
+@pytest.mark.parametrize("height", (0.5, 0.75))
+def test_jump_onto_a_box(character, height):
+    """A raised target puts a box under it; the jump must land on it, on target, and stay."""
+    plan = _stored(character, BOX_DISTANCE, height, BOX_AIR_TIME)
+    params = dict(target_x=BOX_DISTANCE, target_z=height, air_time=BOX_AIR_TIME, windup_time=WINDUP_TIME,
+                  plan_trials=0)
+    if plan is None or not plan["found"]:
+        with pytest.raises(ParameterError) as refused:                 # refused with the nearest trial
+            run(RunRequest("jump_to_target", character, params=params))
+        if plan is None:
+            pytest.xfail(f"{character} onto a {height} m box: not planned")
+        pytest.xfail(f"{character} onto a {height} m box: {refused.value}")
+    trajectory = run(RunRequest("jump_to_target", character, params=params))
+    m = trajectory.meta["metrics"]
+    assert trajectory.meta["world"]["boxes"], "the box is in the world"
+    assert trajectory.meta["outcome"] == "success" and m["landing_error"] <= LANDING_TOLERANCE

@@ -349,8 +349,8 @@ class JumpToTarget(Leap):
                 f"no jump of {name} found that lands within {LANDING_TOLERANCE * 100:.0f} cm of "
                 f"({p['target_x']:g}, {p['target_y']:g}) m with air_time={p['air_time']:g} s "
                 f"(+-{AIR_TIME_TOLERANCE:g} s) and ends balanced, in {plan['trials']} simulated trials; the "
-                f"nearest landed at ({m['landing'][0]:.2f}, {m['landing'][1]:.2f}) m after {m['air_time']:.2f} s "
-                f"({m['outcome']})")
+                f"nearest landed at ({m['landing'][0]:.2f}, {m['landing'][1]:.2f}) m{_surface(m, p['target_z'])} "
+                f"after {m['air_time']:.2f} s ({m['outcome']})")
         self.plan = plan
 
     def settings(self) -> dict:
@@ -371,6 +371,13 @@ class JumpToTarget(Leap):
         metrics["air_time_error"] = measured["air_time"] - p["air_time"]
         metrics["windup_time"] = measured["windup_time"]
         return outcome, metrics
+
+
+def _surface(measured: dict, target_z: float) -> str:
+    """' on the box' / ' on the ground' where a raised target makes it matter."""
+    if target_z <= 0:
+        return ""
+    return " on the box" if measured.get("landing_height", 0.0) > 0 else " on the ground"
 
 
 def _print_progress(done: int, total: int, best: dict) -> None:
