@@ -154,12 +154,15 @@ def main() -> None:
     parser.add_argument("--characters", nargs="+", default=["man", "woman"])
     parser.add_argument("--distances", nargs="*", type=float, default=list(FORWARD), help="forward targets (m)")
     parser.add_argument("--boxes", nargs="*", type=float, default=list(BOXES), help="box heights (m)")
+    parser.add_argument("--sideways", nargs="*", type=float, default=list(SIDEWAYS),
+                        help="sideways targets (m), each to the left and to the right")
     parser.add_argument("--trials", type=int, default=150, help="simulated trial jumps per target")
     parser.add_argument("--report-only", action="store_true")
     args = parser.parse_args()
     if not args.report_only:
-        plan(args.characters, [request_for(x) for x in args.distances] + [box_request(z) for z in args.boxes],
-             args.trials)
+        requests = [request_for(x) for x in args.distances] + [box_request(z) for z in args.boxes]
+        requests += [request_for(0.0, side * y) for y in args.sideways for side in (1, -1)]
+        plan(args.characters, requests, args.trials)
     report(args.characters)
 
 

@@ -218,14 +218,22 @@ class Balance(Behaviour):
     def com_ahead_of_support(self) -> float:
         """How far the COM (projected along gravity) is ahead of the centre of the feet, in the
         pelvis heading frame (m)."""
+        return self._com_from_support(0)
+
+    def com_left_of_support(self) -> float:
+        """How far the COM is to the left of the centre of the feet, in the heading frame (m)."""
+        return self._com_from_support(1)
+
+    def _com_from_support(self, axis: int) -> float:
         d = self.ctx.data
         m = d.xmat[self.pelvis]
         yaw = math.atan2(m[3], m[0])
         c, s = math.cos(yaw), math.sin(yaw)
+        along = (c, s) if axis == 0 else (-s, c)
         pts = self.support.supporting_points(d)
-        px = c * pts[:, 0] + s * pts[:, 1]
+        p = along[0] * pts[:, 0] + along[1] * pts[:, 1]
         com = d.subtree_com[self.pelvis]
-        return float(c * com[0] + s * com[1] - 0.5 * (px.min() + px.max()))
+        return float(along[0] * com[0] + along[1] * com[1] - 0.5 * (p.min() + p.max()))
 
     def posture_reached(self, t: float) -> bool:
         return t - self.t0 >= self.params["move_start"] + self.params["move_time"]

@@ -28,7 +28,7 @@ from sim_core.ballistics import GRAVITY
 from sim_core.control.balance import Balance, LegGeometry
 from sim_core.control.crouch import CrouchTable
 from sim_core.control.behaviour import Behaviour, ControlContext, register
-from sim_core.control.measure import SupportGeometry
+from sim_core.control.measure import SupportGeometry, roll_of
 from sim_core.control.sequencer import Sequence, Step
 from sim_core.control.servo import hermite_scalar
 from sim_core.errors import ParameterError
@@ -57,6 +57,7 @@ TOE_POINT_PER_SPEED = 0.25      # rad of toe-down foot pitch before touchdown pe
 TOE_POINT_FROM = 2.0            # speed above this (m/s): the forefoot lands first and the ankles give
 TOE_POINT_MAX = 0.5             # like a person landing from a height (0 = feet parallel to the ground)
 TOE_FADE_SPEED = (0.5, 1.5)     # m/s of horizontal COM speed over which the toe-down pitch fades out
+UP = np.array([0.0, 0.0, 1.0])
 LANDING_TORQUE_LIMIT = 1.0      # landing joints use at most this share of the human torque limits,
                                 # whatever the model's strength (stiffer legs land harder, not better)
 
@@ -160,6 +161,9 @@ class Landing(Behaviour):
                   "(0.3 s ~ the capture point of a standing human)"),
         Parameter("foot_kp", "rad/m", 8.0, 0.0, 20.0, "hip offset per metre of foot placement error (eq. 6.1)"),
         Parameter("foot_kv", "rad s/m", 0.5, 0.0, 5.0, "hip offset per m/s of foot speed relative to the COM (eq. 6.1)"),
+        Parameter("place_sideways", "bool", 0.0, 0.0, 1.0,
+                  "1 = the hips also place the feet sideways by the COM's sideways speed (a sideways "
+                  "jump); 0 = legs straight down sideways"),
         Parameter("swing_arms", "bool", 0.0, 0.0, 1.0,
                   "1 = swing the arms to arm_flexion in flight; 0 = hold them as the take-off left them"),
         Parameter("arm_flexion", "rad", 0.6, -1.0, 3.0,
@@ -188,6 +192,8 @@ class Landing(Behaviour):
         self.stage = "flight"
         self.calibrated_delta = None
         self.last_fx = [None, None]
+        self.last_fy = [None, None]
+        self.hip_x_range = [tuple(m.jnt_range[m.joint(f"hip_{side}_x").id]) for side in "rl"]
         self.touchdown_knee_speed = None
         self.com_height = float(ctx.data.subtree_com[self.pelvis][2])
         self.finished_at = None
@@ -216,6 +222,25 @@ class Landing(Behaviour):
     @property
     def finished(self) -> bool:
         return self.finished_at is not None
+
+    def _sideways_hip(self, k: int, d, com, vel, c: float, sn: float) -> float:
+        """Hip abduction target that puts foot ``k`` beside the COM where its sideways speed will be
+        used up (the foot lead time's worth of it), each foot keeping its hip's width: eq. 6.1's
+        servo across the body. Positive hip_x swings a foot to the left."""
+        p = self.params
+        lateral = lambda point: -sn * (point[0] - com[0]) + c * (point[1] - com[1])
+        hip, foot, pelvis = d.xpos[self.hips[k]], d.xpos[self.feet[k]], d.xpos[self.pelvis]
+        vy = -sn * vel[0] + c * vel[1]
+        wanted = lateral(hip) - lateral(pelvis) + vy * p["foot_lead_time"]
+        fy = lateral(foot)
+        rate = 0.0 if self.last_fy[k] is None else (fy - self.last_fy[k]) / self.ctx.control_dt
+        self.last_fy[k] = fy
+        length = max(float(np.linalg.norm(hip - foot)), 0.3)
+        reach = math.asin(max(-1.0, min(1.0, (wanted - lateral(hip)) / length)))
+        roll = roll_of(d.xmat[self.pelvis], UP)       # a rolled pelvis swings the legs sideways with it
+        target = reach - roll + p["foot_kp"] * (wanted - fy) - p["foot_kv"] * rate
+        low, high = self.hip_x_range[k]
+        return min(max(target, low), high)
 
     def update(self, t: float) -> None:
         d, s = self.ctx.data, self.ctx.servos
@@ -295,7 +320,7 @@ class Landing(Behaviour):
                 correction = -p["foot_kp"] * (wanted - fx) + p["foot_kv"] * fx_rate     # eq. 6.1
                 targets[j["knee"]] = p["knee_flexion"]
                 targets[j["hip_y"]] = thigh_pitch - pelvis_pitch + correction
-                targets[j["hip_x"]] = 0.0
+                targets[j["hip_x"]] = self._sideways_hip(k, d, com, vel, c, sn) if p["place_sideways"] else 0.0
             else:
                 # hips keep the pelvis upright while the knees give; the knees are pure dampers
                 # while absorbing, then hold where they stopped
@@ -445,12 +470,16 @@ class Leap(Sequence):
         Parameter("crouch_height", "m", 0.65, 0.4, 0.95, "pelvis height of the crouch (low_level only)"),
         Parameter("crouch_pitch", "rad", 1.0, 0.0, 1.8, "torso pitch in the crouch (low_level only)"),
         Parameter("com_offset", "m", 0.0, -0.05, 0.25, "COM forward of the feet in the crouch (low_level only)"),
+        Parameter("com_offset_y", "m", 0.0, -0.2, 0.2,
+                  "COM to the left of the feet in the crouch: a sideways jump (low_level only)"),
         Parameter("arm_swing", "rad", 1.0, 0.0, 3.2, "forward arm swing during the thrust (low_level only)"),
         Parameter("thrust_damping", "1", 1.0, 0.1, 1.0,
                   "share of the stiffened leg servos' damping kept in the thrust; less extends faster "
                   "(low_level only)"),
         Parameter("crouch_time", "s", 0.8, 0.3, 3.0, "time to sink into the crouch"),
         Parameter("foot_delta", "m", 0.0, -0.3, 0.3, "landing: foot servo delta (see the land behaviour)"),
+        Parameter("landing_place_sideways", "bool", 0.0, 0.0, 1.0,
+                  "landing: 1 = place the feet sideways by the COM's sideways speed (a sideways jump)"),
         Parameter("landing_swing_arms", "bool", 0.0, 0.0, 1.0,
                   "landing: 1 = swing the arms to landing_arm_flexion in flight (0 = hold them)"),
         Parameter("landing_arm_flexion", "rad", 0.6, -1.0, 3.0,
@@ -463,7 +492,7 @@ class Leap(Sequence):
     def settings(self) -> dict:
         p = self.params
         if p["low_level"]:
-            settings = {k: p[k] for k in ("crouch_height", "crouch_pitch", "com_offset", "arm_swing",
+            settings = {k: p[k] for k in ("crouch_height", "crouch_pitch", "com_offset", "com_offset_y", "arm_swing",
                                           "thrust_damping")}
             settings["damping"] = settings.pop("thrust_damping")
             settings["liftoff_hip"] = p["liftoff_hip_angle"]
@@ -534,7 +563,8 @@ class Leap(Sequence):
 
         def crouch(t):
             return Balance(schema.validate(dict(pelvis_height=cfg["crouch_height"], torso_pitch=cfg["crouch_pitch"],
-                                                com_offset_x=cfg["com_offset"], move_start=0.2,
+                                                com_offset_x=cfg["com_offset"],
+                                                com_offset_y=cfg.get("com_offset_y", 0.0), move_start=0.2,
                                                 move_time=cfg["crouch_time"] if "crouch_time" in cfg else p["crouch_time"], hold_time=0.0,
                                                 return_to_stand=0)), ctx)
 
@@ -542,6 +572,10 @@ class Leap(Sequence):
             if broad:
                 # broad jump: thrust once the COM, leaning forward, has left the middle of the
                 # feet by the requested offset (Wooten §4.2: it would fall out of the support next)
+                sideways = cfg.get("com_offset_y", 0.0)
+                if sideways:        # a sideways jump: thrust once the COM has left the feet sideways
+                    return b.posture_reached(t) or b.com_left_of_support() * math.copysign(1.0, sideways) > \
+                        BROAD_TRIGGER * abs(sideways)
                 return b.posture_reached(t) or b.com_ahead_of_support() > BROAD_TRIGGER * cfg["com_offset"]
             return b.posture_reached(t - 0.15)
 
@@ -554,7 +588,7 @@ class Leap(Sequence):
             # the calibrated leap's own correction of the landing's foot servo delta, plus the user's
             delta = min(max(p.get("foot_delta", 0.0) + cfg.get("foot_delta", 0.0), -0.3), 0.3)
             landing = {k: cfg.get(k, p.get("landing_" + k, Landing.schema.defaults()[k]))
-                       for k in ("swing_arms", "arm_flexion", "foot_lead_time")}
+                       for k in ("swing_arms", "arm_flexion", "foot_lead_time", "place_sideways")}
             return Landing(Landing.schema.validate(dict(foot_delta=delta, **landing)), ctx)
 
         def stand(t):

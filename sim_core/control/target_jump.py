@@ -51,6 +51,9 @@ KNOBS = {
     "foot_delta": (-0.15, 0.15), "swing_arms": (0.0, 1.0), "arm_flexion": (-1.0, 1.0),
     "foot_lead_time": (0.15, 0.35),
 }
+SIDEWAYS_KNOBS = {"com_offset_y": (-0.2, 0.2)}      # searched only for a target off to the side
+SIDEWAYS_PRIOR = {"crouch_height": 0.6, "crouch_pitch": 0.0, "com_offset": 0.0, "liftoff_hip": 0.6,
+                  "arm_swing": 1.0, "damping": 0.3, "vertical_thrust": 1.0, "foot_lead_time": 0.3}
 LANDING_PRIOR = {"foot_delta": 0.0, "swing_arms": 0.0, "arm_flexion": 0.6, "foot_lead_time": 0.2}
 
 
@@ -59,7 +62,9 @@ def search_prior(character: str, target) -> dict:
     distance (leap.py's mapping) on the ground; onto a box, a deep vertical leap leaning forward
     with the hips extending at lift-off; with the landing's defaults."""
     mapping = load_mapping(character)
-    if target[2] > 0:
+    if abs(target[1]) > 1e-9:
+        prior = {**LANDING_PRIOR, **SIDEWAYS_PRIOR, "com_offset_y": math.copysign(0.17, target[1])}
+    elif target[2] > 0:
         prior = dict(BOX_PRIOR, **LANDING_PRIOR)
     else:
         broad = mapping["broad"]
@@ -68,7 +73,13 @@ def search_prior(character: str, target) -> dict:
         prior = {"crouch_height": broad["crouch_height"][k], "crouch_pitch": broad["torso_pitch"][k],
                  "com_offset": broad["com_offset"][k], "liftoff_hip": broad["liftoff_hip"][k],
                  "arm_swing": broad["arm_swing"][k], "damping": 1.0, "vertical_thrust": 0.0, **LANDING_PRIOR}
-    return {n: min(max(float(prior[n]), KNOBS[n][0]), KNOBS[n][1]) for n in KNOBS}
+    knobs = knobs_for(target)
+    return {n: min(max(float(prior[n]), knobs[n][0]), knobs[n][1]) for n in knobs}
+
+
+def knobs_for(target) -> dict:
+    """The settings searched for this target (sideways ones only for a target off to the side)."""
+    return {**KNOBS, **SIDEWAYS_KNOBS} if abs(float(target[1])) > 1e-9 else dict(KNOBS)
 
 
 def takeoff_velocity(start: np.ndarray, end: np.ndarray, air_time: float) -> np.ndarray:
@@ -178,7 +189,8 @@ def leap_params(settings: dict, target, windup_time: float) -> dict:
     vertical = settings["vertical_thrust"] > 0.5
     return {"low_level": 1, "distance": 0.0 if vertical else max(float(target[0]), 0.05),
             "crouch_height": settings["crouch_height"], "crouch_pitch": settings["crouch_pitch"],
-            "com_offset": settings["com_offset"], "liftoff_hip_angle": settings["liftoff_hip"],
+            "com_offset": settings["com_offset"], "com_offset_y": settings.get("com_offset_y", 0.0),
+            "liftoff_hip_angle": settings["liftoff_hip"],
             "arm_swing": settings["arm_swing"], "thrust_damping": settings["damping"],
             "foot_delta": settings["foot_delta"], "crouch_time": crouch_time(windup_time),
             **{"landing_" + k: v for k, v in landing_settings(settings).items()}}
@@ -187,7 +199,8 @@ def leap_params(settings: dict, target, windup_time: float) -> dict:
 def landing_settings(settings: dict) -> dict:
     """The landing's settings among the planner's (the leap passes them to its landing)."""
     return {"swing_arms": float(settings["swing_arms"] > 0.5), "arm_flexion": settings["arm_flexion"],
-            "foot_lead_time": settings["foot_lead_time"]}
+            "foot_lead_time": settings["foot_lead_time"],
+            "place_sideways": float(abs(settings.get("com_offset_y", 0.0)) > 0.0)}
 
 
 def crouch_time(windup_time: float) -> float:
@@ -202,9 +215,10 @@ def plan_jump(character: str, target, air_time: float, windup_time: float, stren
     jump nearest the distance. Returns {"settings", "measured", "trials", "found"}."""
     from sim_core.simulate import RunRequest, run
 
-    names = list(KNOBS)
-    low = np.array([KNOBS[n][0] for n in names])
-    high = np.array([KNOBS[n][1] for n in names])
+    knobs = knobs_for(target)
+    names = list(knobs)
+    low = np.array([knobs[n][0] for n in names])
+    high = np.array([knobs[n][1] for n in names])
     prior = nearest_found_plan(character, target, strength) or search_prior(character, target)
     prior = {n: prior.get(n, search_prior(character, target)[n]) for n in names}
     mean = np.array([prior[n] for n in names])
@@ -268,13 +282,18 @@ def stored_plan(character: str, request: dict) -> dict | None:
 REQUEST_KEYS = ("target_x", "target_y", "target_z", "air_time", "windup_time")
 
 
+def _side(y: float) -> int:
+    return 0 if abs(y) < 1e-9 else (1 if y > 0 else -1)
+
+
 def nearest_found_plan(character: str, target, strength="human") -> dict | None:
-    """Settings of the stored plan that found a jump onto the same height, nearest ``target``
-    (None if there is none)."""
+    """Settings of the stored plan that found a jump onto the same height and to the same side,
+    nearest ``target`` (None if there is none)."""
     path = plans_path(character)
     plans = [p for p in json.loads(path.read_text())["plans"]
              if p["found"] and p["request"].get("strength", "human") == strength
-             and abs(p["request"]["target_z"] - float(target[2])) < 1e-6] if path.exists() else []
+             and abs(p["request"]["target_z"] - float(target[2])) < 1e-6
+             and _side(p["request"]["target_y"]) == _side(float(target[1]))] if path.exists() else []
     if not plans:
         return None
     def distance(p):        # nearest; of two as near, the longer jump (shortening one is easier)
@@ -321,12 +340,10 @@ class JumpToTarget(Leap):
         if p["target_z"] < 0.0:
             raise ParameterError(f"parameter target_z={p['target_z']:g} m: jumping down (starting on a box) is "
                                  f"not implemented yet; allowed range is [0, 1] m (0 = the ground, more = onto a box)")
-        if abs(p["target_y"]) > 1e-9:
-            raise ParameterError(f"parameter target_y={p['target_y']:g} m: sideways jumps are not implemented "
-                                 f"yet (the take-off pushes in the sagittal plane); allowed value is 0")
-        if p["target_x"] <= 0.0:
-            raise ParameterError(f"parameter target_x={p['target_x']:g} m: the jump goes forward; allowed "
-                                 f"range is (0, 2.5] m")
+        if p["target_x"] < 0.0 or (p["target_x"] == 0.0 and p["target_y"] == 0.0):
+            raise ParameterError(f"parameter target_x={p['target_x']:g} m: the jump goes forward or sideways, "
+                                 f"not back or on the spot; allowed range is [0, 2.5] m, with target_x or "
+                                 f"target_y not 0")
         velocity = path_estimate(target, p["air_time"])
         capacity = takeoff_capacity(name, vertical_key(self.ctx))
         speed = float(np.linalg.norm(velocity))
@@ -356,6 +373,7 @@ class JumpToTarget(Leap):
     def settings(self) -> dict:
         settings = {k: self.plan["settings"][k] for k in
                     ("crouch_height", "crouch_pitch", "com_offset", "arm_swing", "damping", "liftoff_hip", "foot_delta")}
+        settings["com_offset_y"] = self.plan["settings"].get("com_offset_y", 0.0)
         settings["crouch_time"] = crouch_time(self.params["windup_time"])
         settings.update(landing_settings(self.plan["settings"]))
         return settings
