@@ -114,6 +114,10 @@ within {AIR_TIME_TOLERANCE} s, ending balanced.
 
 ![commanded vs achieved landing point](jump_to_target.png)
 
+![the man's 1.3 m jump to a target, 1.0-2.1 s: crouch, thrust, flight, landing, standing up](jump_to_target_filmstrip.png)
+
+(`python3 scripts/filmstrip.py jump_to_target --set target_x=1.3 --set plan_trials=0 --duration 3 --start 1.0 --end 2.1 --out docs/jump_to_target_filmstrip.png`)
+
 | character | target | landing (x, y) m | error cm | air time s | outcome |
 | --- | --- | --- | --- | --- | --- |
 """ + "\n".join(rows) + "\n"
