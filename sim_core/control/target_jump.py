@@ -7,15 +7,18 @@ legs have ever given it (its strongest calibrated vertical leap) is refused befo
 simulated, with the numbers.
 
 *Planning by simulation*: Ooi moved the pelvis kinematically; here the leap's own controllers
-do all the work (balance crouch, proximal-to-distal thrust, landing, balance - the broad jump of
-leap.py), so the wind-up pose, lean, arm swing, lift-off hip angle and the landing's foot delta
-that land the feet on the target are found by searching over whole simulated jumps (the
-cross-entropy method, seeded from the request, so the same request always gives the same plan).
+do all the work (balance crouch, proximal-to-distal thrust, landing, balance - the leap of
+leap.py, with the broad jump's or the vertical leap's thrust), so the wind-up pose, the lean
+(forward or sideways), arm swing, lift-off hip angle and the landing's foot delta, foot lead and
+arm swing in flight that land the feet on the target are found by searching over whole
+simulated jumps (the cross-entropy method, seeded from the request, so the same request always
+gives the same plan; it starts from the stored plan found nearest the target, or a prior).
 Each trial is judged by what the simulation did: the middle of the feet at touchdown, the time
 the feet were off the ground, and whether the jump ended balanced. The final run repeats the
 best trial's settings - the same simulation - so its outcome is the plan's. Plans for the
 usual targets are kept as data (rigs/tuned/jump_targets_<character>.json, written by
-scripts/plan_jumps.py); any other request is planned when it is run (about a minute).
+scripts/plan_jumps.py); any other request is planned when it is run (``plan_trials`` trials,
+about half a second each). A raised target gets a box under it (``scene_for``).
 """
 from __future__ import annotations
 
@@ -54,6 +57,8 @@ KNOBS = {
 SIDEWAYS_KNOBS = {"com_offset_y": (-0.2, 0.2)}      # searched only for a target off to the side
 SIDEWAYS_PRIOR = {"crouch_height": 0.6, "crouch_pitch": 0.0, "com_offset": 0.0, "liftoff_hip": 0.6,
                   "arm_swing": 1.0, "damping": 0.3, "vertical_thrust": 1.0, "foot_lead_time": 0.3}
+BOX_PRIOR = {"crouch_height": 0.55, "crouch_pitch": 0.0, "com_offset": 0.12, "liftoff_hip": 0.8,
+             "arm_swing": 2.0, "damping": 0.3, "vertical_thrust": 1.0}    # where a box jump's search starts
 LANDING_PRIOR = {"foot_delta": 0.0, "swing_arms": 0.0, "arm_flexion": 0.6, "foot_lead_time": 0.2}
 
 
@@ -107,8 +112,6 @@ def takeoff_capacity(character: str, key: str) -> float:
     return math.sqrt(2.0 * GRAVITY * max(rises)) if rises else 0.0
 
 
-BOX_PRIOR = {"crouch_height": 0.55, "crouch_pitch": 0.0, "com_offset": 0.12, "liftoff_hip": 0.8,
-             "arm_swing": 2.0, "damping": 0.3, "vertical_thrust": 1.0}    # where a box jump's search starts
 BOX_LENGTH, BOX_WIDTH = 0.6, 1.0    # m: a box under a raised target, centred on it
 
 
