@@ -52,7 +52,10 @@ import numpy as np
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
-from sim_core.control.running import TABLE_NAMES, TUNED_DIR, TUNED_NAMES, Running, SpeedTable  # noqa: E402
+from sim_core.control.running import (SCHEDULED_CONSTANTS, TABLE_NAMES, TUNED_DIR, TUNED_NAMES, Running,  # noqa: E402
+                                      SpeedTable)
+
+COLUMNS = TABLE_NAMES + tuple(SCHEDULED_CONSTANTS)     # what a row of the table can hold
 
 W_FALL, W_SPEED, W_HEAD, W_ATT, W_GAIT = 10.0, 4.0, 0.05, 2.0, 2.0
 GAIT_FROM = 4.5                 # m/s: the gait term applies at and above this speed
@@ -106,8 +109,9 @@ class Evaluator:
     row replaced (the runner accelerates through the lower rows), i.e. exactly what would be
     written."""
 
-    def __init__(self, pool, table, names, speed, duration, character, strength):
+    def __init__(self, pool, table, names, speed, duration, character, strength, leans=(0.35, 0.5)):
         self.pool, self.table, self.names, self.speed, self.duration = pool, table, names, speed, duration
+        self.leans = tuple(leans)
         self.character, self.strength = character, strength
         self.history: list[tuple[list[float], float]] = []
 
@@ -115,8 +119,7 @@ class Evaluator:
         candidate = self.table.with_row(self.speed, dict(zip(self.names, map(float, x))))
         table = {"speeds": candidate.speeds, "values": candidate.values}
         v = self.speed
-        jobs = [(table, v, 0.35, self.duration, self.character, self.strength),
-                (table, v, 0.5, self.duration, self.character, self.strength)]
+        jobs = [(table, v, lean, self.duration, self.character, self.strength) for lean in self.leans]
         terms = self.pool.map(scenario, jobs)
         score = evaluation(terms, self.duration)
         self.history.append((list(map(float, x)), score))
@@ -126,7 +129,8 @@ class Evaluator:
 
 
 def bounds(names=TUNED_NAMES) -> list[tuple[float, float]]:
-    return [(Running.schema.by_name[n].minimum, Running.schema.by_name[n].maximum) for n in names]
+    return [SCHEDULED_CONSTANTS[n] if n in SCHEDULED_CONSTANTS
+            else (Running.schema.by_name[n].minimum, Running.schema.by_name[n].maximum) for n in names]
 
 
 def anneal(evaluate, x0, deadline, max_evaluations, seed):
@@ -265,9 +269,12 @@ def main(argv=None) -> int:
     ap.add_argument("--max-evaluations", type=int, default=300, help="per speed")
     ap.add_argument("--method", choices=("anneal", "cma"), default="anneal")
     ap.add_argument("--workers", type=int, default=2)
-    ap.add_argument("--names", nargs="+", default=list(TUNED_NAMES), choices=list(TABLE_NAMES),
-                    help="parameters searched (default the five of Hodgins & Pollard; the table has three more)")
+    ap.add_argument("--names", nargs="+", default=list(TUNED_NAMES), choices=list(COLUMNS),
+                    help="parameters searched (default the five of Hodgins & Pollard; the table has three more, "
+                         "and the scheduled constants of the stance and swing laws)")
     ap.add_argument("--seed", type=int, default=1)
+    ap.add_argument("--leans", type=float, nargs="+", default=[0.35, 0.5],
+                    help="start leans (s) of the runs that each evaluation averages (more runs: a sturdier row)")
     ap.add_argument("--evaluate", action="store_true", help="only score the current table")
     ap.add_argument("--steering", action="store_true",
                     help="search the steering constants on a 90-degree turn and a figure eight (CMA-ES; prints them)")
@@ -287,7 +294,7 @@ def main(argv=None) -> int:
     with Pool(args.workers) as pool:
         for k, speed in enumerate(args.speeds):
             x0 = [table.at(n, speed) for n in args.names]
-            evaluate = Evaluator(pool, table, args.names, speed, args.duration, args.character, strength)
+            evaluate = Evaluator(pool, table, args.names, speed, args.duration, args.character, strength, args.leans)
             if args.evaluate:
                 print(f"{speed} m/s: evaluation {evaluate(x0):.4f} at {dict(zip(args.names, x0))}")
                 continue
@@ -310,14 +317,14 @@ def main(argv=None) -> int:
             print("no improvement on the current table; nothing written")
         return 0
     speeds = table.speeds
-    values = {n: [round(table.at(n, v), 4) for v in speeds] for n in TABLE_NAMES}
+    values = {n: [round(table.at(n, v), 4) for v in speeds] for n in COLUMNS}
     elapsed = time.monotonic() - started
     write_atomically(path, {
         "behaviour": "running", "character": args.character, "speeds": speeds, "parameters": values,
         "evaluation": {"weights": {"fall": W_FALL, "speed": W_SPEED, "head_acceleration": W_HEAD,
                                    "attitude_variation": W_ATT, "gait_fig12": W_GAIT},
                        "gait_term_from_m_s": GAIT_FROM,
-                       "runs": "two per speed from a stand (lean 0.35 s and 0.5 s)",
+                       "runs": f"{len(args.leans)} per speed from a stand (lean " + ", ".join(f"{x:g}" for x in args.leans) + " s)",
                        "duration_s": args.duration, "strength": args.strength, "per_speed": per_speed},
         "search": {"method": args.method, "minutes": round(elapsed / 60, 2), "seed": args.seed},
         "command": "python3 scripts/tune_running.py " + " ".join(argv if argv is not None else sys.argv[1:]),

@@ -52,6 +52,16 @@ from sim_core.schema import Parameter, Schema
 TUNED_DIR = Path(__file__).resolve().parents[2] / "rigs" / "tuned"
 TUNED_NAMES = ("ground_speed_matching", "stance_pitch", "thrust_time", "ankle_extension", "knee_extension")
 TABLE_NAMES = TUNED_NAMES + ("speed_gain", "touchdown_leg", "idle_knee")
+# constants of the stance and swing laws that the table may also schedule over the speed (not user
+# parameters: the searches of scripts/tune_running.py set them per row); name: (low, high) for the search
+SCHEDULED_CONSTANTS = {
+    "thrust_damping": (0.3, 1.0),      # share of the knee's and ankle's default damping during the thrust
+    "unloading_after": (0.25, 0.7),    # share of the expected stance after the thrust start when the leg unloads
+    "place_back": (0.05, 0.3),         # m: the foot lands this much closer to the hip than eq. 1 says
+    "swing_fold": (0.0, 2.0),          # knee flexion per radian the swinging thigh lags its touchdown angle
+    "yaw_first": (0.0, 1.0),           # share of the roll torque given up to keep the hip's rotation axis in range
+    "yaw_gain": (0.5, 1.5),            # scale of the stance hip's yaw servo gains
+}
 
 # states of the active leg (Hodgins 1995 Fig. 3)
 FLIGHT, LOADING, HEEL, HEEL_TOE, TOE, UNLOADING, START = range(7)
@@ -69,7 +79,9 @@ TUNED = -1.0                # the value of a tuned parameter that means "as tune
 # fallback design values (the table in rigs/tuned/running_<character>.json overrides them)
 FALLBACK_TABLE = {"ground_speed_matching": 0.010, "stance_pitch": 0.100, "thrust_time": 0.289,
                   "ankle_extension": 0.658, "knee_extension": 0.307, "speed_gain": 0.073,
-                  "touchdown_leg": 0.902, "idle_knee": 1.474}
+                  "touchdown_leg": 0.902, "idle_knee": 1.474,
+                  "thrust_damping": 1.0, "unloading_after": 0.556, "place_back": 0.187, "swing_fold": 0.0,
+                  "yaw_first": 0.0, "yaw_gain": 1.0}
 
 
 class SpeedTable:
@@ -199,7 +211,8 @@ class Running(Behaviour):
         self.kv0 = s.default_kv.copy()
         self.ratio = (s.default_kv / s.default_kp).tolist()
         self.table = SpeedTable.load(ch.name)
-        self.scheduled = [n for n in self.table.values if n in params and params[n] == TUNED]
+        self.scheduled = [n for n in self.table.values
+                          if (n in params and params[n] == TUNED) or n in SCHEDULED_CONSTANTS]
         self.p = dict(params)
         self._schedule(0.0)
         self.path = self._path()
@@ -330,7 +343,8 @@ class Running(Behaviour):
             self._set_gains(a, {"knee": (STANCE_KNEE_GAIN, STANCE_KNEE_GAIN), "ay": (1.0, 1.0)})
         elif state == TOE:
             self.t_thrust = t
-            self._set_gains(a, {"knee": (1.0, 1.0), "ay": (1.0, 1.0)})
+            damping = self.p["thrust_damping"]       # the servos' damping would eat the push's power
+            self._set_gains(a, {"knee": (1.0, damping), "ay": (1.0, damping)})
 
     def _liftoff(self, t: float, q: list, targets: list) -> None:
         """The active leg has left the ground: it becomes the idle leg, the other the active one."""
@@ -415,7 +429,7 @@ class Running(Behaviour):
                 self._enter(t, HEEL_TOE)
         elif state == FLIGHT:
             if touch[a] and t - self.t_liftoff >= MIN_FLIGHT:
-                self._schedule(speed_now)
+                self._schedule(speed_now + TABLE_LEAD * (speed_cmd - speed_now))
                 # a slow integral of the speed error trims the placement (steady-state speed)
                 trim = self.speed_trim + SPEED_TRIM_GAIN * (speed_cmd - speed_now)
                 self.speed_trim = max(-SPEED_TRIM_MAX, min(SPEED_TRIM_MAX, trim))
@@ -442,7 +456,7 @@ class Running(Behaviour):
         elif state == TOE:
             if not touch[a]:
                 self._liftoff(t, q, targets)
-            elif not heel[a] and t - self.t_thrust >= UNLOADING_AFTER * self.stance_time:
+            elif not heel[a] and t - self.t_thrust >= p["unloading_after"] * self.stance_time:
                 self._enter(t, UNLOADING)
         elif state == UNLOADING:
             if not touch[a]:
@@ -477,7 +491,7 @@ class Running(Behaviour):
             # its y axis, yaw about the vertical
             t_roll = -(ROLL_KP * e_roll + ROLL_KD * roll_rate)
             t_pitch = -(PITCH_KP * e_pitch + PITCH_KD * pitch_rate)
-            t_yaw = -(YAW_KP * e_yaw + YAW_KD * (wz - self.heading_rate))     # damped relative to the turn
+            t_yaw = -p["yaw_gain"] * (YAW_KP * e_yaw + YAW_KD * (wz - self.heading_rate))     # damped relative to the turn
             bx = t_roll * m[0] + t_pitch * m[1]
             by = t_roll * m[3] + t_pitch * m[4]
             bz = t_roll * m[6] + t_pitch * m[7] + t_yaw
@@ -492,6 +506,8 @@ class Running(Behaviour):
             by = -by - (ia[0][1] * fi[0] + ia[1][1] * fi[1] + ia[2][1] * fi[2])
             bz = -bz - (ia[0][2] * fi[0] + ia[1][2] * fi[1] + ia[2][2] * fi[2])
             taus = _solve3(sa[0], sa[1], sa[2], bx, by, bz)
+            if p["yaw_first"] > 0:
+                taus = self._yaw_first(taus, sa, m, bx, by, bz, share, ja, p["yaw_first"])
             for key, tau in zip(("hy", "hx", "hz"), taus):
                 j_ = ja[key]
                 tau *= share
@@ -545,6 +561,23 @@ class Running(Behaviour):
         self.previous_goal = {j_: targets[j_] for j_ in tracked}
         servos.hold(np.array(command), t)
 
+    def _yaw_first(self, taus, sa, m, bx, by, bz, share, ja, given_up):
+        """The hip's rotation axis runs along the thigh, so with the thigh swept forward or back it
+        carries part of the roll torque too; when that would take it past its torque limit, the
+        roll demand is reduced (toward zero, never reversed) so that the yaw is still held."""
+        limit = self.ctx.model.actuator_forcerange[ja["hz"], 1] * HIP_YAW_HEADROOM
+        hz = taus[2] * share
+        if abs(hz) <= limit or share <= 0.0:
+            return taus
+        rx, ry, rz = m[0], m[3], m[6]                   # the pelvis's roll axis (world)
+        per_roll = _solve3(sa[0], sa[1], sa[2], rx, ry, rz)
+        if abs(per_roll[2]) < 1e-6:
+            return taus
+        alpha = (taus[2] - math.copysign(limit, hz) / share) / per_roll[2]
+        roll_demand = bx * rx + by * ry + bz * rz
+        alpha = given_up * max(min(0.0, roll_demand), min(max(0.0, roll_demand), alpha))
+        return tuple(tau - alpha * r for tau, r in zip(taus, per_roll))
+
     def _place_foot(self, t, p, a, ja, m, pitch, yaw, heading, ch, sh, vx, vy, vz, vxd, vyd):
         """Flight: hip, knee and ankle targets that put the heel at the touchdown point of
         eqs. 1-2 (plus the ground-speed-matching swing), by leg inverse kinematics."""
@@ -553,10 +586,10 @@ class Running(Behaviour):
         hip = self.ctx.data.xpos[self.hip_body[a]].tolist()
         ts = self.stance_time
         lf = leg.foot_length
-        # eqs. 1-2; departure: the foot lands PLACE_BACK closer to the hip than eq. 1 says (our
+        # eqs. 1-2; departure: the foot lands place_back closer to the hip than eq. 1 says (our
         # stance is not symmetric about mid-stance: the hip passes over the foot early), less
         # when running slowly, where the stance sweep t_s xdot is short
-        back = PLACE_BACK * min(1.0, math.hypot(vx, vy) / PLACE_BACK_SPEED) + self.speed_trim
+        back = p["place_back"] * min(1.0, math.hypot(vx, vy) / PLACE_BACK_SPEED) + self.speed_trim
         x_hh = 0.5 * (ts * vx - ch * lf) + p["speed_gain"] * (vx - vxd) - back * ch          # eq. 1
         y_hh = 0.5 * (ts * vy - sh * lf) + p["speed_gain"] * (vy - vyd) - back * sh          # eq. 2
         # a sideways drift (the sway of each step averaged out over about a stride) is corrected
@@ -591,6 +624,14 @@ class Running(Behaviour):
         hz_goal = max(-HIP_YAW_LIMIT, min(HIP_YAW_LIMIT, _wrap(heading - yaw)))
         # the foot pitched toe-up so that the heel lands first (foot pitch = pelvis pitch + hip + knee + ankle)
         ankle_goal = -TOUCHDOWN_TOE_UP - pitch - hy_goal - knee_goal
+        if p["swing_fold"] > 0:
+            # a thigh still behind its touchdown angle keeps its knee folded (the foot clears the
+            # ground until the leg has swung forward), instead of reaching down behind the body
+            lag = self.ctx.servos.angles()[ja["hy"]] - hy_goal
+            if lag > 0:
+                fold = min(SWING_FOLD_MAX, p["swing_fold"] * lag)
+                knee_goal += fold
+                ankle_goal -= fold
         goals = (hy_goal, hx_goal, hz_goal, knee_goal, ankle_goal)
         blend = hermite_scalar((t - self.t_liftoff) / SWAP_BLEND) if self.blend_from else 1.0
         for k, key in enumerate(BLENDED):
@@ -687,20 +728,20 @@ YAW_KP, YAW_KD = 1109.0, 139.0
 ATTITUDE_ONSET = 0.02         # s: the attitude torque fades in after touchdown, out in unloading
 UNLOAD_KNEE = 0.836             # rad: knee flexion the unloading leg folds to (0 = it does not)
 UNLOAD_RAMP = 0.06
-UNLOADING_AFTER = 0.556         # share of the expected stance after thrust when the leg unloads
 THRUST_RAMP = 0.05            # s: the thrust targets move in over this time
 TOUCHDOWN_TOE_UP = 0.14       # rad: foot pitched toe-up at touchdown, heel first
 FOOT_INWARD = 0.00373            # m: the foot lands this far inside the hip, toward the centre line
 SPEED_TRIM_GAIN = 0.0101       # m of placement trim per m/s of speed error, per step
 SPEED_TRIM_MAX = 0.15
-PLACE_BACK = 0.187
-PLACE_BACK_SPEED = 3.0       # m/s above which the full PLACE_BACK applies
+PLACE_BACK_SPEED = 3.0       # m/s above which the full place_back applies
 DRIFT_FILTER = 2.0            # 1/s: low-pass of the sideways speed (about a stride)
 TURN_PLACE_GAIN = 1.0         # m: outward placement per g of centripetal acceleration
 LATERAL_GAIN = 0.1            # s: extra sideways placement per m/s of sideways speed error
 PLACEMENT_LIMIT = 0.6         # the hip-to-heel distance on the ground is at most this share of the leg
 HIP_YAW_LIMIT = 0.4           # rad
+HIP_YAW_HEADROOM = 0.95       # share of the rotation axis's torque limit the roll is reduced to keep within
 ACCEL_MARGIN = 0.231            # m/s: the speed command is at most this above the current speed
+TABLE_LEAD = 1.0              # the table is looked up this share of the way from the current speed to the ramped command
 TURN_RATE_PER_SPEED = 0.4     # rad/s of heading change per m/s of speed
 HEADING_GAIN = 2.0            # 1/s: heading rate per radian of heading error
 TURN_ACCEL = 1.0              # rad/s^2: the heading rate changes at most this fast
@@ -712,6 +753,7 @@ START_PITCH = 0.1             # rad: pelvis pitch the hips hold while leaning
 START_SPEED = 0.6             # m/s: forward COM speed at which the lean turns into the first push-off
 START_TIMEOUT = 1.0           # s after the lean at which the push-off starts whatever the speed
 START_STANCE = 0.3            # s: expected duration of the first (push-off) stance
+SWING_FOLD_MAX = 0.8          # rad: at most this much extra knee flexion of a lagging swing
 GSM_RETRACT = 0.08            # s before the predicted touchdown over which the swung-forward foot is brought back
 IDLE_FORWARD_THIGH = -0.552     # rad: forward angle (from vertical) the idle thigh reaches by the end of stance
 IDLE_UNFOLD = 0.6             # share of the expected stance over which the idle knee unfolds after thrust
