@@ -473,11 +473,16 @@ class Leap(Sequence):
         Parameter("com_offset_y", "m", 0.0, -0.2, 0.2,
                   "COM to the left of the feet in the crouch: a sideways jump (low_level only)"),
         Parameter("arm_swing", "rad", 1.0, 0.0, 3.2, "forward arm swing during the thrust (low_level only)"),
+        Parameter("crouch_arms", "rad", 0.0, -0.8, 0.0,
+                  "arms swung back (-) in the crouch, to swing forward in the thrust; keeps the hands off "
+                  "the ground in a deep crouch (low_level only)"),
         Parameter("thrust_damping", "1", 1.0, 0.1, 1.0,
                   "share of the stiffened leg servos' damping kept in the thrust; less extends faster "
                   "(low_level only)"),
         Parameter("crouch_time", "s", 0.8, 0.3, 3.0, "time to sink into the crouch"),
         Parameter("foot_delta", "m", 0.0, -0.3, 0.3, "landing: foot servo delta (see the land behaviour)"),
+        Parameter("landing_knee_flexion", "rad", 0.9, 0.0, 1.5,
+                  "landing: knee bend held in flight (less: the feet reach further forward)"),
         Parameter("landing_place_sideways", "bool", 0.0, 0.0, 1.0,
                   "landing: 1 = place the feet sideways by the COM's sideways speed (a sideways jump)"),
         Parameter("landing_swing_arms", "bool", 0.0, 0.0, 1.0,
@@ -492,8 +497,8 @@ class Leap(Sequence):
     def settings(self) -> dict:
         p = self.params
         if p["low_level"]:
-            settings = {k: p[k] for k in ("crouch_height", "crouch_pitch", "com_offset", "com_offset_y", "arm_swing",
-                                          "thrust_damping")}
+            settings = {k: p[k] for k in ("crouch_height", "crouch_pitch", "com_offset", "com_offset_y",
+                                          "arm_swing", "crouch_arms", "thrust_damping")}
             settings["damping"] = settings.pop("thrust_damping")
             settings["liftoff_hip"] = p["liftoff_hip_angle"]
             return settings
@@ -564,9 +569,11 @@ class Leap(Sequence):
         def crouch(t):
             return Balance(schema.validate(dict(pelvis_height=cfg["crouch_height"], torso_pitch=cfg["crouch_pitch"],
                                                 com_offset_x=cfg["com_offset"],
-                                                com_offset_y=cfg.get("com_offset_y", 0.0), move_start=0.2,
-                                                move_time=cfg["crouch_time"] if "crouch_time" in cfg else p["crouch_time"], hold_time=0.0,
-                                                return_to_stand=0)), ctx)
+                                                com_offset_y=cfg.get("com_offset_y", 0.0),
+                                                arm_flexion=cfg.get("crouch_arms", 0.0), move_start=0.2,
+                                                move_time=cfg["crouch_time"] if "crouch_time" in cfg
+                                                else p["crouch_time"],
+                                                hold_time=0.0, return_to_stand=0)), ctx)
 
         def crouched(b, t):
             if broad:
@@ -588,7 +595,7 @@ class Leap(Sequence):
             # the calibrated leap's own correction of the landing's foot servo delta, plus the user's
             delta = min(max(p.get("foot_delta", 0.0) + cfg.get("foot_delta", 0.0), -0.3), 0.3)
             landing = {k: cfg.get(k, p.get("landing_" + k, Landing.schema.defaults()[k]))
-                       for k in ("swing_arms", "arm_flexion", "foot_lead_time", "place_sideways")}
+                       for k in ("swing_arms", "arm_flexion", "foot_lead_time", "place_sideways", "knee_flexion")}
             return Landing(Landing.schema.validate(dict(foot_delta=delta, **landing)), ctx)
 
         def stand(t):

@@ -361,7 +361,7 @@ class JumpToTarget(Leap):
             if p["plan_trials"] < 1:
                 raise ParameterError(f"no stored plan for this jump of {name} and plan_trials=0; allowed range "
                                      f"of plan_trials is [1, 600] to plan it now (scripts/plan_jumps.py stores plans)")
-            plan = plan_jump(self.ctx.character.name, target, p["air_time"], p["windup_time"], self.request()["strength"],
+            plan = plan_jump(name, target, p["air_time"], p["windup_time"], self.request()["strength"],
                              trials=int(p["plan_trials"]), progress=_print_progress)
         if not plan["found"]:
             m = plan["measured"]
@@ -374,8 +374,8 @@ class JumpToTarget(Leap):
         self.plan = plan
 
     def settings(self) -> dict:
-        settings = {k: self.plan["settings"][k] for k in
-                    ("crouch_height", "crouch_pitch", "com_offset", "arm_swing", "damping", "liftoff_hip", "foot_delta")}
+        settings = {k: self.plan["settings"][k] for k in ("crouch_height", "crouch_pitch", "com_offset", "arm_swing",
+                                                          "damping", "liftoff_hip", "foot_delta")}
         settings["com_offset_y"] = self.plan["settings"].get("com_offset_y", 0.0)
         settings["crouch_time"] = crouch_time(self.params["windup_time"])
         settings.update(landing_settings(self.plan["settings"]))
