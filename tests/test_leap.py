@@ -1,7 +1,7 @@
 """Leaping and landing (Wooten ch. 4, 6): what works today, measured off the simulation and
 compared with TARGETS.md. Not reached yet (see the README and docs/leap_report.md): broad jumps
-between the calibrated distances and beyond ~1 m, landings with horizontal speeds up to 3 m/s,
-jumps to a target."""
+between the calibrated distances and beyond ~1 m, landings with horizontal speeds above 2 m/s
+(test below: xfail with the outcome); jumps to a target are in test_target_jump.py."""
 import numpy as np
 import pytest
 
@@ -27,6 +27,21 @@ def test_drop_landing_ends_balanced(name, height):
     assert traj.meta["outcome"] == "success", m
     assert m["final_com_speed"] < 0.1 and not m["fell"]
     assert m["final_pelvis_height"] > (0.85 if name == "man" else 0.75)      # stood back up
+
+
+LANDED_SPEEDS = {"man": (-1.0, 2.0), "woman": (-0.5, 2.0)}      # m/s: measured range, TARGETS.md -1 .. +3
+
+
+@pytest.mark.parametrize("name", ["man", "woman"])
+@pytest.mark.parametrize("speed", [-1.0, 1.5, 2.0, 2.5, 3.0])
+def test_landing_with_horizontal_speed_ends_balanced(name, speed):
+    """TARGETS.md: landings with horizontal COM speed -1 .. +3 m/s end balanced (0.2 m drop, the
+    report's case). Above 1 m/s the legs are held straighter in flight (fast_knee_flexion)."""
+    traj = run(RunRequest("land", name, start=StartState(height=0.2, velocity=(speed, 0.0, 0.0)), duration=3.0))
+    low, high = LANDED_SPEEDS[name]
+    if not low <= speed <= high:
+        pytest.xfail(f"{name} at {speed:+.1f} m/s: {traj.meta['outcome']} (lands {low:+.1f} .. {high:+.1f} m/s)")
+    assert traj.meta["outcome"] == "success", traj.meta["metrics"]
 
 
 @pytest.mark.parametrize("height", [0.2, 0.4])

@@ -56,6 +56,7 @@ KNEE_RESTORE = 0.2              # knees stiffen again at 20 % of their touchdown
 TOE_POINT_PER_SPEED = 0.25      # rad of toe-down foot pitch before touchdown per m/s of expected touchdown
 TOE_POINT_FROM = 2.0            # speed above this (m/s): the forefoot lands first and the ankles give
 TOE_POINT_MAX = 0.5             # like a person landing from a height (0 = feet parallel to the ground)
+FAST_LANDING_SPEED = (1.0, 1.5)  # m/s of horizontal COM speed over which the flight knee eases to the fast one
 TOE_FADE_SPEED = (0.5, 1.5)     # m/s of horizontal COM speed over which the toe-down pitch fades out
 UP = np.array([0.0, 0.0, 1.0])
 LANDING_TORQUE_LIMIT = 1.0      # landing joints use at most this share of the human torque limits,
@@ -153,6 +154,9 @@ class Landing(Behaviour):
 
     schema = Schema(
         Parameter("knee_flexion", "rad", 0.9, 0.0, 1.5, "knee bend held in flight, ready to absorb"),
+        Parameter("fast_knee_flexion", "rad", 0.65, 0.0, 1.5,
+                  "knee bend held in flight when the COM moves 1.5 m/s or faster horizontally (eased in "
+                  "from 1.0 m/s): straighter legs land a fast COM (the leap's own landing keeps knee_flexion)"),
         Parameter("foot_delta", "m", 0.0, -0.3, 0.3,
                   "foot servo delta: extra forward placement of the feet, added to the calibrated one "
                   "for the horizontal speed (rigs/tuned/landing_<character>.json, Table 6.1's role)"),
@@ -222,6 +226,15 @@ class Landing(Behaviour):
     @property
     def finished(self) -> bool:
         return self.finished_at is not None
+
+    def _flight_knee(self, vx: float) -> float:
+        """Knee bend held in flight: ``knee_flexion``, easing to ``fast_knee_flexion`` as the
+        horizontal speed rises over FAST_LANDING_SPEED (straighter legs reach further ahead of a
+        fast COM and take the horizontal speed with the whole leg)."""
+        p = self.params
+        low, high = FAST_LANDING_SPEED
+        share = hermite_scalar((abs(vx) - low) / (high - low))
+        return p["knee_flexion"] + (p["fast_knee_flexion"] - p["knee_flexion"]) * share
 
     def _sideways_hip(self, k: int, d, com, vel, c: float, sn: float) -> float:
         """Hip abduction target that puts foot ``k`` beside the COM where its sideways speed will be
@@ -316,9 +329,10 @@ class Landing(Behaviour):
                 wanted = vx * p["foot_lead_time"] + self.calibrated_delta + p["foot_delta"]
                 hip = d.xpos[self.hips[k]]
                 hip_from_com = c * (hip[0] - com[0]) + sn * (hip[1] - com[1])
-                thigh_pitch = self.leg.thigh_pitch_for(wanted - self.sole_centre - hip_from_com, p["knee_flexion"])
+                knee = self._flight_knee(vx)
+                thigh_pitch = self.leg.thigh_pitch_for(wanted - self.sole_centre - hip_from_com, knee)
                 correction = -p["foot_kp"] * (wanted - fx) + p["foot_kv"] * fx_rate     # eq. 6.1
-                targets[j["knee"]] = p["knee_flexion"]
+                targets[j["knee"]] = knee
                 targets[j["hip_y"]] = thigh_pitch - pelvis_pitch + correction
                 targets[j["hip_x"]] = self._sideways_hip(k, d, com, vel, c, sn) if p["place_sideways"] else 0.0
             else:
@@ -596,6 +610,7 @@ class Leap(Sequence):
             delta = min(max(p.get("foot_delta", 0.0) + cfg.get("foot_delta", 0.0), -0.3), 0.3)
             landing = {k: cfg.get(k, p.get("landing_" + k, Landing.schema.defaults()[k]))
                        for k in ("swing_arms", "arm_flexion", "foot_lead_time", "place_sideways", "knee_flexion")}
+            landing["fast_knee_flexion"] = landing["knee_flexion"]     # calibrated with one knee bend
             return Landing(Landing.schema.validate(dict(foot_delta=delta, **landing)), ctx)
 
         def stand(t):
