@@ -389,6 +389,7 @@ class JumpToTarget(Leap):
         metrics["landing_x"], metrics["landing_y"] = measured["landing"]
         metrics["landing_error"] = float(math.hypot(measured["landing"][0] - p["target_x"],
                                                     measured["landing"][1] - p["target_y"]))
+        metrics["air_time"] = measured["air_time"]          # the first flight (flight_time: to the last touchdown)
         metrics["air_time_error"] = measured["air_time"] - p["air_time"]
         metrics["windup_time"] = measured["windup_time"]
         return outcome, metrics
