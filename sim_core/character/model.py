@@ -217,7 +217,6 @@ def _exclude_touching_pairs(spec: mujoco.MjSpec, character: CharacterSpec) -> No
     set_standing_pose(model, data, character)
     mujoco.mj_forward(model, data)
     pairs = set()
-    ground = model.geom("ground").id
     for c in data.contact[: data.ncon]:
         if model.geom_bodyid[c.geom1] == 0 or model.geom_bodyid[c.geom2] == 0:     # the world's geoms
             continue

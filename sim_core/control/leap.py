@@ -303,6 +303,7 @@ class Landing(Behaviour):
         if self.finished_at is None and (self.stage == "settle" or (
                 self.stage == "absorb" and t - self.touchdown_at > ABSORB_TIME)):
             self.finished_at = t
+        knee = self._flight_knee(vx) if self.stage == "flight" else None
         for k in (0, 1):
             j = self.idx[k]
             f = d.xmat[self.feet[k]].tolist()
@@ -329,7 +330,6 @@ class Landing(Behaviour):
                 wanted = vx * p["foot_lead_time"] + self.calibrated_delta + p["foot_delta"]
                 hip = d.xpos[self.hips[k]]
                 hip_from_com = c * (hip[0] - com[0]) + sn * (hip[1] - com[1])
-                knee = self._flight_knee(vx)
                 thigh_pitch = self.leg.thigh_pitch_for(wanted - self.sole_centre - hip_from_com, knee)
                 correction = -p["foot_kp"] * (wanted - fx) + p["foot_kv"] * fx_rate     # eq. 6.1
                 targets[j["knee"]] = knee

@@ -67,9 +67,10 @@ class SupportGeometry:
     def points(self, data: mujoco.MjData) -> np.ndarray:
         return data.site_xpos[self.site_ids]
 
-    def heights(self, data: mujoco.MjData) -> np.ndarray:
-        """Height of every site above what is under it (the ground or a box)."""
-        points = data.site_xpos[self.site_ids]
+    def heights(self, data: mujoco.MjData, points: np.ndarray | None = None) -> np.ndarray:
+        """Height of every site (or of ``points``, the sites already read) above what is under
+        it (the ground or a box)."""
+        points = data.site_xpos[self.site_ids] if points is None else points
         if not self.boxes:
             return points[:, 2]
         return points[:, 2] - surface_under(points, self.boxes)
@@ -77,7 +78,7 @@ class SupportGeometry:
     def supporting_points(self, data: mujoco.MjData) -> np.ndarray:
         """All sites of every foot that touches the ground (all sites if none does)."""
         points = data.site_xpos[self.site_ids]
-        low = self.heights(data) < self.contact_height
+        low = self.heights(data, points) < self.contact_height
         right = bool(low[self.right].any())
         left = bool(low[self.left].any())
         if right == left:                       # both feet down (or both up: use them all)

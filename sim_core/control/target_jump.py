@@ -356,12 +356,13 @@ class JumpToTarget(Leap):
                 f"needs a take-off at {speed:.2f} m/s (path estimate: {velocity[0]:.2f} forward, "
                 f"{velocity[2]:.2f} up); the strongest take-off of {name} is {capacity:.2f} m/s - "
                 f"allow a longer or shorter air time, or a nearer target")
-        plan = stored_plan(name, self.request())
+        request = self.request()
+        plan = stored_plan(name, request)
         if plan is None:
             if p["plan_trials"] < 1:
                 raise ParameterError(f"no stored plan for this jump of {name} and plan_trials=0; allowed range "
                                      f"of plan_trials is [1, 600] to plan it now (scripts/plan_jumps.py stores plans)")
-            plan = plan_jump(name, target, p["air_time"], p["windup_time"], self.request()["strength"],
+            plan = plan_jump(name, target, p["air_time"], p["windup_time"], request["strength"],
                              trials=int(p["plan_trials"]), progress=_print_progress)
         if not plan["found"]:
             m = plan["measured"]
