@@ -29,8 +29,9 @@ def arm_reach(height: float, standing_height: float) -> float:
 
 class CrouchTable:
     def __init__(self, model: mujoco.MjModel, character: CharacterSpec, heights: np.ndarray,
-                 standing_height: float):
+                 standing_height: float, com_offset: float = 0.0):
         self.model, self.character = model, character
+        self.com_offset = com_offset
         self.data = mujoco.MjData(model)
         self.base_qpos = np.zeros(model.nq)
         self.base_qpos[3] = 1.0                          # root at the origin, upright
@@ -77,7 +78,7 @@ class CrouchTable:
 
     def solve(self, height: float) -> tuple[float, float, float, float]:
         """(knee, hip_y, ankle_y, pelvis_pitch) for this pelvis height, COM over the centre of
-        the feet, the pelvis as upright as the usable ankle dorsiflexion allows. Nested
+        the feet (or ``com_offset`` m ahead of it, behind if negative), the pelvis as upright as the usable ankle dorsiflexion allows. Nested
         bisections: the hip height depends only on ankle and knee, the COM also on the hip."""
         self._height = height
         knee_max = self.character.dofs[self.character.dof_index["knee_r_y"]].range[1]
@@ -88,7 +89,7 @@ class CrouchTable:
 
         def hip_for(knee, ankle):
             # flexing the hip (more negative) moves the COM forward
-            return _bisect(lambda h: self.measure(knee, h, ankle)[1], hip_lo, hip_hi, decreasing=True)
+            return _bisect(lambda h: self.measure(knee, h, ankle)[1] - self.com_offset, hip_lo, hip_hi, decreasing=True)
 
         def pose(ankle):
             knee = knee_for(ankle)

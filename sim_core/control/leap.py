@@ -95,7 +95,7 @@ class LeapThrust(Behaviour):
 
     def __init__(self, params, ctx: ControlContext, crouch_height: float, timing=VERTICAL_TIMING,
                  ankle_gain=ANKLE_GAIN_VERTICAL, liftoff_hip=0.0, arm_swing=2.5, stand_height=None,
-                 damping=THRUST_DAMPING):
+                 damping=THRUST_DAMPING, lean=0.0):
         super().__init__(params, ctx)
         self.timing, self.ankle_gain = timing, ankle_gain
         self.liftoff_hip, self.arm_swing = liftoff_hip, arm_swing
@@ -103,13 +103,14 @@ class LeapThrust(Behaviour):
         self.crouch_height = crouch_height
         self.stand_height = stand_height
         self.damping = damping
+        self.lean = lean
 
     def start(self, t: float) -> None:
         s = self.ctx.servos
         s.offset[:] = 0.0
         self.t0 = t
         heights = np.linspace(self.crouch_height, self.stand_height, 8)
-        self.path = CrouchTable(self.ctx.model, self.ctx.character, heights, self.stand_height)
+        self.path = CrouchTable(self.ctx.model, self.ctx.character, heights, self.stand_height, com_offset=self.lean)
         self.idx = {name: s.indices([f"{name}_r_y", f"{name}_l_y"]) for name in ("hip", "knee", "ankle")}
         t_hip, t_knee, t_ankle = self.timing
         for side, sign in (("r", 1.0), ("l", -1.0)):
@@ -174,6 +175,10 @@ class Landing(Behaviour):
                   "forward raise of the arms they swing to in flight (from a high take-off swing, down "
                   "and back to below 0 pitches the trunk back, so the feet can reach forward)"),
         Parameter("arm_time", "s", 0.3, 0.1, 1.0, "duration of that arm swing"),
+        Parameter("spin_placement", "s/m", 0.0, 0.0, 0.5,
+                  "landing a somersault: the feet land this factor x (somersault angular momentum / mass) "
+                  "behind the COM for a backward spin, ahead for a forward one, so the ground force at "
+                  "touchdown turns the spin back (0 = no spin term)"),
     )
 
     def __init__(self, params, ctx: ControlContext):
@@ -200,6 +205,7 @@ class Landing(Behaviour):
         self.hip_x_range = [tuple(m.jnt_range[m.joint(f"hip_{side}_x").id]) for side in "rl"]
         self.touchdown_knee_speed = None
         self.com_height = float(ctx.data.subtree_com[self.pelvis][2])
+        self.mass = float(m.body_subtreemass[self.pelvis])
         self.finished_at = None
         self.torque_cap = None
         forcerange = m.actuator_forcerange[:, 1]
@@ -328,6 +334,9 @@ class Landing(Behaviour):
                 if self.calibrated_delta is None:          # the horizontal and touchdown speeds of this flight
                     self.calibrated_delta = calibrated_foot_delta(self.ctx.character.name, vx, touchdown_speed)
                 wanted = vx * p["foot_lead_time"] + self.calibrated_delta + p["foot_delta"]
+                if p["spin_placement"]:
+                    spin = -sn * float(d.subtree_angmom[self.pelvis][0]) + c * float(d.subtree_angmom[self.pelvis][1])
+                    wanted += p["spin_placement"] * spin / self.mass
                 hip = d.xpos[self.hips[k]]
                 hip_from_com = c * (hip[0] - com[0]) + sn * (hip[1] - com[1])
                 thigh_pitch = self.leg.thigh_pitch_for(wanted - self.sole_centre - hip_from_com, knee)

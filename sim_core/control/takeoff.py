@@ -5,7 +5,7 @@ from __future__ import annotations
 
 from sim_core.control.balance import Balance, LegGeometry
 from sim_core.control.behaviour import ControlContext
-from sim_core.control.leap import ANKLE_GAIN_VERTICAL, VERTICAL_TIMING, LeapThrust
+from sim_core.control.leap import ANKLE_GAIN_VERTICAL, THRUST_DAMPING, VERTICAL_TIMING, LeapThrust
 from sim_core.control.sequencer import Step
 
 LEAN_TRIGGER = 1.0         # share of a backward COM offset that triggers the thrust
@@ -33,6 +33,7 @@ def takeoff_steps(ctx: ControlContext, cfg: dict) -> list[Step]:
 
     def thrust(t):
         return LeapThrust({}, ctx, cfg["crouch_height"], VERTICAL_TIMING, ANKLE_GAIN_VERTICAL,
-                          cfg["liftoff_hip"], cfg["arm_swing"], stand_height=stand)
+                          cfg["liftoff_hip"], cfg["arm_swing"], stand_height=stand,
+                          damping=cfg.get("damping", THRUST_DAMPING), lean=cfg.get("lean", 0.0))
 
     return [Step("crouch", crouch, crouched), Step("thrust", thrust, lambda b, t: b.lifted_off())]
