@@ -33,11 +33,11 @@ def parse_params(behaviour: str, params) -> dict[str, float]:
     return schema.validate(dict(params))
 
 
-def make_request(character: str, behaviour: str, params, duration: float | None):
+def make_request(character: str, behaviour: str, params, duration: float | None, strength: str = "human"):
     """A validated RunRequest (raises before anything runs or is written)."""
     from sim_core.simulate import RunRequest
     request = RunRequest(behaviour=behaviour, character=character,
-                         params=parse_params(behaviour, params), duration=duration)
+                         params=parse_params(behaviour, params), duration=duration, strength=strength)
     request.validated()
     return request
 
@@ -70,14 +70,14 @@ def console_progress(fraction: float) -> None:
 
 def simulate_and_bake(context, *, behaviour: str, params=None, duration: float | None = None,
                       armature: str | None = None, start_frame: int | None = None,
-                      fit_scene_range: bool = False, target: str | None = None,
+                      fit_scene_range: bool = False, target: str | None = None, strength: str = "human",
                       progress: Callable[[float], None] | None = None,
                       cancelled: Callable[[], bool] | None = None):
     """Simulate ``behaviour`` on the rig's character and bake it as a new action on the rig.
     Keys land on every frame of the scene's frame rate from ``start_frame`` (default: the scene's
     start). ``target``: name of a scene object whose origin sets a jump's target parameters.
     Returns (action, trajectory). Nothing is written if validation, the run or the bake fails or
-    is cancelled."""
+    is cancelled. ``strength``: "human" (the rig's torque limits) or "unlimited"."""
     import bpy
     from sim_core.simulate import run
     obj = rig.find_rig(context, armature)
@@ -85,7 +85,7 @@ def simulate_and_bake(context, *, behaviour: str, params=None, duration: float |
         if target not in bpy.data.objects:
             raise rig.RigError(f"target object {target!r} is not in this file")
         params = {**parse_params(behaviour, params), **target_from_object(obj, bpy.data.objects[target])}
-    request = make_request(str(obj[rig.CHARACTER_KEY]), behaviour, params, duration)
+    request = make_request(str(obj[rig.CHARACTER_KEY]), behaviour, params, duration, strength)
     trajectory = run(request, progress=progress, cancelled=cancelled)
     action = bake_result(context, obj, trajectory, start_frame, fit_scene_range)
     return action, trajectory

@@ -78,7 +78,7 @@ def bake_trajectory(obj: bpy.types.Object, trajectory, fps: float, start_frame: 
     ch = channels_for(obj, trajectory, fps, start_frame, duration)
     info = {
         "character": meta.get("character"), "behaviour": meta["behaviour"], "params": meta.get("params", {}),
-        "outcome": meta.get("outcome"), "metrics": meta.get("metrics", {}),
+        "outcome": meta.get("outcome"), "metrics": meta.get("metrics", {}), "strength": meta.get("strength", "human"),
         "fps": fps, "start_frame": start_frame, "frames": len(ch.frames),
         "frame_end": float(ch.frames[-1]), "duration": float(ch.frames[-1] - ch.frames[0]) / fps,
     }

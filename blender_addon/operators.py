@@ -53,6 +53,7 @@ class SIMATHLETICS_OT_simulate_bake(bpy.types.Operator):
     params: StringProperty(name="Parameters",
                            description="name=value pairs merged over the panel's values, e.g. 'pelvis_height=0.52'")
     duration: FloatProperty(name="Duration", min=0.0, description="Seconds to simulate (unset or 0: the panel's)")
+    strength: StringProperty(name="Strength", description="'human' or 'unlimited' torque limits (unset: the panel's)")
     start_frame: IntProperty(name="Start frame", description="Frame of the first key (unset: the panel's)")
     armature: StringProperty(name="Armature", description="Rig to bake onto (unset: the active one)")
 
@@ -72,6 +73,7 @@ class SIMATHLETICS_OT_simulate_bake(bpy.types.Operator):
         duration = self.duration if is_set("duration") and self.duration > 0 else settings.duration
         return {
             "behaviour": behaviour, "params": params, "target": settings.target_object, "duration": duration if duration > 0 else None,
+            "strength": self.strength if is_set("strength") and self.strength else settings.strength,
             "start_frame": self.start_frame if is_set("start_frame") else settings.start_frame,
             "armature": self.armature if is_set("armature") and self.armature else None,
             "fit_scene_range": settings.fit_scene_range,
@@ -83,7 +85,8 @@ class SIMATHLETICS_OT_simulate_bake(bpy.types.Operator):
         obj = rig.find_rig(context, s["armature"])
         if s["target"] is not None and props.takes_target(s["behaviour"]):
             s["params"] = api.parse_params(s["behaviour"], {**s["params"], **api.target_from_object(obj, s["target"])})
-        request = api.make_request(str(obj[rig.CHARACTER_KEY]), s["behaviour"], s["params"], s["duration"])
+        request = api.make_request(str(obj[rig.CHARACTER_KEY]), s["behaviour"], s["params"], s["duration"],
+                                   s["strength"])
         return obj, request, s
 
     def _finish(self, context, obj, trajectory, s):

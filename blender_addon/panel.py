@@ -41,6 +41,7 @@ class SIMATHLETICS_PT_panel(bpy.types.Panel):
             for p in cls.schema.parameters:
                 col.prop(group, p.name)
         col = layout.column(align=True)
+        col.prop(settings, "strength")
         col.prop(settings, "duration")
         col.prop(settings, "start_frame")
         scene = context.scene

@@ -89,6 +89,8 @@ def panel_params(settings, behaviour: str) -> dict[str, float]:
     return {p.name: as_typed(getattr(group, p.name)) for p in behaviour_class(behaviour).schema.parameters}
 
 
+STRENGTH_ITEMS = [("human", "Human", "Human-plausible joint torque limits (the rig's, with their sources)"),
+                  ("unlimited", "Unlimited", "No joint torque limits, as Wooten's 1998 simulations ran")]
 _ITEMS: dict[str, list] = {}          # enum items must stay referenced while Blender shows them
 
 
@@ -112,6 +114,8 @@ def _build_classes() -> list[type]:
                                   description="Character to add (a rig from rigs/)"),
         "behaviour": EnumProperty(name="Behaviour", items=_behaviour_items,
                                   description="Behaviour to simulate"),
+        "strength": EnumProperty(name="Strength", items=STRENGTH_ITEMS, default="human",
+                                 description="Joint torque limits of the run"),
         "duration": FloatProperty(name="Duration", default=0.0, min=0.0, max=3600.0, precision=2,
                                   description="Seconds to simulate; 0 = the behaviour's default"),
         "start_frame": IntProperty(name="Start frame", default=1,

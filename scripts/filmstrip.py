@@ -22,6 +22,7 @@ def main(argv=None) -> int:
     parser.add_argument("--character", default="man")
     parser.add_argument("--set", action="append", default=[], metavar="NAME=VALUE")
     parser.add_argument("--duration", type=float, default=None)
+    parser.add_argument("--strength", choices=("human", "unlimited"), default="human", help="joint torque limits")
     parser.add_argument("--frames", type=int, default=8, help="pictures in the strip")
     parser.add_argument("--start", type=float, default=0.0, help="first picture at this time (s)")
     parser.add_argument("--end", type=float, default=None, help="last picture at this time (s)")
@@ -43,7 +44,7 @@ def main(argv=None) -> int:
     params = dict(item.split("=", 1) for item in args.set)
     rig = api.add_character(bpy.context, args.character)
     action, trajectory = api.simulate_and_bake(bpy.context, behaviour=args.behaviour, params=params,
-                                               duration=args.duration)
+                                               duration=args.duration, strength=args.strength)
     last = trajectory.arrays["time"][-1]
     end = last if args.end is None else min(args.end, last)
     times = [args.start + (end - args.start) * k / max(args.frames - 1, 1) for k in range(args.frames)]
