@@ -48,6 +48,8 @@ def parse_args(argv: list[str]) -> argparse.Namespace:
     p.add_argument("--set", dest="assignments", action="append", default=[], metavar="NAME=VALUE",
                    help="behaviour parameter (repeatable), SI units: metres, radians, seconds")
     p.add_argument("--duration", type=float, default=None, help="seconds to simulate (default: the behaviour's)")
+    p.add_argument("--strength", choices=("human", "unlimited"), default="human",
+                   help="joint torque limits: the rig's human ones (default) or none, as Wooten ran")
     p.add_argument("--fps", type=int, default=None, help="scene frame rate (default: the file's)")
     p.add_argument("--start-frame", type=int, default=1, help="frame of the first key (default 1)")
     p.add_argument("--out", required=True, help="the .blend file to write")
@@ -77,7 +79,7 @@ def run(argv: list[str]) -> int:
     try:
         args = parse_args(argv)
         params = api.parse_params(args.behaviour, args.assignments)
-        api.make_request(args.character, args.behaviour, params, args.duration)   # validate all first
+        api.make_request(args.character, args.behaviour, params, args.duration, args.strength)   # validate all first
     except (BatchError, SimAthleticsError) as exc:
         print(f"{PROG}: error: {exc}", file=sys.stderr)
         return 2
@@ -94,7 +96,7 @@ def run(argv: list[str]) -> int:
         arm = api.add_character(context, args.character)
         action, trajectory = api.simulate_and_bake(
             context, armature=arm.name, behaviour=args.behaviour, params=params, duration=args.duration,
-            start_frame=args.start_frame, fit_scene_range=True, progress=api.console_progress)
+            start_frame=args.start_frame, fit_scene_range=True, strength=args.strength, progress=api.console_progress)
     except (SimAthleticsError, rig.RigError) as exc:
         print(f"{PROG}: error: {exc}", file=sys.stderr)
         return 2
