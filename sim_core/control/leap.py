@@ -179,6 +179,10 @@ class Landing(Behaviour):
                   "landing a somersault: the feet land this factor x (somersault angular momentum / mass) "
                   "behind the COM for a backward spin, ahead for a forward one, so the ground force at "
                   "touchdown turns the spin back (0 = no spin term)"),
+        Parameter("blend_time", "s", 0.0, 0.0, 0.3,
+                  "the joint targets blend from where the landing started to the landing's own over this "
+                  "time (opening from a tuck: a gentler move keeps the flight's angular momentum constant "
+                  "in the 1 ms step); 0 = at once"),
     )
 
     def __init__(self, params, ctx: ControlContext):
@@ -227,6 +231,7 @@ class Landing(Behaviour):
         self.arm_from = s.smoothed_target(t)[self.shoulders].copy()
         self.arm_to = np.array([1.0, -1.0]) * self.params["arm_flexion"]
         self.arm_t0 = t
+        self.blend_from = s.smoothed_target(t).copy()
         self.event(t, "flight")
 
     @property
@@ -352,6 +357,9 @@ class Landing(Behaviour):
                     targets[j["knee"]] = self.knees_touched_at[k]
                 else:
                     targets[j["knee"]] = self.knees_stopped_at[k]
+        if p["blend_time"] and t - self.arm_t0 < p["blend_time"]:
+            share = hermite_scalar((t - self.arm_t0) / p["blend_time"])
+            targets = self.blend_from + (targets - self.blend_from) * share
         if self.torque_cap is not None:
             # the servo's torque kp (target - q) - kv dq kept within the human limits by the target
             legs, _, _, cap = self.torque_cap

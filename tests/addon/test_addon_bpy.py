@@ -277,7 +277,7 @@ def test_panel_draws_the_schema_and_the_last_result(empty_scene):
     SIMATHLETICS_PT_panel.draw(panel, context)
     drawn = [name for kind, name in log if kind == "prop"]
     assert [p.name for p in behaviour_class("balance").schema.parameters] == \
-        [n for n in drawn if n not in ("character", "behaviour", "duration", "start_frame", "fit_scene_range")]
+        [n for n in drawn if n not in ("character", "behaviour", "strength", "duration", "start_frame", "fit_scene_range")]
     labels = [text for kind, text in log if kind == "label"]
     assert f"Outcome: {trajectory.meta['outcome']}" in labels
     assert any(text.startswith("min pelvis height:") for text in labels)
@@ -339,3 +339,26 @@ def test_a_jump_takes_its_target_from_an_empty(empty_scene):
     assert result["params"]["target_x"] == pytest.approx(1.0, abs=1e-9)
     assert result["params"]["target_y"] == pytest.approx(0.0, abs=1e-9)
     assert result["outcome"] == "success" and result["metrics"]["landing_error"] <= 0.05
+
+
+def test_a_somersault_is_baked_with_the_panels_strength(empty_scene):
+    """The standing back somersault through the operator, at the strength the panel's Strength
+    sets: the baked trunk turns upside down in the air and the rig ends upright; the run's
+    strength is the one asked for."""
+    from sim_core.control.somersault import calibrated
+    context = empty_scene
+    context.scene.render.fps, context.scene.render.fps_base = FPS, 1.0
+    strength = "human" if calibrated("man", "backward", "human") else "unlimited"
+    context.scene.sim_athletics.strength = strength
+    assert bpy.ops.sim_athletics.add_character(character="man") == {"FINISHED"}
+    arm = context.view_layer.objects.active
+    assert bpy.ops.sim_athletics.simulate_bake(behaviour="somersault", params="direction=0", start_frame=1) == {"FINISHED"}
+    result = json.loads(arm[rig.RESULT_KEY])
+    assert result["strength"] == strength and result["outcome"] == "success"
+    ups = []
+    for frame in range(1, int(arm.animation_data.action.frame_range[1]) + 1):
+        context.scene.frame_set(frame)
+        pelvis = arm.matrix_world @ arm.pose.bones["PELVIS"].head
+        head = arm.matrix_world @ arm.pose.bones["HEAD"].head
+        ups.append((head - pelvis).normalized().z)          # the trunk's axis: +1 upright, -1 upside down
+    assert min(ups) < -0.9 and ups[-1] > 0.9
