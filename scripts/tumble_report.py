@@ -1,7 +1,7 @@
 """Tumbling and diving report: moments of inertia of the positions beside Wooten's Fig. 5.2, the
-four 10 m platform dives of §8.2.1 measured off the simulation, and a plot of the somersault and
-twist rates in flight (like Figs. 5.3 and 5.7). Writes docs/tumbling.md's results block and
-docs/tumbling_rates.png.
+four 10 m platform dives of §8.2.1 and the standing somersaults of §8.4-8.5 measured off the
+simulation, and a plot of the somersault and twist rates in flight (like Figs. 5.3 and 5.7).
+Writes docs/tumbling.md's results block and docs/tumbling_rates.png.
 
     python3 scripts/tumble_report.py
 """
@@ -20,6 +20,7 @@ sys.path.insert(0, str(ROOT))
 from sim_core.character.model import compile_model  # noqa: E402
 from sim_core.character.spec import load_character  # noqa: E402
 from sim_core.control.dive import dive_name  # noqa: E402
+from sim_core.control.somersault import DIRECTIONS  # noqa: E402
 from sim_core.control.tumble import SEED_INERTIA, inertia_about_com, position_inertia  # noqa: E402
 from sim_core.errors import ParameterError  # noqa: E402
 from sim_core.simulate import RunRequest, run  # noqa: E402
@@ -81,6 +82,31 @@ def dive_rows() -> tuple[list[str], dict]:
     return lines, runs
 
 
+SOMERSAULTS = [("man", "backward", "human"), ("man", "backward", "unlimited"),    # Wooten §8.4: the man's back tuck
+               ("man", "forward", "human"),
+               ("woman", "forward", "human")]                                     # §8.5: the woman's forward tuck
+
+
+def somersault_rows() -> list[str]:
+    lines = ["| character | somersault | strength | outcome | rotation, standing to standing | in flight | "
+             "flight s | COM rise m | COM travel m | take-off angular momentum kg m²/s | momentum drift in flight | "
+             "peak thrust GRF (body weights) |", "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"]
+    for character, direction, strength in SOMERSAULTS:
+        params = {"direction": DIRECTIONS.index(direction)}
+        try:
+            traj = run(RunRequest("somersault", character, params=params, strength=strength))
+        except ParameterError as error:
+            lines.append(f"| {character} | {direction} tuck | {strength} | refused: {error} | | | | | | | | |")
+            continue
+        m = traj.meta["metrics"]
+        lines.append(f"| {character} | {direction} tuck | {strength} | {traj.meta['outcome']} | {m['rotation']:.2f} rad "
+                     f"({m['somersaults']:.3f} turns) | {m['flight_rotation']:.2f} rad | {m['first_flight_time']:.2f} | "
+                     f"{m['com_rise']:.2f} | {m['com_travel']:+.2f} | {m['liftoff_angular_momentum']:.1f} | "
+                     f"{100 * m['angular_momentum_drift']:.2f} % | {m['peak_thrust_grf_body_weights']:.1f} |")
+        print(lines[-1], flush=True)
+    return lines
+
+
 def plot(runs: dict) -> None:
     import matplotlib
     matplotlib.use("Agg")
@@ -117,6 +143,9 @@ def main() -> int:
     lines += ["", "10 m platform dives (rotation counted from the standing start to the hands reaching the water); "
               "the first four are Wooten's (§8.2.1), the rest face the water (forward, reverse groups):", ""]
     lines += dives
+    lines += ["", "Standing tuck somersaults (§8.4-8.5; calibrated by `scripts/calibrate_somersaults.py`; a skill "
+              "succeeds when it turns once, 2π ± 0.35 rad, and ends balanced on the feet):", ""]
+    lines += somersault_rows()
     plot(runs)
     text = DOC.read_text()
     block = "<!-- results -->\n" + "\n".join(lines) + "\n<!-- /results -->"

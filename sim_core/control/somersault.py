@@ -68,7 +68,7 @@ class Somersault(Sequence):
     summary = "Standing tuck somersault, backward or forward: crouch, leap with spin, tuck, open, land, balance (Wooten §8.4-8.5)."
     default_duration = 5.0
     schema = Schema(
-        Parameter("direction", "1", 0.0, 0.0, 1.0, "0 = backward somersault, 1 = forward somersault"),
+        Parameter("direction", "1", 1.0, 0.0, 1.0, "0 = backward somersault, 1 = forward somersault"),
         Parameter("low_level", "bool", 0.0, 0.0, 1.0,
                   "1 = use the take-off and landing settings below instead of the calibrated ones"),
         Parameter("crouch_height", "m", 0.55, 0.5, 0.9, "pelvis height of the crouch (low_level only)"),
@@ -127,10 +127,12 @@ class Somersault(Sequence):
             measured = [e for e in load_table(name).get("not_found", [])
                         if e["direction"] == self.direction_name and e["strength"] == strength]
             why = f" (best searched: {measured[0]['best']})" if measured else ""
+            have = [f"{e['direction']} with {e['strength']} strength" for e in load_table(name)["somersaults"]]
             raise ParameterError(
                 f"the {name} has no calibrated {self.direction_name} somersault with "
                 f"{'unlimited strength' if strength == 'unlimited' else 'human torque limits'}: "
-                f"scripts/calibrate_somersaults.py found no take-off that lands it{why}")
+                f"scripts/calibrate_somersaults.py found no take-off that lands it{why}; calibrated: "
+                f"{', '.join(have) or 'none'}")
 
     # ------------------------------------------------------------------ the script
     def steps(self) -> list[Step]:
