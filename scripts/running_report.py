@@ -26,28 +26,43 @@ from sim_core.gait import HUMAN_FIG12, SIMULATED_1997  # noqa: E402
 
 DOC = ROOT / "docs" / "running.md"
 SPEEDS = (2.5, 3.0, 3.5, 4.0, 4.5, 5.0)
+HIP_ROTATION_NEAR_RANGE = 0.75     # rad: the stance hip's rotation counted as at its range (+-0.785 rad)
 
 
 def hip_yaw_probe():
     """Instrument (read only) the running behaviour of this worker process: after each control
-    tick, note whether the stance hip's yaw servo is at its torque limit. Returns the list the
-    samples go to, (time, saturated)."""
+    tick, note whether the stance hip's yaw servo is at its torque limit, and per stance how far
+    the stance foot turned about the vertical on the ground (touchdown to lift-off) and the
+    largest rotation of the stance hip. Returns the lists the samples go to: (time, saturated)
+    per tick and (lift-off time, foot pivot rad, largest |hip rotation| rad) per stance."""
     import sim_core.control.running as running
-    samples = []
     update = running.Running.update
     if getattr(update, "probe", None) is not None:
         return update.probe
+    samples, stances, current = [], [], {}
     stance = {running.LOADING, running.HEEL, running.HEEL_TOE, running.TOE, running.UNLOADING}
 
     def probed(self, t):
         update(self, t)
+        d, model = self.ctx.data, self.ctx.model
+        key = (self.active, self.t_touchdown)
+        if current and (current["key"] != key or self.state not in stance):
+            stances.append((t, abs(running._wrap(current["last"] - current["first"])), current["hz"]))
+            current.clear()
         if self.state in stance:
             i = self.j[self.active]["hz"]
-            force, limit = self.ctx.data.actuator_force[i], self.ctx.model.actuator_forcerange[i, 1]
+            force, limit = d.actuator_force[i], model.actuator_forcerange[i, 1]
             samples.append((t, abs(force) >= 0.99 * limit))
-    probed.probe = samples
+            foot = model.body("FOOTR" if self.active == 0 else "FOOTL").id
+            yaw = math.atan2(d.xmat[foot, 3], d.xmat[foot, 0])
+            hz = abs(float(self.ctx.servos.angles()[i]))
+            if not current:
+                current.update(key=key, first=yaw, hz=0.0)
+            current["last"] = yaw
+            current["hz"] = max(current["hz"], hz)
+    probed.probe = (samples, stances)
     running.Running.update = probed
-    return samples
+    return probed.probe
 
 
 def simulate(job):
@@ -55,17 +70,23 @@ def simulate(job):
     from sim_core.simulate import RunRequest, run
     name, params, duration = job
     started = time.perf_counter()
-    samples = hip_yaw_probe()
+    samples, stances = hip_yaw_probe()
     samples.clear()
+    stances.clear()
     traj = run(RunRequest("running", "man", params=params, duration=duration))
     m = traj.meta["metrics"]
     end = m["fall_time"] if m["fell"] else duration
     window = [s for t, s in samples if end - 5.0 <= t <= end]
     hip_yaw_saturated = 100.0 * sum(window) / len(window) if window else None
+    last = [(pivot, hz) for t, pivot, hz in stances if end - 5.0 <= t <= end]
+    foot_pivot = math.degrees(float(np.mean([p for p, _ in last]))) if last else None
+    # the hip's rotation range is +-0.785 rad (45 deg): a stance leg that reaches it was turned by the foot's pivot
+    at_range = 100.0 * float(np.mean([hz >= HIP_ROTATION_NEAR_RANGE for _, hz in last])) if last else None
     out = {"name": name, "params": params, "duration": duration, "outcome": traj.meta["outcome"],
            "fall_time": m["fall_time"], "gait": m["gait"], "time_to_90pct_speed": m["time_to_90pct_speed"],
            "path_deviation_mean": m.get("path_deviation_mean"), "path_deviation_max": m.get("path_deviation_max"),
            "stride_attitude_variation": m.get("stride_attitude_variation"), "hip_yaw_saturated": hip_yaw_saturated,
+           "foot_pivot_deg": foot_pivot, "hip_rotation_at_range": at_range,
            "wall_s": time.perf_counter() - started}
     a = traj.arrays
     if name in ("phase 4.83", "speed 4.0"):
@@ -96,6 +117,10 @@ def jobs(quick: bool) -> list:
     for r in (20.0, 30.0):             # the gentler turns: where the steering's limit lies
         out.append((f"turn 90 r{r:g}", {"speed": 3.5, "course": 1, "turn_angle": math.pi / 2, "turn_radius": r,
                                         "turn_after": 25.0}, 32.0))
+    # the same tight courses at 3.0 m/s, where the stance foot does not pivot at toe-off
+    out.append(("turn 90 v3", {"speed": 3.0, "course": 1, "turn_angle": math.pi / 2, "turn_radius": 10.0,
+                               "turn_after": 25.0}, 24.0))
+    out.append(("eight v3", {"speed": 3.0, "course": 2, "turn_radius": 10.0, "turn_after": 25.0}, 40.0))
     return out
 
 
@@ -105,15 +130,16 @@ def fmt(x, digits=2):
 
 def results_markdown(res: dict) -> str:
     lines = ["Measured by `python3 scripts/running_report.py` (man, human strength, every run from the standing pose).", ""]
-    lines += ["| commanded m/s | outcome | mean speed, last 10 s | error | steps/s | step length m | stance/step % | stance hip yaw at its limit, % of stance (last 5 s) |",
-              "| --- | --- | --- | --- | --- | --- | --- | --- |"]
+    lines += ["| commanded m/s | outcome | mean speed, last 10 s | error | steps/s | step length m | stance/step % | stance hip yaw at its limit, % of stance (last 5 s) | stance foot's turn on the ground, deg, mean per stance (last 5 s) | stances whose hip rotation reaches its ±45° range, % (last 5 s) |",
+              "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"]
     for v in SPEEDS:
         r = res[f"speed {v}"]
         g = r["gait"]
         err = (g["mean_speed"] - v) / v * 100
         outcome = r["outcome"] if r["outcome"] == "success" else f"fell at {r['fall_time']:.1f} s"
         lines.append(f"| {v} | {outcome} | {fmt(g['mean_speed'])} | {err:+.1f} % | {fmt(g['step_frequency'])} | "
-                     f"{fmt(g['step_length'])} | {fmt(g['stance_fraction'], 1)} | {fmt(r['hip_yaw_saturated'], 0)} |")
+                     f"{fmt(g['step_length'])} | {fmt(g['stance_fraction'], 1)} | {fmt(r['hip_yaw_saturated'], 0)} | "
+                     f"{fmt(r['foot_pivot_deg'], 0)} | {fmt(r['hip_rotation_at_range'], 0)} |")
     lines += ["", "Gait at 4.83 m/s beside Hodgins & Pollard 1997, Fig. 12 (man):", "",
               "| quantity | simulated here | human | error | 1997 simulation |", "| --- | --- | --- | --- | --- |"]
     g = res["phase 4.83"]["gait"]
@@ -133,11 +159,14 @@ def results_markdown(res: dict) -> str:
                        ("eight", "figure eight, loops of radius 10 m, at 3.5 m/s"),
                        ("circle 40", "circle of radius 40 m at 3.5 m/s"),
                        ("turn 90 r20", "90° left turn, radius 20 m, at 3.5 m/s (32 s)"),
-                       ("turn 90 r30", "90° left turn, radius 30 m, at 3.5 m/s (32 s)")):
+                       ("turn 90 r30", "90° left turn, radius 30 m, at 3.5 m/s (32 s)"),
+                       ("turn 90 v3", "90° left turn, radius 10 m, at 3.0 m/s"),
+                       ("eight v3", "figure eight, loops of radius 10 m, at 3.0 m/s")):
         r = res[key]
         lines.append(f"| {label} | {r['outcome'] if r['outcome'] == 'success' else 'fell at %.1f s' % r['fall_time']} | lateral deviation "
                      f"mean {fmt(r['path_deviation_mean'])} m, max {fmt(r['path_deviation_max'])} m (goal: mean < 0.3 m); "
-                     f"stance hip yaw at its 100 N m limit in {fmt(r['hip_yaw_saturated'], 0)} % of stance in the last 5 s |")
+                     f"stance hip yaw at its 100 N m limit in {fmt(r['hip_yaw_saturated'], 0)} % of stance, the stance foot turning "
+                     f"{fmt(r['foot_pivot_deg'], 0)}° on the ground per stance, in the last 5 s |")
     for v in (3.0, 4.5):
         r = res.get(f"long {v}")
         if r:

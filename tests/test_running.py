@@ -171,6 +171,23 @@ def test_a_gentle_curve_is_followed(label, params, duration):
         assert abs(heading - expected) < 0.3
 
 
+@pytest.mark.parametrize("label, params, duration", [
+    ("90-degree turn r = 10 m at 3.0 m/s", dict(course=1, turn_angle=math.pi / 2, turn_radius=10.0, turn_after=25.0), 24.0),
+    ("figure eight r = 10 m at 3.0 m/s", dict(course=2, turn_radius=10.0, turn_after=25.0), 40.0),
+])
+def test_tight_courses_are_followed_at_3_m_s(label, params, duration):
+    """The courses of test_steering_along_a_path at 3.0 m/s, where the stance foot does not pivot
+    at toe-off (docs/running.md, Limitations: Steering): no fall, on the path."""
+    traj = run_running(duration, speed=3.0, **params)
+    m = traj.meta["metrics"]
+    assert not_fallen(traj), f"{label}: fell at {m['fall_time']} s"
+    print(f"{label}: lateral deviation mean {m['path_deviation_mean']:.3f} m, max {m['path_deviation_max']:.3f} m")
+    assert m["path_deviation_mean"] < PATH_DEVIATION_GOAL
+    if params["course"] == 1:                      # left the curve running in the new direction
+        heading = math.atan2(*traj.arrays["com_vel"][-1, 1::-1])
+        assert abs(heading - params["turn_angle"]) < 0.3
+
+
 def test_a_tuned_row_replaces_only_its_speed():
     """The tuner scores a candidate row inside the stored table (what it scores is what it writes)."""
     table = SpeedTable([2.5, 4.0], {"thrust_time": [0.2, 0.4], "idle_knee": [1.0, 2.0]})
