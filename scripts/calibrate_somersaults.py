@@ -39,7 +39,7 @@ DURATION = 5.0
 DRIFT_GOAL = 0.009          # angular momentum drift in flight the search aims below (the test's limit is 1 %)
 SPACE = {  # name: (low, high) per direction
     "crouch_height": {"backward": (0.5, 0.9), "forward": (0.5, 0.9)},   # lower: the pelvis below half its standing height (a fall)
-    "crouch_pitch": {"backward": (-0.3, 1.2), "forward": (0.0, 1.5)},
+    "crouch_pitch": {"backward": (-0.3, 1.5), "forward": (0.0, 1.5)},
     "com_offset": {"backward": (-0.2, 0.05), "forward": (-0.05, 0.2)},
     "thrust_lean": {"backward": (-0.1, 0.1), "forward": (-0.1, 0.1)},
     "liftoff_hip": {"backward": (0.0, 2.0), "forward": (-2.0, 0.5)},
