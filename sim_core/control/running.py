@@ -61,6 +61,7 @@ SCHEDULED_CONSTANTS = {
     "swing_fold": (0.0, 2.0),          # knee flexion per radian the swinging thigh lags its touchdown angle
     "yaw_first": (0.0, 1.0),           # share of the roll torque given up to keep the hip's rotation axis in range
     "yaw_gain": (0.5, 1.5),            # scale of the stance hip's yaw servo gains
+    "twist_damping": (0.0, 30.0),      # N m s/rad: the stance hip's rotation damped about its own rate (the foot's pivot)
 }
 
 # states of the active leg (Hodgins 1995 Fig. 3)
@@ -81,7 +82,7 @@ FALLBACK_TABLE = {"ground_speed_matching": 0.010, "stance_pitch": 0.100, "thrust
                   "ankle_extension": 0.658, "knee_extension": 0.307, "speed_gain": 0.073,
                   "touchdown_leg": 0.902, "idle_knee": 1.474,
                   "thrust_damping": 1.0, "unloading_after": 0.556, "place_back": 0.187, "swing_fold": 0.0,
-                  "yaw_first": 0.0, "yaw_gain": 1.0}
+                  "yaw_first": 0.0, "yaw_gain": 1.0, "twist_damping": 0.0}
 
 
 class SpeedTable:
@@ -511,6 +512,8 @@ class Running(Behaviour):
             for key, tau in zip(("hy", "hx", "hz"), taus):
                 j_ = ja[key]
                 tau *= share
+                if key == "hz" and p["twist_damping"] > 0:
+                    tau -= p["twist_damping"] * qd[j_]
                 targets[j_] = q[j_] + (tau + kv[j_] * qd[j_]) / kp[j_]
             if state in (LOADING, HEEL):
                 targets[ja["knee"]] = self.knee_touchdown
