@@ -16,8 +16,10 @@ placement) minimises, with every quantity read off the simulated somersault,
 (rotation: the pelvis's turn from the standing start to the end of the run; flight rotation: from
 lift-off to touchdown; drift: of the whole-body angular momentum in flight, which must stay within
 1 % - fast moves in the 1 ms step let it drift; a run that falls later after touching down scores
-better than one that falls at once). A run counts as found only with the drift below 1 %. A somersault that ended balanced is kept with its measurements; where none did,
+better than one that falls at once). A run counts as found only with the drift below 0.9 %. A somersault that ended balanced is kept with its measurements; where none did,
 the best run is recorded under "not_found" and the behaviour refuses that somersault with it.
+The search goes on until it has found a few somersaults (ROBUST_CANDIDATES) and keeps the one
+whose eight neighbours (lift-off hip angle and landing lean +-0.02 rad) land most often.
 
     python3 scripts/calibrate_somersaults.py --character man --direction backward --strength unlimited
     python3 scripts/calibrate_somersaults.py --character woman --direction forward --iterations 20
@@ -91,6 +93,7 @@ def search(character: str, direction: str, strength: str, iterations: int, popul
     rng = np.random.default_rng(seed)
     mean, std = np.clip([start[n] for n in names], low, high), 0.12 * (high - low)
     best = (np.inf, None, None)
+    successes = []
     for iteration in range(iterations):
         samples = np.clip(rng.normal(mean, std, size=(population, len(names))), low, high)
         if iteration == 0:
@@ -100,6 +103,8 @@ def search(character: str, direction: str, strength: str, iterations: int, popul
             settings = {n: round(float(v), 4) for n, v in zip(names, x)}
             score, m = evaluate(character, direction, strength, settings)
             scored.append((score, x))
+            if found(m):
+                successes.append((score, settings, m))
             if score < best[0]:
                 best = (score, settings, m)
                 if verbose:
@@ -111,13 +116,38 @@ def search(character: str, direction: str, strength: str, iterations: int, popul
         print(f"  {character} {direction} ({strength}) iteration {iteration + 1}/{iterations}: best score "
               f"{best[0]:.3f} ({m['outcome']}, rotation {m['rotation']:.2f} rad, flight {m['flight_rotation'] or 0:.2f} rad, "
               f"take-off H {m['liftoff_angular_momentum'] or 0:.1f} kg m^2/s)", flush=True)
-        if found(m):
+        if len(successes) >= ROBUST_CANDIDATES or (successes and iteration == iterations - 1):
             break
-    return best
+    return most_robust(character, direction, strength, successes) if successes else best
+
+
+ROBUST_CANDIDATES = 4        # somersaults found before choosing among them
+ROBUST_STEP = 0.02           # rad: the neighbours' change of the lift-off hip angle and the landing lean
+
+
+def most_robust(character: str, direction: str, strength: str, successes: list) -> tuple[float, dict, dict]:
+    """Of the somersaults found (the best few by score), the one whose eight neighbours (lift-off hip
+    angle and landing lean +-0.02 rad, the settings the outcome is most sensitive to) succeed most
+    often, then by score: a table entry that still lands when the state at take-off differs a little."""
+    ranked = []
+    for score, settings, m in sorted(successes, key=lambda s: s[0])[:ROBUST_CANDIDATES]:
+        neighbours = 0
+        for dh in (-ROBUST_STEP, 0.0, ROBUST_STEP):
+            for dl in (-ROBUST_STEP, 0.0, ROBUST_STEP):
+                if dh or dl:
+                    near = dict(settings, liftoff_hip=settings["liftoff_hip"] + dh,
+                                landing_lean=settings["landing_lean"] + dl)
+                    neighbours += found(evaluate(character, direction, strength, near)[1])
+        print(f"    candidate score {score:.3f}: {neighbours}/8 neighbours succeed", flush=True)
+        ranked.append((-neighbours, score, settings, dict(m, neighbours_succeeding=neighbours)))
+    _, score, settings, m = min(ranked, key=lambda r: (r[0], r[1]))
+    return score, settings, m
 
 
 def found(m: dict) -> bool:
-    return m["outcome"] == "success" and (m["angular_momentum_drift"] or 0.0) < 0.01
+    """Balanced at the end, with the flight's angular momentum drift inside DRIFT_GOAL (a margin
+    below the 1 % the tests ask for)."""
+    return m["outcome"] == "success" and (m["angular_momentum_drift"] or 0.0) < DRIFT_GOAL
 
 
 def write_table(character: str, table: dict) -> None:
