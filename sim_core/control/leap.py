@@ -230,7 +230,7 @@ class Landing(Behaviour):
         self.shoulders = s.indices(["shoulder_r_z", "shoulder_l_z"])
         self.arm_from = s.smoothed_target(t)[self.shoulders].copy()
         self.arm_to = np.array([1.0, -1.0]) * self.params["arm_flexion"]
-        self.arm_t0 = t
+        self.started_at = t
         self.blend_from = s.smoothed_target(t).copy()
         self.event(t, "flight")
 
@@ -315,6 +315,11 @@ class Landing(Behaviour):
                 self.stage == "absorb" and t - self.touchdown_at > ABSORB_TIME)):
             self.finished_at = t
         knee = self._flight_knee(vx) if self.stage == "flight" else None
+        spin_offset = 0.0
+        if self.stage == "flight" and p["spin_placement"]:
+            # against the somersault angular momentum (about the body's lateral axis), per unit mass
+            h = d.subtree_angmom[self.pelvis]
+            spin_offset = p["spin_placement"] * (-sn * float(h[0]) + c * float(h[1])) / self.mass
         for k in (0, 1):
             j = self.idx[k]
             f = d.xmat[self.feet[k]].tolist()
@@ -338,10 +343,7 @@ class Landing(Behaviour):
                 self.last_fx[k] = fx
                 if self.calibrated_delta is None:          # the horizontal and touchdown speeds of this flight
                     self.calibrated_delta = calibrated_foot_delta(self.ctx.character.name, vx, touchdown_speed)
-                wanted = vx * p["foot_lead_time"] + self.calibrated_delta + p["foot_delta"]
-                if p["spin_placement"]:
-                    spin = -sn * float(d.subtree_angmom[self.pelvis][0]) + c * float(d.subtree_angmom[self.pelvis][1])
-                    wanted += p["spin_placement"] * spin / self.mass
+                wanted = vx * p["foot_lead_time"] + self.calibrated_delta + p["foot_delta"] + spin_offset
                 hip = d.xpos[self.hips[k]]
                 hip_from_com = c * (hip[0] - com[0]) + sn * (hip[1] - com[1])
                 thigh_pitch = self.leg.thigh_pitch_for(wanted - self.sole_centre - hip_from_com, knee)
@@ -357,8 +359,8 @@ class Landing(Behaviour):
                     targets[j["knee"]] = self.knees_touched_at[k]
                 else:
                     targets[j["knee"]] = self.knees_stopped_at[k]
-        if p["blend_time"] and t - self.arm_t0 < p["blend_time"]:
-            share = hermite_scalar((t - self.arm_t0) / p["blend_time"])
+        if p["blend_time"] and t - self.started_at < p["blend_time"]:
+            share = hermite_scalar((t - self.started_at) / p["blend_time"])
             targets = self.blend_from + (targets - self.blend_from) * share
         if self.torque_cap is not None:
             # the servo's torque kp (target - q) - kv dq kept within the human limits by the target
@@ -369,7 +371,7 @@ class Landing(Behaviour):
             torque = np.clip(kp * (targets[legs] + s.offset[legs] - q) - kv * dq, -cap, cap)
             targets[legs] = q + (torque + kv * dq) / kp - s.offset[legs]
         if p["swing_arms"]:
-            swing = hermite_scalar((t - self.arm_t0) / p["arm_time"])
+            swing = hermite_scalar((t - self.started_at) / p["arm_time"])
             targets[self.shoulders] = self.arm_from + (self.arm_to - self.arm_from) * swing
         s.hold(targets, t)
 
@@ -470,11 +472,16 @@ DEFAULT_MAPPING = {
 }
 
 
-def vertical_key(ctx: ControlContext) -> str:
-    """The vertical-leap table for this run's strength: "vertical" for the human torque limits (or
-    a factor of them), "vertical_unlimited" when the leg servos have no torque limit."""
+def run_strength(ctx: ControlContext) -> str:
+    """The strength a calibration is kept under: "human" for the human torque limits (or a factor
+    of them), "unlimited" when the leg servos have no torque limit."""
     knee = ctx.servos.index["knee_r_y"]
-    return "vertical" if ctx.model.actuator_forcelimited[knee] else "vertical_unlimited"
+    return "human" if ctx.model.actuator_forcelimited[knee] else "unlimited"
+
+
+def vertical_key(ctx: ControlContext) -> str:
+    """The vertical-leap table for this run's strength: "vertical" or "vertical_unlimited"."""
+    return "vertical" if run_strength(ctx) == "human" else "vertical_unlimited"
 
 
 def load_mapping(character: str) -> dict:

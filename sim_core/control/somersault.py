@@ -25,7 +25,7 @@ import numpy as np
 
 from sim_core.ballistics import time_to_fall_to
 from sim_core.control.behaviour import register
-from sim_core.control.leap import TUNED_DIR, Landing, balance_after_landing, leap_assess, AIRBORNE_HEIGHT
+from sim_core.control.leap import AIRBORNE_HEIGHT, TUNED_DIR, Landing, balance_after_landing, leap_assess, run_strength
 from sim_core.control.sequencer import Sequence, Step
 from sim_core.control.takeoff import takeoff_steps
 from sim_core.control.tumble import FlightRotation, Tumble, position_inertia, rotation_to_come
@@ -43,10 +43,6 @@ TAKEOFF_SETTINGS = ("crouch_height", "crouch_pitch", "com_offset", "thrust_lean"
 LANDING_SETTINGS = ("landing_lean", "open_time", "open_blend", "landing_knee_flexion", "foot_delta",
                     "foot_lead_time", "spin_placement")
 SETTINGS = TAKEOFF_SETTINGS + LANDING_SETTINGS
-
-
-def strength_key(strength) -> str:
-    return "unlimited" if strength == "unlimited" else "human"
 
 
 def load_table(character: str) -> dict:
@@ -108,26 +104,22 @@ class Somersault(Sequence):
     def direction_name(self) -> str:
         return DIRECTIONS[int(round(self.params["direction"]))]
 
-    def _strength(self) -> str:
-        knee = self.ctx.servos.index["knee_r_y"]
-        return "human" if self.ctx.model.actuator_forcelimited[knee] else "unlimited"
-
     def settings(self) -> dict:
         p = self.params
         if p["low_level"]:
             return {k: p[k] for k in SETTINGS}
-        return dict(calibrated(self.ctx.character.name, self.direction_name, self._strength())["settings"])
+        return dict(calibrated(self.ctx.character.name, self.direction_name, run_strength(self.ctx))["settings"])
 
     def check_feasible(self) -> None:
         if self.params["low_level"]:
             return
-        name, strength = self.ctx.character.name, self._strength()
-        entry = calibrated(name, self.direction_name, strength)
-        if entry is None:
-            measured = [e for e in load_table(name).get("not_found", [])
+        name, strength = self.ctx.character.name, run_strength(self.ctx)
+        if calibrated(name, self.direction_name, strength) is None:
+            table = load_table(name)
+            measured = [e for e in table.get("not_found", [])
                         if e["direction"] == self.direction_name and e["strength"] == strength]
             why = f" (best searched: {measured[0]['best']})" if measured else ""
-            have = [f"{e['direction']} with {e['strength']} strength" for e in load_table(name)["somersaults"]]
+            have = [f"{e['direction']} with {e['strength']} strength" for e in table["somersaults"]]
             raise ParameterError(
                 f"the {name} has no calibrated {self.direction_name} somersault with "
                 f"{'unlimited strength' if strength == 'unlimited' else 'human torque limits'}: "
@@ -145,7 +137,7 @@ class Somersault(Sequence):
 
         def tuck(t):
             self.rotation.takeoff(t)
-            return Tumble(Tumble.schema.validate(dict(position=TUCK, stiffness=cfg.get("tuck_stiffness", 3.0),
+            return Tumble(Tumble.schema.validate(dict(position=TUCK, stiffness=cfg["tuck_stiffness"],
                                                     move_time=TUCK_MOVE)),
                           ctx, self.rotation)
 
@@ -153,7 +145,7 @@ class Somersault(Sequence):
             return Landing(Landing.schema.validate(dict(
                 knee_flexion=cfg["landing_knee_flexion"], fast_knee_flexion=cfg["landing_knee_flexion"],
                 foot_delta=cfg["foot_delta"], foot_lead_time=cfg["foot_lead_time"],
-                spin_placement=cfg["spin_placement"], blend_time=cfg.get("open_blend", 0.0))), ctx)
+                spin_placement=cfg["spin_placement"], blend_time=cfg["open_blend"])), ctx)
 
         return takeoff_steps(ctx, takeoff) + [
             Step("tuck", tuck, lambda b, t: self.time_to_open()),

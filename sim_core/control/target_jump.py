@@ -34,7 +34,8 @@ from sim_core.analysis import feet_above_surface
 from sim_core.ballistics import GRAVITY
 from sim_core.control.behaviour import register
 from sim_core.control.measure import surface_under
-from sim_core.control.leap import AIRBORNE_HEIGHT, TUNED_DIR, Leap, leap_assess, load_mapping, vertical_key
+from sim_core.control.leap import (AIRBORNE_HEIGHT, TUNED_DIR, Leap, leap_assess, load_mapping, run_strength,
+                                  vertical_key)
 from sim_core.errors import ParameterError
 from sim_core.schema import Parameter, Schema
 
@@ -326,7 +327,7 @@ class JumpToTarget(Leap):
     def request(self) -> dict:
         p = self.params
         request = {k: float(p[k]) for k in REQUEST_KEYS}
-        request["strength"] = "human" if vertical_key(self.ctx) == "vertical" else "unlimited"
+        request["strength"] = run_strength(self.ctx)
         return request
 
     @classmethod
