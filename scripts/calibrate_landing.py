@@ -1,8 +1,10 @@
-"""Calibrate the landing's foot servo delta against horizontal speed (the role of Wooten's
-Table 6.1): for each speed, land from a low and a higher drop with a range of deltas, keep the
-middle of the longest run of neighbouring deltas that end balanced from both drops, and write
-rigs/tuned/landing_<character>.json, which the landing reads. Then the extra delta for fast
-touchdowns (high drops and leaps, vertical touchdown speed above FAST_FROM): the one of
+"""Calibrate the landing's foot servo delta against horizontal speed and touchdown speed (the
+role of Wooten's Table 6.1, which is for one drop height): for each drop of DROPS and each
+horizontal speed, land with a range of deltas and keep the middle of the longest run of
+neighbouring deltas that end balanced (feet staying where they touched down; see leap_assess),
+and write rigs/tuned/landing_<character>.json, which the landing reads: one row per drop, keyed by
+the vertical touchdown speed of that drop, interpolated between them. Then the extra delta for
+fast touchdowns (high drops and leaps, vertical touchdown speed above FAST_FROM): the one of
 FAST_DELTAS that lands the most drops from rest of HIGH_DROPS (the smallest on a tie).
 Rerun after a change to the model or the controllers:
 
@@ -19,13 +21,15 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
+from sim_core.ballistics import GRAVITY                           # noqa: E402
 from sim_core.control.leap import TUNED_DIR                      # noqa: E402
 from sim_core.simulate import RunRequest, StartState, run          # noqa: E402
 
 SPEEDS = [-1.0, -0.5, 0.0, 0.5, 1.0, 1.5, 2.0, 2.5, 3.0]
-DELTAS = [round(-0.16 + 0.04 * k, 2) for k in range(11)]     # -0.16 ... 0.24 m
-DROPS = (0.2, 0.6)           # m above standing: 0.2 puts the COM at about Wooten's 1.25 m (man); 0.6
-                             # lands like a 0.6 m leap (forefoot first)
+DELTAS = [round(-0.3 + 0.02 * k, 2) for k in range(28)]     # -0.30 ... 0.24 m
+DROPS = (0.2, 0.4, 0.6)      # m above standing: 0.2 puts the COM at about Wooten's 1.25 m (man) and
+                             # lands like a standing broad jump (0.45 s in the air); 0.6 lands like a
+                             # 0.6 m leap (forefoot first)
 
 
 FAST_FROM, FAST_RAMP = 3.9, 0.2     # m/s: the extra delta ramps in over this vertical touchdown speed
@@ -47,15 +51,10 @@ def fast_touchdown(character: str, table: dict) -> dict:
 
 
 def trial(args):
-    character, speed, delta = args
-    landed = True
-    for drop in DROPS:
-        traj = run(RunRequest("land", character, params=dict(foot_delta=delta),
-                              start=StartState(height=drop, velocity=(speed, 0.0, 0.0)), duration=3.0))
-        landed = landed and traj.meta["outcome"] == "success"
-        if not landed:
-            break
-    return speed, delta, landed
+    character, drop, speed, delta = args
+    traj = run(RunRequest("land", character, params=dict(foot_delta=delta),
+                          start=StartState(height=drop, velocity=(speed, 0.0, 0.0)), duration=3.0))
+    return drop, speed, delta, traj.meta["outcome"] == "success"
 
 
 def middle_of_longest_run(ok: list[float]) -> float:
@@ -78,18 +77,22 @@ def calibrate(character: str, processes: int) -> dict:
     if path.exists():
         path.unlink()                      # calibrate against no table (delta = the trial's own)
     with Pool(processes) as pool:
-        results = pool.map(trial, [(character, v, d) for v in SPEEDS for d in DELTAS])
-    speeds, deltas, landed = [], [], {}
-    for v in SPEEDS:
-        ok = [d for s, d, success in results if s == v and success]
-        landed[v] = ok
-        print(f"  {character} at {v:+.1f} m/s: balanced with deltas {ok}")
-        if ok:
-            speeds.append(v)
-            deltas.append(round(middle_of_longest_run(ok), 3))
-    return {"character": character, "script": "scripts/calibrate_landing.py", "drops": list(DROPS),
-            "foot_delta": {"speed": speeds, "delta": deltas},
-            "landed": {str(k): v for k, v in landed.items()}}
+        results = pool.map(trial, [(character, h, v, d) for h in DROPS for v in SPEEDS for d in DELTAS])
+    rows, landed = [], {}
+    for h in DROPS:
+        speeds, deltas = [], []
+        landed[str(h)] = {}
+        for v in SPEEDS:
+            ok = [d for drop, s, d, success in results if drop == h and s == v and success]
+            landed[str(h)][str(v)] = ok
+            print(f"  {character} drop {h:.1f} m at {v:+.1f} m/s: balanced with deltas {ok}")
+            if ok:
+                speeds.append(v)
+                deltas.append(round(middle_of_longest_run(ok), 3))
+        rows.append({"drop": h, "touchdown_speed": round((2.0 * GRAVITY * h) ** 0.5, 3),
+                     "speed": speeds, "delta": deltas})
+    return {"character": character, "script": "scripts/calibrate_landing.py", "foot_delta": rows,
+            "landed": landed}
 
 
 def main() -> int:
@@ -103,7 +106,8 @@ def main() -> int:
         path = TUNED_DIR / f"landing_{character}.json"
         table["fast_touchdown"] = fast_touchdown(character, table)
         path.write_text(json.dumps(table, indent=1) + "\n")
-        print(f"wrote {path.relative_to(ROOT)}: speeds {table['foot_delta']['speed']}")
+        for row in table["foot_delta"]:
+            print(f"wrote {path.relative_to(ROOT)}: drop {row['drop']} m, speeds {row['speed']}")
     return 0
 
 

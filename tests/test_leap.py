@@ -29,15 +29,18 @@ def test_drop_landing_ends_balanced(name, height):
     assert m["final_pelvis_height"] > (0.85 if name == "man" else 0.75)      # stood back up
 
 
-LANDED_SPEEDS = {"man": (-1.0, 2.0), "woman": (-0.5, 2.0)}      # m/s: measured range, TARGETS.md -1 .. +3
+LANDED_SPEEDS = {"man": (-1.0, 3.0), "woman": (-0.5, 3.0)}      # m/s: measured range, TARGETS.md -1 .. +3
 
 
 @pytest.mark.parametrize("name", ["man", "woman"])
-@pytest.mark.parametrize("speed", [-1.0, 1.5, 2.0, 2.5, 3.0])
+@pytest.mark.parametrize("speed", [-1.0, -0.5, 0.5, 1.0, 1.5, 2.0, 2.5, 3.0])
 def test_landing_with_horizontal_speed_ends_balanced(name, speed):
     """TARGETS.md: landings with horizontal COM speed -1 .. +3 m/s end balanced (0.2 m drop, the
-    report's case). Above 1 m/s the legs are held straighter in flight (fast_knee_flexion)."""
+    report's case). Above 1 m/s the legs are held straighter in flight (fast_knee_flexion).
+    Balanced includes the feet staying where they touched down (a hop back under the body to
+    catch the COM is a skid, not a landing)."""
     traj = run(RunRequest("land", name, start=StartState(height=0.2, velocity=(speed, 0.0, 0.0)), duration=3.0))
+    assert traj.meta["outcome"] != "success" or traj.meta["metrics"]["landing_skid"] <= 0.05
     low, high = LANDED_SPEEDS[name]
     if not low <= speed <= high:
         pytest.xfail(f"{name} at {speed:+.1f} m/s: {traj.meta['outcome']} (lands {low:+.1f} .. {high:+.1f} m/s)")

@@ -59,6 +59,10 @@ TOE_POINT_MAX = 0.5             # like a person landing from a height (0 = feet 
 FAST_LANDING_SPEED = (1.0, 1.5)  # m/s of horizontal COM speed over which the flight knee eases to the fast one
 TOE_FADE_SPEED = (0.5, 1.5)     # m/s of horizontal COM speed over which the toe-down pitch fades out
 UP = np.array([0.0, 0.0, 1.0])
+SETTLE_TIME = 0.15              # s after the last touchdown by which the feet have settled (the heels
+                                # coming down after a toe-first landing)
+LANDING_SKID_LIMIT = 0.05       # m: the middle of the feet moving further than this between the first
+                                # touchdown and settling is a skid (feet dragged or bounced), not a landing
 LANDING_TORQUE_LIMIT = 1.0      # landing joints use at most this share of the human torque limits,
                                 # whatever the model's strength (stiffer legs land harder, not better)
 
@@ -396,18 +400,26 @@ class Land(Sequence):
 
 
 def balance_after_landing(ctx: ControlContext) -> Balance:
-    """Balance that starts from the landed crouch (height and pelvis pitch) and stands up."""
+    """Balance that starts from the landed crouch and stands up. The crouch is the one whose
+    hip-to-ankle distance is the landed legs' (the balance's knees servo that distance): with the
+    feet landed ahead of the hips, the vertical height would name a shorter leg, and the knees
+    would snap up to it and pull the feet off the ground."""
     d, m = ctx.data, ctx.model
     hips = 0.5 * (d.xpos[m.body("ULEGR").id] + d.xpos[m.body("ULEGL").id])
     feet = 0.5 * (d.xpos[m.body("FOOTR").id] + d.xpos[m.body("FOOTL").id])
-    height = float(hips[2] - feet[2]) + float(ctx.character.joint_position("FOOTR")[2])
+    stand = 0.5 * sum(LegGeometry(ctx.character, side).standing_hip_height() for side in "RL")
+    crouch = CrouchTable(m, ctx.character, np.linspace(0.5 * stand, stand, 6), stand)
+    leg_length = float(np.linalg.norm(hips - feet))
+    height = float(np.interp(leg_length, crouch.table[:, 4], crouch.heights))
     return Balance(Balance.schema.validate(dict(move_start=0.0, move_time=1.2, return_to_stand=0)), ctx,
                    from_height=height)
 
 
 def leap_assess(trajectory) -> tuple[str, dict]:
-    """Outcome of a skill with a flight phase: no fall, ends still and standing; measured COM
-    rise and travel, flight time, peak vertical ground reaction force (body weights)."""
+    """Outcome of a skill with a flight phase: no fall, the feet stay where they touched down
+    (``landing_skid``: the middle of the feet moves at most LANDING_SKID_LIMIT until they settle),
+    ends still and standing; measured COM rise and travel, flight time, peak vertical ground
+    reaction force (body weights)."""
     metrics = standard_metrics(trajectory)
     a = trajectory.arrays
     flying = feet_above_surface(trajectory).min(axis=1) > AIRBORNE_HEIGHT
@@ -428,18 +440,27 @@ def leap_assess(trajectory) -> tuple[str, dict]:
         metrics["liftoff_angular_momentum"] = float(a["angmom"][first, 1])
         metrics["liftoff_horizontal_speed"] = float(a["com_vel"][first, 0])
         after = a["support_points"][last + 1:, :, :2]
+        settle = min(int(SETTLE_TIME * trajectory.meta["control_rate"]), len(after) - 1)
         metrics["foot_slide_after_landing"] = float(
-            np.linalg.norm(after - after[min(int(0.15 * trajectory.meta["control_rate"]), len(after) - 1)], axis=2).max()
-        ) if len(after) else 0.0
+            np.linalg.norm(after - after[settle], axis=2).max()) if len(after) else 0.0
+        # the middle of the feet from the first touchdown until they have settled: feet that skate
+        # or bounce back under the body have not landed where they touched down
+        down = ~flying[first:]
+        first_touchdown = first + int(np.argmax(down)) if down.any() else len(t) - 1
+        middle = a["support_points"][first_touchdown:last + 2 + settle, :, :2].mean(axis=1)
+        metrics["landing_skid"] = float(np.linalg.norm(middle - middle[0], axis=1).max())
     else:
         metrics["flight_time"] = 0.0
         metrics["foot_slide_after_landing"] = 0.0
+        metrics["landing_skid"] = 0.0
     if metrics["fell"]:
         return "fell", metrics
     if metrics["flight_time"] == 0.0 and trajectory.meta["behaviour"] != "land":
         return "no_flight", metrics
     if metrics["foot_slide_after_landing"] > 0.05:
         return "stepped", metrics
+    if metrics["landing_skid"] > LANDING_SKID_LIMIT:
+        return "skidded", metrics
     if metrics["final_com_speed"] >= 0.1:
         return "not_still", metrics
     return "success", metrics
@@ -447,14 +468,18 @@ def leap_assess(trajectory) -> tuple[str, dict]:
 
 def calibrated_foot_delta(character: str, horizontal_speed: float, touchdown_speed: float = 0.0) -> float:
     """Foot servo delta from scripts/calibrate_landing.py's table (0 where there is none): for
-    the horizontal speed, plus the extra for a fast touchdown (a high drop or leap), which ramps
-    in from ``speed`` over ``ramp`` m/s of expected vertical touchdown speed."""
+    the horizontal speed, from the rows of the drops whose vertical touchdown speed is nearest
+    (interpolated between them), plus the extra for a fast touchdown (a high drop or leap), which
+    ramps in from ``speed`` over ``ramp`` m/s of expected vertical touchdown speed."""
     path = TUNED_DIR / f"landing_{character}.json"
     if not path.exists():
         return 0.0
     table = json.loads(path.read_text())
-    by_speed = table["foot_delta"]
-    delta = float(np.interp(horizontal_speed, by_speed["speed"], by_speed["delta"]))
+    rows = [row for row in table["foot_delta"] if row["speed"]]
+    if not rows:
+        return 0.0
+    by_drop = [float(np.interp(horizontal_speed, row["speed"], row["delta"])) for row in rows]
+    delta = float(np.interp(touchdown_speed, [row["touchdown_speed"] for row in rows], by_drop))
     fast = table.get("fast_touchdown")
     if fast:
         delta += fast["delta"] * min(max((touchdown_speed - fast["speed"]) / fast["ramp"], 0.0), 1.0)

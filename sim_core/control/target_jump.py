@@ -146,8 +146,9 @@ def target_params(character, point) -> dict:
 
 
 def landing_measures(trajectory) -> dict:
-    """Read off a jump: the middle of the feet at the start and at touchdown, air time, wind-up
-    time (first move to lift-off), and the outcome."""
+    """Read off a jump: the middle of the feet at the start and at touchdown (TARGETS.md's landing
+    point; a success also keeps the feet within LANDING_SKID_LIMIT of it until they settle, see
+    leap_assess), air time, wind-up time (first move to lift-off), and the outcome."""
     a = trajectory.arrays
     feet = a["support_points"]
     flying = feet_above_surface(trajectory).min(axis=1) > AIRBORNE_HEIGHT
