@@ -301,9 +301,7 @@ class Balance(Behaviour):
         # the fast hip strategy answers the COM speed the ankles cannot stop (trunk against legs)
         # (forward only: bending at the hips stops a forward fall; leaning the trunk back to stop
         # a backward one tips a character that is already behind its heels)
-        # (speed that carries a COM from behind the centre of the feet back towards it is not an
-        # excess: after a landing with the feet ahead, the COM is meant to come forward over them)
-        velocity_excess = max(min(velocity_x, delta_x) - self.ankle_limit_front, 0.0)
+        velocity_excess = max(velocity_x - self.ankle_limit_front, 0.0)
         hip_x = -HIP_SHARE * velocity_x - EXCESS_TO_HIP * velocity_excess
         hip_x = min(max(hip_x, -HIP_STRATEGY_MAX), HIP_STRATEGY_MAX)
         delta_y = kp * (-s * gx + c * gy - centre_y - posture[3]) + kv * (-s * vx + c * vy)  # eq. 7.2
