@@ -1,6 +1,8 @@
-"""Calibrate the vertical leap (the role of Wooten's Table 4.1). For each crouch height and thrust
-damping (less damping extends the legs faster and leaps higher), and for each strength (human
-torque limits; unlimited, as the thesis ran):
+"""Calibrate the vertical leap (the role of Wooten's Table 4.1) and the standing broad jump (the
+role of Table 4.2).
+
+Vertical leap: for each crouch height and thrust damping (less damping extends the legs faster
+and leaps higher), and for each strength (human torque limits; unlimited, as the thesis ran):
   1. find the lift-off hip angle and crouch COM offset that leave the ground with no somersault
      (angular momentum about the COM ~ 0) and no drift (horizontal COM speed ~ 0), by Newton's
      method on thrust-only runs;
@@ -8,10 +10,20 @@ torque limits; unlimited, as the thesis ran):
      whether it lands balanced.
 Writes the mapping commanded rise -> crouch height, thrust damping, COM offset, neutral lift-off
 hip angle to rigs/tuned/leap_<character>.json ("vertical": human torque limits,
-"vertical_unlimited": unlimited strength), which the leap behaviour interpolates. Rerun after any
-change to the model or the controllers:
+"vertical_unlimited": unlimited strength), which the leap behaviour interpolates.
 
-    python scripts/calibrate_leap.py [--character man woman] [--processes 1] [--only vertical]
+Broad jump: the distance is not smooth in the leap's settings (the thrust starts on a tipping
+condition), so each distance of BROAD_DISTANCES is planned by simulation as a jump to a point on
+the ground straight ahead (sim_core/control/target_jump.py's planner: crouch, lean, thrust, arm
+swing, lift-off hip angle and the landing's settings) with the air time of the report's targets
+(GROUND_AIR_TIME: the request scripts/plan_jumps.py makes for a forward target, whose stored plan
+is reused when its best trial ended balanced; new plans are stored there too); the whole leap is
+then run with the plan's settings and kept as a row (measured COM travel - within a few cm of the
+landing point - and the leap's low-level parameters) if it ends balanced.
+The behaviour runs the row nearest the commanded distance. Rerun after any change to the model
+or the controllers:
+
+    python scripts/calibrate_leap.py [--character man woman] [--processes 1] [--only vertical broad]
 """
 from __future__ import annotations
 
@@ -27,9 +39,11 @@ sys.path.insert(0, str(ROOT))
 import numpy as np                                              # noqa: E402
 
 from sim_core.control.leap import AIRBORNE_HEIGHT, TUNED_DIR   # noqa: E402
+from sim_core.control.target_jump import (GROUND_AIR_TIME, leap_params, plan_jump, store_plan,  # noqa: E402
+                                          stored_plan)
 from sim_core.simulate import RunRequest, run                   # noqa: E402
 
-CROUCH_FRACTIONS = (0.9, 0.85, 0.8, 0.75, 0.7, 0.66, 0.62, 0.59)   # of the standing hip height
+CROUCH_FRACTIONS = (0.9, 0.875, 0.85, 0.825, 0.8, 0.775, 0.75, 0.725, 0.7, 0.68, 0.66, 0.64, 0.62, 0.59)   # of the standing hip height
 CROUCH_FRACTIONS_FAST = (0.75, 0.7, 0.66, 0.62, 0.59, 0.56, 0.53, 0.5)
 # table -> (strength, [(thrust damping, crouch fractions)])
 VERTICAL_TABLES = {
@@ -126,39 +140,63 @@ def trial(args):
     return result
 
 
-BROAD_OFFSETS = tuple(round(0.04 + 0.01 * k, 3) for k in range(15))      # 0.04 ... 0.18 m
-BROAD_HIPS = (0.3, 0.5)
-BROAD_CROUCH = 0.7           # of the standing hip height
+BROAD_DISTANCES = {"man": (0.3, 0.4, 0.5, 0.75, 1.0, 1.3, 1.6, 1.9, 2.1),      # m: TARGETS.md's ranges
+                   "woman": (0.3, 0.5, 0.75, 1.0, 1.3, 1.6)}
+BROAD_WINDUP = 1.25          # s: first move to lift-off
+BROAD_TRIALS = 200           # simulated jumps the planner may run per distance
+BROAD_AIM_TOLERANCE = 0.05   # share of the distance the COM travel may miss by before the feet are re-aimed
 
 
-def broad_trial(args):
-    character, crouch_height, offset, hip = args
-    params = dict(low_level=1, distance=1.0, crouch_height=crouch_height, crouch_pitch=0.0, com_offset=offset,
-                  liftoff_hip_angle=hip, arm_swing=ARM_SWING)
-    traj = run(RunRequest("leap", character, params=params, duration=LEAP_DURATION))
+def broad_leap(character: str, aim: float) -> tuple[dict, dict, object]:
+    """The planned jump to ``aim`` m straight ahead (GROUND_AIR_TIME; scripts/plan_jumps.py makes the
+    same request for its forward targets, and its best trial serves if it ended balanced, whether or
+    not it met the air time - a broad jump asks only for the distance), run as a leap."""
+    target = (aim, 0.0, 0.0)
+    request = {"target_x": aim, "target_y": 0.0, "target_z": 0.0, "air_time": GROUND_AIR_TIME,
+               "windup_time": BROAD_WINDUP, "strength": "human"}
+    plan = stored_plan(character, request)
+    if not (plan and plan["measured"]["outcome"] == "success"):
+        plan = plan_jump(character, target, GROUND_AIR_TIME, BROAD_WINDUP, trials=BROAD_TRIALS)
+        store_plan(character, request, plan, "scripts/calibrate_leap.py")
+    params = leap_params(plan["settings"], target, BROAD_WINDUP)
+    traj = run(RunRequest("leap", character, params=params, duration=BROAD_WINDUP + GROUND_AIR_TIME + 2.5))
     m = traj.meta["metrics"]
-    return {"crouch_height": crouch_height, "com_offset": offset, "liftoff_hip": hip,
-            "com_travel": m["com_travel"], "outcome": traj.meta["outcome"]}
+    print(f"  {character} broad, aiming the feet at {aim:.3f} m: plan {'found' if plan['found'] else 'not found'} "
+          f"in {plan['trials']} trials, lands at {plan['measured']['landing'][0]:.3f} m; leap -> COM travel "
+          f"{m['com_travel']:.3f} m, {traj.meta['outcome']}", flush=True)
+    return plan, params, traj
 
 
-def calibrate_broad(character: str, stand: float, pool) -> dict:
-    """Broad jump (the role of Table 4.2): the COM leans forward in the crouch until it has left
-    the middle of the feet, then the thrust; a grid over COM offset and lift-off hip angle, keep the
-    jumps that land balanced, monotonic in distance."""
-    crouch = round(BROAD_CROUCH * stand, 3)
-    results = pool.map(broad_trial, [(character, crouch, o, h) for o in BROAD_OFFSETS for h in BROAD_HIPS])
-    for r in results:
-        print(f"  {character} broad: offset {r['com_offset']:.2f} m, hip {r['liftoff_hip']:+.1f} rad -> "
-              f"travel {r['com_travel']:.3f} m, {r['outcome']}")
-    # the travel is not smooth in the settings (the thrust starts on a tipping condition), so the
-    # behaviour picks the nearest calibrated jump rather than interpolating: keep every one that
-    # landed, in order of distance
-    rows = sorted((r for r in results if r["outcome"] == "success" and r["com_travel"] > 0.1),
-                  key=lambda r: r["com_travel"])
-    return {"com_travel": [r["com_travel"] for r in rows], "crouch_height": [r["crouch_height"] for r in rows],
-            "torso_pitch": [0.0 for _ in rows], "com_offset": [r["com_offset"] for r in rows],
-            "liftoff_hip": [r["liftoff_hip"] for r in rows], "arm_swing": [ARM_SWING for _ in rows],
-            "trials": results}
+def broad_row(args) -> dict:
+    """Plan one broad jump and run it as a leap: the row for the COM travel it measured. The COM ends
+    a few cm past the feet's landing point (the stand-up); when that takes it more than
+    BROAD_AIM_TOLERANCE of the distance away, the feet are aimed short by that much and it is
+    planned again (the nearer of the two is kept)."""
+    character, distance = args
+    plan, params, traj = broad_leap(character, distance)
+    m = traj.meta["metrics"]
+    overshoot = m["com_travel"] - plan["measured"]["landing"][0]
+    if traj.meta["outcome"] == "success" and abs(m["com_travel"] - distance) > BROAD_AIM_TOLERANCE * distance:
+        again = broad_leap(character, round(distance - overshoot, 3))
+        if again[2].meta["outcome"] == "success" and \
+                abs(again[2].meta["metrics"]["com_travel"] - distance) < abs(m["com_travel"] - distance):
+            plan, params, traj = again
+            m = traj.meta["metrics"]
+    kept = traj.meta["outcome"] == "success"      # a row for the distance it travelled
+    return {"distance": distance, "air_time": GROUND_AIR_TIME, "com_travel": m["com_travel"],
+            "outcome": traj.meta["outcome"], "kept": kept, "settings": plan["settings"], "params": params,
+            "peak_thrust_grf_body_weights": m.get("peak_thrust_grf_body_weights")}
+
+
+def calibrate_broad(character: str, pool) -> dict:
+    """Broad jump rows in order of COM travel (see the module's docstring)."""
+    results = pool.map(broad_row, [(character, d) for d in BROAD_DISTANCES[character]])
+    rows = sorted((r for r in results if r["kept"]), key=lambda r: r["com_travel"])
+    return {"com_travel": [r["com_travel"] for r in rows], "params": [r["params"] for r in rows],
+            "settings": [r["settings"] for r in rows], "distance": [r["distance"] for r in rows],
+            "air_time": [r["air_time"] for r in rows],
+            "peak_thrust_grf_body_weights": [r["peak_thrust_grf_body_weights"] for r in rows],
+            "trials": [{k: r[k] for k in ("distance", "air_time", "com_travel", "outcome", "kept")} for r in results]}
 
 
 def vertical_table(results: list[dict]) -> dict:
@@ -199,8 +237,8 @@ def calibrate(character: str, processes: int, only: list[str], previous: dict) -
             trials[key] = results
             mapping[key] = vertical_table(results)
         if "broad" in only:
-            mapping["broad"] = calibrate_broad(character, stand, pool)
-            mapping["broad_calibrated"] = bool(mapping["broad"]["com_travel"])
+            mapping["broad"] = calibrate_broad(character, pool)
+            mapping.pop("broad_calibrated", None)
     mapping["trials_by_table"] = trials
     mapping.pop("trials", None)
     return mapping
@@ -218,6 +256,14 @@ def main() -> int:
         path = TUNED_DIR / f"leap_{character}.json"
         previous = json.loads(path.read_text()) if path.exists() else {}
         mapping = calibrate(character, args.processes, args.only, previous)
+        # write only the recalibrated tables over the file as it is now (another run may have
+        # recalibrated the others meanwhile)
+        current = json.loads(path.read_text()) if path.exists() else {}
+        current.update({k: v for k, v in mapping.items() if k in args.only or k in ("character", "script")})
+        current.setdefault("trials_by_table", {}).update(
+            {k: v for k, v in mapping.get("trials_by_table", {}).items() if k in args.only})
+        current.pop("broad_calibrated", None)
+        mapping = current
         path.write_text(json.dumps(mapping, indent=1) + "\n")
         for key in VERTICAL_TABLES:
             rises = mapping.get(key, {}).get("com_rise", [])

@@ -7,13 +7,16 @@ hip angle tilts the ground reaction force past the COM to set the somersault rat
 
 Landing: in flight the hips place the feet relative to the COM by a PD servo on the feet
 (eq. 6.1) towards the point where the COM's horizontal speed will have died out when it is over
-them (the capture point x + v sqrt(h/g)) plus the calibrated foot servo delta (Table 6.1's role);
+them (the capture point x + v sqrt(h/g)) plus the calibrated foot servo delta (Table 6.1's role,
+per horizontal speed and vertical touchdown speed);
 knees flexed, feet parallel to the ground - or, when the touchdown will be fast (a drop or a high
 leap), pitched toe-down so the forefoot lands first and the ankles take the first impact, as
 people land. After touchdown the knees go soft (position gain down, damping up) and absorb; when
 their speed has fallen to 20 % of the touchdown speed the gains come back and the balance
-behaviour takes over. The landing uses at most the human torque limits whatever the model's
-strength (an unlimited servo would land rigidly, not better).
+behaviour takes over, from the crouch with the landed legs' hip-to-ankle distance. The landing
+uses at most the human torque limits whatever the model's strength (an unlimited servo would land
+rigidly, not better). A landing is balanced only if the feet stay where they touched down (see
+leap_assess).
 """
 from __future__ import annotations
 
@@ -45,7 +48,6 @@ THRUST_DAMPING = 1.0            # share of the stiffened servos' damping kept in
                                 # mapping names none. Damping brakes fast extension: high leaps use less
                                 # (calibrated per row of rigs/tuned/leap_<character>.json, with the
                                 # lift-off hip angle and COM offset that cancel the spin it brings)
-BROAD_THRUST_DAMPING = 1.0      # the broad jump's (its calibration is for it)
 THRUST_GAIN = 3.0               # hip and knee servos stiffened for the thrust [W98 §4.3]
 LIFTOFF_ANKLE = 0.75            # rad of plantarflexion at the end of the thrust
 SOFT_KNEE_KP, SOFT_KNEE_KV = 0.3, 2.5    # knee gain factors while absorbing (the thesis: kp 0; with human
@@ -492,8 +494,7 @@ DEFAULT_MAPPING = {
     # arm swing) until scripts/calibrate_leap.py writes rigs/tuned/leap_<character>.json
     "vertical": {"com_rise": [0.07, 0.22, 0.48, 0.71, 0.95], "crouch_height": [0.85, 0.75, 0.65, 0.55, 0.45],
                  "torso_pitch": [0.0, 0.5, 1.0, 1.5, 1.8]},
-    "broad": {"com_travel": [0.38, 1.16, 2.12], "crouch_height": [0.72, 0.68, 0.50],
-              "com_offset": [0.05, 0.07, 0.08], "arm_swing": [1.8, 2.8, 3.2]},
+    "broad": {"com_travel": [], "params": []},      # planned jumps only (scripts/calibrate_leap.py)
 }
 
 
@@ -557,8 +558,24 @@ class Leap(Sequence):
                   "landing: the feet land this many seconds of horizontal COM travel ahead of the COM"),
     )
 
-    def settings(self) -> dict:
+    def run_params(self) -> dict:
+        """The parameters the leap runs with: the user's, or for a broad jump (distance > 0) the
+        low-level leap of the calibrated broad jump nearest the distance (scripts/calibrate_leap.py
+        plans each as a jump to a point straight ahead, by simulation: the broad jump's distance is
+        not smooth in its settings, so it is not interpolated), with the user's lift-off hip angle
+        added to the row's."""
         p = self.params
+        if p["low_level"] or p["distance"] <= 0:
+            return p
+        broad = load_mapping(self.ctx.character.name)["broad"]
+        k = int(np.argmin(np.abs(np.asarray(broad["com_travel"]) - p["distance"])))
+        row = dict(broad["params"][k])
+        row["liftoff_hip_angle"] = row.get("liftoff_hip_angle", 0.0) + p["liftoff_hip_angle"]
+        return self.schema.validate(row)
+
+    def settings(self, p: dict) -> dict:
+        """The leap's low-level settings for the run parameters ``p``: the user's own (low_level) or
+        the vertical-leap table's, interpolated at the commanded height."""
         if p["low_level"]:
             settings = {k: p[k] for k in ("crouch_height", "crouch_pitch", "com_offset", "com_offset_y",
                                           "arm_swing", "crouch_arms", "thrust_damping")}
@@ -566,14 +583,6 @@ class Leap(Sequence):
             settings["liftoff_hip"] = p["liftoff_hip_angle"]
             return settings
         mapping = load_mapping(self.ctx.character.name)
-        if p["distance"] > 0:
-            b = mapping["broad"]
-            x = p["distance"]
-            # the nearest calibrated jump (the broad jump's distance is not smooth in its settings)
-            k = int(np.argmin(np.abs(np.asarray(b["com_travel"]) - x)))
-            return {"crouch_height": b["crouch_height"][k], "crouch_pitch": b["torso_pitch"][k],
-                    "com_offset": b["com_offset"][k], "arm_swing": b["arm_swing"][k],
-                    "liftoff_hip": b["liftoff_hip"][k] + p["liftoff_hip_angle"], "damping": BROAD_THRUST_DAMPING}
         v = mapping[vertical_key(self.ctx)]
         h = p["height"]
         rises = v["com_rise"]
@@ -589,16 +598,17 @@ class Leap(Sequence):
             return
         mapping = load_mapping(self.ctx.character.name)
         if p["distance"] > 0:
-            if not mapping.get("broad_calibrated", True):
-                raise ParameterError("the broad jump is not calibrated yet (distance must be 0); "
-                                     "low_level=1 runs it with explicit settings")
             travels = np.asarray(mapping["broad"]["com_travel"])
+            if not len(travels):
+                raise ParameterError(f"the broad jump of {self.ctx.character.name} is not calibrated (distance "
+                                     f"must be 0): run scripts/calibrate_leap.py --only broad (or use low_level=1)")
             nearest = travels[int(np.argmin(np.abs(travels - p["distance"])))]
             if abs(nearest - p["distance"]) > 0.1 * p["distance"]:
+                calibrated = ", ".join(f"{t:.2f}" for t in sorted(travels))
                 raise ParameterError(
                     f"parameter distance={p['distance']:g} m has no calibrated broad jump within 10 % for "
-                    f"{self.ctx.character.name} (nearest {nearest:.2f} m; calibrated "
-                    f"{travels.min():.2f} .. {travels.max():.2f} m; scripts/calibrate_leap.py)")
+                    f"{self.ctx.character.name} (nearest {nearest:.2f} m; calibrated: {calibrated} m; "
+                    f"scripts/calibrate_leap.py)")
         else:
             key = vertical_key(self.ctx)
             strength = "unlimited strength" if key.endswith("unlimited") else "human torque limits"
@@ -621,11 +631,12 @@ class Leap(Sequence):
         return 0.5 * sum(leg.standing_hip_height() for leg in legs)
 
     def is_broad(self) -> bool:
-        return self.params["distance"] > 0
+        """The broad jump's thrust (0.15/0.20/0.45 s extension, triggered by the leaning COM)."""
+        return self.run_params()["distance"] > 0
 
     def steps(self) -> list[Step]:
-        p, ctx = self.params, self.ctx
-        cfg = self.settings()
+        p, ctx = self.run_params(), self.ctx
+        cfg = self.settings(p)
         broad = self.is_broad()
         schema = Balance.schema
 

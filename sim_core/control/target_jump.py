@@ -60,12 +60,18 @@ SIDEWAYS_PRIOR = {"crouch_height": 0.6, "crouch_pitch": 0.0, "com_offset": 0.0, 
                   "arm_swing": 1.0, "damping": 0.3, "vertical_thrust": 1.0, "foot_lead_time": 0.3}
 BOX_PRIOR = {"crouch_height": 0.55, "crouch_pitch": 0.0, "com_offset": 0.12, "liftoff_hip": 0.8,
              "arm_swing": 2.0, "damping": 0.3, "vertical_thrust": 1.0}    # where a box jump's search starts
+BROAD_PRIOR = {"crouch_height": 0.655, "crouch_pitch": 0.0, "com_offset": 0.1, "liftoff_hip": 0.3,
+               "arm_swing": 1.0, "damping": 1.0, "vertical_thrust": 0.0}   # a ground target's, with no broad jump
 LANDING_PRIOR = {"foot_delta": 0.0, "swing_arms": 0.0, "arm_flexion": 0.6, "foot_lead_time": 0.2}
+
+
+GROUND_AIR_TIME = 0.45              # s: the air time the report asks of a jump to a target on the
+                                    # ground, and the broad jump's planned jumps (a standing broad jump's)
 
 
 def search_prior(character: str, target) -> dict:
     """Where the search starts without a stored plan nearby: the calibrated broad jump nearest the
-    distance (leap.py's mapping) on the ground; onto a box, a deep vertical leap leaning forward
+    distance (leap.py's mapping, itself planned) on the ground, or BROAD_PRIOR; onto a box, a deep vertical leap leaning forward
     with the hips extending at lift-off; with the landing's defaults."""
     mapping = load_mapping(character)
     if abs(target[1]) > 1e-9:
@@ -75,10 +81,11 @@ def search_prior(character: str, target) -> dict:
     else:
         broad = mapping["broad"]
         distance = float(np.hypot(target[0], target[1]))
-        k = int(np.argmin(np.abs(np.asarray(broad["com_travel"]) - distance)))
-        prior = {"crouch_height": broad["crouch_height"][k], "crouch_pitch": broad["torso_pitch"][k],
-                 "com_offset": broad["com_offset"][k], "liftoff_hip": broad["liftoff_hip"][k],
-                 "arm_swing": broad["arm_swing"][k], "damping": 1.0, "vertical_thrust": 0.0, **LANDING_PRIOR}
+        if broad.get("settings"):
+            k = int(np.argmin(np.abs(np.asarray(broad["com_travel"]) - distance)))
+            prior = dict(broad["settings"][k])
+        else:
+            prior = dict(BROAD_PRIOR, **LANDING_PRIOR)
     knobs = knobs_for(target)
     return {n: min(max(float(prior[n]), knobs[n][0]), knobs[n][1]) for n in knobs}
 
@@ -278,13 +285,27 @@ def stored_plan(character: str, request: dict) -> dict | None:
     if not path.exists():
         return None
     for plan in json.loads(path.read_text())["plans"]:
-        if all(abs(plan["request"][k] - request[k]) < 1e-6 for k in REQUEST_KEYS) \
-                and plan["request"].get("strength", "human") == request.get("strength", "human"):
+        if same_request(plan["request"], request):
             return plan
     return None
 
 
 REQUEST_KEYS = ("target_x", "target_y", "target_z", "air_time", "windup_time")
+
+
+def same_request(a: dict, b: dict) -> bool:
+    return all(abs(a[k] - b[k]) < 1e-6 for k in REQUEST_KEYS) and a.get("strength", "human") == b.get("strength", "human")
+
+
+def store_plan(character: str, request: dict, plan: dict, script: str) -> None:
+    """Keep a plan (found or not) in rigs/tuned/jump_targets_<character>.json, replacing the one
+    for the same request."""
+    path = plans_path(character)
+    stored = json.loads(path.read_text())["plans"] if path.exists() else []
+    stored = [p for p in stored if not same_request(p["request"], request)]
+    stored.append({"request": request, **plan})
+    stored.sort(key=lambda p: tuple(p["request"][k] for k in REQUEST_KEYS))
+    path.write_text(json.dumps({"character": character, "script": script, "plans": stored}, indent=1) + "\n")
 
 
 def _side(y: float) -> int:
@@ -335,6 +356,9 @@ class JumpToTarget(Leap):
     def scene(cls, params, world, character=None):
         return scene_for(character, (params["target_x"], params["target_y"], params["target_z"]), world)
 
+    def run_params(self) -> dict:
+        return self.params
+
     def is_broad(self) -> bool:
         return self.plan["settings"].get("vertical_thrust", 0.0) <= 0.5
 
@@ -376,7 +400,7 @@ class JumpToTarget(Leap):
                 f"after {m['air_time']:.2f} s ({m['outcome']})")
         self.plan = plan
 
-    def settings(self) -> dict:
+    def settings(self, p: dict) -> dict:
         settings = {k: self.plan["settings"][k] for k in ("crouch_height", "crouch_pitch", "com_offset", "arm_swing",
                                                           "damping", "liftoff_hip", "foot_delta")}
         settings["com_offset_y"] = self.plan["settings"].get("com_offset_y", 0.0)
