@@ -141,7 +141,7 @@ def trial(args):
 
 
 BROAD_DISTANCES = {"man": (0.3, 0.4, 0.5, 0.75, 1.0, 1.3, 1.6, 1.9, 2.1),      # m: TARGETS.md's ranges
-                   "woman": (0.3, 0.5, 0.75, 1.0, 1.3, 1.6)}
+                   "woman": (0.3, 0.5, 0.7, 0.75, 1.0, 1.3, 1.6)}
 BROAD_WINDUP = 1.25          # s: first move to lift-off
 BROAD_TRIALS = 200           # simulated jumps the planner may run per distance
 BROAD_AIM_TOLERANCE = 0.05   # share of the distance the COM travel may miss by before the feet are re-aimed

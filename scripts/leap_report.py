@@ -197,7 +197,8 @@ def main() -> int:
               "thrust leaves with forward speed whatever the crouch offset.",
               "- **Broad jumps** are planned jumps (the jump-to-target planner, straight ahead, 0.45 s in the "
               "air), one row per distance, run as they were planned; a distance is served by the row nearest "
-              "it, within 10 %. The woman's 0.75 m is refused (her nearest row travels 0.67 m).",
+              "it, within 10 %: every TARGETS.md distance of both characters is served (0.3-2.1 m man, "
+              "0.3-1.6 m woman); a distance between rows may be refused.",
               "- **Landing**: the woman's -1.0 m/s landing falls; every other speed of -1.0 … +3.0 m/s lands "
               "balanced with the feet where they touched down (before this report counted skids, forward "
               "landings hopped back 7-15 cm under the body and were called balanced).", ""]
