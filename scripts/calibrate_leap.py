@@ -44,7 +44,7 @@ from sim_core.control.target_jump import (GROUND_AIR_TIME, leap_params, plan_jum
 from sim_core.simulate import RunRequest, run                   # noqa: E402
 
 CROUCH_FRACTIONS = (0.9, 0.875, 0.85, 0.825, 0.8, 0.775, 0.75, 0.725, 0.7, 0.68, 0.66, 0.64, 0.62, 0.59)   # of the standing hip height
-CROUCH_FRACTIONS_FAST = (0.75, 0.7, 0.66, 0.62, 0.59, 0.56, 0.53, 0.5)
+CROUCH_FRACTIONS_FAST = (0.75, 0.7, 0.68, 0.66, 0.64, 0.62, 0.59, 0.56, 0.53, 0.5)
 # table -> (strength, [(thrust damping, crouch fractions)])
 VERTICAL_TABLES = {
     "vertical": ("human", [(1.0, CROUCH_FRACTIONS), (0.3, CROUCH_FRACTIONS_FAST)]),

@@ -188,8 +188,8 @@ def main() -> int:
               "commanded rises 0.97 m and lands balanced), not by the woman (her calibrated unlimited leaps "
               "end at 0.59 m: faster thrusts leave spinning or fall on landing).",
               "- **Heights between calibrated leaps** are interpolated, and not every interpolated leap is "
-              "good: see the rows above marked `no` or `fell` (e.g. the woman's 0.40, 0.58 and 0.80 m with "
-              "human torque limits; the thrust starts on a state condition, so neighbouring crouches can "
+              "good: see the rows above marked `no`, `fell` or `stepped` (e.g. the woman's 0.40, 0.50 and 0.70 m "
+              "with human torque limits; the thrust starts on a state condition, so neighbouring crouches can "
               "leap quite differently). The tests run the calibrated range at heights that land.",
               "- **Peak thrust GRF ≤ 3.5 × body weight** holds only for the man's lower leaps and shorter "
               "broad jumps; high leaps take 4–6.5 × (human strength) and unlimited strength 6–9 ×.",
