@@ -222,9 +222,9 @@ def vertical_table(results: list[dict]) -> dict:
 
 def calibrate(character: str, processes: int, only: list[str], previous: dict) -> dict:
     from sim_core.character.spec import load_character
-    from sim_core.control.balance import LegGeometry
+    from sim_core.control.balance import standing_hip_height
     spec = load_character(character)
-    stand = 0.5 * sum(LegGeometry(spec, side).standing_hip_height() for side in "RL")
+    stand = standing_hip_height(spec)
     mapping = dict(previous)
     mapping.update({"character": character, "script": "scripts/calibrate_leap.py"})
     trials = dict(mapping.get("trials_by_table", {}))

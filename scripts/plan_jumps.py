@@ -13,7 +13,6 @@ point, like Wooten's commanded-vs-achieved figures).
 from __future__ import annotations
 
 import argparse
-import json
 import sys
 import time
 from pathlib import Path
@@ -26,8 +25,8 @@ import matplotlib  # noqa: E402
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-from sim_core.control.target_jump import (AIR_TIME_TOLERANCE, LANDING_TOLERANCE, REQUEST_KEYS,  # noqa: E402
-                                          GROUND_AIR_TIME, plan_jump, plans_path, store_plan, stored_plan)
+from sim_core.control.target_jump import (AIR_TIME_TOLERANCE, GROUND_AIR_TIME, LANDING_TOLERANCE,  # noqa: E402
+                                          plan_jump, store_plan, stored_plan)
 from sim_core.errors import ParameterError  # noqa: E402
 from sim_core.simulate import RunRequest, run  # noqa: E402
 

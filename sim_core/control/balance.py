@@ -38,6 +38,11 @@ TOE_SHARE = 1.0            # where between ball (0) and toe tip (1) the front ed
 EXCESS_TO_HIP = 4.0        # hip flexion per radian of COM demand the ankles cannot deliver
 
 
+def standing_hip_height(character) -> float:
+    """Height of the hip joints above the ground standing (m), the mean of both legs."""
+    return 0.5 * sum(LegGeometry(character, side).standing_hip_height() for side in "RL")
+
+
 class LegGeometry:
     """Planar leg lengths and the rest-pose knee flexion of one side (for eq. 7.5)."""
 
@@ -146,7 +151,7 @@ class Balance(Behaviour):
         self.ankle_limit_front = ANKLE_AUTHORITY * weight_per_foot * front / kp_ankle
         self.ankle_limit_back = ANKLE_AUTHORITY * weight_per_foot * back / kp_ankle
         self.ankle_height = self.legs["R"].ankle_height
-        self.stand_height = 0.5 * (self.legs["R"].standing_hip_height() + self.legs["L"].standing_hip_height())
+        self.stand_height = standing_hip_height(ch)
 
     # ----------------------------------------------------------------- requests
     def target_posture(self) -> np.ndarray:

@@ -28,7 +28,7 @@ import numpy as np
 
 from sim_core.analysis import feet_above_surface, standard_metrics
 from sim_core.ballistics import GRAVITY
-from sim_core.control.balance import Balance, LegGeometry
+from sim_core.control.balance import Balance, LegGeometry, standing_hip_height
 from sim_core.control.crouch import CrouchTable
 from sim_core.control.behaviour import Behaviour, ControlContext, register
 from sim_core.control.measure import SupportGeometry, roll_of
@@ -229,7 +229,7 @@ class Landing(Behaviour):
         s = self.ctx.servos
         s.offset[:] = 0.0
         s.hold(s.smoothed_target(t), t)
-        stand = 0.5 * sum(LegGeometry(self.ctx.character, side).standing_hip_height() for side in "RL")
+        stand = standing_hip_height(self.ctx.character)
         self.crouch = CrouchTable(self.ctx.model, self.ctx.character, np.linspace(0.5 * stand, stand, 6), stand)
         s.set_gains(np.arange(len(s.names)), s.default_kp, s.default_kv)     # undo the thrust gains
         # the arms swing in flight (their targets are set every tick: update() holds all targets)
@@ -394,25 +394,24 @@ class Land(Sequence):
 
     def steps(self) -> list[Step]:
         return [Step("land", lambda t: Landing(self.params, self.ctx), lambda b, t: b.finished),
-                Step("balance", lambda t: balance_after_landing(self.ctx))]
+                Step("balance", lambda t: balance_after_landing(self.ctx, self.previous))]
 
     @classmethod
     def assess(cls, trajectory):
         return leap_assess(trajectory)
 
 
-def balance_after_landing(ctx: ControlContext) -> Balance:
-    """Balance that starts from the landed crouch and stands up. The crouch is the one whose
-    hip-to-ankle distance is the landed legs' (the balance's knees servo that distance): with the
-    feet landed ahead of the hips, the vertical height would name a shorter leg, and the knees
-    would snap up to it and pull the feet off the ground."""
+def balance_after_landing(ctx: ControlContext, landing: Landing) -> Balance:
+    """Balance that starts from the crouch ``landing`` (the landing that just ended) landed in and
+    stands up. The crouch is the one of the landing's crouch table whose hip-to-ankle distance is
+    the landed legs' (the balance's knees servo that distance): with the feet landed ahead of the
+    hips, the vertical height would name a shorter leg, and the knees would snap up to it and pull
+    the feet off the ground."""
     d, m = ctx.data, ctx.model
     hips = 0.5 * (d.xpos[m.body("ULEGR").id] + d.xpos[m.body("ULEGL").id])
     feet = 0.5 * (d.xpos[m.body("FOOTR").id] + d.xpos[m.body("FOOTL").id])
-    stand = 0.5 * sum(LegGeometry(ctx.character, side).standing_hip_height() for side in "RL")
-    crouch = CrouchTable(m, ctx.character, np.linspace(0.5 * stand, stand, 6), stand)
     leg_length = float(np.linalg.norm(hips - feet))
-    height = float(np.interp(leg_length, crouch.table[:, 4], crouch.heights))
+    height = float(np.interp(leg_length, landing.crouch.table[:, 4], landing.crouch.heights))
     return Balance(Balance.schema.validate(dict(move_start=0.0, move_time=1.2, return_to_stand=0)), ctx,
                    from_height=height)
 
@@ -626,18 +625,15 @@ class Leap(Sequence):
                                      f"{self.ctx.character.name} with {strength}; allowed range is "
                                      f"[{bottom:.2f}, {top:.2f}] m")
 
-    def _stand_height(self) -> float:
-        legs = [LegGeometry(self.ctx.character, side) for side in "RL"]
-        return 0.5 * sum(leg.standing_hip_height() for leg in legs)
-
-    def is_broad(self) -> bool:
-        """The broad jump's thrust (0.15/0.20/0.45 s extension, triggered by the leaning COM)."""
-        return self.run_params()["distance"] > 0
+    def is_broad(self, p: dict) -> bool:
+        """The broad jump's thrust (0.15/0.20/0.45 s extension, triggered by the leaning COM) for
+        the run parameters ``p``."""
+        return p["distance"] > 0
 
     def steps(self) -> list[Step]:
         p, ctx = self.run_params(), self.ctx
         cfg = self.settings(p)
-        broad = self.is_broad()
+        broad = self.is_broad(p)
         schema = Balance.schema
 
         def crouch(t):
@@ -663,7 +659,7 @@ class Leap(Sequence):
         def thrust(t):
             return LeapThrust({}, ctx, cfg["crouch_height"], BROAD_TIMING if broad else VERTICAL_TIMING,
                               ANKLE_GAIN_BROAD if broad else ANKLE_GAIN_VERTICAL, cfg["liftoff_hip"],
-                              cfg["arm_swing"], stand_height=self._stand_height(), damping=cfg["damping"])
+                              cfg["arm_swing"], stand_height=standing_hip_height(ctx.character), damping=cfg["damping"])
 
         def land(t):
             # the calibrated leap's own correction of the landing's foot servo delta, plus the user's
@@ -674,7 +670,7 @@ class Leap(Sequence):
             return Landing(Landing.schema.validate(dict(foot_delta=delta, **landing)), ctx)
 
         def stand(t):
-            return balance_after_landing(ctx)
+            return balance_after_landing(ctx, self.previous)
 
         return [Step("crouch", crouch, crouched),
                 Step("thrust", thrust, lambda b, t: b.lifted_off()),

@@ -34,6 +34,7 @@ class Sequence(Behaviour):
     def _advance(self, t: float) -> None:
         self.index += 1
         step = self.script[self.index]
+        self.previous = self.current        # the step that just ended: the next may start from it
         self.current = step.make(t)
         self.current.phase_events = self.phase_events          # one list of events for the run
         self.event(t, step.name)

@@ -150,7 +150,7 @@ class Somersault(Sequence):
         return takeoff_steps(ctx, takeoff) + [
             Step("tuck", tuck, lambda b, t: self.time_to_open()),
             Step("land", land, lambda b, t: b.finished),
-            Step("balance", lambda t: balance_after_landing(ctx))]
+            Step("balance", lambda t: balance_after_landing(ctx, self.previous))]
 
     def time_to_open(self) -> bool:
         """Open when the rotation the opened body will still make before the feet reach the

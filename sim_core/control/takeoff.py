@@ -3,7 +3,7 @@ thrust extends the legs and ends with the lift-off hip angle that sets the somer
 (Wooten §4.3)."""
 from __future__ import annotations
 
-from sim_core.control.balance import Balance, LegGeometry
+from sim_core.control.balance import Balance, standing_hip_height
 from sim_core.control.behaviour import ControlContext
 from sim_core.control.leap import ANKLE_GAIN_VERTICAL, THRUST_DAMPING, VERTICAL_TIMING, LeapThrust
 from sim_core.control.sequencer import Step
@@ -16,7 +16,7 @@ def takeoff_steps(ctx: ControlContext, cfg: dict) -> list[Step]:
     """Crouch (leaning by ``com_offset``), then thrust until the feet leave the ground. Leaning
     (back, ``com_offset`` < 0, or forward, > 0), the thrust starts once the COM, moving, has left
     the middle of the feet by that much (as the broad jump leans forward, §4.2)."""
-    stand = 0.5 * sum(LegGeometry(ctx.character, side).standing_hip_height() for side in "RL")
+    stand = standing_hip_height(ctx.character)
 
     def crouch(t):
         return Balance(Balance.schema.validate(dict(

@@ -70,9 +70,10 @@ GROUND_AIR_TIME = 0.45              # s: the air time the report asks of a jump 
 
 
 def search_prior(character: str, target) -> dict:
-    """Where the search starts without a stored plan nearby: the calibrated broad jump nearest the
-    distance (leap.py's mapping, itself planned) on the ground, or BROAD_PRIOR; onto a box, a deep vertical leap leaning forward
-    with the hips extending at lift-off; with the landing's defaults."""
+    """Where the search starts without a stored plan nearby: on the ground, the calibrated broad
+    jump nearest the distance (leap.py's mapping, itself planned), or BROAD_PRIOR; onto a box, a
+    deep vertical leap leaning forward with the hips extending at lift-off; with the landing's
+    defaults."""
     mapping = load_mapping(character)
     if abs(target[1]) > 1e-9:
         prior = {**LANDING_PRIOR, **SIDEWAYS_PRIOR, "com_offset_y": math.copysign(0.17, target[1])}
@@ -359,7 +360,7 @@ class JumpToTarget(Leap):
     def run_params(self) -> dict:
         return self.params
 
-    def is_broad(self) -> bool:
+    def is_broad(self, p: dict) -> bool:
         return self.plan["settings"].get("vertical_thrust", 0.0) <= 0.5
 
     def check_feasible(self) -> None:
