@@ -1,6 +1,7 @@
 """The simulated world's fixed objects in the Blender scene, so a baked skill is seen where it
-happened: a dive's platform and water surface, the boxes a jump lands on. Objects are made once
-per scene and named ``SimAthletics platform`` / ``SimAthletics water`` / ``SimAthletics box 0``...;
+happened: a dive's platform and water surface, the boxes a jump lands on, starts from or clears,
+and the ground below when a jump starts on a box. Objects are made once per scene and named
+``SimAthletics platform`` / ``SimAthletics water`` / ``SimAthletics ground`` / ``SimAthletics box 0``...;
 an existing object of that name is reused, never replaced (the user may have moved or restyled
 it)."""
 from __future__ import annotations
@@ -11,7 +12,7 @@ import numpy as np
 
 from .axes import SIM_TO_BLENDER
 
-PLATFORM_NAME, WATER_NAME = "SimAthletics platform", "SimAthletics water"
+PLATFORM_NAME, WATER_NAME, GROUND_NAME = "SimAthletics platform", "SimAthletics water", "SimAthletics ground"
 BOX_NAME = "SimAthletics box {}"
 
 
@@ -20,10 +21,14 @@ def add_scenery(context, armature, trajectory) -> list:
     armature object's frame. Returns the objects made."""
     world = trajectory.meta.get("world", {})
     made = []
+    floor = float(world.get("floor", 0.0) or 0.0)
     for k, (x, y, height, length, width) in enumerate(world.get("boxes", [])):
-        if BOX_NAME.format(k) not in bpy.data.objects:
-            made.append(_box(context, BOX_NAME.format(k), np.array([x, y, height / 2]),
-                             np.array([length / 2, width / 2, height / 2]), armature))
+        if BOX_NAME.format(k) not in bpy.data.objects:         # from the ground up to its top
+            made.append(_box(context, BOX_NAME.format(k), np.array([x, y, 0.5 * (floor + height)]),
+                             np.array([length / 2, width / 2, 0.5 * (height - floor)]), armature))
+    if floor and GROUND_NAME not in bpy.data.objects:          # the start is on a box: the ground is below
+        made.append(_box(context, GROUND_NAME, np.array([0.0, 0.0, floor - 0.005]),
+                         np.array([20.0, 20.0, 0.005]), armature))
     platform = float(world.get("platform", 0.0) or 0.0)
     if platform <= 0:
         return made

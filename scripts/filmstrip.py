@@ -50,8 +50,9 @@ def main(argv=None) -> int:
     times = [args.start + (end - args.start) * k / max(args.frames - 1, 1) for k in range(args.frames)]
 
     # ground, light, a side camera looking at the character's path (the sim's X is Blender's -Y)
-    if not trajectory.meta.get("world", {}).get("platform"):     # a dive brings its platform and water
-        bpy.ops.mesh.primitive_plane_add(size=40)
+    world = trajectory.meta.get("world", {})
+    if not world.get("platform"):     # a dive brings its platform and water
+        bpy.ops.mesh.primitive_plane_add(size=40, location=(0.0, 0.0, float(world.get("floor", 0.0) or 0.0)))
     sun = bpy.data.objects.new("sun", bpy.data.lights.new("sun", type="SUN"))
     sun.data.energy = 3.0
     sun.rotation_euler = (math.radians(50), 0, math.radians(30))

@@ -20,8 +20,9 @@ CONTACT_HEIGHT = 0.005       # m: a contact site this close to the ground suppor
 def feet_above_surface(trajectory) -> np.ndarray:
     """Per frame and foot site: height above the ground or the box under it."""
     points = trajectory.arrays["support_points"]
-    boxes = trajectory.meta.get("world", {}).get("boxes", ())
-    return points[:, :, 2] - surface_under(points, boxes) if boxes else points[:, :, 2]
+    world = trajectory.meta.get("world", {})
+    boxes, floor = world.get("boxes", ()), world.get("floor", 0.0)
+    return points[:, :, 2] - surface_under(points, boxes, floor) if boxes else points[:, :, 2] - floor
 
 
 def com_support_margins(traj: Trajectory, up: np.ndarray | None = None) -> np.ndarray:
@@ -74,7 +75,13 @@ def standard_metrics(traj: Trajectory, allowed_contacts=FOOT_BODIES) -> dict:
     bad_contact = (a["ground_contact"] & ~allowed).any(axis=1)
     hip_height = 0.5 * (a["body_pos"][:, names.index("ULEGR"), 2] + a["body_pos"][:, names.index("ULEGL"), 2])
     stand_pelvis = a["body_pos"][0, pelvis, 2] - traj.meta.get("start_state", {}).get("height", 0.0)
-    too_low = a["body_pos"][:, pelvis, 2] < 0.5 * stand_pelvis
+    world = traj.meta.get("world", {})
+    pelvis_height = a["body_pos"][:, pelvis, 2]
+    if world.get("boxes") or world.get("floor"):
+        # above what is under it: a box landed on, or the ground below the box the character started on
+        pelvis_height = pelvis_height - surface_under(a["body_pos"][:, pelvis], world.get("boxes", ()),
+                                                      world.get("floor", 0.0))
+    too_low = pelvis_height < 0.5 * stand_pelvis
     fell_frames = np.nonzero(bad_contact | too_low)[0]
     fell = len(fell_frames) > 0
     feet = a["support_points"]

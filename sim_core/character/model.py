@@ -58,8 +58,12 @@ class World:
     slope_ramp: float | None = None            # s; default SLOPE_RAMP_PER_DEGREE per degree
     platform: float = 0.0                      # m: height of a diving platform above the water (0 = none)
     platform_edge: str = "behind"              # 'behind' the heels (water at -X) or 'ahead' of the toes (+X)
-    boxes: tuple = ()                          # ((x, y, height, length, width), ...) m: boxes on the ground,
-                                               # centred at (x, y), to jump onto (geoms "box0", "box1", ...)
+    boxes: tuple = ()                          # ((x, y, height, length, width), ...) m: boxes standing on the
+                                               # ground, centred at (x, y), their tops at z = height, to jump
+                                               # onto, from or over (geoms "box0", "box1", ...)
+    floor: float = 0.0                         # m: height of the ground plane. Below 0, the character starts
+                                               # on a box (a box of World.boxes with its top at z = 0, so every
+                                               # standing controller works unchanged) and can jump down
 
     @property
     def ramp_time(self) -> float:
@@ -121,12 +125,14 @@ def build_mjspec(character: CharacterSpec, world: World | None = None, strength:
                                         pos=[0, 0, -world.platform], rgba=[0.2, 0.4, 0.8, 0.5])
         water.contype = water.conaffinity = 0               # seen, not felt: the dive ends at entry
     else:
-        ground = spec.worldbody.add_geom(name="ground", type=mujoco.mjtGeom.mjGEOM_PLANE, size=[0, 0, 0.05])
+        ground = spec.worldbody.add_geom(name="ground", type=mujoco.mjtGeom.mjGEOM_PLANE, size=[0, 0, 0.05],
+                                         pos=[0, 0, world.floor])
     ground.friction = [FOOT_FRICTION, 0.005, 0.0001]
     ground.contype = ground.conaffinity = CONTACT_GROUP
     for k, (x, y, height, length, width) in enumerate(world.boxes):
+        half = (height - world.floor) / 2              # from the ground up to its top
         box = spec.worldbody.add_geom(name=f"box{k}", type=mujoco.mjtGeom.mjGEOM_BOX,
-                                      size=[length / 2, width / 2, height / 2], pos=[x, y, height / 2],
+                                      size=[length / 2, width / 2, half], pos=[x, y, world.floor + half],
                                       rgba=[0.6, 0.5, 0.4, 1])
         box.friction = [FOOT_FRICTION, 0.005, 0.0001]
         box.contype = box.conaffinity = CONTACT_GROUP

@@ -25,19 +25,27 @@ def roll_of(xmat: np.ndarray, up: np.ndarray) -> float:
     return math.atan2(float(np.dot(m[:, 1], up)), float(np.dot(m[:, 2], up)))
 
 
-def surface_under(points: np.ndarray, boxes) -> np.ndarray:
+def surface_under(points: np.ndarray, boxes, floor: float = 0.0) -> np.ndarray:
     """Height of what is under each point (..., 3 or 2): the top of a box whose footprint holds it,
-    else the ground (0). ``boxes``: World.boxes, ((x, y, height, length, width), ...)."""
+    else the ground (``floor``). ``boxes``: World.boxes, ((x, y, height, length, width), ...)."""
     points = np.asarray(points)
-    under = np.zeros(points.shape[:-1])
+    under = np.full(points.shape[:-1], float(floor))
     for x, y, height, length, width in boxes:
         inside = (np.abs(points[..., 0] - x) <= length / 2) & (np.abs(points[..., 1] - y) <= width / 2)
         under = np.where(inside, np.maximum(under, height), under)
     return under
 
 
+def floor_of(model: mujoco.MjModel) -> float:
+    """World.floor read back off a compiled model (the ground plane's height; a diving platform's
+    ground is a box whose top is at 0)."""
+    ground = model.geom("ground").id
+    return float(model.geom_pos[ground][2]) if model.geom_type[ground] == mujoco.mjtGeom.mjGEOM_PLANE else 0.0
+
+
 def boxes_of(model: mujoco.MjModel) -> tuple:
-    """World.boxes read back off a compiled model (geoms named box0, box1, ...)."""
+    """World.boxes read back off a compiled model (geoms named box0, box1, ...): (x, y, top height,
+    length, width)."""
     boxes = []
     while True:
         try:
@@ -45,7 +53,7 @@ def boxes_of(model: mujoco.MjModel) -> tuple:
         except KeyError:
             return tuple(boxes)
         (x, y, z), (hx, hy, hz) = model.geom_pos[geom.id], model.geom_size[geom.id]
-        boxes.append((float(x), float(y), float(2 * hz), float(2 * hx), float(2 * hy)))
+        boxes.append((float(x), float(y), float(z + hz), float(2 * hx), float(2 * hy)))
 
 
 class SupportGeometry:
@@ -63,6 +71,7 @@ class SupportGeometry:
         self.right, self.left = self.foot_of_site == 0, self.foot_of_site == 1
         self.contact_height = 0.005
         self.boxes = boxes_of(model)
+        self.floor = floor_of(model)
 
     def points(self, data: mujoco.MjData) -> np.ndarray:
         return data.site_xpos[self.site_ids]
@@ -72,8 +81,8 @@ class SupportGeometry:
         it (the ground or a box)."""
         points = data.site_xpos[self.site_ids] if points is None else points
         if not self.boxes:
-            return points[:, 2]
-        return points[:, 2] - surface_under(points, self.boxes)
+            return points[:, 2] - self.floor
+        return points[:, 2] - surface_under(points, self.boxes, self.floor)
 
     def supporting_points(self, data: mujoco.MjData) -> np.ndarray:
         """All sites of every foot that touches the ground (all sites if none does)."""
