@@ -25,28 +25,34 @@ import matplotlib  # noqa: E402
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-from sim_core.control.target_jump import (AIR_TIME_TOLERANCE, GROUND_AIR_TIME, LANDING_TOLERANCE,  # noqa: E402
-                                          plan_jump, store_plan, stored_plan)
+from sim_core.control.target_jump import (AIR_TIME_TOLERANCE, BOX_AIR_TIME, BOX_DISTANCE,  # noqa: E402
+                                          GROUND_AIR_TIME, LANDING_TOLERANCE, plan_jump, store_plan, stored_plan)
 from sim_core.errors import ParameterError  # noqa: E402
 from sim_core.simulate import RunRequest, run  # noqa: E402
 
 FORWARD = (1.0, 1.3, 1.6, 1.9)            # TARGETS.md: forward targets (m)
 SIDEWAYS = (1.0, 1.3, 1.6)                # to the left and to the right
 BOXES = (0.5, 0.75)                       # box heights (m)
+DOWN = (1.4, -0.5, 0.3)                   # box -> over a second box -> ground: the target 1.4 m ahead on the
+                                          # ground 0.5 m below the box started on, over a 0.3 m box between
 WINDUP_TIME = 1.25                        # s: the report's request
-BOX_DISTANCE, BOX_AIR_TIME = 0.6, 0.6     # onto a box: its middle this far ahead (m), this air time (s)
 DOCS = ROOT / "docs"
 
 
-def request_for(x: float, y: float = 0.0, z: float = 0.0) -> dict:
+def request_for(x: float, y: float = 0.0, z: float = 0.0, obstacle: float = 0.0) -> dict:
     """A target's request (the broad jump of calibrate_leap.py makes the same one straight ahead,
     and reuses the plan)."""
-    return {"target_x": x, "target_y": y, "target_z": z, "air_time": BOX_AIR_TIME if z > 0 else GROUND_AIR_TIME,
-            "windup_time": WINDUP_TIME}
+    return {"target_x": x, "target_y": y, "target_z": z, "obstacle_height": obstacle,
+            "air_time": BOX_AIR_TIME if z else GROUND_AIR_TIME, "windup_time": WINDUP_TIME}
 
 
 def box_request(height: float) -> dict:
     return request_for(BOX_DISTANCE, 0.0, height)
+
+
+def down_request() -> dict:
+    x, z, obstacle = DOWN
+    return request_for(x, 0.0, z, obstacle)
 
 
 def plan(characters, requests, trials: int) -> None:
@@ -61,7 +67,8 @@ def plan(characters, requests, trials: int) -> None:
                     print(f"  {character} {label}: {done}/{total} trials, nearest ({best['landing'][0]:.3f}, "
                           f"{best['landing'][1]:.3f}) m, {best['air_time']:.3f} s, {best['outcome']}", flush=True)
 
-            result = plan_jump(character, tuple(params[k] for k in ("target_x", "target_y", "target_z")),
+            result = plan_jump(character, tuple(params[k] for k in ("target_x", "target_y", "target_z",
+                                                                    "obstacle_height")),
                                params["air_time"], params["windup_time"], trials=trials, progress=progress)
             print(f"{character} {label}: {'found' if result['found'] else 'NOT found'} after {result['trials']} "
                   f"trials ({time.perf_counter() - start:.0f} s)", flush=True)
@@ -73,7 +80,7 @@ def report(characters) -> None:
     for character in characters:
         cases = [request_for(x) for x in FORWARD]
         cases += [request_for(0.0, side * y) for side in (1, -1) for y in SIDEWAYS]
-        cases += [box_request(z) for z in BOXES]
+        cases += [box_request(z) for z in BOXES] + [down_request()]
         for params in cases:
             label = _label(params)
             try:
@@ -118,6 +125,9 @@ landing point within {LANDING_TOLERANCE * 100:.0f} cm, air time within {AIR_TIME
 
 
 def _label(params: dict) -> str:
+    if params["target_z"] < 0:
+        return (f"down from a {-params['target_z']:.2f} m box over a {params['obstacle_height']:.2f} m box to "
+                f"{params['target_x']:.1f} m ahead ({params['air_time']} s)")
     if params["target_z"]:
         return f"onto a {params['target_z']:.2f} m box {params['target_x']:.1f} m ahead ({params['air_time']} s)"
     if params["target_y"]:
@@ -152,14 +162,20 @@ def main() -> None:
     parser.add_argument("--boxes", nargs="*", type=float, default=list(BOXES), help="box heights (m)")
     parser.add_argument("--sideways", nargs="*", type=float, default=list(SIDEWAYS),
                         help="sideways targets (m), each to the left and to the right")
+    parser.add_argument("--down", action=argparse.BooleanOptionalAction, default=True,
+                        help="plan the jump from a box over a second box to the ground (--no-down: not)")
     parser.add_argument("--trials", type=int, default=150, help="simulated trial jumps per target")
     parser.add_argument("--report-only", action="store_true")
+    parser.add_argument("--plan-only", action="store_true",
+                        help="store the plans, write no report (to plan characters in parallel processes)")
     args = parser.parse_args()
     if not args.report_only:
         requests = [request_for(x) for x in args.distances] + [box_request(z) for z in args.boxes]
         requests += [request_for(0.0, side * y) for y in args.sideways for side in (1, -1)]
+        requests += [down_request()] if args.down else []
         plan(args.characters, requests, args.trials)
-    report(args.characters)
+    if not args.plan_only:
+        report(args.characters)
 
 
 if __name__ == "__main__":

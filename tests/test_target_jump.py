@@ -13,8 +13,9 @@ import pytest
 
 from sim_core.ballistics import GRAVITY
 from sim_core.character.spec import load_character
-from sim_core.control.target_jump import (AIR_TIME_TOLERANCE, GROUND_AIR_TIME, LANDING_TOLERANCE, path_estimate,
-                                          plans_path, start_feet_centre, takeoff_velocity, target_params)
+from sim_core.control.target_jump import (AIR_TIME_TOLERANCE, BOX_AIR_TIME, BOX_DISTANCE, GROUND_AIR_TIME,
+                                          LANDING_TOLERANCE, path_estimate, plans_path, start_feet_centre,
+                                          takeoff_velocity, target_params)
 from sim_core.errors import ParameterError
 from sim_core.simulate import RunRequest, run
 
@@ -46,7 +47,9 @@ def test_target_params_are_measured_from_the_middle_of_the_feet():
     ({"target_x": -1.0}, ["target_x=-1", "allowed range"]),
     ({"target_x": 0.0, "target_y": 1.1, "plan_trials": 0}, ["no stored plan"]),
     ({"target_x": 0.0, "target_y": 0.0}, ["target_x=0", "not back or on the spot"]),
-    ({"target_z": -0.5}, ["target_z=-0.5", "jumping down"]),
+    ({"target_z": -0.5, "obstacle_height": 0.3, "target_x": 0.5}, ["obstacle_height=0.3", "ahead of the toes"]),
+    ({"target_z": 0.5, "obstacle_height": 0.3, "target_x": 1.5}, ["obstacle_height=0.3", "target_z <= 0"]),
+    ({"obstacle_height": -0.1}, ["obstacle_height", "allowed range"]),
     ({"target_x": 1.1, "plan_trials": 0}, ["no stored plan", "plan_trials"]),
 ])
 def test_bad_requests_are_refused_before_simulating(params, words):
@@ -56,13 +59,10 @@ def test_bad_requests_are_refused_before_simulating(params, words):
         assert word in str(refused.value)
 
 
-BOX_DISTANCE, BOX_AIR_TIME = 0.6, 0.6      # scripts/plan_jumps.py's box requests
-
-
 def _stored(character: str, request: dict) -> dict | None:
     path = plans_path(character)
     for plan in json.loads(path.read_text())["plans"] if path.exists() else []:
-        if all(abs(plan["request"][k] - request[k]) < 1e-9 for k in request if k != "plan_trials"):
+        if all(abs(plan["request"].get(k, 0.0) - request[k]) < 1e-9 for k in request if k != "plan_trials"):
             return plan
     return None
 
@@ -102,6 +102,33 @@ def test_jump_onto_a_box(character, height):
     trajectory = _planned_jump(character, f"onto a {height} m box", target_x=BOX_DISTANCE, target_z=height,
                                air_time=BOX_AIR_TIME)
     assert trajectory.meta["world"]["boxes"], "the box is in the world"
+
+
+@pytest.mark.parametrize("character", ["man", "woman"])
+def test_jump_down_from_a_box_over_a_second_box(character):
+    """Ooi's box -> over a second box -> ground: the character starts on a box (its top at z = 0),
+    clears a 0.3 m box standing on the ground halfway, and lands on the ground 0.5 m below."""
+    trajectory = _planned_jump(character, "down from a 0.5 m box over a 0.3 m box", target_x=1.4, target_z=-0.5,
+                               obstacle_height=0.3, air_time=BOX_AIR_TIME)
+    world = trajectory.meta["world"]
+    assert world["floor"] == -0.5 and len(world["boxes"]) == 2
+    names = trajectory.body_names
+    assert trajectory.arrays["body_pos"][-1, names.index("PELVIS"), 2] < 0.6, "it ends on the ground, below the box"
+
+
+def test_a_jump_down_starts_on_a_box_and_is_measured_from_the_ground_below():
+    """The scene of a jump down: the box started on has its top at 0 and its front edge just ahead
+    of the toes, the obstacle stands on the ground, and the feet's heights are read above what is
+    under them."""
+    from sim_core.control.measure import surface_under
+    from sim_core.control.target_jump import scene_for, toe_tip
+    man = load_character("man")
+    world = scene_for(man, (1.4, 0.0, -0.5, 0.3))
+    (start_box, obstacle), toes = world.boxes, toe_tip(man)
+    assert world.floor == -0.5 and start_box[2] == 0.0 and obstacle[2] == pytest.approx(-0.2)
+    assert start_box[0] + start_box[3] / 2 == pytest.approx(toes + 0.02)
+    under = surface_under(np.array([[0.0, 0.0], [obstacle[0], 0.0], [1.4, 0.0]]), world.boxes, world.floor)
+    assert under == pytest.approx([0.0, -0.2, -0.5])
 
 
 @pytest.mark.parametrize("character", ["man", "woman"])

@@ -12,13 +12,17 @@ leap.py, with the broad jump's or the vertical leap's thrust), so the wind-up po
 (forward or sideways), arm swing, lift-off hip angle and the landing's foot delta, foot lead and
 arm swing in flight that land the feet on the target are found by searching over whole
 simulated jumps (the cross-entropy method, seeded from the request, so the same request always
-gives the same plan; it starts from the stored plan found nearest the target, or a prior).
+gives the same plan; it starts from the stored plan found nearest the target, or a prior; a
+pattern search then walks the best balanced trial to the target).
 Each trial is judged by what the simulation did: the middle of the feet at touchdown, the time
 the feet were off the ground, and whether the jump ended balanced. The final run repeats the
 best trial's settings - the same simulation - so its outcome is the plan's. Plans for the
 usual targets are kept as data (rigs/tuned/jump_targets_<character>.json, written by
 scripts/plan_jumps.py); any other request is planned when it is run (``plan_trials`` trials,
-about half a second each). A raised target gets a box under it (``scene_for``).
+about half a second each). A raised target gets a box under it; a target below the start
+(``target_z`` < 0) puts the character on a box with the ground that far below, and
+``obstacle_height`` a box to clear on the way (Ooi's box -> over a second box -> ground; see
+``scene_for``).
 """
 from __future__ import annotations
 
@@ -53,13 +57,18 @@ KNOBS = {
     "crouch_height": (0.48, 0.80), "crouch_pitch": (0.0, 0.5), "com_offset": (0.0, 0.20),
     "liftoff_hip": (-0.2, 1.0), "vertical_thrust": (0.0, 1.0), "arm_swing": (0.5, 3.0), "damping": (0.3, 1.0),
     "foot_delta": (-0.15, 0.15), "swing_arms": (0.0, 1.0), "arm_flexion": (-1.0, 1.0),
-    "foot_lead_time": (0.15, 0.35),
+    "foot_lead_time": (0.15, 0.35), "crouch_arms": (-0.8, 0.0),
 }
+KNOB_DEFAULTS = {"crouch_arms": 0.0}    # a knob a prior or a stored plan does not name (arms hanging in the crouch)
 SIDEWAYS_KNOBS = {"com_offset_y": (-0.2, 0.2)}      # searched only for a target off to the side
 SIDEWAYS_PRIOR = {"crouch_height": 0.6, "crouch_pitch": 0.0, "com_offset": 0.0, "liftoff_hip": 0.6,
                   "arm_swing": 1.0, "damping": 0.3, "vertical_thrust": 1.0, "foot_lead_time": 0.3}
 BOX_PRIOR = {"crouch_height": 0.55, "crouch_pitch": 0.0, "com_offset": 0.12, "liftoff_hip": 0.8,
-             "arm_swing": 2.0, "damping": 0.3, "vertical_thrust": 1.0}    # where a box jump's search starts
+             "arm_swing": 1.0, "damping": 0.3, "vertical_thrust": 1.0, "crouch_arms": -0.6}
+                                    # where a box jump's search starts: the deep vertical leap of the
+                                    # calibrated table (low thrust damping, the hips extending at lift-off
+                                    # to cancel its spin), leaning forward, the arms back so that the
+                                    # hands stay off the ground in the deep crouch
 BROAD_PRIOR = {"crouch_height": 0.655, "crouch_pitch": 0.0, "com_offset": 0.1, "liftoff_hip": 0.3,
                "arm_swing": 1.0, "damping": 1.0, "vertical_thrust": 0.0}   # a ground target's, with no broad jump
 LANDING_PRIOR = {"foot_delta": 0.0, "swing_arms": 0.0, "arm_flexion": 0.6, "foot_lead_time": 0.2}
@@ -67,6 +76,9 @@ LANDING_PRIOR = {"foot_delta": 0.0, "swing_arms": 0.0, "arm_flexion": 0.6, "foot
 
 GROUND_AIR_TIME = 0.45              # s: the air time the report asks of a jump to a target on the
                                     # ground, and the broad jump's planned jumps (a standing broad jump's)
+BOX_DISTANCE, BOX_AIR_TIME = 0.8, 0.6   # m, s: the report's jumps onto a box: its middle this far ahead
+                                    # (its near edge 0.5 m ahead, clear of the knees in a deep crouch)
+REFINE_SHARE = 0.4                  # share of a search's trials kept for refining the best balanced trial
 
 
 def search_prior(character: str, target) -> dict:
@@ -88,6 +100,7 @@ def search_prior(character: str, target) -> dict:
         else:
             prior = dict(BROAD_PRIOR, **LANDING_PRIOR)
     knobs = knobs_for(target)
+    prior = {**KNOB_DEFAULTS, **prior}
     return {n: min(max(float(prior[n]), knobs[n][0]), knobs[n][1]) for n in knobs}
 
 
@@ -122,20 +135,50 @@ def takeoff_capacity(character: str, key: str) -> float:
 
 
 BOX_LENGTH, BOX_WIDTH = 0.6, 1.0    # m: a box under a raised target, centred on it
+START_BOX_LENGTH = 0.6              # m: the box a jump down starts on, its front edge just ahead of the toes
+START_BOX_EDGE = 0.02               # m ahead of the toes
+OBSTACLE_LENGTH = 0.3               # m: a box to jump over, centred between the start and the target
+
+
+def obstacle_of(target) -> float:
+    """The height of the box to jump over (m above the surface landed on) of a target (x, y, z[,
+    obstacle height])."""
+    return float(target[3]) if len(target) > 3 else 0.0
 
 
 def scene_for(character, target, world=None):
-    """The world of a jump: the requested one, plus a box under a raised target."""
+    """The world of a jump to ``target`` (x, y, z[, obstacle height]) m: the requested one, plus a
+    box under a raised target (z > 0); for a target below the start (z < 0) the ground at z and a
+    box the character starts on (its top at 0, its front edge just ahead of the toes); and a box
+    to jump over, standing on the surface landed on halfway between the toes and the target."""
     from sim_core.character.model import World
     from sim_core.character.spec import load_character
     world = world or World()
-    if target[2] <= 0:
+    obstacle = obstacle_of(target)
+    if target[2] == 0 and not obstacle:
         return world
     if isinstance(character, str):
         character = load_character(character)
     centre = start_feet_centre(character)
-    box = (float(centre[0] + target[0]), float(centre[1] + target[1]), float(target[2]), BOX_LENGTH, BOX_WIDTH)
-    return dataclasses.replace(world, boxes=tuple(world.boxes) + (box,))
+    toes = toe_tip(character)
+    boxes = list(world.boxes)
+    if target[2] > 0:
+        boxes.append((float(centre[0] + target[0]), float(centre[1] + target[1]), float(target[2]),
+                      BOX_LENGTH, BOX_WIDTH))
+    elif target[2] < 0:
+        world = dataclasses.replace(world, floor=float(target[2]))
+        front = toes + START_BOX_EDGE
+        boxes.append((front - START_BOX_LENGTH / 2, float(centre[1]), 0.0, START_BOX_LENGTH, BOX_WIDTH))
+    if obstacle:
+        middle = 0.5 * (toes + centre[0] + target[0])
+        boxes.append((float(middle), float(centre[1] + 0.5 * target[1]), float(min(target[2], 0.0) + obstacle),
+                      OBSTACLE_LENGTH, BOX_WIDTH))
+    return dataclasses.replace(world, boxes=tuple(boxes))
+
+
+def toe_tip(character) -> float:
+    """x of the front of the toes' contact spheres in the standing start pose (simulation frame)."""
+    return max(c["pos"][0] + c["radius"] for body in ("TOER", "TOEL") for c in character.body(body)["contacts"])
 
 
 def start_feet_centre(character) -> np.ndarray:
@@ -156,36 +199,56 @@ def target_params(character, point) -> dict:
 def landing_measures(trajectory) -> dict:
     """Read off a jump: the middle of the feet at the start and at touchdown (TARGETS.md's landing
     point; a success also keeps the feet within LANDING_SKID_LIMIT of it until they settle, see
-    leap_assess), air time, wind-up time (first move to lift-off), and the outcome."""
+    leap_assess), air time, wind-up time (first move to lift-off), and the outcome; for the
+    planner's cost, how far the COM's capture point (COM + v sqrt(h/g)) is from the middle of the
+    feet at touchdown and whether the jump fell before it left the ground."""
     a = trajectory.arrays
     feet = a["support_points"]
     flying = feet_above_surface(trajectory).min(axis=1) > AIRBORNE_HEIGHT
     outcome, metrics = leap_assess(trajectory)
     start = feet[0, :, :2].mean(axis=0)
     result = {"outcome": outcome, "air_time": 0.0, "landing": [float("nan")] * 2, "landing_height": float("nan"),
-              "windup_time": float("nan")}
+              "windup_time": float("nan"), "capture_error": float("nan"),
+              "fell_before_liftoff": bool(metrics["fell"] and (not flying.any()
+                                                                or metrics["fall_time"] < metrics["liftoff_time"]))}
     if flying.any():
         first = int(np.argmax(flying))
         down = ~flying[first:]
         touchdown = first + int(np.argmax(down)) if down.any() else len(flying) - 1
         result["landing"] = (feet[touchdown, :, :2].mean(axis=0) - start).tolist()
-        result["landing_height"] = float(surface_under(feet[touchdown, :, :2].mean(axis=0),
-                                                       trajectory.meta.get("world", {}).get("boxes", ())))
+        world = trajectory.meta.get("world", {})
+        result["landing_height"] = float(surface_under(feet[touchdown, :, :2].mean(axis=0), world.get("boxes", ()),
+                                                       world.get("floor", 0.0)))
         result["windup_time"] = float(metrics["liftoff_time"])
         result["air_time"] = float(a["time"][touchdown] - a["time"][first])
+        middle = feet[touchdown].mean(axis=0)
+        com, velocity = a["com"][touchdown], a["com_vel"][touchdown]
+        capture = com[:2] + velocity[:2] * math.sqrt(max(com[2] - middle[2], 0.1) / GRAVITY)
+        result["capture_error"] = float(np.linalg.norm(capture - middle[:2]))
     return result
+
+
+CAPTURE_SCALE = 0.1                 # m of capture-point error that cost a fallen trial as much as a tolerance
+UNBALANCED_PRICE = 20.0             # cost of a trial that does not end balanced (and again if it fell
+                                    # before lift-off, e.g. hands down in the crouch)
 
 
 def trial_cost(measured: dict, target, air_time: float) -> float:
     """Tolerances used: landing error and air-time error in units of their tolerances, plus a
-    fixed price for not ending balanced."""
+    fixed price for not ending balanced; a trial that did not end balanced also pays for its
+    capture point's distance from the feet at touchdown (so that, before any trial balances,
+    the search moves towards landings with the COM over the feet, not only towards the target)."""
     landing = np.asarray(measured["landing"], dtype=float)
     if not np.isfinite(landing).all():
         return 1e3
     error = float(np.linalg.norm(landing - np.asarray(target[:2], dtype=float)))
     error += abs(measured.get("landing_height", 0.0) - float(target[2]))      # landed on the wrong surface
     cost = error / LANDING_TOLERANCE + abs(measured["air_time"] - air_time) / AIR_TIME_TOLERANCE
-    return cost + (0.0 if measured["outcome"] == "success" else 20.0)
+    if measured["outcome"] == "success":
+        return cost
+    capture = measured.get("capture_error", 0.0)
+    cost += UNBALANCED_PRICE + (capture / CAPTURE_SCALE if math.isfinite(capture) else UNBALANCED_PRICE)
+    return cost + (UNBALANCED_PRICE if measured.get("fell_before_liftoff") else 0.0)
 
 
 def within_tolerance(measured: dict, target, air_time: float, margin: float = 1.0) -> bool:
@@ -205,6 +268,7 @@ def leap_params(settings: dict, target, windup_time: float) -> dict:
             "com_offset": settings["com_offset"], "com_offset_y": settings.get("com_offset_y", 0.0),
             "liftoff_hip_angle": settings["liftoff_hip"],
             "arm_swing": settings["arm_swing"], "thrust_damping": settings["damping"],
+            "crouch_arms": settings.get("crouch_arms", 0.0),
             "foot_delta": settings["foot_delta"], "crouch_time": crouch_time(windup_time),
             **{"landing_" + k: v for k, v in landing_settings(settings).items()}}
 
@@ -223,54 +287,102 @@ def crouch_time(windup_time: float) -> float:
 def plan_jump(character: str, target, air_time: float, windup_time: float, strength="human",
               trials: int = 120, population: int = 12, elite: int = 4, progress=None) -> dict:
     """Search the leap's settings for a jump that lands the middle of the feet on ``target`` in
-    ``air_time`` and ends balanced. The search starts from the stored plan found nearest the
-    target (continuation: a longer jump starts from a shorter one), or from the calibrated broad
-    jump nearest the distance. Returns {"settings", "measured", "trials", "found"}."""
+    ``air_time`` and ends balanced. Two stages share the ``trials``: the cross-entropy method
+    over all the settings, starting from the best trial of an earlier search for the same
+    request, else the stored plan found nearest the target (continuation: a longer jump starts
+    from a shorter one), else the prior; then a pattern search from the
+    best balanced trial (REFINE_SHARE of the trials). The landing point is not smooth in the
+    settings - a balanced jump's neighbours often fall - so the population finds the balanced
+    region and the pattern search walks along it, one setting at a time, to the target.
+    Returns {"settings", "measured", "trials", "found"}."""
     from sim_core.simulate import RunRequest, run
 
     knobs = knobs_for(target)
     names = list(knobs)
     low = np.array([knobs[n][0] for n in names])
     high = np.array([knobs[n][1] for n in names])
-    prior = nearest_found_plan(character, target, strength) or search_prior(character, target)
-    prior = {n: prior.get(n, search_prior(character, target)[n]) for n in names}
-    mean = np.array([prior[n] for n in names])
+    fallback = search_prior(character, target)
+    previous = stored_plan(character, {"target_x": float(target[0]), "target_y": float(target[1]),
+                                       "target_z": float(target[2]), "obstacle_height": obstacle_of(target),
+                                       "air_time": air_time, "windup_time": windup_time, "strength": strength})
+    prior = search_start(character, target, previous, strength) or fallback
+    mean = np.array([float(prior.get(n, fallback[n])) for n in names])
     std = 0.25 * (high - low)
     rng = np.random.default_rng(_stable_seed(target, air_time, windup_time))
-    best = None
-    done = 0
-    duration = windup_time + air_time + 2.0
     world = scene_for(character, target)
-    while done < trials:
+    duration = windup_time + air_time + 2.0
+    tried = []          # (cost, x, settings, measured) of every trial, in order
+
+    def trial(x) -> tuple:
+        settings = {n: float(v) for n, v in zip(names, x)}
+        trajectory = run(RunRequest("leap", character, params=leap_params(settings, target, windup_time),
+                                    duration=duration, strength=strength, world=world))
+        measured = landing_measures(trajectory)
+        tried.append((trial_cost(measured, target, air_time), np.asarray(x, dtype=float), settings, measured))
+        if progress:
+            progress(len(tried), trials, best()[3])
+        return tried[-1]
+
+    def best(balanced=False):
+        pool = [t for t in tried if t[3]["outcome"] == "success"] if balanced else tried
+        return min(pool or tried, key=lambda item: item[0])
+
+    def done() -> bool:
+        return bool(tried) and within_tolerance(best()[3], target, air_time, PLAN_MARGIN)
+
+    population_trials = trials - int(REFINE_SHARE * trials) if trials >= 2 * population else trials
+    while len(tried) < population_trials and not done():
         batch = []
-        for k in range(min(population, trials - done)):
-            x = mean if (done == 0 and k == 0) else np.clip(mean + std * rng.standard_normal(len(names)), low, high)
-            settings = {n: float(v) for n, v in zip(names, x)}
-            trajectory = run(RunRequest("leap", character, params=leap_params(settings, target, windup_time),
-                                        duration=duration, strength=strength, world=world))
-            measured = landing_measures(trajectory)
-            cost = trial_cost(measured, target, air_time)
-            batch.append((cost, x, settings, measured))
-            if best is None or cost < best[0]:
-                best = (cost, x, settings, measured)
-            done += 1
-            if progress:
-                progress(done, trials, best[3])
-            if within_tolerance(best[3], target, air_time, PLAN_MARGIN):
+        for k in range(min(population, population_trials - len(tried))):
+            x = mean if not tried else np.clip(mean + std * rng.standard_normal(len(names)), low, high)
+            batch.append(trial(x))
+            if done():
                 break
-        if within_tolerance(best[3], target, air_time, PLAN_MARGIN):
-            break
         batch.sort(key=lambda item: item[0])
         chosen = np.array([item[1] for item in batch[:elite]])
         mean = 0.5 * mean + 0.5 * chosen.mean(axis=0)
         std = np.maximum(0.5 * std + 0.5 * chosen.std(axis=0), 0.02 * (high - low))
-    return {"settings": best[2], "measured": best[3], "trials": done,
-            "found": within_tolerance(best[3], target, air_time)}
+    _pattern_search(trial, best, done, low, high, trials - len(tried))
+    cost, _, settings, measured = best()
+    if previous and trial_cost(previous["measured"], target, air_time) <= cost:
+        settings, measured = previous["settings"], previous["measured"]     # the earlier search did better
+    return {"settings": settings, "measured": measured, "trials": len(tried) + (previous or {}).get("trials", 0),
+            "found": within_tolerance(measured, target, air_time)}
+
+
+def _pattern_search(trial, best, done, low, high, budget: int) -> None:
+    """Compass search from the best balanced trial: each setting in turn one step up, then down;
+    a move is kept when it lowers the cost; after a sweep with no move the steps halve (from 5 %
+    of each range down to 0.5 %)."""
+    if budget <= 0 or done():
+        return
+    step = 0.05 * (high - low)
+    centre = best(balanced=True)
+    left = budget
+    while left > 0 and not done() and (step >= 0.005 * (high - low)).all():
+        moved = False
+        for i in range(len(step)):
+            for sign in (1.0, -1.0):
+                if left <= 0 or done():
+                    return
+                x = centre[1].copy()
+                x[i] = min(max(x[i] + sign * step[i], low[i]), high[i])
+                if x[i] == centre[1][i]:
+                    continue
+                left -= 1
+                candidate = trial(x)
+                if candidate[0] < centre[0]:
+                    centre, moved = candidate, True
+                    break
+        if not moved:
+            step = 0.5 * step
 
 
 def _stable_seed(target, air_time: float, windup_time: float) -> int:
-    """A seed from the request's numbers (Python's hash of floats is stable, but be explicit)."""
-    values = [round(float(v) * 1000) for v in (*target, air_time, windup_time)]
+    """A seed from the request's numbers (Python's hash of floats is stable, but be explicit); an
+    obstacle counts only where there is one (so a request without one seeds as it always did)."""
+    obstacle = [obstacle_of(target)] if obstacle_of(target) else []
+    values = [round(float(v) * 1000) for v in (*target[:3], air_time, windup_time, *obstacle)]
     seed = 17
     for v in values:
         seed = (seed * 1_000_003 + v) % (2 ** 31)
@@ -291,11 +403,13 @@ def stored_plan(character: str, request: dict) -> dict | None:
     return None
 
 
-REQUEST_KEYS = ("target_x", "target_y", "target_z", "air_time", "windup_time")
+REQUEST_KEYS = ("target_x", "target_y", "target_z", "obstacle_height", "air_time", "windup_time")
 
 
 def same_request(a: dict, b: dict) -> bool:
-    return all(abs(a[k] - b[k]) < 1e-6 for k in REQUEST_KEYS) and a.get("strength", "human") == b.get("strength", "human")
+    """(A plan stored before obstacles existed has no obstacle_height: none.)"""
+    return (all(abs(a.get(k, 0.0) - b.get(k, 0.0)) < 1e-6 for k in REQUEST_KEYS)
+            and a.get("strength", "human") == b.get("strength", "human"))
 
 
 def store_plan(character: str, request: dict, plan: dict, script: str) -> None:
@@ -305,7 +419,7 @@ def store_plan(character: str, request: dict, plan: dict, script: str) -> None:
     stored = json.loads(path.read_text())["plans"] if path.exists() else []
     stored = [p for p in stored if not same_request(p["request"], request)]
     stored.append({"request": request, **plan})
-    stored.sort(key=lambda p: tuple(p["request"][k] for k in REQUEST_KEYS))
+    stored.sort(key=lambda p: tuple(p["request"].get(k, 0.0) for k in REQUEST_KEYS))
     path.write_text(json.dumps({"character": character, "script": script, "plans": stored}, indent=1) + "\n")
 
 
@@ -313,20 +427,36 @@ def _side(y: float) -> int:
     return 0 if abs(y) < 1e-9 else (1 if y > 0 else -1)
 
 
-def nearest_found_plan(character: str, target, strength="human") -> dict | None:
-    """Settings of the stored plan that found a jump onto the same height and to the same side,
-    nearest ``target`` (None if there is none)."""
+def search_start(character: str, target, previous: dict | None, strength="human") -> dict | None:
+    """Where a search starts: the settings of the stored plan that found a jump onto the same height
+    and to the same side nearest ``target`` (for a jump down with none found yet, the nearest jump
+    on the ground), or of an earlier search's best trial for this very request (``previous``) if
+    that ended balanced nearer the target (None if neither)."""
+    found = nearest_found_plan(character, target, strength)
+    if found is None and target[2] < 0:     # a jump down: the forward jumps on the ground, until one is found
+        found = nearest_found_plan(character, (target[0], target[1], 0.0), strength)
+    if previous is None or previous["measured"]["outcome"] != "success":
+        return found[1] if found else (previous or {}).get("settings")
+    miss = math.dist(previous["measured"]["landing"], [float(v) for v in target[:2]])
+    return found[1] if found and found[0] < miss else previous["settings"]
+
+
+def nearest_found_plan(character: str, target, strength="human") -> tuple[float, dict] | None:
+    """(distance, settings) of the stored plan that found a jump onto the same height and to the
+    same side, nearest ``target`` (None if there is none)."""
     path = plans_path(character)
     plans = [p for p in json.loads(path.read_text())["plans"]
              if p["found"] and p["request"].get("strength", "human") == strength
              and abs(p["request"]["target_z"] - float(target[2])) < 1e-6
+             and abs(p["request"].get("obstacle_height", 0.0) - obstacle_of(target)) < 1e-6
              and _side(p["request"]["target_y"]) == _side(float(target[1]))] if path.exists() else []
     if not plans:
         return None
     def distance(p):        # nearest; of two as near, the longer jump (shortening one is easier)
         where = (p["request"]["target_x"], p["request"]["target_y"], p["request"]["target_z"])
-        return round(math.dist(where, tuple(float(v) for v in target)), 6), -math.hypot(*where[:2])
-    return dict(min(plans, key=distance)["settings"])
+        return round(math.dist(where, tuple(float(v) for v in target[:3])), 6), -math.hypot(*where[:2])
+    nearest = min(plans, key=distance)
+    return distance(nearest)[0], dict(nearest["settings"])
 
 
 @register
@@ -339,7 +469,12 @@ class JumpToTarget(Leap):
         Parameter("target_x", "m", 1.0, -2.5, 2.5, "landing point of the middle of the feet, forward of "
                   "the middle of the feet at the start"),
         Parameter("target_y", "m", 0.0, -2.0, 2.0, "landing point, to the left (+) of the start"),
-        Parameter("target_z", "m", 0.0, -1.0, 1.0, "height of the surface landed on (0 = the ground)"),
+        Parameter("target_z", "m", 0.0, -1.0, 1.0,
+                  "height of the surface landed on above the one the character starts on: > 0 onto a box, "
+                  "< 0 down (the character starts on a box this high), 0 = on the ground"),
+        Parameter("obstacle_height", "m", 0.0, 0.0, 1.0,
+                  "a box this high (above the surface landed on) to jump over, halfway between the toes and "
+                  "the target, 0.3 m deep; 0 = none"),
         Parameter("air_time", "s", 0.45, 0.05, 1.5, "time the feet are off the ground"),
         Parameter("windup_time", "s", 1.25, 0.75, 3.0, "time from the first move to lift-off"),
         Parameter("plan_trials", "count", 120, 0, 600,
@@ -355,7 +490,8 @@ class JumpToTarget(Leap):
 
     @classmethod
     def scene(cls, params, world, character=None):
-        return scene_for(character, (params["target_x"], params["target_y"], params["target_z"]), world)
+        return scene_for(character, (params["target_x"], params["target_y"], params["target_z"],
+                                     params["obstacle_height"]), world)
 
     def run_params(self) -> dict:
         return self.params
@@ -366,15 +502,20 @@ class JumpToTarget(Leap):
     def check_feasible(self) -> None:
         p = self.params
         name = self.ctx.character.name
-        target = np.array([p["target_x"], p["target_y"], p["target_z"]])
-        if p["target_z"] < 0.0:
-            raise ParameterError(f"parameter target_z={p['target_z']:g} m: jumping down (starting on a box) is "
-                                 f"not implemented yet; allowed range is [0, 1] m (0 = the ground, more = onto a box)")
+        target = np.array([p["target_x"], p["target_y"], p["target_z"], p["obstacle_height"]])
+        if p["obstacle_height"] > 0.0:
+            gap = p["target_x"] - (toe_tip(self.ctx.character) - start_feet_centre(self.ctx.character)[0])
+            if p["target_z"] > 0.0 or gap < OBSTACLE_LENGTH + 0.4:
+                raise ParameterError(
+                    f"parameter obstacle_height={p['obstacle_height']:g} m: a box to jump over needs a target on "
+                    f"the ground or below (target_z <= 0, is {p['target_z']:g}) at least "
+                    f"{OBSTACLE_LENGTH + 0.4:.1f} m ahead of the toes (is {gap:.2f} m); allowed range of "
+                    f"obstacle_height is [0, 1] m, 0 = none")
         if p["target_x"] < 0.0 or (p["target_x"] == 0.0 and p["target_y"] == 0.0):
             raise ParameterError(f"parameter target_x={p['target_x']:g} m: the jump goes forward or sideways, "
                                  f"not back or on the spot; allowed range is [0, 2.5] m, with target_x or "
                                  f"target_y not 0")
-        velocity = path_estimate(target, p["air_time"])
+        velocity = path_estimate(target[:3], p["air_time"])
         capacity = takeoff_capacity(name, vertical_key(self.ctx))
         speed = float(np.linalg.norm(velocity))
         if speed > capacity:
@@ -389,7 +530,7 @@ class JumpToTarget(Leap):
             if p["plan_trials"] < 1:
                 raise ParameterError(f"no stored plan for this jump of {name} and plan_trials=0; allowed range "
                                      f"of plan_trials is [1, 600] to plan it now (scripts/plan_jumps.py stores plans)")
-            plan = plan_jump(name, target, p["air_time"], p["windup_time"], request["strength"],
+            plan = plan_jump(name, tuple(target), p["air_time"], p["windup_time"], request["strength"],
                              trials=int(p["plan_trials"]), progress=_print_progress)
         if not plan["found"]:
             m = plan["measured"]
@@ -405,6 +546,7 @@ class JumpToTarget(Leap):
         settings = {k: self.plan["settings"][k] for k in ("crouch_height", "crouch_pitch", "com_offset", "arm_swing",
                                                           "damping", "liftoff_hip", "foot_delta")}
         settings["com_offset_y"] = self.plan["settings"].get("com_offset_y", 0.0)
+        settings["crouch_arms"] = self.plan["settings"].get("crouch_arms", 0.0)
         settings["crouch_time"] = crouch_time(self.params["windup_time"])
         settings.update(landing_settings(self.plan["settings"]))
         return settings
