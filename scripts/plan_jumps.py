@@ -97,7 +97,8 @@ def report(characters) -> None:
             rows.append(f"| {character} | {label} | ({m['landing_x']:.3f}, {m['landing_y']:.3f}) | "
                         f"{100 * m['landing_error']:.1f} | {params['air_time'] + m['air_time_error']:.3f} | "
                         f"{trajectory.meta['outcome']}{'' if ok else ' (outside the tolerance)'} |")
-            points.append((character, params["target_x"], m["landing_x"], ok))
+            if not params["target_y"] and not params["target_z"]:      # the plot: straight ahead on the ground
+                points.append((character, params["target_x"], m["landing_x"], ok))
     _plot(points)
     text = f"""# Jumping to a target (Ooi 2015)
 

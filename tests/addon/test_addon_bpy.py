@@ -341,6 +341,31 @@ def test_a_jump_takes_its_target_from_an_empty(empty_scene):
     assert result["outcome"] == "success" and result["metrics"]["landing_error"] <= 0.05
 
 
+def test_a_jump_down_is_baked_with_its_boxes_and_the_ground_below(empty_scene):
+    """The woman's jump from a box over a second box to the ground, through the operator: the
+    box she starts on, the box she clears and the ground 0.5 m below appear under fixed names
+    where the simulation had them, and the baked pelvis ends about 0.5 m lower than it started."""
+    from blender_addon import scenery
+    context = empty_scene
+    context.scene.render.fps, context.scene.render.fps_base = FPS, 1.0
+    assert bpy.ops.sim_athletics.add_character(character="woman") == {"FINISHED"}
+    arm = context.view_layer.objects.active
+    params = "target_x=1.4 target_z=-0.5 obstacle_height=0.3 air_time=0.6 plan_trials=0"
+    assert bpy.ops.sim_athletics.simulate_bake(behaviour="jump_to_target", params=params, duration=3.85,
+                                               start_frame=1) == {"FINISHED"}
+    assert json.loads(arm[rig.RESULT_KEY])["outcome"] == "success"
+    top = lambda name: max((bpy.data.objects[name].matrix_world @ v.co).z for v in bpy.data.objects[name].data.vertices)
+    assert top(scenery.BOX_NAME.format(0)) == pytest.approx(0.0, abs=1e-6)        # stood on
+    assert top(scenery.BOX_NAME.format(1)) == pytest.approx(-0.2, abs=1e-6)       # cleared
+    assert top(scenery.GROUND_NAME) == pytest.approx(-0.5, abs=1e-6)
+    action = arm.animation_data.action
+    context.scene.frame_set(1)
+    start = (arm.matrix_world @ arm.pose.bones["PELVIS"].head).z
+    context.scene.frame_set(int(action.frame_range[1]))
+    end = (arm.matrix_world @ arm.pose.bones["PELVIS"].head).z
+    assert end - start == pytest.approx(-0.5, abs=0.1)
+
+
 def test_a_somersault_is_baked_with_the_panels_strength(empty_scene):
     """The standing back somersault through the operator, at the strength the panel's Strength
     sets: the baked trunk turns upside down in the air and the rig ends upright; the run's
