@@ -79,8 +79,8 @@ def standard_metrics(traj: Trajectory, allowed_contacts=FOOT_BODIES) -> dict:
     pelvis_height = a["body_pos"][:, pelvis, 2]
     if world.get("boxes") or world.get("floor"):
         # above what is under it: a box landed on, or the ground below the box the character started on
-        pelvis_height = pelvis_height - surface_under(a["body_pos"][:, pelvis], world.get("boxes", ()),
-                                                      world.get("floor", 0.0))
+        under = surface_under(a["body_pos"][:, pelvis], world.get("boxes", ()), world.get("floor", 0.0))
+        pelvis_height, hip_height = pelvis_height - under, hip_height - under
     too_low = pelvis_height < 0.5 * stand_pelvis
     fell_frames = np.nonzero(bad_contact | too_low)[0]
     fell = len(fell_frames) > 0

@@ -290,10 +290,11 @@ def plan_jump(character: str, target, air_time: float, windup_time: float, stren
     ``air_time`` and ends balanced. Two stages share the ``trials``: the cross-entropy method
     over all the settings, starting from the best trial of an earlier search for the same
     request, else the stored plan found nearest the target (continuation: a longer jump starts
-    from a shorter one), else the prior; then a pattern search from the
-    best balanced trial (REFINE_SHARE of the trials). The landing point is not smooth in the
-    settings - a balanced jump's neighbours often fall - so the population finds the balanced
-    region and the pattern search walks along it, one setting at a time, to the target.
+    from a shorter one), else the prior; then a pattern search from the best balanced trial
+    (REFINE_SHARE of the trials). The landing point is not smooth in the settings - a balanced
+    jump's neighbours often fall - so the population finds the balanced region and the pattern
+    search walks along it, one setting at a time, to the target. An earlier search's best is kept
+    if this one does no better; the trial counts add up.
     Returns {"settings", "measured", "trials", "found"}."""
     from sim_core.simulate import RunRequest, run
 
