@@ -497,6 +497,11 @@ DEFAULT_MAPPING = {
 }
 
 
+def rise_tolerance(height: float) -> float:
+    """TARGETS.md's tolerance of a vertical leap's COM rise: +-10 %, or +-3 cm below 0.3 m."""
+    return 0.03 if height < 0.3 else 0.1 * height
+
+
 def run_strength(ctx: ControlContext) -> str:
     """The strength a calibration is kept under: "human" for the human torque limits (or a factor
     of them), "unlimited" when the leg servos have no torque limit."""
@@ -522,7 +527,9 @@ class Leap(Sequence):
     summary = "Vertical leap or standing broad jump: crouch, extend, fly, land, balance (Wooten ch. 4, 6, 8)."
     default_duration = 5.0
     schema = Schema(
-        Parameter("height", "m", 0.3, 0.05, 1.2, "commanded rise of the COM above standing (vertical leap)"),
+        Parameter("height", "m", 0.3, 0.05, 1.2,
+                  "commanded rise of the COM above standing (vertical leap): runs the calibrated leap nearest "
+                  "it if that one's measured rise is within 10 % (3 cm below 0.3 m), else interpolates"),
         Parameter("distance", "m", 0.0, 0.0, 2.5,
                   "commanded horizontal COM travel (broad jump); 0 = vertical leap"),
         Parameter("liftoff_hip_angle", "rad", 0.0, -1.0, 1.0,
@@ -574,7 +581,11 @@ class Leap(Sequence):
 
     def settings(self, p: dict) -> dict:
         """The leap's low-level settings for the run parameters ``p``: the user's own (low_level) or
-        the vertical-leap table's, interpolated at the commanded height."""
+        the vertical-leap table's: the calibrated row nearest the commanded height when its measured
+        rise is within the tolerance (rise_tolerance), else interpolated between the rows around
+        it. The rise is not smooth between rows whose thrust differs (a damped and an undamped
+        extension, another crouch): an interpolated leap between them can miss or fall where both
+        rows land, so a measured row is preferred."""
         if p["low_level"]:
             settings = {k: p[k] for k in ("crouch_height", "crouch_pitch", "com_offset", "com_offset_y",
                                           "arm_swing", "crouch_arms", "thrust_damping")}
@@ -583,8 +594,9 @@ class Leap(Sequence):
             return settings
         mapping = load_mapping(self.ctx.character.name)
         v = mapping[vertical_key(self.ctx)]
-        h = p["height"]
         rises = v["com_rise"]
+        nearest = min(rises, key=lambda rise: abs(rise - p["height"]))
+        h = nearest if abs(nearest - p["height"]) <= rise_tolerance(p["height"]) else p["height"]
         column = lambda name, default: float(np.interp(h, rises, v.get(name, [default] * len(rises))))
         return {"crouch_height": column("crouch_height", 0.65), "crouch_pitch": column("torso_pitch", 0.0),
                 "com_offset": column("com_offset", 0.0), "arm_swing": column("arm_swing", 1.0),
