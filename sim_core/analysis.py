@@ -17,12 +17,17 @@ LIFT_HEIGHT = 0.02           # m: a foot whose every contact site is this high i
 CONTACT_HEIGHT = 0.005       # m: a contact site this close to the ground supports the body
 
 
+def surface_under_points(trajectory, points: np.ndarray) -> np.ndarray:
+    """Height of what is under each point (..., 2 or 3) in the trajectory's world: a box's top, or
+    the ground (World.floor)."""
+    world = trajectory.meta.get("world", {})
+    return surface_under(points, world.get("boxes", ()), world.get("floor", 0.0))
+
+
 def feet_above_surface(trajectory) -> np.ndarray:
     """Per frame and foot site: height above the ground or the box under it."""
     points = trajectory.arrays["support_points"]
-    world = trajectory.meta.get("world", {})
-    boxes, floor = world.get("boxes", ()), world.get("floor", 0.0)
-    return points[:, :, 2] - surface_under(points, boxes, floor) if boxes else points[:, :, 2] - floor
+    return points[:, :, 2] - surface_under_points(trajectory, points)
 
 
 def com_support_margins(traj: Trajectory, up: np.ndarray | None = None) -> np.ndarray:
@@ -75,13 +80,10 @@ def standard_metrics(traj: Trajectory, allowed_contacts=FOOT_BODIES) -> dict:
     bad_contact = (a["ground_contact"] & ~allowed).any(axis=1)
     hip_height = 0.5 * (a["body_pos"][:, names.index("ULEGR"), 2] + a["body_pos"][:, names.index("ULEGL"), 2])
     stand_pelvis = a["body_pos"][0, pelvis, 2] - traj.meta.get("start_state", {}).get("height", 0.0)
-    world = traj.meta.get("world", {})
-    pelvis_height = a["body_pos"][:, pelvis, 2]
-    if world.get("boxes") or world.get("floor"):
-        # above what is under it: a box landed on, or the ground below the box the character started on
-        under = surface_under(a["body_pos"][:, pelvis], world.get("boxes", ()), world.get("floor", 0.0))
-        pelvis_height, hip_height = pelvis_height - under, hip_height - under
-    too_low = pelvis_height < 0.5 * stand_pelvis
+    # above what is under the pelvis: the ground, a box landed on, or the ground below the box started on
+    under = surface_under_points(traj, a["body_pos"][:, pelvis])
+    hip_height = hip_height - under
+    too_low = a["body_pos"][:, pelvis, 2] - under < 0.5 * stand_pelvis
     fell_frames = np.nonzero(bad_contact | too_low)[0]
     fell = len(fell_frames) > 0
     feet = a["support_points"]

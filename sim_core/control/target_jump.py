@@ -34,10 +34,9 @@ from pathlib import Path
 
 import numpy as np
 
-from sim_core.analysis import feet_above_surface
+from sim_core.analysis import feet_above_surface, surface_under_points
 from sim_core.ballistics import GRAVITY
 from sim_core.control.behaviour import register
-from sim_core.control.measure import surface_under
 from sim_core.control.leap import (AIRBORNE_HEIGHT, TUNED_DIR, Leap, leap_assess, load_mapping, run_strength,
                                   vertical_key)
 from sim_core.errors import ParameterError
@@ -216,9 +215,7 @@ def landing_measures(trajectory) -> dict:
         down = ~flying[first:]
         touchdown = first + int(np.argmax(down)) if down.any() else len(flying) - 1
         result["landing"] = (feet[touchdown, :, :2].mean(axis=0) - start).tolist()
-        world = trajectory.meta.get("world", {})
-        result["landing_height"] = float(surface_under(feet[touchdown, :, :2].mean(axis=0), world.get("boxes", ()),
-                                                       world.get("floor", 0.0)))
+        result["landing_height"] = float(surface_under_points(trajectory, feet[touchdown, :, :2].mean(axis=0)))
         result["windup_time"] = float(metrics["liftoff_time"])
         result["air_time"] = float(a["time"][touchdown] - a["time"][first])
         middle = feet[touchdown].mean(axis=0)
