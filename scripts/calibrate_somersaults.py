@@ -29,12 +29,12 @@ from __future__ import annotations
 import argparse
 import json
 import math
-import os
 import time
 
 import numpy as np
 
 from sim_core.control.somersault import DIRECTIONS, SETTINGS, TUNED_DIR, load_table
+from sim_core.control.tuned import write_table
 from sim_core.simulate import RunRequest, run
 
 DURATION = 5.0
@@ -150,13 +150,6 @@ def found(m: dict) -> bool:
     return m["outcome"] == "success" and (m["angular_momentum_drift"] or 0.0) < DRIFT_GOAL
 
 
-def write_table(character: str, table: dict) -> None:
-    path = TUNED_DIR / f"somersaults_{character}.json"
-    tmp = path.with_suffix(".tmp")
-    tmp.write_text(json.dumps(table, indent=1) + "\n")
-    os.replace(tmp, path)          # never a half-written table
-
-
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--character", choices=("man", "woman"), action="append")
@@ -193,7 +186,7 @@ def main() -> None:
                                             f"{100 * (m['angular_momentum_drift'] or 0):.2f} %, rotation {m['rotation']:.2f} rad, flight rotation "
                                             f"{m['flight_rotation'] or 0:.2f} rad, take-off angular momentum "
                                             f"{m['liftoff_angular_momentum'] or 0:.1f} kg m^2/s"})
-                write_table(character, {"character": character, "script": "scripts/calibrate_somersaults.py",
+                write_table(TUNED_DIR / f"somersaults_{character}.json", {"character": character, "script": "scripts/calibrate_somersaults.py",
                                         "duration": DURATION, "somersaults": rows, "not_found": missing})
                 print(f"{character} {direction} ({strength}): {m['outcome']}, drift {100 * (m['angular_momentum_drift'] or 0):.2f} % after {time.time() - started:.0f} s")
 

@@ -1,6 +1,6 @@
 """Tumbling and diving report: moments of inertia of the positions beside Wooten's Fig. 5.2, the
-four 10 m platform dives of §8.2.1 and the standing somersaults of §8.4-8.5 measured off the
-simulation, and a plot of the somersault and twist rates in flight (like Figs. 5.3 and 5.7).
+four 10 m platform dives of §8.2.1, the standing somersaults of §8.4-8.5 and the back handspring of
+§8.3 measured off the simulation, and a plot of the somersault and twist rates in flight (like Figs. 5.3 and 5.7).
 Writes docs/tumbling.md's results block and docs/tumbling_rates.png.
 
     python3 scripts/tumble_report.py
@@ -107,6 +107,34 @@ def somersault_rows() -> list[str]:
     return lines
 
 
+HANDSPRINGS = [("man", "unlimited"), ("man", "human")]          # §8.3: the man's
+
+
+def handspring_rows() -> list[str]:
+    lines = ["| character | strength | outcome | rotation, standing to standing | turned when the hands land | "
+             "first flight s | hands on the ground s | second flight s | take-off velocity m/s (back, up) | "
+             "take-off angular momentum kg m²/s | momentum drift in the flights | COM rise m | COM travel m | "
+             "peak vertical GRF, thrust / hands / landing (body weights) |",
+             "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"]
+    for character, strength in HANDSPRINGS:
+        try:
+            traj = run(RunRequest("handspring", character, strength=strength))
+        except ParameterError as error:
+            lines.append(f"| {character} | {strength} | refused: {error} | | | | | | | | | | | |")
+            continue
+        m = traj.meta["metrics"]
+        vx, _, vz = m["liftoff_velocity"]
+        lines.append(f"| {character} | {strength} | {traj.meta['outcome']} | {m['rotation']:.2f} rad "
+                     f"({m['somersaults']:.3f} turns) | {m['rotation_at_hands']:.2f} rad | {m['first_flight_time']:.2f} | "
+                     f"{m['hand_contact_time']:.3f} | {m['second_flight_time']:.2f} | {-vx:.2f}, {vz:.2f} | "
+                     f"{m['liftoff_angular_momentum']:.1f} | "
+                     f"{' / '.join(f'{100 * d:.2f} %' for d in m['flight_drifts'])} | {m['com_rise']:.2f} | "
+                     f"{m['com_travel']:+.2f} | {m['peak_thrust_grf_body_weights']:.1f} / "
+                     f"{m['peak_hands_grf_body_weights']:.1f} / {m['peak_landing_grf_body_weights']:.1f} |")
+        print(lines[-1], flush=True)
+    return lines
+
+
 def plot(runs: dict) -> None:
     import matplotlib
     matplotlib.use("Agg")
@@ -146,6 +174,9 @@ def main() -> int:
     lines += ["", "Standing tuck somersaults (§8.4-8.5; calibrated by `scripts/calibrate_somersaults.py`; a skill "
               "succeeds when it turns once, 2π ± 0.35 rad, and ends balanced on the feet):", ""]
     lines += somersault_rows()
+    lines += ["", "Back handspring (§8.3; calibrated by `scripts/calibrate_handspring.py`; it succeeds when it turns once, "
+              "2π ± 0.35 rad, with the hands on the ground between two flights, and ends balanced on the feet):", ""]
+    lines += handspring_rows()
     plot(runs)
     text = DOC.read_text()
     block = "<!-- results -->\n" + "\n".join(lines) + "\n<!-- /results -->"

@@ -29,8 +29,8 @@ from sim_core.control.leap import AIRBORNE_HEIGHT, TUNED_DIR, Landing, balance_a
 from sim_core.control.sequencer import Sequence, Step
 from sim_core.control.takeoff import takeoff_steps
 from sim_core.control.tumble import FlightRotation, Tumble, position_inertia, rotation_to_come
+from sim_core.control.tuned import uncalibrated
 from sim_core.analysis import feet_above_surface
-from sim_core.errors import ParameterError
 from sim_core.schema import Parameter, Schema
 
 DIRECTIONS = ("backward", "forward")
@@ -116,15 +116,11 @@ class Somersault(Sequence):
         name, strength = self.ctx.character.name, run_strength(self.ctx)
         if calibrated(name, self.direction_name, strength) is None:
             table = load_table(name)
-            measured = [e for e in table.get("not_found", [])
-                        if e["direction"] == self.direction_name and e["strength"] == strength]
-            why = f" (best searched: {measured[0]['best']})" if measured else ""
-            have = [f"{e['direction']} with {e['strength']} strength" for e in table["somersaults"]]
-            raise ParameterError(
-                f"the {name} has no calibrated {self.direction_name} somersault with "
-                f"{'unlimited strength' if strength == 'unlimited' else 'human torque limits'}: "
-                f"scripts/calibrate_somersaults.py found no take-off that lands it{why}; calibrated: "
-                f"{', '.join(have) or 'none'}")
+            best = [e["best"] for e in table.get("not_found", [])
+                    if e["direction"] == self.direction_name and e["strength"] == strength]
+            raise uncalibrated(name, f"{self.direction_name} somersault", strength,
+                               [f"{e['direction']} with {e['strength']} strength" for e in table["somersaults"]],
+                               best[0] if best else None, "scripts/calibrate_somersaults.py")
 
     # ------------------------------------------------------------------ the script
     def steps(self) -> list[Step]:

@@ -387,3 +387,35 @@ def test_a_somersault_is_baked_with_the_panels_strength(empty_scene):
         head = arm.matrix_world @ arm.pose.bones["HEAD"].head
         ups.append((head - pelvis).normalized().z)          # the trunk's axis: +1 upright, -1 upside down
     assert min(ups) < -0.9 and ups[-1] > 0.9
+
+
+def test_a_back_handspring_is_baked_with_its_hands_on_the_floor(empty_scene):
+    """The back handspring through the operator: the baked trunk turns upside down, the fingers come
+    down to the floor while it is inverted, and the rig ends upright more than 2 m behind where it
+    started (backward: against the way the feet point)."""
+    from sim_core.control.handspring import calibrated
+    context = empty_scene
+    context.scene.render.fps, context.scene.render.fps_base = FPS, 1.0
+    strength = "human" if calibrated("man", "human") else "unlimited"
+    if not calibrated("man", strength):
+        pytest.xfail("no calibrated back handspring")
+    context.scene.sim_athletics.strength = strength
+    assert bpy.ops.sim_athletics.add_character(character="man") == {"FINISHED"}
+    arm = context.view_layer.objects.active
+    assert bpy.ops.sim_athletics.simulate_bake(behaviour="handspring", start_frame=1) == {"FINISHED"}
+    result = json.loads(arm[rig.RESULT_KEY])
+    assert result["strength"] == strength and result["outcome"] == "success"
+    ups, hands_low_inverted = [], False
+    for frame in range(1, int(arm.animation_data.action.frame_range[1]) + 1):
+        context.scene.frame_set(frame)
+        pelvis = arm.matrix_world @ arm.pose.bones["PELVIS"].head
+        head = arm.matrix_world @ arm.pose.bones["HEAD"].head
+        fingers = arm.matrix_world @ arm.pose.bones["HANDR"].tail
+        ups.append((head - pelvis).normalized().z)
+        hands_low_inverted |= ups[-1] < -0.9 and fingers.z < 0.05
+        if frame == 1:
+            start = pelvis.copy()
+            facing = (arm.matrix_world @ arm.pose.bones["TOER"].head - arm.matrix_world @ arm.pose.bones["FOOTR"].head).xy
+    assert min(ups) < -0.9 and ups[-1] > 0.9 and hands_low_inverted
+    travel = (pelvis - start).xy
+    assert travel.length > 2.0 and travel.normalized().dot(facing.normalized()) < -0.9      # backward

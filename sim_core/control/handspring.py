@@ -1,0 +1,382 @@
+"""Back handspring (Wooten §8.3), built only by sequencing the basis behaviours: balance (sit back
+until the COM falls behind the heels) -> leap (thrust backward with the arms swinging overhead) ->
+tumble (an arched layout, the arms reaching for the floor) -> hands (the hands land through the
+contact model and the arms are held stiff) -> push (a set time after the hands land, Wooten: "the
+hands ... were programmed to push off the ground a set amount of time after contact": the
+shoulders block and the hips snap down) -> second flight (the snap held until the turn is nearly
+complete) -> land -> balance.
+
+The thesis: "The leaping controller initiates the maneuver by causing the character to jump
+backwards into the air with substantial rotation about the somersaulting axis. The tumbling
+controller performs a backwards 1/2 somersault in the layout position. The character then lands on
+his hands and after a set amount of time pushes off the ground to perform another 1/2 somersault.
+The landing controller positions the legs for touchdown and transitions to the balance
+controller." Nothing holds the hands: they touch, carry the body and leave by contact forces alone.
+
+The settings per character and strength come from ``rigs/tuned/handspring_<character>.json``,
+written by ``scripts/calibrate_handspring.py`` (a cross-entropy search over whole simulated
+handsprings, scored off the simulation).
+"""
+from __future__ import annotations
+
+import json
+import math
+
+import numpy as np
+
+from sim_core.ballistics import GRAVITY
+from sim_core.analysis import FOOT_BODIES, feet_above_surface, standard_metrics, surface_under_points
+from sim_core.control.balance import Balance, standing_hip_height
+from sim_core.control.behaviour import Behaviour, ControlContext, register
+from sim_core.control.leap import (ANKLE_GAIN_VERTICAL, AIRBORNE_HEIGHT, TUNED_DIR, VERTICAL_TIMING, Airborne,
+                                   Landing, LeapThrust, balance_after_landing, run_strength)
+from sim_core.control.sequencer import Sequence, Step
+from sim_core.control.somersault import ROTATION_TOLERANCE, pelvis_pitch
+from sim_core.control.tumble import FlightRotation
+from sim_core.control.tuned import uncalibrated
+from sim_core.schema import Parameter, Schema
+
+HAND_BODIES = ("HANDR", "HANDL")
+SIT_LOWEST = Balance.schema.by_name["pelvis_height"].minimum   # m: the deepest sit (the deepest crouch)
+SIT_TIMEOUT = 3.0          # s into the run: the thrust starts at the latest then, fallen back or not
+ARCH_MOVE = 0.2            # s: the servo move into the arch after lift-off
+ARCH_GAIN = 2.0            # gain factor of the arched joints' servos in the first flight
+PUSH_CLEAR = 0.03          # s after the push starts before a flight counts as the second one
+LANDING_BLEND = 0.1        # s: the landing's targets blend in from the snap
+SKID_LIMIT = 0.05          # m: the middle of the feet moving further after touchdown is a step or skid
+ARCH = {"elbow_*_z": 0.0, "knee_*_y": 0.0, "spine_l3_y": -0.13, "spine_l1_y": -0.13, "spine_t7_y": -0.08,
+        "spine_t4_y": -0.08, "wrist_*_x": 0.0, "ankle_*_y": 0.5}      # the spine at (near) its extension range
+SNAP_SPINE = {"spine_l3_y": 0.2, "spine_l1_y": 0.2}
+ARMS = ["shoulder_r_z", "shoulder_l_z", "shoulder_r_x", "shoulder_l_x", "elbow_r_z", "elbow_l_z",
+        "wrist_r_x", "wrist_l_x"]
+
+TAKEOFF_SETTINGS = ("crouch_height", "crouch_pitch", "com_offset", "sit_extra", "thrust_lean", "liftoff_hip",
+                    "arm_swing", "arm_gain", "arm_time", "thrust_damping")
+HAND_SETTINGS = ("arch_arm", "arch_hip", "neck", "hand_gain", "push_delay", "push_shoulder", "push_hip",
+                 "snap_knee", "push_move", "push_gain")
+LANDING_SETTINGS = ("land_lean", "open_height", "ready_height", "land_knee", "foot_delta", "foot_lead", "spin_placement")
+SETTINGS = TAKEOFF_SETTINGS + HAND_SETTINGS + LANDING_SETTINGS
+
+
+def load_table(character: str) -> dict:
+    path = TUNED_DIR / f"handspring_{character}.json"
+    return json.loads(path.read_text()) if path.exists() else {"handsprings": []}
+
+
+def calibrated(character: str, strength: str) -> dict | None:
+    """The calibrated handspring of this character and strength, or None."""
+    for entry in load_table(character)["handsprings"]:
+        if entry["strength"] == strength:
+            return entry
+    return None
+
+
+def _both_sides(angles: dict[str, float]) -> dict[str, float]:
+    """Joint name -> angle with "*" spelled out for both sides (arm axes mirrored, as the positions)."""
+    out = {}
+    for name, value in angles.items():
+        if "*" not in name:
+            out[name] = value
+            continue
+        for side, sign in (("r", 1.0), ("l", -1.0)):
+            mirrored = name.startswith(("shoulder", "elbow")) and name.endswith(("_x", "_z"))
+            out[name.replace("*", side)] = value * sign if mirrored else value
+    return out
+
+
+class HandContact:
+    """Whether a hand touches the world (the ground or a box), from MuJoCo's contact list."""
+
+    def __init__(self, model):
+        self.model = model
+        self.hands = np.array([model.body(n).id for n in HAND_BODIES])
+
+    def touching(self, data) -> bool:
+        if not data.ncon:
+            return False
+        bodies = self.model.geom_bodyid[data.contact.geom[: data.ncon]]
+        world = bodies == 0
+        hand = np.isin(bodies, self.hands)
+        return bool(((world[:, 0] & hand[:, 1]) | (world[:, 1] & hand[:, 0])).any())
+
+
+class PoseMove(Behaviour):
+    """Basis step of a skill: Hermite moves of some joints to named angles, some servos' gains
+    scaled; every other target is held where it is."""
+
+    schema = Schema()
+
+    def __init__(self, ctx: ControlContext, goals: dict[str, float], move_time: float, gain: float = 1.0,
+                 gain_joints: list[str] | None = None):
+        super().__init__({}, ctx)
+        self.goals, self.move_time, self.gain = goals, move_time, gain
+        self.gain_joints = list(goals) if gain_joints is None else gain_joints
+
+    def start(self, t: float) -> None:
+        s = self.ctx.servos
+        s.offset[:] = 0.0
+        s.hold(s.smoothed_target(t), t)
+        s.move_to(s.indices(list(self.goals)), np.array(list(self.goals.values())), self.move_time, t)
+        stiff = s.indices(self.gain_joints)
+        s.set_gains(stiff, s.default_kp[stiff] * self.gain, s.default_kv[stiff] * self.gain)
+
+    def update(self, t: float) -> None:
+        """The servos hold the pose."""
+
+
+@register
+class Handspring(Sequence):
+    name = "handspring"
+    summary = ("Standing back handspring: sit back, leap backward, arch onto the hands, push off, snap down, "
+               "land, balance (Wooten §8.3).")
+    default_duration = 5.0
+    schema = Schema(
+        Parameter("low_level", "bool", 0.0, 0.0, 1.0,
+                  "1 = use the settings below instead of the calibrated ones (rigs/tuned/handspring_<character>.json; "
+                  "the defaults below are the man's, unlimited strength)"),
+        Parameter("crouch_height", "m", 0.6061, 0.5, 0.9, "pelvis height of the sit (low_level only)"),
+        Parameter("crouch_pitch", "rad", 0.8678, -0.3, 1.5, "torso pitch in the sit (low_level only)"),
+        Parameter("com_offset", "m", -0.1346, -0.25, -0.05, "COM behind (-) the middle of the feet in the sit (low_level only)"),
+        Parameter("sit_extra", "m", 0.181, 0.0, 0.3,
+                  "the thrust starts once the COM, falling back, is this much further behind (low_level only)"),
+        Parameter("thrust_lean", "m", -0.1942, -0.4, 0.0,
+                  "COM behind (-) the middle of the feet along the thrust's extension: the push goes back (low_level only)"),
+        Parameter("liftoff_hip", "rad", 0.1225, 0.0, 0.5, "hip extension at lift-off (backward spin) (low_level only)"),
+        Parameter("arm_swing", "rad", 2.7331, 1.5, 3.14, "arm swing forward and up to overhead during the thrust (low_level only)"),
+        Parameter("arm_gain", "1", 6.6857, 1.0, 10.0, "gain factor of the shoulder and elbow servos for the arm swing (low_level only)"),
+        Parameter("arm_time", "s", 0.0803, 0.05, 0.3, "duration of the arm swing (low_level only)"),
+        Parameter("thrust_damping", "1", 0.4612, 0.1, 1.0,
+                  "share of the stiffened leg servos' damping kept in the thrust (low_level only)"),
+        Parameter("arch_arm", "rad", 2.3159, 1.5, 3.14,
+                  "shoulder flexion in the first flight: the arms reach for the floor behind the head (low_level only)"),
+        Parameter("arch_hip", "rad", 0.2857, 0.0, 0.52, "hip extension of the arched first flight (low_level only)"),
+        Parameter("neck", "rad", -0.2341, -1.0, 0.5, "head tilt in the first flight, back (-) to see the floor (low_level only)"),
+        Parameter("hand_gain", "1", 10.0185, 1.0, 15.0, "gain factor of the arm servos while the hands take the weight (low_level only)"),
+        Parameter("push_delay", "s", 0.0024, 0.0, 0.3, "the push starts this long after the hands touch (low_level only)"),
+        Parameter("push_shoulder", "rad", 1.6831, 1.0, 3.14, "shoulder angle the push (the block) moves to (low_level only)"),
+        Parameter("push_hip", "rad", -1.4108, -2.0, 0.5, "hip flexion (-) of the snap-down (low_level only)"),
+        Parameter("snap_knee", "rad", 0.1325, 0.0, 1.2, "knee bend of the snap-down (low_level only)"),
+        Parameter("push_move", "s", 0.0701, 0.03, 0.3, "duration of the push's moves (low_level only)"),
+        Parameter("push_gain", "1", 6.5252, 1.0, 10.0, "gain factor of the servos of the push (low_level only)"),
+        Parameter("land_lean", "rad", 1.1018, 0.0, 1.6,
+                  "the landing starts when the pelvis has turned this much short of one turn (low_level only)"),
+        Parameter("open_height", "m", 0.7865, 0.4, 1.1,
+                  "... or when the COM has come down to this height, whichever is first (low_level only)"),
+        Parameter("ready_height", "m", 0.0406, 0.0, 0.8,
+                  "... or when a foot has come down to this height above the ground (low_level only)"),
+        Parameter("land_knee", "rad", 0.8716, 0.3, 1.4, "knee bend held for touchdown (low_level only)"),
+        Parameter("foot_delta", "m", -0.0953, -0.3, 0.3, "landing: foot servo delta (low_level only)"),
+        Parameter("foot_lead", "s", 0.3999, 0.0, 0.6,
+                  "landing: the feet land this many seconds of horizontal COM travel ahead of the COM (low_level only)"),
+        Parameter("spin_placement", "s/m", 0, 0.0, 0.5,
+                  "landing: feet placed this factor x (angular momentum / mass) against the spin (low_level only)"),
+    )
+
+    def settings(self) -> dict:
+        p = self.params
+        if p["low_level"]:
+            return {k: p[k] for k in SETTINGS}
+        return dict(calibrated(self.ctx.character.name, run_strength(self.ctx))["settings"])
+
+    def check_feasible(self) -> None:
+        if self.params["low_level"]:
+            return
+        name, strength = self.ctx.character.name, run_strength(self.ctx)
+        if calibrated(name, strength) is None:
+            table = load_table(name)
+            best = [e["best"] for e in table.get("not_found", []) if e["strength"] == strength]
+            raise uncalibrated(name, "back handspring", strength, [f"{e['strength']} strength" for e in table["handsprings"]],
+                               best[0] if best else None, "scripts/calibrate_handspring.py")
+
+    # ------------------------------------------------------------------ the script
+    def steps(self) -> list[Step]:
+        ctx = self.ctx
+        c = self.cfg = self.settings()
+        self.rotation = FlightRotation(ctx.model, ctx.data)
+        self.hands = HandContact(ctx.model)
+        self.airborne = Airborne(ctx.model)
+        stand = standing_hip_height(ctx.character)
+        self.t_hands = None
+
+        def sit(t):
+            return Balance(Balance.schema.validate(dict(
+                pelvis_height=c["crouch_height"], torso_pitch=c["crouch_pitch"], com_offset_x=c["com_offset"],
+                move_start=0.2, move_time=0.8, hold_time=0.0, return_to_stand=0)), ctx)
+
+        def fallen_back(b, t):
+            return b.com_ahead_of_support() < c["com_offset"] - c["sit_extra"] or t > SIT_TIMEOUT
+
+        def thrust(t):
+            return ArmSwingThrust({}, ctx, c["crouch_height"], VERTICAL_TIMING, ANKLE_GAIN_VERTICAL,
+                                  c["liftoff_hip"], c["arm_swing"], stand_height=stand, damping=c["thrust_damping"],
+                                  lean=c["thrust_lean"], arm_gain=c["arm_gain"], arm_time=c["arm_time"])
+
+        arch = _both_sides({"shoulder_*_z": c["arch_arm"], "hip_*_y": c["arch_hip"], "neck_c2_y": c["neck"], **ARCH})
+        push = _both_sides({"shoulder_*_z": c["push_shoulder"], "hip_*_y": c["push_hip"], "knee_*_y": c["snap_knee"],
+                            **SNAP_SPINE})
+
+        def hands(t):
+            self.t_hands = t
+            return PoseMove(ctx, {}, 0.1, c["hand_gain"], gain_joints=ARMS)
+
+        def pushed_off(b, t):
+            return (t - self.t_hands > c["push_delay"] + PUSH_CLEAR and not self.hands.touching(ctx.data)
+                    and self.airborne.in_flight(ctx.data))
+
+        def open_for_landing(b, t):
+            turned = -self.rotation.somersault
+            return (turned >= 2 * math.pi - c["land_lean"] or ctx.data.subtree_com[1][2] < c["open_height"]
+                    or self.airborne.feet_heights(ctx.data).min() < c["ready_height"])
+
+        def land(t):
+            return Landing(Landing.schema.validate(dict(
+                knee_flexion=c["land_knee"], fast_knee_flexion=c["land_knee"], foot_delta=c["foot_delta"],
+                foot_lead_time=c["foot_lead"], spin_placement=c["spin_placement"], blend_time=LANDING_BLEND)), ctx)
+
+        return [
+            Step("crouch", sit, fallen_back),
+            Step("thrust", thrust, lambda b, t: b.lifted_off()),
+            Step("arch", lambda t: PoseMove(ctx, arch, ARCH_MOVE, ARCH_GAIN), lambda b, t: self.hands.touching(ctx.data)),
+            Step("hands", hands, lambda b, t: t - self.t_hands >= c["push_delay"]),
+            Step("push", lambda t: PoseMove(ctx, push, c["push_move"], c["push_gain"],
+                                            gain_joints=list(push) + ["elbow_r_z", "elbow_l_z"]), pushed_off),
+            Step("snap", lambda t: PoseMove(ctx, {}, 0.1), open_for_landing),
+            Step("land", land, lambda b, t: b.finished),
+            Step("balance", lambda t: balance_after_landing(ctx, self.previous))]
+
+    def update(self, t: float) -> None:
+        self.rotation.update(t)
+        super().update(t)
+
+    @classmethod
+    def assess(cls, trajectory):
+        return handspring_assess(trajectory)
+
+
+class ArmSwingThrust(LeapThrust):
+    """The leap thrust with the arms swung overhead by stiffened shoulder and elbow servos over
+    ``arm_time``, so that they are up by lift-off (a slow swing would go on in the air and turn the
+    body the other way)."""
+
+    def __init__(self, params, ctx, *args, arm_gain: float = 1.0, arm_time: float = 0.15, **kwargs):
+        super().__init__(params, ctx, *args, **kwargs)
+        self.arm_gain, self.arm_time = arm_gain, arm_time
+
+    def start(self, t: float) -> None:
+        super().start(t)
+        s = self.ctx.servos
+        arms = s.indices(["shoulder_r_z", "shoulder_l_z", "elbow_r_z", "elbow_l_z"])
+        s.set_gains(arms, s.default_kp[arms] * self.arm_gain, s.default_kv[arms] * self.arm_gain)
+        s.move_to(s.indices(["shoulder_r_z", "shoulder_l_z"]), np.array([self.arm_swing, -self.arm_swing]),
+                  self.arm_time, t)
+
+
+def _runs(mask: np.ndarray) -> list[tuple[int, int]]:
+    """(first, last) frame of every run of True."""
+    idx = np.flatnonzero(mask)
+    if not len(idx):
+        return []
+    breaks = np.flatnonzero(np.diff(idx) > 1)
+    starts = np.concatenate([[idx[0]], idx[breaks + 1]])
+    ends = np.concatenate([idx[breaks], [idx[-1]]])
+    return list(zip(starts.tolist(), ends.tolist()))
+
+
+def handspring_assess(trajectory) -> tuple[str, dict]:
+    """The handspring's phases read off the contacts - first flight (nothing touches), hands (a hand
+    on the ground), second flight, landing - and its outcome: one backward turn of the pelvis
+    (2 pi within ROTATION_TOLERANCE, standing start to the end), the hands between two flights, no
+    body but the feet and (in their phase) the hands on the ground, the feet staying where they
+    land, still and standing at the end. Also the whole-body angular momentum's drift in each
+    flight, the take-off state and the rotation reached before a fall (for the calibration)."""
+    a = trajectory.arrays
+    names = trajectory.body_names
+    metrics = standard_metrics(trajectory, allowed_contacts=FOOT_BODIES + HAND_BODIES)
+    t = a["time"]
+    contact = a["ground_contact"]
+    hand = contact[:, [names.index(n) for n in HAND_BODIES]].any(axis=1)
+    foot = contact[:, [names.index(n) for n in FOOT_BODIES]].any(axis=1)
+    feet_up = feet_above_surface(trajectory).min(axis=1) > AIRBORNE_HEIGHT
+    rotation = -(pelvis_pitch(trajectory) - pelvis_pitch(trajectory)[0])          # + backward
+    metrics["rotation"] = float(rotation[-1])
+    metrics["somersaults"] = metrics["rotation"] / (2 * math.pi)
+    metrics["com_rise"] = float(a["com"][:, 2].max() - a["com"][0, 2])
+    metrics["com_travel"] = float(a["com"][-1, 0] - a["com"][0, 0])
+    flights = [(i, j) for i, j in _runs(~hand & ~foot & feet_up)]
+    first = flights[0] if flights else None
+    # a fall: a body but the feet and hands on the ground, or the pelvis below half its standing
+    # height. The sit before the take-off is a deliberate squat: there the pelvis may go down to the
+    # balance behaviour's deepest crouch (SIT_LOWEST) and ``sit_shortfall`` is how far it went below
+    # (judged apart, so that the calibration sees how far the rest got)
+    allowed = np.array([n in FOOT_BODIES + HAND_BODIES for n in names])
+    pelvis = a["body_pos"][:, names.index("PELVIS")]
+    low = pelvis[:, 2] - surface_under_points(trajectory, pelvis) < 0.5 * pelvis[0, 2]
+    takeoff = first[0] if first is not None else len(t)
+    metrics["sit_shortfall"] = float(max(0.0, SIT_LOWEST - pelvis[:takeoff, 2].min())) if takeoff else 0.0
+    low[:takeoff] = False
+    falling = np.flatnonzero((contact & ~allowed).any(axis=1) | low)
+    fall_frame = int(falling[0]) if len(falling) else len(t) - 1
+    hands_on = None
+    if first is not None:
+        after = np.flatnonzero(hand[first[1]:]) + first[1]
+        hands_on = int(after[0]) if len(after) else None
+    second = None
+    if hands_on is not None:
+        off = [f for f in flights if f[0] > hands_on]
+        second = off[0] if off else None
+    early_hands = bool(hand[: first[0]].any()) if first is not None else bool(hand.any())
+    late_hands = bool(hand[second[1]:].any()) if second is not None else False
+    if early_hands or late_hands:
+        frames = np.flatnonzero(hand)
+        fall_frame = min(fall_frame, int(frames[0] if early_hands else frames[frames > second[1]][0]))
+    metrics["rotation_before_fall"] = float(rotation[: fall_frame + 1].max())
+    metrics["fell"] = bool(len(falling) or early_hands or late_hands or metrics["sit_shortfall"] > 0.0)
+    metrics["fall_time"] = float(t[fall_frame]) if len(falling) or early_hands or late_hands else (
+        float(t[int(np.argmin(pelvis[:takeoff, 2]))]) if metrics["fell"] else None)
+    if first is not None:
+        metrics["liftoff_time"] = float(t[first[0]])
+        metrics["liftoff_angular_momentum"] = float(a["angmom"][first[0], 1])
+        metrics["liftoff_velocity"] = a["com_vel"][first[0]].tolist()
+        metrics["first_flight_time"] = float(t[first[1] + 1 if first[1] + 1 < len(t) else first[1]] - t[first[0]])
+    if hands_on is not None:
+        metrics["hands_touchdown_time"] = float(t[hands_on])
+        metrics["rotation_at_hands"] = float(rotation[hands_on])
+        metrics["feet_down_at_hands"] = bool(foot[hands_on])
+    if second is not None:
+        metrics["hand_contact_time"] = float(t[second[0]] - t[hands_on])
+        metrics["second_flight_time"] = float(t[min(second[1] + 1, len(t) - 1)] - t[second[0]])
+        touchdown = min(second[1] + 1, len(t) - 1)
+        metrics["touchdown_time"] = float(t[touchdown])
+        metrics["touchdown_velocity"] = a["com_vel"][touchdown].tolist()
+        middle = a["support_points"][touchdown:, :, :2].mean(axis=1)
+        metrics["landing_skid"] = float(np.linalg.norm(middle - middle[0], axis=1).max())
+        metrics["rebounds"] = len([f for f in flights if f[0] > touchdown])
+        later = falling[falling > touchdown]
+        metrics["time_on_feet"] = float(t[later[0] if len(later) else -1] - t[touchdown])
+    weight = GRAVITY * float(trajectory.meta["total_mass"])
+    for phase, (i, j) in (("thrust", (0, first[0] if first else None)),
+                          ("hands", (hands_on, second[0] if second else None)),
+                          ("landing", (second[1] + 1 if second else None, len(t)))):
+        if i is not None and j is not None and j > i:
+            metrics[f"peak_{phase}_grf_body_weights"] = float(a["grf"][i:j, 2].max() / weight)
+    drifts = []
+    for i, j in [f for f in (first, second) if f is not None]:
+        h = a["angmom"][i:j + 1]
+        drifts.append(float(np.abs(h - h[0]).max() / max(np.linalg.norm(h[0]), 1e-9)))
+    metrics["angular_momentum_drift"] = max(drifts) if drifts else 0.0
+    metrics["flight_drifts"] = drifts
+    if metrics["fell"]:
+        return "fell", metrics
+    if first is None:
+        return "no_flight", metrics
+    if hands_on is None:
+        return "no_hands", metrics
+    if second is None:
+        return "no_second_flight", metrics
+    if metrics["landing_skid"] > SKID_LIMIT or metrics["rebounds"]:
+        return "stepped", metrics
+    if metrics["final_com_speed"] >= 0.1:
+        return "not_still", metrics
+    if abs(metrics["rotation"] - 2 * math.pi) > ROTATION_TOLERANCE:
+        return "wrong_rotation", metrics
+    return "success", metrics

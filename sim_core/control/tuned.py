@@ -1,0 +1,27 @@
+"""Tables of calibrated settings in rigs/tuned (written by the calibration scripts, read by the
+skills): a table is written whole or not at all, and a skill that has no calibrated row for the
+character and strength is refused with what the calibration measured."""
+from __future__ import annotations
+
+import json
+import os
+from pathlib import Path
+
+from sim_core.errors import ParameterError
+
+
+def write_table(path: Path, table: dict) -> None:
+    """Write ``table`` as JSON to ``path`` through a temporary file: never a half-written table."""
+    tmp = path.with_suffix(".tmp")
+    tmp.write_text(json.dumps(table, indent=1) + "\n")
+    os.replace(tmp, path)
+
+
+def uncalibrated(character: str, skill: str, strength: str, calibrated: list[str], best: str | None,
+                 script: str) -> ParameterError:
+    """The refusal of a skill with no calibrated settings: which skill and strength, what the
+    calibration's best run did (``best``, if it searched), and what is calibrated instead."""
+    why = f" (best searched: {best})" if best else ""
+    limits = "unlimited strength" if strength == "unlimited" else "human torque limits"
+    return ParameterError(f"the {character} has no calibrated {skill} with {limits}: {script} found none that "
+                          f"lands{why}; calibrated: {', '.join(calibrated) or 'none'}")
