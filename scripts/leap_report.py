@@ -200,9 +200,11 @@ def main() -> int:
               "air), one row per distance, run as they were planned; a distance is served by the row nearest "
               "it, within 10 %: every TARGETS.md distance of both characters is served (0.3-2.1 m man, "
               "0.3-1.6 m woman); a distance between rows may be refused.",
-              "- **Landing**: the woman's -1.0 m/s landing falls; every other speed of -1.0 … +3.0 m/s lands "
-              "balanced with the feet where they touched down (before this report counted skids, forward "
-              "landings hopped back 7-15 cm under the body and were called balanced).", ""]
+              "- **Landing**: every speed of -1.0 … +3.0 m/s lands balanced, both characters, with the feet "
+              "where they touched down (before this report counted skids, forward landings hopped back 7-15 cm "
+              "under the body and were called balanced). Moving backward the legs straighten in flight from "
+              "0.5 m/s on (FAST_BACKWARD_LANDING_SPEED; forward from 1.0 m/s): with the slow landing's bent "
+              "knee the woman fell at -1.0 m/s at every foot delta.", ""]
     (ROOT / "docs" / "leap_report.md").write_text("\n".join(lines) + "\n")
     print("\n".join(lines))
     return 0

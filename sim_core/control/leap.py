@@ -59,6 +59,8 @@ TOE_POINT_PER_SPEED = 0.25      # rad of toe-down foot pitch before touchdown pe
 TOE_POINT_FROM = 2.0            # speed above this (m/s): the forefoot lands first and the ankles give
 TOE_POINT_MAX = 0.5             # like a person landing from a height (0 = feet parallel to the ground)
 FAST_LANDING_SPEED = (1.0, 1.5)  # m/s of horizontal COM speed over which the flight knee eases to the fast one
+FAST_BACKWARD_LANDING_SPEED = (0.5, 1.0)   # the same, moving backward (a backward landing takes less speed
+                                           # with bent knees: the woman falls at -1.0 m/s with the slow knee)
 TOE_FADE_SPEED = (0.5, 1.5)     # m/s of horizontal COM speed over which the toe-down pitch fades out
 UP = np.array([0.0, 0.0, 1.0])
 SETTLE_TIME = 0.15              # s after the last touchdown by which the feet have settled (the heels
@@ -163,7 +165,8 @@ class Landing(Behaviour):
         Parameter("knee_flexion", "rad", 0.9, 0.0, 1.5, "knee bend held in flight, ready to absorb"),
         Parameter("fast_knee_flexion", "rad", 0.65, 0.0, 1.5,
                   "knee bend held in flight when the COM moves 1.5 m/s or faster horizontally (eased in "
-                  "from 1.0 m/s): straighter legs land a fast COM (the leap's own landing keeps knee_flexion)"),
+                  "from 1.0 m/s; backward: 1.0 m/s, from 0.5): straighter legs land a fast COM (the leap's "
+                  "own landing keeps knee_flexion)"),
         Parameter("foot_delta", "m", 0.0, -0.3, 0.3,
                   "foot servo delta: extra forward placement of the feet, added to the calibrated one "
                   "for the horizontal speed (rigs/tuned/landing_<character>.json, Table 6.1's role)"),
@@ -246,10 +249,11 @@ class Landing(Behaviour):
 
     def _flight_knee(self, vx: float) -> float:
         """Knee bend held in flight: ``knee_flexion``, easing to ``fast_knee_flexion`` as the
-        horizontal speed rises over FAST_LANDING_SPEED (straighter legs reach further ahead of a
-        fast COM and take the horizontal speed with the whole leg)."""
+        horizontal speed rises over FAST_LANDING_SPEED (FAST_BACKWARD_LANDING_SPEED moving backward;
+        straighter legs reach further ahead of a fast COM and take the horizontal speed with the
+        whole leg)."""
         p = self.params
-        low, high = FAST_LANDING_SPEED
+        low, high = FAST_LANDING_SPEED if vx >= 0 else FAST_BACKWARD_LANDING_SPEED
         share = hermite_scalar((abs(vx) - low) / (high - low))
         return p["knee_flexion"] + (p["fast_knee_flexion"] - p["knee_flexion"]) * share
 
