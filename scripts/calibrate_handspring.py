@@ -41,7 +41,7 @@ ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
 from sim_core.control.handspring import SETTINGS, TUNED_DIR, Handspring, load_table  # noqa: E402
-from sim_core.control.tuned import write_table  # noqa: E402
+from sim_core.control.tuned import kept_message, write_table  # noqa: E402
 from sim_core.simulate import RunRequest, run  # noqa: E402
 
 DURATION = 5.0
@@ -182,7 +182,9 @@ def main() -> None:
                                 f"{100 * (m['angular_momentum_drift'] or 0):.2f} %"})
     write_table(TUNED_DIR / f"handspring_{args.character}.json", {"character": args.character, "script": "scripts/calibrate_handspring.py",
                                  "duration": DURATION, "handsprings": rows, "not_found": missing})
-    print(f"{args.character} ({args.strength}): {m['outcome']} after {time.time() - started:.0f} s")
+    kept = kept_message(found(m), m["outcome"] == "success", DRIFT_GOAL, bool(old))
+    print(f"{args.character} ({args.strength}): {m['outcome']}, drift {100 * (m['angular_momentum_drift'] or 0):.2f} % "
+          f"after {time.time() - started:.0f} s - {kept}")
 
 
 if __name__ == "__main__":

@@ -34,7 +34,7 @@ import time
 import numpy as np
 
 from sim_core.control.somersault import DIRECTIONS, SETTINGS, TUNED_DIR, load_table
-from sim_core.control.tuned import write_table
+from sim_core.control.tuned import kept_message, write_table
 from sim_core.simulate import RunRequest, run
 
 DURATION = 5.0
@@ -188,7 +188,9 @@ def main() -> None:
                                             f"{m['liftoff_angular_momentum'] or 0:.1f} kg m^2/s"})
                 write_table(TUNED_DIR / f"somersaults_{character}.json", {"character": character, "script": "scripts/calibrate_somersaults.py",
                                         "duration": DURATION, "somersaults": rows, "not_found": missing})
-                print(f"{character} {direction} ({strength}): {m['outcome']}, drift {100 * (m['angular_momentum_drift'] or 0):.2f} % after {time.time() - started:.0f} s")
+                kept = kept_message(found(m), m["outcome"] == "success", DRIFT_GOAL, bool(old))
+                print(f"{character} {direction} ({strength}): {m['outcome']}, drift {100 * (m['angular_momentum_drift'] or 0):.2f} % "
+                      f"after {time.time() - started:.0f} s - {kept}")
 
 
 if __name__ == "__main__":

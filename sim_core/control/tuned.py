@@ -25,3 +25,12 @@ def uncalibrated(character: str, skill: str, strength: str, calibrated: list[str
     limits = "unlimited strength" if strength == "unlimited" else "human torque limits"
     return ParameterError(f"the {character} has no calibrated {skill} with {limits}: {script} found none that "
                           f"lands{why}; calibrated: {', '.join(calibrated) or 'none'}")
+
+
+def kept_message(found: bool, succeeded: bool, drift_goal: float, had_row: bool) -> str:
+    """What a calibration did with its best run, for its last line: a run that succeeded is kept
+    only when its flight's angular momentum drift is below the goal."""
+    if found:
+        return "written to the table"
+    why = (f"a found one needs a flight drift below {100 * drift_goal:.1f} %" if succeeded else "none succeeded")
+    return f"not kept ({why}); " + ("the old row stays" if had_row else "recorded as not found")
