@@ -351,6 +351,9 @@ def handspring_assess(trajectory) -> tuple[str, dict]:
         middle = a["support_points"][touchdown:, :, :2].mean(axis=1)
         metrics["landing_skid"] = float(np.linalg.norm(middle - middle[0], axis=1).max())
         metrics["rebounds"] = len([f for f in flights if f[0] > touchdown])
+        # a travelling skill: the standard "stepped" (a foot away from where it started) would
+        # always hold; here it is the landing's (a skid or a rebound after touchdown)
+        metrics["stepped"] = bool(metrics["landing_skid"] > SKID_LIMIT or metrics["rebounds"])
         later = falling[falling > touchdown]
         metrics["time_on_feet"] = float(t[later[0] if len(later) else -1] - t[touchdown])
     weight = GRAVITY * float(trajectory.meta["total_mass"])
