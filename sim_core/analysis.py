@@ -17,6 +17,13 @@ LIFT_HEIGHT = 0.02           # m: a foot whose every contact site is this high i
 CONTACT_HEIGHT = 0.005       # m: a contact site this close to the ground supports the body
 
 
+def true_runs(mask: np.ndarray) -> list[tuple[int, int]]:
+    """(first, last + 1) frame index of each run of True (a phase: a flight, a contact)."""
+    padded = np.concatenate([[False], mask, [False]]).astype(np.int8)
+    edges = np.diff(padded)
+    return [(int(i), int(j)) for i, j in zip(np.nonzero(edges == 1)[0], np.nonzero(edges == -1)[0])]
+
+
 def surface_under_points(trajectory, points: np.ndarray) -> np.ndarray:
     """Height of what is under each point (..., 2 or 3) in the trajectory's world: a box's top, or
     the ground (World.floor)."""

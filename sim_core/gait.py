@@ -13,6 +13,7 @@ from dataclasses import dataclass
 import mujoco
 import numpy as np
 
+from sim_core.analysis import true_runs
 from sim_core.trajectory import Trajectory
 
 CONTACT_HEIGHT = 0.005       # m: a contact sphere this close to the ground supports the foot
@@ -44,13 +45,6 @@ def foot_site_columns(traj: Trajectory) -> dict[str, np.ndarray]:
     return columns
 
 
-def _runs(mask: np.ndarray) -> list[tuple[int, int]]:
-    """(first, last+1) frame index of each run of True."""
-    padded = np.concatenate([[False], mask, [False]]).astype(np.int8)
-    edges = np.diff(padded)
-    return list(zip(np.nonzero(edges == 1)[0], np.nonzero(edges == -1)[0]))
-
-
 def contacts(traj: Trajectory, t_from: float = 0.0) -> list[Contact]:
     """Every ground contact of each foot (touchdown, lift-off), sorted by touchdown time."""
     a = traj.arrays
@@ -60,7 +54,7 @@ def contacts(traj: Trajectory, t_from: float = 0.0) -> list[Contact]:
     found = []
     for foot, cols in foot_site_columns(traj).items():
         on = (points[:, cols, 2] < CONTACT_HEIGHT).any(axis=1)
-        runs = _runs(on)
+        runs = true_runs(on)
         merged = []
         for start, end in runs:                      # merge contacts separated by a flicker of air
             if merged and start - merged[-1][1] < gap:

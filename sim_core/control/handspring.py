@@ -25,14 +25,14 @@ import math
 import numpy as np
 
 from sim_core.ballistics import GRAVITY
-from sim_core.analysis import FOOT_BODIES, feet_above_surface, standard_metrics, surface_under_points
+from sim_core.analysis import FOOT_BODIES, feet_above_surface, standard_metrics, surface_under_points, true_runs
 from sim_core.control.balance import Balance, standing_hip_height
 from sim_core.control.behaviour import Behaviour, ControlContext, register
 from sim_core.control.leap import (ANKLE_GAIN_VERTICAL, AIRBORNE_HEIGHT, TUNED_DIR, VERTICAL_TIMING, Airborne,
                                    Landing, LeapThrust, balance_after_landing, run_strength)
 from sim_core.control.sequencer import Sequence, Step
 from sim_core.control.somersault import ROTATION_TOLERANCE, pelvis_pitch
-from sim_core.control.tumble import FlightRotation
+from sim_core.control.tumble import FlightRotation, both_sides
 from sim_core.control.tuned import uncalibrated
 from sim_core.schema import Parameter, Schema
 
@@ -69,19 +69,6 @@ def calibrated(character: str, strength: str) -> dict | None:
         if entry["strength"] == strength:
             return entry
     return None
-
-
-def _both_sides(angles: dict[str, float]) -> dict[str, float]:
-    """Joint name -> angle with "*" spelled out for both sides (arm axes mirrored, as the positions)."""
-    out = {}
-    for name, value in angles.items():
-        if "*" not in name:
-            out[name] = value
-            continue
-        for side, sign in (("r", 1.0), ("l", -1.0)):
-            mirrored = name.startswith(("shoulder", "elbow")) and name.endswith(("_x", "_z"))
-            out[name.replace("*", side)] = value * sign if mirrored else value
-    return out
 
 
 class HandContact:
@@ -211,8 +198,8 @@ class Handspring(Sequence):
                                   c["liftoff_hip"], c["arm_swing"], stand_height=stand, damping=c["thrust_damping"],
                                   lean=c["thrust_lean"], arm_gain=c["arm_gain"], arm_time=c["arm_time"])
 
-        arch = _both_sides({"shoulder_*_z": c["arch_arm"], "hip_*_y": c["arch_hip"], "neck_c2_y": c["neck"], **ARCH})
-        push = _both_sides({"shoulder_*_z": c["push_shoulder"], "hip_*_y": c["push_hip"], "knee_*_y": c["snap_knee"],
+        arch = both_sides({"shoulder_*_z": c["arch_arm"], "hip_*_y": c["arch_hip"], "neck_c2_y": c["neck"], **ARCH})
+        push = both_sides({"shoulder_*_z": c["push_shoulder"], "hip_*_y": c["push_hip"], "knee_*_y": c["snap_knee"],
                             **SNAP_SPINE})
 
         def hands(t):
@@ -271,17 +258,6 @@ class ArmSwingThrust(LeapThrust):
                   self.arm_time, t)
 
 
-def _runs(mask: np.ndarray) -> list[tuple[int, int]]:
-    """(first, last) frame of every run of True."""
-    idx = np.flatnonzero(mask)
-    if not len(idx):
-        return []
-    breaks = np.flatnonzero(np.diff(idx) > 1)
-    starts = np.concatenate([[idx[0]], idx[breaks + 1]])
-    ends = np.concatenate([idx[breaks], [idx[-1]]])
-    return list(zip(starts.tolist(), ends.tolist()))
-
-
 def handspring_assess(trajectory) -> tuple[str, dict]:
     """The handspring's phases read off the contacts - first flight (nothing touches), hands (a hand
     on the ground), second flight, landing - and its outcome: one backward turn of the pelvis
@@ -293,59 +269,56 @@ def handspring_assess(trajectory) -> tuple[str, dict]:
     names = trajectory.body_names
     metrics = standard_metrics(trajectory, allowed_contacts=FOOT_BODIES + HAND_BODIES)
     t = a["time"]
+    last = len(t) - 1
     contact = a["ground_contact"]
     hand = contact[:, [names.index(n) for n in HAND_BODIES]].any(axis=1)
     foot = contact[:, [names.index(n) for n in FOOT_BODIES]].any(axis=1)
     feet_up = feet_above_surface(trajectory).min(axis=1) > AIRBORNE_HEIGHT
-    rotation = -(pelvis_pitch(trajectory) - pelvis_pitch(trajectory)[0])          # + backward
+    pitch = pelvis_pitch(trajectory)
+    rotation = pitch[0] - pitch                                   # + backward
     metrics["rotation"] = float(rotation[-1])
     metrics["somersaults"] = metrics["rotation"] / (2 * math.pi)
     metrics["com_rise"] = float(a["com"][:, 2].max() - a["com"][0, 2])
     metrics["com_travel"] = float(a["com"][-1, 0] - a["com"][0, 0])
-    flights = [(i, j) for i, j in _runs(~hand & ~foot & feet_up)]
+    flights = true_runs(~hand & ~foot & feet_up)               # (first frame, first frame after)
     first = flights[0] if flights else None
-    # a fall: a body but the feet and hands on the ground, or the pelvis below half its standing
-    # height. The sit before the take-off is a deliberate squat: there the pelvis may go down to the
-    # balance behaviour's deepest crouch (SIT_LOWEST) and ``sit_shortfall`` is how far it went below
-    # (judged apart, so that the calibration sees how far the rest got)
+    takeoff = first[0] if first else len(t)
+    hands_on = None
+    if first:
+        after = np.flatnonzero(hand[first[1]:])
+        hands_on = first[1] + int(after[0]) if len(after) else None
+    second = next((f for f in flights if f[0] > hands_on), None) if hands_on is not None else None
+    # a fall: a body but the feet and hands on the ground, the hands on it outside their phase, or
+    # the pelvis below half its standing height. The sit before the take-off is a deliberate squat:
+    # there the pelvis may go down to the balance behaviour's deepest crouch (SIT_LOWEST), and
+    # ``sit_shortfall`` is how far it went below (judged apart, so that the calibration sees how far
+    # the rest got)
     allowed = np.array([n in FOOT_BODIES + HAND_BODIES for n in names])
     pelvis = a["body_pos"][:, names.index("PELVIS")]
     low = pelvis[:, 2] - surface_under_points(trajectory, pelvis) < 0.5 * pelvis[0, 2]
-    takeoff = first[0] if first is not None else len(t)
-    metrics["sit_shortfall"] = float(max(0.0, SIT_LOWEST - pelvis[:takeoff, 2].min())) if takeoff else 0.0
     low[:takeoff] = False
-    falling = np.flatnonzero((contact & ~allowed).any(axis=1) | low)
-    fall_frame = int(falling[0]) if len(falling) else len(t) - 1
-    hands_on = None
-    if first is not None:
-        after = np.flatnonzero(hand[first[1]:]) + first[1]
-        hands_on = int(after[0]) if len(after) else None
-    second = None
-    if hands_on is not None:
-        off = [f for f in flights if f[0] > hands_on]
-        second = off[0] if off else None
-    early_hands = bool(hand[: first[0]].any()) if first is not None else bool(hand.any())
-    late_hands = bool(hand[second[1]:].any()) if second is not None else False
-    if early_hands or late_hands:
-        frames = np.flatnonzero(hand)
-        fall_frame = min(fall_frame, int(frames[0] if early_hands else frames[frames > second[1]][0]))
+    out_of_phase = hand.copy()
+    out_of_phase[takeoff:second[1] if second else len(t)] = False
+    falling = np.flatnonzero((contact & ~allowed).any(axis=1) | low | out_of_phase)
+    metrics["sit_shortfall"] = float(max(0.0, SIT_LOWEST - pelvis[:takeoff, 2].min())) if takeoff else 0.0
+    fall_frame = int(falling[0]) if len(falling) else last
     metrics["rotation_before_fall"] = float(rotation[: fall_frame + 1].max())
-    metrics["fell"] = bool(len(falling) or early_hands or late_hands or metrics["sit_shortfall"] > 0.0)
-    metrics["fall_time"] = float(t[fall_frame]) if len(falling) or early_hands or late_hands else (
-        float(t[int(np.argmin(pelvis[:takeoff, 2]))]) if metrics["fell"] else None)
-    if first is not None:
+    metrics["fell"] = bool(len(falling)) or metrics["sit_shortfall"] > 0.0
+    metrics["fall_time"] = (float(t[fall_frame]) if len(falling) else
+                            float(t[int(np.argmin(pelvis[:takeoff, 2]))]) if metrics["fell"] else None)
+    if first:
         metrics["liftoff_time"] = float(t[first[0]])
         metrics["liftoff_angular_momentum"] = float(a["angmom"][first[0], 1])
         metrics["liftoff_velocity"] = a["com_vel"][first[0]].tolist()
-        metrics["first_flight_time"] = float(t[first[1] + 1 if first[1] + 1 < len(t) else first[1]] - t[first[0]])
+        metrics["first_flight_time"] = float(t[min(first[1], last)] - t[first[0]])
     if hands_on is not None:
         metrics["hands_touchdown_time"] = float(t[hands_on])
         metrics["rotation_at_hands"] = float(rotation[hands_on])
         metrics["feet_down_at_hands"] = bool(foot[hands_on])
-    if second is not None:
+    if second:
+        touchdown = min(second[1], last)
         metrics["hand_contact_time"] = float(t[second[0]] - t[hands_on])
-        metrics["second_flight_time"] = float(t[min(second[1] + 1, len(t) - 1)] - t[second[0]])
-        touchdown = min(second[1] + 1, len(t) - 1)
+        metrics["second_flight_time"] = float(t[touchdown] - t[second[0]])
         metrics["touchdown_time"] = float(t[touchdown])
         metrics["touchdown_velocity"] = a["com_vel"][touchdown].tolist()
         middle = a["support_points"][touchdown:, :, :2].mean(axis=1)
@@ -359,18 +332,18 @@ def handspring_assess(trajectory) -> tuple[str, dict]:
     weight = GRAVITY * float(trajectory.meta["total_mass"])
     for phase, (i, j) in (("thrust", (0, first[0] if first else None)),
                           ("hands", (hands_on, second[0] if second else None)),
-                          ("landing", (second[1] + 1 if second else None, len(t)))):
+                          ("landing", (second[1] if second else None, len(t)))):
         if i is not None and j is not None and j > i:
             metrics[f"peak_{phase}_grf_body_weights"] = float(a["grf"][i:j, 2].max() / weight)
     drifts = []
-    for i, j in [f for f in (first, second) if f is not None]:
-        h = a["angmom"][i:j + 1]
+    for i, j in [f for f in (first, second) if f]:
+        h = a["angmom"][i:j]
         drifts.append(float(np.abs(h - h[0]).max() / max(np.linalg.norm(h[0]), 1e-9)))
     metrics["angular_momentum_drift"] = max(drifts) if drifts else 0.0
     metrics["flight_drifts"] = drifts
     if metrics["fell"]:
         return "fell", metrics
-    if first is None:
+    if not first:
         return "no_flight", metrics
     if hands_on is None:
         return "no_hands", metrics

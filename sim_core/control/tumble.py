@@ -54,16 +54,22 @@ def _is_mirrored(name: str) -> bool:
     return name.startswith(("shoulder", "elbow")) and name.endswith(("_x", "_z"))
 
 
-def position_angles(position: str) -> dict[str, float]:
-    """Joint name -> angle of a named position, both sides spelled out."""
+def both_sides(angles: dict[str, float]) -> dict[str, float]:
+    """Joint name -> angle with each "*" name ("hip_*_y") spelled out for both sides, the arm
+    axes mirrored."""
     out = {}
-    for name, value in POSITIONS[position].items():
+    for name, value in angles.items():
         if "*" not in name:
             out[name] = value
             continue
         for side, sign in (("r", 1.0), ("l", -1.0)):
             out[name.replace("*", side)] = value * sign if _is_mirrored(name) else value
     return out
+
+
+def position_angles(position: str) -> dict[str, float]:
+    """Joint name -> angle of a named position, both sides spelled out."""
+    return both_sides(POSITIONS[position])
 
 
 def position_name(code: float) -> str:
