@@ -7,7 +7,10 @@ and leaps higher), and for each strength (human torque limits; unlimited, as the
      (angular momentum about the COM ~ 0) and no drift (horizontal COM speed ~ 0), by Newton's
      method on thrust-only runs;
   2. run the whole leap with them and measure the COM rise, the thrust's peak ground force and
-     whether it lands balanced.
+     whether it lands balanced;
+  3. a fast (low-damping) thrust that does not land: a few landing foot deltas, then a small grid
+     of lift-off hip angles and offsets, then - when none of that lands - a finer grid around
+     flexed lift-off hips (WIDE_FALLBACK_*); of the balanced landings the one that travels least.
 Writes the mapping commanded rise -> crouch height, thrust damping, COM offset, neutral lift-off
 hip angle to rigs/tuned/leap_<character>.json ("vertical": human torque limits,
 "vertical_unlimited": unlimited strength), which the leap behaviour interpolates.
@@ -28,6 +31,7 @@ or the controllers:
 from __future__ import annotations
 
 import argparse
+import itertools
 import json
 import sys
 from multiprocessing import Pool
@@ -45,10 +49,12 @@ from sim_core.simulate import RunRequest, run                   # noqa: E402
 
 CROUCH_FRACTIONS = (0.9, 0.875, 0.85, 0.825, 0.8, 0.775, 0.75, 0.725, 0.7, 0.68, 0.66, 0.64, 0.62, 0.59)   # of the standing hip height
 CROUCH_FRACTIONS_FAST = (0.75, 0.7, 0.68, 0.66, 0.64, 0.62, 0.59, 0.56, 0.53, 0.5)
+CROUCH_FRACTIONS_HIGH = (0.61, 0.6, 0.595, 0.58, 0.57)    # more of the deep fast crouches with unlimited strength,
+                                                        # whose leaps (0.8 - 1.1 m) land only here and there
 # table -> (strength, [(thrust damping, crouch fractions)])
 VERTICAL_TABLES = {
     "vertical": ("human", [(1.0, CROUCH_FRACTIONS), (0.3, CROUCH_FRACTIONS_FAST)]),
-    "vertical_unlimited": ("unlimited", [(1.0, CROUCH_FRACTIONS), (0.3, CROUCH_FRACTIONS_FAST),
+    "vertical_unlimited": ("unlimited", [(1.0, CROUCH_FRACTIONS), (0.3, CROUCH_FRACTIONS_FAST + CROUCH_FRACTIONS_HIGH),
                                          (0.15, (0.56, 0.53, 0.5))]),
 }
 THRUST_ONLY = 1.7            # s: crouch (0.2 + 0.8 + 0.15 s) and the thrust, up to just after lift-off
@@ -58,6 +64,9 @@ ARM_SWING = 1.0              # rad: a forward swing that adds height without spi
 FALLBACK_HIPS = (-0.3, 0.0, 0.3, 0.6, 0.9)      # rad: lift-off hip angles tried when Newton leaves a fast thrust spinning
 FALLBACK_OFFSETS = (-0.05, 0.0)      # m: crouch COM offsets tried with them
 FALLBACK_FOOT_DELTAS = (0.04, 0.08, -0.04)   # m: landing foot servo deltas tried first
+WIDE_FALLBACK_HIPS = (-0.6, -0.5, -0.4, -0.3, -0.2)     # rad: a finer ring of flexed lift-off hips, tried when
+WIDE_FALLBACK_OFFSETS = (-0.05, -0.025, 0.0, 0.025, 0.05)   # nothing of the first ring landed (the woman's
+WIDE_FALLBACK_FOOT_DELTAS = (0.0, 0.04)                 # deep unlimited crouches: few land, all in here)
 
 
 def liftoff_state(character, crouch_height, hip, offset, damping=1.0, strength="human"):
@@ -118,16 +127,21 @@ def trial(args):
                 break
     if traj.meta["outcome"] != "success" and damping < 1.0:
         # a fast thrust whose spin and drift Newton could not both cancel: of a few lift-off hip
-        # angles and offsets around the usual ones, keep the leap that lands balanced and travels least
-        landed = []
-        for h in FALLBACK_HIPS:
-            for o in FALLBACK_OFFSETS:
-                p = dict(params, liftoff_hip_angle=h, com_offset=o)
+        # angles and offsets around the usual ones (none landing: a finer grid of flexed ones, with
+        # two foot deltas), keep the leap that lands balanced and travels least
+        def landings(hips, offsets, deltas):
+            found = []
+            for h, o, d in itertools.product(hips, offsets, deltas):
+                p = dict(params, liftoff_hip_angle=h, com_offset=o, foot_delta=d)
                 t = run(RunRequest("leap", character, params=p, duration=LEAP_DURATION, strength=strength))
                 if t.meta["outcome"] == "success":
-                    landed.append((abs(t.meta["metrics"]["com_travel"]), h, o, t))
+                    found.append((abs(t.meta["metrics"]["com_travel"]), h, o, d, t))
+            return found
+
+        landed = (landings(FALLBACK_HIPS, FALLBACK_OFFSETS, (0.0,))
+                  or landings(WIDE_FALLBACK_HIPS, WIDE_FALLBACK_OFFSETS, WIDE_FALLBACK_FOOT_DELTAS))
         if landed:
-            _, hip, offset, traj = min(landed, key=lambda x: x[0])
+            _, hip, offset, foot_delta, traj = min(landed, key=lambda x: x[0])
             residual = None
     m = traj.meta["metrics"]
     result = {"crouch_height": crouch_height, "damping": damping, "liftoff_hip": float(hip), "foot_delta": foot_delta,

@@ -90,13 +90,13 @@ def test_leap_replays_bit_for_bit():
     ("woman", 0.16, "human"), ("woman", 0.25, "human"), ("woman", 0.33, "human"), ("woman", 0.4, "human"),
     ("woman", 0.58, "human"), ("woman", 0.6, "human"), ("woman", 0.7, "human"),
     ("man", 0.33, "unlimited"), ("man", 0.7, "unlimited"), ("man", 0.9, "unlimited"), ("man", 1.0, "unlimited"),
-    ("woman", 0.45, "unlimited"), ("woman", 0.58, "unlimited")])
+    ("woman", 0.45, "unlimited"), ("woman", 0.58, "unlimited"), ("woman", 0.85, "unlimited"), ("woman", 0.9, "unlimited"),
+    ("woman", 1.0, "unlimited")])
 def test_commanded_vertical_leap_is_reached_and_lands_balanced(name, height, strength):
     """TARGETS.md: COM rise within +-10 % (+-3 cm below 0.3 m), ending balanced: the composite
-    leaps (0.16, 0.33, 0.58 m, woman), the 0.6 m target with human torque limits, the man's 1.0 m
-    with unlimited strength, and heights that fell when they were interpolated between calibrated
-    rows (man 0.4; woman 0.4, 0.7; unlimited: man 0.33, 0.7, woman 0.58). Not yet reached: the
-    woman's 1.0 m with unlimited strength (her calibrated leaps end at 0.59 m)."""
+    leaps (0.16, 0.33, 0.58 m, woman), the 0.6 m target with human torque limits, 1.0 m with
+    unlimited strength (man and woman), and heights that fell when they were interpolated between
+    calibrated rows (man 0.4; woman 0.4, 0.7; unlimited: man 0.33, 0.7, woman 0.58, 0.85, 0.9)."""
     traj = run(RunRequest("leap", name, params=dict(height=height), duration=5.0, strength=strength))
     m = traj.meta["metrics"]
     assert traj.meta["outcome"] == "success", m
@@ -132,8 +132,8 @@ def test_infeasible_and_bad_leaps_are_refused_before_simulating():
     with pytest.raises(ParameterError, match=r"height=1.1 m is infeasible for man with human torque limits; "
                                              r"allowed range is \[0.1\d, 0.\d\d\] m"):
         run(RunRequest("leap", "man", params=dict(height=1.1)))
-    with pytest.raises(ParameterError, match="height=1.2 m is infeasible for woman with unlimited strength"):
-        run(RunRequest("leap", "woman", params=dict(height=1.2), strength="unlimited"))
+    with pytest.raises(ParameterError, match="height=1.2 m is infeasible for woman with human torque limits"):
+        run(RunRequest("leap", "woman", params=dict(height=1.2)))
     with pytest.raises(ParameterError, match="height=-0.2 m is out of range"):
         run(RunRequest("leap", "man", params=dict(height=-0.2)))
     with pytest.raises(ParameterError, match="start height=-1"):
