@@ -4,6 +4,7 @@ report what the final runs achieve.
     python3 scripts/plan_jumps.py                      # plan every target (a few minutes each), then report
     python3 scripts/plan_jumps.py --report-only        # rerun the stored plans and rewrite the report
     python3 scripts/plan_jumps.py --characters woman --distances 1.0 1.3 --trials 200
+    python3 scripts/plan_jumps.py --characters man --distances 1.6 --boxes --sideways --no-down --restart 1
 
 Plans go to rigs/tuned/jump_targets_<character>.json (found or not: a target whose search found no
 jump is stored with the nearest trial, so a request for it is refused at once with the numbers).
@@ -55,7 +56,7 @@ def down_request() -> dict:
     return request_for(x, 0.0, z, obstacle)
 
 
-def plan(characters, requests, trials: int) -> None:
+def plan(characters, requests, trials: int, restart: int = 0) -> None:
     for character in characters:
         for params in requests:
             request = {**params, "strength": "human"}
@@ -69,7 +70,8 @@ def plan(characters, requests, trials: int) -> None:
 
             result = plan_jump(character, tuple(params[k] for k in ("target_x", "target_y", "target_z",
                                                                     "obstacle_height")),
-                               params["air_time"], params["windup_time"], trials=trials, progress=progress)
+                               params["air_time"], params["windup_time"], trials=trials, progress=progress,
+                               restart=restart)
             print(f"{character} {label}: {'found' if result['found'] else 'NOT found'} after {result['trials']} "
                   f"trials ({time.perf_counter() - start:.0f} s)", flush=True)
             store_plan(character, request, result, "scripts/plan_jumps.py")
@@ -112,7 +114,9 @@ onto a box, whose middle is {BOX_DISTANCE} m ahead, or down from one: the start 
 to clear halfway), wind-up {WINDUP_TIME} s, human torque limits. Goal (TARGETS.md):
 landing point within {LANDING_TOLERANCE * 100:.0f} cm, air time within {AIR_TIME_TOLERANCE} s, ending balanced.
 The search of each target is the cross-entropy method and then a pattern search from its best
-balanced trial; a rerun continues from the stored best (the trial counts add up).
+balanced trial; a rerun continues from the stored best (the trial counts add up), or with
+`--restart N` searches afresh from the plan found nearest the target, keeping the stored best
+unless it finds a better one.
 
 ![commanded vs achieved landing point](jump_to_target.png)
 
@@ -171,6 +175,10 @@ def main() -> None:
     parser.add_argument("--down", action=argparse.BooleanOptionalAction, default=True,
                         help="plan the jump from a box over a second box to the ground (--no-down: not)")
     parser.add_argument("--trials", type=int, default=150, help="simulated trial jumps per target")
+    parser.add_argument("--restart", type=int, default=0,
+                        help="N > 0: search afresh (from the stored plan found nearest each target, with random "
+                             "stream N) instead of continuing from the stored best; the stored best is kept "
+                             "if the new search does no better")
     parser.add_argument("--report-only", action="store_true")
     parser.add_argument("--plan-only", action="store_true",
                         help="store the plans, write no report (to plan characters in parallel processes)")
@@ -179,7 +187,7 @@ def main() -> None:
         requests = [request_for(x) for x in args.distances] + [box_request(z) for z in args.boxes]
         requests += [request_for(0.0, side * y) for y in args.sideways for side in (1, -1)]
         requests += [down_request()] if args.down else []
-        plan(args.characters, requests, args.trials)
+        plan(args.characters, requests, args.trials, args.restart)
     if not args.plan_only:
         report(args.characters)
 

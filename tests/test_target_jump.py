@@ -137,3 +137,19 @@ def test_sideways_jump_lands_on_the_target(character, y):
     """Left (+) and right (-): a sideways lean, the thrust, and the hips placing the feet sideways
     in flight."""
     _planned_jump(character, f"{y} m sideways", target_y=y)
+
+
+def test_a_restarted_search_starts_from_the_stored_plan_nearest_the_target():
+    """plan_jump(restart=N) does not continue the request's own earlier search: it starts from the
+    stored plan found nearest the target (here the target's own, so its first trial repeats it),
+    and the trial counts add up."""
+    from sim_core.control.target_jump import plan_jump
+    stored = _stored("man", dict(target_x=1.3, target_y=0.0, target_z=0.0, air_time=GROUND_AIR_TIME,
+                                 windup_time=WINDUP_TIME))
+    assert stored is not None and stored["found"]
+    first = []
+    plan = plan_jump("man", (1.3, 0.0, 0.0), GROUND_AIR_TIME, WINDUP_TIME, trials=3, restart=1,
+                     progress=lambda done, total, best: first.append(dict(best)) if done == 1 else None)
+    assert first[0]["landing"] == pytest.approx(stored["measured"]["landing"], abs=1e-6)
+    assert plan["found"]
+    assert plan["trials"] == stored["trials"] + 3

@@ -39,6 +39,7 @@ from sim_core.ballistics import GRAVITY
 from sim_core.control.behaviour import register
 from sim_core.control.leap import (AIRBORNE_HEIGHT, TUNED_DIR, Leap, leap_assess, load_mapping, run_strength,
                                   vertical_key)
+from sim_core.control.tuned import write_table
 from sim_core.errors import ParameterError
 from sim_core.schema import Parameter, Schema
 
@@ -282,7 +283,7 @@ def crouch_time(windup_time: float) -> float:
 
 
 def plan_jump(character: str, target, air_time: float, windup_time: float, strength="human",
-              trials: int = 120, population: int = 12, elite: int = 4, progress=None) -> dict:
+              trials: int = 120, population: int = 12, elite: int = 4, progress=None, restart: int = 0) -> dict:
     """Search the leap's settings for a jump that lands the middle of the feet on ``target`` in
     ``air_time`` and ends balanced. Two stages share the ``trials``: the cross-entropy method
     over all the settings, starting from the best trial of an earlier search for the same
@@ -291,7 +292,9 @@ def plan_jump(character: str, target, air_time: float, windup_time: float, stren
     (REFINE_SHARE of the trials). The landing point is not smooth in the settings - a balanced
     jump's neighbours often fall - so the population finds the balanced region and the pattern
     search walks along it, one setting at a time, to the target. An earlier search's best is kept
-    if this one does no better; the trial counts add up.
+    if this one does no better; the trial counts add up. ``restart`` > 0 starts a fresh search
+    instead of continuing an earlier one that got stuck: from the stored plan found nearest the
+    target (else the prior), with the random stream of that restart number.
     Returns {"settings", "measured", "trials", "found"}."""
     from sim_core.simulate import RunRequest, run
 
@@ -303,10 +306,15 @@ def plan_jump(character: str, target, air_time: float, windup_time: float, stren
     previous = stored_plan(character, {"target_x": float(target[0]), "target_y": float(target[1]),
                                        "target_z": float(target[2]), "obstacle_height": obstacle_of(target),
                                        "air_time": air_time, "windup_time": windup_time, "strength": strength})
-    prior = search_start(character, target, previous, strength) or fallback
+    if restart:
+        found = nearest_start_plan(character, target, strength)
+        prior = found[1] if found else fallback
+    else:
+        prior = search_start(character, target, previous, strength) or fallback
     mean = np.array([float(prior.get(n, fallback[n])) for n in names])
     std = 0.25 * (high - low)
-    rng = np.random.default_rng(_stable_seed(target, air_time, windup_time))
+    rng = np.random.default_rng([_stable_seed(target, air_time, windup_time), restart] if restart
+                                else _stable_seed(target, air_time, windup_time))
     world = scene_for(character, target)
     duration = windup_time + air_time + 2.0
     tried = []          # (cost, x, settings, measured) of every trial, in order
@@ -418,7 +426,7 @@ def store_plan(character: str, request: dict, plan: dict, script: str) -> None:
     stored = [p for p in stored if not same_request(p["request"], request)]
     stored.append({"request": request, **plan})
     stored.sort(key=lambda p: tuple(p["request"].get(k, 0.0) for k in REQUEST_KEYS))
-    path.write_text(json.dumps({"character": character, "script": script, "plans": stored}, indent=1) + "\n")
+    write_table(path, {"character": character, "script": script, "plans": stored})
 
 
 def _side(y: float) -> int:
@@ -426,26 +434,35 @@ def _side(y: float) -> int:
 
 
 def search_start(character: str, target, previous: dict | None, strength="human") -> dict | None:
-    """Where a search starts: the settings of the stored plan that found a jump onto the same height
-    and to the same side nearest ``target`` (for a jump down with none found yet, the nearest jump
-    on the ground), or of an earlier search's best trial for this very request (``previous``) if
-    that ended balanced nearer the target (None if neither)."""
-    found = nearest_found_plan(character, target, strength)
-    if found is None and target[2] < 0:     # a jump down: the forward jumps on the ground, until one is found
-        found = nearest_found_plan(character, (target[0], target[1], 0.0), strength)
+    """Where a search starts: the settings of the stored plan found nearest ``target``
+    (nearest_start_plan), or of an earlier search's best trial for this very request
+    (``previous``) if that ended balanced nearer the target (None if neither)."""
+    found = nearest_start_plan(character, target, strength)
     if previous is None or previous["measured"]["outcome"] != "success":
         return found[1] if found else (previous or {}).get("settings")
     miss = math.dist(previous["measured"]["landing"], [float(v) for v in target[:2]])
     return found[1] if found and found[0] < miss else previous["settings"]
 
 
-def nearest_found_plan(character: str, target, strength="human") -> tuple[float, dict] | None:
-    """(distance, settings) of the stored plan that found a jump onto the same height and to the
-    same side, nearest ``target`` (None if there is none)."""
+def nearest_start_plan(character: str, target, strength="human") -> tuple[float, dict] | None:
+    """(distance, settings) of the stored plan a search for ``target`` starts from: the one found
+    onto the same height and to the same side nearest it; with none, for a jump down the nearest
+    forward jump on the ground, for a jump onto a box the nearest found onto another box."""
+    found = nearest_found_plan(character, target, strength)
+    if found is None and target[2] < 0:
+        found = nearest_found_plan(character, (target[0], target[1], 0.0), strength)
+    if found is None and target[2] > 0:
+        found = nearest_found_plan(character, target, strength, raised=True)
+    return found
+
+
+def nearest_found_plan(character: str, target, strength="human", raised=False) -> tuple[float, dict] | None:
+    """(distance, settings) of the stored plan that found a jump onto the same height (``raised``:
+    onto any box) and to the same side, nearest ``target`` (None if there is none)."""
     path = plans_path(character)
     plans = [p for p in json.loads(path.read_text())["plans"]
              if p["found"] and p["request"].get("strength", "human") == strength
-             and abs(p["request"]["target_z"] - float(target[2])) < 1e-6
+             and (p["request"]["target_z"] > 0 if raised else abs(p["request"]["target_z"] - float(target[2])) < 1e-6)
              and abs(p["request"].get("obstacle_height", 0.0) - obstacle_of(target)) < 1e-6
              and _side(p["request"]["target_y"]) == _side(float(target[1]))] if path.exists() else []
     if not plans:
