@@ -19,13 +19,18 @@ from __future__ import annotations
 
 import argparse
 import json
+import sys
 import time
+from pathlib import Path
 
 import numpy as np
 
-from sim_core.control.dive import FORWARD_ROTATING, GROUPS, TUNED_DIR, Dive
-from sim_core.errors import ParameterError
-from sim_core.simulate import RunRequest, run
+ROOT = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(ROOT))      # this checkout's sim_core and rigs, not an installed one
+
+from sim_core.control.dive import FORWARD_ROTATING, GROUPS, TUNED_DIR, Dive  # noqa: E402
+from sim_core.errors import ParameterError  # noqa: E402
+from sim_core.simulate import RunRequest, run  # noqa: E402
 
 DIVES = {   # Wooten §8.2.1: the man's two and the woman's two 10 m dives; then dives beyond the seed
     "man": [dict(group=0, somersaults=1.5, twists=0.0, position=1),      # inward 1 1/2 pike

@@ -29,13 +29,18 @@ from __future__ import annotations
 import argparse
 import json
 import math
+import sys
 import time
+from pathlib import Path
 
 import numpy as np
 
-from sim_core.control.somersault import DIRECTIONS, SETTINGS, TUNED_DIR, load_table
-from sim_core.control.tuned import kept_message, write_table
-from sim_core.simulate import RunRequest, run
+ROOT = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(ROOT))      # this checkout's sim_core and rigs, not an installed one
+
+from sim_core.control.somersault import DIRECTIONS, SETTINGS, TUNED_DIR, load_table  # noqa: E402
+from sim_core.control.tuned import kept_message, write_table  # noqa: E402
+from sim_core.simulate import RunRequest, run  # noqa: E402
 
 DURATION = 5.0
 DRIFT_GOAL = 0.009          # angular momentum drift in flight the search aims below (the test's limit is 1 %)
