@@ -631,12 +631,14 @@ class Leap(Sequence):
             if not rises:
                 raise ParameterError(f"the vertical leap of {self.ctx.character.name} with {strength} is not "
                                      f"calibrated: run scripts/calibrate_leap.py (or use low_level=1)")
+            # a height outside the calibrated rises runs the end leap while that one is within the
+            # TARGETS.md tolerance of it (+-10 %, +-3 cm below 0.3 m), and is refused beyond
             top, bottom = max(rises), min(rises)
-            if p["height"] < bottom * 0.9:
+            if p["height"] < bottom - rise_tolerance(p["height"]):
                 raise ParameterError(f"parameter height={p['height']:g} m is below the calibrated leaps of "
                                      f"{self.ctx.character.name} with {strength}; allowed range is "
                                      f"[{bottom:.2f}, {top:.2f}] m")
-            if p["height"] > top * 1.05:
+            if p["height"] > top + rise_tolerance(p["height"]):
                 raise ParameterError(f"parameter height={p['height']:g} m is infeasible for "
                                      f"{self.ctx.character.name} with {strength}; allowed range is "
                                      f"[{bottom:.2f}, {top:.2f}] m")
