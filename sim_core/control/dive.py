@@ -23,7 +23,7 @@ import math
 import numpy as np
 
 from sim_core.control.behaviour import register
-from sim_core.control.leap import TUNED_DIR
+from sim_core.control.leap import THRUST_DAMPING, TUNED_DIR
 from sim_core.control.sequencer import Sequence, Step
 from sim_core.ballistics import GRAVITY, time_to_fall_to
 from sim_core.control.takeoff import SETTINGS, takeoff_steps
@@ -35,7 +35,7 @@ from sim_core.schema import Parameter, Schema
 GROUPS = ("inward", "back", "forward", "reverse")
 FORWARD_ROTATING = ("inward", "forward")      # the others somersault backward
 FACING_THE_WATER = ("forward", "reverse")     # the others stand backwards, heels at the edge
-LEAP_SETTINGS = SETTINGS + ("twist_lead",)
+LEAP_SETTINGS = SETTINGS + ("thrust_damping", "twist_lead")
 TAKEOFF_CLEAR = 0.05       # s without contact that make a take-off
 PLATFORM_MARGIN = 0.05     # m of room kept between the turning body and the platform
 FEET_CLEARANCE = 0.15      # m: the position is taken once the feet are this far past the platform's edge
@@ -47,6 +47,7 @@ OPEN_MOVE = 0.2            # s: the servo move from the position to the line
 OPEN_TIME = 0.18            # s: time to straighten from the position into the line
 TWIST_STOP_LEAD = 0.15      # s of the measured twist rate: arms come back this early
 ENTRY_REACH = 1.15          # share of the standing COM height: hands below the COM in the line
+ROTATION_TOLERANCE = 0.25   # turns: a dive's somersaults and twists count within a quarter turn of its name
 
 DEFAULT_SETTINGS = {       # until scripts/calibrate_dives.py has written the table
     "forward": {"crouch_height": 0.60, "crouch_pitch": 0.3, "com_offset": 0.15, "liftoff_hip": -1.5, "arm_swing": 1.0},
@@ -96,13 +97,15 @@ class Dive(Sequence):
         Parameter("position", "1", 1.0, 0.0, 2.0, "0 = layout (straight), 1 = pike, 2 = tuck"),
         Parameter("platform_height", "m", 10.0, 3.0, 10.0, "platform height above the water"),
         Parameter("low_level", "bool", 0.0, 0.0, 1.0, "1 = use the leap settings below instead of the calibrated ones"),
-        Parameter("crouch_height", "m", 0.70, 0.5, 0.95, "pelvis height of the crouch (low_level only)"),
+        Parameter("crouch_height", "m", 0.70, 0.4, 0.95, "pelvis height of the crouch (low_level only)"),
         Parameter("crouch_pitch", "rad", 0.3, 0.0, 1.5, "torso pitch in the crouch (low_level only)"),
         Parameter("com_offset", "m", -0.04, -0.25, 0.25,
                   "COM ahead (+) of or behind (-) the middle of the feet: the diver leans and thrusts once the COM has moved that far (low_level only)"),
-        Parameter("liftoff_hip", "rad", 0.0, -2.0, 2.0,
+        Parameter("liftoff_hip", "rad", 0.0, -2.2, 2.0,
                   "hip flexion (-, forward somersault) or extension (+, backward) at lift-off (low_level only)"),
         Parameter("arm_swing", "rad", 2.5, -1.0, 3.2, "arm swing during the thrust, forward and up (+) or back (-) (low_level only)"),
+        Parameter("thrust_damping", "1", THRUST_DAMPING, 0.1, 1.0,
+                  "share of the stiffened leg servos' damping kept in the thrust; less extends faster (low_level only)"),
         Parameter("twist_lead", "s", 0.6, 0.0, 1.5,
                   "twisting dives: open and throw the arms at the latest this long before the predicted entry "
                   "(low_level only)"),
@@ -123,7 +126,8 @@ class Dive(Sequence):
         p = self.params
         if p["low_level"]:
             return {k: p[k] for k in LEAP_SETTINGS}
-        return {"twist_lead": self.schema.by_name["twist_lead"].default, **load_settings(self.ctx.character.name, p)}
+        defaults = {k: self.schema.by_name[k].default for k in ("thrust_damping", "twist_lead")}
+        return {**defaults, **load_settings(self.ctx.character.name, p)}
 
     def check_feasible(self) -> None:
         p = self.params
@@ -136,16 +140,16 @@ class Dive(Sequence):
             raise ParameterError(
                 f"the {self.ctx.character.name} has no calibrated {group_name(p)} take-off that clears "
                 f"the platform (scripts/calibrate_dives.py found none)")
-        if p["twists"] > limits.get("twists", 0.0) + 0.25:
+        if p["twists"] > limits.get("twists", 0.0) + ROTATION_TOLERANCE:
             raise ParameterError(
                 f"{_article(dive_name(p))} cannot be completed by the {self.ctx.character.name}: the arm throw made at most "
-                f"{limits.get('twists', 0.0):.2f} twists in a calibrated dive (allowed: that + 0.25)")
+                f"{limits.get('twists', 0.0):.2f} twists in a calibrated dive (allowed: that + {ROTATION_TOLERANCE:g})")
         capacity = self.rotation_capacity(limits)
-        if p["somersaults"] > capacity:
+        if p["somersaults"] > capacity + ROTATION_TOLERANCE:
             raise ParameterError(
                 f"{_article(dive_name(p))} cannot be completed from {p['platform_height']:g} m by the "
                 f"{self.ctx.character.name}: the flight allows at most {capacity:.2f} somersaults in this position "
-                f"with the largest calibrated take-off angular momentum")
+                f"with the largest calibrated take-off angular momentum (allowed: that + {ROTATION_TOLERANCE:g})")
 
     def rotation_capacity(self, limits: dict) -> float:
         """Somersaults the flight from this platform allows: the largest take-off angular
@@ -194,7 +198,7 @@ class Dive(Sequence):
             return _Aerial(Tumble.schema.validate(dict(position=3, move_time=OPEN_MOVE, stiffness=SNAP)), ctx,
                            self.rotation, self)
 
-        return takeoff_steps(ctx, cfg) + [Step("tumble", tumble, lambda b, t: self.time_to_open(t)),
+        return takeoff_steps(ctx, dict(cfg, damping=cfg["thrust_damping"])) + [Step("tumble", tumble, lambda b, t: self.time_to_open(t)),
                                           Step("entry", entry)]
 
     # ------------------------------------------------------------------ transitions
@@ -351,7 +355,8 @@ def dive_assess(trajectory) -> tuple[str, dict]:
         return "no_entry", metrics
     if metrics["hit_platform"]:
         return "hit_platform", metrics
-    if (abs(metrics["somersaults"] - p["somersaults"]) > 0.25 or abs(metrics["twists"] - p["twists"]) > 0.25
+    if (abs(metrics["somersaults"] - p["somersaults"]) > ROTATION_TOLERANCE
+            or abs(metrics["twists"] - p["twists"]) > ROTATION_TOLERANCE
             or metrics["somersault_direction"] != wanted_direction):
         return "wrong_rotation", metrics
     if entry_angle > 20.0:
