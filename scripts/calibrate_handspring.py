@@ -41,7 +41,7 @@ ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
 from sim_core.control.handspring import SETTINGS, TUNED_DIR, Handspring, load_table  # noqa: E402
-from sim_core.control.tuned import kept_message, write_table  # noqa: E402
+from sim_core.control.tuned import kept_message, merge_search, write_table  # noqa: E402
 from sim_core.simulate import RunRequest, run  # noqa: E402
 
 DURATION = 5.0
@@ -169,17 +169,11 @@ def main() -> None:
     start = dict(defaults, **(old[0]["settings"] if old else {}), **json.loads(args.start or "{}"))
     s, settings, m = search(args.character, args.strength, args.iterations, args.population, args.seed, start,
                             args.processes, args.verbose, args.spread)
-    rows = [e for e in table["handsprings"] if e["strength"] != args.strength]
-    missing = [e for e in table.get("not_found", []) if e["strength"] != args.strength]
-    if found(m):
-        rows.append({"strength": args.strength, "settings": settings, "score": round(s, 4), "measured": m})
-    elif old:
-        rows.extend(old)                 # keep what worked before
-    else:
-        missing.append({"strength": args.strength, "settings": settings,
-                        "best": f"{m['outcome']}, rotation {m['rotation']:.2f} rad ({m['rotation_before_fall']:.2f} "
-                                f"before falling), angular momentum drift in flight "
-                                f"{100 * (m['angular_momentum_drift'] or 0):.2f} %"})
+    rows, missing = merge_search(
+        table["handsprings"], table.get("not_found", []), {"strength": args.strength}, found(m),
+        {"settings": settings, "score": round(s, 4), "measured": m},
+        f"{m['outcome']}, rotation {m['rotation']:.2f} rad ({m['rotation_before_fall']:.2f} before falling), "
+        f"angular momentum drift in flight {100 * (m['angular_momentum_drift'] or 0):.2f} %")
     write_table(TUNED_DIR / f"handspring_{args.character}.json", {"character": args.character, "script": "scripts/calibrate_handspring.py",
                                  "duration": DURATION, "handsprings": rows, "not_found": missing})
     kept = kept_message(found(m), m["outcome"] == "success", DRIFT_GOAL, bool(old))

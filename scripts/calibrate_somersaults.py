@@ -39,7 +39,7 @@ ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))      # this checkout's sim_core and rigs, not an installed one
 
 from sim_core.control.somersault import DIRECTIONS, SETTINGS, TUNED_DIR, load_table  # noqa: E402
-from sim_core.control.tuned import kept_message, write_table  # noqa: E402
+from sim_core.control.tuned import kept_message, merge_search, write_table  # noqa: E402
 from sim_core.simulate import RunRequest, run  # noqa: E402
 
 DURATION = 5.0
@@ -172,25 +172,18 @@ def main() -> None:
             for strength in args.strength or ("human", "unlimited"):
                 started = time.time()
                 table = load_table(character)
-                rows = [e for e in table["somersaults"] if (e["direction"], e["strength"]) != (direction, strength)]
                 old = [e for e in table["somersaults"] if (e["direction"], e["strength"]) == (direction, strength)]
                 start = dict(START[direction], **(old[0]["settings"] if old and not args.fresh else {}))
                 if args.start:
                     start = dict(start, **json.loads(args.start))
                 score, settings, m = search(character, direction, strength, args.iterations, args.population,
                                             args.seed, start, args.verbose)
-                missing = [e for e in table.get("not_found", []) if (e["direction"], e["strength"]) != (direction, strength)]
-                if found(m):
-                    rows.append({"direction": direction, "strength": strength, "settings": settings,
-                                 "score": round(score, 4), "measured": m})
-                elif old:
-                    rows.extend(old)          # keep what worked before
-                else:
-                    missing.append({"direction": direction, "strength": strength, "settings": settings,
-                                    "best": f"{m['outcome']}, angular momentum drift in flight "
-                                            f"{100 * (m['angular_momentum_drift'] or 0):.2f} %, rotation {m['rotation']:.2f} rad, flight rotation "
-                                            f"{m['flight_rotation'] or 0:.2f} rad, take-off angular momentum "
-                                            f"{m['liftoff_angular_momentum'] or 0:.1f} kg m^2/s"})
+                rows, missing = merge_search(
+                    table["somersaults"], table.get("not_found", []), {"direction": direction, "strength": strength},
+                    found(m), {"settings": settings, "score": round(score, 4), "measured": m},
+                    f"{m['outcome']}, angular momentum drift in flight {100 * (m['angular_momentum_drift'] or 0):.2f} %, "
+                    f"rotation {m['rotation']:.2f} rad, flight rotation {m['flight_rotation'] or 0:.2f} rad, take-off "
+                    f"angular momentum {m['liftoff_angular_momentum'] or 0:.1f} kg m^2/s")
                 write_table(TUNED_DIR / f"somersaults_{character}.json", {"character": character, "script": "scripts/calibrate_somersaults.py",
                                         "duration": DURATION, "somersaults": rows, "not_found": missing})
                 kept = kept_message(found(m), m["outcome"] == "success", DRIFT_GOAL, bool(old))

@@ -27,6 +27,27 @@ def uncalibrated(character: str, skill: str, strength: str, calibrated: list[str
                           f"lands{why}; calibrated: {', '.join(calibrated) or 'none'}")
 
 
+def merge_search(rows: list[dict], not_found: list[dict], key: dict, found: bool, row: dict,
+                 best: str) -> tuple[list[dict], list[dict]]:
+    """A table's rows and not-found records after a search for the entry ``key`` (e.g.
+    ``{"direction": "backward", "strength": "human"}``): a found ``row`` replaces the key's row;
+    else the old row stays if there is one; else the search's ``best`` run (a description) is
+    recorded as not found, with the settings it tried. Other keys' entries are kept as they are."""
+    def mine(entry: dict) -> bool:
+        return all(entry.get(k) == v for k, v in key.items())
+
+    old = [e for e in rows if mine(e)]
+    rows = [e for e in rows if not mine(e)]
+    missing = [e for e in not_found if not mine(e)]
+    if found:
+        rows.append({**key, **row})
+    elif old:
+        rows.extend(old)
+    else:
+        missing.append({**key, "settings": row["settings"], "best": best})
+    return rows, missing
+
+
 def kept_message(found: bool, succeeded: bool, drift_goal: float, had_row: bool) -> str:
     """What a calibration did with its best run, for its last line: a run that succeeded is kept
     only when its flight's angular momentum drift is below the goal."""

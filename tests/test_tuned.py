@@ -1,0 +1,26 @@
+"""The calibrated tables' bookkeeping (sim_core/control/tuned.py): what a calibration run keeps."""
+import json
+
+from sim_core.control.tuned import merge_search, write_table
+
+KEY = {"direction": "backward", "strength": "human"}
+OTHER = {"direction": "forward", "strength": "human", "settings": {"a": 1}}
+
+
+def test_a_found_row_replaces_the_old_one_and_its_not_found_record():
+    rows, missing = merge_search([OTHER, {**KEY, "settings": {"a": 0}}], [{**KEY, "best": "fell"}], KEY, True,
+                                 {"settings": {"a": 2}, "score": 0.1}, "unused")
+    assert rows == [OTHER, {**KEY, "settings": {"a": 2}, "score": 0.1}] and missing == []
+
+
+def test_without_a_find_the_old_row_stays_else_the_best_run_is_recorded():
+    old = {**KEY, "settings": {"a": 0}}
+    assert merge_search([old, OTHER], [], KEY, False, {"settings": {"a": 3}}, "fell") == ([OTHER, old], [])
+    rows, missing = merge_search([OTHER], [], KEY, False, {"settings": {"a": 3}}, "fell, rotation 5.5 rad")
+    assert rows == [OTHER] and missing == [{**KEY, "settings": {"a": 3}, "best": "fell, rotation 5.5 rad"}]
+
+
+def test_a_table_is_written_whole(tmp_path):
+    path = tmp_path / "table.json"
+    write_table(path, {"rows": [1, 2]})
+    assert json.loads(path.read_text()) == {"rows": [1, 2]} and not list(tmp_path.glob("*.tmp"))
