@@ -19,7 +19,7 @@ sys.path.insert(0, str(ROOT))
 
 from sim_core.character.model import compile_model  # noqa: E402
 from sim_core.character.spec import load_character  # noqa: E402
-from sim_core.control.dive import dive_name  # noqa: E402
+from sim_core.control.dive import CALIBRATED_DIVES, dive_name  # noqa: E402
 from sim_core.control.somersault import DIRECTIONS  # noqa: E402
 from sim_core.control.tumble import SEED_INERTIA, inertia_about_com, position_inertia  # noqa: E402
 from sim_core.errors import ParameterError  # noqa: E402
@@ -27,14 +27,8 @@ from sim_core.simulate import RunRequest, run  # noqa: E402
 
 DOC = ROOT / "docs" / "tumbling.md"
 PLOT = ROOT / "docs" / "tumbling_rates.png"
-DIVES = [("man", dict(group=0, somersaults=1.5, twists=0.0, position=1)),       # Wooten §8.2.1's four
-         ("man", dict(group=1, somersaults=1.5, twists=0.5, position=2)),
-         ("woman", dict(group=0, somersaults=2.5, twists=0.0, position=1)),
-         ("woman", dict(group=1, somersaults=1.5, twists=2.5, position=2)),
-         ("man", dict(group=2, somersaults=1.5, twists=0.0, position=1)),       # beyond the seed: facing the water
-         ("man", dict(group=3, somersaults=1.5, twists=0.0, position=2)),
-         ("woman", dict(group=2, somersaults=1.5, twists=0.0, position=1)),
-         ("woman", dict(group=3, somersaults=1.5, twists=0.0, position=2))]
+DIVES = [(character, CALIBRATED_DIVES[character][k]) for pair in ((0, 1), (2, 3))   # the seed's four, then
+         for character in ("man", "woman") for k in pair]                             # beyond it: facing the water
 
 
 def inertia_series(trajectory) -> np.ndarray:

@@ -1,4 +1,5 @@
-"""The simulation loop: physics at a fixed 1 ms step, the behaviour at the control rate, frames
+"""The simulation loop: physics at a 1 ms step (finer for the ticks a behaviour asks it for:
+``ControlContext.step_division``), the behaviour at the control rate, frames
 recorded into a Trajectory together with the log that replays it bit for bit.
 
 Per control tick, in this order (replay follows the same order):
@@ -7,7 +8,7 @@ Per control tick, in this order (replay follows the same order):
   2. fresh kinematics (positions, COM, COM velocity) of the current state;
   3. record a frame;
   4. the behaviour sets servo targets -> control vector (live run) / read it from the log (replay);
-  5. ``steps_per_tick`` physics steps.
+  5. ``steps_per_tick`` x ``step_division`` physics steps of the model's step / ``step_division``.
 """
 from __future__ import annotations
 
@@ -176,7 +177,9 @@ def run(request: RunRequest, progress: Callable[[float], None] | None = None,
     support_sites = behaviour_support_sites(model)
     recorder = Recorder(model, n_ticks + 1, support_sites)
     control = np.zeros((n_ticks, model.nu))
+    divisions = np.ones(n_ticks, dtype=np.int64)
     pushes = PushSchedule(request.pushes, model, data, log)
+    base_timestep = model.opt.timestep
 
     loop_start = time.perf_counter()
     for tick in range(n_ticks):
@@ -192,19 +195,22 @@ def run(request: RunRequest, progress: Callable[[float], None] | None = None,
         behaviour.update(t)
         servos.write(t)
         control[tick] = data.ctrl
-        mujoco.mj_step(model, data, nstep=steps_per_tick)
+        divisions[tick] = division = behaviour.ctx.step_division
+        model.opt.timestep = base_timestep / division
+        mujoco.mj_step(model, data, nstep=steps_per_tick * division)
         if any(data.warning[w].number for w in DIVERGENCE_WARNINGS):
             raise UnstableSimulation(
                 f"the simulation became numerically unstable at t={t:.3f} s (accelerations blew "
                 f"up); nothing was written - lower the gains or the strength, or shorten the step")
         if behaviour.run_complete:
-            control = control[:tick + 1]
+            control, divisions = control[:tick + 1], divisions[:tick + 1]
             break
         if progress and tick % 200 == 0:
             progress(tick / n_ticks)
         if cancelled and tick % 50 == 0 and cancelled():
             raise Cancelled("run cancelled; nothing was written")
     log.tick = len(control)
+    model.opt.timestep = base_timestep
     refresh_kinematics(model, data)
     recorder.record(data)
     loop_seconds = time.perf_counter() - loop_start
@@ -213,6 +219,7 @@ def run(request: RunRequest, progress: Callable[[float], None] | None = None,
     arrays.update(log.arrays())
     arrays["initial_state"] = initial_state
     arrays["control"] = control
+    arrays["step_division"] = divisions
     arrays["body_names"] = np.array([model.body(i).name for i in recorder.bodies])
     meta = {
         "model_xml": xml, "character": character.name, "behaviour": cls.name, "params": params,
@@ -253,13 +260,17 @@ def replay(trajectory: Trajectory) -> Trajectory:
     player = EditPlayer(model, data, trajectory.arrays)
     control = trajectory.arrays["control"]
     steps = meta["steps_per_tick"]
+    base_timestep = model.opt.timestep
+    divisions = trajectory.arrays.get("step_division", np.ones(len(control), dtype=np.int64))
     recorder = Recorder(model, len(control) + 1, behaviour_support_sites(model))
     for tick in range(len(control)):
         player.apply(tick)
         refresh_kinematics(model, data)
         recorder.record(data)
         data.ctrl[:] = control[tick]
-        mujoco.mj_step(model, data, nstep=steps)
+        model.opt.timestep = base_timestep / int(divisions[tick])
+        mujoco.mj_step(model, data, nstep=steps * int(divisions[tick]))
+    model.opt.timestep = base_timestep
     player.apply(len(control))
     refresh_kinematics(model, data)
     recorder.record(data)

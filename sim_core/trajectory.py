@@ -7,7 +7,9 @@ Arrays (N recorded frames at the control rate, B bodies, S foot contact sites):
   reaction force on the character), ground_contact (N x B: body touches the ground),
   support_points (N x S x 3: foot contact sites), push_force (N x 3).
 Replay log: initial_state (mjSTATE_INTEGRATION), control (K x nu, the control vector of each
-control tick, constant over its ``steps_per_tick`` physics steps), and the edit log
+control tick, constant over its ``steps_per_tick`` physics steps), step_division (K: that tick's
+physics step is the model's divided by this, and it takes that many times the steps; 1 unless a
+behaviour asked for a finer step), and the edit log
 (edit_tick, edit_field, edit_index, edit_value) of every model/data parameter the run set.
 meta (JSON string): model_xml, character, behaviour, params, outcome, metrics, pushes, world,
 strength, timestep, steps_per_tick, phase_events, edit_fields, format version.
@@ -27,7 +29,7 @@ FORMAT = "sim_athletics.trajectory"
 VERSION = 1
 FRAME_FIELDS = ("time", "qpos", "qvel", "body_pos", "body_quat", "com", "com_vel", "angmom", "grf",
                 "ground_contact", "support_points", "push_force")
-LOG_FIELDS = ("initial_state", "control", "edit_tick", "edit_field", "edit_index", "edit_value")
+LOG_FIELDS = ("initial_state", "control", "step_division", "edit_tick", "edit_field", "edit_index", "edit_value")
 
 
 @dataclass

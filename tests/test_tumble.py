@@ -6,7 +6,7 @@ import pytest
 
 from sim_core.character.model import compile_model
 from sim_core.character.spec import load_character
-from sim_core.control.dive import takeoff_index
+from sim_core.control.dive import takeoff_index, twist_moves
 from sim_core.control.tumble import SEED_INERTIA, position_inertia
 from sim_core.errors import ParameterError
 from sim_core.simulate import RunRequest, largest_difference, replay, run
@@ -60,6 +60,7 @@ def test_man_dive_rotations_and_entry(man_dives, name):
 
 WOMAN_DIVES = {
     "inward 2.5 pike": dict(group=0, somersaults=2.5, twists=0.0, position=1),      # Wooten §8.2.1
+    "back 1.5 with 2.5 twists": dict(group=1, somersaults=1.5, twists=2.5, position=0),   # Wooten §8.2.1 (free)
     "forward 1.5 pike": dict(group=2, somersaults=1.5, twists=0.0, position=1),     # facing the water
     "reverse 1.5 tuck": dict(group=3, somersaults=1.5, twists=0.0, position=2),
 }
@@ -67,13 +68,14 @@ WOMAN_DIVES = {
 
 @pytest.mark.parametrize("name", list(WOMAN_DIVES))
 def test_woman_dive_rotations_entry_and_momentum(name):
-    """As the man's: the somersaults of the dive's name within a quarter turn, entry within 20
-    degrees of vertical, head first, clear of the platform, and the flight's angular momentum
-    constant within 1 %; with human torque limits."""
+    """As the man's: the somersaults and twists of the dive's name within a quarter turn, entry
+    within 20 degrees of vertical, head first, clear of the platform, and the flight's angular
+    momentum constant within 1 %; with human torque limits."""
     traj = run(RunRequest("dive", "woman", params=WOMAN_DIVES[name], duration=4.5))
     m = traj.meta["metrics"]
+    wanted = WOMAN_DIVES[name]
     assert traj.meta["outcome"] == "success", m
-    assert abs(m["somersaults"] - WOMAN_DIVES[name]["somersaults"]) <= 0.25 and m["twists"] <= 0.25
+    assert abs(m["somersaults"] - wanted["somersaults"]) <= 0.25 and abs(m["twists"] - wanted["twists"]) <= 0.25
     assert m["entry_angle_from_vertical_deg"] < 20.0 and m["head_first"] and not m["hit_platform"]
     assert m["angular_momentum_drift"] < 0.01
 
@@ -89,10 +91,14 @@ def test_angular_momentum_is_constant_in_every_flight(man_dives, name):
     assert np.linalg.norm(momentum[0]) > 10.0 and drift < 0.01
 
 
-def test_twist_starts_in_flight_from_no_twist(man_dives):
+@pytest.mark.parametrize("character, twists", [("man", 0.5), ("woman", 2.5)])
+def test_twist_starts_in_flight_from_no_twist(man_dives, character, twists):
     """The twist comes from the arm throw in flight: no twist rate at take-off, a clear one after
-    the throw."""
-    traj = man_dives["back 1.5 with 0.5 twist"]
+    the throw; the arm moves are the ones twist_moves names, in order."""
+    traj = (man_dives["back 1.5 with 0.5 twist"] if character == "man" else
+            run(RunRequest("dive", "woman", params=WOMAN_DIVES["back 1.5 with 2.5 twists"], duration=4.5)))
+    moves = [event for _, event in traj.meta["phase_events"] if event.startswith("twist")]
+    assert moves == ["twist_throw" if move.endswith("throw") else "twist_stop" for _, move in twist_moves(twists)]
     start, end = flight(traj)
     t = traj.arrays["time"]
     throw = [time for time, event in traj.meta["phase_events"] if event == "twist_throw"][0]
@@ -136,11 +142,30 @@ def test_platform_world_holds_the_diver_and_the_water_is_not_felt():
 
 @pytest.mark.parametrize("params, match", [
     (dict(group=0, somersaults=3.5, position=1), "at most .* somersaults"),        # inward 3 1/2 pike
-    (dict(group=1, somersaults=1.5, twists=2.5, position=2), "at most .* twists"),  # back 1 1/2 with 2 1/2 twists
+    (dict(group=1, somersaults=1.5, twists=3.0, position=0), "at most .* twists"),  # back 1 1/2 with 3 twists
 ])
 def test_the_womans_dives_beyond_her_takeoff_are_refused_with_the_reason(params, match):
-    """Not reached (see docs/tumbling.md): her calibrated take-offs do not give the rotation for
-    an inward 3 1/2 pike, nor her arm throw the twists of the seed's back 1 1/2 with 2 1/2
-    twists; the request is refused before simulating, naming the limit."""
+    """Beyond her calibrated dives: her take-offs do not give the rotation for an inward 3 1/2
+    pike, nor her twist 3 twists; the request is refused before simulating, naming the
+    limit."""
     with pytest.raises(ParameterError, match=match):
         run(RunRequest("dive", "woman", params=params))
+
+
+def test_twist_moves_double_the_tilt_for_multiple_twists():
+    """Up to a twist and a half: throw, arms back at the end. From 1 1/2: arms back at the half
+    twist (the tilt doubles), a second throw half a twist before the end - the mirrored one before
+    a whole-and-a-half - and arms back at the end."""
+    assert twist_moves(0.5) == [(0.0, "throw"), (0.5, "back")]
+    assert twist_moves(2.5) == [(0.0, "throw"), (0.5, "back"), (2.0, "mirrored throw"), (2.5, "back")]
+    assert twist_moves(2.0) == [(0.0, "throw"), (0.5, "back"), (1.5, "throw"), (2.0, "back")]
+
+
+def test_a_twisting_flight_takes_a_finer_step_and_still_replays_exactly():
+    """The flight of a dive runs at the model's step / FLIGHT_STEP_DIVISION (logged per tick); the
+    replay follows the log to the bit."""
+    from sim_core.control.dive import FLIGHT_STEP_DIVISION
+    traj = run(RunRequest("dive", "woman", params=WOMAN_DIVES["back 1.5 with 2.5 twists"], duration=4.5))
+    divisions = traj.arrays["step_division"]
+    assert divisions[0] == 1 and divisions[-1] == FLIGHT_STEP_DIVISION
+    assert largest_difference(traj, replay(traj)) == 0.0

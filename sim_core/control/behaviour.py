@@ -53,6 +53,9 @@ class ControlContext:
     character: CharacterSpec
     servos: ServoBank
     control_dt: float = 0.01          # s between update() calls of this run
+    step_division: int = 1            # the physics step of the coming control tick is the model's
+                                      # divided by this (a behaviour sets it where fast motion needs
+                                      # a finer step, e.g. a twisting flight); logged for replay
 
 
 class Behaviour:

@@ -46,8 +46,24 @@ SNAP = 3.0                 # hip, knee and spine gains x3 for the moves into and
 OPEN_MOVE = 0.2            # s: the servo move from the position to the line
 OPEN_TIME = 0.18            # s: time to straighten from the position into the line
 TWIST_STOP_LEAD = 0.15      # s of the measured twist rate: arms come back this early
+TILT_DOUBLING_TWISTS = 1.5  # from this many twists the arms come back at the half twist (see twist_moves)
+FLIGHT_STEP_DIVISION = 8    # the flight's physics step is the model's / this: with the 1 ms step a fast
+                            # twist (10-12 rad/s) let the flight's angular momentum drift 4 % (measured:
+                            # 4.4 / 2.1 / 1.0 % at 1 / 0.5 / 0.25 ms, the dive otherwise the same)
 ENTRY_REACH = 1.15          # share of the standing COM height: hands below the COM in the line
 ROTATION_TOLERANCE = 0.25   # turns: a dive's somersaults and twists count within a quarter turn of its name
+
+CALIBRATED_DIVES = {   # the dives scripts/calibrate_dives.py calibrates, per character, in its table's order:
+                      # Wooten §8.2.1's two 10 m dives of the man and of the woman; then two beyond the seed
+    "man": [dict(group=0, somersaults=1.5, twists=0.0, position=1),      # inward 1 1/2 pike
+            dict(group=1, somersaults=1.5, twists=0.5, position=2),      # back 1 1/2 with 1/2 twist
+            dict(group=2, somersaults=1.5, twists=0.0, position=1),      # forward 1 1/2 pike
+            dict(group=3, somersaults=1.5, twists=0.0, position=2)],     # reverse 1 1/2 tuck
+    "woman": [dict(group=0, somersaults=2.5, twists=0.0, position=1),    # inward 2 1/2 pike
+              dict(group=1, somersaults=1.5, twists=2.5, position=0),    # back 1 1/2 with 2 1/2 twists (free: layout)
+              dict(group=2, somersaults=1.5, twists=0.0, position=1),    # forward 1 1/2 pike
+              dict(group=3, somersaults=1.5, twists=0.0, position=2)],   # reverse 1 1/2 tuck
+}
 
 DEFAULT_SETTINGS = {       # until scripts/calibrate_dives.py has written the table
     "forward": {"crouch_height": 0.60, "crouch_pitch": 0.3, "com_offset": 0.15, "liftoff_hip": -1.5, "arm_swing": 1.0},
@@ -106,9 +122,9 @@ class Dive(Sequence):
         Parameter("arm_swing", "rad", 2.5, -1.0, 3.2, "arm swing during the thrust, forward and up (+) or back (-) (low_level only)"),
         Parameter("thrust_damping", "1", THRUST_DAMPING, 0.1, 1.0,
                   "share of the stiffened leg servos' damping kept in the thrust; less extends faster (low_level only)"),
-        Parameter("twist_lead", "s", 0.6, 0.0, 1.5,
+        Parameter("twist_lead", "s", 0.6, 0.0, 2.0,
                   "twisting dives: open and throw the arms at the latest this long before the predicted entry "
-                  "(low_level only)"),
+                  "(as soon as clear of the platform when it is longer than the flight) (low_level only)"),
     )
 
     @classmethod
@@ -254,10 +270,11 @@ class _Aerial(Tumble):
         self.edge = float(m.geom_pos[ground][0] + self.water_side * m.geom_size[ground][0])
         self.feet = [m.body(n).id for n in ("FOOTR", "FOOTL", "TOER", "TOEL")]
         self.clear = self.params["position"] in (0, 3)
-        self.twist_done = False
+        self.moves_made = 0                 # arm moves of the twist made (twist_moves)
         self.radius = position_radius(m, ctx.character, position_name(self.params["position"]))
 
     def start(self, t: float) -> None:
+        self.ctx.step_division = FLIGHT_STEP_DIVISION
         if self.clear:
             super().start(t)
             return
@@ -285,13 +302,36 @@ class _Aerial(Tumble):
         dive = self.dive
         if not dive.twist_target or self.params["position"] != 3:
             return
-        if not self.twisting and not self.twist_done:
-            self.throw_twist(t)
-        elif self.twisting:
-            rate = abs(float(self.ctx.data.qvel[5]))
-            if abs(self.rotation.twist) + rate * TWIST_STOP_LEAD >= dive.twist_target:
+        moves = twist_moves(dive.twist_target / (2 * math.pi))
+        if self.moves_made == len(moves):
+            return
+        rate = abs(float(self.ctx.data.qvel[5]))
+        turns = (abs(self.rotation.twist) + rate * TWIST_STOP_LEAD) / (2 * math.pi)
+        at, move = moves[self.moves_made]
+        if turns >= at:
+            if move == "back":
                 self.stop_twist(t)
-                self.twist_done = True
+            else:
+                self.throw_twist(t, mirrored=move == "mirrored throw")
+            self.moves_made += 1
+
+
+def twist_moves(twists: float) -> list[tuple[float, str]]:
+    """The arm moves of a twist, each made once the twist count (with the measured rate's lead)
+    reaches its turn: the throw at once and the arms back at the end; from TILT_DOUBLING_TWISTS
+    on, also the arms back at the half twist and a second throw half a twist before the end.
+    An arm move turns the body about its own front-to-back axis; after half a twist that axis
+    points the other way about the angular momentum, so the same move tilts the body the other
+    way in the world. Bringing the arms back at the half twist therefore tilts the body further
+    instead of undoing the tilt (measured on the woman's back 1 1/2: the tilt rises from ~6 to
+    ~15 degrees, the twist rate from ~8 to 10-12 rad/s). The second throw takes one tilt's worth
+    away and the arms back at the end the other: half a twist before a whole number of twists
+    that is the same throw, before a whole-and-a-half the mirrored one (the other arm down),
+    whose arms-back then comes at a half twist (Frohlich 1979; Yeadon 1993)."""
+    if twists < TILT_DOUBLING_TWISTS:
+        return [(0.0, "throw"), (twists, "back")]
+    whole = abs(twists - round(twists)) < 1e-6
+    return [(0.0, "throw"), (0.5, "back"), (twists - 0.5, "throw" if whole else "mirrored throw"), (twists, "back")]
 
 
 def takeoff_index(contact: np.ndarray, clear_frames: int) -> int | None:
