@@ -160,6 +160,15 @@ class Dive(Sequence):
             raise ParameterError(
                 f"{_article(dive_name(p))} cannot be completed by the {self.ctx.character.name}: the arm throw made at most "
                 f"{limits.get('twists', 0.0):.2f} twists in a calibrated dive (allowed: that + {ROTATION_TOLERANCE:g})")
+        flight = self.flight_time(limits["rise"])
+        lead = self.settings()["twist_lead"]
+        if p["twists"] and not p["low_level"] and position_name(p["position"]) != "layout" and lead >= flight:
+            raise ParameterError(
+                f"{_article(dive_name(p))} cannot be done by the {self.ctx.character.name}: the "
+                f"{self.ctx.character.name}'s calibrated twisting {group_name(p)} dive twists from the take-off in the "
+                f"layout (twist lead {lead:.2f} s, "
+                f"the flight {flight:.2f} s), which leaves no time in the {position_name(p['position'])}; "
+                f"use position=0 (layout)")
         capacity = self.rotation_capacity(limits)
         if p["somersaults"] > capacity + ROTATION_TOLERANCE:
             raise ParameterError(
