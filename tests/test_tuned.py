@@ -18,6 +18,16 @@ def test_without_a_find_the_old_row_stays_else_the_best_run_is_recorded():
     assert merge_search([old, OTHER], [], KEY, False, {"settings": {"a": 3}}, "fell") == ([OTHER, old], [])
     rows, missing = merge_search([OTHER], [], KEY, False, {"settings": {"a": 3}}, "fell, rotation 5.5 rad")
     assert rows == [OTHER] and missing == [{**KEY, "settings": {"a": 3}, "best": "fell, rotation 5.5 rad"}]
+    rows, missing = merge_search([OTHER], [], KEY, False, {"settings": {"a": 3}, "score": 7.0}, "fell")
+    assert missing == [{**KEY, "settings": {"a": 3}, "best": "fell", "score": 7.0}]
+
+
+def test_a_worse_search_does_not_overwrite_the_recorded_best_miss():
+    earlier = {**KEY, "settings": {"a": 1}, "best": "fell, rotation 6.35 rad", "score": 20.0}
+    _, missing = merge_search([], [earlier], KEY, False, {"settings": {"a": 9}, "score": 63.0}, "fell, rotation -1.3 rad")
+    assert missing == [earlier]
+    _, missing = merge_search([], [earlier], KEY, False, {"settings": {"a": 2}, "score": 10.0}, "fell, rotation 6.2 rad")
+    assert missing == [{**KEY, "settings": {"a": 2}, "best": "fell, rotation 6.2 rad", "score": 10.0}]
 
 
 def test_a_table_is_written_whole(tmp_path):

@@ -32,19 +32,25 @@ def merge_search(rows: list[dict], not_found: list[dict], key: dict, found: bool
     """A table's rows and not-found records after a search for the entry ``key`` (e.g.
     ``{"direction": "backward", "strength": "human"}``): a found ``row`` replaces the key's row;
     else the old row stays if there is one; else the search's ``best`` run (a description) is
-    recorded as not found, with the settings it tried. Other keys' entries are kept as they are."""
+    recorded as not found, with the settings it tried and its score - unless an earlier search
+    recorded a better (lower-scoring) one, which stays: a short search does not overwrite a
+    longer one's best. Other keys' entries are kept as they are."""
     def mine(entry: dict) -> bool:
         return all(entry.get(k) == v for k, v in key.items())
 
     old = [e for e in rows if mine(e)]
     rows = [e for e in rows if not mine(e)]
+    earlier = [e for e in not_found if mine(e)]
     missing = [e for e in not_found if not mine(e)]
     if found:
         rows.append({**key, **row})
     elif old:
         rows.extend(old)
+    elif earlier and earlier[0].get("score", float("inf")) <= row.get("score", float("inf")):
+        missing.extend(earlier)
     else:
-        missing.append({**key, "settings": row["settings"], "best": best})
+        missing.append({**key, "settings": row["settings"], "best": best,
+                        **({"score": row["score"]} if "score" in row else {})})
     return rows, missing
 
 
