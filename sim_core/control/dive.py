@@ -223,8 +223,8 @@ class Dive(Sequence):
             return _Aerial(Tumble.schema.validate(dict(position=3, move_time=OPEN_MOVE, stiffness=SNAP)), ctx,
                            self.rotation, self)
 
-        return takeoff_steps(ctx, dict(cfg, damping=cfg["thrust_damping"])) + [Step("tumble", tumble, lambda b, t: self.time_to_open(t)),
-                                          Step("entry", entry)]
+        return takeoff_steps(ctx, dict(cfg, damping=cfg["thrust_damping"])) + [
+            Step("tumble", tumble, lambda b, t: self.time_to_open(t)), Step("entry", entry)]
 
     # ------------------------------------------------------------------ transitions
     def time_to_open(self, t: float) -> bool:
