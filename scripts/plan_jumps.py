@@ -5,6 +5,7 @@ report what the final runs achieve.
     python3 scripts/plan_jumps.py --report-only        # rerun the stored plans and rewrite the report
     python3 scripts/plan_jumps.py --characters woman --distances 1.0 1.3 --trials 200
     python3 scripts/plan_jumps.py --characters man --distances 1.6 --boxes --sideways --no-down --restart 1
+    python3 scripts/plan_jumps.py --characters man --distances --boxes --sideways --start '{"liftoff_hip": 1.0}'
 
 Plans go to rigs/tuned/jump_targets_<character>.json (found or not: a target whose search found no
 jump is stored with the nearest trial, so a request for it is refused at once with the numbers).
@@ -14,6 +15,7 @@ point, like Wooten's commanded-vs-achieved figures).
 from __future__ import annotations
 
 import argparse
+import json
 import sys
 import time
 from pathlib import Path
@@ -56,7 +58,7 @@ def down_request() -> dict:
     return request_for(x, 0.0, z, obstacle)
 
 
-def plan(characters, requests, trials: int, restart: int = 0) -> None:
+def plan(characters, requests, trials: int, restart: int = 0, start_settings: dict | None = None) -> None:
     for character in characters:
         for params in requests:
             request = {**params, "strength": "human"}
@@ -71,7 +73,7 @@ def plan(characters, requests, trials: int, restart: int = 0) -> None:
             result = plan_jump(character, tuple(params[k] for k in ("target_x", "target_y", "target_z",
                                                                     "obstacle_height")),
                                params["air_time"], params["windup_time"], trials=trials, progress=progress,
-                               restart=restart)
+                               restart=restart, start=start_settings)
             print(f"{character} {label}: {'found' if result['found'] else 'NOT found'} after {result['trials']} "
                   f"trials ({time.perf_counter() - start:.0f} s)", flush=True)
             store_plan(character, request, result, "scripts/plan_jumps.py")
@@ -116,7 +118,11 @@ landing point within {LANDING_TOLERANCE * 100:.0f} cm, air time within {AIR_TIME
 The search of each target is the cross-entropy method and then a pattern search from its best
 balanced trial; a rerun continues from the stored best (the trial counts add up), or with
 `--restart N` searches afresh from the plan found nearest the target, keeping the stored best
-unless it finds a better one.
+unless it finds a better one; `--start JSON` starts the search from given settings. The man's jump
+down and 1.6 m were found from his 1.0 m and 1.3 m ground plans with the lift-off hip extension at
+the end of its range (1.0 rad) and a wider arm swing: the backward spin it gives keeps the trunk
+upright through the flight, where with the plans' own spin the trunk pitched forward to 65° as the
+legs swung forward for the landing.
 
 ![commanded vs achieved landing point](jump_to_target.png)
 
@@ -179,6 +185,9 @@ def main() -> None:
                         help="N > 0: search afresh (from the stored plan found nearest each target, with random "
                              "stream N) instead of continuing from the stored best; the stored best is kept "
                              "if the new search does no better")
+    parser.add_argument("--start", type=json.loads, default=None,
+                        help="JSON settings the search starts from (over the stored best or nearest plan), e.g. "
+                             "a trial a hand-run scan found")
     parser.add_argument("--report-only", action="store_true")
     parser.add_argument("--plan-only", action="store_true",
                         help="store the plans, write no report (to plan characters in parallel processes)")
@@ -187,7 +196,7 @@ def main() -> None:
         requests = [request_for(x) for x in args.distances] + [box_request(z) for z in args.boxes]
         requests += [request_for(0.0, side * y) for y in args.sideways for side in (1, -1)]
         requests += [down_request()] if args.down else []
-        plan(args.characters, requests, args.trials, args.restart)
+        plan(args.characters, requests, args.trials, args.restart, args.start)
     if not args.plan_only:
         report(args.characters)
 

@@ -153,3 +153,16 @@ def test_a_restarted_search_starts_from_the_stored_plan_nearest_the_target():
     assert first[0]["landing"] == pytest.approx(stored["measured"]["landing"], abs=1e-6)
     assert plan["found"]
     assert plan["trials"] == stored["trials"] + 3
+
+
+def test_a_search_given_start_settings_starts_there():
+    """plan_jump(start=...) starts the search from the given settings: its first trial is the
+    same jump as a run of those settings (here the man's stored 1.3 m plan, asked for a target
+    nobody planned, so no earlier search takes over)."""
+    from sim_core.control.target_jump import plan_jump
+    stored = _stored("man", dict(target_x=1.3, target_y=0.0, target_z=0.0, air_time=GROUND_AIR_TIME,
+                                 windup_time=WINDUP_TIME))
+    first = []
+    plan_jump("man", (1.27, 0.0, 0.0), GROUND_AIR_TIME, WINDUP_TIME, trials=1, start=stored["settings"],
+              progress=lambda done, total, best: first.append(dict(best)) if done == 1 else None)
+    assert first[0]["landing"] == pytest.approx(stored["measured"]["landing"], abs=1e-6)

@@ -283,7 +283,8 @@ def crouch_time(windup_time: float) -> float:
 
 
 def plan_jump(character: str, target, air_time: float, windup_time: float, strength="human",
-              trials: int = 120, population: int = 12, elite: int = 4, progress=None, restart: int = 0) -> dict:
+              trials: int = 120, population: int = 12, elite: int = 4, progress=None, restart: int = 0,
+              start: dict | None = None) -> dict:
     """Search the leap's settings for a jump that lands the middle of the feet on ``target`` in
     ``air_time`` and ends balanced. Two stages share the ``trials``: the cross-entropy method
     over all the settings, starting from the best trial of an earlier search for the same
@@ -294,7 +295,8 @@ def plan_jump(character: str, target, air_time: float, windup_time: float, stren
     search walks along it, one setting at a time, to the target. An earlier search's best is kept
     if this one does no better; the trial counts add up. ``restart`` > 0 starts a fresh search
     instead of continuing an earlier one that got stuck: from the stored plan found nearest the
-    target (else the prior), with the random stream of that restart number.
+    target (else the prior), with the random stream of that restart number. ``start`` (settings,
+    e.g. a trial found by a hand-run scan) overrides where the search starts.
     Returns {"settings", "measured", "trials", "found"}."""
     from sim_core.simulate import RunRequest, run
 
@@ -311,6 +313,7 @@ def plan_jump(character: str, target, air_time: float, windup_time: float, stren
         prior = found[1] if found else fallback
     else:
         prior = search_start(character, target, previous, strength) or fallback
+    prior = {**prior, **(start or {})}
     mean = np.array([float(prior.get(n, fallback[n])) for n in names])
     std = 0.25 * (high - low)
     rng = np.random.default_rng([_stable_seed(target, air_time, windup_time), restart] if restart
