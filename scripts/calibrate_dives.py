@@ -31,6 +31,7 @@ ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))      # this checkout's sim_core and rigs, not an installed one
 
 from sim_core.control.dive import CALIBRATED_DIVES, FORWARD_ROTATING, GROUPS, TUNED_DIR, Dive  # noqa: E402
+from sim_core.control.tuned import write_table  # noqa: E402
 from sim_core.errors import ParameterError  # noqa: E402
 from sim_core.simulate import RunRequest, run  # noqa: E402
 
@@ -189,7 +190,7 @@ def main() -> None:
         if args.limits_only:
             table = json.loads(path.read_text())
             table["limits"] = table_limits(old)
-            path.write_text(json.dumps(table, indent=1) + "\n")
+            write_table(path, table)
             print(f"{character}: limits {table['limits']}")
             continue
         with NoLimits():
@@ -199,10 +200,8 @@ def main() -> None:
                      if args.only is None or k in args.only or k >= len(old) else old[k]
                      for k, dive in enumerate(CALIBRATED_DIVES[character])]
         limits = table_limits(dives)
-        tmp = path.with_suffix(".tmp")
-        tmp.write_text(json.dumps({"character": character, "script": "scripts/calibrate_dives.py",
-                                   "search": vars(args), "dives": dives, "limits": limits}, indent=1) + "\n")
-        tmp.replace(path)
+        write_table(path, {"character": character, "script": "scripts/calibrate_dives.py",
+                           "search": vars(args), "dives": dives, "limits": limits})
         print(f"{character}: wrote {path} in {time.time() - started:.0f} s")
         for d in dives:
             print(f"  {d['measured']}")

@@ -4,7 +4,7 @@ the README and docs/leap_report.md); jumps to a target are in test_target_jump.p
 import numpy as np
 import pytest
 
-from sim_core.control.leap import rise_tolerance
+from sim_core.control.leap import commandable_heights, load_mapping, rise_tolerance
 from sim_core.errors import ParameterError
 from sim_core.simulate import RunRequest, StartState, largest_difference, replay, run
 
@@ -127,11 +127,22 @@ def test_broad_jump_travels_the_commanded_distance_and_lands_balanced(name, dist
     assert m["landing_skid"] <= 0.05
 
 
+def test_the_stated_range_of_commandable_heights_is_the_one_that_runs():
+    """The refusal's range is exact: its ends run (the end leap within tolerance), just beyond
+    them is refused."""
+    low, high = commandable_heights(load_mapping("man")["vertical"]["com_rise"])
+    for height in (low + 1e-3, high - 1e-3):
+        run(RunRequest("leap", "man", params=dict(height=height), duration=0.01))
+    for height in (low - 1e-3, high + 1e-3):
+        with pytest.raises(ParameterError, match="allowed range"):
+            run(RunRequest("leap", "man", params=dict(height=height), duration=0.01))
+
+
 def test_infeasible_and_bad_leaps_are_refused_before_simulating():
     with pytest.raises(ParameterError, match="distance=2.45 m has no calibrated broad jump within 10 %"):
         run(RunRequest("leap", "man", params=dict(distance=2.45)))
     with pytest.raises(ParameterError, match=r"height=1.1 m is infeasible for man with human torque limits; "
-                                             r"allowed range is \[0.1\d, 0.\d\d\] m"):
+                                             r"allowed range is \[0.09, 0.96\] m \(calibrated leaps rise 0.12 ... 0.86 m\)"):
         run(RunRequest("leap", "man", params=dict(height=1.1)))
     with pytest.raises(ParameterError, match="height=1.2 m is infeasible for woman with human torque limits"):
         run(RunRequest("leap", "woman", params=dict(height=1.2)))

@@ -279,7 +279,8 @@ class _Aerial(Tumble):
         self.edge = float(m.geom_pos[ground][0] + self.water_side * m.geom_size[ground][0])
         self.feet = [m.body(n).id for n in ("FOOTR", "FOOTL", "TOER", "TOEL")]
         self.clear = self.params["position"] in (0, 3)
-        self.moves_made = 0                 # arm moves of the twist made (twist_moves)
+        self.moves = twist_moves(dive.twist_target / (2 * math.pi)) if dive.twist_target else []
+        self.moves_made = 0                 # of self.moves
         self.radius = position_radius(m, ctx.character, position_name(self.params["position"]))
 
     def start(self, t: float) -> None:
@@ -311,12 +312,11 @@ class _Aerial(Tumble):
         dive = self.dive
         if not dive.twist_target or self.params["position"] != 3:
             return
-        moves = twist_moves(dive.twist_target / (2 * math.pi))
-        if self.moves_made == len(moves):
+        if self.moves_made == len(self.moves):
             return
         rate = abs(float(self.ctx.data.qvel[5]))
         turns = (abs(self.rotation.twist) + rate * TWIST_STOP_LEAD) / (2 * math.pi)
-        at, move = moves[self.moves_made]
+        at, move = self.moves[self.moves_made]
         if turns >= at:
             if move == "back":
                 self.stop_twist(t)

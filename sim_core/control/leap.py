@@ -506,6 +506,16 @@ def rise_tolerance(height: float) -> float:
     return 0.03 if height < 0.3 else 0.1 * height
 
 
+def commandable_heights(rises) -> tuple[float, float]:
+    """The commanded heights a vertical leap table serves: those whose TARGETS.md tolerance
+    (rise_tolerance) reaches a calibrated rise - below the lowest and above the highest, the end
+    leap runs while it is within the tolerance of the command."""
+    bottom, top = min(rises), max(rises)
+    low = bottom - 0.03 if bottom - 0.03 < 0.3 else bottom / 1.1
+    high = top + 0.03 if top + 0.03 < 0.3 else max(top / 0.9, 0.3)
+    return low, high
+
+
 def run_strength(ctx: ControlContext) -> str:
     """The strength a calibration is kept under: "human" for the human torque limits (or a factor
     of them), "unlimited" when the leg servos have no torque limit."""
@@ -631,17 +641,15 @@ class Leap(Sequence):
             if not rises:
                 raise ParameterError(f"the vertical leap of {self.ctx.character.name} with {strength} is not "
                                      f"calibrated: run scripts/calibrate_leap.py (or use low_level=1)")
-            # a height outside the calibrated rises runs the end leap while that one is within the
-            # TARGETS.md tolerance of it (+-10 %, +-3 cm below 0.3 m), and is refused beyond
-            top, bottom = max(rises), min(rises)
-            if p["height"] < bottom - rise_tolerance(p["height"]):
+            low, high = commandable_heights(rises)
+            allowed = (f"allowed range is [{low:.2f}, {high:.2f}] m (calibrated leaps rise "
+                       f"{min(rises):.2f} ... {max(rises):.2f} m)")
+            if p["height"] < low:
                 raise ParameterError(f"parameter height={p['height']:g} m is below the calibrated leaps of "
-                                     f"{self.ctx.character.name} with {strength}; allowed range is "
-                                     f"[{bottom:.2f}, {top:.2f}] m")
-            if p["height"] > top + rise_tolerance(p["height"]):
+                                     f"{self.ctx.character.name} with {strength}; {allowed}")
+            if p["height"] > high:
                 raise ParameterError(f"parameter height={p['height']:g} m is infeasible for "
-                                     f"{self.ctx.character.name} with {strength}; allowed range is "
-                                     f"[{bottom:.2f}, {top:.2f}] m")
+                                     f"{self.ctx.character.name} with {strength}; {allowed}")
 
     def is_broad(self, p: dict) -> bool:
         """The broad jump's thrust (0.15/0.20/0.45 s extension, triggered by the leaning COM) for
