@@ -311,13 +311,14 @@ def main(argv=None) -> int:
                 table = table.with_row(speed, dict(zip(args.names, map(float, best["x"]))))   # the next speed starts from it
                 per_speed[str(speed)] = {"score": best["f"], "baseline_score": baseline,
                                          "evaluations": len(evaluate.history), "searched": list(args.names),
-                                         "method": args.method}
+                                         "method": args.method, "duration_s": args.duration,
+                                         "leans": list(args.leans)}
     if args.evaluate or not new_values:
         if not args.evaluate:
             print("no improvement on the current table; nothing written")
         return 0
     speeds = table.speeds
-    values = {n: [round(table.at(n, v), 4) for v in speeds] for n in COLUMNS}
+    values = {n: [table.at(n, v) for v in speeds] for n in COLUMNS}     # unrounded: the runs are chaotic in them
     elapsed = time.monotonic() - started
     write_atomically(path, {
         "behaviour": "running", "character": args.character, "speeds": speeds, "parameters": values,

@@ -18,7 +18,7 @@ from sim_core.control.running import SpeedTable
 from sim_core.control.running_leg import RunnerLeg
 from sim_core.control.running_path import PathFollower, path_deviation, turn_path
 from sim_core.errors import ParameterError
-from sim_core.gait import HUMAN_FIG12, compare_with_human
+from sim_core.gait import HUMAN_FIG12, STEADY_RUN, compare_with_human
 from sim_core.simulate import RunRequest, largest_difference, replay, run
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -26,7 +26,7 @@ SPEED_TOLERANCE = 0.05          # TARGETS.md: mean speed over the last 10 s with
 FIG12_TOLERANCE = 0.10          # TARGETS.md: each gait figure within 10 % of the human one
 PATH_DEVIATION_GOAL = 0.3       # m, mean lateral deviation from the path
 # measured shortfalls (docs/running.md, "Limitations"): not reached yet (a fall, or a speed or gait off target)
-SHORTFALLS = {"speed 4.5", "speed 5.0", "100 s at 4.5", "gait 4.83", "90-degree turn", "figure eight"}
+SHORTFALLS = {"speed 5.0", "gait 4.83", "90-degree turn", "figure eight"}
 
 
 def miss(case, message):
@@ -98,8 +98,8 @@ def test_replay_of_a_run_is_bit_identical():
 # --------------------------------------------------------------------------- behaviour
 @pytest.mark.parametrize("speed", [2.5, 3.0, 3.5, 4.0, 4.5, 5.0])
 def test_commanded_speed_is_held(speed):
-    """From a stand, 20 s: no fall, and the mean speed over the last 10 s within 5 %."""
-    traj = run_running(20.0, speed=speed)
+    """From a stand, 30 s (STEADY_RUN): no fall, and the mean speed over the last 10 s within 5 %."""
+    traj = run_running(STEADY_RUN, speed=speed)
     m = traj.meta["metrics"]
     measured = m["gait"]["mean_speed"]
     if not not_fallen(traj):
@@ -126,13 +126,13 @@ def test_start_from_a_stand_into_3_5_m_s_within_5_s():
 
 
 def test_gait_at_4_83_m_s_against_fig_12():
-    traj = run_running(20.0, speed=4.83)
-    if not not_fallen(traj):
-        miss("gait 4.83", f"fell at {traj.meta['metrics']['fall_time']:.1f} s")
-    comparison = compare_with_human(traj.meta["metrics"]["gait"], "man")
+    traj = run_running(STEADY_RUN, speed=4.83)
+    comparison = compare_with_human(traj.meta["metrics"]["gait"], "man")      # the 10 s before a fall, if any
     for key, row in comparison.items():
         print(f"{key}: simulated {row['simulated']:.3f}, human {row['human']} (Fig. 12), "
               f"error {100 * row['relative_error']:+.1f} %")
+    if not not_fallen(traj):
+        miss("gait 4.83", f"fell at {traj.meta['metrics']['fall_time']:.1f} s")
     worst = max(abs(row["relative_error"]) for row in comparison.values())
     if worst > FIG12_TOLERANCE:
         miss("gait 4.83", f"off the human figures by up to {100 * worst:.0f} % (goal 10 %)")
