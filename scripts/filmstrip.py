@@ -29,6 +29,9 @@ def main(argv=None) -> int:
     parser.add_argument("--size", type=int, default=260, help="height of one picture in pixels")
     parser.add_argument("--follow", action="store_true",
                         help="the camera follows the COM (dives: the body falls 10 m); default: fixed")
+    parser.add_argument("--view", choices=("side", "front"), default="side",
+                        help="side: looking across the path (default); front: from ahead of the character, "
+                             "looking back at it (a sideways jump)")
     parser.add_argument("--out", required=True)
     args = parser.parse_args(argv)
 
@@ -57,10 +60,14 @@ def main(argv=None) -> int:
     sun.data.energy = 3.0
     sun.rotation_euler = (math.radians(50), 0, math.radians(30))
     scene.collection.objects.link(sun)
-    travel = float(trajectory.arrays["com"][-1, 0] - trajectory.arrays["com"][0, 0])
+    travel = trajectory.arrays["com"][-1, :2] - trajectory.arrays["com"][0, :2]
     camera = bpy.data.objects.new("camera", bpy.data.cameras.new("camera"))
-    camera.location = (4.2, -travel / 2, 1.0)
-    camera.rotation_euler = (math.radians(90), 0, math.radians(90))
+    if args.view == "front":       # ahead of the character (sim +X = Blender -Y), looking back along +Y
+        camera.location = (float(travel[1]) / 2, -4.2, 1.0)
+        camera.rotation_euler = (math.radians(90), 0, 0)
+    else:
+        camera.location = (4.2, -float(travel[0]) / 2, 1.0)
+        camera.rotation_euler = (math.radians(90), 0, math.radians(90))
     camera.data.lens = 50
     scene.collection.objects.link(camera)
     scene.camera = camera
@@ -81,7 +88,8 @@ def main(argv=None) -> int:
             scene.frame_set(scene.frame_start + int(round(t * scene.render.fps)))
             if args.follow:          # sim (x, y, z) -> Blender (y, -x, z)
                 c = com[min(int(np.searchsorted(sim_time, t)), len(com) - 1)]
-                camera.location = (4.2, -float(c[0]), float(c[2]))
+                camera.location = ((float(c[1]), -4.2, float(c[2])) if args.view == "front"
+                                   else (4.2, -float(c[0]), float(c[2])))
             scene.render.filepath = str(Path(tmp) / f"f{k:02d}.png")
             bpy.ops.render.render(write_still=True)
             pictures.append(Image.open(scene.render.filepath).convert("RGB"))

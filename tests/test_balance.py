@@ -61,6 +61,24 @@ def test_com_offset_is_reached(name, offset):
     np.testing.assert_allclose(settled(*offset) - settled(0.0, 0.0), offset, atol=0.015)
 
 
+def test_a_sideways_lean_in_a_deep_crouch_holds_the_heading():
+    """In a deep crouch the hips' abduction, which leans the body sideways, acts partly about the
+    vertical (the hip is flexed before it abducts) and turns the pelvis: without the heading
+    servo the man turns and steps; with it (a sideways jump's crouch) he holds the lean facing ahead."""
+    def crouch(heading_kp):
+        traj = run(RunRequest("balance", "man", params=dict(pelvis_height=0.6, com_offset_y=-0.07, heading_kp=heading_kp,
+                                                            move_start=0.2, move_time=0.8, hold_time=1.0,
+                                                            return_to_stand=0), duration=2.5))
+        q = traj.arrays["body_quat"][:, traj.body_names.index("PELVIS")]
+        return traj, float(np.degrees(np.abs(2 * np.arctan2(q[:, 3], q[:, 0]))).max())
+    free, free_yaw = crouch(0.0)
+    held, held_yaw = crouch(3.0)
+    print(f"pelvis yaw at most {free_yaw:.1f} deg without the heading servo ({free.meta['outcome']}), "
+          f"{held_yaw:.1f} deg with it")
+    assert balanced(held) and held_yaw < 5.0
+    assert free_yaw > 15.0
+
+
 @pytest.mark.slow
 @pytest.mark.parametrize("name, force", [("man", 100.0), ("woman", 60.0)])
 @pytest.mark.parametrize("direction", [0.0, 180.0])

@@ -14,8 +14,8 @@ import pytest
 from sim_core.ballistics import GRAVITY
 from sim_core.character.spec import load_character
 from sim_core.control.target_jump import (AIR_TIME_TOLERANCE, BOX_AIR_TIME, BOX_DISTANCE, GROUND_AIR_TIME,
-                                          LANDING_TOLERANCE, path_estimate, plans_path, start_feet_centre,
-                                          takeoff_velocity, target_params)
+                                          LANDING_TOLERANCE, SIDEWAYS_AIR_TIME, path_estimate, plans_path,
+                                          start_feet_centre, takeoff_velocity, target_params)
 from sim_core.errors import ParameterError
 from sim_core.simulate import RunRequest, run
 
@@ -134,9 +134,10 @@ def test_a_jump_down_starts_on_a_box_and_is_measured_from_the_ground_below():
 @pytest.mark.parametrize("character", ["man", "woman"])
 @pytest.mark.parametrize("y", (1.0, -1.0, 1.3, -1.3, 1.6, -1.6))
 def test_sideways_jump_lands_on_the_target(character, y):
-    """Left (+) and right (-): a sideways lean, the thrust, and the hips placing the feet sideways
-    in flight."""
-    _planned_jump(character, f"{y} m sideways", target_y=y)
+    """Left (+) and right (-), asked in SIDEWAYS_AIR_TIME: a sideways lean holding the heading, the
+    thrust with the hips abducting at lift-off, and the hips placing the leading foot sideways in
+    flight."""
+    _planned_jump(character, f"{y} m sideways", target_y=y, air_time=SIDEWAYS_AIR_TIME)
 
 
 def test_a_restarted_search_starts_from_the_stored_plan_nearest_the_target():
@@ -166,3 +167,19 @@ def test_a_search_given_start_settings_starts_there():
     plan_jump("man", (1.27, 0.0, 0.0), GROUND_AIR_TIME, WINDUP_TIME, trials=1, start=stored["settings"],
               progress=lambda done, total, best: first.append(dict(best)) if done == 1 else None)
     assert first[0]["landing"] == pytest.approx(stored["measured"]["landing"], abs=1e-6)
+
+
+def test_start_settings_for_one_side_are_mirrored_to_the_other():
+    """scripts/plan_jumps.py --start: settings found for a jump to the right start the left one's
+    search mirrored (the sideways lean and the lift-off roll change sign, nothing else)."""
+    import importlib.util
+    from pathlib import Path
+    spec = importlib.util.spec_from_file_location("plan_jumps", Path(__file__).resolve().parents[1] / "scripts"
+                                                  / "plan_jumps.py")
+    plan_jumps = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(plan_jumps)
+    right = {"com_offset_y": -0.15, "liftoff_roll": 0.3, "crouch_height": 0.6, "foot_delta": -0.05}
+    assert plan_jumps.to_side(right, 1.3) == {"com_offset_y": 0.15, "liftoff_roll": -0.3, "crouch_height": 0.6,
+                                              "foot_delta": -0.05}
+    assert plan_jumps.to_side(right, -1.0) == right
+    assert plan_jumps.to_side({"crouch_height": 0.6}, 1.0) == {"crouch_height": 0.6}      # not a sideways start

@@ -111,6 +111,10 @@ class Balance(Behaviour):
         Parameter("head_pitch", "rad", 0.0, -0.8, 0.8, "head nod forward (+) or back (-)"),
         Parameter("com_kp", "rad/m", 4.0, 0.0, 20.0, "COM servo stiffness: ankle offset per metre of COM error (eq. 7.1)"),
         Parameter("com_kv", "rad s/m", 2.0, 0.0, 5.0, "COM servo damping: ankle offset per m/s of COM speed (eq. 7.1)"),
+        Parameter("heading_kp", "rad/rad", 0.0, 0.0, 10.0,
+                  "hip rotation offset per radian of the pelvis's heading away from the feet's (0 = the hips' "
+                  "rotation is not servoed): in a deep crouch the hips' abduction acts partly about the "
+                  "vertical and turns the pelvis - a sideways lean holds the heading"),
         Parameter("height_kp", "rad/m", 10.0, 0.0, 20.0,
                   "pelvis height servo: knee offset per metre of height error (corrects servo sag)"),
     )
@@ -137,7 +141,8 @@ class Balance(Behaviour):
         self.base = ch.standing_pose.copy()
         self.damping_ratio = s.default_kv / s.default_kp
         self.side_index = [{f"{n}_{a}": s.index[f"{n}_{side}_{a}"] for n, a in
-                            (("knee", "y"), ("ankle", "y"), ("ankle", "x"), ("hip", "y"), ("hip", "x"))}
+                            (("knee", "y"), ("ankle", "y"), ("ankle", "x"), ("hip", "y"), ("hip", "x"),
+                             ("hip", "z"))}
                            for side in "rl"]
         self._targets_key, self._targets = None, None
         self._lean = 0.0
@@ -357,4 +362,6 @@ class Balance(Behaviour):
             targets[hy] = angles[hy] + (pelvis_pitch - pelvis_pitch_goal)
             offset[hy] = hip_x
             offset[hx] = HIP_SHARE * delta_y
+            if self.params["heading_kp"]:
+                offset[j["hip_z"]] = self.params["heading_kp"] * math.remainder(yaw - math.atan2(f[3], f[0]), math.tau)
         servos.hold(targets, t)

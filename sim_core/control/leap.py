@@ -43,6 +43,8 @@ TOUCHDOWN_HEIGHT = 0.004        # m: a foot site this low = contact
 VERTICAL_TIMING = (0.10, 0.15, 0.22)     # s to full extension: hip, knee, ankle [W98 §4.1]
 BROAD_TIMING = (0.15, 0.20, 0.45)        # [W98 §4.2]
 ANKLE_GAIN_VERTICAL, ANKLE_GAIN_BROAD = 4.45, 3.6
+SIDEWAYS_HEADING_KP = 3.0       # rad/rad: a sideways lean's hips hold the pelvis's heading on the feet's (its
+                                # hip abduction in the crouch turned the pelvis 25 deg before lift-off)
 BROAD_TRIGGER = 0.8             # share of the crouch's COM offset that triggers a broad jump's thrust
 THRUST_DAMPING = 1.0            # share of the stiffened servos' damping kept in the thrust when the
                                 # mapping names none. Damping brakes fast extension: high leaps use less
@@ -99,11 +101,13 @@ class LeapThrust(Behaviour):
     the ankle in ``timing[2]`` (Wooten §4.1's order and times), then the ankles plantarflex to
     push off. Following balanced poses keeps the ground force near the COM, so the body leaves
     the ground without spinning; ``liftoff_hip`` flexes (-) or extends (+) the hips at the end
-    to send the force past the COM and set the somersault rate (§4.3)."""
+    to send the force past the COM and set the somersault rate (§4.3); ``liftoff_roll`` likewise
+    abducts them sideways (a sideways jump: + swings the feet to the left, pushing the body right),
+    which sets the roll rate."""
 
     def __init__(self, params, ctx: ControlContext, crouch_height: float, timing=VERTICAL_TIMING,
                  ankle_gain=ANKLE_GAIN_VERTICAL, liftoff_hip=0.0, arm_swing=2.5, stand_height=None,
-                 damping=THRUST_DAMPING, lean=0.0):
+                 damping=THRUST_DAMPING, lean=0.0, liftoff_roll=0.0):
         super().__init__(params, ctx)
         self.timing, self.ankle_gain = timing, ankle_gain
         self.liftoff_hip, self.arm_swing = liftoff_hip, arm_swing
@@ -112,6 +116,7 @@ class LeapThrust(Behaviour):
         self.stand_height = stand_height
         self.damping = damping
         self.lean = lean
+        self.liftoff_roll = liftoff_roll
 
     def start(self, t: float) -> None:
         s = self.ctx.servos
@@ -122,7 +127,8 @@ class LeapThrust(Behaviour):
         self.idx = {name: s.indices([f"{name}_r_y", f"{name}_l_y"]) for name in ("hip", "knee", "ankle")}
         t_hip, t_knee, t_ankle = self.timing
         for side, sign in (("r", 1.0), ("l", -1.0)):
-            s.move_to(s.indices([f"hip_{side}_x", f"hip_{side}_z", f"ankle_{side}_x"]), 0.0, t_hip, t)
+            s.move_to(s.indices([f"hip_{side}_z", f"ankle_{side}_x"]), 0.0, t_hip, t)
+            s.move_to(s.indices([f"hip_{side}_x"]), self.liftoff_roll, t_hip, t)
             s.move_to(s.indices([f"shoulder_{side}_z"]), sign * self.arm_swing, t_knee, t)
             s.move_to(s.indices([f"elbow_{side}_z"]), sign * 0.2, t_knee, t)
         spine = [n for n in s.names if n.startswith("spine") and n.endswith("_y")]
@@ -258,14 +264,17 @@ class Landing(Behaviour):
         return p["knee_flexion"] + (p["fast_knee_flexion"] - p["knee_flexion"]) * share
 
     def _sideways_hip(self, k: int, d, com, vel, c: float, sn: float) -> float:
-        """Hip abduction target that puts foot ``k`` beside the COM where its sideways speed will be
-        used up (the foot lead time's worth of it), each foot keeping its hip's width: eq. 6.1's
-        servo across the body. Positive hip_x swings a foot to the left."""
+        """Hip abduction target for foot ``k``: eq. 6.1's servo across the body. The leading foot
+        goes beside the COM where its sideways speed will be used up (the foot lead time's worth
+        of it, beyond its hip's width); the trailing foot stays beneath its hip, so that the COM
+        comes to rest between the feet (with both feet ahead it stopped beyond the trailing one
+        and fell back). Positive hip_x swings a foot to the left."""
         p = self.params
         lateral = lambda point: -sn * (point[0] - com[0]) + c * (point[1] - com[1])
         hip, foot, pelvis = d.xpos[self.hips[k]], d.xpos[self.feet[k]], d.xpos[self.pelvis]
         vy = -sn * vel[0] + c * vel[1]
-        wanted = lateral(hip) - lateral(pelvis) + vy * p["foot_lead_time"]
+        width = lateral(hip) - lateral(pelvis)
+        wanted = width + (vy * p["foot_lead_time"] if width * vy > 0 else 0.0)
         fy = lateral(foot)
         rate = 0.0 if self.last_fy[k] is None else (fy - self.last_fy[k]) / self.ctx.control_dt
         self.last_fy[k] = fy
@@ -556,6 +565,10 @@ class Leap(Sequence):
         Parameter("com_offset", "m", 0.0, -0.05, 0.25, "COM forward of the feet in the crouch (low_level only)"),
         Parameter("com_offset_y", "m", 0.0, -0.2, 0.2,
                   "COM to the left of the feet in the crouch: a sideways jump (low_level only)"),
+        Parameter("liftoff_roll", "rad", 0.0, -0.5, 0.5,
+                  "hip abduction at lift-off for a sideways jump (+ swings the feet to the left, pushing the "
+                  "body to the right): sets the roll rate, as the lift-off hip angle sets the somersault "
+                  "rate (low_level only)"),
         Parameter("arm_swing", "rad", 1.0, 0.0, 3.2, "forward arm swing during the thrust (low_level only)"),
         Parameter("crouch_arms", "rad", 0.0, -0.8, 0.0,
                   "arms swung back (-) in the crouch, to swing forward in the thrust; keeps the hands off "
@@ -602,7 +615,7 @@ class Leap(Sequence):
         rows land, so a measured row is preferred."""
         if p["low_level"]:
             settings = {k: p[k] for k in ("crouch_height", "crouch_pitch", "com_offset", "com_offset_y",
-                                          "arm_swing", "crouch_arms", "thrust_damping")}
+                                          "liftoff_roll", "arm_swing", "crouch_arms", "thrust_damping")}
             settings["damping"] = settings.pop("thrust_damping")
             settings["liftoff_hip"] = p["liftoff_hip_angle"]
             return settings
@@ -667,6 +680,7 @@ class Leap(Sequence):
                                                 com_offset_x=cfg["com_offset"],
                                                 com_offset_y=cfg.get("com_offset_y", 0.0),
                                                 arm_flexion=cfg.get("crouch_arms", 0.0), move_start=0.2,
+                                                heading_kp=SIDEWAYS_HEADING_KP if cfg.get("com_offset_y") else 0.0,
                                                 move_time=cfg["crouch_time"] if "crouch_time" in cfg
                                                 else p["crouch_time"],
                                                 hold_time=0.0, return_to_stand=0)), ctx)
@@ -685,7 +699,8 @@ class Leap(Sequence):
         def thrust(t):
             return LeapThrust({}, ctx, cfg["crouch_height"], BROAD_TIMING if broad else VERTICAL_TIMING,
                               ANKLE_GAIN_BROAD if broad else ANKLE_GAIN_VERTICAL, cfg["liftoff_hip"],
-                              cfg["arm_swing"], stand_height=standing_hip_height(ctx.character), damping=cfg["damping"])
+                              cfg["arm_swing"], stand_height=standing_hip_height(ctx.character), damping=cfg["damping"],
+                              liftoff_roll=cfg.get("liftoff_roll", 0.0))
 
         def land(t):
             # the calibrated leap's own correction of the landing's foot servo delta, plus the user's

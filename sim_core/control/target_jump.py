@@ -59,10 +59,15 @@ KNOBS = {
     "foot_delta": (-0.15, 0.15), "swing_arms": (0.0, 1.0), "arm_flexion": (-1.0, 1.0),
     "foot_lead_time": (0.15, 0.35), "crouch_arms": (-0.8, 0.0),
 }
-KNOB_DEFAULTS = {"crouch_arms": 0.0}    # a knob a prior or a stored plan does not name (arms hanging in the crouch)
-SIDEWAYS_KNOBS = {"com_offset_y": (-0.2, 0.2)}      # searched only for a target off to the side
+KNOB_DEFAULTS = {"crouch_arms": 0.0, "liftoff_roll": 0.0}    # a knob a prior or a stored plan does not name (arms hanging in the crouch)
+SIDEWAYS_KNOBS = {"com_offset_y": (-0.2, 0.2), "liftoff_roll": (-0.5, 0.5),   # searched only for a target off to
+                  "com_offset": (-0.05, 0.20)}     # the side; the lean ahead may go back a little (the woman's
+                                                   # sideways jumps drifted 0.14-0.2 m forward)
 SIDEWAYS_PRIOR = {"crouch_height": 0.6, "crouch_pitch": 0.0, "com_offset": 0.0, "liftoff_hip": 0.6,
                   "arm_swing": 1.0, "damping": 0.3, "vertical_thrust": 1.0, "foot_lead_time": 0.3}
+SIDEWAYS_LIFTOFF_ROLL = 0.3         # rad: where a sideways search starts, feet abducted away from the target at
+                                    # lift-off (with none, the man's 1.0 m jump left rolling at 4 kg m^2/s and
+                                    # rolled to 59 deg by touchdown; 0.4 rad: -3)
 BOX_PRIOR = {"crouch_height": 0.55, "crouch_pitch": 0.0, "com_offset": 0.12, "liftoff_hip": 0.8,
              "arm_swing": 1.0, "damping": 0.3, "vertical_thrust": 1.0, "crouch_arms": -0.6}
                                     # where a box jump's search starts: the deep vertical leap of the
@@ -76,6 +81,9 @@ LANDING_PRIOR = {"foot_delta": 0.0, "swing_arms": 0.0, "arm_flexion": 0.6, "foot
 
 GROUND_AIR_TIME = 0.45              # s: the air time the report asks of a jump to a target on the
                                     # ground, and the broad jump's planned jumps (a standing broad jump's)
+SIDEWAYS_AIR_TIME = 0.6             # s: the report's sideways jumps. The legs push sideways only along their
+                                    # lean (at most ~0.6 m/s sideways per m/s up, measured on the man); a
+                                    # 1.0 m sideways jump in 0.45 s needs as much sideways as up
 BOX_DISTANCE, BOX_AIR_TIME = 0.8, 0.6   # m, s: the report's jumps onto a box: its middle this far ahead
                                     # (its near edge 0.5 m ahead, clear of the knees in a deep crouch)
 REFINE_SHARE = 0.4                  # share of a search's trials kept for refining the best balanced trial
@@ -88,7 +96,8 @@ def search_prior(character: str, target) -> dict:
     defaults."""
     mapping = load_mapping(character)
     if abs(target[1]) > 1e-9:
-        prior = {**LANDING_PRIOR, **SIDEWAYS_PRIOR, "com_offset_y": math.copysign(0.17, target[1])}
+        prior = {**LANDING_PRIOR, **SIDEWAYS_PRIOR, "com_offset_y": math.copysign(0.17, target[1]),
+                 "liftoff_roll": math.copysign(SIDEWAYS_LIFTOFF_ROLL, -target[1])}
     elif target[2] > 0:
         prior = dict(BOX_PRIOR, **LANDING_PRIOR)
     else:
@@ -264,6 +273,7 @@ def leap_params(settings: dict, target, windup_time: float) -> dict:
     return {"low_level": 1, "distance": 0.0 if vertical else max(float(target[0]), 0.05),
             "crouch_height": settings["crouch_height"], "crouch_pitch": settings["crouch_pitch"],
             "com_offset": settings["com_offset"], "com_offset_y": settings.get("com_offset_y", 0.0),
+            "liftoff_roll": settings.get("liftoff_roll", 0.0),
             "liftoff_hip_angle": settings["liftoff_hip"],
             "arm_swing": settings["arm_swing"], "thrust_damping": settings["damping"],
             "crouch_arms": settings.get("crouch_arms", 0.0),
@@ -319,7 +329,9 @@ def plan_jump(character: str, target, air_time: float, windup_time: float, stren
     rng = np.random.default_rng([_stable_seed(target, air_time, windup_time), restart] if restart
                                 else _stable_seed(target, air_time, windup_time))
     world = scene_for(character, target)
-    duration = windup_time + air_time + 2.0
+    # judged over the run's whole default duration, as the final run is (a foot still creeping after
+    # the landing passed at 3.85 s and stepped past 5 cm by 5 s)
+    duration = max(windup_time + air_time + 2.0, JumpToTarget.default_duration)
     tried = []          # (cost, x, settings, measured) of every trial, in order
 
     def trial(x) -> tuple:
@@ -565,6 +577,7 @@ class JumpToTarget(Leap):
                                                           "damping", "liftoff_hip", "foot_delta")}
         settings["com_offset_y"] = self.plan["settings"].get("com_offset_y", 0.0)
         settings["crouch_arms"] = self.plan["settings"].get("crouch_arms", 0.0)
+        settings["liftoff_roll"] = self.plan["settings"].get("liftoff_roll", 0.0)
         settings["crouch_time"] = crouch_time(self.params["windup_time"])
         settings.update(landing_settings(self.plan["settings"]))
         return settings
