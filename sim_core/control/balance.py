@@ -363,5 +363,6 @@ class Balance(Behaviour):
             offset[hy] = hip_x
             offset[hx] = HIP_SHARE * delta_y
             if self.params["heading_kp"]:
-                offset[j["hip_z"]] = self.params["heading_kp"] * math.remainder(yaw - math.atan2(f[3], f[0]), math.tau)
+                heading_error = math.remainder(yaw - math.atan2(f[3], f[0]), math.tau)   # pelvis vs this foot
+                offset[j["hip_z"]] = self.params["heading_kp"] * heading_error
         servos.hold(targets, t)

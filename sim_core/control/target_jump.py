@@ -59,7 +59,8 @@ KNOBS = {
     "foot_delta": (-0.15, 0.15), "swing_arms": (0.0, 1.0), "arm_flexion": (-1.0, 1.0),
     "foot_lead_time": (0.15, 0.35), "crouch_arms": (-0.8, 0.0),
 }
-KNOB_DEFAULTS = {"crouch_arms": 0.0, "liftoff_roll": 0.0}    # a knob a prior or a stored plan does not name (arms hanging in the crouch)
+KNOB_DEFAULTS = {"crouch_arms": 0.0, "liftoff_roll": 0.0}    # a knob a prior or a stored plan does not name
+                                                              # (arms hanging in the crouch, no lift-off roll)
 SIDEWAYS_KNOBS = {"com_offset_y": (-0.2, 0.2), "liftoff_roll": (-0.5, 0.5),   # searched only for a target off to
                   "com_offset": (-0.05, 0.20)}     # the side; the lean ahead may go back a little (the woman's
                                                    # sideways jumps drifted 0.14-0.2 m forward)
