@@ -182,8 +182,8 @@ class Landing(Behaviour):
         Parameter("foot_kp", "rad/m", 8.0, 0.0, 20.0, "hip offset per metre of foot placement error (eq. 6.1)"),
         Parameter("foot_kv", "rad s/m", 0.5, 0.0, 5.0, "hip offset per m/s of foot speed relative to the COM (eq. 6.1)"),
         Parameter("place_sideways", "bool", 0.0, 0.0, 1.0,
-                  "1 = the hips also place the feet sideways by the COM's sideways speed (a sideways "
-                  "jump); 0 = legs straight down sideways"),
+                  "1 = the hips also place the leading foot sideways by the COM's sideways speed, the "
+                  "trailing one beneath its hip (a sideways jump); 0 = legs straight down sideways"),
         Parameter("swing_arms", "bool", 0.0, 0.0, 1.0,
                   "1 = swing the arms to arm_flexion in flight; 0 = hold them as the take-off left them"),
         Parameter("arm_flexion", "rad", 0.6, -1.0, 3.0,
@@ -581,7 +581,7 @@ class Leap(Sequence):
         Parameter("landing_knee_flexion", "rad", 0.9, 0.0, 1.5,
                   "landing: knee bend held in flight (less: the feet reach further forward)"),
         Parameter("landing_place_sideways", "bool", 0.0, 0.0, 1.0,
-                  "landing: 1 = place the feet sideways by the COM's sideways speed (a sideways jump)"),
+                  "landing: 1 = place the leading foot sideways by the COM's sideways speed (a sideways jump)"),
         Parameter("landing_swing_arms", "bool", 0.0, 0.0, 1.0,
                   "landing: 1 = swing the arms to landing_arm_flexion in flight (0 = hold them)"),
         Parameter("landing_arm_flexion", "rad", 0.6, -1.0, 3.0,
