@@ -151,8 +151,10 @@ def results_markdown(res: dict) -> str:
         err = "–" if value is None else f"{(value - h) / h * 100:+.1f} %"
         lines.append(f"| {label} | {fmt(value, digits)} | {h} | {err} | {sim97['speed' if key == 'mean_speed' else key]} |")
     r = res["phase 4.83"]
-    outcome = r["outcome"] if r["outcome"] == "success" else f"fell at {r['fall_time']:.1f} s; the gait is the 10 s before it"
-    lines += ["", f"(outcome of that {r['duration']:g} s run: {outcome})", "", "| check | outcome | measured |", "| --- | --- | --- |"]
+    outcome = (r["outcome"] if r["outcome"] == "success"
+               else f"fell at {r['fall_time']:.1f} s; the gait is the 10 s before it")
+    lines += ["", f"(outcome of that {r['duration']:g} s run: {outcome})", "",
+              "| check | outcome | measured |", "| --- | --- | --- |"]
     s = res["start 3.5"]
     lines.append(f"| start from a stand into 3.5 m/s | {s['outcome']} | 90 % of 3.5 m/s reached at "
                  f"{fmt(s['time_to_90pct_speed'])} s (goal: within 5 s) |")
