@@ -169,20 +169,19 @@ class Dive(Sequence):
                 f"layout (twist lead {lead:.2f} s, "
                 f"the flight {flight:.2f} s), which leaves no time in the {position_name(p['position'])}; "
                 f"use position=0 (layout)")
-        capacity = self.rotation_capacity(limits)
+        capacity = self.rotation_capacity(limits, flight)
         if p["somersaults"] > capacity + ROTATION_TOLERANCE:
             raise ParameterError(
                 f"{_article(dive_name(p))} cannot be completed from {p['platform_height']:g} m by the "
                 f"{self.ctx.character.name}: the flight allows at most {capacity:.2f} somersaults in this position "
                 f"with the largest calibrated take-off angular momentum (allowed: that + {ROTATION_TOLERANCE:g})")
 
-    def rotation_capacity(self, limits: dict) -> float:
-        """Somersaults the flight from this platform allows: the largest take-off angular
-        momentum the calibration reached for this group without touching the platform, spent in
-        the position for the flight time less the take-off and opening, and in the line for the
-        rest."""
+    def rotation_capacity(self, limits: dict, flight: float) -> float:
+        """Somersaults the flight (``flight`` s from this platform) allows: the largest take-off
+        angular momentum the calibration reached for this group without touching the platform,
+        spent in the position for the flight time less the take-off and opening, and in the line
+        for the rest."""
         momentum = limits["angular_momentum"].get(group_name(self.params), 0.0)
-        flight = self.flight_time(limits["rise"])
         straight = min(flight, OPEN_TIME + POSITION_MOVE)
         angle = momentum * ((flight - straight) / self._position_inertia() + straight / self._line_inertia())
         return angle / (2 * math.pi)

@@ -127,8 +127,8 @@ class LeapThrust(Behaviour):
         self.idx = {name: s.indices([f"{name}_r_y", f"{name}_l_y"]) for name in ("hip", "knee", "ankle")}
         t_hip, t_knee, t_ankle = self.timing
         for side, sign in (("r", 1.0), ("l", -1.0)):
-            s.move_to(s.indices([f"hip_{side}_z", f"ankle_{side}_x"]), 0.0, t_hip, t)
-            s.move_to(s.indices([f"hip_{side}_x"]), self.liftoff_roll, t_hip, t)
+            s.move_to(s.indices([f"hip_{side}_x", f"hip_{side}_z", f"ankle_{side}_x"]),
+                      np.array([self.liftoff_roll, 0.0, 0.0]), t_hip, t)
             s.move_to(s.indices([f"shoulder_{side}_z"]), sign * self.arm_swing, t_knee, t)
             s.move_to(s.indices([f"elbow_{side}_z"]), sign * 0.2, t_knee, t)
         spine = [n for n in s.names if n.startswith("spine") and n.endswith("_y")]
