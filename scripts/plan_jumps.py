@@ -150,6 +150,16 @@ ground rolling (4 kg m²/s; the body rolled to 59° in flight): the hips abduct 
 foot stays beneath its hip while the leading one reaches out, so that the COM comes to rest between
 the feet (with both feet shifted it stopped beyond the trailing one and fell back).
 
+The woman's sideways jumps drift forward: her best 1.0 m jump to the left left the ground at
+0.28 m/s forward (the man's at 0.001 m/s) and landed 0.21 m ahead of the target. Varying her crouch
+did not remove it (the COM offset ahead -0.05 / 0 m, the torso pitch 0-0.3 rad, the lift-off hip
+0-0.7 rad, the arm swing 0-2.5 rad: 0.10-0.66 m/s forward at lift-off), so a sideways search also
+varies `thrust_lean`, the COM's place along the thrust's path of balanced poses: from her best,
+-0.15 m takes the forward speed at lift-off to 0.11 m/s, but the push behind the COM also spins the
+body backward (-2.4 -> -14 kg m²/s) and those landings fall. A 300-trial search of each side with it
+(started at -0.06 m) found balanced landings 2-8 cm from the target's line but short, (0.02, 0.79) m
+and (0.08, -0.87) m, and kept the earlier bests.
+
 ![commanded vs achieved landing point](jump_to_target.png)
 
 ![the man's 1.3 m jump to a target, 1.0-2.1 s: crouch, thrust, flight, landing, standing up](jump_to_target_filmstrip.png)

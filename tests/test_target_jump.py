@@ -183,3 +183,28 @@ def test_start_settings_for_one_side_are_mirrored_to_the_other():
                                               "foot_delta": -0.05}
     assert plan_jumps.to_side(right, -1.0) == right
     assert plan_jumps.to_side({"crouch_height": 0.6}, 1.0) == {"crouch_height": 0.6}      # not a sideways start
+
+
+def test_a_sideways_search_varies_the_thrust_lean_and_a_forward_one_does_not():
+    from sim_core.control.target_jump import knobs_for, search_prior
+    assert "thrust_lean" in knobs_for((0.0, 1.0, 0.0, 0.0)) and "thrust_lean" not in knobs_for((1.0, 0.0, 0.0, 0.0))
+    assert search_prior("woman", (0.0, 1.0, 0.0, 0.0))["thrust_lean"] == 0.0     # starts as before: no lean
+
+
+def test_a_thrust_leaning_back_slows_the_forward_take_off_of_the_womans_sideways_jump():
+    """Her best 1.0 m jump to the left leaves moving forward (it lands 0.2 m ahead of the target);
+    the same settings with the thrust along poses 0.15 m behind the feet leave slower forward
+    (measured 0.28 -> 0.11 m/s). Read off the simulation at lift-off."""
+    from sim_core.control.target_jump import leap_params, scene_for
+    target = (0.0, 1.0, 0.0, 0.0)
+    plan = _stored("woman", dict(target_x=0.0, target_y=1.0, target_z=0.0, obstacle_height=0.0,
+                                 air_time=SIDEWAYS_AIR_TIME, windup_time=WINDUP_TIME))
+    forward = []
+    for lean in (0.0, -0.15):
+        settings = dict(plan["settings"], thrust_lean=lean)
+        traj = run(RunRequest("leap", "woman", params=leap_params(settings, target, WINDUP_TIME), duration=2.0,
+                              world=scene_for("woman", target)))
+        liftoff = int(np.searchsorted(traj.arrays["time"], traj.meta["metrics"]["liftoff_time"]))
+        forward.append(float(traj.arrays["com_vel"][liftoff, 0]))
+    print(f"forward speed at lift-off, thrust_lean 0 / -0.15 m: {forward[0]:.2f} / {forward[1]:.2f} m/s")
+    assert forward[0] > 0.2 and forward[1] < forward[0] - 0.1

@@ -569,6 +569,9 @@ class Leap(Sequence):
                   "hip abduction at lift-off for a sideways jump (+ swings the feet to the left, pushing the "
                   "body to the right): sets the roll rate, as the lift-off hip angle sets the somersault "
                   "rate (low_level only)"),
+        Parameter("thrust_lean", "m", 0.0, -0.2, 0.1,
+                  "COM forward of the feet along the thrust's path of balanced poses: - pushes the body back "
+                  "(a sideways jump of the woman otherwise leaves moving forward; low_level only)"),
         Parameter("arm_swing", "rad", 1.0, 0.0, 3.2, "forward arm swing during the thrust (low_level only)"),
         Parameter("crouch_arms", "rad", 0.0, -0.8, 0.0,
                   "arms swung back (-) in the crouch, to swing forward in the thrust; keeps the hands off "
@@ -615,7 +618,8 @@ class Leap(Sequence):
         rows land, so a measured row is preferred."""
         if p["low_level"]:
             settings = {k: p[k] for k in ("crouch_height", "crouch_pitch", "com_offset", "com_offset_y",
-                                          "liftoff_roll", "arm_swing", "crouch_arms", "thrust_damping")}
+                                          "liftoff_roll", "arm_swing", "crouch_arms", "thrust_damping",
+                                          "thrust_lean")}
             settings["damping"] = settings.pop("thrust_damping")
             settings["liftoff_hip"] = p["liftoff_hip_angle"]
             return settings
@@ -700,7 +704,7 @@ class Leap(Sequence):
             return LeapThrust({}, ctx, cfg["crouch_height"], BROAD_TIMING if broad else VERTICAL_TIMING,
                               ANKLE_GAIN_BROAD if broad else ANKLE_GAIN_VERTICAL, cfg["liftoff_hip"],
                               cfg["arm_swing"], stand_height=standing_hip_height(ctx.character), damping=cfg["damping"],
-                              liftoff_roll=cfg.get("liftoff_roll", 0.0))
+                              liftoff_roll=cfg.get("liftoff_roll", 0.0), lean=cfg.get("thrust_lean", 0.0))
 
         def land(t):
             # the calibrated leap's own correction of the landing's foot servo delta, plus the user's

@@ -59,11 +59,15 @@ KNOBS = {
     "foot_delta": (-0.15, 0.15), "swing_arms": (0.0, 1.0), "arm_flexion": (-1.0, 1.0),
     "foot_lead_time": (0.15, 0.35), "crouch_arms": (-0.8, 0.0),
 }
-KNOB_DEFAULTS = {"crouch_arms": 0.0, "liftoff_roll": 0.0}    # a knob a prior or a stored plan does not name
-                                                              # (arms hanging in the crouch, no lift-off roll)
+KNOB_DEFAULTS = {"crouch_arms": 0.0, "liftoff_roll": 0.0,    # a knob a prior or a stored plan does not name
+                 "thrust_lean": 0.0}                          # (arms hanging in the crouch, no lift-off roll,
+                                                              # the thrust along poses balanced over the feet)
 SIDEWAYS_KNOBS = {"com_offset_y": (-0.2, 0.2), "liftoff_roll": (-0.5, 0.5),   # searched only for a target off to
-                  "com_offset": (-0.05, 0.20)}     # the side; the lean ahead may go back a little (the woman's
+                  "com_offset": (-0.05, 0.20),     # the side; the lean ahead may go back a little (the woman's
                                                    # sideways jumps drifted 0.14-0.2 m forward)
+                  "thrust_lean": (-0.15, 0.05)}    # and the thrust may push back: her best 1.0 m jump left at
+                                                   # 0.28 m/s forward whatever the crouch's offset; a thrust
+                                                   # along poses with the COM 0.15 m behind the feet, 0.11 m/s
 SIDEWAYS_PRIOR = {"crouch_height": 0.6, "crouch_pitch": 0.0, "com_offset": 0.0, "liftoff_hip": 0.6,
                   "arm_swing": 1.0, "damping": 0.3, "vertical_thrust": 1.0, "foot_lead_time": 0.3}
 SIDEWAYS_LIFTOFF_ROLL = 0.3         # rad: where a sideways search starts, feet abducted away from the target at
@@ -274,7 +278,7 @@ def leap_params(settings: dict, target, windup_time: float) -> dict:
     return {"low_level": 1, "distance": 0.0 if vertical else max(float(target[0]), 0.05),
             "crouch_height": settings["crouch_height"], "crouch_pitch": settings["crouch_pitch"],
             "com_offset": settings["com_offset"], "com_offset_y": settings.get("com_offset_y", 0.0),
-            "liftoff_roll": settings.get("liftoff_roll", 0.0),
+            "liftoff_roll": settings.get("liftoff_roll", 0.0), "thrust_lean": settings.get("thrust_lean", 0.0),
             "liftoff_hip_angle": settings["liftoff_hip"],
             "arm_swing": settings["arm_swing"], "thrust_damping": settings["damping"],
             "crouch_arms": settings.get("crouch_arms", 0.0),
@@ -579,6 +583,7 @@ class JumpToTarget(Leap):
         settings["com_offset_y"] = self.plan["settings"].get("com_offset_y", 0.0)
         settings["crouch_arms"] = self.plan["settings"].get("crouch_arms", 0.0)
         settings["liftoff_roll"] = self.plan["settings"].get("liftoff_roll", 0.0)
+        settings["thrust_lean"] = self.plan["settings"].get("thrust_lean", 0.0)
         settings["crouch_time"] = crouch_time(self.params["windup_time"])
         settings.update(landing_settings(self.plan["settings"]))
         return settings
