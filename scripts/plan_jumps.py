@@ -156,9 +156,10 @@ did not remove it (the COM offset ahead -0.05 / 0 m, the torso pitch 0-0.3 rad, 
 0-0.7 rad, the arm swing 0-2.5 rad: 0.10-0.66 m/s forward at lift-off), so a sideways search also
 varies `thrust_lean`, the COM's place along the thrust's path of balanced poses: from her best,
 -0.15 m takes the forward speed at lift-off to 0.11 m/s, but the push behind the COM also spins the
-body backward (-2.4 -> -14 kg m²/s) and those landings fall. A 300-trial search of each side with it
-(started at -0.06 m) found balanced landings 2-8 cm from the target's line but short, (0.02, 0.79) m
-and (0.08, -0.87) m, and kept the earlier bests.
+body backward (-2.4 -> -14 kg m²/s) and those landings fall. Searches of each side with it, 300
+trials started at -0.06 m and 600 at -0.03 m, found balanced landings 2-8 cm from the target's line
+but short - (0.02, 0.79) and (0.07, 0.61) m left, (0.08, -0.87) and (0.04, -0.82) m right - and kept
+the earlier bests.
 
 ![commanded vs achieved landing point](jump_to_target.png)
 
