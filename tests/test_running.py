@@ -198,17 +198,37 @@ def test_a_tuned_row_replaces_only_its_speed():
     assert table.with_row(4.0, {"idle_knee": 1.5}).values["idle_knee"] == [1.0, 1.5]
 
 
-def test_evaluation_function_adds_the_fig_12_gait_at_the_fast_end():
-    """scripts/tune_running.py's evaluation (docs/running.md): the gait term against Fig. 12
-    counts from 4.5 m/s up, not at the slower speeds."""
+def _tune_running():
     spec = importlib.util.spec_from_file_location("tune_running", ROOT / "scripts" / "tune_running.py")
     tune = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(tune)
-    run_ = {"t_up": 20.0, "mean_speed": 4.5, "head_acc_g": 0.0, "attitude_variation": 0.0, "gait_error": 0.4}
-    assert tune.evaluation([dict(run_, speed=4.5)], 20.0) == pytest.approx(tune.W_GAIT * 0.4)
-    assert tune.evaluation([dict(run_, speed=3.5, mean_speed=3.5)], 20.0) == pytest.approx(0.0)
+    return tune
+
+
+def test_evaluation_function_adds_the_fig_12_gait_at_the_fast_end():
+    """scripts/tune_running.py's evaluation (docs/running.md): the gait term against Fig. 12
+    counts from 4.5 m/s up, not at the slower speeds; a speed error beyond the band costs more."""
+    tune = _tune_running()
+    run_ = {"t_up": 20.0, "duration": 20.0, "mean_speed": 4.5, "head_acc_g": 0.0, "attitude_variation": 0.0,
+            "gait_error": 0.4}
+    assert tune.evaluation([dict(run_, speed=4.5)]) == pytest.approx(tune.W_GAIT * 0.4)
+    assert tune.evaluation([dict(run_, speed=3.5, mean_speed=3.5)]) == pytest.approx(0.0)
     fell = dict(run_, speed=4.5, t_up=10.0, mean_speed=4.05)
-    assert tune.evaluation([fell], 20.0) == pytest.approx(tune.W_FALL * 0.5 + tune.W_SPEED * 0.1 + tune.W_GAIT * 0.4)
+    assert tune.evaluation([fell]) == pytest.approx(
+        tune.W_FALL * 0.5 + tune.W_SPEED * 0.1 + tune.W_BAND * (0.1 - tune.BAND) + tune.W_GAIT * 0.4)
+
+
+def test_evaluation_function_scores_the_courses_on_falls_and_path_deviation():
+    """--courses: a turn or a figure eight adds its lost running time and its mean lateral
+    deviation (at most 1 m), averaged with the straight runs."""
+    tune = _tune_running()
+    straight = {"speed": 3.5, "t_up": 30.0, "duration": 30.0, "mean_speed": 3.5, "head_acc_g": 0.0,
+                "attitude_variation": 0.0, "gait_error": 0.4}
+    turn = {"speed": 3.5, "t_up": 12.0, "duration": 24.0, "course": True, "deviation": 0.2}
+    eight = {"speed": 3.5, "t_up": 40.0, "duration": 40.0, "course": True, "deviation": 3.0}
+    assert tune.evaluation([straight, turn, eight]) == pytest.approx(
+        (tune.W_FALL * 0.5 + tune.W_PATH * 0.2 + tune.W_PATH * 1.0) / 3)
+    assert [c["course"] for c, _ in tune.STEERING_COURSES] == [1, 2]      # the steering test's courses
 
 
 def test_human_figures_are_the_papers():
