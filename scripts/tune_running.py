@@ -68,6 +68,7 @@ from sim_core.control.running import (SCHEDULED_CONSTANTS, TABLE_NAMES, TUNED_DI
 COLUMNS = TABLE_NAMES + tuple(SCHEDULED_CONSTANTS)     # what a row of the table can hold
 
 W_FALL, W_SPEED, W_HEAD, W_ATT, W_GAIT = 10.0, 4.0, 0.05, 2.0, 2.0
+W_PATH = 4.0                    # per metre of mean lateral deviation from a course's path (at most 1 m)
 W_BAND, BAND = 40.0, 0.04       # the speed error beyond 4 % (inside the 5 % target) costs ten times more
 SPEED_WINDOW = 10.0             # s: the steady-state speed is the mean over the run's last 10 s
 GAIT_FROM = 4.5                 # m/s: the gait term applies at and above this speed
@@ -224,7 +225,6 @@ def write_atomically(path: Path, data: dict) -> None:
 # on a 90-degree turn of radius 10 m (24 s) and a figure eight of loops of radius 10 m (40 s),
 # both at 3.5 m/s from a stand. The result is printed; the constants are copied into running.py
 # by hand (they are code, with their search noted beside them).
-W_PATH = 4.0
 STEERING_CONSTANTS = {            # name: (low, high)
     "TURN_ACCEL": (0.1, 3.0), "HEADING_GAIN": (0.5, 4.0), "TURN_PLACE_GAIN": (0.0, 2.0),
     "LATERAL_GAIN": (0.0, 0.4), "YAW_ERROR_LIMIT": (0.05, 0.4), "TURN_RATE_PER_SPEED": (0.1, 0.6),

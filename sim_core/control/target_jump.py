@@ -60,8 +60,10 @@ KNOBS = {
     "foot_lead_time": (0.15, 0.35), "crouch_arms": (-0.8, 0.0),
 }
 KNOB_DEFAULTS = {"crouch_arms": 0.0, "liftoff_roll": 0.0,    # a knob a prior or a stored plan does not name
-                 "thrust_lean": 0.0}                          # (arms hanging in the crouch, no lift-off roll,
-                                                              # the thrust along poses balanced over the feet)
+                 "thrust_lean": 0.0, "com_offset_y": 0.0}     # (arms hanging in the crouch, no lift-off roll,
+                                                              # the thrust along poses balanced over the feet,
+                                                              # no sideways lean); the leap's parameters by
+                                                              # the same names
 SIDEWAYS_KNOBS = {"com_offset_y": (-0.2, 0.2), "liftoff_roll": (-0.5, 0.5),   # searched only for a target off to
                   "com_offset": (-0.05, 0.20),     # the side; the lean ahead may go back a little (the woman's
                                                    # sideways jumps drifted 0.14-0.2 m forward)
@@ -277,13 +279,16 @@ def leap_params(settings: dict, target, windup_time: float) -> dict:
     vertical = settings["vertical_thrust"] > 0.5
     return {"low_level": 1, "distance": 0.0 if vertical else max(float(target[0]), 0.05),
             "crouch_height": settings["crouch_height"], "crouch_pitch": settings["crouch_pitch"],
-            "com_offset": settings["com_offset"], "com_offset_y": settings.get("com_offset_y", 0.0),
-            "liftoff_roll": settings.get("liftoff_roll", 0.0), "thrust_lean": settings.get("thrust_lean", 0.0),
+            "com_offset": settings["com_offset"], **optional_knobs(settings),
             "liftoff_hip_angle": settings["liftoff_hip"],
             "arm_swing": settings["arm_swing"], "thrust_damping": settings["damping"],
-            "crouch_arms": settings.get("crouch_arms", 0.0),
             "foot_delta": settings["foot_delta"], "crouch_time": crouch_time(windup_time),
             **{"landing_" + k: v for k, v in landing_settings(settings).items()}}
+
+
+def optional_knobs(settings: dict) -> dict:
+    """The knobs that a plan may not name (KNOB_DEFAULTS), with their defaults where it does not."""
+    return {name: settings.get(name, default) for name, default in KNOB_DEFAULTS.items()}
 
 
 def landing_settings(settings: dict) -> dict:
@@ -580,10 +585,7 @@ class JumpToTarget(Leap):
     def settings(self, p: dict) -> dict:
         settings = {k: self.plan["settings"][k] for k in ("crouch_height", "crouch_pitch", "com_offset", "arm_swing",
                                                           "damping", "liftoff_hip", "foot_delta")}
-        settings["com_offset_y"] = self.plan["settings"].get("com_offset_y", 0.0)
-        settings["crouch_arms"] = self.plan["settings"].get("crouch_arms", 0.0)
-        settings["liftoff_roll"] = self.plan["settings"].get("liftoff_roll", 0.0)
-        settings["thrust_lean"] = self.plan["settings"].get("thrust_lean", 0.0)
+        settings.update(optional_knobs(self.plan["settings"]))
         settings["crouch_time"] = crouch_time(self.params["windup_time"])
         settings.update(landing_settings(self.plan["settings"]))
         return settings
