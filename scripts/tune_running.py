@@ -204,6 +204,14 @@ def cma_search(evaluate, x0, deadline, max_evaluations, seed):
     return best
 
 
+def with_found_rows(table: SpeedTable, names: list[str], found: dict[float, list[float]]) -> SpeedTable:
+    """``table`` - the stored one, read again when a search ends, since a search of other speeds may
+    have written it meanwhile - with the rows this search found (speed -> values of ``names``)."""
+    for speed, x in found.items():
+        table = table.with_row(speed, dict(zip(names, map(float, x))))
+    return table
+
+
 def write_atomically(path: Path, data: dict) -> None:
     path.parent.mkdir(parents=True, exist_ok=True)
     fd, tmp = tempfile.mkstemp(dir=path.parent, suffix=".tmp")
@@ -364,6 +372,14 @@ def main(argv=None) -> int:
         if not args.evaluate:
             print("no improvement on the current table; nothing written")
         return 0
+    # the rows found go into the table as it is now: another search (of other speeds) may have written it
+    # since this one started
+    table = with_found_rows(SpeedTable.load(args.character), args.names, new_values)
+    try:
+        per_speed = {**json.loads(path.read_text()).get("evaluation", {}).get("per_speed", {}),
+                     **{str(v): per_speed[str(v)] for v in new_values}}
+    except (FileNotFoundError, json.JSONDecodeError):
+        pass
     speeds = table.speeds
     values = {n: [table.at(n, v) for v in speeds] for n in COLUMNS}     # unrounded: the runs are chaotic in them
     elapsed = time.monotonic() - started

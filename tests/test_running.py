@@ -26,7 +26,7 @@ SPEED_TOLERANCE = 0.05          # TARGETS.md: mean speed over the last 10 s with
 FIG12_TOLERANCE = 0.10          # TARGETS.md: each gait figure within 10 % of the human one
 PATH_DEVIATION_GOAL = 0.3       # m, mean lateral deviation from the path
 # measured shortfalls (docs/running.md, "Limitations"): not reached yet (a fall, or a speed or gait off target)
-SHORTFALLS = {"speed 5.0", "gait 4.83", "90-degree turn", "figure eight"}
+SHORTFALLS = {"speed 5.0", "gait 4.83", "figure eight"}
 
 
 def miss(case, message):
@@ -188,6 +188,24 @@ def test_tight_courses_are_followed_at_3_m_s(label, params, duration):
         assert abs(heading - params["turn_angle"]) < 0.3
 
 
+def test_a_stiffer_thrust_lengthens_the_flight():
+    """The table's thrust_gain (the knee's and ankle's position gain in the toe state): the stored
+    3.5 m/s row's (about 2x the default) against the same row with the default gain - longer flights,
+    a smaller share of the step on the ground (measured: 0.096 vs 0.068 s, 68 vs 79 %)."""
+    stored = SpeedTable.load("man")
+    assert stored.at("thrust_gain", 3.5) > 1.5
+    gaits = {}
+    try:
+        for label, table in (("stored", stored), ("default gain", stored.with_row(3.5, {"thrust_gain": 1.0}))):
+            SpeedTable.override = table
+            gaits[label] = run_running(20.0, speed=3.5).meta["metrics"]["gait"]
+    finally:
+        SpeedTable.override = None
+    print({k: (round(g["flight_time"], 3), round(g["stance_fraction"], 1)) for k, g in gaits.items()})
+    assert gaits["stored"]["flight_time"] > gaits["default gain"]["flight_time"] + 0.015
+    assert gaits["stored"]["stance_fraction"] < gaits["default gain"]["stance_fraction"] - 5.0
+
+
 def test_a_tuned_row_replaces_only_its_speed():
     """The tuner scores a candidate row inside the stored table (what it scores is what it writes)."""
     table = SpeedTable([2.5, 4.0], {"thrust_time": [0.2, 0.4], "idle_knee": [1.0, 2.0]})
@@ -229,6 +247,14 @@ def test_evaluation_function_scores_the_courses_on_falls_and_path_deviation():
     assert tune.evaluation([straight, turn, eight]) == pytest.approx(
         (tune.W_FALL * 0.5 + tune.W_PATH * 0.2 + tune.W_PATH * 1.0) / 3)
     assert [c["course"] for c, _ in tune.STEERING_COURSES] == [1, 2]      # the steering test's courses
+
+
+def test_a_search_writes_its_rows_into_the_table_as_stored_when_it_ends():
+    """Two searches of different speeds may run at once: the one that ends last keeps the other's row."""
+    tune = _tune_running()
+    stored_now = SpeedTable([3.5, 5.0], {"thrust_gain": [1.0, 1.7], "idle_knee": [1.5, 1.6]})   # 5.0 written meanwhile
+    merged = tune.with_found_rows(stored_now, ["thrust_gain", "idle_knee"], {3.5: [2.5, 1.4]})
+    assert merged.values == {"thrust_gain": [2.5, 1.7], "idle_knee": [1.4, 1.6]}
 
 
 def test_human_figures_are_the_papers():

@@ -62,6 +62,7 @@ SCHEDULED_CONSTANTS = {
     "yaw_first": (0.0, 1.0),           # share of the roll torque given up to keep the hip's rotation axis in range
     "yaw_gain": (0.5, 1.5),            # scale of the stance hip's yaw servo gains
     "twist_damping": (0.0, 30.0),      # N m s/rad: the stance hip's rotation damped about its own rate (the foot's pivot)
+    "thrust_gain": (1.0, 4.0),         # the knee's and ankle's position gain in the thrust, as a multiple of the default
 }
 
 # states of the active leg (Hodgins 1995 Fig. 3)
@@ -82,7 +83,7 @@ FALLBACK_TABLE = {"ground_speed_matching": 0.010, "stance_pitch": 0.100, "thrust
                   "ankle_extension": 0.658, "knee_extension": 0.307, "speed_gain": 0.073,
                   "touchdown_leg": 0.902, "idle_knee": 1.474,
                   "thrust_damping": 1.0, "unloading_after": 0.556, "place_back": 0.187, "swing_fold": 0.0,
-                  "yaw_first": 0.0, "yaw_gain": 1.0, "twist_damping": 0.0}
+                  "yaw_first": 0.0, "yaw_gain": 1.0, "twist_damping": 0.0, "thrust_gain": 1.0}
 
 
 class SpeedTable:
@@ -345,7 +346,8 @@ class Running(Behaviour):
         elif state == TOE:
             self.t_thrust = t
             damping = self.p["thrust_damping"]       # the servos' damping would eat the push's power
-            self._set_gains(a, {"knee": (1.0, damping), "ay": (1.0, damping)})
+            gain = self.p["thrust_gain"]            # a stiffer push: more vertical impulse, a longer flight
+            self._set_gains(a, {"knee": (gain, damping), "ay": (gain, damping)})
 
     def _liftoff(self, t: float, q: list, targets: list) -> None:
         """The active leg has left the ground: it becomes the idle leg, the other the active one."""
