@@ -161,6 +161,24 @@ trials started at -0.06 m and 600 at -0.03 m, found balanced landings 2-8 cm fro
 but short - (0.02, 0.79) and (0.07, 0.61) m left, (0.08, -0.87) and (0.04, -0.82) m right - and kept
 the earlier bests.
 
+The longer sideways jumps fail in the landing, not in reaching the target: the woman's best 1.6 m jump to
+the right lands its feet on the target, (0.05, -1.59) m after 0.60 s, and falls. It leaves the ground
+rolling toward the target (-6.6 kg m²/s about the forward axis) with the pelvis already turned 37°;
+with the hips flexing in flight the roll becomes a turn, and at touchdown the body faces the way it
+travels (pelvis yaw -96°), the trunk pitched 32° forward and the hips flexed 1.0 rad, the feet 0.4 m
+ahead of the COM, which is 0.74 m high and falling at 3.3 m/s: the legs give way (the COM sinks to
+0.29 m). Tried and not kept: (1) the same take-off with 60 random landings (foot lead time 0-0.6 s,
+foot delta -0.15-0.15 m, arms swung or not, the leading foot placed sideways or not, flight knee
+0.3-1.4 rad): every one falls; (2) turning the body toward the target on purpose - the pelvis turned
+against the planted legs in the thrust by a new setting (-0.5-0.4 rad, legs untwisted in flight),
+so that the landing would be a forward one: every variant of her best falls, and a 400-trial search
+with it as a 19th setting landed on the target, (-0.002, -1.600) m in 0.61 s, but fell; (3) the
+man's 1.3 m left asked in 0.7 s instead of 0.6 s (300 trials): nothing nearer than his 1.0 m jump.
+His farthest balanced sideways trial (1.16 m) leaves at 1.2 m/s sideways and 2.85 m/s up; its
+knees are at their 300 N m limit through the thrust, its hips' abduction uses at most 74 of its
+200 N m - the sideways push comes from the lean, and a thrust held back until the COM had tipped
+0.17-0.26 m beyond the feet (instead of on reaching the crouch) fell during the tip.
+
 ![commanded vs achieved landing point](jump_to_target.png)
 
 ![the man's 1.3 m jump to a target, 1.0-2.1 s: crouch, thrust, flight, landing, standing up](jump_to_target_filmstrip.png)
