@@ -26,7 +26,7 @@ SPEED_TOLERANCE = 0.05          # TARGETS.md: mean speed over the last 10 s with
 FIG12_TOLERANCE = 0.10          # TARGETS.md: each gait figure within 10 % of the human one
 PATH_DEVIATION_GOAL = 0.3       # m, mean lateral deviation from the path
 # measured shortfalls (docs/running.md, "Limitations"): not reached yet (a fall, or a speed or gait off target)
-SHORTFALLS = {"speed 5.0", "gait 4.83", "figure eight"}
+SHORTFALLS = {"gait 4.83", "figure eight"}
 
 
 def miss(case, message):
@@ -191,7 +191,7 @@ def test_tight_courses_are_followed_at_3_m_s(label, params, duration):
 def test_a_stiffer_thrust_lengthens_the_flight():
     """The table's thrust_gain (the knee's and ankle's position gain in the toe state): the stored
     3.5 m/s row's (about 2x the default) against the same row with the default gain - longer flights,
-    a smaller share of the step on the ground (measured: 0.096 vs 0.068 s, 68 vs 79 %)."""
+    a smaller share of the step on the ground."""
     stored = SpeedTable.load("man")
     assert stored.at("thrust_gain", 3.5) > 1.5
     gaits = {}
