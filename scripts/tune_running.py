@@ -335,12 +335,8 @@ def main(argv=None) -> int:
     strength = args.strength if args.strength in ("human", "unlimited") else float(args.strength)
     table = SpeedTable.load(args.character)
     path = TUNED_DIR / f"running_{args.character}.json"
-    try:
-        stored = json.loads(path.read_text())
-    except (FileNotFoundError, json.JSONDecodeError):
-        stored = {}
     started = time.monotonic()
-    per_speed = dict(stored.get("evaluation", {}).get("per_speed", {}))
+    per_speed = {}          # this search's rows' records, merged into the file's when it is written
     new_values = {}
     with Pool(args.workers) as pool:
         for k, speed in enumerate(args.speeds):
@@ -352,9 +348,9 @@ def main(argv=None) -> int:
                 continue
             remaining = started + 60.0 * args.minutes - time.monotonic()
             deadline = time.monotonic() + remaining / (len(args.speeds) - k)
-            stored = [table.at(n, speed) for n in args.names]
+            stored_row = [table.at(n, speed) for n in args.names]
             # what a better row must beat is the stored one, also when the search starts elsewhere
-            baseline = evaluate(stored) if x0 != stored else None
+            baseline = evaluate(stored_row) if x0 != stored_row else None
             search = anneal if args.method == "anneal" else cma_search
             best = search(evaluate, x0, deadline, args.max_evaluations, args.seed)
             baseline = evaluate.history[0][1] if baseline is None else baseline
@@ -376,8 +372,7 @@ def main(argv=None) -> int:
     # since this one started
     table = with_found_rows(SpeedTable.load(args.character), args.names, new_values)
     try:
-        per_speed = {**json.loads(path.read_text()).get("evaluation", {}).get("per_speed", {}),
-                     **{str(v): per_speed[str(v)] for v in new_values}}
+        per_speed = {**json.loads(path.read_text()).get("evaluation", {}).get("per_speed", {}), **per_speed}
     except (FileNotFoundError, json.JSONDecodeError):
         pass
     speeds = table.speeds
