@@ -206,6 +206,23 @@ def test_a_stiffer_thrust_lengthens_the_flight():
     assert gaits["stored"]["stance_fraction"] < gaits["default gain"]["stance_fraction"] - 5.0
 
 
+def test_a_toe_push_lengthens_the_flight():
+    """The table's toe_push (the toe joint's plantarflexion target in the thrust; Hodgins et al.:
+    thrust from the ankle and the metatarsal joint): the 3.5 m/s row with the toes pushing 0.6 rad
+    against the same row with them held flat - longer flights, fewer steps per second."""
+    stored = SpeedTable.load("man")
+    gaits = {}
+    try:
+        for label, push in (("flat", 0.0), ("toe push", 0.6)):
+            SpeedTable.override = stored.with_row(3.5, {"toe_push": push})
+            gaits[label] = run_running(STEADY_RUN, speed=3.5).meta["metrics"]["gait"]
+    finally:
+        SpeedTable.override = None
+    print({k: (round(g["flight_time"], 3), round(g["step_frequency"], 2)) for k, g in gaits.items()})
+    assert gaits["toe push"]["flight_time"] > gaits["flat"]["flight_time"] + 0.006
+    assert gaits["toe push"]["step_frequency"] < gaits["flat"]["step_frequency"] - 0.1
+
+
 def test_a_tuned_row_replaces_only_its_speed():
     """The tuner scores a candidate row inside the stored table (what it scores is what it writes)."""
     table = SpeedTable([2.5, 4.0], {"thrust_time": [0.2, 0.4], "idle_knee": [1.0, 2.0]})

@@ -63,6 +63,7 @@ SCHEDULED_CONSTANTS = {
     "yaw_gain": (0.5, 1.5),            # scale of the stance hip's yaw servo gains
     "twist_damping": (0.0, 30.0),      # N m s/rad: the stance hip's rotation damped about its own rate (the foot's pivot)
     "thrust_gain": (1.0, 4.0),         # the knee's and ankle's position gain in the thrust, as a multiple of the default
+    "toe_push": (0.0, 0.7),            # rad: the toe joint's plantarflexion target in the thrust (0 = held flat)
 }
 
 # states of the active leg (Hodgins 1995 Fig. 3)
@@ -83,7 +84,8 @@ FALLBACK_TABLE = {"ground_speed_matching": 0.010, "stance_pitch": 0.100, "thrust
                   "ankle_extension": 0.658, "knee_extension": 0.307, "speed_gain": 0.073,
                   "touchdown_leg": 0.902, "idle_knee": 1.474,
                   "thrust_damping": 1.0, "unloading_after": 0.556, "place_back": 0.187, "swing_fold": 0.0,
-                  "yaw_first": 0.0, "yaw_gain": 1.0, "twist_damping": 0.0, "thrust_gain": 1.0}
+                  "yaw_first": 0.0, "yaw_gain": 1.0, "twist_damping": 0.0, "thrust_gain": 1.0,
+                  "toe_push": 0.0}
 
 
 class SpeedTable:
@@ -517,6 +519,7 @@ class Running(Behaviour):
                 if key == "hz" and p["twist_damping"] > 0:
                     tau -= p["twist_damping"] * qd[j_]
                 targets[j_] = q[j_] + (tau + kv[j_] * qd[j_]) / kp[j_]
+            targets[ja["mt"]] = 0.0
             if state in (LOADING, HEEL):
                 targets[ja["knee"]] = self.knee_touchdown
                 targets[ja["ay"]] = self.ankle_touchdown
@@ -527,12 +530,14 @@ class Running(Behaviour):
                 s_ = hermite_scalar((t - self.t_thrust) / THRUST_RAMP)
                 targets[ja["knee"]] = self.knee_touchdown + (p["knee_extension"] - self.knee_touchdown) * s_
                 targets[ja["ay"]] = self.ankle_flat + (p["ankle_extension"] - self.ankle_flat) * s_
+                # thrust from the ankle and the metatarsal joint (Hodgins et al. 1995): the toes
+                # pushed down against the ground lengthen the push past the ankle's range
+                targets[ja["mt"]] = p["toe_push"] * s_
                 if state == UNLOADING and UNLOAD_KNEE > 0:
                     # the knee starts to fold so that the toe leaves the ground
                     u_ = hermite_scalar((t - self.t_state) / UNLOAD_RAMP)
                     targets[ja["knee"]] += (UNLOAD_KNEE - targets[ja["knee"]]) * u_
             targets[ja["ax"]] = 0.0
-            targets[ja["mt"]] = 0.0
             hy_goal, hx_goal = q[ja["hy"]], q[ja["hx"]]
 
         # ---- idle leg: shortened, hip mirroring the active hip (eqs. 3-4)
