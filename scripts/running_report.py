@@ -112,7 +112,9 @@ def jobs(quick: bool) -> list:
     out.append(("start 3.5", {"speed": 3.5}, 8.0))
     out.append(("turn 90", {"speed": 3.5, "course": 1, "turn_angle": math.pi / 2, "turn_radius": 10.0,
                             "turn_after": 25.0}, 24.0))
-    out.append(("eight", {"speed": 3.5, "course": 2, "turn_radius": 10.0, "turn_after": 25.0}, 40.0))
+    if not quick:                      # a whole eight and a third of radius-20 m loops
+        out.append(("eight r20", {"speed": 3.5, "course": 2, "turn_radius": 20.0, "turn_after": 25.0}, 100.0))
+    out.append(("eight r10", {"speed": 3.5, "course": 2, "turn_radius": 10.0, "turn_after": 25.0}, 40.0))
     out.append(("circle 40", {"speed": 3.5, "course": 3, "turn_radius": 40.0, "turn_after": 15.0}, 24.0))
     for r in (20.0, 30.0):             # the gentler turns: where the steering's limit lies
         out.append((f"turn 90 r{r:g}", {"speed": 3.5, "course": 1, "turn_angle": math.pi / 2, "turn_radius": r,
@@ -159,13 +161,16 @@ def results_markdown(res: dict) -> str:
     lines.append(f"| start from a stand into 3.5 m/s | {s['outcome']} | 90 % of 3.5 m/s reached at "
                  f"{fmt(s['time_to_90pct_speed'])} s (goal: within 5 s) |")
     for key, label in (("turn 90", "90° left turn, radius 10 m, at 3.5 m/s"),
-                       ("eight", "figure eight, loops of radius 10 m, at 3.5 m/s"),
+                       ("eight r20", "figure eight, loops of radius 20 m, at 3.5 m/s (100 s: both loops, both crossings)"),
+                       ("eight r10", "tight figure eight, loops of radius 10 m, at 3.5 m/s (40 s)"),
                        ("circle 40", "circle of radius 40 m at 3.5 m/s"),
                        ("turn 90 r20", "90° left turn, radius 20 m, at 3.5 m/s (32 s)"),
                        ("turn 90 r30", "90° left turn, radius 30 m, at 3.5 m/s (32 s)"),
                        ("turn 90 v3", "90° left turn, radius 10 m, at 3.0 m/s"),
                        ("eight v3", "figure eight, loops of radius 10 m, at 3.0 m/s")):
-        r = res[key]
+        r = res.get(key)
+        if r is None:                  # not run by --quick
+            continue
         lines.append(f"| {label} | {r['outcome'] if r['outcome'] == 'success' else 'fell at %.1f s' % r['fall_time']} | lateral deviation "
                      f"mean {fmt(r['path_deviation_mean'])} m, max {fmt(r['path_deviation_max'])} m (goal: mean < 0.3 m); "
                      f"stance hip yaw at its 100 N m limit in {fmt(r['hip_yaw_saturated'], 0)} % of stance, the stance foot turning "
@@ -198,8 +203,9 @@ def figures(res: dict) -> None:
     from sim_core.control.running import _path_for
     from sim_core.control.behaviour import behaviour_class
     schema = behaviour_class("running").schema
-    fig, axes = plt.subplots(1, 3, figsize=(13, 4.2))
-    for ax, key in zip(axes, ("turn 90", "eight", "circle 40")):
+    keys = [k for k in ("turn 90", "eight r20", "eight r10", "circle 40") if k in res]
+    fig, axes = plt.subplots(1, len(keys), figsize=(4.4 * len(keys), 4.2))
+    for ax, key in zip(axes, keys):
         path = _path_for(schema.validate(res[key]["params"]))
         xy = np.array(res[key]["xy"])
         ax.plot(path[:, 0], path[:, 1], "k--", lw=0.8, label="path")

@@ -26,7 +26,7 @@ SPEED_TOLERANCE = 0.05          # TARGETS.md: mean speed over the last 10 s with
 FIG12_TOLERANCE = 0.10          # TARGETS.md: each gait figure within 10 % of the human one
 PATH_DEVIATION_GOAL = 0.3       # m, mean lateral deviation from the path
 # measured shortfalls (docs/running.md, "Limitations"): not reached yet (a fall, or a speed or gait off target)
-SHORTFALLS = {"gait 4.83", "figure eight"}
+SHORTFALLS = {"gait 4.83", "tight figure eight"}
 
 
 def miss(case, message):
@@ -140,9 +140,13 @@ def test_gait_at_4_83_m_s_against_fig_12():
 
 @pytest.mark.parametrize("course, params, duration", [
     ("90-degree turn", dict(course=1, turn_angle=math.pi / 2, turn_radius=10.0, turn_after=25.0), 24.0),
-    ("figure eight", dict(course=2, turn_radius=10.0, turn_after=25.0), 40.0),
+    # loops of radius 20 m: 100 s is a whole eight and a third (each curvature, both crossings)
+    pytest.param("figure eight", dict(course=2, turn_radius=20.0, turn_after=25.0), 100.0, marks=pytest.mark.slow),
+    ("tight figure eight", dict(course=2, turn_radius=10.0, turn_after=25.0), 40.0),
 ])
 def test_steering_along_a_path(course, params, duration):
+    """At 3.5 m/s: a 90-degree turn of radius 10 m, a figure eight of radius-20 m loops and a tight
+    one of radius-10 m loops (a shortfall: docs/running.md, Limitations)."""
     traj = run_running(duration, speed=3.5, **params)
     m = traj.meta["metrics"]
     deviation = f"lateral deviation mean {m['path_deviation_mean']:.3f} m, max {m['path_deviation_max']:.3f} m"
@@ -151,6 +155,9 @@ def test_steering_along_a_path(course, params, duration):
         miss(course, f"fell at {m['fall_time']:.1f} s; {deviation}")
     if m["path_deviation_mean"] >= PATH_DEVIATION_GOAL:
         miss(course, f"{deviation} (goal: mean < 0.3 m)")
+    if params["course"] == 2 and duration > 60.0:     # round both loops (left of the start line, then right)
+        y = traj.arrays["com"][:, 1]
+        assert y.max() > 1.8 * params["turn_radius"] and y.min() < -1.8 * params["turn_radius"]
 
 
 @pytest.mark.parametrize("label, params, duration", [

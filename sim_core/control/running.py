@@ -169,7 +169,9 @@ class Running(Behaviour):
         Parameter("course", "1", 0.0, 0.0, 3.0,
                   "built-in path: 0 = straight along facing, 1 = turn by turn_angle, 2 = figure eight, 3 = circle"),
         Parameter("turn_angle", "rad", math.pi / 2, -math.pi, math.pi, "course 1: angle of the turn (left positive)"),
-        Parameter("turn_radius", "m", 5.0, 1.5, 50.0, "course 1-3: radius of the turn, of each loop of the eight, of the circle"),
+        Parameter("turn_radius", "m", 20.0, 1.5, 50.0,
+                  "course 1-3: radius of the turn, of each loop of the eight, of the circle (at 3.5 m/s a 90-degree "
+                  "turn of 10 m is run, an eight of 10 m loops is not: docs/running.md)"),
         Parameter("turn_after", "m", 15.0, 2.0, 200.0, "course 1-3: distance run straight before the turn or the loops"),
         Parameter("lean", "1", 1.0, 0.0, 1.5, "share of the lean into a turn that balances the centripetal force (atan(v^2 / (g r)))"),
         Parameter("lookahead", "m", 2.5, 0.5, 10.0, "path following: distance along the path of the point the runner heads for"),
