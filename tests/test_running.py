@@ -238,6 +238,10 @@ def test_a_tuned_row_replaces_only_its_speed():
     assert new.at("thrust_time", 4.5) == 0.5 and new.at("thrust_time", 4.0) == 0.4
     assert new.at("idle_knee", 4.5) == 2.0                        # not searched: the table's value
     assert table.with_row(4.0, {"idle_knee": 1.5}).values["idle_knee"] == [1.0, 1.5]
+    # another row's stored value is kept bit for bit (interpolated at its knot, 0.1075 would come out
+    # as 0.10750000000000001)
+    odd = SpeedTable([4.5, 5.0], {"ground_speed_matching": [0.028467268324521088, 0.1075]})
+    assert odd.with_row(4.5, {}).values["ground_speed_matching"][1] == 0.1075
 
 
 def _tune_running():

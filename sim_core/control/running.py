@@ -123,9 +123,14 @@ class SpeedTable:
         """A copy with the values of ``row`` at ``speed`` (a new row if the speed is new; the
         other parameters of a new row interpolated from the table)."""
         speeds = sorted(set(self.speeds) | {float(speed)})
-        values = {n: [row[n] if (abs(v - speed) < 1e-9 and n in row) else self.at(n, v) for v in speeds]
-                  for n in self.values}
-        return SpeedTable(speeds, values)
+
+        def value(n: str, v: float) -> float:
+            if abs(v - speed) < 1e-9 and n in row:
+                return row[n]
+            if v in self.speeds:                   # a stored row's value as it is (interpolating at a
+                return self.values[n][self.speeds.index(v)]     # knot could change it in the last bit)
+            return self.at(n, v)
+        return SpeedTable(speeds, {n: [value(n, v) for v in speeds] for n in self.values})
 
     def at(self, name: str, speed: float) -> float:
         xs, ys = self.speeds, self.values[name]
