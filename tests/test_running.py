@@ -195,19 +195,25 @@ def test_tight_courses_are_followed_at_3_m_s(label, params, duration):
         assert abs(heading - params["turn_angle"]) < 0.3
 
 
+def gaits_at_3_5_with(tables: dict, duration: float) -> dict:
+    """label -> gait metrics of a run at 3.5 m/s with that speed table in place of the stored one."""
+    gaits = {}
+    try:
+        for label, table in tables.items():
+            SpeedTable.override = table
+            gaits[label] = run_running(duration, speed=3.5).meta["metrics"]["gait"]
+    finally:
+        SpeedTable.override = None
+    return gaits
+
+
 def test_a_stiffer_thrust_lengthens_the_flight():
     """The table's thrust_gain (the knee's and ankle's position gain in the toe state): the stored
     3.5 m/s row's (about 2x the default) against the same row with the default gain - longer flights,
     a smaller share of the step on the ground."""
     stored = SpeedTable.load("man")
     assert stored.at("thrust_gain", 3.5) > 1.5
-    gaits = {}
-    try:
-        for label, table in (("stored", stored), ("default gain", stored.with_row(3.5, {"thrust_gain": 1.0}))):
-            SpeedTable.override = table
-            gaits[label] = run_running(20.0, speed=3.5).meta["metrics"]["gait"]
-    finally:
-        SpeedTable.override = None
+    gaits = gaits_at_3_5_with({"stored": stored, "default gain": stored.with_row(3.5, {"thrust_gain": 1.0})}, 20.0)
     print({k: (round(g["flight_time"], 3), round(g["stance_fraction"], 1)) for k, g in gaits.items()})
     assert gaits["stored"]["flight_time"] > gaits["default gain"]["flight_time"] + 0.015
     assert gaits["stored"]["stance_fraction"] < gaits["default gain"]["stance_fraction"] - 5.0
@@ -218,13 +224,8 @@ def test_a_toe_push_lengthens_the_flight():
     thrust from the ankle and the metatarsal joint): the 3.5 m/s row with the toes pushing 0.6 rad
     against the same row with them held flat - longer flights, fewer steps per second."""
     stored = SpeedTable.load("man")
-    gaits = {}
-    try:
-        for label, push in (("flat", 0.0), ("toe push", 0.6)):
-            SpeedTable.override = stored.with_row(3.5, {"toe_push": push})
-            gaits[label] = run_running(STEADY_RUN, speed=3.5).meta["metrics"]["gait"]
-    finally:
-        SpeedTable.override = None
+    gaits = gaits_at_3_5_with({label: stored.with_row(3.5, {"toe_push": push})
+                               for label, push in (("flat", 0.0), ("toe push", 0.6))}, STEADY_RUN)
     print({k: (round(g["flight_time"], 3), round(g["step_frequency"], 2)) for k, g in gaits.items()})
     assert gaits["toe push"]["flight_time"] > gaits["flat"]["flight_time"] + 0.006
     assert gaits["toe push"]["step_frequency"] < gaits["flat"]["step_frequency"] - 0.1
