@@ -386,7 +386,9 @@ def main(argv=None) -> int:
     except (FileNotFoundError, json.JSONDecodeError):
         pass
     speeds = table.speeds
-    values = {n: [table.at(n, v) for v in speeds] for n in COLUMNS}     # unrounded: the runs are chaotic in them
+    # as stored, unrounded (the runs are chaotic in them); not table.at() at the knots, which can change
+    # a value in the last bit
+    values = {n: list(table.values[n]) for n in COLUMNS}
     elapsed = time.monotonic() - started
     write_atomically(path, {
         "behaviour": "running", "character": args.character, "speeds": speeds, "parameters": values,
