@@ -31,6 +31,7 @@ import json
 import math
 import sys
 import time
+from multiprocessing import Pool
 from pathlib import Path
 
 import numpy as np
@@ -45,7 +46,7 @@ from sim_core.simulate import RunRequest, run  # noqa: E402
 DURATION = 5.0
 DRIFT_GOAL = 0.009          # angular momentum drift in flight the search aims below (the test's limit is 1 %)
 SPACE = {  # name: (low, high) per direction
-    "crouch_height": {"backward": (0.5, 0.9), "forward": (0.5, 0.9)},   # lower: the pelvis below half its standing height (a fall)
+    "crouch_height": {"backward": (0.42, 0.9), "forward": (0.5, 0.9)},  # the crouch is a squat: it may go below half the standing pelvis height
     "crouch_pitch": {"backward": (-0.3, 1.5), "forward": (0.0, 1.5)},
     "com_offset": {"backward": (-0.2, 0.05), "forward": (-0.05, 0.2)},
     "thrust_lean": {"backward": (-0.1, 0.1), "forward": (-0.1, 0.1)},
@@ -90,8 +91,13 @@ def evaluate(character: str, direction: str, strength: str, settings: dict) -> t
     return score, m
 
 
+def evaluate_settings(job: tuple) -> tuple[float, dict]:
+    """evaluate() for one (character, direction, strength, settings) job of a process pool."""
+    return evaluate(*job)
+
+
 def search(character: str, direction: str, strength: str, iterations: int, population: int, seed: int,
-           start: dict, verbose: bool = False) -> tuple[float, dict, dict]:
+           start: dict, verbose: bool = False, pool=None) -> tuple[float, dict, dict]:
     names = list(SETTINGS)
     low = np.array([SPACE[n][direction][0] for n in names])
     high = np.array([SPACE[n][direction][1] for n in names])
@@ -104,9 +110,10 @@ def search(character: str, direction: str, strength: str, iterations: int, popul
         if iteration == 0:
             samples[0] = mean
         scored = []
-        for x in samples:
-            settings = {n: round(float(v), 4) for n, v in zip(names, x)}
-            score, m = evaluate(character, direction, strength, settings)
+        batch = [{n: round(float(v), 4) for n, v in zip(names, x)} for x in samples]
+        jobs = [(character, direction, strength, settings) for settings in batch]
+        results = pool.map(evaluate_settings, jobs) if pool else map(evaluate_settings, jobs)
+        for x, settings, (score, m) in zip(samples, batch, results):
             scored.append((score, x))
             if found(m):
                 successes.append((score, settings, m))
@@ -123,26 +130,24 @@ def search(character: str, direction: str, strength: str, iterations: int, popul
               f"take-off H {m['liftoff_angular_momentum'] or 0:.1f} kg m^2/s)", flush=True)
         if len(successes) >= ROBUST_CANDIDATES or (successes and iteration == iterations - 1):
             break
-    return most_robust(character, direction, strength, successes) if successes else best
+    return most_robust(character, direction, strength, successes, pool) if successes else best
 
 
 ROBUST_CANDIDATES = 4        # somersaults found before choosing among them
 ROBUST_STEP = 0.02           # rad: the neighbours' change of the lift-off hip angle and the landing lean
 
 
-def most_robust(character: str, direction: str, strength: str, successes: list) -> tuple[float, dict, dict]:
+def most_robust(character: str, direction: str, strength: str, successes: list, pool=None) -> tuple[float, dict, dict]:
     """Of the somersaults found (the best few by score), the one whose eight neighbours (lift-off hip
     angle and landing lean +-0.02 rad, the settings the outcome is most sensitive to) succeed most
     often, then by score: a table entry that still lands when the state at take-off differs a little."""
     ranked = []
     for score, settings, m in sorted(successes, key=lambda s: s[0])[:ROBUST_CANDIDATES]:
-        neighbours = 0
-        for dh in (-ROBUST_STEP, 0.0, ROBUST_STEP):
-            for dl in (-ROBUST_STEP, 0.0, ROBUST_STEP):
-                if dh or dl:
-                    near = dict(settings, liftoff_hip=settings["liftoff_hip"] + dh,
-                                landing_lean=settings["landing_lean"] + dl)
-                    neighbours += found(evaluate(character, direction, strength, near)[1])
+        jobs = [(character, direction, strength, dict(settings, liftoff_hip=settings["liftoff_hip"] + dh,
+                                                      landing_lean=settings["landing_lean"] + dl))
+                for dh in (-ROBUST_STEP, 0.0, ROBUST_STEP) for dl in (-ROBUST_STEP, 0.0, ROBUST_STEP) if dh or dl]
+        results = pool.map(evaluate_settings, jobs) if pool else map(evaluate_settings, jobs)
+        neighbours = sum(found(m) for _, m in results)
         print(f"    candidate score {score:.3f}: {neighbours}/8 neighbours succeed", flush=True)
         ranked.append((-neighbours, score, settings, dict(m, neighbours_succeeding=neighbours)))
     _, score, settings, m = min(ranked, key=lambda r: (r[0], r[1]))
@@ -163,21 +168,29 @@ def main() -> None:
     parser.add_argument("--iterations", type=int, default=12)
     parser.add_argument("--population", type=int, default=24)
     parser.add_argument("--seed", type=int, default=1)
-    parser.add_argument("--fresh", action="store_true", help="start from START, not from the table's entry")
+    parser.add_argument("--fresh", action="store_true",
+                        help="start from START, not from the table's entry (its calibrated row, else its best searched run)")
     parser.add_argument("--verbose", action="store_true", help="print every improvement with its settings")
     parser.add_argument("--start", help="JSON settings to start from, over the table's (or START's)")
+    parser.add_argument("--processes", type=int, default=1,
+                        help="simulate a population's somersaults in this many processes (the same result as 1)")
     args = parser.parse_args()
+    if args.processes < 1:
+        parser.error(f"--processes {args.processes}: must be at least 1")
+    pool = Pool(args.processes) if args.processes > 1 else None
     for character in args.character or ("man", "woman"):
         for direction in args.direction or DIRECTIONS:
             for strength in args.strength or ("human", "unlimited"):
                 started = time.time()
                 table = load_table(character)
                 old = [e for e in table["somersaults"] if (e["direction"], e["strength"]) == (direction, strength)]
-                start = dict(START[direction], **(old[0]["settings"] if old and not args.fresh else {}))
+                searched = [e for e in table.get("not_found", []) if (e["direction"], e["strength"]) == (direction, strength)]
+                previous = old or searched                   # the calibrated row, else the best searched so far
+                start = dict(START[direction], **(previous[0]["settings"] if previous and not args.fresh else {}))
                 if args.start:
                     start = dict(start, **json.loads(args.start))
                 score, settings, m = search(character, direction, strength, args.iterations, args.population,
-                                            args.seed, start, args.verbose)
+                                            args.seed, start, args.verbose, pool)
                 rows, missing = merge_search(
                     table["somersaults"], table.get("not_found", []), {"direction": direction, "strength": strength},
                     found(m), {"settings": settings, "score": round(score, 4), "measured": m},

@@ -77,9 +77,13 @@ def gravity_up(traj: Trajectory) -> np.ndarray:
     return -g / np.linalg.norm(g, axis=1, keepdims=True)
 
 
-def standard_metrics(traj: Trajectory, allowed_contacts=FOOT_BODIES) -> dict:
+def standard_metrics(traj: Trajectory, allowed_contacts=FOOT_BODIES, squat: tuple[int, float] | None = None) -> dict:
     """Metrics every behaviour reports: falls, steps, COM against the support polygon, pelvis
-    heights, final COM speed, peak ground reaction force."""
+    heights, final COM speed, peak ground reaction force.
+
+    ``squat`` = (frame, floor): before that frame the skill crouches deliberately (the deep squat
+    of a take-off), and there the pelvis counts as fallen only below ``floor`` m, not below half
+    its standing height."""
     a = traj.arrays
     names = traj.body_names
     pelvis = names.index("PELVIS")
@@ -90,7 +94,10 @@ def standard_metrics(traj: Trajectory, allowed_contacts=FOOT_BODIES) -> dict:
     # above what is under the pelvis: the ground, a box landed on, or the ground below the box started on
     under = surface_under_points(traj, a["body_pos"][:, pelvis])
     hip_height = hip_height - under
-    too_low = a["body_pos"][:, pelvis, 2] - under < 0.5 * stand_pelvis
+    lowest = np.full(len(a["time"]), 0.5 * stand_pelvis)
+    if squat is not None:
+        lowest[:squat[0]] = min(squat[1], 0.5 * stand_pelvis)
+    too_low = a["body_pos"][:, pelvis, 2] - under < lowest
     fell_frames = np.nonzero(bad_contact | too_low)[0]
     fell = len(fell_frames) > 0
     feet = a["support_points"]

@@ -69,3 +69,21 @@ def test_an_uncalibrated_somersault_is_refused_before_simulating(monkeypatch):
 def test_bad_somersault_parameters_are_refused(bad):
     with pytest.raises(ParameterError, match=next(iter(bad))):
         run(RunRequest("somersault", "man", params=dict(bad, low_level=1)))
+
+
+def test_the_crouch_before_the_take_off_is_a_squat_not_a_fall():
+    """A deep backward-leaning crouch takes the pelvis below half its standing height before the
+    take-off; that is the skill's squat (allowed down to SQUAT_LOWEST), not a fall - the same run
+    judged by the standing rule throughout would be a fall."""
+    from sim_core.analysis import standard_metrics
+    from sim_core.control.somersault import SQUAT_LOWEST
+    settings = {"crouch_height": 0.55, "crouch_pitch": 1.3655, "com_offset": -0.1459, "thrust_lean": -0.1,
+                "liftoff_hip": 1.6871, "arm_swing": 3.0478, "thrust_damping": 0.8088, "tuck_stiffness": 2.1365}
+    traj = run(RunRequest("somersault", "man", params=dict(settings, low_level=1, direction=0), duration=1.6))
+    names = traj.body_names
+    pelvis = traj.arrays["body_pos"][:, names.index("PELVIS"), 2]
+    assert traj.meta["metrics"]["liftoff_time"] < 1.6            # it took off within the run
+    before = traj.arrays["time"] < traj.meta["metrics"]["liftoff_time"]
+    assert SQUAT_LOWEST < pelvis[before].min() < 0.5 * pelvis[0]
+    assert not traj.meta["metrics"]["fell"]
+    assert standard_metrics(traj)["fell"]

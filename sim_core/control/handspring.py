@@ -31,13 +31,12 @@ from sim_core.control.behaviour import Behaviour, ControlContext, register
 from sim_core.control.leap import (ANKLE_GAIN_VERTICAL, AIRBORNE_HEIGHT, TUNED_DIR, VERTICAL_TIMING, Airborne,
                                    Landing, LeapThrust, balance_after_landing, run_strength)
 from sim_core.control.sequencer import Sequence, Step
-from sim_core.control.somersault import ROTATION_TOLERANCE, pelvis_pitch
+from sim_core.control.somersault import ROTATION_TOLERANCE, SQUAT_LOWEST as SIT_LOWEST, pelvis_pitch
 from sim_core.control.tumble import FlightRotation, both_sides
 from sim_core.control.tuned import uncalibrated
 from sim_core.schema import Parameter, Schema
 
 HAND_BODIES = ("HANDR", "HANDL")
-SIT_LOWEST = Balance.schema.by_name["pelvis_height"].minimum   # m: the deepest sit (the deepest crouch)
 SIT_TIMEOUT = 3.0          # s into the run: the thrust starts at the latest then, fallen back or not
 ARCH_MOVE = 0.2            # s: the servo move into the arch after lift-off
 ARCH_GAIN = 2.0            # gain factor of the arched joints' servos in the first flight

@@ -429,14 +429,16 @@ def balance_after_landing(ctx: ControlContext, landing: Landing) -> Balance:
                    from_height=height)
 
 
-def leap_assess(trajectory) -> tuple[str, dict]:
+def leap_assess(trajectory, squat_floor: float | None = None) -> tuple[str, dict]:
     """Outcome of a skill with a flight phase: no fall, the feet stay where they touched down
     (``landing_skid``: the middle of the feet moves at most LANDING_SKID_LIMIT until they settle),
     ends still and standing; measured COM rise and travel, flight time, peak vertical ground
-    reaction force (body weights)."""
-    metrics = standard_metrics(trajectory)
+    reaction force (body weights). ``squat_floor``: the pelvis height the crouch before the take-off
+    may go down to (a deliberate squat; see standard_metrics); None = half its standing height."""
     a = trajectory.arrays
     flying = feet_above_surface(trajectory).min(axis=1) > AIRBORNE_HEIGHT
+    takeoff = int(np.argmax(flying)) if flying.any() else 0
+    metrics = standard_metrics(trajectory, squat=(takeoff, squat_floor) if squat_floor is not None else None)
     t = a["time"]
     com = a["com"]
     metrics["com_rise"] = float(com[:, 2].max() - com[0, 2])

@@ -24,6 +24,7 @@ import math
 import numpy as np
 
 from sim_core.ballistics import time_to_fall_to
+from sim_core.control.balance import Balance
 from sim_core.control.behaviour import register
 from sim_core.control.leap import AIRBORNE_HEIGHT, TUNED_DIR, Landing, balance_after_landing, leap_assess, run_strength
 from sim_core.control.sequencer import Sequence, Step
@@ -38,6 +39,8 @@ TUCK = 2                    # the tumble's position code
 TUCK_MOVE = 0.15            # s: the servo move into the tuck
 TOUCHDOWN_COM = 0.9         # share of the standing COM height at which the feet reach the ground
 ROTATION_TOLERANCE = 0.35   # rad: a somersault turns 2 pi within this (TARGETS.md)
+SQUAT_LOWEST = Balance.schema.by_name["pelvis_height"].minimum   # m: the crouch before a take-off is a
+                            # deliberate squat: the pelvis may go down to the balance's deepest crouch
 TAKEOFF_SETTINGS = ("crouch_height", "crouch_pitch", "com_offset", "thrust_lean", "liftoff_hip", "arm_swing",
                     "thrust_damping", "tuck_stiffness")
 LANDING_SETTINGS = ("landing_lean", "open_time", "open_blend", "landing_knee_flexion", "foot_delta",
@@ -67,7 +70,7 @@ class Somersault(Sequence):
         Parameter("direction", "1", 1.0, 0.0, 1.0, "0 = backward somersault, 1 = forward somersault"),
         Parameter("low_level", "bool", 0.0, 0.0, 1.0,
                   "1 = use the take-off and landing settings below instead of the calibrated ones"),
-        Parameter("crouch_height", "m", 0.55, 0.5, 0.9, "pelvis height of the crouch (low_level only)"),
+        Parameter("crouch_height", "m", 0.55, 0.42, 0.9, "pelvis height of the crouch (low_level only)"),
         Parameter("crouch_pitch", "rad", 0.8, -0.3, 1.5, "torso pitch in the crouch (low_level only)"),
         Parameter("com_offset", "m", -0.08, -0.2, 0.2,
                   "COM ahead (+) of or behind (-) the middle of the feet in the crouch; leaning, the thrust "
@@ -179,14 +182,15 @@ def pelvis_pitch(trajectory) -> np.ndarray:
 
 
 def somersault_assess(trajectory) -> tuple[str, dict]:
-    """The leap's outcome (balanced at the end, no fall, no step) plus the measured rotation:
+    """The leap's outcome (balanced at the end, no fall, no step; the crouch before the take-off
+    a squat that may go down to SQUAT_LOWEST) plus the measured rotation:
     the pelvis's turn about the somersault axis over the skill (from the standing start to the
     end of the run; a skill that ends balanced has turned a whole number of times, and this
     counts them: TARGETS.md's "the measured rotation count is right"), and in flight alone
     (lift-off to touchdown: the body leans back at take-off and lands short of upright, so this
     is less than a turn); the whole-body angular momentum's drift in flight; the twist rate at
     take-off (none is asked for)."""
-    outcome, metrics = leap_assess(trajectory)
+    outcome, metrics = leap_assess(trajectory, squat_floor=SQUAT_LOWEST)
     a, meta = trajectory.arrays, trajectory.meta
     t = a["time"]
     pitch = pelvis_pitch(trajectory)
