@@ -5,8 +5,8 @@ then the timing of the opening), done by a search.
 
 For each character, direction (backward, forward) and strength (human torque limits,
 unlimited as the thesis ran) a cross-entropy search over the take-off settings (crouch height,
-torso pitch, COM offset, lean along the thrust, lift-off hip angle, arm swing, thrust damping)
-and the landing settings (landing lean, opening time, knee bend, foot delta and lead, spin
+torso pitch, COM offset, lean along the thrust, lift-off hip angle, arm swing, thrust damping,
+the tuck's stiffness and move time) and the landing settings (landing lean, opening time, knee bend, foot delta and lead, spin
 placement) minimises, with every quantity read off the simulated somersault,
 
     score = |rotation - 2 pi| + 50 max(0, drift - 0.9 %)             if it ends balanced
@@ -54,6 +54,7 @@ SPACE = {  # name: (low, high) per direction
     "arm_swing": {"backward": (1.5, 3.2), "forward": (-1.0, 3.2)},
     "thrust_damping": {"backward": (0.2, 1.0), "forward": (0.2, 1.0)},
     "tuck_stiffness": {"backward": (1.0, 4.0), "forward": (1.0, 4.0)},
+    "tuck_time": {"backward": (0.05, 0.3), "forward": (0.05, 0.3)},
     "landing_lean": {"backward": (-0.3, 0.8), "forward": (-0.3, 0.8)},
     "open_time": {"backward": (0.03, 0.4), "forward": (0.03, 0.4)},
     "open_blend": {"backward": (0.12, 0.3), "forward": (0.12, 0.3)},    # shorter: the drift passes 1 %
@@ -64,11 +65,11 @@ SPACE = {  # name: (low, high) per direction
 }
 START = {   # where the search starts when the table has nothing: found by hand-run searches
     "backward": {"crouch_height": 0.548, "crouch_pitch": 0.966, "com_offset": -0.073, "thrust_lean": -0.037,
-                 "liftoff_hip": 1.56, "arm_swing": 3.142, "thrust_damping": 0.474, "tuck_stiffness": 3.0, "landing_lean": 0.458,
+                 "liftoff_hip": 1.56, "arm_swing": 3.142, "thrust_damping": 0.474, "tuck_stiffness": 3.0, "tuck_time": 0.15, "landing_lean": 0.458,
                  "open_time": 0.05, "open_blend": 0.1, "landing_knee_flexion": 0.373, "foot_delta": -0.142, "foot_lead_time": 0.18,
                  "spin_placement": 0.292},
     "forward": {"crouch_height": 0.5, "crouch_pitch": 1.0, "com_offset": 0.02, "thrust_lean": 0.0,
-                "liftoff_hip": -0.5, "arm_swing": 1.0, "thrust_damping": 0.3, "tuck_stiffness": 3.0, "landing_lean": 0.3,
+                "liftoff_hip": -0.5, "arm_swing": 1.0, "thrust_damping": 0.3, "tuck_stiffness": 3.0, "tuck_time": 0.15, "landing_lean": 0.3,
                 "open_time": 0.1, "open_blend": 0.1, "landing_knee_flexion": 0.8, "foot_delta": 0.0, "foot_lead_time": 0.2,
                 "spin_placement": 0.2},
 }

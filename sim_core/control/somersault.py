@@ -36,13 +36,13 @@ from sim_core.schema import Parameter, Schema
 
 DIRECTIONS = ("backward", "forward")
 TUCK = 2                    # the tumble's position code
-TUCK_MOVE = 0.15            # s: the servo move into the tuck
+TUCK_MOVE = 0.15            # s: the servo move into the tuck, where a calibrated row names no tuck_time
 TOUCHDOWN_COM = 0.9         # share of the standing COM height at which the feet reach the ground
 ROTATION_TOLERANCE = 0.35   # rad: a somersault turns 2 pi within this (TARGETS.md)
 SQUAT_LOWEST = Balance.schema.by_name["pelvis_height"].minimum   # m: the crouch before a take-off is a
                             # deliberate squat: the pelvis may go down to the balance's deepest crouch
 TAKEOFF_SETTINGS = ("crouch_height", "crouch_pitch", "com_offset", "thrust_lean", "liftoff_hip", "arm_swing",
-                    "thrust_damping", "tuck_stiffness")
+                    "thrust_damping", "tuck_stiffness", "tuck_time")
 LANDING_SETTINGS = ("landing_lean", "open_time", "open_blend", "landing_knee_flexion", "foot_delta",
                     "foot_lead_time", "spin_placement")
 SETTINGS = TAKEOFF_SETTINGS + LANDING_SETTINGS
@@ -84,6 +84,9 @@ class Somersault(Sequence):
                   "share of the stiffened leg servos' damping kept in the thrust; less extends faster (low_level only)"),
         Parameter("tuck_stiffness", "1", 3.0, 1.0, 4.0,
                   "gain factor of the hip, knee and spine servos for the snap into the tuck (low_level only)"),
+        Parameter("tuck_time", "s", TUCK_MOVE, 0.05, 0.4,
+                  "duration of the servo move into the tuck; shorter closes it sooner and spins faster earlier "
+                  "(low_level only)"),
         Parameter("landing_lean", "rad", 0.4, -0.5, 1.0,
                   "the body opens to land this far short of the full turn (whole-body angle at touchdown; "
                   "the landing's ground force turns the rest) (low_level only)"),
@@ -111,7 +114,8 @@ class Somersault(Sequence):
         p = self.params
         if p["low_level"]:
             return {k: p[k] for k in SETTINGS}
-        return dict(calibrated(self.ctx.character.name, self.direction_name, run_strength(self.ctx))["settings"])
+        row = calibrated(self.ctx.character.name, self.direction_name, run_strength(self.ctx))["settings"]
+        return dict({"tuck_time": TUCK_MOVE}, **row)         # rows calibrated before tuck_time: the old move
 
     def check_feasible(self) -> None:
         if self.params["low_level"]:
@@ -137,7 +141,7 @@ class Somersault(Sequence):
         def tuck(t):
             self.rotation.takeoff(t)
             return Tumble(Tumble.schema.validate(dict(position=TUCK, stiffness=cfg["tuck_stiffness"],
-                                                    move_time=TUCK_MOVE)),
+                                                    move_time=cfg["tuck_time"])),
                           ctx, self.rotation)
 
         def land(t):
