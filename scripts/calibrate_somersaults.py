@@ -97,6 +97,11 @@ def evaluate_settings(job: tuple) -> tuple[float, dict]:
     return evaluate(*job)
 
 
+def evaluate_all(jobs: list, pool=None) -> list:
+    """evaluate() for every job, in the pool's processes where there is one (in order either way)."""
+    return pool.map(evaluate_settings, jobs) if pool else [evaluate_settings(job) for job in jobs]
+
+
 def search(character: str, direction: str, strength: str, iterations: int, population: int, seed: int,
            start: dict, verbose: bool = False, pool=None) -> tuple[float, dict, dict]:
     names = list(SETTINGS)
@@ -113,8 +118,7 @@ def search(character: str, direction: str, strength: str, iterations: int, popul
         scored = []
         batch = [{n: round(float(v), 4) for n, v in zip(names, x)} for x in samples]
         jobs = [(character, direction, strength, settings) for settings in batch]
-        results = pool.map(evaluate_settings, jobs) if pool else map(evaluate_settings, jobs)
-        for x, settings, (score, m) in zip(samples, batch, results):
+        for x, settings, (score, m) in zip(samples, batch, evaluate_all(jobs, pool)):
             scored.append((score, x))
             if found(m):
                 successes.append((score, settings, m))
@@ -147,8 +151,7 @@ def most_robust(character: str, direction: str, strength: str, successes: list, 
         jobs = [(character, direction, strength, dict(settings, liftoff_hip=settings["liftoff_hip"] + dh,
                                                       landing_lean=settings["landing_lean"] + dl))
                 for dh in (-ROBUST_STEP, 0.0, ROBUST_STEP) for dl in (-ROBUST_STEP, 0.0, ROBUST_STEP) if dh or dl]
-        results = pool.map(evaluate_settings, jobs) if pool else map(evaluate_settings, jobs)
-        neighbours = sum(found(m) for _, m in results)
+        neighbours = sum(found(m) for _, m in evaluate_all(jobs, pool))
         print(f"    candidate score {score:.3f}: {neighbours}/8 neighbours succeed", flush=True)
         ranked.append((-neighbours, score, settings, dict(m, neighbours_succeeding=neighbours)))
     _, score, settings, m = min(ranked, key=lambda r: (r[0], r[1]))

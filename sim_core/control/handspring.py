@@ -31,7 +31,7 @@ from sim_core.control.behaviour import Behaviour, ControlContext, register
 from sim_core.control.leap import (ANKLE_GAIN_VERTICAL, AIRBORNE_HEIGHT, TUNED_DIR, VERTICAL_TIMING, Airborne,
                                    Landing, LeapThrust, balance_after_landing, run_strength)
 from sim_core.control.sequencer import Sequence, Step
-from sim_core.control.somersault import ROTATION_TOLERANCE, SQUAT_LOWEST as SIT_LOWEST, pelvis_pitch
+from sim_core.control.somersault import ROTATION_TOLERANCE, SQUAT_LOWEST, pelvis_pitch
 from sim_core.control.tumble import FlightRotation, both_sides
 from sim_core.control.tuned import uncalibrated
 from sim_core.schema import Parameter, Schema
@@ -289,7 +289,7 @@ def handspring_assess(trajectory) -> tuple[str, dict]:
     second = next((f for f in flights if f[0] > hands_on), None) if hands_on is not None else None
     # a fall: a body but the feet and hands on the ground, the hands on it outside their phase, or
     # the pelvis below half its standing height. The sit before the take-off is a deliberate squat:
-    # there the pelvis may go down to the balance behaviour's deepest crouch (SIT_LOWEST), and
+    # there the pelvis may go down to the balance behaviour's deepest crouch (SQUAT_LOWEST), and
     # ``sit_shortfall`` is how far it went below (judged apart, so that the calibration sees how far
     # the rest got)
     allowed = np.array([n in FOOT_BODIES + HAND_BODIES for n in names])
@@ -299,7 +299,7 @@ def handspring_assess(trajectory) -> tuple[str, dict]:
     out_of_phase = hand.copy()
     out_of_phase[takeoff:second[1] if second else len(t)] = False
     falling = np.flatnonzero((contact & ~allowed).any(axis=1) | low | out_of_phase)
-    metrics["sit_shortfall"] = float(max(0.0, SIT_LOWEST - pelvis[:takeoff, 2].min())) if takeoff else 0.0
+    metrics["sit_shortfall"] = float(max(0.0, SQUAT_LOWEST - pelvis[:takeoff, 2].min())) if takeoff else 0.0
     fall_frame = int(falling[0]) if len(falling) else last
     metrics["rotation_before_fall"] = float(rotation[: fall_frame + 1].max())
     metrics["fell"] = bool(len(falling)) or metrics["sit_shortfall"] > 0.0

@@ -437,15 +437,14 @@ def leap_assess(trajectory, squat_floor: float | None = None) -> tuple[str, dict
     may go down to (a deliberate squat; see standard_metrics); None = half its standing height."""
     a = trajectory.arrays
     flying = feet_above_surface(trajectory).min(axis=1) > AIRBORNE_HEIGHT
-    takeoff = int(np.argmax(flying)) if flying.any() else 0
-    metrics = standard_metrics(trajectory, squat=(takeoff, squat_floor) if squat_floor is not None else None)
+    first = int(np.argmax(flying))                      # the take-off frame (0 when it never flies)
+    metrics = standard_metrics(trajectory, squat=(first, squat_floor) if squat_floor is not None else None)
     t = a["time"]
     com = a["com"]
     metrics["com_rise"] = float(com[:, 2].max() - com[0, 2])
     metrics["com_travel"] = float(com[-1, 0] - com[0, 0])
     metrics["com_travel_y"] = float(com[-1, 1] - com[0, 1])
     if flying.any():
-        first = int(np.argmax(flying))
         last = len(flying) - 1 - int(np.argmax(flying[::-1]))
         metrics["liftoff_time"] = float(t[first])
         metrics["touchdown_time"] = float(t[min(last + 1, len(t) - 1)])
