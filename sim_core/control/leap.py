@@ -67,6 +67,7 @@ TOE_FADE_SPEED = (0.5, 1.5)     # m/s of horizontal COM speed over which the toe
 UP = np.array([0.0, 0.0, 1.0])
 SETTLE_TIME = 0.15              # s after the last touchdown by which the feet have settled (the heels
                                 # coming down after a toe-first landing)
+LANDING_SLIDE_LIMIT = 0.05      # m: a foot further than this from where it settled, at any time after the touchdown, has stepped
 LANDING_SKID_LIMIT = 0.05       # m: the middle of the feet moving further than this between the first
                                 # touchdown and settling is a skid (feet dragged or bounced), not a landing
 LANDING_TORQUE_LIMIT = 1.0      # landing joints use at most this share of the human torque limits,
@@ -472,7 +473,7 @@ def leap_assess(trajectory, squat_floor: float | None = None) -> tuple[str, dict
         return "fell", metrics
     if metrics["flight_time"] == 0.0 and trajectory.meta["behaviour"] != "land":
         return "no_flight", metrics
-    if metrics["foot_slide_after_landing"] > 0.05:
+    if metrics["foot_slide_after_landing"] > LANDING_SLIDE_LIMIT:
         return "stepped", metrics
     if metrics["landing_skid"] > LANDING_SKID_LIMIT:
         return "skidded", metrics

@@ -42,10 +42,12 @@ ROTATION_TOLERANCE = 0.35   # rad: a somersault turns 2 pi within this (TARGETS.
 SQUAT_LOWEST = Balance.schema.by_name["pelvis_height"].minimum   # m: the crouch before a take-off is a
                             # deliberate squat: the pelvis may go down to the balance's deepest crouch
 TAKEOFF_SETTINGS = ("crouch_height", "crouch_pitch", "com_offset", "thrust_lean", "liftoff_hip", "arm_swing",
-                    "thrust_damping", "tuck_stiffness", "tuck_time")
+                    "thrust_damping", "tuck_stiffness", "tuck_time", "tuck_damping")
 LANDING_SETTINGS = ("landing_lean", "open_time", "open_blend", "landing_knee_flexion", "foot_delta",
                     "foot_lead_time", "spin_placement")
-SETTINGS = TAKEOFF_SETTINGS + LANDING_SETTINGS
+SETTINGS = TAKEOFF_SETTINGS + LANDING_SETTINGS + ("flight_step_division",)
+OLD_ROW = {"tuck_time": TUCK_MOVE, "tuck_damping": 0.0, "flight_step_division": 1}   # what a calibrated row
+                            # made before these settings ran with: every stored row reproduces
 
 
 def load_table(character: str) -> dict:
@@ -87,6 +89,13 @@ class Somersault(Sequence):
         Parameter("tuck_time", "s", TUCK_MOVE, 0.05, 0.4,
                   "duration of the servo move into the tuck; shorter closes it sooner and spins faster earlier "
                   "(low_level only)"),
+        Parameter("tuck_damping", "1", 0.0, 0.0, 8.0,
+                  "damping factor of the hip, knee and spine servos in the move into the tuck; 0 = tuck_stiffness "
+                  "x 2 (overdamped, slow to close); lighter closes the tuck sooner (low_level only)"),
+        Parameter("flight_step_division", "1", 1.0, 1.0, 8.0,
+                  "the physics step from the take-off to the touchdown is the model's divided by this (a whole "
+                  "number; 8 as in the dives: a fast tuck keeps the flight's angular momentum within 1 %) "
+                  "(low_level only)"),
         Parameter("landing_lean", "rad", 0.4, -0.5, 1.0,
                   "the body opens to land this far short of the full turn (whole-body angle at touchdown; "
                   "the landing's ground force turns the rest) (low_level only)"),
@@ -115,7 +124,7 @@ class Somersault(Sequence):
         if p["low_level"]:
             return {k: p[k] for k in SETTINGS}
         row = calibrated(self.ctx.character.name, self.direction_name, run_strength(self.ctx))["settings"]
-        return dict({"tuck_time": TUCK_MOVE}, **row)         # rows calibrated before tuck_time: the old move
+        return dict(OLD_ROW, **row)
 
     def check_feasible(self) -> None:
         if self.params["low_level"]:
@@ -140,8 +149,9 @@ class Somersault(Sequence):
 
         def tuck(t):
             self.rotation.takeoff(t)
+            ctx.step_division = int(round(cfg["flight_step_division"]))
             return Tumble(Tumble.schema.validate(dict(position=TUCK, stiffness=cfg["tuck_stiffness"],
-                                                    move_time=cfg["tuck_time"])),
+                                                    move_time=cfg["tuck_time"], damping=cfg["tuck_damping"])),
                           ctx, self.rotation)
 
         def land(t):
@@ -172,6 +182,8 @@ class Somersault(Sequence):
     def update(self, t: float) -> None:
         self.rotation.update(t)
         super().update(t)
+        if self.ctx.step_division > 1 and getattr(self.current, "stage", "flight") != "flight":
+            self.ctx.step_division = 1      # touched down: the landing at the model's step, as calibrated
 
     @classmethod
     def assess(cls, trajectory):

@@ -188,6 +188,10 @@ class Tumble(Behaviour):
         Parameter("move_time", "s", 0.25, 0.05, 1.0, "time to move into the position"),
         Parameter("stiffness", "1", 1.0, 1.0, 4.0,
                   "gain factor of the hip, knee and spine servos while moving into the position (a snap)"),
+        Parameter("damping", "1", 0.0, 0.0, 8.0,
+                  "damping factor of those servos in the move; 0 = the stiffness x 2 above 1 (overdamped: "
+                  "with the 1 ms step a faster move let the flight's angular momentum drift; a lighter "
+                  "damping closes the position sooner, with a finer flight step)"),
     )
 
     def __init__(self, params, ctx: ControlContext, rotation: FlightRotation | None = None):
@@ -214,7 +218,7 @@ class Tumble(Behaviour):
         s.set_gains(np.arange(len(s.names)), s.default_kp, s.default_kv)
         trunk_and_legs = s.indices([n for n in s.names if n.startswith(("hip", "knee", "spine"))])
         k = self.params["stiffness"]
-        damping = k * (SNAP_DAMPING if k > 1.0 else 1.0)
+        damping = self.params["damping"] or snap_damping(k)
         s.set_gains(trunk_and_legs, s.default_kp[trunk_and_legs] * k, s.default_kv[trunk_and_legs] * damping)
         targets = self._targets()
         s.move_to(s.indices(list(targets)), np.array(list(targets.values())), self.params["move_time"], t)
@@ -237,6 +241,11 @@ class Tumble(Behaviour):
 
     def update(self, t: float) -> None:
         """The position is held by the servos; the rotation is measured by the owner."""
+
+
+def snap_damping(stiffness: float) -> float:
+    """The move's damping factor where none is given: the stiffness, doubled for a snap (> 1)."""
+    return stiffness * (SNAP_DAMPING if stiffness > 1.0 else 1.0)
 
 
 def rotation_to_come(rate_now: float, rate_open: float, time_left: float, open_time: float) -> float:
