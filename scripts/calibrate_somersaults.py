@@ -44,7 +44,7 @@ ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))      # this checkout's sim_core and rigs, not an installed one
 
 from sim_core.control.leap import LANDING_SLIDE_LIMIT  # noqa: E402
-from sim_core.control.somersault import DIRECTIONS, OLD_ROW, SETTINGS, TUNED_DIR, load_table  # noqa: E402
+from sim_core.control.somersault import DIRECTIONS, LANDING_SETTINGS, OLD_ROW, SETTINGS, TUNED_DIR, load_table  # noqa: E402
 from sim_core.control.tumble import snap_damping  # noqa: E402
 from sim_core.control.tuned import kept_message, merge_search, write_table  # noqa: E402
 from sim_core.simulate import RunRequest, run  # noqa: E402
@@ -112,9 +112,10 @@ def evaluate_all(jobs: list, pool=None) -> list:
 
 
 def search(character: str, direction: str, strength: str, iterations: int, population: int, seed: int,
-           start: dict, verbose: bool = False, pool=None) -> tuple[float, dict, dict]:
-    names = [n for n in SETTINGS if n in SPACE]              # searched; the others (the flight step) stay as started
-    fixed = {n: start[n] for n in SETTINGS if n not in SPACE}
+           start: dict, verbose: bool = False, pool=None, only: list | None = None) -> tuple[float, dict, dict]:
+    names = [n for n in SETTINGS if n in SPACE and (only is None or n in only)]   # searched; the others
+    # (the flight step, and those left out of ``only``) stay as started
+    fixed = {n: start[n] for n in SETTINGS if n not in names}
     low = np.array([SPACE[n][direction][0] for n in names])
     high = np.array([SPACE[n][direction][1] for n in names])
     rng = np.random.default_rng(seed)
@@ -186,11 +187,17 @@ def main() -> None:
                         help="start from START, not from the table's entry (its calibrated row, else its best searched run)")
     parser.add_argument("--verbose", action="store_true", help="print every improvement with its settings")
     parser.add_argument("--start", help="JSON settings to start from, over the table's (or START's)")
+    parser.add_argument("--names", type=lambda text: text.split(","),
+                        help="search only these settings (comma-separated, e.g. the landing's: "
+                             f"{','.join(LANDING_SETTINGS)}); the others stay as started")
     parser.add_argument("--processes", type=int, default=1,
                         help="simulate a population's somersaults in this many processes (the same result as 1)")
     args = parser.parse_args()
     if args.processes < 1:
         parser.error(f"--processes {args.processes}: must be at least 1")
+    unknown = sorted(set(args.names or ()) - set(SPACE))
+    if unknown:
+        parser.error(f"--names: {', '.join(unknown)} not searched settings; choose from {', '.join(SPACE)}")
     pool = Pool(args.processes) if args.processes > 1 else None
     for character in args.character or ("man", "woman"):
         for direction in args.direction or DIRECTIONS:
@@ -206,7 +213,7 @@ def main() -> None:
                 if not start["tuck_damping"]:                # the old rule's damping, as a searched value
                     start["tuck_damping"] = snap_damping(start["tuck_stiffness"])
                 score, settings, m = search(character, direction, strength, args.iterations, args.population,
-                                            args.seed, start, args.verbose, pool)
+                                            args.seed, start, args.verbose, pool, args.names)
                 rows, missing = merge_search(
                     table["somersaults"], table.get("not_found", []), {"direction": direction, "strength": strength},
                     found(m), {"settings": settings, "score": round(score, 4), "measured": m},
