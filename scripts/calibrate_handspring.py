@@ -4,8 +4,9 @@ aspect of this maneuver that required the most tuning was generating sufficient 
 velocity to land in a handstand position"), done by a search.
 
 For a character and strength, a cross-entropy search over the settings of every step (the sit,
-the thrust and arm swing, the arched flight, the hands' stiffness, the push's delay and moves, the
-snap-down and the landing) minimises, with every quantity read off the simulated handspring
+the thrust and arm swing, the arched flight, the hands' stiffness, the push's delay, moves and
+damping, the snap-down and the landing; the flights' physics step, `flight_step_division`, is not
+searched: it stays as started, 1 in rows made before it, `--start '{"flight_step_division": 8}'`) minimises, with every quantity read off the simulated handspring
 (sim_core.control.handspring.handspring_assess):
 
     score = (2 pi - min(rotation before any fall, 2 pi))        how far it turned before it fell
@@ -40,7 +41,7 @@ import numpy as np
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
-from sim_core.control.handspring import SETTINGS, TUNED_DIR, Handspring, load_table  # noqa: E402
+from sim_core.control.handspring import OLD_ROW, SETTINGS, TUNED_DIR, Handspring, load_table  # noqa: E402
 from sim_core.control.tuned import kept_message, merge_search, write_table  # noqa: E402
 from sim_core.simulate import RunRequest, run  # noqa: E402
 
@@ -52,7 +53,7 @@ SPACE = {                    # name: (low, high) of the search (inside the schem
     "thrust_lean": (-0.4, -0.1), "liftoff_hip": (0.0, 0.5), "arm_swing": (2.0, 3.1), "arm_gain": (2.0, 10.0),
     "arm_time": (0.06, 0.2), "thrust_damping": (0.2, 1.0), "arch_arm": (1.6, 3.0), "arch_hip": (0.0, 0.5),
     "neck": (-0.8, 0.0), "hand_gain": (1.0, 15.0), "push_delay": (0.0, 0.15), "push_shoulder": (1.5, 3.1),
-    "push_hip": (-1.5, 0.3), "snap_knee": (0.0, 1.0), "ready_height": (0.0, 0.7), "push_move": (0.05, 0.25), "push_gain": (1.0, 8.0), "land_lean": (0.0, 1.5),
+    "push_hip": (-1.5, 0.3), "snap_knee": (0.0, 1.0), "ready_height": (0.0, 0.7), "push_move": (0.05, 0.25), "push_gain": (1.0, 8.0), "push_damping": (0.5, 8.0), "land_lean": (0.0, 1.5),
     "open_height": (0.5, 1.0), "land_knee": (0.3, 0.9), "foot_delta": (-0.3, 0.1), "foot_lead": (0.0, 0.4),
     "spin_placement": (0.0, 0.5),
 }
@@ -94,7 +95,8 @@ def found(m: dict) -> bool:
 
 def search(character: str, strength: str, iterations: int, population: int, seed: int, start: dict,
            processes: int, verbose: bool = False, spread: float = 0.15) -> tuple[float, dict, dict]:
-    names = list(SETTINGS)
+    names = [n for n in SETTINGS if n in SPACE]       # searched; the flight step stays as started
+    fixed = {n: start[n] for n in SETTINGS if n not in names}
     low = np.array([SPACE[n][0] for n in names])
     high = np.array([SPACE[n][1] for n in names])
     rng = np.random.default_rng(seed)
@@ -106,7 +108,7 @@ def search(character: str, strength: str, iterations: int, population: int, seed
             samples = np.clip(rng.normal(mean, std, size=(population, len(names))), low, high)
             if iteration == 0:
                 samples[0] = mean
-            candidates = [{n: round(float(v), 4) for n, v in zip(names, x)} for x in samples]
+            candidates = [dict(fixed, **{n: round(float(v), 4) for n, v in zip(names, x)}) for x in samples]
             results = pool.map(evaluate, [(character, strength, c) for c in candidates])
             for settings, (s, m) in zip(candidates, results):
                 if found(m):
@@ -166,7 +168,8 @@ def main() -> None:
     table = load_table(args.character)
     old = [e for e in table["handsprings"] if e["strength"] == args.strength]
     defaults = {k: v for k, v in Handspring.schema.defaults().items() if k in SETTINGS}
-    start = dict(defaults, **(old[0]["settings"] if old else {}), **json.loads(args.start or "{}"))
+    start = {**defaults, **OLD_ROW, **(old[0]["settings"] if old else {}), **json.loads(args.start or "{}")}
+    start["push_damping"] = start["push_damping"] or start["push_gain"]     # the old rule, as a searched value
     s, settings, m = search(args.character, args.strength, args.iterations, args.population, args.seed, start,
                             args.processes, args.verbose, args.spread)
     rows, missing = merge_search(

@@ -31,7 +31,8 @@ from sim_core.control.behaviour import Behaviour, ControlContext, register
 from sim_core.control.leap import (ANKLE_GAIN_VERTICAL, AIRBORNE_HEIGHT, TUNED_DIR, VERTICAL_TIMING, Airborne,
                                    Landing, LeapThrust, balance_after_landing, run_strength)
 from sim_core.control.sequencer import Sequence, Step
-from sim_core.control.somersault import ROTATION_TOLERANCE, SQUAT_LOWEST, pelvis_pitch
+from sim_core.control.somersault import (FLIGHT_STEP_PARAMETER, ROTATION_TOLERANCE, SQUAT_LOWEST,
+                                         model_step_once_landed, pelvis_pitch)
 from sim_core.control.tumble import FlightRotation, both_sides
 from sim_core.control.tuned import uncalibrated
 from sim_core.schema import Parameter, Schema
@@ -52,9 +53,11 @@ ARMS = ["shoulder_r_z", "shoulder_l_z", "shoulder_r_x", "shoulder_l_x", "elbow_r
 TAKEOFF_SETTINGS = ("crouch_height", "crouch_pitch", "com_offset", "sit_extra", "thrust_lean", "liftoff_hip",
                     "arm_swing", "arm_gain", "arm_time", "thrust_damping")
 HAND_SETTINGS = ("arch_arm", "arch_hip", "neck", "hand_gain", "push_delay", "push_shoulder", "push_hip",
-                 "snap_knee", "push_move", "push_gain")
+                 "snap_knee", "push_move", "push_gain", "push_damping")
 LANDING_SETTINGS = ("land_lean", "open_height", "ready_height", "land_knee", "foot_delta", "foot_lead", "spin_placement")
-SETTINGS = TAKEOFF_SETTINGS + HAND_SETTINGS + LANDING_SETTINGS
+SETTINGS = TAKEOFF_SETTINGS + HAND_SETTINGS + LANDING_SETTINGS + ("flight_step_division",)
+OLD_ROW = {"push_damping": 0.0, "flight_step_division": 1}   # what a row calibrated before these settings
+                            # ran with: it reproduces
 
 
 def load_table(character: str) -> dict:
@@ -93,9 +96,10 @@ class PoseMove(Behaviour):
     schema = Schema()
 
     def __init__(self, ctx: ControlContext, goals: dict[str, float], move_time: float, gain: float = 1.0,
-                 gain_joints: list[str] | None = None):
+                 gain_joints: list[str] | None = None, damping: float | None = None):
         super().__init__({}, ctx)
         self.goals, self.move_time, self.gain = goals, move_time, gain
+        self.damping = gain if damping is None else damping       # a factor on the servos' damping
         self.gain_joints = list(goals) if gain_joints is None else gain_joints
 
     def start(self, t: float) -> None:
@@ -104,7 +108,7 @@ class PoseMove(Behaviour):
         s.hold(s.smoothed_target(t), t)
         s.move_to(s.indices(list(self.goals)), np.array(list(self.goals.values())), self.move_time, t)
         stiff = s.indices(self.gain_joints)
-        s.set_gains(stiff, s.default_kp[stiff] * self.gain, s.default_kv[stiff] * self.gain)
+        s.set_gains(stiff, s.default_kp[stiff] * self.gain, s.default_kv[stiff] * self.damping)
 
     def update(self, t: float) -> None:
         """The servos hold the pose."""
@@ -144,6 +148,9 @@ class Handspring(Sequence):
         Parameter("snap_knee", "rad", 0.1325, 0.0, 1.2, "knee bend of the snap-down (low_level only)"),
         Parameter("push_move", "s", 0.0701, 0.03, 0.3, "duration of the push's moves (low_level only)"),
         Parameter("push_gain", "1", 6.5252, 1.0, 10.0, "gain factor of the servos of the push (low_level only)"),
+        Parameter("push_damping", "1", 0.0, 0.0, 10.0,
+                  "damping factor of the servos of the push; 0 = push_gain (damped as much as stiffened, so no "
+                  "faster than the default servo); lighter moves the block and the snap-down sooner (low_level only)"),
         Parameter("land_lean", "rad", 1.1018, 0.0, 1.6,
                   "the landing starts when the pelvis has turned this much short of one turn (low_level only)"),
         Parameter("open_height", "m", 0.7865, 0.4, 1.1,
@@ -156,13 +163,14 @@ class Handspring(Sequence):
                   "landing: the feet land this many seconds of horizontal COM travel ahead of the COM (low_level only)"),
         Parameter("spin_placement", "s/m", 0, 0.0, 0.5,
                   "landing: feet placed this factor x (angular momentum / mass) against the spin (low_level only)"),
+        FLIGHT_STEP_PARAMETER,
     )
 
     def settings(self) -> dict:
         p = self.params
         if p["low_level"]:
             return {k: p[k] for k in SETTINGS}
-        return dict(calibrated(self.ctx.character.name, run_strength(self.ctx))["settings"])
+        return dict(OLD_ROW, **calibrated(self.ctx.character.name, run_strength(self.ctx))["settings"])
 
     def check_feasible(self) -> None:
         if self.params["low_level"]:
@@ -205,6 +213,10 @@ class Handspring(Sequence):
             self.t_hands = t
             return PoseMove(ctx, {}, 0.1, c["hand_gain"], gain_joints=ARMS)
 
+        def arch_flight(t):
+            ctx.step_division = int(round(c["flight_step_division"]))     # until the feet land
+            return PoseMove(ctx, arch, ARCH_MOVE, ARCH_GAIN)
+
         def pushed_off(b, t):
             return (t - self.t_hands > c["push_delay"] + PUSH_CLEAR and not self.hands.touching(ctx.data)
                     and self.airborne.in_flight(ctx.data))
@@ -222,10 +234,11 @@ class Handspring(Sequence):
         return [
             Step("crouch", sit, fallen_back),
             Step("thrust", thrust, lambda b, t: b.lifted_off()),
-            Step("arch", lambda t: PoseMove(ctx, arch, ARCH_MOVE, ARCH_GAIN), lambda b, t: self.hands.touching(ctx.data)),
+            Step("arch", arch_flight, lambda b, t: self.hands.touching(ctx.data)),
             Step("hands", hands, lambda b, t: t - self.t_hands >= c["push_delay"]),
             Step("push", lambda t: PoseMove(ctx, push, c["push_move"], c["push_gain"],
-                                            gain_joints=list(push) + ["elbow_r_z", "elbow_l_z"]), pushed_off),
+                                            gain_joints=list(push) + ["elbow_r_z", "elbow_l_z"],
+                                            damping=c["push_damping"] or None), pushed_off),
             Step("snap", lambda t: PoseMove(ctx, {}, 0.1), open_for_landing),
             Step("land", land, lambda b, t: b.finished),
             Step("balance", lambda t: balance_after_landing(ctx, self.previous))]
@@ -233,6 +246,7 @@ class Handspring(Sequence):
     def update(self, t: float) -> None:
         self.rotation.update(t)
         super().update(t)
+        model_step_once_landed(self.ctx, self.current)
 
     @classmethod
     def assess(cls, trajectory):

@@ -50,6 +50,19 @@ OLD_ROW = {"tuck_time": TUCK_MOVE, "tuck_damping": 0.0, "flight_step_division": 
                             # made before these settings ran with: every stored row reproduces
 
 
+FLIGHT_STEP_PARAMETER = Parameter(
+    "flight_step_division", "1", 1.0, 1.0, 8.0,
+    "the physics step from the take-off to the feet's touchdown is the model's divided by this (a whole number; "
+    "8 as in the dives: fast moves in flight keep the angular momentum within 1 %) (low_level only)")
+
+
+def model_step_once_landed(ctx, current) -> None:
+    """Back to the model's physics step once the landing's feet are down (a flight run at a finer
+    one, ``flight_step_division``): the landing runs as it was calibrated."""
+    if ctx.step_division > 1 and isinstance(current, Landing) and current.stage != "flight":
+        ctx.step_division = 1
+
+
 def load_table(character: str) -> dict:
     path = TUNED_DIR / f"somersaults_{character}.json"
     return json.loads(path.read_text()) if path.exists() else {"somersaults": []}
@@ -92,10 +105,7 @@ class Somersault(Sequence):
         Parameter("tuck_damping", "1", 0.0, 0.0, 8.0,
                   "damping factor of the hip, knee and spine servos in the move into the tuck; 0 = tuck_stiffness "
                   "x 2 (overdamped, slow to close); lighter closes the tuck sooner (low_level only)"),
-        Parameter("flight_step_division", "1", 1.0, 1.0, 8.0,
-                  "the physics step from the take-off to the touchdown is the model's divided by this (a whole "
-                  "number; 8 as in the dives: a fast tuck keeps the flight's angular momentum within 1 %) "
-                  "(low_level only)"),
+        FLIGHT_STEP_PARAMETER,
         Parameter("landing_lean", "rad", 0.4, -0.5, 1.0,
                   "the body opens to land this far short of the full turn (whole-body angle at touchdown; "
                   "the landing's ground force turns the rest) (low_level only)"),
@@ -182,8 +192,7 @@ class Somersault(Sequence):
     def update(self, t: float) -> None:
         self.rotation.update(t)
         super().update(t)
-        if self.ctx.step_division > 1 and getattr(self.current, "stage", "flight") != "flight":
-            self.ctx.step_division = 1      # touched down: the landing at the model's step, as calibrated
+        model_step_once_landed(self.ctx, self.current)
 
     @classmethod
     def assess(cls, trajectory):
