@@ -41,8 +41,8 @@ import numpy as np
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
-from sim_core.control.handspring import OLD_ROW, SETTINGS, TUNED_DIR, Handspring, load_table  # noqa: E402
-from sim_core.control.tuned import kept_message, merge_search, write_table  # noqa: E402
+from sim_core.control.handspring import HAND_SETTINGS, OLD_ROW, SETTINGS, TUNED_DIR, Handspring, load_table  # noqa: E402
+from sim_core.control.tuned import kept_message, merge_search, names_option, write_table  # noqa: E402
 from sim_core.simulate import RunRequest, run  # noqa: E402
 
 DURATION = 5.0
@@ -94,8 +94,10 @@ def found(m: dict) -> bool:
 
 
 def search(character: str, strength: str, iterations: int, population: int, seed: int, start: dict,
-           processes: int, verbose: bool = False, spread: float = 0.15) -> tuple[float, dict, dict]:
-    names = [n for n in SETTINGS if n in SPACE]       # searched; the flight step stays as started
+           processes: int, verbose: bool = False, spread: float = 0.15,
+           only: list | None = None) -> tuple[float, dict, dict]:
+    names = [n for n in SETTINGS if n in SPACE and (only is None or n in only)]   # searched; the others
+    # (the flight step, and those left out of ``only``) stay as started
     fixed = {n: start[n] for n in SETTINGS if n not in names}
     low = np.array([SPACE[n][0] for n in names])
     high = np.array([SPACE[n][1] for n in names])
@@ -163,6 +165,7 @@ def main() -> None:
                         help="the first samples' standard deviation, as a share of each setting's search range")
     parser.add_argument("--verbose", action="store_true", help="print every improvement with its settings")
     parser.add_argument("--start", help="JSON settings to start from, over the table's (or the schema's defaults)")
+    names_option(parser, SPACE, HAND_SETTINGS)
     args = parser.parse_args()
     started = time.time()
     table = load_table(args.character)
@@ -171,7 +174,7 @@ def main() -> None:
     start = {**defaults, **OLD_ROW, **(old[0]["settings"] if old else {}), **json.loads(args.start or "{}")}
     start["push_damping"] = start["push_damping"] or start["push_gain"]     # the old rule, as a searched value
     s, settings, m = search(args.character, args.strength, args.iterations, args.population, args.seed, start,
-                            args.processes, args.verbose, args.spread)
+                            args.processes, args.verbose, args.spread, args.names)
     rows, missing = merge_search(
         table["handsprings"], table.get("not_found", []), {"strength": args.strength}, found(m),
         {"settings": settings, "score": round(s, 4), "measured": m},

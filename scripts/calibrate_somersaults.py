@@ -46,7 +46,7 @@ sys.path.insert(0, str(ROOT))      # this checkout's sim_core and rigs, not an i
 from sim_core.control.leap import LANDING_SLIDE_LIMIT  # noqa: E402
 from sim_core.control.somersault import DIRECTIONS, LANDING_SETTINGS, OLD_ROW, SETTINGS, TUNED_DIR, load_table  # noqa: E402
 from sim_core.control.tumble import snap_damping  # noqa: E402
-from sim_core.control.tuned import kept_message, merge_search, write_table  # noqa: E402
+from sim_core.control.tuned import kept_message, merge_search, names_option, write_table  # noqa: E402
 from sim_core.simulate import RunRequest, run  # noqa: E402
 
 DURATION = 5.0
@@ -187,17 +187,12 @@ def main() -> None:
                         help="start from START, not from the table's entry (its calibrated row, else its best searched run)")
     parser.add_argument("--verbose", action="store_true", help="print every improvement with its settings")
     parser.add_argument("--start", help="JSON settings to start from, over the table's (or START's)")
-    parser.add_argument("--names", type=lambda text: text.split(","),
-                        help="search only these settings (comma-separated, e.g. the landing's: "
-                             f"{','.join(LANDING_SETTINGS)}); the others stay as started")
+    names_option(parser, SPACE, LANDING_SETTINGS)
     parser.add_argument("--processes", type=int, default=1,
                         help="simulate a population's somersaults in this many processes (the same result as 1)")
     args = parser.parse_args()
     if args.processes < 1:
         parser.error(f"--processes {args.processes}: must be at least 1")
-    unknown = sorted(set(args.names or ()) - set(SPACE))
-    if unknown:
-        parser.error(f"--names: {', '.join(unknown)} not searched settings; choose from {', '.join(SPACE)}")
     pool = Pool(args.processes) if args.processes > 1 else None
     for character in args.character or ("man", "woman"):
         for direction in args.direction or DIRECTIONS:

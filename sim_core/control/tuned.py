@@ -3,6 +3,7 @@ skills): a table is written whole or not at all, and a skill that has no calibra
 character and strength is refused with what the calibration measured."""
 from __future__ import annotations
 
+import argparse
 import json
 import os
 from pathlib import Path
@@ -15,6 +16,20 @@ def write_table(path: Path, table: dict) -> None:
     tmp = path.with_suffix(".tmp")
     tmp.write_text(json.dumps(table, indent=1) + "\n")
     os.replace(tmp, path)
+
+
+def names_option(parser, space, example: tuple) -> None:
+    """A calibration script's ``--names`` option: search only these settings (comma-separated, each
+    one of ``space``'s), the others staying as the search starts; ``example`` is named in the help."""
+    def names(text: str) -> list[str]:
+        chosen = text.split(",")
+        unknown = [n for n in chosen if n not in space]
+        if unknown:
+            raise argparse.ArgumentTypeError(f"{', '.join(unknown)}: not searched settings; choose from {', '.join(space)}")
+        return chosen
+
+    parser.add_argument("--names", type=names, help="search only these settings (comma-separated, e.g. "
+                        f"{','.join(example)}); the others stay as the search starts")
 
 
 def uncalibrated(character: str, skill: str, strength: str, calibrated: list[str], best: str | None,
