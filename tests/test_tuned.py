@@ -1,7 +1,11 @@
 """The calibrated tables' bookkeeping (sim_core/control/tuned.py): what a calibration run keeps."""
 import json
 
-from sim_core.control.tuned import merge_search, write_table
+import argparse
+
+import pytest
+
+from sim_core.control.tuned import merge_search, names_option, write_table
 
 KEY = {"direction": "backward", "strength": "human"}
 OTHER = {"direction": "forward", "strength": "human", "settings": {"a": 1}}
@@ -34,3 +38,16 @@ def test_a_table_is_written_whole(tmp_path):
     path = tmp_path / "table.json"
     write_table(path, {"rows": [1, 2]})
     assert json.loads(path.read_text()) == {"rows": [1, 2]} and not list(tmp_path.glob("*.tmp"))
+
+
+def test_a_calibration_searches_only_the_settings_named_and_refuses_an_unknown_one(capsys):
+    """--names of the calibration scripts: the named settings, or a clear refusal naming the
+    allowed ones (argparse exits with status 2)."""
+    parser = argparse.ArgumentParser()
+    names_option(parser, {"open_time": (0.03, 0.4), "foot_delta": (-0.3, 0.3)}, ("open_time",))
+    assert parser.parse_args(["--names", "open_time,foot_delta"]).names == ["open_time", "foot_delta"]
+    assert parser.parse_args([]).names is None
+    with pytest.raises(SystemExit) as refused:
+        parser.parse_args(["--names", "open_time,tuck"])
+    assert refused.value.code == 2
+    assert "tuck: not searched settings; choose from open_time, foot_delta" in capsys.readouterr().err
