@@ -42,7 +42,7 @@ ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
 from sim_core.control.handspring import HAND_SETTINGS, OLD_ROW, SETTINGS, TUNED_DIR, Handspring, load_table  # noqa: E402
-from sim_core.control.tuned import kept_message, merge_search, names_option, write_table  # noqa: E402
+from sim_core.control.tuned import kept_message, merge_search, names_option, searched_and_fixed, write_table  # noqa: E402
 from sim_core.simulate import RunRequest, run  # noqa: E402
 
 DURATION = 5.0
@@ -96,9 +96,7 @@ def found(m: dict) -> bool:
 def search(character: str, strength: str, iterations: int, population: int, seed: int, start: dict,
            processes: int, verbose: bool = False, spread: float = 0.15,
            only: list | None = None) -> tuple[float, dict, dict]:
-    names = [n for n in SETTINGS if n in SPACE and (only is None or n in only)]   # searched; the others
-    # (the flight step, and those left out of ``only``) stay as started
-    fixed = {n: start[n] for n in SETTINGS if n not in names}
+    names, fixed = searched_and_fixed(SETTINGS, SPACE, only, start)
     low = np.array([SPACE[n][0] for n in names])
     high = np.array([SPACE[n][1] for n in names])
     rng = np.random.default_rng(seed)

@@ -46,7 +46,7 @@ sys.path.insert(0, str(ROOT))      # this checkout's sim_core and rigs, not an i
 from sim_core.control.leap import LANDING_SLIDE_LIMIT  # noqa: E402
 from sim_core.control.somersault import DIRECTIONS, LANDING_SETTINGS, OLD_ROW, SETTINGS, TUNED_DIR, load_table  # noqa: E402
 from sim_core.control.tumble import snap_damping  # noqa: E402
-from sim_core.control.tuned import kept_message, merge_search, names_option, write_table  # noqa: E402
+from sim_core.control.tuned import kept_message, merge_search, names_option, searched_and_fixed, write_table  # noqa: E402
 from sim_core.simulate import RunRequest, run  # noqa: E402
 
 DURATION = 5.0
@@ -113,9 +113,7 @@ def evaluate_all(jobs: list, pool=None) -> list:
 
 def search(character: str, direction: str, strength: str, iterations: int, population: int, seed: int,
            start: dict, verbose: bool = False, pool=None, only: list | None = None) -> tuple[float, dict, dict]:
-    names = [n for n in SETTINGS if n in SPACE and (only is None or n in only)]   # searched; the others
-    # (the flight step, and those left out of ``only``) stay as started
-    fixed = {n: start[n] for n in SETTINGS if n not in names}
+    names, fixed = searched_and_fixed(SETTINGS, SPACE, only, start)
     low = np.array([SPACE[n][direction][0] for n in names])
     high = np.array([SPACE[n][direction][1] for n in names])
     rng = np.random.default_rng(seed)

@@ -51,3 +51,14 @@ def test_a_calibration_searches_only_the_settings_named_and_refuses_an_unknown_o
         parser.parse_args(["--names", "open_time,tuck"])
     assert refused.value.code == 2
     assert "tuck: not searched settings; choose from open_time, foot_delta" in capsys.readouterr().err
+
+
+def test_a_search_varies_the_named_settings_of_its_space_and_keeps_the_others_as_started():
+    from sim_core.control.tuned import searched_and_fixed
+    settings = ("crouch_height", "open_time", "foot_delta", "flight_step_division")
+    space = {"crouch_height": (0.4, 0.9), "open_time": (0.03, 0.4), "foot_delta": (-0.3, 0.3)}
+    start = {"crouch_height": 0.7, "open_time": 0.1, "foot_delta": 0.0, "flight_step_division": 8}
+    assert searched_and_fixed(settings, space, None, start) == (
+        ["crouch_height", "open_time", "foot_delta"], {"flight_step_division": 8})
+    assert searched_and_fixed(settings, space, ["foot_delta", "open_time"], start) == (
+        ["open_time", "foot_delta"], {"crouch_height": 0.7, "flight_step_division": 8})

@@ -31,8 +31,7 @@ from sim_core.control.behaviour import Behaviour, ControlContext, register
 from sim_core.control.leap import (ANKLE_GAIN_VERTICAL, AIRBORNE_HEIGHT, TUNED_DIR, VERTICAL_TIMING, Airborne,
                                    Landing, LeapThrust, balance_after_landing, run_strength)
 from sim_core.control.sequencer import Sequence, Step
-from sim_core.control.somersault import (FLIGHT_STEP_PARAMETER, ROTATION_TOLERANCE, SQUAT_LOWEST,
-                                         model_step_once_landed, pelvis_pitch)
+from sim_core.control.somersault import FLIGHT_STEP_PARAMETER, ROTATION_TOLERANCE, SQUAT_LOWEST, pelvis_pitch
 from sim_core.control.tumble import FlightRotation, both_sides
 from sim_core.control.tuned import uncalibrated
 from sim_core.schema import Parameter, Schema
@@ -214,7 +213,7 @@ class Handspring(Sequence):
             return PoseMove(ctx, {}, 0.1, c["hand_gain"], gain_joints=ARMS)
 
         def arch_flight(t):
-            ctx.step_division = int(round(c["flight_step_division"]))     # until the feet land
+            ctx.step_division = int(round(c["flight_step_division"]))     # until the landing's touchdown
             return PoseMove(ctx, arch, ARCH_MOVE, ARCH_GAIN)
 
         def pushed_off(b, t):
@@ -246,7 +245,6 @@ class Handspring(Sequence):
     def update(self, t: float) -> None:
         self.rotation.update(t)
         super().update(t)
-        model_step_once_landed(self.ctx, self.current)
 
     @classmethod
     def assess(cls, trajectory):

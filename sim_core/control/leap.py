@@ -321,6 +321,7 @@ class Landing(Behaviour):
             toe_point *= min(max((TOE_FADE_SPEED[1] - abs(vx)) / (TOE_FADE_SPEED[1] - TOE_FADE_SPEED[0]), 0.0), 1.0)
         if self.stage == "flight" and self.airborne.touching(d):
             self.stage = "absorb"
+            self.ctx.step_division = 1      # a flight run at a finer physics step lands at the model's
             self.touchdown_knee_speed = max(abs(float(velocities[self.knees].mean())), 1e-3)
             self.knees_touched_at = angles[self.knees].copy()
             s.set_gains(self.knees, s.default_kp[self.knees] * SOFT_KNEE_KP, s.default_kv[self.knees] * SOFT_KNEE_KV)

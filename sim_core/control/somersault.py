@@ -52,15 +52,9 @@ OLD_ROW = {"tuck_time": TUCK_MOVE, "tuck_damping": 0.0, "flight_step_division": 
 
 FLIGHT_STEP_PARAMETER = Parameter(
     "flight_step_division", "1", 1.0, 1.0, 8.0,
-    "the physics step from the take-off to the feet's touchdown is the model's divided by this (a whole number; "
-    "8 as in the dives: fast moves in flight keep the angular momentum within 1 %) (low_level only)")
-
-
-def model_step_once_landed(ctx, current) -> None:
-    """Back to the model's physics step once the landing's feet are down (a flight run at a finer
-    one, ``flight_step_division``): the landing runs as it was calibrated."""
-    if ctx.step_division > 1 and isinstance(current, Landing) and current.stage != "flight":
-        ctx.step_division = 1
+    "the physics step from the take-off to the feet's touchdown (the landing's, which goes back to the model's "
+    "step) is the model's divided by this (a whole number; 8 as in the dives: fast moves in flight keep the "
+    "angular momentum within 1 %) (low_level only)")
 
 
 def load_table(character: str) -> dict:
@@ -192,7 +186,6 @@ class Somersault(Sequence):
     def update(self, t: float) -> None:
         self.rotation.update(t)
         super().update(t)
-        model_step_once_landed(self.ctx, self.current)
 
     @classmethod
     def assess(cls, trajectory):

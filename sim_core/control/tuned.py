@@ -32,6 +32,13 @@ def names_option(parser, space, example: tuple) -> None:
                         f"{','.join(example)}); the others stay as the search starts")
 
 
+def searched_and_fixed(settings, space, only: list | None, start: dict) -> tuple[list[str], dict]:
+    """The settings a search varies (those of ``space``, or of ``only`` among them), in the skill's
+    order, and the others at their ``start`` values (the flight step, those left out of ``only``)."""
+    names = [n for n in settings if n in space and (only is None or n in only)]
+    return names, {n: start[n] for n in settings if n not in names}
+
+
 def uncalibrated(character: str, skill: str, strength: str, calibrated: list[str], best: str | None,
                  script: str) -> ParameterError:
     """The refusal of a skill with no calibrated settings: which skill and strength, what the
