@@ -254,15 +254,17 @@ def _tune_running():
 
 def test_evaluation_function_adds_the_fig_12_gait_at_the_fast_end():
     """scripts/tune_running.py's evaluation (docs/running.md): the gait term against Fig. 12
-    counts from 4.5 m/s up, not at the slower speeds; a speed error beyond the band costs more."""
+    (step frequency, step length, stance fraction) counts from 4.5 m/s up, not at the slower
+    speeds; a speed error or a Fig. 12 error beyond its band costs more."""
     tune = _tune_running()
     run_ = {"t_up": 20.0, "duration": 20.0, "mean_speed": 4.5, "head_acc_g": 0.0, "attitude_variation": 0.0,
-            "gait_error": 0.4}
-    assert tune.evaluation([dict(run_, speed=4.5)]) == pytest.approx(tune.W_GAIT * 0.4)
+            "gait_errors": [0.05, 0.05, 0.02]}
+    assert tune.evaluation([dict(run_, speed=4.5)]) == pytest.approx(tune.W_GAIT * 0.04)
     assert tune.evaluation([dict(run_, speed=3.5, mean_speed=3.5)]) == pytest.approx(0.0)
-    fell = dict(run_, speed=4.5, t_up=10.0, mean_speed=4.05)
+    fell = dict(run_, speed=4.5, t_up=10.0, mean_speed=4.05, gait_errors=[0.15, 0.1, 0.05])
     assert tune.evaluation([fell]) == pytest.approx(
-        tune.W_FALL * 0.5 + tune.W_SPEED * 0.1 + tune.W_BAND * (0.1 - tune.BAND) + tune.W_GAIT * 0.4)
+        tune.W_FALL * 0.5 + tune.W_SPEED * 0.1 + tune.W_BAND * (0.1 - tune.BAND) + tune.W_GAIT * 0.1
+        + tune.W_GAIT_BAND * (0.15 - tune.GAIT_BAND + 0.1 - tune.GAIT_BAND))
 
 
 def test_evaluation_function_scores_the_courses_on_falls_and_path_deviation():
@@ -270,7 +272,7 @@ def test_evaluation_function_scores_the_courses_on_falls_and_path_deviation():
     deviation (at most 1 m), averaged with the straight runs."""
     tune = _tune_running()
     straight = {"speed": 3.5, "t_up": 30.0, "duration": 30.0, "mean_speed": 3.5, "head_acc_g": 0.0,
-                "attitude_variation": 0.0, "gait_error": 0.4}
+                "attitude_variation": 0.0, "gait_errors": [0.4, 0.4, 0.4]}
     turn = {"speed": 3.5, "t_up": 12.0, "duration": 24.0, "course": True, "deviation": 0.2}
     eight = {"speed": 3.5, "t_up": 40.0, "duration": 40.0, "course": True, "deviation": 3.0}
     assert tune.evaluation([straight, turn, eight]) == pytest.approx(
