@@ -125,6 +125,7 @@ def test_broad_jump_travels_the_commanded_distance_and_lands_balanced(name, dist
     assert traj.meta["outcome"] == "success", m
     assert abs(m["com_travel"] - distance) <= 0.1 * distance
     assert m["landing_skid"] <= 0.05
+    assert not m["stepped"]         # the landing's slide, not the jump's travel from the start
 
 
 def test_the_stated_range_of_commandable_heights_is_the_one_that_runs():

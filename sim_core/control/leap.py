@@ -460,6 +460,9 @@ def leap_assess(trajectory, squat_floor: float | None = None) -> tuple[str, dict
         settle = min(int(SETTLE_TIME * trajectory.meta["control_rate"]), len(after) - 1)
         metrics["foot_slide_after_landing"] = float(
             np.linalg.norm(after - after[settle], axis=2).max()) if len(after) else 0.0
+        # a jump travels: the standard "stepped" (a foot away from where it stood at the start)
+        # would always hold; after a flight it is the landing's (a foot sliding from where it settled)
+        metrics["stepped"] = bool(metrics["foot_slide_after_landing"] > LANDING_SLIDE_LIMIT)
         # the middle of the feet from the first touchdown until they have settled: feet that skate
         # or bounce back under the body have not landed where they touched down
         down = ~flying[first:]
