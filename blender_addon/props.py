@@ -5,6 +5,7 @@ parameter schema: no behaviour has UI code of its own (Rigify's rig types are th
     unit 'm'    -> FloatProperty(subtype DISTANCE, unit LENGTH)
     unit 's'    -> FloatProperty(unit TIME_ABSOLUTE) where Blender has it
     unit 'bool' -> BoolProperty
+    unit 'count' -> IntProperty (a whole number)
     other units -> FloatProperty labelled with the unit
 Hard limits come from the schema's range (widened to admit a documented special value, such as
 ``pelvis_height = 0``: standing); the schema still validates before anything runs.
@@ -43,6 +44,9 @@ def parameter_property(p):
     lo, hi = p.minimum, p.maximum
     if p.special is not None:
         lo, hi = min(lo, p.special), max(hi, p.special)
+    if p.unit == "count":
+        return IntProperty(name=f"{label(p.name)} (count)", description=tooltip(p), default=int(p.default),
+                           min=int(lo), max=int(hi))
     kw = dict(name=label(p.name), description=tooltip(p), default=float(p.default), min=lo, max=hi,
               precision=3)
     if p.unit == "rad":

@@ -11,7 +11,8 @@ from sim_core.errors import ParameterError
 @dataclass(frozen=True)
 class Parameter:
     name: str
-    unit: str               # SI unit ('m', 'rad', 's', 'N', 'rad/m', '1' for a bare number, 'bool')
+    unit: str               # SI unit ('m', 'rad', 's', 'N', 'rad/m', '1' for a bare number, 'count' for a
+                            # whole number, 'bool')
     default: float
     minimum: float
     maximum: float
@@ -38,6 +39,8 @@ class Parameter:
             return value
         if self.unit == "bool" and value not in (0.0, 1.0):
             raise ParameterError(f"parameter {self.name}={value:g} must be 0 or 1")
+        if self.unit == "count" and value != round(value):
+            raise ParameterError(f"parameter {self.name}={value:g} must be a whole number; {self.allowed()}")
         if not self.minimum <= value <= self.maximum:
             raise ParameterError(f"parameter {self.name}={value:g} {self.unit} is out of range; {self.allowed()}")
         return value

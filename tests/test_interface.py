@@ -41,6 +41,13 @@ def test_schema_errors_name_value_and_range(value, message):
     assert message in str(err.value)
 
 
+def test_a_count_must_be_a_whole_number():
+    schema = behaviour_class("somersault").schema
+    assert schema.validate({"flight_step_division": 8})["flight_step_division"] == 8.0
+    with pytest.raises(ParameterError, match=r"flight_step_division=2.5 must be a whole number; allowed range .* \[1, 8\] count"):
+        schema.parse_assignments(["flight_step_division=2.5"])
+
+
 def test_unknown_parameter():
     with pytest.raises(ParameterError, match="unknown parameter 'height'"):
         behaviour_class("balance").schema.validate({"height": 1})

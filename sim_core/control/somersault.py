@@ -51,7 +51,7 @@ OLD_ROW = {"tuck_time": TUCK_MOVE, "tuck_damping": 0.0, "flight_step_division": 
 
 
 FLIGHT_STEP_PARAMETER = Parameter(
-    "flight_step_division", "1", 1.0, 1.0, 8.0,
+    "flight_step_division", "count", 1.0, 1.0, 8.0,
     "the physics step from the take-off to the feet's touchdown (the landing's, which goes back to the model's "
     "step) is the model's divided by this (a whole number; 8 as in the dives: fast moves in flight keep the "
     "angular momentum within 1 %) (low_level only)")

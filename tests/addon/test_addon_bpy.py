@@ -73,7 +73,7 @@ def test_panel_properties_are_generated_from_the_schema(addon):
             if p.unit == "bool":
                 assert prop.type == "BOOLEAN" and prop.default == bool(p.default)
                 continue
-            assert prop.type == "FLOAT"
+            assert prop.type == ("INT" if p.unit == "count" else "FLOAT")
             assert prop.default == pytest.approx(p.default)
             assert props.as_typed(prop.hard_min) <= p.minimum and props.as_typed(prop.hard_max) >= p.maximum
             if p.unit == "rad":
