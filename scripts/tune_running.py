@@ -82,7 +82,7 @@ GRAVITY = 9.80665
 
 def scenario(args) -> dict:
     """One run from a stand; the terms of the evaluation function."""
-    from sim_core.gait import compare_with_human, head_acceleration, stride_attitude_variation
+    from sim_core.gait import HUMAN_FIG12, compare_with_human, head_acceleration, stride_attitude_variation
     from sim_core.simulate import RunRequest, run
     from sim_core.control.running import SpeedTable
     table, speed, start_lean, duration, character, strength, course = args
@@ -106,7 +106,7 @@ def scenario(args) -> dict:
     att = stride_attitude_variation(traj, t_from=max(0.0, end - 5.0)) if not m["fell"] else float("nan")
     if not math.isfinite(att):
         att = 0.5
-    compared = compare_with_human(m["gait"], character if character in ("man", "woman") else "man")
+    compared = compare_with_human(m["gait"], character if character in HUMAN_FIG12 else "man")
     gait = [1.0 if c["relative_error"] is None else abs(c["relative_error"]) for c in compared.values()]
     return {"speed": speed, "t_up": t_up, "duration": duration, "mean_speed": v, "head_acc_g": head,
             "attitude_variation": att, "gait_errors": gait}

@@ -213,7 +213,7 @@ class Handspring(Sequence):
             return PoseMove(ctx, {}, 0.1, c["hand_gain"], gain_joints=ARMS)
 
         def arch_flight(t):
-            ctx.step_division = int(round(c["flight_step_division"]))     # until the landing's touchdown
+            ctx.step_division = int(c["flight_step_division"])     # until the landing's touchdown
             return PoseMove(ctx, arch, ARCH_MOVE, ARCH_GAIN)
 
         def pushed_off(b, t):

@@ -153,7 +153,7 @@ class Somersault(Sequence):
 
         def tuck(t):
             self.rotation.takeoff(t)
-            ctx.step_division = int(round(cfg["flight_step_division"]))
+            ctx.step_division = int(cfg["flight_step_division"])
             return Tumble(Tumble.schema.validate(dict(position=TUCK, stiffness=cfg["tuck_stiffness"],
                                                     move_time=cfg["tuck_time"], damping=cfg["tuck_damping"])),
                           ctx, self.rotation)
