@@ -151,7 +151,7 @@ class Evaluator:
         self.leans = tuple(leans)
         # with ``faster``, also the runs at the table's faster speeds: a runner accelerating to them
         # is looked up at its ramped command, so it passes through this row on the way
-        self.faster = tuple(v for v in table.speeds if v > speed + 1e-9) if faster else ()
+        self.faster = tuple(faster_speeds(table.speeds, [speed])) if faster else ()
         self.courses = STEERING_COURSES if courses else ()
         self.log = log          # a file that gets one JSON line per evaluation (the search can be read back)
         self.character, self.strength = character, strength
@@ -223,6 +223,11 @@ def with_found_rows(table: SpeedTable, names: list[str], found: dict[float, list
     for speed, x in found.items():
         table = table.with_row(speed, dict(zip(names, map(float, x))))
     return table
+
+
+def faster_speeds(speeds: list[float], rows: list[float]) -> list[float]:
+    """The table's speeds above the slowest of ``rows``: their runs accelerate through those rows."""
+    return [v for v in speeds if any(v > row + 1e-9 for row in rows)]
 
 
 def write_atomically(path: Path, data: dict) -> None:
@@ -419,6 +424,11 @@ def main(argv=None) -> int:
         "command": "python3 scripts/tune_running.py " + " ".join(argv if argv is not None else sys.argv[1:]),
     })
     print(f"wrote {path}")
+    unchecked = [] if args.faster else faster_speeds(speeds, new_values)
+    if unchecked:
+        print("note: the runs at " + ", ".join(f"{v:g}" for v in unchecked) + " m/s pass through the new row(s) as "
+              "they accelerate and were not scored with them (--faster does); check them with --evaluate --speeds "
+              + " ".join(f"{v:g}" for v in unchecked))
     return 0
 
 

@@ -308,6 +308,8 @@ def test_faster_scores_the_candidate_row_on_the_tables_faster_speeds_too():
         tune.Evaluator(pool, table, ["thrust_gain"], 4.83, 30.0, "man", "human", faster=faster)([1.3])
         assert [job[1] for job in pool.jobs] == speeds
         assert all(job[0]["speeds"] == [4.5, 4.83, 5.0] for job in pool.jobs)    # the candidate table
+    # what a search without --faster names as unchecked when it writes rows at 3.5 and 4.83 m/s
+    assert tune.faster_speeds([2.5, 3.5, 4.0, 4.83, 5.0], [4.83, 3.5]) == [4.0, 4.83, 5.0]
 
 
 def test_human_figures_are_the_papers():
