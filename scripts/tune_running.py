@@ -44,7 +44,7 @@ at the row's speed), each adding
 
 to the sum before the mean: a row that runs straight but falls in a turn scores worse.
 
-With ``--faster`` the candidate table is also run at each of its faster speeds (the same two runs
+With ``--faster`` the candidate table is also run at each of its faster speeds (the same runs
 from a stand, with their own terms in the mean): the table is looked up at the ramped speed
 command, so a runner accelerating to 5.0 m/s runs through every row below it, and a row searched
 at 4.83 m/s alone made the 5.0 m/s run fall at 18.1 s.
