@@ -391,8 +391,10 @@ def test_a_somersault_is_baked_with_the_panels_strength(empty_scene):
 
 def test_a_back_handspring_is_baked_with_its_hands_on_the_floor(empty_scene):
     """The back handspring through the operator: the baked trunk turns upside down, the fingers come
-    down to the floor while it is inverted, and the rig ends upright more than 2 m behind where it
-    started (backward: against the way the feet point)."""
+    down to the floor while it is inverted, and the rig ends upright behind where it started
+    (backward: against the way the feet point), as far as the simulation's centre of mass
+    travelled (the pelvis follows it to within 15 cm; human strength travels about 1.2 m,
+    unlimited more than 2 m)."""
     from sim_core.control.handspring import calibrated
     context = empty_scene
     context.scene.render.fps, context.scene.render.fps_base = FPS, 1.0
@@ -418,4 +420,6 @@ def test_a_back_handspring_is_baked_with_its_hands_on_the_floor(empty_scene):
             facing = (arm.matrix_world @ arm.pose.bones["TOER"].head - arm.matrix_world @ arm.pose.bones["FOOTR"].head).xy
     assert min(ups) < -0.9 and ups[-1] > 0.9 and hands_low_inverted
     travel = (pelvis - start).xy
-    assert travel.length > 2.0 and travel.normalized().dot(facing.normalized()) < -0.9      # backward
+    simulated_travel = abs(result["metrics"]["com_travel"])
+    assert simulated_travel > 0.8 and abs(travel.length - simulated_travel) < 0.15
+    assert travel.normalized().dot(facing.normalized()) < -0.9      # backward
