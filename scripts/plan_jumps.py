@@ -3,6 +3,8 @@ report what the final runs achieve.
 
     python3 scripts/plan_jumps.py                      # plan every target (a few minutes each), then report
     python3 scripts/plan_jumps.py --report-only        # rerun the stored plans and rewrite the report
+    python3 scripts/plan_jumps.py --remeasure          # store what each plan measures now, then report
+    python3 scripts/plan_jumps.py --characters man --sideways 1.3 --distances --boxes --no-down --strength unlimited
     python3 scripts/plan_jumps.py --characters woman --distances 1.0 1.3 --trials 200
     python3 scripts/plan_jumps.py --characters man --distances 1.6 --boxes --sideways --no-down --restart 1
     python3 scripts/plan_jumps.py --characters man --distances --boxes --sideways --start '{"liftoff_hip": 1.0}'
@@ -30,8 +32,8 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 from sim_core.control.target_jump import (AIR_TIME_TOLERANCE, BOX_AIR_TIME, BOX_DISTANCE,  # noqa: E402
-                                          GROUND_AIR_TIME, LANDING_TOLERANCE, SIDEWAYS_AIR_TIME, plan_jump,
-                                          store_plan, stored_plan)
+                                          GROUND_AIR_TIME, LANDING_TOLERANCE, SIDEWAYS_AIR_TIME, measure_settings,
+                                          plan_jump, plans_path, store_plan, stored_plan, within_tolerance)
 from sim_core.errors import ParameterError  # noqa: E402
 from sim_core.simulate import RunRequest, run  # noqa: E402
 
@@ -73,11 +75,12 @@ def to_side(settings: dict | None, target_y: float) -> dict | None:
     return {k: -v if flip and k in SIDE_SIGNED else v for k, v in settings.items()}
 
 
-def plan(characters, requests, trials: int, restart: int = 0, start_settings: dict | None = None) -> None:
+def plan(characters, requests, trials: int, restart: int = 0, start_settings: dict | None = None,
+         strength: str = "human") -> None:
     for character in characters:
         for params in requests:
-            request = {**params, "strength": "human"}
-            label = _label(params)
+            request = {**params, "strength": strength}
+            label = _label(params) + ("" if strength == "human" else f" ({strength} strength)")
             start = time.perf_counter()
 
             def progress(done, total, best):
@@ -87,11 +90,37 @@ def plan(characters, requests, trials: int, restart: int = 0, start_settings: di
 
             result = plan_jump(character, tuple(params[k] for k in ("target_x", "target_y", "target_z",
                                                                     "obstacle_height")),
-                               params["air_time"], params["windup_time"], trials=trials, progress=progress,
+                               params["air_time"], params["windup_time"], strength, trials=trials, progress=progress,
                                restart=restart, start=to_side(start_settings, params["target_y"]))
             print(f"{character} {label}: {'found' if result['found'] else 'NOT found'} after {result['trials']} "
                   f"trials ({time.perf_counter() - start:.0f} s)", flush=True)
             store_plan(character, request, result, "scripts/plan_jumps.py")
+
+
+def remeasure(characters) -> None:
+    """Run every stored plan's settings again and store what they measure now (after a change to
+    the model or the controllers the numbers a refusal quotes, and the best an earlier search is
+    compared with, would otherwise be stale); a plan is found exactly when it now meets the goal."""
+    for character in characters:
+        path = plans_path(character)
+        plans = json.loads(path.read_text())["plans"] if path.exists() else []
+        for stored in plans:
+            r = stored["request"]
+            target = (r["target_x"], r["target_y"], r["target_z"], r.get("obstacle_height", 0.0))
+            measured = measure_settings(character, stored["settings"], target, r["air_time"], r["windup_time"],
+                                        r.get("strength", "human"))
+            found = within_tolerance(measured, target, r["air_time"])
+            old = stored["measured"]
+            changed = (old["outcome"] != measured["outcome"] or found != stored["found"]
+                       or not math.isclose(old["air_time"], measured["air_time"], abs_tol=1e-9)
+                       or any(not math.isclose(a, b, abs_tol=1e-6) for a, b in zip(old["landing"], measured["landing"])))
+            print(f"{character} {_label(r)} ({r.get('strength', 'human')}): "
+                  + (f"({old['landing'][0]:.3f}, {old['landing'][1]:.3f}) m {old['outcome']} -> "
+                     f"({measured['landing'][0]:.3f}, {measured['landing'][1]:.3f}) m {measured['outcome']}, "
+                     f"found {stored['found']} -> {found}" if changed else "unchanged"), flush=True)
+            if changed:
+                kept = {k: v for k, v in stored.items() if k != "request"}
+                store_plan(character, r, {**kept, "measured": measured, "found": found}, "scripts/plan_jumps.py")
 
 
 def report(characters) -> None:
@@ -101,24 +130,19 @@ def report(characters) -> None:
         cases += [request_for(0.0, side * y) for side in (1, -1) for y in SIDEWAYS]
         cases += [box_request(z) for z in BOXES] + [down_request()]
         for params in cases:
-            label = _label(params)
-            try:
-                trajectory = run(RunRequest("jump_to_target", character, params={**params, "plan_trials": 0}))
-            except ParameterError as exc:
-                rows.append(f"| {character} | {label} | - | - | - | refused: {exc} |")
-                stored = stored_plan(character, {**params, "strength": "human"})
-                if stored is not None and not params["target_y"] and not params["target_z"]:
-                    points.append((character, params["target_x"], stored["measured"]["landing"][0], False))
-                continue
-            m = trajectory.meta["metrics"]
-            ok = (trajectory.meta["outcome"] == "success" and m["landing_error"] <= LANDING_TOLERANCE
-                  and abs(m["air_time_error"]) <= AIR_TIME_TOLERANCE)
-            rows.append(f"| {character} | {label} | ({m['landing_x']:.3f}, {m['landing_y']:.3f}) | "
-                        f"{100 * m['landing_error']:.1f} | {params['air_time'] + m['air_time_error']:.3f} | "
-                        f"{trajectory.meta['outcome']}{'' if ok else ' (outside the tolerance)'} |")
-            if not params["target_y"] and not params["target_z"]:      # the plot: straight ahead on the ground
-                points.append((character, params["target_x"], m["landing_x"], ok))
+            row, landed_x, ok = _report_row(character, params, "human")
+            rows.append(row)
+            if not params["target_y"] and not params["target_z"] and landed_x is not None:
+                points.append((character, params["target_x"], landed_x, ok))      # the plot: straight ahead
     _plot(points)
+    stronger = [row for character in characters for row in _stronger_rows(character)]
+    stronger_table = "" if not stronger else """
+Planned with the thesis's unlimited strength (`--strength unlimited`; a jump to a target run at that
+strength, e.g. the panel's Strength, uses these plans):
+
+| character | target | landing (x, y) m | error cm | air time s | outcome |
+| --- | --- | --- | --- | --- | --- |
+""" + "\n".join(stronger) + "\n"
     text = f"""# Jumping to a target (Ooi 2015)
 
 The animator gives a landing point for the middle of the feet, an air time and a wind-up time;
@@ -128,7 +152,7 @@ whole jumps (see the module's docstring). Generated by `python3 scripts/plan_jum
 from the stored plans (rigs/tuned/jump_targets_<character>.json); every row is a fresh run of the
 behaviour, read off the simulation. Request: air time {GROUND_AIR_TIME} s ahead on the ground, {SIDEWAYS_AIR_TIME} s
 sideways (the legs push sideways only along their lean, at most ~0.6 m/s sideways per m/s up: asked in
-{GROUND_AIR_TIME} s, 150-1,050 trials per target: those that reached it flew 0.59-0.82 s), {BOX_AIR_TIME} s
+{GROUND_AIR_TIME} s, 150-1,780 trials per target: those that reached it flew 0.59-0.82 s), {BOX_AIR_TIME} s
 onto a box, whose middle is {BOX_DISTANCE} m ahead, or down from one: the start on a {-DOWN[1]} m box, a {DOWN[2]} m box
 to clear halfway), wind-up {WINDUP_TIME} s, human torque limits. Goal (TARGETS.md):
 landing point within {LANDING_TOLERANCE * 100:.0f} cm, air time within {AIR_TIME_TOLERANCE} s, ending balanced.
@@ -179,6 +203,13 @@ knees are at their 300 N m limit through the thrust, its hips' abduction uses at
 200 N m - the sideways push comes from the lean, and a thrust held back until the COM had tipped
 0.17-0.26 m beyond the feet (instead of on reaching the crouch) fell during the tip.
 
+A further 400 trials for each of the woman's 1.3 m and 1.6 m targets (`plan_jumps.py --characters
+woman --sideways 1.3 1.6 --trials 400`), and 500 / 420 more for the man's 1.3 m right / left, found
+none: the woman's jumps to the right now land their feet on the target in time - (-0.00, -1.30) m
+after 0.60 s, (-0.00, -1.60) m after 0.61 s - and fall; to the left her nearest balanced landings are
+short, (0.11, 0.62) and (0.23, 1.18) m (a plan that ends balanced is kept over a nearer fall); the
+man's 1.3 m right came to (0.005, -1.01) m and his left stayed at (0.07, 1.16) m.
+
 ![commanded vs achieved landing point](jump_to_target.png)
 
 ![the man's 1.3 m jump to a target, 1.0-2.1 s: crouch, thrust, flight, landing, standing up](jump_to_target_filmstrip.png)
@@ -195,9 +226,41 @@ knees are at their 300 N m limit through the thrust, its hips' abduction uses at
 
 | character | target | landing (x, y) m | error cm | air time s | outcome |
 | --- | --- | --- | --- | --- | --- |
-""" + "\n".join(rows) + "\n"
+""" + "\n".join(rows) + "\n" + stronger_table
     (DOCS / "jump_to_target.md").write_text(text)
     print(text)
+
+
+def _report_row(character: str, params: dict, strength: str) -> tuple[str, float | None, bool]:
+    """A fresh run of the stored plan for ``params``: (the table's row, the landing's x - for a refused
+    request the stored nearest trial's - or None, whether it met the goal)."""
+    label = _label(params)
+    try:
+        trajectory = run(RunRequest("jump_to_target", character, params={**params, "plan_trials": 0},
+                                    strength=strength))
+    except ParameterError as exc:
+        stored = stored_plan(character, {**params, "strength": strength})
+        return (f"| {character} | {label} | - | - | - | refused: {exc} |",
+                stored["measured"]["landing"][0] if stored is not None else None, False)
+    m = trajectory.meta["metrics"]
+    ok = (trajectory.meta["outcome"] == "success" and m["landing_error"] <= LANDING_TOLERANCE
+          and abs(m["air_time_error"]) <= AIR_TIME_TOLERANCE)
+    return (f"| {character} | {label} | ({m['landing_x']:.3f}, {m['landing_y']:.3f}) | "
+            f"{100 * m['landing_error']:.1f} | {params['air_time'] + m['air_time_error']:.3f} | "
+            f"{trajectory.meta['outcome']}{'' if ok else ' (outside the tolerance)'} |", m["landing_x"], ok)
+
+
+def _stronger_rows(character: str) -> list[str]:
+    """Report rows of the stored plans searched at a strength other than human, each a fresh run."""
+    path = plans_path(character)
+    plans = json.loads(path.read_text())["plans"] if path.exists() else []
+    rows = []
+    for stored in plans:
+        params = dict(stored["request"])
+        strength = params.pop("strength", "human")
+        if strength != "human":
+            rows.append(_report_row(character, params, strength)[0])
+    return rows
 
 
 def _label(params: dict) -> str:
@@ -248,15 +311,22 @@ def main() -> None:
     parser.add_argument("--start", type=json.loads, default=None,
                         help="JSON settings the search starts from (over the stored best or nearest plan), e.g. "
                              "a trial a hand-run scan found")
+    parser.add_argument("--strength", choices=("human", "unlimited"), default="human",
+                        help="torque limits the plans are searched for (the report's table is human; plans of "
+                             "unlimited strength get a table of their own)")
+    parser.add_argument("--remeasure", action="store_true",
+                        help="run every stored plan again and store what it measures now (no search), then report")
     parser.add_argument("--report-only", action="store_true")
     parser.add_argument("--plan-only", action="store_true",
                         help="store the plans, write no report (to plan characters in parallel processes)")
     args = parser.parse_args()
-    if not args.report_only:
+    if args.remeasure:
+        remeasure(args.characters)
+    elif not args.report_only:
         requests = [request_for(x) for x in args.distances] + [box_request(z) for z in args.boxes]
         requests += [request_for(0.0, side * y) for y in args.sideways for side in (1, -1)]
         requests += [down_request()] if args.down else []
-        plan(args.characters, requests, args.trials, args.restart, args.start)
+        plan(args.characters, requests, args.trials, args.restart, args.start, args.strength)
     if not args.plan_only:
         report(args.characters)
 

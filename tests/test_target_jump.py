@@ -62,7 +62,9 @@ def test_bad_requests_are_refused_before_simulating(params, words):
 def _stored(character: str, request: dict) -> dict | None:
     path = plans_path(character)
     for plan in json.loads(path.read_text())["plans"] if path.exists() else []:
-        if all(abs(plan["request"].get(k, 0.0) - request[k]) < 1e-9 for k in request if k != "plan_trials"):
+        if (all(abs(plan["request"].get(k, 0.0) - request[k]) < 1e-9 for k in request
+                if k not in ("plan_trials", "strength"))
+                and plan["request"].get("strength", "human") == request.get("strength", "human")):
             return plan
     return None
 
@@ -172,17 +174,39 @@ def test_a_search_given_start_settings_starts_there():
 def test_start_settings_for_one_side_are_mirrored_to_the_other():
     """scripts/plan_jumps.py --start: settings found for a jump to the right start the left one's
     search mirrored (the sideways lean and the lift-off roll change sign, nothing else)."""
+    plan_jumps = _plan_jumps_script()
+    right = {"com_offset_y": -0.15, "liftoff_roll": 0.3, "crouch_height": 0.6, "foot_delta": -0.05}
+    assert plan_jumps.to_side(right, 1.3) == {"com_offset_y": 0.15, "liftoff_roll": -0.3, "crouch_height": 0.6,
+                                              "foot_delta": -0.05}
+    assert plan_jumps.to_side(right, -1.0) == right
+    assert plan_jumps.to_side({"crouch_height": 0.6}, 1.0) == {"crouch_height": 0.6}      # not a sideways start
+
+
+def _plan_jumps_script():
     import importlib.util
     from pathlib import Path
     spec = importlib.util.spec_from_file_location("plan_jumps", Path(__file__).resolve().parents[1] / "scripts"
                                                   / "plan_jumps.py")
     plan_jumps = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(plan_jumps)
-    right = {"com_offset_y": -0.15, "liftoff_roll": 0.3, "crouch_height": 0.6, "foot_delta": -0.05}
-    assert plan_jumps.to_side(right, 1.3) == {"com_offset_y": 0.15, "liftoff_roll": -0.3, "crouch_height": 0.6,
-                                              "foot_delta": -0.05}
-    assert plan_jumps.to_side(right, -1.0) == right
-    assert plan_jumps.to_side({"crouch_height": 0.6}, 1.0) == {"crouch_height": 0.6}      # not a sideways start
+    return plan_jumps
+
+
+def test_remeasure_stores_what_a_plan_measures_now(tmp_path, monkeypatch):
+    """scripts/plan_jumps.py --remeasure runs a stored plan's settings again and stores the measured
+    landing and whether it is found: a plan whose stored numbers are stale (here made up: it
+    'fell' at (9, 9) m) gets the man's 1.3 m jump's real landing back, found again."""
+    import sim_core.control.target_jump as target_jump
+    stored = _stored("man", dict(target_x=1.3, target_y=0.0, target_z=0.0, air_time=GROUND_AIR_TIME,
+                                 windup_time=WINDUP_TIME))
+    stale = {**stored, "measured": {**stored["measured"], "outcome": "fell", "landing": [9.0, 9.0]}, "found": False}
+    monkeypatch.setattr(target_jump, "TUNED_DIR", tmp_path)
+    (tmp_path / "jump_targets_man.json").write_text(json.dumps({"character": "man", "plans": [stale]}))
+    _plan_jumps_script().remeasure(["man"])
+    again = json.loads((tmp_path / "jump_targets_man.json").read_text())["plans"]
+    assert len(again) == 1 and again[0]["found"] and again[0]["settings"] == stored["settings"]
+    assert again[0]["measured"]["landing"] == pytest.approx(stored["measured"]["landing"], abs=1e-6)
+    assert again[0]["trials"] == stored["trials"]
 
 
 def test_a_sideways_search_varies_the_thrust_lean_and_a_forward_one_does_not():

@@ -318,7 +318,6 @@ def plan_jump(character: str, target, air_time: float, windup_time: float, stren
     target (else the prior), with the random stream of that restart number. ``start`` (settings,
     e.g. a trial found by a hand-run scan) overrides where the search starts.
     Returns {"settings", "measured", "trials", "found"}."""
-    from sim_core.simulate import RunRequest, run
 
     knobs = knobs_for(target)
     names = list(knobs)
@@ -338,17 +337,11 @@ def plan_jump(character: str, target, air_time: float, windup_time: float, stren
     std = 0.25 * (high - low)
     rng = np.random.default_rng([_stable_seed(target, air_time, windup_time), restart] if restart
                                 else _stable_seed(target, air_time, windup_time))
-    world = scene_for(character, target)
-    # judged over the run's whole default duration, as the final run is (a foot still creeping after
-    # the landing passed at 3.85 s and stepped past 5 cm by 5 s)
-    duration = max(windup_time + air_time + 2.0, JumpToTarget.default_duration)
     tried = []          # (cost, x, settings, measured) of every trial, in order
 
     def trial(x) -> tuple:
         settings = {n: float(v) for n, v in zip(names, x)}
-        trajectory = run(RunRequest("leap", character, params=leap_params(settings, target, windup_time),
-                                    duration=duration, strength=strength, world=world))
-        measured = landing_measures(trajectory)
+        measured = measure_settings(character, settings, target, air_time, windup_time, strength)
         tried.append((trial_cost(measured, target, air_time), np.asarray(x, dtype=float), settings, measured))
         if progress:
             progress(len(tried), trials, best()[3])
@@ -379,6 +372,19 @@ def plan_jump(character: str, target, air_time: float, windup_time: float, stren
         settings, measured = previous["settings"], previous["measured"]     # the earlier search did better
     return {"settings": settings, "measured": measured, "trials": len(tried) + (previous or {}).get("trials", 0),
             "found": within_tolerance(measured, target, air_time)}
+
+
+def measure_settings(character: str, settings: dict, target, air_time: float, windup_time: float,
+                     strength="human") -> dict:
+    """Run the leap with a plan's ``settings`` toward ``target`` (x, y, z, obstacle height) and read
+    the landing off it (landing_measures): one trial of the planner, or a stored plan measured
+    again. Judged over the run's whole default duration, as the final run is (a foot still creeping
+    after the landing passed at 3.85 s and stepped past 5 cm by 5 s)."""
+    from sim_core.simulate import RunRequest, run
+    duration = max(windup_time + air_time + 2.0, JumpToTarget.default_duration)
+    trajectory = run(RunRequest("leap", character, params=leap_params(settings, target, windup_time),
+                                duration=duration, strength=strength, world=scene_for(character, target)))
+    return landing_measures(trajectory)
 
 
 def _pattern_search(trial, best, done, low, high, budget: int) -> None:
