@@ -210,6 +210,13 @@ after 0.60 s, (-0.00, -1.60) m after 0.61 s - and fall; to the left her nearest 
 short, (0.11, 0.62) and (0.23, 1.18) m (a plan that ends balanced is kept over a nearer fall); the
 man's 1.3 m right came to (0.005, -1.01) m and his left stayed at (0.07, 1.16) m.
 
+With the thesis's unlimited strength (`--strength unlimited`, 300 trials each, started from the
+nearest human plan; the table at the end) the take-off reaches the targets the human legs do not,
+but the landings still fall: the man's 1.3 m left lands on the target, (-0.002, 1.312) m after
+0.595 s, and falls (his 1.3 m right found nothing balanced nearer than (-0.18, -0.73) m), the
+woman's 1.9 m forward lands at (1.91, 0.03) m after 0.45 s and falls. The landing holds its leg
+torques to the human limits at any strength (`LANDING_TORQUE_LIMIT`), so strength does not help it.
+
 ![commanded vs achieved landing point](jump_to_target.png)
 
 ![the man's 1.3 m jump to a target, 1.0-2.1 s: crouch, thrust, flight, landing, standing up](jump_to_target_filmstrip.png)
