@@ -112,8 +112,8 @@ def remeasure(characters) -> None:
             found = within_tolerance(measured, target, r["air_time"])
             old = stored["measured"]
             changed = (old["outcome"] != measured["outcome"] or found != stored["found"]
-                       or not math.isclose(old["air_time"], measured["air_time"], abs_tol=1e-9)
-                       or any(not math.isclose(a, b, abs_tol=1e-6) for a, b in zip(old["landing"], measured["landing"])))
+                       or not _same(old["air_time"], measured["air_time"])
+                       or not all(_same(a, b) for a, b in zip(old["landing"], measured["landing"])))
             print(f"{character} {_label(r)} ({r.get('strength', 'human')}): "
                   + (f"({old['landing'][0]:.3f}, {old['landing'][1]:.3f}) m {old['outcome']} -> "
                      f"({measured['landing'][0]:.3f}, {measured['landing'][1]:.3f}) m {measured['outcome']}, "
@@ -121,6 +121,11 @@ def remeasure(characters) -> None:
             if changed:
                 kept = {k: v for k, v in stored.items() if k != "request"}
                 store_plan(character, r, {**kept, "measured": measured, "found": found}, "scripts/plan_jumps.py")
+
+
+def _same(a: float, b: float) -> bool:
+    """Two measured numbers agree (a landing that never happened is NaN in both)."""
+    return (math.isnan(a) and math.isnan(b)) or math.isclose(a, b, abs_tol=1e-6)
 
 
 def report(characters) -> None:
