@@ -27,6 +27,7 @@ The behaviour runs the row nearest the commanded distance. Rerun after any chang
 or the controllers:
 
     python scripts/calibrate_leap.py [--character man woman] [--processes 1] [--only vertical broad]
+    python scripts/calibrate_leap.py --fill [--only vertical]     # more crouches where no row is near
 """
 from __future__ import annotations
 
@@ -42,9 +43,10 @@ sys.path.insert(0, str(ROOT))
 
 import numpy as np                                              # noqa: E402
 
-from sim_core.control.leap import AIRBORNE_HEIGHT, TUNED_DIR   # noqa: E402
+from sim_core.control.leap import AIRBORNE_HEIGHT, TUNED_DIR, uncovered_gaps   # noqa: E402
 from sim_core.control.target_jump import (GROUND_AIR_TIME, leap_params, plan_jump, store_plan,  # noqa: E402
                                           stored_plan)
+from sim_core.control.tuned import write_table                  # noqa: E402
 from sim_core.simulate import RunRequest, run                   # noqa: E402
 
 CROUCH_FRACTIONS = (0.9, 0.875, 0.85, 0.825, 0.8, 0.775, 0.75, 0.725, 0.7, 0.68, 0.66, 0.64, 0.62, 0.59)   # of the standing hip height
@@ -234,7 +236,45 @@ def vertical_table(results: list[dict]) -> dict:
     return table
 
 
-def calibrate(character: str, processes: int, only: list[str], previous: dict) -> dict:
+FILL_ROUNDS = 2               # rounds of crouches tried in the gaps (each between the last round's trials)
+
+
+def gap_crouches(results: list[dict], gaps) -> list[tuple[float, float]]:
+    """(crouch height, thrust damping) to try for each gap: in each damping's family of trials,
+    ordered by crouch height, the two neighbouring crouches whose rises straddle the gap's middle,
+    at a third and two thirds of the way between them (the rise is not monotonic in the crouch, so
+    every straddling pair)."""
+    jobs = []
+    for first, last in gaps:
+        middle = 0.5 * (first + last)
+        for damping in sorted({r["damping"] for r in results}, reverse=True):
+            family = sorted((r for r in results if r["damping"] == damping), key=lambda r: -r["crouch_height"])
+            tried = {r["crouch_height"] for r in family}
+            for a, b in zip(family, family[1:]):
+                if min(a["com_rise"], b["com_rise"]) < middle < max(a["com_rise"], b["com_rise"]):
+                    for share in (1 / 3, 2 / 3):
+                        crouch = round(a["crouch_height"] + share * (b["crouch_height"] - a["crouch_height"]), 3)
+                        if crouch not in tried and (crouch, damping) not in jobs:
+                            jobs.append((crouch, damping))
+    return jobs
+
+
+def fill_gaps(character: str, key: str, strength: str, results: list[dict], pool) -> list[dict]:
+    """More trials in the gaps of a vertical table (uncovered_gaps), FILL_ROUNDS times; returns all
+    the trials, old and new."""
+    results = list(results)
+    for _ in range(FILL_ROUNDS):
+        gaps = uncovered_gaps(vertical_table(results)["com_rise"])
+        jobs = gap_crouches(results, gaps)
+        print(f"  {character} {key}: gaps {', '.join(f'{a:.3f}-{b:.3f}' for a, b in gaps) or 'none'} m; "
+              f"{len(jobs)} crouches to try", flush=True)
+        if not jobs:
+            break
+        results += pool.map(trial, [(character, crouch, damping, strength) for crouch, damping in jobs])
+    return results
+
+
+def calibrate(character: str, processes: int, only: list[str], previous: dict, fill: bool = False) -> dict:
     from sim_core.character.spec import load_character
     from sim_core.control.balance import standing_hip_height
     spec = load_character(character)
@@ -246,11 +286,15 @@ def calibrate(character: str, processes: int, only: list[str], previous: dict) -
         for key, (strength, grid) in VERTICAL_TABLES.items():
             if key not in only:
                 continue
-            jobs = [(character, round(f * stand, 3), damping, strength) for damping, fractions in grid for f in fractions]
-            results = pool.map(trial, jobs)
+            if fill:
+                results = fill_gaps(character, key, strength, trials.get(key, []), pool)
+            else:
+                jobs = [(character, round(f * stand, 3), damping, strength) for damping, fractions in grid
+                        for f in fractions]
+                results = pool.map(trial, jobs)
             trials[key] = results
             mapping[key] = vertical_table(results)
-        if "broad" in only:
+        if "broad" in only and not fill:
             mapping["broad"] = calibrate_broad(character, pool)
             mapping.pop("broad_calibrated", None)
     mapping["trials_by_table"] = trials
@@ -264,21 +308,25 @@ def main() -> int:
     parser.add_argument("--processes", type=int, default=1)
     parser.add_argument("--only", nargs="+", default=[*VERTICAL_TABLES, "broad"],
                         help="tables to recalibrate (the others are kept): " + " ".join([*VERTICAL_TABLES, "broad"]))
+    parser.add_argument("--fill", action="store_true",
+                        help="keep the vertical tables' trials and add crouches in their gaps (commanded heights no "
+                             "row is within the tolerance of), instead of calibrating them afresh")
     args = parser.parse_args()
     TUNED_DIR.mkdir(parents=True, exist_ok=True)
     for character in args.character:
         path = TUNED_DIR / f"leap_{character}.json"
         previous = json.loads(path.read_text()) if path.exists() else {}
-        mapping = calibrate(character, args.processes, args.only, previous)
+        only = [k for k in args.only if k in VERTICAL_TABLES] if args.fill else args.only
+        mapping = calibrate(character, args.processes, only, previous, args.fill)
         # write only the recalibrated tables over the file as it is now (another run may have
         # recalibrated the others meanwhile)
         current = json.loads(path.read_text()) if path.exists() else {}
-        current.update({k: v for k, v in mapping.items() if k in args.only or k in ("character", "script")})
+        current.update({k: v for k, v in mapping.items() if k in only or k in ("character", "script")})
         current.setdefault("trials_by_table", {}).update(
-            {k: v for k, v in mapping.get("trials_by_table", {}).items() if k in args.only})
+            {k: v for k, v in mapping.get("trials_by_table", {}).items() if k in only})
         current.pop("broad_calibrated", None)
         mapping = current
-        path.write_text(json.dumps(mapping, indent=1) + "\n")
+        write_table(path, mapping)
         for key in VERTICAL_TABLES:
             rises = mapping.get(key, {}).get("com_rise", [])
             print(f"wrote {path.relative_to(ROOT)} {key}: COM rise {min(rises, default=0):.2f} .. "

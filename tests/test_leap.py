@@ -4,7 +4,7 @@ the README and docs/leap_report.md); jumps to a target are in test_target_jump.p
 import numpy as np
 import pytest
 
-from sim_core.control.leap import commandable_heights, load_mapping, rise_tolerance
+from sim_core.control.leap import commandable_heights, load_mapping, rise_tolerance, uncovered_gaps
 from sim_core.errors import ParameterError
 from sim_core.simulate import RunRequest, StartState, largest_difference, replay, run
 
@@ -88,7 +88,8 @@ def test_leap_replays_bit_for_bit():
 @pytest.mark.parametrize("name, height, strength", [
     ("man", 0.1, "human"), ("man", 0.2, "human"), ("man", 0.35, "human"), ("man", 0.4, "human"), ("man", 0.6, "human"),
     ("woman", 0.16, "human"), ("woman", 0.25, "human"), ("woman", 0.33, "human"), ("woman", 0.4, "human"),
-    ("woman", 0.58, "human"), ("woman", 0.6, "human"), ("woman", 0.7, "human"),
+    ("woman", 0.44, "human"), ("woman", 0.58, "human"), ("woman", 0.59, "human"), ("woman", 0.6, "human"),
+    ("woman", 0.7, "human"), ("man", 0.27, "unlimited"),
     ("man", 0.1, "unlimited"), ("man", 0.33, "unlimited"), ("man", 0.7, "unlimited"), ("man", 0.9, "unlimited"), ("man", 1.0, "unlimited"),
     ("woman", 0.45, "unlimited"), ("woman", 0.58, "unlimited"), ("woman", 0.85, "unlimited"), ("woman", 0.9, "unlimited"),
     ("woman", 1.0, "unlimited")])
@@ -97,7 +98,8 @@ def test_commanded_vertical_leap_is_reached_and_lands_balanced(name, height, str
     leaps (0.16, 0.33, 0.58 m, woman), the 0.6 m target with human torque limits, 1.0 m with
     unlimited strength (man and woman), the lowest target 0.1 m (the man's lowest calibrated
     leaps rise 0.11-0.12 m, within its 3 cm), and heights that fell when they were interpolated between
-    calibrated rows (man 0.4; woman 0.4, 0.7; unlimited: man 0.33, 0.7, woman 0.58, 0.85, 0.9)."""
+    calibrated rows (man 0.4; woman 0.4, 0.44, 0.59, 0.7; unlimited: man 0.27, 0.33, 0.7, woman 0.58, 0.85,
+    0.9) and now run rows calibrate_leap.py --fill added."""
     traj = run(RunRequest("leap", name, params=dict(height=height), duration=5.0, strength=strength))
     m = traj.meta["metrics"]
     assert traj.meta["outcome"] == "success", m
@@ -128,6 +130,16 @@ def test_broad_jump_travels_the_commanded_distance_and_lands_balanced(name, dist
     assert not m["stepped"]         # the landing's slide, not the jump's travel from the start
 
 
+@pytest.mark.parametrize("name", ["man", "woman"])
+@pytest.mark.parametrize("table", ["vertical", "vertical_unlimited"])
+def test_every_commanded_height_runs_a_calibrated_leap_within_its_tolerance(name, table):
+    """From 0.1 m up to the highest calibrated leap (or 1 m), every height (5 mm apart) has a
+    calibrated row whose measured rise is within its tolerance, so the leap runs that measured row
+    and no interpolation between rows (which missed or fell: the woman's 0.44 / 0.59 m, the man's
+    0.27 m unlimited) is left; scripts/calibrate_leap.py --fill fills the gaps."""
+    assert uncovered_gaps(load_mapping(name)[table]["com_rise"]) == []
+
+
 def test_the_stated_range_of_commandable_heights_is_the_one_that_runs():
     """The refusal's range is exact: its ends run (the end leap within tolerance), just beyond
     them is refused."""
@@ -143,7 +155,7 @@ def test_infeasible_and_bad_leaps_are_refused_before_simulating():
     with pytest.raises(ParameterError, match="distance=2.45 m has no calibrated broad jump within 10 %"):
         run(RunRequest("leap", "man", params=dict(distance=2.45)))
     with pytest.raises(ParameterError, match=r"height=1.1 m is infeasible for man with human torque limits; "
-                                             r"allowed range is \[0.09, 0.96\] m \(calibrated leaps rise 0.12 ... 0.86 m\)"):
+                                             r"allowed range is \[0.09, 1.00\] m \(calibrated leaps rise 0.12 ... 0.90 m\)"):
         run(RunRequest("leap", "man", params=dict(height=1.1)))
     with pytest.raises(ParameterError, match="height=1.2 m is infeasible for woman with human torque limits"):
         run(RunRequest("leap", "woman", params=dict(height=1.2)))

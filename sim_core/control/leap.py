@@ -521,6 +521,27 @@ def rise_tolerance(height: float) -> float:
     return 0.03 if height < 0.3 else 0.1 * height
 
 
+UNCOVERED_STEP = 0.005          # m: commanded heights checked for a calibrated row within the tolerance
+
+
+def uncovered_gaps(rises) -> list[tuple[float, float]]:
+    """The commanded heights (UNCOVERED_STEP apart, from 0.1 m to the highest row or 1 m) that no
+    calibrated row's measured rise is within the tolerance of - the leap interpolates those, and
+    may miss or fall - as intervals (first, last); scripts/calibrate_leap.py --fill tries more
+    crouches in them."""
+    gaps = []
+    if not len(rises):
+        return gaps
+    for h in np.arange(0.1, min(max(rises), 1.0) + 1e-9, UNCOVERED_STEP):
+        if min(abs(r - h) for r in rises) <= rise_tolerance(h):
+            continue
+        if gaps and h - gaps[-1][1] < 1.5 * UNCOVERED_STEP:
+            gaps[-1] = (gaps[-1][0], float(h))
+        else:
+            gaps.append((float(h), float(h)))
+    return gaps
+
+
 def commandable_heights(rises) -> tuple[float, float]:
     """The commanded heights a vertical leap table serves: those whose TARGETS.md tolerance
     (rise_tolerance) reaches a calibrated rise - below the lowest and above the highest, the end
