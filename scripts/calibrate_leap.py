@@ -294,7 +294,7 @@ def calibrate(character: str, processes: int, only: list[str], previous: dict, f
                 results = pool.map(trial, jobs)
             trials[key] = results
             mapping[key] = vertical_table(results)
-        if "broad" in only and not fill:
+        if "broad" in only:
             mapping["broad"] = calibrate_broad(character, pool)
             mapping.pop("broad_calibrated", None)
     mapping["trials_by_table"] = trials

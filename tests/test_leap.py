@@ -140,6 +140,22 @@ def test_every_commanded_height_runs_a_calibrated_leap_within_its_tolerance(name
     assert uncovered_gaps(load_mapping(name)[table]["com_rise"]) == []
 
 
+def test_a_fill_tries_crouches_between_the_neighbours_whose_rises_straddle_a_gap():
+    """calibrate_leap.py --fill: for a gap in the rises, each damping's neighbouring crouches whose
+    measured rises lie either side of its middle get two crouches between them (a third and two
+    thirds of the way); a family that does not straddle it gets none."""
+    import importlib.util
+    from pathlib import Path
+    spec = importlib.util.spec_from_file_location("calibrate_leap", Path(__file__).resolve().parents[1] / "scripts"
+                                                  / "calibrate_leap.py")
+    calibrate_leap = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(calibrate_leap)
+    results = [dict(crouch_height=0.60, damping=1.0, com_rise=0.30), dict(crouch_height=0.57, damping=1.0, com_rise=0.40),
+               dict(crouch_height=0.55, damping=1.0, com_rise=0.45), dict(crouch_height=0.60, damping=0.3, com_rise=0.50)]
+    assert uncovered_gaps([0.30, 0.45])[-1] == pytest.approx((0.335, 0.405))   # beyond 10 % of both rows
+    assert calibrate_leap.gap_crouches(results, [(0.34, 0.36)]) == [(0.59, 1.0), (0.58, 1.0)]
+
+
 def test_the_stated_range_of_commandable_heights_is_the_one_that_runs():
     """The refusal's range is exact: its ends run (the end leap within tolerance), just beyond
     them is refused."""
