@@ -22,9 +22,7 @@ import matplotlib                                                      # noqa: E
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt                                        # noqa: E402
 
-import numpy as np                                                     # noqa: E402
-
-from sim_core.control.leap import load_mapping, rise_tolerance          # noqa: E402
+from sim_core.control.leap import height_grid, load_mapping, rise_tolerance   # noqa: E402
 from sim_core.errors import ParameterError                              # noqa: E402
 from sim_core.simulate import RunRequest, StartState, run               # noqa: E402
 
@@ -40,9 +38,7 @@ DENSE_STEP = 0.01       # m: --dense commands every height this far apart
 
 
 def dense_heights(character: str, strength: str) -> list[float]:
-    """From 0.1 m to the highest calibrated leap (or 1 m), DENSE_STEP apart."""
-    rises = load_mapping(character)[STRENGTHS[strength]]["com_rise"]
-    return [float(h) for h in np.round(np.arange(0.1, min(max(rises), 1.0) + 1e-9, DENSE_STEP), 2)]
+    return height_grid(load_mapping(character)[STRENGTHS[strength]]["com_rise"], DENSE_STEP)
 
 
 def label_axes(ax, title: str, xlabel: str, ylabel: str) -> None:

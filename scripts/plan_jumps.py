@@ -33,7 +33,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 from sim_core.control.target_jump import (AIR_TIME_TOLERANCE, BOX_AIR_TIME, BOX_DISTANCE,  # noqa: E402
                                           GROUND_AIR_TIME, LANDING_TOLERANCE, SIDEWAYS_AIR_TIME, measure_settings,
-                                          plan_jump, plans_path, store_plan, stored_plan, within_tolerance)
+                                          plan_jump, store_plan, stored_plan, stored_plans, within_tolerance)
 from sim_core.errors import ParameterError  # noqa: E402
 from sim_core.simulate import RunRequest, run  # noqa: E402
 
@@ -102,15 +102,14 @@ def remeasure(characters) -> None:
     the model or the controllers the numbers a refusal quotes, and the best an earlier search is
     compared with, would otherwise be stale); a plan is found exactly when it now meets the goal."""
     for character in characters:
-        path = plans_path(character)
-        plans = json.loads(path.read_text())["plans"] if path.exists() else []
-        for stored in plans:
+        for stored in stored_plans(character):
             r = stored["request"]
             target = (r["target_x"], r["target_y"], r["target_z"], r.get("obstacle_height", 0.0))
             measured = measure_settings(character, stored["settings"], target, r["air_time"], r["windup_time"],
                                         r.get("strength", "human"))
             found = within_tolerance(measured, target, r["air_time"])
             old = stored["measured"]
+            # (the measures of a rerun may differ in the last digit: compared to 1e-6)
             changed = (old["outcome"] != measured["outcome"] or found != stored["found"]
                        or not _same(old["air_time"], measured["air_time"])
                        or not all(_same(a, b) for a, b in zip(old["landing"], measured["landing"])))
@@ -264,10 +263,8 @@ def _report_row(character: str, params: dict, strength: str) -> tuple[str, float
 
 def _stronger_rows(character: str) -> list[str]:
     """Report rows of the stored plans searched at a strength other than human, each a fresh run."""
-    path = plans_path(character)
-    plans = json.loads(path.read_text())["plans"] if path.exists() else []
     rows = []
-    for stored in plans:
+    for stored in stored_plans(character):
         params = dict(stored["request"])
         strength = params.pop("strength", "human")
         if strength != "human":

@@ -8,6 +8,8 @@ from sim_core.control.leap import commandable_heights, load_mapping, rise_tolera
 from sim_core.errors import ParameterError
 from sim_core.simulate import RunRequest, StartState, largest_difference, replay, run
 
+from project_scripts import load_script
+
 
 def first_flight(traj):
     flying = traj.arrays["support_points"][:, :, 2].min(axis=1) > 0.01
@@ -144,12 +146,7 @@ def test_a_fill_tries_crouches_between_the_neighbours_whose_rises_straddle_a_gap
     """calibrate_leap.py --fill: for a gap in the rises, each damping's neighbouring crouches whose
     measured rises lie either side of its middle get two crouches between them (a third and two
     thirds of the way); a family that does not straddle it gets none."""
-    import importlib.util
-    from pathlib import Path
-    spec = importlib.util.spec_from_file_location("calibrate_leap", Path(__file__).resolve().parents[1] / "scripts"
-                                                  / "calibrate_leap.py")
-    calibrate_leap = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(calibrate_leap)
+    calibrate_leap = load_script("calibrate_leap")
     results = [dict(crouch_height=0.60, damping=1.0, com_rise=0.30), dict(crouch_height=0.57, damping=1.0, com_rise=0.40),
                dict(crouch_height=0.55, damping=1.0, com_rise=0.45), dict(crouch_height=0.60, damping=0.3, com_rise=0.50)]
     assert uncovered_gaps([0.30, 0.45])[-1] == pytest.approx((0.335, 0.405))   # beyond 10 % of both rows

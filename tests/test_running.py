@@ -4,9 +4,7 @@ with TARGETS.md "Running". Every run starts from the standing pose.
 Targets the controller does not reach yet are listed in SHORTFALLS (see docs/running.md): for
 those, a miss is reported as xfail with the measured figures in the reason, and a hit passes;
 every other case must meet its target."""
-import importlib.util
 import math
-from pathlib import Path
 
 import mujoco
 import numpy as np
@@ -21,7 +19,8 @@ from sim_core.errors import ParameterError
 from sim_core.gait import HUMAN_FIG12, STEADY_RUN, compare_with_human
 from sim_core.simulate import RunRequest, largest_difference, replay, run
 
-ROOT = Path(__file__).resolve().parents[1]
+from project_scripts import load_script
+
 SPEED_TOLERANCE = 0.05          # TARGETS.md: mean speed over the last 10 s within 5 %
 FIG12_TOLERANCE = 0.10          # TARGETS.md: each gait figure within 10 % of the human one
 PATH_DEVIATION_GOAL = 0.3       # m, mean lateral deviation from the path
@@ -246,10 +245,7 @@ def test_a_tuned_row_replaces_only_its_speed():
 
 
 def _tune_running():
-    spec = importlib.util.spec_from_file_location("tune_running", ROOT / "scripts" / "tune_running.py")
-    tune = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(tune)
-    return tune
+    return load_script("tune_running")
 
 
 def test_evaluation_function_adds_the_fig_12_gait_at_the_fast_end():

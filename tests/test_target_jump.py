@@ -19,6 +19,8 @@ from sim_core.control.target_jump import (AIR_TIME_TOLERANCE, BOX_AIR_TIME, BOX_
 from sim_core.errors import ParameterError
 from sim_core.simulate import RunRequest, run
 
+from project_scripts import load_script
+
 FORWARD = (1.0, 1.3, 1.6, 1.9)
 WINDUP_TIME = 1.25
 
@@ -174,22 +176,12 @@ def test_a_search_given_start_settings_starts_there():
 def test_start_settings_for_one_side_are_mirrored_to_the_other():
     """scripts/plan_jumps.py --start: settings found for a jump to the right start the left one's
     search mirrored (the sideways lean and the lift-off roll change sign, nothing else)."""
-    plan_jumps = _plan_jumps_script()
+    plan_jumps = load_script("plan_jumps")
     right = {"com_offset_y": -0.15, "liftoff_roll": 0.3, "crouch_height": 0.6, "foot_delta": -0.05}
     assert plan_jumps.to_side(right, 1.3) == {"com_offset_y": 0.15, "liftoff_roll": -0.3, "crouch_height": 0.6,
                                               "foot_delta": -0.05}
     assert plan_jumps.to_side(right, -1.0) == right
     assert plan_jumps.to_side({"crouch_height": 0.6}, 1.0) == {"crouch_height": 0.6}      # not a sideways start
-
-
-def _plan_jumps_script():
-    import importlib.util
-    from pathlib import Path
-    spec = importlib.util.spec_from_file_location("plan_jumps", Path(__file__).resolve().parents[1] / "scripts"
-                                                  / "plan_jumps.py")
-    plan_jumps = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(plan_jumps)
-    return plan_jumps
 
 
 def test_remeasure_stores_what_a_plan_measures_now(tmp_path, monkeypatch):
@@ -202,7 +194,7 @@ def test_remeasure_stores_what_a_plan_measures_now(tmp_path, monkeypatch):
     stale = {**stored, "measured": {**stored["measured"], "outcome": "fell", "landing": [9.0, 9.0]}, "found": False}
     monkeypatch.setattr(target_jump, "TUNED_DIR", tmp_path)
     (tmp_path / "jump_targets_man.json").write_text(json.dumps({"character": "man", "plans": [stale]}))
-    _plan_jumps_script().remeasure(["man"])
+    load_script("plan_jumps").remeasure(["man"])
     again = json.loads((tmp_path / "jump_targets_man.json").read_text())["plans"]
     assert len(again) == 1 and again[0]["found"] and again[0]["settings"] == stored["settings"]
     assert again[0]["measured"]["landing"] == pytest.approx(stored["measured"]["landing"], abs=1e-6)

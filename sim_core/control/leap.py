@@ -524,21 +524,26 @@ def rise_tolerance(height: float) -> float:
 UNCOVERED_STEP = 0.005          # m: commanded heights checked for a calibrated row within the tolerance
 
 
-def uncovered_gaps(rises) -> list[tuple[float, float]]:
-    """The commanded heights (UNCOVERED_STEP apart, from 0.1 m to the highest row or 1 m) that no
-    calibrated row's measured rise is within the tolerance of - the leap interpolates those, and
-    may miss or fall - as intervals (first, last); scripts/calibrate_leap.py --fill tries more
-    crouches in them."""
-    gaps = []
+def height_grid(rises, step: float) -> list[float]:
+    """Commanded heights ``step`` apart from 0.1 m (TARGETS.md's lowest leap) to the highest
+    calibrated rise, or 1 m."""
     if not len(rises):
-        return gaps
-    for h in np.arange(0.1, min(max(rises), 1.0) + 1e-9, UNCOVERED_STEP):
+        return []
+    return [float(h) for h in np.round(np.arange(0.1, min(max(rises), 1.0) + 1e-9, step), 3)]
+
+
+def uncovered_gaps(rises) -> list[tuple[float, float]]:
+    """The commanded heights (height_grid, UNCOVERED_STEP apart) that no calibrated row's measured
+    rise is within the tolerance of - the leap interpolates those, and may miss or fall - as
+    intervals (first, last); scripts/calibrate_leap.py --fill tries more crouches in them."""
+    gaps = []
+    for h in height_grid(rises, UNCOVERED_STEP):
         if min(abs(r - h) for r in rises) <= rise_tolerance(h):
             continue
         if gaps and h - gaps[-1][1] < 1.5 * UNCOVERED_STEP:
-            gaps[-1] = (gaps[-1][0], float(h))
+            gaps[-1] = (gaps[-1][0], h)
         else:
-            gaps.append((float(h), float(h)))
+            gaps.append((h, h))
     return gaps
 
 

@@ -430,14 +430,14 @@ def plans_path(character: str) -> Path:
     return TUNED_DIR / f"jump_targets_{character}.json"
 
 
-def stored_plan(character: str, request: dict) -> dict | None:
+def stored_plans(character: str) -> list[dict]:
+    """Every plan stored for ``character`` (none if its file does not exist yet)."""
     path = plans_path(character)
-    if not path.exists():
-        return None
-    for plan in json.loads(path.read_text())["plans"]:
-        if same_request(plan["request"], request):
-            return plan
-    return None
+    return json.loads(path.read_text())["plans"] if path.exists() else []
+
+
+def stored_plan(character: str, request: dict) -> dict | None:
+    return next((plan for plan in stored_plans(character) if same_request(plan["request"], request)), None)
 
 
 REQUEST_KEYS = ("target_x", "target_y", "target_z", "obstacle_height", "air_time", "windup_time")
@@ -452,12 +452,10 @@ def same_request(a: dict, b: dict) -> bool:
 def store_plan(character: str, request: dict, plan: dict, script: str) -> None:
     """Keep a plan (found or not) in rigs/tuned/jump_targets_<character>.json, replacing the one
     for the same request."""
-    path = plans_path(character)
-    stored = json.loads(path.read_text())["plans"] if path.exists() else []
-    stored = [p for p in stored if not same_request(p["request"], request)]
+    stored = [p for p in stored_plans(character) if not same_request(p["request"], request)]
     stored.append({"request": request, **plan})
     stored.sort(key=lambda p: tuple(p["request"].get(k, 0.0) for k in REQUEST_KEYS))
-    write_table(path, {"character": character, "script": script, "plans": stored})
+    write_table(plans_path(character), {"character": character, "script": script, "plans": stored})
 
 
 def _side(y: float) -> int:
@@ -490,12 +488,11 @@ def nearest_start_plan(character: str, target, strength="human") -> tuple[float,
 def nearest_found_plan(character: str, target, strength="human", raised=False) -> tuple[float, dict] | None:
     """(distance, settings) of the stored plan that found a jump onto the same height (``raised``:
     onto any box) and to the same side, nearest ``target`` (None if there is none)."""
-    path = plans_path(character)
-    plans = [p for p in json.loads(path.read_text())["plans"]
+    plans = [p for p in stored_plans(character)
              if p["found"] and p["request"].get("strength", "human") == strength
              and (p["request"]["target_z"] > 0 if raised else abs(p["request"]["target_z"] - float(target[2])) < 1e-6)
              and abs(p["request"].get("obstacle_height", 0.0) - obstacle_of(target)) < 1e-6
-             and _side(p["request"]["target_y"]) == _side(float(target[1]))] if path.exists() else []
+             and _side(p["request"]["target_y"]) == _side(float(target[1]))]
     if not plans:
         return None
     def distance(p):        # nearest; of two as near, the longer jump (shortening one is easier)
