@@ -8,6 +8,7 @@ rigs/tuned/running_<character>.json, which the running behaviour reads (a tuned 
     python3 scripts/tune_running.py --method cma                  # CMA-ES, if the 'cma' package is installed
     python3 scripts/tune_running.py --evaluate                    # only score the current table
     python3 scripts/tune_running.py --speeds 3.5 --courses --duration 30 --method cma   # ... and on the tight courses
+    python3 scripts/tune_running.py --joint --speeds 4.83 5.0 --gait-at 4.83 --method cma --duration 30   # two rows at once
 
 The five parameters: ground-speed matching (forward speed), stance pitch (body attitude), and
 thrust timing, ankle extension and knee extension (flight duration).
@@ -48,6 +49,14 @@ With ``--faster`` the candidate table is also run at each of its faster speeds (
 from a stand, with their own terms in the mean): the table is looked up at the ramped speed
 command, so a runner accelerating to 5.0 m/s runs through every row below it, and a row searched
 at 4.83 m/s alone made the 5.0 m/s run fall at 18.1 s.
+
+With ``--joint`` (CMA-ES only) the rows of all ``--speeds`` are one search: a candidate holds a row
+per speed and every evaluation runs every one of those speeds with all of them in the table - for
+rows close together, such as 4.83 m/s (Fig. 12's speed) and 5.0 m/s, which the runner accelerating
+to 5.0 m/s passes through. ``--gait-at 4.83`` makes the gait term count only in the runs at the
+speeds named (Fig. 12's figures are the man's at 4.83 m/s; the 5.0 m/s runs then answer only for
+their speed, falls, smoothness and attitude). ``--start`` takes either one row for every searched
+speed or ``{"4.83": {name: value}, ...}``.
 
 Each evaluation runs its scenarios in a pool of ``--workers`` processes (2 on the project's
 machine). The search is time-boxed by ``--minutes``; the best point found is written only if it
@@ -117,8 +126,9 @@ def scenario(args) -> dict:
             "attitude_variation": att, "gait_errors": gait}
 
 
-def evaluation(terms: list[dict]) -> float:
-    """The mean over the runs of the terms in the module's docstring."""
+def evaluation(terms: list[dict], gait_speeds=None) -> float:
+    """The mean over the runs of the terms in the module's docstring; the gait term counts at the
+    speeds from GAIT_FROM up, or with ``gait_speeds`` (``--gait-at``) at those speeds only."""
     total = 0.0
     for s in terms:
         total += W_FALL * (1.0 - s["t_up"] / s["duration"])
@@ -128,10 +138,16 @@ def evaluation(terms: list[dict]) -> float:
         error = abs(s["mean_speed"] - s["speed"]) / s["speed"]
         total += (W_SPEED * error + W_BAND * max(0.0, error - BAND)
                   + W_HEAD * s["head_acc_g"] + W_ATT * s["attitude_variation"])
-        if s["speed"] >= GAIT_FROM - 1e-9:
+        if gait_counts(s["speed"], gait_speeds):
             total += (W_GAIT * float(np.mean(s["gait_errors"]))
                       + W_GAIT_BAND * sum(max(0.0, e - GAIT_BAND) for e in s["gait_errors"]))
     return total / len(terms)
+
+
+def gait_counts(speed: float, gait_speeds=None) -> bool:
+    if gait_speeds is None:
+        return speed >= GAIT_FROM - 1e-9
+    return any(abs(speed - v) < 1e-9 for v in gait_speeds)
 
 
 def describe(s: dict) -> str:
@@ -141,37 +157,53 @@ def describe(s: dict) -> str:
 
 
 class Evaluator:
-    """Scores a candidate row of the table at one speed: the runs use the stored table with that
-    row replaced (the runner accelerates through the lower rows), i.e. exactly what would be
-    written."""
+    """Scores a candidate row of the table at one speed - or, with a list of speeds (``--joint``),
+    candidate rows at all of them at once, ``x`` holding their values one row after the other: the
+    runs use the stored table with those rows replaced (the runner accelerates through the lower
+    rows), i.e. exactly what would be written."""
 
     def __init__(self, pool, table, names, speed, duration, character, strength, leans=(0.35, 0.5),
-                 courses=False, log=None, faster=False):
-        self.pool, self.table, self.names, self.speed, self.duration = pool, table, names, speed, duration
+                 courses=False, log=None, faster=False, gait_speeds=None):
+        self.pool, self.table, self.names, self.duration = pool, table, names, duration
+        self.rows = tuple(float(v) for v in speed) if isinstance(speed, (list, tuple)) else (float(speed),)
+        self.speed = self.rows[0]
         self.leans = tuple(leans)
         # with ``faster``, also the runs at the table's faster speeds: a runner accelerating to them
         # is looked up at its ramped command, so it passes through this row on the way
-        self.faster = tuple(faster_speeds(table.speeds, [speed])) if faster else ()
+        self.faster = tuple(v for v in faster_speeds(table.speeds, list(self.rows)) if v not in self.rows) \
+            if faster else ()
         self.courses = STEERING_COURSES if courses else ()
+        self.gait_speeds = gait_speeds
         self.log = log          # a file that gets one JSON line per evaluation (the search can be read back)
         self.character, self.strength = character, strength
         self.history: list[tuple[list[float], float]] = []
 
+    def candidate(self, x) -> SpeedTable:
+        table, n = self.table, len(self.names)
+        for k, speed in enumerate(self.rows):
+            table = table.with_row(speed, dict(zip(self.names, map(float, x[k * n:(k + 1) * n]))))
+        return table
+
+    def row_values(self, x) -> dict[float, list[float]]:
+        n = len(self.names)
+        return {speed: [float(v) for v in x[k * n:(k + 1) * n]] for k, speed in enumerate(self.rows)}
+
     def __call__(self, x) -> float:
-        candidate = self.table.with_row(self.speed, dict(zip(self.names, map(float, x))))
+        candidate = self.candidate(x)
         table = {"speeds": candidate.speeds, "values": candidate.values}
-        v = self.speed
         jobs = [(table, v_, lean, self.duration, self.character, self.strength, None)
-                for v_ in (v,) + self.faster for lean in self.leans]
+                for v_ in self.rows + self.faster for lean in self.leans]
         jobs += [(table, v, self.leans[0], duration, self.character, self.strength, course)
-                 for course, duration in self.courses]
+                 for v in self.rows for course, duration in self.courses]
         terms = self.pool.map(scenario, jobs)
-        score = evaluation(terms)
+        score = evaluation(terms, self.gait_speeds)
         self.history.append((list(map(float, x)), score))
         print(f"  {len(self.history):4d} {score:8.4f} " + " ".join(describe(s) for s in terms), flush=True)
         if self.log:
+            rows = {f"{v:g}": dict(zip(self.names, r)) for v, r in self.row_values(x).items()}
+            record = {"row": rows[f"{self.speed:g}"]} if len(self.rows) == 1 else {"rows": rows}
             with open(self.log, "a") as f:
-                f.write(json.dumps({"row": dict(zip(self.names, map(float, x))), "score": score, "runs": terms}) + "\n")
+                f.write(json.dumps({**record, "score": score, "runs": terms}) + "\n")
         return score
 
 
@@ -191,7 +223,7 @@ def anneal(evaluate, x0, deadline, max_evaluations, seed):
         return time.monotonic() > deadline
 
     try:
-        dual_annealing(evaluate, bounds(evaluate.names), x0=np.array(x0), maxfun=max_evaluations, seed=seed,
+        dual_annealing(evaluate, bounds(evaluate.names) * len(evaluate.rows), x0=np.array(x0), maxfun=max_evaluations, seed=seed,
                        callback=track, no_local_search=True, initial_temp=2000.0)
     except StopIteration:
         pass
@@ -202,7 +234,7 @@ def cma_search(evaluate, x0, deadline, max_evaluations, seed, sigma=0.1):
     """CMA-ES in the columns scaled to [0, 1] by their ranges; ``sigma``: the initial step, as a
     share of each range."""
     import cma  # optional dependency
-    lo, hi = np.array(bounds(evaluate.names)).T
+    lo, hi = np.array(bounds(evaluate.names) * len(evaluate.rows)).T
     scale = hi - lo
     es = cma.CMAEvolutionStrategy(((np.array(x0) - lo) / scale).tolist(), sigma,
                                   {"bounds": [0, 1], "seed": seed, "maxfevals": max_evaluations, "verbose": -9})
@@ -215,6 +247,25 @@ def cma_search(evaluate, x0, deadline, max_evaluations, seed, sigma=0.1):
         if f[k] < best["f"]:
             best.update(x=(lo + np.array(z[k]) * scale).tolist(), f=float(f[k]))
     return best
+
+
+def start_rows(start: dict, speeds: list[float]) -> dict[float, dict]:
+    """``--start``: {name: value} for every searched row, or {speed: {name: value}} per row."""
+    keyed = {}
+    for key, value in start.items():
+        if isinstance(value, dict):
+            try:
+                keyed[float(key)] = value
+            except ValueError:
+                raise SystemExit(f"--start: {key!r} is neither a speed with its row nor a parameter") from None
+    if not keyed:
+        return {v: dict(start) for v in speeds}
+    if len(keyed) != len(start):
+        raise SystemExit("--start: give either {name: value} or {speed: {name: value}}, not both")
+    unknown = sorted(set(keyed) - set(speeds))
+    if unknown:
+        raise SystemExit(f"--start rows for {', '.join(f'{v:g}' for v in unknown)} m/s, which --speeds does not search")
+    return {v: dict(keyed.get(v, {})) for v in speeds}
 
 
 def with_found_rows(table: SpeedTable, names: list[str], found: dict[float, list[float]]) -> SpeedTable:
@@ -347,6 +398,13 @@ def main(argv=None) -> int:
                          "accelerating to a faster speed passes through the row, which can make it fall there")
     ap.add_argument("--start", type=json.loads, default={},
                     help="JSON {name: value}: start the search there instead of at the table's row")
+    ap.add_argument("--joint", action="store_true",
+                    help="search the rows of all --speeds together (one CMA-ES vector, every evaluation runs every "
+                         "speed): two rows near each other, e.g. 4.83 and 5.0 m/s, where a runner accelerating to "
+                         "the faster passes through the slower")
+    ap.add_argument("--gait-at", type=float, nargs="+", default=None, metavar="SPEED",
+                    help="the Fig. 12 gait term counts only in the runs at these speeds (default: every run from "
+                         f"{GAIT_FROM:g} m/s up)")
     ap.add_argument("--log", help="append each evaluation (row, score, runs) as a JSON line to this file")
     ap.add_argument("--steering", action="store_true",
                     help="search the steering constants on a 90-degree turn and a figure eight (CMA-ES; prints them)")
@@ -355,7 +413,10 @@ def main(argv=None) -> int:
         ap.error(f"--sigma {args.sigma:g} must be in (0, 0.5] (a share of each column's range)")
     if args.steering:
         return steering_search(args)
-    unknown = sorted(set(args.start) - set(args.names))
+    if args.joint and args.method != "cma":
+        ap.error("--joint searches with CMA-ES: add --method cma")
+    starts = start_rows(args.start, args.speeds)
+    unknown = sorted({n for row in starts.values() for n in row} - set(args.names))
     if unknown:
         ap.error(f"--start names {', '.join(unknown)}, which --names does not search ({', '.join(args.names)})")
     strength = args.strength if args.strength in ("human", "unlimited") else float(args.strength)
@@ -365,16 +426,19 @@ def main(argv=None) -> int:
     per_speed = {}          # this search's rows' records, merged into the file's when it is written
     new_values = {}
     with Pool(args.workers) as pool:
-        for k, speed in enumerate(args.speeds):
-            x0 = [float(args.start[n]) if n in args.start else table.at(n, speed) for n in args.names]
+        groups = [tuple(args.speeds)] if args.joint else [(v,) for v in args.speeds]
+        for k, rows in enumerate(groups):
+            speed = rows[0] if len(rows) == 1 else list(rows)
+            x0 = [float(starts[v][n]) if n in starts[v] else table.at(n, v) for v in rows for n in args.names]
             evaluate = Evaluator(pool, table, args.names, speed, args.duration, args.character, strength, args.leans,
-                                 courses=args.courses, log=args.log, faster=args.faster)
+                                 courses=args.courses, log=args.log, faster=args.faster, gait_speeds=args.gait_at)
+            label = " + ".join(f"{v:g}" for v in rows)
             if args.evaluate:
-                print(f"{speed} m/s: evaluation {evaluate(x0):.4f} at {dict(zip(args.names, x0))}")
+                print(f"{label} m/s: evaluation {evaluate(x0):.4f} at {evaluate.row_values(x0)}")
                 continue
             remaining = started + 60.0 * args.minutes - time.monotonic()
-            deadline = time.monotonic() + remaining / (len(args.speeds) - k)
-            stored_row = [table.at(n, speed) for n in args.names]
+            deadline = time.monotonic() + remaining / (len(groups) - k)
+            stored_row = [table.at(n, v) for v in rows for n in args.names]
             # what a better row must beat is the stored one, also when the search starts elsewhere
             baseline = evaluate(stored_row) if x0 != stored_row else None
             if args.method == "anneal":
@@ -382,18 +446,22 @@ def main(argv=None) -> int:
             else:
                 best = cma_search(evaluate, x0, deadline, args.max_evaluations, args.seed, args.sigma)
             baseline = evaluate.history[0][1] if baseline is None else baseline
-            print(f"{speed} m/s: {len(evaluate.history)} evaluations, baseline {baseline:.4f}, best {best['f']:.4f}",
+            print(f"{label} m/s: {len(evaluate.history)} evaluations, baseline {baseline:.4f}, best {best['f']:.4f}",
                   flush=True)
-            print(json.dumps(dict(zip(args.names, best["x"])), indent=1), flush=True)
+            found = evaluate.row_values(best["x"])
+            print(json.dumps({f"{v:g}": dict(zip(args.names, r)) for v, r in found.items()}, indent=1), flush=True)
             if best["f"] < baseline:
-                new_values[speed] = best["x"]
-                table = table.with_row(speed, dict(zip(args.names, map(float, best["x"]))))   # the next speed starts from it
-                per_speed[str(speed)] = {"score": best["f"], "baseline_score": baseline,
+                for v, r in found.items():
+                    new_values[v] = r
+                    table = table.with_row(v, dict(zip(args.names, r)))   # the next speed starts from it
+                    per_speed[str(v)] = {"score": best["f"], "baseline_score": baseline,
                                          "evaluations": len(evaluate.history), "searched": list(args.names),
                                          "method": args.method, "duration_s": args.duration,
                                          **({"sigma": args.sigma} if args.method == "cma" else {}),
                                          "leans": list(args.leans), "courses": args.courses,
-                                         "faster_speeds_scored": list(evaluate.faster)}
+                                         "faster_speeds_scored": list(evaluate.faster),
+                                         **({"searched_with": list(rows)} if len(rows) > 1 else {}),
+                                         **({"gait_at": list(args.gait_at)} if args.gait_at else {})}
     if args.evaluate or not new_values:
         if not args.evaluate:
             print("no improvement on the current table; nothing written")

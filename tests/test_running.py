@@ -308,5 +308,41 @@ def test_faster_scores_the_candidate_row_on_the_tables_faster_speeds_too():
     assert tune.faster_speeds([2.5, 3.5, 4.0, 4.83, 5.0], [4.83, 3.5]) == [4.0, 4.83, 5.0]
 
 
+def test_joint_search_scores_rows_at_several_speeds_together():
+    """--joint: one vector holds the rows of every --speeds (4.83 and 5.0 m/s here); each evaluation
+    runs every one of those speeds in the table with all its rows replaced; --gait-at makes the
+    Fig. 12 term count only at the speeds named."""
+    tune = _tune_running()
+
+    class RecordingPool:
+        def __init__(self):
+            self.jobs = []
+
+        def map(self, function, jobs):
+            self.jobs.extend(jobs)
+            return [{"speed": job[1], "t_up": 30.0, "duration": 30.0, "mean_speed": job[1], "head_acc_g": 0.0,
+                     "attitude_variation": 0.0, "gait_errors": [0.1, 0.1, 0.1]} for job in jobs]
+
+    table = SpeedTable([4.5, 5.0], {"thrust_gain": [1.0, 1.7], "idle_knee": [1.0, 1.0]})
+    pool = RecordingPool()
+    evaluate = tune.Evaluator(pool, table, ["thrust_gain"], [4.83, 5.0], 30.0, "man", "human", faster=True,
+                              gait_speeds=[4.83])
+    score = evaluate([1.3, 1.9])
+    assert [job[1] for job in pool.jobs] == [4.83, 4.83, 5.0, 5.0]        # 5.0 is a row, not a faster speed
+    candidate = pool.jobs[0][0]
+    assert candidate["speeds"] == [4.5, 4.83, 5.0] and candidate["values"]["thrust_gain"] == [1.0, 1.3, 1.9]
+    # the gait term (0.1 off each quantity) in the two 4.83 m/s runs only, averaged over four
+    assert score == pytest.approx(2 * (tune.W_GAIT * 0.1 + tune.W_GAIT_BAND * 3 * 0.02) / 4)
+    assert evaluate.row_values([1.3, 1.9]) == {4.83: [1.3], 5.0: [1.9]}
+    run_ = {"speed": 5.0, "t_up": 30.0, "duration": 30.0, "mean_speed": 5.0, "head_acc_g": 0.0,
+            "attitude_variation": 0.0, "gait_errors": [0.1, 0.1, 0.1]}
+    assert tune.evaluation([run_], gait_speeds=[4.83]) == 0.0 and tune.evaluation([run_]) > 0.0
+    # --start: one row for every searched speed, or a row per speed
+    assert tune.start_rows({"thrust_gain": 1.2}, [4.83, 5.0]) == {4.83: {"thrust_gain": 1.2}, 5.0: {"thrust_gain": 1.2}}
+    assert tune.start_rows({"4.83": {"thrust_gain": 1.2}}, [4.83, 5.0]) == {4.83: {"thrust_gain": 1.2}, 5.0: {}}
+    with pytest.raises(SystemExit):
+        tune.start_rows({"4.7": {"thrust_gain": 1.2}}, [4.83, 5.0])
+
+
 def test_human_figures_are_the_papers():
     assert HUMAN_FIG12["man"] == {"speed": 4.83, "step_frequency": 2.92, "step_length": 1.66, "stance_fraction": 57.9}
