@@ -284,23 +284,28 @@ def test_a_search_writes_its_rows_into_the_table_as_stored_when_it_ends():
     assert merged.values == {"thrust_gain": [2.5, 1.7], "idle_knee": [1.4, 1.6]}
 
 
+class RecordingPool:
+    """Stands in for the tuner's process pool: records the runs it is asked for and answers each
+    with a run at its commanded speed, without a fall, off the human figures by ``gait_errors``."""
+
+    def __init__(self, gait_errors):
+        self.jobs = []
+        self.gait_errors = list(gait_errors)
+
+    def map(self, function, jobs):
+        self.jobs.extend(jobs)
+        return [{"speed": job[1], "t_up": 30.0, "duration": 30.0, "mean_speed": job[1], "head_acc_g": 0.0,
+                 "attitude_variation": 0.0, "gait_errors": list(self.gait_errors)} for job in jobs]
+
+
 def test_faster_scores_the_candidate_row_on_the_tables_faster_speeds_too():
     """--faster: a row searched at 4.83 m/s is also run at 5.0 m/s with the same candidate table
     (the runner accelerating to 5.0 m/s passes through it); without it, only at its own speed."""
     tune = _tune_running()
 
-    class RecordingPool:
-        def __init__(self):
-            self.jobs = []
-
-        def map(self, function, jobs):
-            self.jobs.extend(jobs)
-            return [{"speed": job[1], "t_up": 30.0, "duration": 30.0, "mean_speed": job[1], "head_acc_g": 0.0,
-                     "attitude_variation": 0.0, "gait_errors": [0.0, 0.0, 0.0]} for job in jobs]
-
     table = SpeedTable([4.5, 5.0], {"thrust_gain": [1.0, 1.7]})
     for faster, speeds in ((True, [4.83, 4.83, 5.0, 5.0]), (False, [4.83, 4.83])):
-        pool = RecordingPool()
+        pool = RecordingPool([0.0, 0.0, 0.0])
         tune.Evaluator(pool, table, ["thrust_gain"], 4.83, 30.0, "man", "human", faster=faster)([1.3])
         assert [job[1] for job in pool.jobs] == speeds
         assert all(job[0]["speeds"] == [4.5, 4.83, 5.0] for job in pool.jobs)    # the candidate table
@@ -314,17 +319,8 @@ def test_joint_search_scores_rows_at_several_speeds_together():
     Fig. 12 term count only at the speeds named."""
     tune = _tune_running()
 
-    class RecordingPool:
-        def __init__(self):
-            self.jobs = []
-
-        def map(self, function, jobs):
-            self.jobs.extend(jobs)
-            return [{"speed": job[1], "t_up": 30.0, "duration": 30.0, "mean_speed": job[1], "head_acc_g": 0.0,
-                     "attitude_variation": 0.0, "gait_errors": [0.1, 0.1, 0.1]} for job in jobs]
-
     table = SpeedTable([4.5, 5.0], {"thrust_gain": [1.0, 1.7], "idle_knee": [1.0, 1.0]})
-    pool = RecordingPool()
+    pool = RecordingPool([0.1, 0.1, 0.1])
     evaluate = tune.Evaluator(pool, table, ["thrust_gain"], [4.83, 5.0], 30.0, "man", "human", faster=True,
                               gait_speeds=[4.83])
     score = evaluate([1.3, 1.9])
