@@ -223,8 +223,8 @@ def anneal(evaluate, x0, deadline, max_evaluations, seed):
         return time.monotonic() > deadline
 
     try:
-        dual_annealing(evaluate, bounds(evaluate.names) * len(evaluate.rows), x0=np.array(x0), maxfun=max_evaluations, seed=seed,
-                       callback=track, no_local_search=True, initial_temp=2000.0)
+        dual_annealing(evaluate, bounds(evaluate.names) * len(evaluate.rows), x0=np.array(x0), maxfun=max_evaluations,
+                       seed=seed, callback=track, no_local_search=True, initial_temp=2000.0)
     except StopIteration:
         pass
     return best
