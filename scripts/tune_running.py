@@ -178,18 +178,12 @@ class Evaluator:
         self.character, self.strength = character, strength
         self.history: list[tuple[list[float], float]] = []
 
-    def candidate(self, x) -> SpeedTable:
-        table, n = self.table, len(self.names)
-        for k, speed in enumerate(self.rows):
-            table = table.with_row(speed, dict(zip(self.names, map(float, x[k * n:(k + 1) * n]))))
-        return table
-
     def row_values(self, x) -> dict[float, list[float]]:
         n = len(self.names)
         return {speed: [float(v) for v in x[k * n:(k + 1) * n]] for k, speed in enumerate(self.rows)}
 
     def __call__(self, x) -> float:
-        candidate = self.candidate(x)
+        candidate = with_found_rows(self.table, self.names, self.row_values(x))
         table = {"speeds": candidate.speeds, "values": candidate.values}
         jobs = [(table, v_, lean, self.duration, self.character, self.strength, None)
                 for v_ in self.rows + self.faster for lean in self.leans]
@@ -269,8 +263,9 @@ def start_rows(start: dict, speeds: list[float]) -> dict[float, dict]:
 
 
 def with_found_rows(table: SpeedTable, names: list[str], found: dict[float, list[float]]) -> SpeedTable:
-    """``table`` - the stored one, read again when a search ends, since a search of other speeds may
-    have written it meanwhile - with the rows this search found (speed -> values of ``names``)."""
+    """``table`` with the rows ``found`` (speed -> values of ``names``) in place: a candidate's rows, or
+    a search's when it ends - then into the stored table read again, since a search of other speeds
+    may have written it meanwhile."""
     for speed, x in found.items():
         table = table.with_row(speed, dict(zip(names, map(float, x))))
     return table
@@ -451,9 +446,9 @@ def main(argv=None) -> int:
             found = evaluate.row_values(best["x"])
             print(json.dumps({f"{v:g}": dict(zip(args.names, r)) for v, r in found.items()}, indent=1), flush=True)
             if best["f"] < baseline:
+                table = with_found_rows(table, args.names, found)     # the next speed starts from it
                 for v, r in found.items():
                     new_values[v] = r
-                    table = table.with_row(v, dict(zip(args.names, r)))   # the next speed starts from it
                     per_speed[str(v)] = {"score": best["f"], "baseline_score": baseline,
                                          "evaluations": len(evaluate.history), "searched": list(args.names),
                                          "method": args.method, "duration_s": args.duration,

@@ -64,7 +64,6 @@ SCHEDULED_CONSTANTS = {
     "twist_damping": (0.0, 30.0),      # N m s/rad: the stance hip's rotation damped about its own rate (the foot's pivot)
     "thrust_gain": (1.0, 4.0),         # the knee's and ankle's position gain in the thrust, as a multiple of the default
     "toe_push": (0.0, 0.7),            # rad: the toe joint's plantarflexion target in the thrust (0 = held flat)
-    "trim_max": (0.1, 0.3),            # m: the most the speed trim moves the touchdown point back (or ahead)
 }
 
 # states of the active leg (Hodgins 1995 Fig. 3)
@@ -86,7 +85,7 @@ FALLBACK_TABLE = {"ground_speed_matching": 0.010, "stance_pitch": 0.100, "thrust
                   "touchdown_leg": 0.902, "idle_knee": 1.474,
                   "thrust_damping": 1.0, "unloading_after": 0.556, "place_back": 0.187, "swing_fold": 0.0,
                   "yaw_first": 0.0, "yaw_gain": 1.0, "twist_damping": 0.0, "thrust_gain": 1.0,
-                  "toe_push": 0.0, "trim_max": 0.15}
+                  "toe_push": 0.0}
 
 
 class SpeedTable:
@@ -445,7 +444,7 @@ class Running(Behaviour):
                 self._schedule(speed_now + TABLE_LEAD * (speed_cmd - speed_now))
                 # a slow integral of the speed error trims the placement (steady-state speed)
                 trim = self.speed_trim + SPEED_TRIM_GAIN * (speed_cmd - speed_now)
-                self.speed_trim = max(-p["trim_max"], min(p["trim_max"], trim))
+                self.speed_trim = max(-SPEED_TRIM_MAX, min(SPEED_TRIM_MAX, trim))
                 self.flight_time = 0.5 * self.flight_time + 0.5 * (t - self.t_liftoff)
                 self.t_touchdown = t
                 self.knee_touchdown = q[ja["knee"]]
@@ -750,6 +749,7 @@ THRUST_RAMP = 0.05            # s: the thrust targets move in over this time
 TOUCHDOWN_TOE_UP = 0.14       # rad: foot pitched toe-up at touchdown, heel first
 FOOT_INWARD = 0.00373            # m: the foot lands this far inside the hip, toward the centre line
 SPEED_TRIM_GAIN = 0.0101       # m of placement trim per m/s of speed error, per step
+SPEED_TRIM_MAX = 0.15
 PLACE_BACK_SPEED = 3.0       # m/s above which the full place_back applies
 DRIFT_FILTER = 2.0            # 1/s: low-pass of the sideways speed (about a stride)
 TURN_PLACE_GAIN = 1.0         # m: outward placement per g of centripetal acceleration
