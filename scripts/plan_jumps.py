@@ -214,6 +214,31 @@ after 0.60 s, (-0.00, -1.60) m after 0.61 s - and fall; to the left her nearest 
 short, (0.11, 0.62) and (0.23, 1.18) m (a plan that ends balanced is kept over a nearer fall); the
 man's 1.3 m right came to (0.005, -1.01) m and his left stayed at (0.07, 1.16) m.
 
+Where the woman's sideways take-off goes wrong (measured on her stored plans, human strength): (1) it
+twists. Her 1.3 m right plan leaves the ground turning at -5.3 kg m²/s about the vertical (the man's
+1.0 m right: 0.1): from the crouch's hold (1.0 s, -0.7 kg m²/s) to 1.2 s (-5.1) the sideways friction
+forces (-70 to -90 N per contact) act at the balls and toes of her feet, 0.07 and 0.13 m ahead of the
+COM, with the heels unloaded, and a sideways force ahead of the COM turns the body; in flight she turns
+~260° and lands facing away from her travel. (2) Her pelvis turns against her feet in the thrust, and the
+feet pivot on the ground with it: in her 1.0 m right jump the pelvis goes from 8° to -27° and the feet
+to -19° in the thrust's last 0.15 s; the lift-off hip abduction (`liftoff_roll`) of a pelvis pitched
+forward acts partly about the vertical. (3) The landing's foot servo (eq. 6.1, in the pelvis's heading
+frame) then asks for the feet far ahead of a pelvis that faces partly along the travel: at lift-off it
+commands the hips to -5.1 / -7.6 rad (their range ends at -2.18) in her 1.3 m right plan, -2.7 rad in
+her (short, balanced) 1.3 m left, against -0.87 rad in the man's balanced 1.0 m right; the hips flex at
+their torque limit and the pelvis tilts 60-90° from vertical within 70 ms. Tried on her stored plans
+(scratch, nothing kept): a hip-rotation servo on the whole body's vertical angular momentum in the
+sideways crouch and thrust (hip rotation offset 0.05-0.3 rad per kg m²/s) takes the flight's spin to
+-1.3 … +0.8 kg m²/s (0.12: +0.5), but her 1.3 / 1.6 m plans then land elsewhere and still fall (the
+short 1.3 m left excepted; 1.3 m right: (0.01, -1.42) m after 0.77 s); 300-trial searches with it (0.12) from her 1.3 m right, 1.0 m left and 1.0 m
+right plans found balanced landings no nearer, (0.16, -0.62), (0.03, 0.80) m in 0.46 s - the forward
+drift gone, but short - and (0.10, -0.97) m; the pelvis's heading servo (`heading_kp` 0.5-3) kept on
+in the thrust left her 1.0 m jumps' lift-off heading at 22-27° toward the target; the landing's targets blended in over 0.1-0.3 s
+(`blend_time`), or its frame held at the feet's heading at lift-off: every 1.3 / 1.6 m plan still falls.
+A sideways jump that lands needs a take-off that pushes through the COM without twisting (the feet's
+forces centred under it, the pelvis held square to the feet), and a landing whose foot placement does
+not depend on the pelvis's heading.
+
 With the thesis's unlimited strength (`--strength unlimited`, 300 trials each, started from the
 nearest human plan; the table at the end) the take-off reaches the targets the human legs do not,
 but the landings still fall: the man's 1.3 m left lands on the target, (-0.002, 1.312) m after
