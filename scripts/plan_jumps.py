@@ -234,7 +234,10 @@ short 1.3 m left excepted; 1.3 m right: (0.01, -1.42) m after 0.77 s); 300-trial
 right plans found balanced landings no nearer, (0.16, -0.62), (0.03, 0.80) m in 0.46 s - the forward
 drift gone, but short - and (0.10, -0.97) m; the pelvis's heading servo (`heading_kp` 0.5-3) kept on
 in the thrust left her 1.0 m jumps' lift-off heading at 22-27° toward the target; the landing's targets blended in over 0.1-0.3 s
-(`blend_time`), or its frame held at the feet's heading at lift-off: every 1.3 / 1.6 m plan still falls.
+(`blend_time`), or its frame held at the feet's heading at lift-off: every 1.3 / 1.6 m plan still falls;
+300-trial searches with the spin servo and the landing's frame held at the start's heading found, for
+her 1.3 m right, balanced landings no nearer than (0.17, -0.72) m, and for her 1.6 m right a fall at
+(0.03, -1.57) m after 0.63 s.
 A sideways jump that lands needs a take-off that pushes through the COM without twisting (the feet's
 forces centred under it, the pelvis held square to the feet), and a landing whose foot placement does
 not depend on the pelvis's heading.
