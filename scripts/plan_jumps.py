@@ -237,10 +237,12 @@ in the thrust left her 1.0 m jumps' lift-off heading at 22-27° toward the targe
 (`blend_time`), or its frame held at the feet's heading at lift-off: every 1.3 / 1.6 m plan still falls;
 300-trial searches with the spin servo and the landing's frame held at the start's heading found, for
 her 1.3 m right, balanced landings no nearer than (0.17, -0.72) m, and for her 1.6 m right a fall at
-(0.03, -1.57) m after 0.63 s; with the spin servo's gain as a searched setting (0-0.3, started at
-0.12; 600 trials each for her 1.0 m left and right, and her 1.3 m right): nearest balanced landings
-(0.16, 0.59) m to the left, (0.06, -0.93) m to the right (9 cm off, the stored plan 13 cm) and (0.10,
--0.37) m for the 1.3 m - none within 5 cm, and the setting was not kept.
+(0.03, -1.57) m after 0.63 s. The spin servo is kept as a searched setting of the sideways jumps,
+`spin_hold` (0-0.3 rad per kg m²/s; the leap's parameter, Balance's `spin_kp` in the crouch; 0 in
+every earlier plan, which run as before): searches with it started at 0.12-0.2 (her 1.0 m right
+2,029 trials, her 1.0 m left 2,384, her 1.3 m right 600) brought her 1.0 m right from (0.10, -0.92)
+m to (0.04, -0.91) m after 0.55 s (spin_hold 0.14; 10 cm off instead of 13 cm, still refused) and
+found nothing nearer for the others ((0.10, -0.37) m balanced for the 1.3 m).
 A sideways jump that lands needs a take-off that pushes through the COM without twisting (the feet's
 forces centred under it, the pelvis held square to the feet), and a landing whose foot placement does
 not depend on the pelvis's heading.

@@ -115,6 +115,10 @@ class Balance(Behaviour):
                   "hip rotation offset per radian of the pelvis's heading away from the feet's (0 = the hips' "
                   "rotation is not servoed): in a deep crouch the hips' abduction acts partly about the "
                   "vertical and turns the pelvis - a sideways lean holds the heading"),
+        Parameter("spin_kp", "rad/(kg m²/s)", 0.0, 0.0, 0.5,
+                  "hip rotation offset per kg m²/s of the whole body's angular momentum about the vertical "
+                  "(0 = not servoed): a sideways lean pushes at the forefeet, ahead of the COM, which "
+                  "twists the body; the hips turn the trunk against it while the feet are down"),
         Parameter("height_kp", "rad/m", 10.0, 0.0, 20.0,
                   "pelvis height servo: knee offset per metre of height error (corrects servo sag)"),
     )
@@ -337,6 +341,8 @@ class Balance(Behaviour):
         leg_length = math.sqrt(hx_ * hx_ + hy_ * hy_ + hz_ * hz_)
         knee_offset = self.params["height_kp"] * (leg_length - self._leg_length)
         ratio = self.damping_ratio
+        heading_kp, spin_kp = self.params["heading_kp"], self.params["spin_kp"]
+        spin = spin_kp * float(d.subtree_angmom[self.pelvis][2]) if spin_kp else 0.0
         for k in (0, 1):
             j = idx[k]
             f = d.xmat[self.feet[k]].tolist()          # row-major 3x3: columns are the foot axes
@@ -362,7 +368,8 @@ class Balance(Behaviour):
             targets[hy] = angles[hy] + (pelvis_pitch - pelvis_pitch_goal)
             offset[hy] = hip_x
             offset[hx] = HIP_SHARE * delta_y
-            if self.params["heading_kp"]:
+            if heading_kp or spin_kp:
                 heading_error = math.remainder(yaw - math.atan2(f[3], f[0]), math.tau)   # pelvis vs this foot
-                offset[j["hip_z"]] = self.params["heading_kp"] * heading_error
+                turn = heading_kp * heading_error if heading_kp else 0.0
+                offset[j["hip_z"]] = turn + spin if spin_kp else turn
         servos.hold(targets, t)

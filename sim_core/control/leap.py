@@ -104,11 +104,12 @@ class LeapThrust(Behaviour):
     the ground without spinning; ``liftoff_hip`` flexes (-) or extends (+) the hips at the end
     to send the force past the COM and set the somersault rate (§4.3); ``liftoff_roll`` likewise
     abducts them sideways (a sideways jump: + swings the feet to the left, pushing the body right),
-    which sets the roll rate."""
+    which sets the roll rate; ``spin_hold`` (a sideways jump) turns the hips against the body's
+    angular momentum about the vertical while the feet are down, as the crouch's Balance does."""
 
     def __init__(self, params, ctx: ControlContext, crouch_height: float, timing=VERTICAL_TIMING,
                  ankle_gain=ANKLE_GAIN_VERTICAL, liftoff_hip=0.0, arm_swing=2.5, stand_height=None,
-                 damping=THRUST_DAMPING, lean=0.0, liftoff_roll=0.0):
+                 damping=THRUST_DAMPING, lean=0.0, liftoff_roll=0.0, spin_hold=0.0):
         super().__init__(params, ctx)
         self.timing, self.ankle_gain = timing, ankle_gain
         self.liftoff_hip, self.arm_swing = liftoff_hip, arm_swing
@@ -118,6 +119,7 @@ class LeapThrust(Behaviour):
         self.damping = damping
         self.lean = lean
         self.liftoff_roll = liftoff_roll
+        self.spin_hold = spin_hold
 
     def start(self, t: float) -> None:
         s = self.ctx.servos
@@ -126,6 +128,8 @@ class LeapThrust(Behaviour):
         heights = np.linspace(self.crouch_height, self.stand_height, 8)
         self.path = CrouchTable(self.ctx.model, self.ctx.character, heights, self.stand_height, com_offset=self.lean)
         self.idx = {name: s.indices([f"{name}_r_y", f"{name}_l_y"]) for name in ("hip", "knee", "ankle")}
+        self.hip_rotation = s.indices(["hip_r_z", "hip_l_z"])
+        self.pelvis = self.ctx.model.body("PELVIS").id
         t_hip, t_knee, t_ankle = self.timing
         for side, sign in (("r", 1.0), ("l", -1.0)):
             s.move_to(s.indices([f"hip_{side}_x", f"hip_{side}_z", f"ankle_{side}_x"]),
@@ -158,6 +162,8 @@ class LeapThrust(Behaviour):
         for name, value in (("hip", hip), ("knee", knee), ("ankle", ankle)):
             for i in self.idx[name]:
                 s.start[i] = s.goal[i] = value
+        if self.spin_hold:
+            s.offset[self.hip_rotation] = self.spin_hold * float(self.ctx.data.subtree_angmom[self.pelvis][2])
         s.t0[self.idx["hip"]] = t
         s._moving = True
 
@@ -604,6 +610,10 @@ class Leap(Sequence):
         Parameter("thrust_lean", "m", 0.0, -0.2, 0.1,
                   "COM forward of the feet along the thrust's path of balanced poses: - pushes the body back "
                   "(a sideways jump of the woman otherwise leaves moving forward; low_level only)"),
+        Parameter("spin_hold", "rad/(kg m²/s)", 0.0, 0.0, 0.5,
+                  "a sideways jump's hips turn against the body's angular momentum about the vertical in the "
+                  "crouch and the thrust, this much hip rotation per kg m²/s (0 = not held): the sideways push "
+                  "at the forefeet, ahead of the COM, twists the body (low_level only)"),
         Parameter("arm_swing", "rad", 1.0, 0.0, 3.2, "forward arm swing during the thrust (low_level only)"),
         Parameter("crouch_arms", "rad", 0.0, -0.8, 0.0,
                   "arms swung back (-) in the crouch, to swing forward in the thrust; keeps the hands off "
@@ -651,7 +661,7 @@ class Leap(Sequence):
         if p["low_level"]:
             settings = {k: p[k] for k in ("crouch_height", "crouch_pitch", "com_offset", "com_offset_y",
                                           "liftoff_roll", "arm_swing", "crouch_arms", "thrust_damping",
-                                          "thrust_lean")}
+                                          "thrust_lean", "spin_hold")}
             settings["damping"] = settings.pop("thrust_damping")
             settings["liftoff_hip"] = p["liftoff_hip_angle"]
             return settings
@@ -717,6 +727,7 @@ class Leap(Sequence):
                                                 com_offset_y=cfg.get("com_offset_y", 0.0),
                                                 arm_flexion=cfg.get("crouch_arms", 0.0), move_start=0.2,
                                                 heading_kp=SIDEWAYS_HEADING_KP if cfg.get("com_offset_y") else 0.0,
+                                                spin_kp=cfg.get("spin_hold", 0.0) if cfg.get("com_offset_y") else 0.0,
                                                 move_time=cfg["crouch_time"] if "crouch_time" in cfg
                                                 else p["crouch_time"],
                                                 hold_time=0.0, return_to_stand=0)), ctx)
@@ -736,7 +747,8 @@ class Leap(Sequence):
             return LeapThrust({}, ctx, cfg["crouch_height"], BROAD_TIMING if broad else VERTICAL_TIMING,
                               ANKLE_GAIN_BROAD if broad else ANKLE_GAIN_VERTICAL, cfg["liftoff_hip"],
                               cfg["arm_swing"], stand_height=standing_hip_height(ctx.character), damping=cfg["damping"],
-                              liftoff_roll=cfg.get("liftoff_roll", 0.0), lean=cfg.get("thrust_lean", 0.0))
+                              liftoff_roll=cfg.get("liftoff_roll", 0.0), lean=cfg.get("thrust_lean", 0.0),
+                              spin_hold=cfg.get("spin_hold", 0.0) if cfg.get("com_offset_y") else 0.0)
 
         def land(t):
             # the calibrated leap's own correction of the landing's foot servo delta, plus the user's

@@ -60,16 +60,18 @@ KNOBS = {
     "foot_lead_time": (0.15, 0.35), "crouch_arms": (-0.8, 0.0),
 }
 KNOB_DEFAULTS = {"crouch_arms": 0.0, "liftoff_roll": 0.0,    # a knob a prior or a stored plan does not name
-                 "thrust_lean": 0.0, "com_offset_y": 0.0}     # (arms hanging in the crouch, no lift-off roll,
-                                                              # the thrust along poses balanced over the feet,
-                                                              # no sideways lean); the leap's parameters by
-                                                              # the same names
+                 "thrust_lean": 0.0, "com_offset_y": 0.0,     # (arms hanging in the crouch, no lift-off roll,
+                 "spin_hold": 0.0}                            # the thrust along poses balanced over the feet,
+                                                              # no sideways lean, no hold on the twist); the
+                                                              # leap's parameters by the same names
 SIDEWAYS_KNOBS = {"com_offset_y": (-0.2, 0.2), "liftoff_roll": (-0.5, 0.5),   # searched only for a target off to
                   "com_offset": (-0.05, 0.20),     # the side; the lean ahead may go back a little (the woman's
                                                    # sideways jumps drifted 0.14-0.2 m forward)
-                  "thrust_lean": (-0.15, 0.05)}    # and the thrust may push back: her best 1.0 m jump left at
+                  "thrust_lean": (-0.15, 0.05),    # and the thrust may push back: her best 1.0 m jump left at
                                                    # 0.28 m/s forward whatever the crouch's offset; a thrust
                                                    # along poses with the COM 0.15 m behind the feet, 0.11 m/s
+                  "spin_hold": (0.0, 0.3)}         # the hips may turn against the twist that the push at the
+                                                   # forefeet gives (the woman's 1.3 m right left at -5.3 kg m²/s)
 SIDEWAYS_PRIOR = {"crouch_height": 0.6, "crouch_pitch": 0.0, "com_offset": 0.0, "liftoff_hip": 0.6,
                   "arm_swing": 1.0, "damping": 0.3, "vertical_thrust": 1.0, "foot_lead_time": 0.3}
 SIDEWAYS_LIFTOFF_ROLL = 0.3         # rad: where a sideways search starts, feet abducted away from the target at
