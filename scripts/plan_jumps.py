@@ -241,7 +241,8 @@ her 1.3 m right, balanced landings no nearer than (0.17, -0.72) m, and for her 1
 `spin_hold` (0-0.3 rad per kg m²/s; the leap's parameter, Balance's `spin_kp` in the crouch; 0 in
 every earlier plan, which run as before): searches with it started at 0.12-0.2 (her 1.0 m right
 2,029 trials, her 1.0 m left 2,384, her 1.3 m right 600) brought her 1.0 m right from (0.10, -0.92)
-m to (0.04, -0.91) m after 0.55 s (spin_hold 0.14; 10 cm off instead of 13 cm, still refused) and
+m to (0.04, -0.91) m after 0.55 s (spin_hold 0.14; 10 cm off instead of 13 cm, still refused; two
+fresh 600-trial searches from it, `restart` 1 and 2, found nothing nearer) and
 found nothing nearer for the others ((0.10, -0.37) m balanced for the 1.3 m). 400 more trials for
 each 1.3 m target with it (`--sideways 1.3 --start '{{"spin_hold": 0.12}}'`, the man's from 0.08; not
 stored, the plans above are the earlier bests): the woman's left (0.08, 0.66) m and right (0.07, -0.37)
