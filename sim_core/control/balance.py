@@ -369,7 +369,6 @@ class Balance(Behaviour):
             offset[hy] = hip_x
             offset[hx] = HIP_SHARE * delta_y
             if heading_kp or spin_kp:
-                heading_error = math.remainder(yaw - math.atan2(f[3], f[0]), math.tau)   # pelvis vs this foot
-                turn = heading_kp * heading_error if heading_kp else 0.0
-                offset[j["hip_z"]] = turn + spin if spin_kp else turn
+                heading_error = math.remainder(yaw - math.atan2(f[3], f[0]), math.tau) if heading_kp else 0.0
+                offset[j["hip_z"]] = heading_kp * heading_error + spin          # pelvis vs this foot, and the spin
         servos.hold(targets, t)

@@ -104,8 +104,8 @@ class LeapThrust(Behaviour):
     the ground without spinning; ``liftoff_hip`` flexes (-) or extends (+) the hips at the end
     to send the force past the COM and set the somersault rate (§4.3); ``liftoff_roll`` likewise
     abducts them sideways (a sideways jump: + swings the feet to the left, pushing the body right),
-    which sets the roll rate; ``spin_hold`` (a sideways jump) turns the hips against the body's
-    angular momentum about the vertical while the feet are down, as the crouch's Balance does."""
+    which sets the roll rate; ``spin_hold`` turns the hips against the body's angular momentum about
+    the vertical while the feet are down, as the crouch's Balance ``spin_kp`` does (a sideways jump)."""
 
     def __init__(self, params, ctx: ControlContext, crouch_height: float, timing=VERTICAL_TIMING,
                  ankle_gain=ANKLE_GAIN_VERTICAL, liftoff_hip=0.0, arm_swing=2.5, stand_height=None,
@@ -611,9 +611,9 @@ class Leap(Sequence):
                   "COM forward of the feet along the thrust's path of balanced poses: - pushes the body back "
                   "(a sideways jump of the woman otherwise leaves moving forward; low_level only)"),
         Parameter("spin_hold", "rad/(kg m²/s)", 0.0, 0.0, 0.5,
-                  "a sideways jump's hips turn against the body's angular momentum about the vertical in the "
-                  "crouch and the thrust, this much hip rotation per kg m²/s (0 = not held): the sideways push "
-                  "at the forefeet, ahead of the COM, twists the body (low_level only)"),
+                  "the hips turn against the body's angular momentum about the vertical in the crouch and the "
+                  "thrust, this much hip rotation per kg m²/s (0 = not held): a sideways jump's push at the "
+                  "forefeet, ahead of the COM, twists the body (low_level only)"),
         Parameter("arm_swing", "rad", 1.0, 0.0, 3.2, "forward arm swing during the thrust (low_level only)"),
         Parameter("crouch_arms", "rad", 0.0, -0.8, 0.0,
                   "arms swung back (-) in the crouch, to swing forward in the thrust; keeps the hands off "
@@ -727,7 +727,7 @@ class Leap(Sequence):
                                                 com_offset_y=cfg.get("com_offset_y", 0.0),
                                                 arm_flexion=cfg.get("crouch_arms", 0.0), move_start=0.2,
                                                 heading_kp=SIDEWAYS_HEADING_KP if cfg.get("com_offset_y") else 0.0,
-                                                spin_kp=cfg.get("spin_hold", 0.0) if cfg.get("com_offset_y") else 0.0,
+                                                spin_kp=cfg.get("spin_hold", 0.0),
                                                 move_time=cfg["crouch_time"] if "crouch_time" in cfg
                                                 else p["crouch_time"],
                                                 hold_time=0.0, return_to_stand=0)), ctx)
@@ -748,7 +748,7 @@ class Leap(Sequence):
                               ANKLE_GAIN_BROAD if broad else ANKLE_GAIN_VERTICAL, cfg["liftoff_hip"],
                               cfg["arm_swing"], stand_height=standing_hip_height(ctx.character), damping=cfg["damping"],
                               liftoff_roll=cfg.get("liftoff_roll", 0.0), lean=cfg.get("thrust_lean", 0.0),
-                              spin_hold=cfg.get("spin_hold", 0.0) if cfg.get("com_offset_y") else 0.0)
+                              spin_hold=cfg.get("spin_hold", 0.0))
 
         def land(t):
             # the calibrated leap's own correction of the landing's foot servo delta, plus the user's
