@@ -20,9 +20,7 @@ leap_assess).
 """
 from __future__ import annotations
 
-import json
 import math
-from pathlib import Path
 
 import numpy as np
 
@@ -36,8 +34,8 @@ from sim_core.control.sequencer import Sequence, Step
 from sim_core.control.servo import hermite_scalar
 from sim_core.errors import ParameterError
 from sim_core.schema import Parameter, Schema
+from sim_core.tuned import TableType, load, register as register_table
 
-TUNED_DIR = Path(__file__).resolve().parents[2] / "rigs" / "tuned"
 AIRBORNE_HEIGHT = 0.01          # m: every foot site this high above the ground = flight
 TOUCHDOWN_HEIGHT = 0.004        # m: a foot site this low = contact
 VERTICAL_TIMING = (0.10, 0.15, 0.22)     # s to full extension: hip, knee, ankle [W98 §4.1]
@@ -48,7 +46,7 @@ SIDEWAYS_HEADING_KP = 3.0       # rad/rad: a sideways lean's hips hold the pelvi
 BROAD_TRIGGER = 0.8             # share of the crouch's COM offset that triggers a broad jump's thrust
 THRUST_DAMPING = 1.0            # share of the stiffened servos' damping kept in the thrust when the
                                 # mapping names none. Damping brakes fast extension: high leaps use less
-                                # (calibrated per row of rigs/tuned/leap_<character>.json, with the
+                                # (calibrated per row of the leap table, with the
                                 # lift-off hip angle and COM offset that cancel the spin it brings)
 THRUST_GAIN = 3.0               # hip and knee servos stiffened for the thrust [W98 §4.3]
 LIFTOFF_ANKLE = 0.75            # rad of plantarflexion at the end of the thrust
@@ -182,7 +180,7 @@ class Landing(Behaviour):
                   "own landing keeps knee_flexion)"),
         Parameter("foot_delta", "m", 0.0, -0.3, 0.3,
                   "foot servo delta: extra forward placement of the feet, added to the calibrated one "
-                  "for the horizontal speed (rigs/tuned/landing_<character>.json, Table 6.1's role)"),
+                  "for the horizontal speed (the landing table, Table 6.1's role)"),
         Parameter("foot_lead_time", "s", 0.2, 0.0, 0.6,
                   "feet land this many seconds of horizontal COM travel ahead of the COM "
                   "(0.3 s ~ the capture point of a standing human)"),
@@ -492,15 +490,34 @@ def leap_assess(trajectory, squat_floor: float | None = None) -> tuple[str, dict
     return "success", metrics
 
 
+LANDING_SETTINGS = Schema(
+    Parameter("foot_delta", "m", 0.0, -0.3, 0.3,
+              "foot servo delta the landing adds to its capture-point placement (Table 6.1's role)"))
+
+
+def _landing_rows(body: dict):
+    for row in body.get("foot_delta", []):
+        for speed, delta in zip(row["speed"], row["delta"]):
+            yield f"foot_delta drop {row['drop']:g} m, speed {speed:g} m/s", {"foot_delta": delta}
+    fast = body.get("fast_touchdown")
+    if fast:
+        yield "fast_touchdown", {"foot_delta": fast["delta"]}
+
+
+LANDING_TABLE = register_table(TableType(
+    "landing", LANDING_SETTINGS, _landing_rows,
+    "interpolated over the horizontal speed within a drop's row, then over the vertical touchdown speed "
+    "between drops; a fast touchdown's extra ramps in (calibrated_foot_delta)"))
+
+
 def calibrated_foot_delta(character: str, horizontal_speed: float, touchdown_speed: float = 0.0) -> float:
     """Foot servo delta from scripts/calibrate_landing.py's table (0 where there is none): for
     the horizontal speed, from the rows of the drops whose vertical touchdown speed is nearest
     (interpolated between them), plus the extra for a fast touchdown (a high drop or leap), which
     ramps in from ``speed`` over ``ramp`` m/s of expected vertical touchdown speed."""
-    path = TUNED_DIR / f"landing_{character}.json"
-    if not path.exists():
+    table = load("landing", character)
+    if table is None:
         return 0.0
-    table = json.loads(path.read_text())
     rows = [row for row in table["foot_delta"] if row["speed"]]
     if not rows:
         return 0.0
@@ -513,15 +530,6 @@ def calibrated_foot_delta(character: str, horizontal_speed: float, touchdown_spe
 
 
 # ------------------------------------------------------------------------------- leap mapping
-DEFAULT_MAPPING = {
-    # Wooten Tables 4.1 / 4.2 as a starting point (crouch pelvis height, torso pitch, COM offset,
-    # arm swing) until scripts/calibrate_leap.py writes rigs/tuned/leap_<character>.json
-    "vertical": {"com_rise": [0.07, 0.22, 0.48, 0.71, 0.95], "crouch_height": [0.85, 0.75, 0.65, 0.55, 0.45],
-                 "torso_pitch": [0.0, 0.5, 1.0, 1.5, 1.8]},
-    "broad": {"com_travel": [], "params": []},      # planned jumps only (scripts/calibrate_leap.py)
-}
-
-
 def rise_tolerance(height: float) -> float:
     """TARGETS.md's tolerance of a vertical leap's COM rise: +-10 %, or +-3 cm below 0.3 m."""
     return 0.03 if height < 0.3 else 0.1 * height
@@ -575,11 +583,50 @@ def vertical_key(ctx: ControlContext) -> str:
     return "vertical" if run_strength(ctx) == "human" else "vertical_unlimited"
 
 
+# the leap's low-level settings: the columns of a vertical-leap table, a broad jump's and a planned
+# jump's settings (sim_core.control.target_jump searches them); a default is what a row that does
+# not name the setting runs with
+LEAP_SETTINGS = Schema(
+    Parameter("crouch_height", "m", 0.65, 0.4, 0.95, "pelvis height of the crouch"),
+    Parameter("crouch_pitch", "rad", 0.0, 0.0, 1.8, "torso pitch in the crouch"),
+    Parameter("torso_pitch", "rad", 0.0, 0.0, 1.8, "torso pitch in the crouch (the vertical-leap columns' name)"),
+    Parameter("com_offset", "m", 0.0, -0.05, 0.25, "COM ahead (+) of the middle of the feet in the crouch"),
+    Parameter("com_offset_y", "m", 0.0, -0.2, 0.2, "COM to the left (+) of the middle of the feet in the crouch"),
+    Parameter("liftoff_hip", "rad", 0.0, -1.0, 1.0, "hip flexion (-) or extension (+) at lift-off"),
+    Parameter("liftoff_roll", "rad", 0.0, -0.5, 0.5, "hip abduction at lift-off (a sideways jump's roll)"),
+    Parameter("vertical_thrust", "1", 0.0, 0.0, 1.0, "share of the vertical leap's thrust timing in a broad jump's"),
+    Parameter("arm_swing", "rad", 1.0, 0.0, 3.2, "arm swing forward and up in the thrust"),
+    Parameter("damping", "1", THRUST_DAMPING, 0.1, 1.0, "share of the stiffened servos' damping kept in the thrust"),
+    Parameter("foot_delta", "m", 0.0, -0.3, 0.3, "landing: foot servo delta"),
+    Parameter("swing_arms", "1", 0.0, 0.0, 1.0, "landing: share of the arm swing against the spin"),
+    Parameter("arm_flexion", "rad", 0.6, -1.0, 3.0, "landing: shoulder flexion"),
+    Parameter("foot_lead_time", "s", 0.2, 0.0, 0.6, "landing: the feet land this long of COM travel ahead"),
+    Parameter("crouch_arms", "rad", 0.0, -0.8, 0.0, "shoulder flexion in the crouch (back: -)"),
+    Parameter("thrust_lean", "m", 0.0, -0.2, 0.1, "COM ahead (+) of the feet along the thrust's extension"),
+    Parameter("spin_hold", "1", 0.0, 0.0, 0.5, "the hips turn against the spin about the vertical"),
+)
+LEAP_MEASURED = ("com_rise", "com_travel", "peak_thrust_grf_body_weights")   # columns a calibration measured
+
+
+def _leap_rows(body: dict):
+    for key in ("vertical", "vertical_unlimited"):
+        columns = body.get(key, {})
+        settings = [n for n in columns if n not in LEAP_MEASURED]
+        for k in range(len(columns.get("com_rise", []))):
+            yield f"{key} row {k}", {n: columns[n][k] for n in settings}
+    for k, row in enumerate(body.get("broad", {}).get("settings", [])):
+        yield f"broad row {k}", row
+
+
+LEAP_TABLE = register_table(TableType(
+    "leap", LEAP_SETTINGS, _leap_rows,
+    "vertical: the row whose measured com_rise is nearest the commanded height if within its tolerance, else "
+    "interpolated over com_rise; broad: the row whose measured com_travel is nearest the distance"))
+
+
 def load_mapping(character: str) -> dict:
-    path = TUNED_DIR / f"leap_{character}.json"
-    if path.exists():
-        return json.loads(path.read_text())
-    return DEFAULT_MAPPING
+    """The character's leap table, else the design table every character starts from (leap_any)."""
+    return load("leap", character) or load("leap", "any")
 
 
 @register
@@ -670,11 +717,12 @@ class Leap(Sequence):
         rises = v["com_rise"]
         nearest = min(rises, key=lambda rise: abs(rise - p["height"]))
         h = nearest if abs(nearest - p["height"]) <= rise_tolerance(p["height"]) else p["height"]
-        column = lambda name, default: float(np.interp(h, rises, v.get(name, [default] * len(rises))))
-        return {"crouch_height": column("crouch_height", 0.65), "crouch_pitch": column("torso_pitch", 0.0),
-                "com_offset": column("com_offset", 0.0), "arm_swing": column("arm_swing", 1.0),
-                "damping": column("damping", THRUST_DAMPING), "foot_delta": column("foot_delta", 0.0),
-                "liftoff_hip": column("liftoff_hip", 0.0) + p["liftoff_hip_angle"]}
+        default = LEAP_SETTINGS.defaults()
+        column = lambda name: float(np.interp(h, rises, v.get(name, [default[name]] * len(rises))))
+        return {"crouch_height": column("crouch_height"), "crouch_pitch": column("torso_pitch"),
+                "com_offset": column("com_offset"), "arm_swing": column("arm_swing"),
+                "damping": column("damping"), "foot_delta": column("foot_delta"),
+                "liftoff_hip": column("liftoff_hip") + p["liftoff_hip_angle"]}
 
     def check_feasible(self) -> None:
         p = self.params
