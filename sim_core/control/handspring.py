@@ -35,7 +35,7 @@ from sim_core.control.somersault import FLIGHT_STEP_PARAMETER, ROTATION_TOLERANC
 from sim_core.control.tumble import FlightRotation, both_sides
 from sim_core.control.tuned import uncalibrated
 from sim_core.schema import Parameter, Schema
-from sim_core.tuned import TableType, load, register as register_table
+from sim_core.tuned import TableError, TableType, load, register as register_table
 from sim_core.tuned.settings import SkillSchema
 
 HAND_BODIES = ("HANDR", "HANDL")
@@ -128,7 +128,10 @@ HANDSPRING_TABLE = register_table(TableType(
     "keyed by strength (a row that leaves out a setting runs it at OLD_ROW's value)"))
 # the settings' defaults are data: the man's calibrated unlimited-strength row, so that low_level=1 with
 # nothing set runs that handspring
-DEFAULT_ROW = {**OLD_ROW, **calibrated("man", "unlimited")["settings"]}
+DEFAULT_ROW = {**OLD_ROW, **(calibrated("man", "unlimited") or {"settings": {}})["settings"]}
+if set(DEFAULT_ROW) != set(SETTING_RANGES.by_name):
+    raise TableError("handspring_man.json: the handspring settings' defaults are its unlimited row, which names "
+                     f"{', '.join(sorted(DEFAULT_ROW)) or 'nothing'}; needed: {', '.join(SETTING_RANGES.by_name)}")
 HANDSPRING_SETTINGS = Schema(*(dataclasses.replace(p, default=float(DEFAULT_ROW[p.name]))
                                for p in SETTING_RANGES.parameters))
 

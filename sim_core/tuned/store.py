@@ -111,6 +111,11 @@ def save(skill: str, character: str, body: dict, strengths: Iterable[str]) -> Pa
     return path
 
 
+def delete(skill: str, character: str) -> None:
+    """Remove a table (a calibration that must run against none, e.g. the landing's)."""
+    table_path(skill, character).unlink(missing_ok=True)
+
+
 def dumps(data: dict) -> str:
     """The file text of a table: one layout for every table, so load-then-save is byte-stable."""
     return json.dumps(data, indent=1) + "\n"
