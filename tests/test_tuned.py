@@ -108,6 +108,14 @@ def test_no_table_is_none_and_a_skill_without_a_row_type_is_refused(tables):
         tuned.load("bicycling", "man")
 
 
+def test_every_skill_with_a_table_declares_its_settings_schema_and_lookup():
+    """A row type names its settings schema and the function(s) that pick a row, each saying how."""
+    for skill, _ in stored_tables():
+        kind = store.table_type(skill)
+        assert kind.settings.parameters and kind.lookup and all(f.__doc__ for f in kind.lookup), skill
+    assert "nearest" in store.table_type("leap").describe_lookup()
+
+
 # ------------------------------------------------------------------ settings schemas
 def test_every_behaviour_has_a_settings_schema_apart_from_its_animator_schema():
     """The panel shows ``schema`` and folds ``settings_schema`` away: no name is in both, and a

@@ -78,17 +78,23 @@ def _article(name: str) -> str:
     return ("an " if name[0] in "aeiou" else "a ") + name
 
 
-def load_settings(character: str, p: dict) -> dict:
-    """Leap settings for this dive: the calibrated dive of the same group that is most alike
-    (same position, then twists, then somersaults), else the group's design row (dives_any)."""
+def dive_row(table: dict, p: dict) -> dict | None:
+    """The dive of the same group most alike (same position, then nearest twists, then nearest
+    somersaults): its settings, or None if the table has no dive of the group."""
     group = group_name(p)
-    own = load("dives", character)
-    table = [d for d in own["dives"] if GROUPS[d["group"]] == group] if own is not None else []
-    if not table:
-        return dict(next(d["settings"] for d in load("dives", "any")["dives"] if GROUPS[d["group"]] == group))
-    best = min(table, key=lambda d: (d["position"] != int(round(p["position"])), abs(d["twists"] - p["twists"]),
-                                     abs(d["somersaults"] - p["somersaults"])))
+    rows = [d for d in table["dives"] if GROUPS[d["group"]] == group]
+    if not rows:
+        return None
+    best = min(rows, key=lambda d: (d.get("position", 0) != int(round(p["position"])),
+                                    abs(d.get("twists", 0.0) - p["twists"]), abs(d.get("somersaults", 0.0) - p["somersaults"])))
     return dict(best["settings"])
+
+
+def load_settings(character: str, p: dict) -> dict:
+    """Leap settings for this dive: the character's calibrated dive most alike (dive_row), else
+    the group's design row (dives_any)."""
+    own = load("dives", character)
+    return (own is not None and dive_row(own, p)) or dive_row(load("dives", "any"), p)
 
 
 DIVE_SETTINGS = Schema(
@@ -107,9 +113,7 @@ DIVE_SETTINGS = Schema(
 )
 
 DIVES_TABLE = register_table(TableType(
-    "dives", DIVE_SETTINGS, lambda body: ((f"dive {k}", d["settings"]) for k, d in enumerate(body["dives"])),
-    "the row of the same group most alike (same position, then nearest twists, then somersaults); a group "
-    "with no row runs dives_any's"))
+    "dives", DIVE_SETTINGS, lambda body: ((f"dive {k}", d["settings"]) for k, d in enumerate(body["dives"])), (dive_row,)))
 
 
 @register

@@ -35,7 +35,7 @@ from sim_core.control.somersault import FLIGHT_STEP_PARAMETER, ROTATION_TOLERANC
 from sim_core.control.tumble import FlightRotation, both_sides
 from sim_core.control.tuned import uncalibrated
 from sim_core.schema import Parameter, Schema
-from sim_core.tuned import TableError, TableType, load, register as register_table
+from sim_core.tuned import TableError, TableType, keyed, load, register as register_table
 from sim_core.tuned.settings import SkillSchema
 
 HAND_BODIES = ("HANDR", "HANDL")
@@ -66,12 +66,14 @@ def load_table(character: str) -> dict:
     return load("handspring", character) or {"handsprings": []}
 
 
+def handspring_row(table: dict, strength: str) -> dict | None:
+    """The row of the strength (keyed), or None."""
+    return keyed(table["handsprings"], strength=strength)
+
+
 def calibrated(character: str, strength: str) -> dict | None:
     """The calibrated handspring of this character and strength, or None."""
-    for entry in load_table(character)["handsprings"]:
-        if entry["strength"] == strength:
-            return entry
-    return None
+    return handspring_row(load_table(character), strength)
 
 
 def setting(name: str, unit: str, minimum: float, maximum: float, help_text: str) -> Parameter:
@@ -125,7 +127,7 @@ HANDSPRING_TABLE = register_table(TableType(
     "handspring", SETTING_RANGES,
     lambda body: ((f"{kind} {e['strength']}", e["settings"]) for kind in ("handsprings", "not_found")
                   for e in body.get(kind, [])),
-    "keyed by strength (a row that leaves out a setting runs it at OLD_ROW's value)"))
+    (handspring_row,)))
 # the settings' defaults are data: the man's calibrated unlimited-strength row, so that low_level=1 with
 # nothing set runs that handspring
 DEFAULT_ROW = {**OLD_ROW, **(calibrated("man", "unlimited") or {"settings": {}})["settings"]}

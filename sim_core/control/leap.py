@@ -504,20 +504,10 @@ def _landing_rows(body: dict):
         yield "fast_touchdown", {"foot_delta": fast["delta"]}
 
 
-LANDING_TABLE = register_table(TableType(
-    "landing", LANDING_SETTINGS, _landing_rows,
-    "interpolated over the horizontal speed within a drop's row, then over the vertical touchdown speed "
-    "between drops; a fast touchdown's extra ramps in (calibrated_foot_delta)"))
-
-
-def calibrated_foot_delta(character: str, horizontal_speed: float, touchdown_speed: float = 0.0) -> float:
-    """Foot servo delta from scripts/calibrate_landing.py's table (0 where there is none): for
-    the horizontal speed, from the rows of the drops whose vertical touchdown speed is nearest
-    (interpolated between them), plus the extra for a fast touchdown (a high drop or leap), which
+def foot_delta_row(table: dict, horizontal_speed: float, touchdown_speed: float) -> float:
+    """Interpolated over the horizontal speed in each drop's row, then over the vertical touchdown
+    speed between the drops, plus the extra for a fast touchdown (a high drop or leap), which
     ramps in from ``speed`` over ``ramp`` m/s of expected vertical touchdown speed."""
-    table = load("landing", character)
-    if table is None:
-        return 0.0
     rows = [row for row in table["foot_delta"] if row["speed"]]
     if not rows:
         return 0.0
@@ -527,6 +517,16 @@ def calibrated_foot_delta(character: str, horizontal_speed: float, touchdown_spe
     if fast:
         delta += fast["delta"] * min(max((touchdown_speed - fast["speed"]) / fast["ramp"], 0.0), 1.0)
     return delta
+
+
+LANDING_TABLE = register_table(TableType("landing", LANDING_SETTINGS, _landing_rows, (foot_delta_row,)))
+
+
+def calibrated_foot_delta(character: str, horizontal_speed: float, touchdown_speed: float = 0.0) -> float:
+    """Foot servo delta from scripts/calibrate_landing.py's table (0 where there is none), for the
+    horizontal speed and the expected vertical touchdown speed (foot_delta_row)."""
+    table = load("landing", character)
+    return 0.0 if table is None else foot_delta_row(table, horizontal_speed, touchdown_speed)
 
 
 # ------------------------------------------------------------------------------- leap mapping
@@ -618,10 +618,30 @@ def _leap_rows(body: dict):
         yield f"broad row {k}", row
 
 
-LEAP_TABLE = register_table(TableType(
-    "leap", LEAP_SETTINGS, _leap_rows,
-    "vertical: the row whose measured com_rise is nearest the commanded height if within its tolerance, else "
-    "interpolated over com_rise; broad: the row whose measured com_travel is nearest the distance"))
+def vertical_row(columns: dict, height: float) -> dict:
+    """The calibrated vertical leap nearest the commanded height when its measured rise is within
+    the tolerance (rise_tolerance), else interpolated over the measured rise between the rows
+    around it (a column a table lacks at its schema default). The rise is not smooth between rows
+    whose thrust differs (a damped and an undamped extension, another crouch): an interpolated
+    leap between them can miss or fall where both rows land, so a measured row is preferred."""
+    rises = columns["com_rise"]
+    nearest = min(rises, key=lambda rise: abs(rise - height))
+    h = nearest if abs(nearest - height) <= rise_tolerance(height) else height
+    default = LEAP_SETTINGS.defaults()
+    column = lambda name: float(np.interp(h, rises, columns.get(name, [default[name]] * len(rises))))
+    return {"crouch_height": column("crouch_height"), "crouch_pitch": column("torso_pitch"),
+            "com_offset": column("com_offset"), "arm_swing": column("arm_swing"),
+            "damping": column("damping"), "foot_delta": column("foot_delta"), "liftoff_hip": column("liftoff_hip")}
+
+
+def broad_row(broad: dict, distance: float) -> dict:
+    """The calibrated broad jump whose measured COM travel is nearest the distance (its leap
+    parameters; a broad jump's travel is not smooth in its settings, so it is not interpolated)."""
+    k = int(np.argmin(np.abs(np.asarray(broad["com_travel"]) - distance)))
+    return dict(broad["params"][k])
+
+
+LEAP_TABLE = register_table(TableType("leap", LEAP_SETTINGS, _leap_rows, (vertical_row, broad_row)))
 
 
 def load_mapping(character: str) -> dict:
@@ -692,19 +712,14 @@ class Leap(Sequence):
         p = self.params
         if p["low_level"] or p["distance"] <= 0:
             return p
-        broad = load_mapping(self.ctx.character.name)["broad"]
-        k = int(np.argmin(np.abs(np.asarray(broad["com_travel"]) - p["distance"])))
-        row = dict(broad["params"][k])
+        row = broad_row(load_mapping(self.ctx.character.name)["broad"], p["distance"])
         row["liftoff_hip_angle"] = row.get("liftoff_hip_angle", 0.0) + p["liftoff_hip_angle"]
         return self.schema.validate(row)
 
     def settings(self, p: dict) -> dict:
         """The leap's low-level settings for the run parameters ``p``: the user's own (low_level) or
-        the vertical-leap table's: the calibrated row nearest the commanded height when its measured
-        rise is within the tolerance (rise_tolerance), else interpolated between the rows around
-        it. The rise is not smooth between rows whose thrust differs (a damped and an undamped
-        extension, another crouch): an interpolated leap between them can miss or fall where both
-        rows land, so a measured row is preferred."""
+        the vertical-leap table's for the commanded height (vertical_row), with the user's lift-off
+        hip angle added."""
         if p["low_level"]:
             settings = {k: p[k] for k in ("crouch_height", "crouch_pitch", "com_offset", "com_offset_y",
                                           "liftoff_roll", "arm_swing", "crouch_arms", "thrust_damping",
@@ -712,17 +727,8 @@ class Leap(Sequence):
             settings["damping"] = settings.pop("thrust_damping")
             settings["liftoff_hip"] = p["liftoff_hip_angle"]
             return settings
-        mapping = load_mapping(self.ctx.character.name)
-        v = mapping[vertical_key(self.ctx)]
-        rises = v["com_rise"]
-        nearest = min(rises, key=lambda rise: abs(rise - p["height"]))
-        h = nearest if abs(nearest - p["height"]) <= rise_tolerance(p["height"]) else p["height"]
-        default = LEAP_SETTINGS.defaults()
-        column = lambda name: float(np.interp(h, rises, v.get(name, [default[name]] * len(rises))))
-        return {"crouch_height": column("crouch_height"), "crouch_pitch": column("torso_pitch"),
-                "com_offset": column("com_offset"), "arm_swing": column("arm_swing"),
-                "damping": column("damping"), "foot_delta": column("foot_delta"),
-                "liftoff_hip": column("liftoff_hip") + p["liftoff_hip_angle"]}
+        row = vertical_row(load_mapping(self.ctx.character.name)[vertical_key(self.ctx)], p["height"])
+        return {**row, "liftoff_hip": row["liftoff_hip"] + p["liftoff_hip_angle"]}
 
     def check_feasible(self) -> None:
         p = self.params

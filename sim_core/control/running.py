@@ -116,6 +116,7 @@ class SpeedTable:
         return SpeedTable(speeds, {n: [value(n, v) for v in speeds] for n in self.values})
 
     def at(self, name: str, speed: float) -> float:
+        """A column's value at the speed: piecewise linear between the rows, held beyond the ends."""
         xs, ys = self.speeds, self.values[name]
         if speed <= xs[0]:
             return ys[0]
@@ -226,10 +227,7 @@ def _running_rows(body: dict):
         yield "constants", body["constants"]
 
 
-RUNNING_TABLE = register_table(TableType(
-    "running", SETTING_RANGES, _running_rows,
-    "the columns interpolated piecewise linearly over the running speed, held beyond the ends (SpeedTable.at); "
-    "the constants as they are (running_any)"))
+RUNNING_TABLE = register_table(TableType("running", SETTING_RANGES, _running_rows, (SpeedTable.at,)))
 RUNNING_SETTINGS = with_defaults(SETTING_RANGES, load("running", "any")["constants"])
 CONSTANT_NAMES = tuple(load("running", "any")["constants"])
 

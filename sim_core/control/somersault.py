@@ -32,7 +32,7 @@ from sim_core.control.tumble import FlightRotation, Tumble, position_inertia, ro
 from sim_core.control.tuned import uncalibrated
 from sim_core.analysis import feet_above_surface
 from sim_core.schema import Parameter, Schema
-from sim_core.tuned import TableType, load, register as register_table
+from sim_core.tuned import TableType, keyed, load, register as register_table
 from sim_core.tuned.settings import SkillSchema
 
 DIRECTIONS = ("backward", "forward")
@@ -63,12 +63,14 @@ def load_table(character: str) -> dict:
     return load("somersaults", character) or {"somersaults": []}
 
 
+def somersault_row(table: dict, direction: str, strength: str) -> dict | None:
+    """The row of the direction and strength (keyed), or None."""
+    return keyed(table["somersaults"], direction=direction, strength=strength)
+
+
 def calibrated(character: str, direction: str, strength: str) -> dict | None:
     """The calibrated somersault of this character, direction and strength, or None."""
-    for entry in load_table(character)["somersaults"]:
-        if entry["direction"] == direction and entry["strength"] == strength:
-            return entry
-    return None
+    return somersault_row(load_table(character), direction, strength)
 
 
 SOMERSAULT_SETTINGS = Schema(
@@ -110,7 +112,7 @@ SOMERSAULTS_TABLE = register_table(TableType(
     "somersaults", SOMERSAULT_SETTINGS,
     lambda body: ((f"{kind} {e['direction']} {e['strength']}", e["settings"]) for kind in ("somersaults", "not_found")
                   for e in body.get(kind, [])),
-    "keyed by direction and strength (a row that leaves out a setting runs it at OLD_ROW's value)"))
+    (somersault_row,)))
 
 
 @register

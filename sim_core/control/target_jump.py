@@ -427,11 +427,15 @@ def _stable_seed(target, air_time: float, windup_time: float) -> int:
     return seed
 
 
+def plan_row(table: dict, request: dict) -> dict | None:
+    """The plan stored for this very request (keyed: same_request), or None."""
+    return next((plan for plan in table["plans"] if same_request(plan["request"], request)), None)
+
+
 JUMP_TARGETS_TABLE = register_table(TableType(
     "jump_targets", LEAP_SETTINGS,
     lambda body: ((f"plan {k} {p['request']}", p["settings"]) for k, p in enumerate(body["plans"])),
-    "keyed by the request (target, obstacle, air and wind-up time, strength: same_request); a search starts "
-    "from the stored plan nearest the target (nearest_start_plan)"))
+    (plan_row,)))
 
 
 def plans_path(character: str) -> Path:
@@ -445,7 +449,7 @@ def stored_plans(character: str) -> list[dict]:
 
 
 def stored_plan(character: str, request: dict) -> dict | None:
-    return next((plan for plan in stored_plans(character) if same_request(plan["request"], request)), None)
+    return plan_row({"plans": stored_plans(character)}, request)
 
 
 REQUEST_KEYS = ("target_x", "target_y", "target_z", "obstacle_height", "air_time", "windup_time")

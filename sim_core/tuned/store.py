@@ -17,7 +17,7 @@ from __future__ import annotations
 import json
 import os
 import tempfile
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from importlib import resources
 from pathlib import Path
 from typing import Callable, Iterable
@@ -42,14 +42,17 @@ class TableType:
     """What a skill's table holds. ``settings``: the schema of the tuned settings its rows set
     (units, ranges, help; the same names the behaviour reads). ``rows(body)``: the settings rows
     of a table body, as (where, {setting: value}) pairs - the check reads every row through it.
-    ``lookup``: a one-line description of how the skill picks a row (documentation and the
-    add-on's help; the skill's code does the picking)."""
+    ``lookup``: the skill's function(s) that pick a row from a table body for a request (nearest,
+    interpolated, keyed); the behaviour calls them, and their docstrings say how."""
     skill: str
     settings: Schema
     rows: Callable[[dict], Iterable[tuple[str, dict]]]
-    lookup: str
-    # settings a row may leave out (rows stored before the setting existed), with the value they ran with
-    old_row: dict = field(default_factory=dict)
+    lookup: tuple[Callable, ...]
+
+    def describe_lookup(self) -> str:
+        """How the skill picks a row: the first sentence of each lookup's docstring."""
+        return "; ".join(f"{f.__name__}: " + (f.__doc__ or "").strip().split(". ")[0].replace("\n", " ").replace("    ", "")
+                         for f in self.lookup)
 
 
 _TYPES: dict[str, TableType] = {}
@@ -59,6 +62,12 @@ def register(table_type: TableType) -> TableType:
     """Declare a skill's row type (at import of the skill's module)."""
     _TYPES[table_type.skill] = table_type
     return table_type
+
+
+def keyed(rows: list[dict], **key) -> dict | None:
+    """The first row whose fields equal ``key`` (e.g. direction="backward", strength="human"), or
+    None: the lookup of a table keyed by the request."""
+    return next((row for row in rows if all(row.get(k) == v for k, v in key.items())), None)
 
 
 def table_type(skill: str) -> TableType:
