@@ -12,7 +12,7 @@ import pytest
 
 from sim_core.character.model import compile_model, set_standing_pose
 from sim_core.character.spec import load_character
-from sim_core.control.running import SpeedTable
+from sim_core.control.running import Running, SpeedTable
 from sim_core.control.running_leg import RunnerLeg
 from sim_core.control.running_path import PathFollower, path_deviation, turn_path
 from sim_core.errors import ParameterError
@@ -336,3 +336,13 @@ def test_joint_search_scores_rows_at_several_speeds_together():
 
 def test_human_figures_are_the_papers():
     assert HUMAN_FIG12["man"] == {"speed": 4.83, "step_frequency": 2.92, "step_length": 1.66, "stance_fraction": 57.9}
+
+
+def test_a_running_constant_is_a_setting_a_run_may_set_by_name():
+    """The constants of the running laws are data (running_any) and settings: a tuner passes a
+    candidate by name (scripts/tune_running.py --steering), no module is patched. The stored value
+    given explicitly runs bit for bit as the default; another changes the run."""
+    stored = Running.settings_schema.by_name["start_speed"].default
+    default, same, other = (run_running(1.2, **extra).arrays["qpos"]
+                            for extra in ({}, {"start_speed": stored}, {"start_speed": 0.3}))
+    assert np.array_equal(default, same) and not np.array_equal(default, other)

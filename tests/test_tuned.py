@@ -178,7 +178,7 @@ ALLOWED = {
             | {n: "criterion" for n in ("AIRBORNE_HEIGHT", "TOUCHDOWN_HEIGHT", "LANDING_SLIDE_LIMIT",
                                         "LANDING_SKID_LIMIT", "UNCOVERED_STEP")} | {"UP": "definition"},
     "running": {n: "definition" for n in ("FLIGHT", "LOADING", "HEEL", "HEEL_TOE", "TOE", "UNLOADING", "START", "TUNED")}
-               | {"SCHEDULED_CONSTANTS": "search"},
+               | {"SCHEDULED": "search"},
     "running_path": {n: "criterion" for n in ("MIN_SEGMENT", "MIN_LENGTH", "MAX_POINTS", "MIN_TURN_RADIUS")},
     "somersault": {"TUCK": "definition", "OLD_ROW": "definition", "TUCK_MOVE": "design", "TOUCHDOWN_COM": "design",
                    "ROTATION_TOLERANCE": "criterion"},
