@@ -230,7 +230,7 @@ def vertical_table(results: list[dict]) -> dict:
                                                      "liftoff_hip", "peak_thrust_grf_body_weights", "com_travel",
                                                      "foot_delta")}
     table["foot_delta"] = [d or 0.0 for d in table["foot_delta"]]
-    table["torso_pitch"] = [0.0 for _ in rows]
+    table["crouch_pitch"] = [0.0 for _ in rows]
     table["arm_swing"] = [ARM_SWING for _ in rows]
     return table
 

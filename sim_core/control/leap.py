@@ -589,7 +589,6 @@ def vertical_key(ctx: ControlContext) -> str:
 LEAP_SETTINGS = Schema(
     Parameter("crouch_height", "m", 0.65, 0.4, 0.95, "pelvis height of the crouch"),
     Parameter("crouch_pitch", "rad", 0.0, 0.0, 1.8, "torso pitch in the crouch"),
-    Parameter("torso_pitch", "rad", 0.0, 0.0, 1.8, "torso pitch in the crouch (the vertical-leap columns' name)"),
     Parameter("com_offset", "m", 0.0, -0.05, 0.25, "COM ahead (+) of the middle of the feet in the crouch"),
     Parameter("com_offset_y", "m", 0.0, -0.2, 0.2, "COM to the left (+) of the middle of the feet in the crouch"),
     Parameter("liftoff_hip", "rad", 0.0, -1.0, 1.0, "hip flexion (-) or extension (+) at lift-off"),
@@ -603,7 +602,7 @@ LEAP_SETTINGS = Schema(
     Parameter("foot_lead_time", "s", 0.2, 0.0, 0.6, "landing: the feet land this long of COM travel ahead"),
     Parameter("crouch_arms", "rad", 0.0, -0.8, 0.0, "shoulder flexion in the crouch (back: -)"),
     Parameter("thrust_lean", "m", 0.0, -0.2, 0.1, "COM ahead (+) of the feet along the thrust's extension"),
-    Parameter("spin_hold", "1", 0.0, 0.0, 0.5, "the hips turn against the spin about the vertical"),
+    Parameter("spin_hold", "rad/(kg m²/s)", 0.0, 0.0, 0.5, "the hips turn against the spin about the vertical"),
 )
 LEAP_MEASURED = ("com_rise", "com_travel", "peak_thrust_grf_body_weights")   # columns a calibration measured
 
@@ -629,7 +628,7 @@ def vertical_row(columns: dict, height: float) -> dict:
     h = nearest if abs(nearest - height) <= rise_tolerance(height) else height
     default = LEAP_SETTINGS.defaults()
     column = lambda name: float(np.interp(h, rises, columns.get(name, [default[name]] * len(rises))))
-    return {"crouch_height": column("crouch_height"), "crouch_pitch": column("torso_pitch"),
+    return {"crouch_height": column("crouch_height"), "crouch_pitch": column("crouch_pitch"),
             "com_offset": column("com_offset"), "arm_swing": column("arm_swing"),
             "damping": column("damping"), "foot_delta": column("foot_delta"), "liftoff_hip": column("liftoff_hip")}
 
