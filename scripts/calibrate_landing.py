@@ -22,6 +22,7 @@ sys.path.insert(0, str(ROOT))
 
 from sim_core.ballistics import GRAVITY                           # noqa: E402
 from sim_core import tuned                                       # noqa: E402
+from sim_core.control.leap import LANDING_TABLE  # noqa: E402,F401  (declares the landing table's row type)
 from sim_core.simulate import RunRequest, StartState, run          # noqa: E402
 
 SPEEDS = [-1.0, -0.5, 0.0, 0.5, 1.0, 1.5, 2.0, 2.5, 3.0]

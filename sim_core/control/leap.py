@@ -35,6 +35,7 @@ from sim_core.control.servo import hermite_scalar
 from sim_core.errors import ParameterError
 from sim_core.schema import Parameter, Schema
 from sim_core.tuned import TableType, load, register as register_table
+from sim_core.tuned.settings import SkillSchema
 
 AIRBORNE_HEIGHT = 0.01          # m: every foot site this high above the ground = flight
 TOUCHDOWN_HEIGHT = 0.004        # m: a foot site this low = contact
@@ -648,12 +649,42 @@ def load_mapping(character: str) -> dict:
     return load("leap", character) or load("leap", "any")
 
 
+# the settings a low-level leap (low_level=1) runs with, by the leap parameters' names (the table's rows
+# name the thrust damping "damping" and the lift-off hip "liftoff_hip": Leap.settings maps them)
+LOW_LEVEL_SETTINGS = Schema(
+    Parameter("crouch_height", "m", 0.65, 0.4, 0.95, "pelvis height of the crouch (low_level only)"),
+    Parameter("crouch_pitch", "rad", 1.0, 0.0, 1.8, "torso pitch in the crouch (low_level only)"),
+    Parameter("com_offset", "m", 0.0, -0.05, 0.25, "COM forward of the feet in the crouch (low_level only)"),
+    Parameter("com_offset_y", "m", 0.0, -0.2, 0.2,
+              "COM to the left of the feet in the crouch: a sideways jump (low_level only)"),
+    Parameter("liftoff_roll", "rad", 0.0, -0.5, 0.5,
+              "hip abduction at lift-off for a sideways jump (+ swings the feet to the left, pushing the "
+              "body to the right): sets the roll rate, as the lift-off hip angle sets the somersault "
+              "rate (low_level only)"),
+    Parameter("thrust_lean", "m", 0.0, -0.2, 0.1,
+              "COM forward of the feet along the thrust's path of balanced poses: - pushes the body back "
+              "(a sideways jump of the woman otherwise leaves moving forward; low_level only)"),
+    Parameter("spin_hold", "rad/(kg m²/s)", 0.0, 0.0, 0.5,
+              "the hips turn against the body's angular momentum about the vertical in the crouch and the "
+              "thrust, this much hip rotation per kg m²/s (0 = not held): a sideways jump's push at the "
+              "forefeet, ahead of the COM, twists the body (low_level only)"),
+    Parameter("arm_swing", "rad", 1.0, 0.0, 3.2, "forward arm swing during the thrust (low_level only)"),
+    Parameter("crouch_arms", "rad", 0.0, -0.8, 0.0,
+              "arms swung back (-) in the crouch, to swing forward in the thrust; keeps the hands off "
+              "the ground in a deep crouch (low_level only)"),
+    Parameter("thrust_damping", "1", 1.0, 0.1, 1.0,
+              "share of the stiffened leg servos' damping kept in the thrust; less extends faster "
+              "(low_level only)"),
+)
+
+
 @register
 class Leap(Sequence):
     name = "leap"
     summary = "Vertical leap or standing broad jump: crouch, extend, fly, land, balance (Wooten ch. 4, 6, 8)."
     default_duration = 5.0
-    schema = Schema(
+    settings_schema = LOW_LEVEL_SETTINGS
+    schema = SkillSchema(
         Parameter("height", "m", 0.3, 0.05, 1.2,
                   "commanded rise of the COM above standing (vertical leap): runs the calibrated leap nearest "
                   "it if that one's measured rise is within 10 % (3 cm below 0.3 m), else interpolates"),
@@ -663,30 +694,7 @@ class Leap(Sequence):
                   "hip flexion (-) or extension (+) at lift-off beyond the calibrated neutral (0 = no "
                   "somersault): sends the ground force past the COM and sets the somersault rate"),
         Parameter("low_level", "bool", 0.0, 0.0, 1.0,
-                  "1 = use the crouch/pitch/offset/arm values below instead of the calibrated mapping"),
-        Parameter("crouch_height", "m", 0.65, 0.4, 0.95, "pelvis height of the crouch (low_level only)"),
-        Parameter("crouch_pitch", "rad", 1.0, 0.0, 1.8, "torso pitch in the crouch (low_level only)"),
-        Parameter("com_offset", "m", 0.0, -0.05, 0.25, "COM forward of the feet in the crouch (low_level only)"),
-        Parameter("com_offset_y", "m", 0.0, -0.2, 0.2,
-                  "COM to the left of the feet in the crouch: a sideways jump (low_level only)"),
-        Parameter("liftoff_roll", "rad", 0.0, -0.5, 0.5,
-                  "hip abduction at lift-off for a sideways jump (+ swings the feet to the left, pushing the "
-                  "body to the right): sets the roll rate, as the lift-off hip angle sets the somersault "
-                  "rate (low_level only)"),
-        Parameter("thrust_lean", "m", 0.0, -0.2, 0.1,
-                  "COM forward of the feet along the thrust's path of balanced poses: - pushes the body back "
-                  "(a sideways jump of the woman otherwise leaves moving forward; low_level only)"),
-        Parameter("spin_hold", "rad/(kg m²/s)", 0.0, 0.0, 0.5,
-                  "the hips turn against the body's angular momentum about the vertical in the crouch and the "
-                  "thrust, this much hip rotation per kg m²/s (0 = not held): a sideways jump's push at the "
-                  "forefeet, ahead of the COM, twists the body (low_level only)"),
-        Parameter("arm_swing", "rad", 1.0, 0.0, 3.2, "forward arm swing during the thrust (low_level only)"),
-        Parameter("crouch_arms", "rad", 0.0, -0.8, 0.0,
-                  "arms swung back (-) in the crouch, to swing forward in the thrust; keeps the hands off "
-                  "the ground in a deep crouch (low_level only)"),
-        Parameter("thrust_damping", "1", 1.0, 0.1, 1.0,
-                  "share of the stiffened leg servos' damping kept in the thrust; less extends faster "
-                  "(low_level only)"),
+                  "1 = run the low-level settings as set (--set crouch_height=...) instead of the calibrated leap"),
         Parameter("crouch_time", "s", 0.8, 0.3, 3.0, "time to sink into the crouch"),
         Parameter("foot_delta", "m", 0.0, -0.3, 0.3, "landing: foot servo delta (see the land behaviour)"),
         Parameter("landing_knee_flexion", "rad", 0.9, 0.0, 1.5,
@@ -700,6 +708,7 @@ class Leap(Sequence):
                   "which pitches the trunk back so the feet reach forward)"),
         Parameter("landing_foot_lead_time", "s", 0.2, 0.0, 0.6,
                   "landing: the feet land this many seconds of horizontal COM travel ahead of the COM"),
+        settings=LOW_LEVEL_SETTINGS,
     )
 
     def run_params(self) -> dict:

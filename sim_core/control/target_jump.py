@@ -521,6 +521,9 @@ class JumpToTarget(Leap):
     summary = ("Jump so that the feet land on a target point, with a given air time and wind-up time "
                "(Ooi 2015), by the leap and landing controllers; the settings are planned by simulation.")
     default_duration = 5.0
+    # its tuned settings are a plan's (the jump_targets table's rows, LEAP_SETTINGS): chosen by planning for
+    # the request, not set by hand
+    settings_schema = Schema()
     schema = Schema(
         Parameter("target_x", "m", 1.0, -2.5, 2.5, "landing point of the middle of the feet, forward of "
                   "the middle of the feet at the start"),
