@@ -1,5 +1,5 @@
 """Calibrate the take-off of each platform dive by simulation and write the table the dive
-behaviour reads (rigs/tuned/dives_<character>.json) - the role of the hand tuning Wooten
+behaviour reads (sim_core/tuned/tables/dives_<character>.json) - the role of the hand tuning Wooten
 describes in §8.2.1 ("about five hours of effort" per dive), done by a search.
 
 For each dive of the character the search (cross-entropy method over the six leap settings:
@@ -30,8 +30,8 @@ import numpy as np
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))      # this checkout's sim_core and rigs, not an installed one
 
-from sim_core.control.dive import CALIBRATED_DIVES, FORWARD_ROTATING, GROUPS, TUNED_DIR, Dive  # noqa: E402
-from sim_core.control.tuned import write_table  # noqa: E402
+from sim_core.control.dive import CALIBRATED_DIVES, FORWARD_ROTATING, GROUPS, Dive  # noqa: E402
+from sim_core import tuned  # noqa: E402
 from sim_core.errors import ParameterError  # noqa: E402
 from sim_core.simulate import RunRequest, run  # noqa: E402
 
@@ -185,12 +185,11 @@ def main() -> None:
     args = parser.parse_args()
     for character in args.character or sorted(CALIBRATED_DIVES):
         started = time.time()
-        path = TUNED_DIR / f"dives_{character}.json"
-        old = json.loads(path.read_text())["dives"] if path.exists() else []
+        stored = tuned.load("dives", character)
+        old = stored["dives"] if stored is not None else []
         if args.limits_only:
-            table = json.loads(path.read_text())
-            table["limits"] = table_limits(old)
-            write_table(path, table)
+            table = dict(stored, limits=table_limits(old))
+            path = tuned.save("dives", character, table, strengths=["human"])
             print(f"{character}: limits {table['limits']}")
             continue
         with NoLimits():
@@ -200,8 +199,8 @@ def main() -> None:
                      if args.only is None or k in args.only or k >= len(old) else old[k]
                      for k, dive in enumerate(CALIBRATED_DIVES[character])]
         limits = table_limits(dives)
-        write_table(path, {"character": character, "script": "scripts/calibrate_dives.py",
-                           "search": vars(args), "dives": dives, "limits": limits})
+        path = tuned.save("dives", character, {"script": "scripts/calibrate_dives.py", "search": vars(args),
+                                               "dives": dives, "limits": limits}, strengths=["human"])
         print(f"{character}: wrote {path} in {time.time() - started:.0f} s")
         for d in dives:
             print(f"  {d['measured']}")

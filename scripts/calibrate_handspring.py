@@ -1,5 +1,5 @@
 """Calibrate the back handspring by simulation and write the table the handspring behaviour reads
-(rigs/tuned/handspring_<character>.json) - the role of the tuning Wooten describes in §8.3 ("the
+(sim_core/tuned/tables/handspring_<character>.json) - the role of the tuning Wooten describes in §8.3 ("the
 aspect of this maneuver that required the most tuning was generating sufficient backwards angular
 velocity to land in a handstand position"), done by a search.
 
@@ -41,8 +41,9 @@ import numpy as np
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
-from sim_core.control.handspring import HAND_SETTINGS, OLD_ROW, SETTINGS, TUNED_DIR, Handspring, load_table  # noqa: E402
-from sim_core.control.tuned import kept_message, merge_search, names_option, searched_and_fixed, write_table  # noqa: E402
+from sim_core.control.handspring import HAND_SETTINGS, OLD_ROW, SETTINGS, Handspring, load_table  # noqa: E402
+from sim_core.control.tuned import kept_message, merge_search, names_option, searched_and_fixed  # noqa: E402
+from sim_core import tuned  # noqa: E402
 from sim_core.simulate import RunRequest, run  # noqa: E402
 
 DURATION = 5.0
@@ -178,8 +179,9 @@ def main() -> None:
         {"settings": settings, "score": round(s, 4), "measured": m},
         f"{m['outcome']}, rotation {m['rotation']:.2f} rad ({m['rotation_before_fall']:.2f} before falling), "
         f"angular momentum drift in flight {100 * (m['angular_momentum_drift'] or 0):.2f} %")
-    write_table(TUNED_DIR / f"handspring_{args.character}.json", {"character": args.character, "script": "scripts/calibrate_handspring.py",
-                                 "duration": DURATION, "handsprings": rows, "not_found": missing})
+    tuned.save("handspring", args.character, {"script": "scripts/calibrate_handspring.py", "duration": DURATION,
+                                              "handsprings": rows, "not_found": missing},
+               strengths=sorted({e["strength"] for e in rows + missing}))
     kept = kept_message(found(m), m["outcome"] == "success", DRIFT_GOAL, bool(old))
     print(f"{args.character} ({args.strength}): {m['outcome']}, drift {100 * (m['angular_momentum_drift'] or 0):.2f} % "
           f"after {time.time() - started:.0f} s - {kept}")

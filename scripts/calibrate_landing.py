@@ -2,7 +2,7 @@
 role of Wooten's Table 6.1, which is for one drop height): for each drop of DROPS and each
 horizontal speed, land with a range of deltas and keep the middle of the longest run of
 neighbouring deltas that end balanced (feet staying where they touched down; see leap_assess),
-and write rigs/tuned/landing_<character>.json, which the landing reads: one row per drop, keyed by
+and write sim_core/tuned/tables/landing_<character>.json, which the landing reads: one row per drop, keyed by
 the vertical touchdown speed of that drop, interpolated between them. Then the extra delta for
 fast touchdowns (high drops and leaps, vertical touchdown speed above FAST_FROM): the one of
 FAST_DELTAS that lands the most drops from rest of HIGH_DROPS (the smallest on a tie).
@@ -13,7 +13,6 @@ Rerun after a change to the model or the controllers:
 from __future__ import annotations
 
 import argparse
-import json
 import sys
 from multiprocessing import Pool
 from pathlib import Path
@@ -22,7 +21,8 @@ ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
 from sim_core.ballistics import GRAVITY                           # noqa: E402
-from sim_core.control.leap import TUNED_DIR                      # noqa: E402
+from sim_core import tuned                                       # noqa: E402
+from sim_core.control.leap import LANDING_TABLE  # noqa: E402,F401  (declares the landing table's row type)
 from sim_core.simulate import RunRequest, StartState, run          # noqa: E402
 
 SPEEDS = [-1.0, -0.5, 0.0, 0.5, 1.0, 1.5, 2.0, 2.5, 3.0]
@@ -39,10 +39,10 @@ HIGH_DROPS = [0.8, 0.9, 1.0, 1.1, 1.15, 1.2, 1.3]
 
 def fast_touchdown(character: str, table: dict) -> dict:
     """Scan the extra delta for fast touchdowns one value at a time (each trial reads the table)."""
-    path = TUNED_DIR / f"landing_{character}.json"
     landed = {}
     for extra in FAST_DELTAS:
-        path.write_text(json.dumps(dict(table, fast_touchdown={"speed": FAST_FROM, "ramp": FAST_RAMP, "delta": extra})))
+        tuned.save("landing", character, dict(table, fast_touchdown={"speed": FAST_FROM, "ramp": FAST_RAMP, "delta": extra}),
+                   strengths=["human"])
         landed[extra] = [drop for drop in HIGH_DROPS
                          if run(RunRequest("land", character, start=StartState(height=drop), duration=3.0)).meta["outcome"] == "success"]
         print(f"  {character} fast touchdown extra {extra:+.2f} m: lands drops {landed[extra]}")
@@ -73,9 +73,7 @@ def middle_of_longest_run(ok: list[float]) -> float:
 
 
 def calibrate(character: str, processes: int) -> dict:
-    path = TUNED_DIR / f"landing_{character}.json"
-    if path.exists():
-        path.unlink()                      # calibrate against no table (delta = the trial's own)
+    tuned.delete("landing", character)     # calibrate against no table (delta = the trial's own)
     with Pool(processes) as pool:
         results = pool.map(trial, [(character, h, v, d) for h in DROPS for v in SPEEDS for d in DELTAS])
     rows, landed = [], {}
@@ -91,7 +89,7 @@ def calibrate(character: str, processes: int) -> dict:
                 deltas.append(round(middle_of_longest_run(ok), 3))
         rows.append({"drop": h, "touchdown_speed": round((2.0 * GRAVITY * h) ** 0.5, 3),
                      "speed": speeds, "delta": deltas})
-    return {"character": character, "script": "scripts/calibrate_landing.py", "foot_delta": rows,
+    return {"script": "scripts/calibrate_landing.py", "foot_delta": rows,
             "landed": landed}
 
 
@@ -100,12 +98,10 @@ def main() -> int:
     parser.add_argument("--character", nargs="+", default=["man", "woman"])
     parser.add_argument("--processes", type=int, default=2)
     args = parser.parse_args()
-    TUNED_DIR.mkdir(parents=True, exist_ok=True)
     for character in args.character:
         table = calibrate(character, args.processes)
-        path = TUNED_DIR / f"landing_{character}.json"
         table["fast_touchdown"] = fast_touchdown(character, table)
-        path.write_text(json.dumps(table, indent=1) + "\n")
+        path = tuned.save("landing", character, table, strengths=["human"])
         for row in table["foot_delta"]:
             print(f"wrote {path.relative_to(ROOT)}: drop {row['drop']} m, speeds {row['speed']}")
     return 0

@@ -12,7 +12,7 @@ and leaps higher), and for each strength (human torque limits; unlimited, as the
      of lift-off hip angles and offsets, then - when none of that lands - a finer grid around
      flexed lift-off hips (WIDE_FALLBACK_*); of the balanced landings the one that travels least.
 Writes the mapping commanded rise -> crouch height, thrust damping, COM offset, neutral lift-off
-hip angle to rigs/tuned/leap_<character>.json ("vertical": human torque limits,
+hip angle to sim_core/tuned/tables/leap_<character>.json ("vertical": human torque limits,
 "vertical_unlimited": unlimited strength), which the leap behaviour interpolates.
 
 Broad jump: the distance is not smooth in the leap's settings (the thrust starts on a tipping
@@ -33,7 +33,6 @@ from __future__ import annotations
 
 import argparse
 import itertools
-import json
 import sys
 from multiprocessing import Pool
 from pathlib import Path
@@ -43,10 +42,10 @@ sys.path.insert(0, str(ROOT))
 
 import numpy as np                                              # noqa: E402
 
-from sim_core.control.leap import AIRBORNE_HEIGHT, TUNED_DIR, uncovered_gaps   # noqa: E402
+from sim_core.control.leap import AIRBORNE_HEIGHT, uncovered_gaps   # noqa: E402
 from sim_core.control.target_jump import (GROUND_AIR_TIME, leap_params, plan_jump, store_plan,  # noqa: E402
                                           stored_plan)
-from sim_core.control.tuned import write_table                  # noqa: E402
+from sim_core import tuned                                       # noqa: E402
 from sim_core.simulate import RunRequest, run                   # noqa: E402
 
 CROUCH_FRACTIONS = (0.9, 0.875, 0.85, 0.825, 0.8, 0.775, 0.75, 0.725, 0.7, 0.68, 0.66, 0.64, 0.62, 0.59)   # of the standing hip height
@@ -231,7 +230,7 @@ def vertical_table(results: list[dict]) -> dict:
                                                      "liftoff_hip", "peak_thrust_grf_body_weights", "com_travel",
                                                      "foot_delta")}
     table["foot_delta"] = [d or 0.0 for d in table["foot_delta"]]
-    table["torso_pitch"] = [0.0 for _ in rows]
+    table["crouch_pitch"] = [0.0 for _ in rows]
     table["arm_swing"] = [ARM_SWING for _ in rows]
     return table
 
@@ -312,21 +311,20 @@ def main() -> int:
                         help="keep the vertical tables' trials and add crouches in their gaps (commanded heights no "
                              "row is within the tolerance of), instead of calibrating them afresh")
     args = parser.parse_args()
-    TUNED_DIR.mkdir(parents=True, exist_ok=True)
     for character in args.character:
-        path = TUNED_DIR / f"leap_{character}.json"
-        previous = json.loads(path.read_text()) if path.exists() else {}
+        previous = tuned.load("leap", character) or {}
         only = [k for k in args.only if k in VERTICAL_TABLES] if args.fill else args.only
         mapping = calibrate(character, args.processes, only, previous, args.fill)
         # write only the recalibrated tables over the file as it is now (another run may have
         # recalibrated the others meanwhile)
-        current = json.loads(path.read_text()) if path.exists() else {}
+        current = tuned.load("leap", character) or {}
         current.update({k: v for k, v in mapping.items() if k in only or k in ("character", "script")})
         current.setdefault("trials_by_table", {}).update(
             {k: v for k, v in mapping.get("trials_by_table", {}).items() if k in only})
         current.pop("broad_calibrated", None)
         mapping = current
-        write_table(path, mapping)
+        path = tuned.save("leap", character, mapping,
+                          strengths=["human"] + (["unlimited"] if "vertical_unlimited" in mapping else []))
         for key in VERTICAL_TABLES:
             rises = mapping.get(key, {}).get("com_rise", [])
             print(f"wrote {path.relative_to(ROOT)} {key}: COM rise {min(rises, default=0):.2f} .. "

@@ -1,5 +1,5 @@
 """Calibrate the standing tuck somersaults by simulation and write the table the somersault
-behaviour reads (rigs/tuned/somersaults_<character>.json) - the role of the "about three hours
+behaviour reads (sim_core/tuned/tables/somersaults_<character>.json) - the role of the "about three hours
 of tuning" Wooten describes in §8.4 (leap settings until the height and spin allow a landing,
 then the timing of the opening), done by a search.
 
@@ -44,9 +44,10 @@ ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))      # this checkout's sim_core and rigs, not an installed one
 
 from sim_core.control.leap import LANDING_SLIDE_LIMIT  # noqa: E402
-from sim_core.control.somersault import DIRECTIONS, LANDING_SETTINGS, OLD_ROW, SETTINGS, TUNED_DIR, load_table  # noqa: E402
+from sim_core.control.somersault import DIRECTIONS, LANDING_SETTINGS, OLD_ROW, SETTINGS, load_table  # noqa: E402
 from sim_core.control.tumble import snap_damping  # noqa: E402
-from sim_core.control.tuned import kept_message, merge_search, names_option, searched_and_fixed, write_table  # noqa: E402
+from sim_core.control.tuned import kept_message, merge_search, names_option, searched_and_fixed  # noqa: E402
+from sim_core import tuned  # noqa: E402
 from sim_core.simulate import RunRequest, run  # noqa: E402
 
 DURATION = 5.0
@@ -213,8 +214,9 @@ def main() -> None:
                     f"{m['outcome']}, angular momentum drift in flight {100 * (m['angular_momentum_drift'] or 0):.2f} %, "
                     f"rotation {m['rotation']:.2f} rad, flight rotation {m['flight_rotation'] or 0:.2f} rad, take-off "
                     f"angular momentum {m['liftoff_angular_momentum'] or 0:.1f} kg m^2/s")
-                write_table(TUNED_DIR / f"somersaults_{character}.json", {"character": character, "script": "scripts/calibrate_somersaults.py",
-                                        "duration": DURATION, "somersaults": rows, "not_found": missing})
+                tuned.save("somersaults", character, {"script": "scripts/calibrate_somersaults.py", "duration": DURATION,
+                                                      "somersaults": rows, "not_found": missing},
+                           strengths=sorted({e["strength"] for e in rows + missing}))
                 kept = kept_message(found(m), m["outcome"] == "success", DRIFT_GOAL, bool(old))
                 print(f"{character} {direction} ({strength}): {m['outcome']}, drift {100 * (m['angular_momentum_drift'] or 0):.2f} % "
                       f"after {time.time() - started:.0f} s - {kept}")

@@ -144,7 +144,7 @@ def main() -> int:
             rises = load_mapping(character).get(key, {}).get("com_rise", [])
             if rises:
                 lines.append(f"\nCalibrated range ({character}, {strength}): {min(rises):.2f} … {max(rises):.2f} m "
-                             f"(rigs/tuned/leap_{character}.json `{key}`).")
+                             f"(sim_core/tuned/tables/leap_{character}.json `{key}`).")
         lines.append("")
 
     lines += ["## Broad jump: commanded vs achieved COM travel (Wooten Fig. 4.4)", "",

@@ -1,6 +1,6 @@
 """Tune the running controller's five high-level parameters (Hodgins & Pollard 1997 §4.3.1) by
 search, speed by speed, and write them as data - a table over the running speed - to
-rigs/tuned/running_<character>.json, which the running behaviour reads (a tuned parameter left at
+sim_core/tuned/tables/running_<character>.json, which the running behaviour reads (a tuned parameter left at
 -1 takes the table's value for the current speed).
 
     python3 scripts/tune_running.py --speeds 3.5 --minutes 10     # simulated annealing at 3.5 m/s
@@ -68,9 +68,7 @@ from __future__ import annotations
 import argparse
 import json
 import math
-import os
 import sys
-import tempfile
 import time
 from multiprocessing import Pool
 from pathlib import Path
@@ -80,8 +78,9 @@ import numpy as np
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
-from sim_core.control.running import (SCHEDULED_CONSTANTS, TABLE_NAMES, TUNED_DIR, TUNED_NAMES, Running,  # noqa: E402
+from sim_core.control.running import (SCHEDULED_CONSTANTS, TABLE_NAMES, TUNED_NAMES, Running,  # noqa: E402
                                       SpeedTable)
+from sim_core import tuned  # noqa: E402
 
 COLUMNS = TABLE_NAMES + tuple(SCHEDULED_CONSTANTS)     # what a row of the table can hold
 
@@ -98,14 +97,10 @@ def scenario(args) -> dict:
     """One run from a stand; the terms of the evaluation function."""
     from sim_core.gait import HUMAN_FIG12, compare_with_human, head_acceleration, stride_attitude_variation
     from sim_core.simulate import RunRequest, run
-    from sim_core.control.running import SpeedTable
     table, speed, start_lean, duration, character, strength, course = args
-    SpeedTable.override = SpeedTable(table["speeds"], table["values"])     # the candidate table
-    try:
-        traj = run(RunRequest("running", character, params=dict(course or {}, speed=speed, start_lean=start_lean),
-                              duration=duration, strength=strength))
-    finally:
-        SpeedTable.override = None
+    # the candidate table is the run's ``table`` parameter: what is scored is the table that would be written
+    traj = run(RunRequest("running", character, params=dict(course or {}, speed=speed, start_lean=start_lean, table=table),
+                          duration=duration, strength=strength))
     m = traj.meta["metrics"]
     a = traj.arrays
     t_up = m["fall_time"] if m["fell"] else duration
@@ -184,7 +179,7 @@ class Evaluator:
 
     def __call__(self, x) -> float:
         candidate = with_found_rows(self.table, self.names, self.row_values(x))
-        table = {"speeds": candidate.speeds, "values": candidate.values}
+        table = candidate.to_table()
         jobs = [(table, v_, lean, self.duration, self.character, self.strength, None)
                 for v_ in self.rows + self.faster for lean in self.leans]
         jobs += [(table, v, self.leans[0], duration, self.character, self.strength, course)
@@ -276,30 +271,22 @@ def faster_speeds(speeds: list[float], rows: list[float]) -> list[float]:
     return [v for v in speeds if any(v > row + 1e-9 for row in rows)]
 
 
-def write_atomically(path: Path, data: dict) -> None:
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fd, tmp = tempfile.mkstemp(dir=path.parent, suffix=".tmp")
-    with os.fdopen(fd, "w") as f:
-        json.dump(data, f, indent=1)
-        f.write("\n")
-    os.replace(tmp, path)
-
-
 # ------------------------------------------------------------------ steering constants
-# The steering laws' constants (module constants of sim_core.control.running, and the defaults of
-# the lean and look-ahead parameters) only act when the heading goal turns, so they are searched
-# on paths, not per speed:
+# The steering laws' constants (tuned settings of the running, stored in the running_any table's
+# constants, and the lean and look-ahead parameters) only act when the heading goal turns, so they
+# are searched on paths, not per speed:
 #
 #     E_steer = mean over the courses of  W_FALL  * (1 - t_up / T)
 #                                       + W_SPEED * |v - v_d| / v_d        (mean speed, whole run after 5 s)
 #                                       + W_PATH  * min(mean lateral deviation, 1 m)
 #
 # on a 90-degree turn of radius 10 m (24 s) and a figure eight of loops of radius 10 m (40 s),
-# both at 3.5 m/s from a stand. The result is printed; the constants are copied into running.py
-# by hand (they are code, with their search noted beside them).
+# both at 3.5 m/s from a stand. Each candidate runs with the values as its parameters (one name per
+# knob: the settings' names); a best point better than the start is written to the running_any
+# table's constants (lean and look-ahead are the animator's parameters: printed, set per run).
 STEERING_CONSTANTS = {            # name: (low, high)
-    "TURN_ACCEL": (0.1, 3.0), "HEADING_GAIN": (0.5, 4.0), "TURN_PLACE_GAIN": (0.0, 2.0),
-    "LATERAL_GAIN": (0.0, 0.4), "YAW_ERROR_LIMIT": (0.05, 0.4), "TURN_RATE_PER_SPEED": (0.1, 0.6),
+    "turn_accel": (0.1, 3.0), "heading_gain": (0.5, 4.0), "turn_place_gain": (0.0, 2.0),
+    "lateral_gain": (0.0, 0.4), "yaw_error_limit": (0.05, 0.4), "turn_rate_per_speed": (0.1, 0.6),
     "lean": (0.0, 1.5), "lookahead": (1.0, 6.0)}
 STEERING_COURSES = (
     ({"course": 1, "turn_angle": math.pi / 2, "turn_radius": 10.0, "turn_after": 25.0}, 24.0),
@@ -308,22 +295,9 @@ STEERING_COURSES = (
 
 
 def steering_scenario(args) -> dict:
-    import sim_core.control.running as running
     from sim_core.simulate import RunRequest, run
     values, course, duration, speed = args
-    params = dict(course, speed=speed)
-    saved = {}
-    for name, value in values.items():
-        if name in running.Running.schema.by_name:
-            params[name] = value
-        else:
-            saved[name] = getattr(running, name)
-            setattr(running, name, value)
-    try:
-        traj = run(RunRequest("running", "man", params=params, duration=duration))
-    finally:
-        for name, value in saved.items():
-            setattr(running, name, value)
+    traj = run(RunRequest("running", "man", params=dict(course, speed=speed, **values), duration=duration))
     m = traj.meta["metrics"]
     a = traj.arrays
     t_up = m["fall_time"] if m["fell"] else duration
@@ -334,12 +308,10 @@ def steering_scenario(args) -> dict:
 
 
 def steering_search(args) -> int:
-    import sim_core.control.running as running
     names = list(STEERING_CONSTANTS)
     lo = np.array([STEERING_CONSTANTS[n][0] for n in names])
     hi = np.array([STEERING_CONSTANTS[n][1] for n in names])
-    x0 = np.array([running.Running.schema.by_name[n].default if n in running.Running.schema.by_name
-                   else getattr(running, n) for n in names], dtype=float)
+    x0 = np.array([Running.schema.by_name[n].default for n in names], dtype=float)
     speed = 3.5
     history = []
     with Pool(args.workers) as pool:
@@ -362,7 +334,12 @@ def steering_search(args) -> int:
             es.tell(z, [evaluate(lo + np.array(zi) * (hi - lo)) for zi in z])
     best = min(history, key=lambda h: h[1])
     print(f"steering: {len(history)} evaluations, baseline {baseline:.4f}, best {best[1]:.4f}")
-    print(json.dumps(best[0], indent=1))
+    if best[1] < baseline:
+        stored = tuned.load("running", "any")
+        constants = {**stored["constants"], **{n: v for n, v in best[0].items() if n in stored["constants"]}}
+        path = tuned.save("running", "any", {**stored, "constants": constants}, strengths=["human"])
+        print(f"wrote the steering constants to {path}; lean and lookahead (parameters, set per run): "
+              + json.dumps({n: v for n, v in best[0].items() if n not in stored["constants"]}))
     return 0
 
 
@@ -416,7 +393,6 @@ def main(argv=None) -> int:
         ap.error(f"--start names {', '.join(unknown)}, which --names does not search ({', '.join(args.names)})")
     strength = args.strength if args.strength in ("human", "unlimited") else float(args.strength)
     table = SpeedTable.load(args.character)
-    path = TUNED_DIR / f"running_{args.character}.json"
     started = time.monotonic()
     per_speed = {}          # this search's rows' records, merged into the file's when it is written
     new_values = {}
@@ -464,17 +440,15 @@ def main(argv=None) -> int:
     # the rows found go into the table as it is now: another search (of other speeds) may have written it
     # since this one started
     table = with_found_rows(SpeedTable.load(args.character), args.names, new_values)
-    try:
-        per_speed = {**json.loads(path.read_text()).get("evaluation", {}).get("per_speed", {}), **per_speed}
-    except (FileNotFoundError, json.JSONDecodeError):
-        pass
+    stored = tuned.load("running", args.character) or {}
+    per_speed = {**stored.get("evaluation", {}).get("per_speed", {}), **per_speed}
     speeds = table.speeds
     # as stored, unrounded (the runs are chaotic in them); not table.at() at the knots, which can change
     # a value in the last bit
     values = {n: list(table.values[n]) for n in COLUMNS}
     elapsed = time.monotonic() - started
-    write_atomically(path, {
-        "behaviour": "running", "character": args.character, "speeds": speeds, "parameters": values,
+    path = tuned.save("running", args.character, {
+        "speeds": speeds, "parameters": values,
         "evaluation": {"weights": {"fall": W_FALL, "speed": W_SPEED, "speed_beyond_band": W_BAND,
                                    "speed_band": BAND, "head_acceleration": W_HEAD,
                                    "attitude_variation": W_ATT, "gait_fig12": W_GAIT,
@@ -485,7 +459,7 @@ def main(argv=None) -> int:
                        "duration_s": args.duration, "strength": args.strength, "per_speed": per_speed},
         "search": {"method": args.method, "minutes": round(elapsed / 60, 2), "seed": args.seed},
         "command": "python3 scripts/tune_running.py " + " ".join(argv if argv is not None else sys.argv[1:]),
-    })
+    }, strengths=["unlimited" if args.strength == "unlimited" else "human"])   # a factor scales the human limits
     print(f"wrote {path}")
     unchecked = [] if args.faster else faster_speeds(speeds, new_values)
     if unchecked:

@@ -12,7 +12,7 @@ import pytest
 
 from sim_core.character.model import compile_model, set_standing_pose
 from sim_core.character.spec import load_character
-from sim_core.control.running import SpeedTable
+from sim_core.control.running import Running, SpeedTable
 from sim_core.control.running_leg import RunnerLeg
 from sim_core.control.running_path import PathFollower, path_deviation, turn_path
 from sim_core.errors import ParameterError
@@ -196,14 +196,8 @@ def test_tight_courses_are_followed_at_3_m_s(label, params, duration):
 
 def gaits_at_3_5_with(tables: dict, duration: float) -> dict:
     """label -> gait metrics of a run at 3.5 m/s with that speed table in place of the stored one."""
-    gaits = {}
-    try:
-        for label, table in tables.items():
-            SpeedTable.override = table
-            gaits[label] = run_running(duration, speed=3.5).meta["metrics"]["gait"]
-    finally:
-        SpeedTable.override = None
-    return gaits
+    return {label: run_running(duration, speed=3.5, table=table.to_table()).meta["metrics"]["gait"]
+            for label, table in tables.items()}
 
 
 def test_a_stiffer_thrust_lengthens_the_flight():
@@ -326,7 +320,7 @@ def test_joint_search_scores_rows_at_several_speeds_together():
     score = evaluate([1.3, 1.9])
     assert [job[1] for job in pool.jobs] == [4.83, 4.83, 5.0, 5.0]        # 5.0 is a row, not a faster speed
     candidate = pool.jobs[0][0]
-    assert candidate["speeds"] == [4.5, 4.83, 5.0] and candidate["values"]["thrust_gain"] == [1.0, 1.3, 1.9]
+    assert candidate["speeds"] == [4.5, 4.83, 5.0] and candidate["parameters"]["thrust_gain"] == [1.0, 1.3, 1.9]
     # the gait term (0.1 off each quantity) in the two 4.83 m/s runs only, averaged over four
     assert score == pytest.approx(2 * (tune.W_GAIT * 0.1 + tune.W_GAIT_BAND * 3 * 0.02) / 4)
     assert evaluate.row_values([1.3, 1.9]) == {4.83: [1.3], 5.0: [1.9]}
@@ -342,3 +336,13 @@ def test_joint_search_scores_rows_at_several_speeds_together():
 
 def test_human_figures_are_the_papers():
     assert HUMAN_FIG12["man"] == {"speed": 4.83, "step_frequency": 2.92, "step_length": 1.66, "stance_fraction": 57.9}
+
+
+def test_a_running_constant_is_a_setting_a_run_may_set_by_name():
+    """The constants of the running laws are data (running_any) and settings: a tuner passes a
+    candidate by name (scripts/tune_running.py --steering), no module is patched. The stored value
+    given explicitly runs bit for bit as the default; another changes the run."""
+    stored = Running.settings_schema.by_name["start_speed"].default
+    default, same, other = (run_running(1.2, **extra).arrays["qpos"]
+                            for extra in ({}, {"start_speed": stored}, {"start_speed": 0.3}))
+    assert np.array_equal(default, same) and not np.array_equal(default, other)

@@ -7,6 +7,7 @@ time within 0.05 s, and end balanced."""
 from __future__ import annotations
 
 import json
+import shutil
 
 import numpy as np
 import pytest
@@ -14,7 +15,7 @@ import pytest
 from sim_core.ballistics import GRAVITY
 from sim_core.character.spec import load_character
 from sim_core.control.target_jump import (AIR_TIME_TOLERANCE, BOX_AIR_TIME, BOX_DISTANCE, GROUND_AIR_TIME,
-                                          LANDING_TOLERANCE, SIDEWAYS_AIR_TIME, path_estimate, plans_path,
+                                          LANDING_TOLERANCE, SIDEWAYS_AIR_TIME, path_estimate, stored_plans,
                                           start_feet_centre, takeoff_velocity, target_params)
 from sim_core.errors import ParameterError
 from sim_core.simulate import RunRequest, run
@@ -62,8 +63,7 @@ def test_bad_requests_are_refused_before_simulating(params, words):
 
 
 def _stored(character: str, request: dict) -> dict | None:
-    path = plans_path(character)
-    for plan in json.loads(path.read_text())["plans"] if path.exists() else []:
+    for plan in stored_plans(character):
         if (all(abs(plan["request"].get(k, 0.0) - request[k]) < 1e-9 for k in request
                 if k not in ("plan_trials", "strength"))
                 and plan["request"].get("strength", "human") == request.get("strength", "human")):
@@ -188,12 +188,13 @@ def test_remeasure_stores_what_a_plan_measures_now(tmp_path, monkeypatch):
     """scripts/plan_jumps.py --remeasure runs a stored plan's settings again and stores the measured
     landing and whether it is found: a plan whose stored numbers are stale (here made up: it
     'fell' at (9, 9) m) gets the man's 1.3 m jump's real landing back, found again."""
-    import sim_core.control.target_jump as target_jump
     stored = _stored("man", dict(target_x=1.3, target_y=0.0, target_z=0.0, air_time=GROUND_AIR_TIME,
                                  windup_time=WINDUP_TIME))
     stale = {**stored, "measured": {**stored["measured"], "outcome": "fell", "landing": [9.0, 9.0]}, "found": False}
-    monkeypatch.setattr(target_jump, "TUNED_DIR", tmp_path)
-    (tmp_path / "jump_targets_man.json").write_text(json.dumps({"character": "man", "plans": [stale]}))
+    from sim_core.tuned import store
+    shutil.copytree(store.DIRECTORY, tmp_path, dirs_exist_ok=True)      # the other tables as they are
+    monkeypatch.setattr(store, "DIRECTORY", tmp_path)
+    store.save("jump_targets", "man", {"plans": [stale]}, strengths=["human"])
     load_script("plan_jumps").remeasure(["man"])
     again = json.loads((tmp_path / "jump_targets_man.json").read_text())["plans"]
     assert len(again) == 1 and again[0]["found"] and again[0]["settings"] == stored["settings"]

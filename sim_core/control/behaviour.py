@@ -61,7 +61,8 @@ class ControlContext:
 class Behaviour:
     name: ClassVar[str]
     summary: ClassVar[str]
-    schema: ClassVar[Schema]
+    schema: ClassVar[Schema]                  # what an animator sets
+    settings_schema: ClassVar[Schema] = Schema()   # what a search sets (a tuned table's rows; docs/tables.md)
     default_duration: ClassVar[float] = 5.0
     control_rate: ClassVar[float] = 200.0     # Hz at which update() runs; the servos run every step
 

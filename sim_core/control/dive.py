@@ -12,18 +12,18 @@ left to the water, how far the body will still turn once straightened, and opens
 what remains of the dive's rotation (Wooten opened on timing; ch. 5's summary proposes state).
 
 The leap settings per dive (crouch, lean, lift-off hip angle, arm swing) come from
-``rigs/tuned/dives_<character>.json``, written by ``scripts/calibrate_dives.py``.
+the dive table (``sim_core/tuned/tables/dives_<character>.json``, else ``dives_any.json``: design values),
+written by ``scripts/calibrate_dives.py``.
 """
 from __future__ import annotations
 
 import dataclasses
-import json
 import math
 
 import numpy as np
 
 from sim_core.control.behaviour import register
-from sim_core.control.leap import THRUST_DAMPING, TUNED_DIR
+from sim_core.control.leap import THRUST_DAMPING
 from sim_core.control.sequencer import Sequence, Step
 from sim_core.ballistics import GRAVITY, time_to_fall_to
 from sim_core.control.takeoff import SETTINGS, takeoff_steps
@@ -31,6 +31,8 @@ from sim_core.control.tumble import (FlightRotation, Tumble, position_inertia, p
                                     rotation_to_come)
 from sim_core.errors import ParameterError
 from sim_core.schema import Parameter, Schema
+from sim_core.tuned import TableType, load, register as register_table
+from sim_core.tuned.settings import SkillSchema
 
 GROUPS = ("inward", "back", "forward", "reverse")
 FORWARD_ROTATING = ("inward", "forward")      # the others somersault backward
@@ -40,8 +42,6 @@ TAKEOFF_CLEAR = 0.05       # s without contact that make a take-off
 PLATFORM_MARGIN = 0.05     # m of room kept between the turning body and the platform
 FEET_CLEARANCE = 0.15      # m: the position is taken once the feet are this far past the platform's edge
 POSITION_MOVE = 0.15       # s after take-off before the position is held (in the feasibility estimate)
-DEFAULT_LIMITS = {"rise": 0.3, "angular_momentum": {"inward": 40.0, "back": 50.0, "forward": 40.0, "reverse": 40.0},
-                  "twists": 0.5}
 SNAP = 3.0                 # hip, knee and spine gains x3 for the moves into and out of the position
 OPEN_MOVE = 0.2            # s: the servo move from the position to the line
 OPEN_TIME = 0.18            # s: time to straighten from the position into the line
@@ -65,14 +65,6 @@ CALIBRATED_DIVES = {   # the dives scripts/calibrate_dives.py calibrates, per ch
               dict(group=3, somersaults=1.5, twists=0.0, position=2)],   # reverse 1 1/2 tuck
 }
 
-DEFAULT_SETTINGS = {       # until scripts/calibrate_dives.py has written the table
-    "forward": {"crouch_height": 0.60, "crouch_pitch": 0.3, "com_offset": 0.15, "liftoff_hip": -1.5, "arm_swing": 1.0},
-    "reverse": {"crouch_height": 0.60, "crouch_pitch": 0.0, "com_offset": 0.12, "liftoff_hip": 1.0, "arm_swing": 3.2},
-    "inward": {"crouch_height": 0.70, "crouch_pitch": 0.4, "com_offset": -0.04, "liftoff_hip": -0.8, "arm_swing": 2.5},
-    "back": {"crouch_height": 0.70, "crouch_pitch": 0.2, "com_offset": -0.04, "liftoff_hip": 0.6, "arm_swing": 3.0},
-}
-
-
 def group_name(p: dict) -> str:
     return GROUPS[int(round(p["group"]))]
 
@@ -86,17 +78,42 @@ def _article(name: str) -> str:
     return ("an " if name[0] in "aeiou" else "a ") + name
 
 
-def load_settings(character: str, p: dict) -> dict:
-    """Leap settings for this dive: the calibrated dive of the same group that is most alike
-    (same position, then twists, then somersaults), else the defaults."""
+def dive_row(table: dict, p: dict) -> dict | None:
+    """The dive of the same group most alike (same position, then nearest twists, then nearest
+    somersaults): its settings, or None if the table has no dive of the group."""
     group = group_name(p)
-    path = TUNED_DIR / f"dives_{character}.json"
-    table = [d for d in json.loads(path.read_text())["dives"] if GROUPS[d["group"]] == group] if path.exists() else []
-    if not table:
-        return dict(DEFAULT_SETTINGS[group])
-    best = min(table, key=lambda d: (d["position"] != int(round(p["position"])), abs(d["twists"] - p["twists"]),
-                                     abs(d["somersaults"] - p["somersaults"])))
+    rows = [d for d in table["dives"] if GROUPS[d["group"]] == group]
+    if not rows:
+        return None
+    best = min(rows, key=lambda d: (d.get("position", 0) != int(round(p["position"])),
+                                    abs(d.get("twists", 0.0) - p["twists"]), abs(d.get("somersaults", 0.0) - p["somersaults"])))
     return dict(best["settings"])
+
+
+def load_settings(character: str, p: dict) -> dict:
+    """Leap settings for this dive: the character's calibrated dive most alike (dive_row), else
+    the group's design row (dives_any)."""
+    own = load("dives", character)
+    return (own is not None and dive_row(own, p)) or dive_row(load("dives", "any"), p)
+
+
+DIVE_SETTINGS = Schema(
+    Parameter("crouch_height", "m", 0.70, 0.4, 0.95, "pelvis height of the crouch"),
+    Parameter("crouch_pitch", "rad", 0.3, 0.0, 1.5, "torso pitch in the crouch"),
+    Parameter("com_offset", "m", -0.04, -0.25, 0.25,
+              "COM ahead (+) of or behind (-) the middle of the feet: the diver leans and thrusts once the COM has moved that far"),
+    Parameter("liftoff_hip", "rad", 0.0, -2.2, 2.0,
+              "hip flexion (-, forward somersault) or extension (+, backward) at lift-off"),
+    Parameter("arm_swing", "rad", 2.5, -1.0, 3.2, "arm swing during the thrust, forward and up (+) or back (-)"),
+    Parameter("thrust_damping", "1", THRUST_DAMPING, 0.1, 1.0,
+              "share of the stiffened leg servos' damping kept in the thrust; less extends faster"),
+    Parameter("twist_lead", "s", 0.6, 0.0, 2.0,
+              "twisting dives: open and throw the arms at the latest this long before the predicted entry "
+              "(as soon as clear of the platform when it is longer than the flight)"),
+)
+
+DIVES_TABLE = register_table(TableType(
+    "dives", DIVE_SETTINGS, lambda body: ((f"dive {k}", d["settings"]) for k, d in enumerate(body["dives"])), (dive_row,)))
 
 
 @register
@@ -104,7 +121,8 @@ class Dive(Sequence):
     name = "dive"
     summary = "Platform dive: leap backwards off the edge, somersault and twist in flight, enter the water straight (Wooten §8.2.1)."
     default_duration = 4.0
-    schema = Schema(
+    settings_schema = DIVE_SETTINGS
+    schema = SkillSchema(
         Parameter("group", "1", 0.0, 0.0, 3.0,
                   "standing backwards: 0 = inward (somersault towards the platform), 1 = back (away from it); "
                   "facing the water: 2 = forward, 3 = reverse (somersault back towards the platform)"),
@@ -112,19 +130,8 @@ class Dive(Sequence):
         Parameter("twists", "1", 0.0, 0.0, 3.0, "twists (full turns about the long axis), by an arm throw in flight"),
         Parameter("position", "1", 1.0, 0.0, 2.0, "0 = layout (straight), 1 = pike, 2 = tuck"),
         Parameter("platform_height", "m", 10.0, 3.0, 10.0, "platform height above the water"),
-        Parameter("low_level", "bool", 0.0, 0.0, 1.0, "1 = use the leap settings below instead of the calibrated ones"),
-        Parameter("crouch_height", "m", 0.70, 0.4, 0.95, "pelvis height of the crouch (low_level only)"),
-        Parameter("crouch_pitch", "rad", 0.3, 0.0, 1.5, "torso pitch in the crouch (low_level only)"),
-        Parameter("com_offset", "m", -0.04, -0.25, 0.25,
-                  "COM ahead (+) of or behind (-) the middle of the feet: the diver leans and thrusts once the COM has moved that far (low_level only)"),
-        Parameter("liftoff_hip", "rad", 0.0, -2.2, 2.0,
-                  "hip flexion (-, forward somersault) or extension (+, backward) at lift-off (low_level only)"),
-        Parameter("arm_swing", "rad", 2.5, -1.0, 3.2, "arm swing during the thrust, forward and up (+) or back (-) (low_level only)"),
-        Parameter("thrust_damping", "1", THRUST_DAMPING, 0.1, 1.0,
-                  "share of the stiffened leg servos' damping kept in the thrust; less extends faster (low_level only)"),
-        Parameter("twist_lead", "s", 0.6, 0.0, 2.0,
-                  "twisting dives: open and throw the arms at the latest this long before the predicted entry "
-                  "(as soon as clear of the platform when it is longer than the flight) (low_level only)"),
+        Parameter("low_level", "bool", 0.0, 0.0, 1.0, "1 = run the tuned settings as set (--set crouch_height=...) instead of the calibrated ones"),
+        settings=DIVE_SETTINGS,
     )
 
     @classmethod
@@ -187,8 +194,7 @@ class Dive(Sequence):
         return angle / (2 * math.pi)
 
     def limits(self) -> dict:
-        path = TUNED_DIR / f"dives_{self.ctx.character.name}.json"
-        return json.loads(path.read_text())["limits"] if path.exists() else DEFAULT_LIMITS
+        return (load("dives", self.ctx.character.name) or load("dives", "any"))["limits"]
 
     def flight_time(self, rise: float) -> float:
         drop = self.params["platform_height"] + rise - self._entry_reach()

@@ -13,13 +13,13 @@ his hands and after a set amount of time pushes off the ground to perform anothe
 The landing controller positions the legs for touchdown and transitions to the balance
 controller." Nothing holds the hands: they touch, carry the body and leave by contact forces alone.
 
-The settings per character and strength come from ``rigs/tuned/handspring_<character>.json``,
+The settings per character and strength come from ``sim_core/tuned/tables/handspring_<character>.json``,
 written by ``scripts/calibrate_handspring.py`` (a cross-entropy search over whole simulated
 handsprings, scored off the simulation).
 """
 from __future__ import annotations
 
-import json
+import dataclasses
 import math
 
 import numpy as np
@@ -28,13 +28,15 @@ from sim_core.ballistics import GRAVITY
 from sim_core.analysis import FOOT_BODIES, feet_above_surface, standard_metrics, surface_under_points, true_runs
 from sim_core.control.balance import Balance, standing_hip_height
 from sim_core.control.behaviour import Behaviour, ControlContext, register
-from sim_core.control.leap import (ANKLE_GAIN_VERTICAL, AIRBORNE_HEIGHT, TUNED_DIR, VERTICAL_TIMING, Airborne,
+from sim_core.control.leap import (ANKLE_GAIN_VERTICAL, AIRBORNE_HEIGHT, VERTICAL_TIMING, Airborne,
                                    Landing, LeapThrust, balance_after_landing, run_strength)
 from sim_core.control.sequencer import Sequence, Step
 from sim_core.control.somersault import FLIGHT_STEP_PARAMETER, ROTATION_TOLERANCE, SQUAT_LOWEST, pelvis_pitch
 from sim_core.control.tumble import FlightRotation, both_sides
 from sim_core.control.tuned import uncalibrated
 from sim_core.schema import Parameter, Schema
+from sim_core.tuned import TableError, TableType, keyed, load, register as register_table
+from sim_core.tuned.settings import SkillSchema
 
 HAND_BODIES = ("HANDR", "HANDL")
 SIT_TIMEOUT = 3.0          # s into the run: the thrust starts at the latest then, fallen back or not
@@ -60,16 +62,80 @@ OLD_ROW = {"push_damping": 0.0, "flight_step_division": 1}   # what a row calibr
 
 
 def load_table(character: str) -> dict:
-    path = TUNED_DIR / f"handspring_{character}.json"
-    return json.loads(path.read_text()) if path.exists() else {"handsprings": []}
+    """The character's handspring table (no rows if there is none)."""
+    return load("handspring", character) or {"handsprings": []}
+
+
+def handspring_row(table: dict, strength: str) -> dict | None:
+    """The row of the strength (keyed), or None."""
+    return keyed(table["handsprings"], strength=strength)
 
 
 def calibrated(character: str, strength: str) -> dict | None:
     """The calibrated handspring of this character and strength, or None."""
-    for entry in load_table(character)["handsprings"]:
-        if entry["strength"] == strength:
-            return entry
-    return None
+    return handspring_row(load_table(character), strength)
+
+
+def setting(name: str, unit: str, minimum: float, maximum: float, help_text: str) -> Parameter:
+    """A handspring setting's range (its default is set below from the table)."""
+    return Parameter(name, unit, minimum, minimum, maximum, help_text)
+
+
+SETTING_RANGES = Schema(
+    setting("crouch_height", "m", 0.5, 0.9, "pelvis height of the sit (low_level only)"),
+    setting("crouch_pitch", "rad", -0.3, 1.5, "torso pitch in the sit (low_level only)"),
+    setting("com_offset", "m", -0.25, -0.05, "COM behind (-) the middle of the feet in the sit (low_level only)"),
+    setting("sit_extra", "m", 0.0, 0.3,
+              "the thrust starts once the COM, falling back, is this much further behind (low_level only)"),
+    setting("thrust_lean", "m", -0.4, 0.0,
+              "COM behind (-) the middle of the feet along the thrust's extension: the push goes back (low_level only)"),
+    setting("liftoff_hip", "rad", 0.0, 0.5, "hip extension at lift-off (backward spin) (low_level only)"),
+    setting("arm_swing", "rad", 1.5, 3.14, "arm swing forward and up to overhead during the thrust (low_level only)"),
+    setting("arm_gain", "1", 1.0, 10.0, "gain factor of the shoulder and elbow servos for the arm swing (low_level only)"),
+    setting("arm_time", "s", 0.05, 0.3, "duration of the arm swing (low_level only)"),
+    setting("thrust_damping", "1", 0.1, 1.0,
+              "share of the stiffened leg servos' damping kept in the thrust (low_level only)"),
+    setting("arch_arm", "rad", 1.5, 3.14,
+              "shoulder flexion in the first flight: the arms reach for the floor behind the head (low_level only)"),
+    setting("arch_hip", "rad", 0.0, 0.52, "hip extension of the arched first flight (low_level only)"),
+    setting("neck", "rad", -1.0, 0.5, "head tilt in the first flight, back (-) to see the floor (low_level only)"),
+    setting("hand_gain", "1", 1.0, 15.0, "gain factor of the arm servos while the hands take the weight (low_level only)"),
+    setting("push_delay", "s", 0.0, 0.3, "the push starts this long after the hands touch (low_level only)"),
+    setting("push_shoulder", "rad", 1.0, 3.14, "shoulder angle the push (the block) moves to (low_level only)"),
+    setting("push_hip", "rad", -2.0, 0.5, "hip flexion (-) of the snap-down (low_level only)"),
+    setting("snap_knee", "rad", 0.0, 1.2, "knee bend of the snap-down (low_level only)"),
+    setting("push_move", "s", 0.03, 0.3, "duration of the push's moves (low_level only)"),
+    setting("push_gain", "1", 1.0, 10.0, "gain factor of the servos of the push (low_level only)"),
+    setting("push_damping", "1", 0.0, 10.0,
+              "damping factor of the servos of the push; 0 = push_gain (damped as much as stiffened, so no "
+              "faster than the default servo); lighter moves the block and the snap-down sooner (low_level only)"),
+    setting("land_lean", "rad", 0.0, 1.6,
+              "the landing starts when the pelvis has turned this much short of one turn (low_level only)"),
+    setting("open_height", "m", 0.4, 1.1,
+              "... or when the COM has come down to this height, whichever is first (low_level only)"),
+    setting("ready_height", "m", 0.0, 0.8,
+              "... or when a foot has come down to this height above the ground (low_level only)"),
+    setting("land_knee", "rad", 0.3, 1.4, "knee bend held for touchdown (low_level only)"),
+    setting("foot_delta", "m", -0.3, 0.3, "landing: foot servo delta (low_level only)"),
+    setting("foot_lead", "s", 0.0, 0.6,
+              "landing: the feet land this many seconds of horizontal COM travel ahead of the COM (low_level only)"),
+    setting("spin_placement", "s/m", 0.0, 0.5,
+              "landing: feet placed this factor x (angular momentum / mass) against the spin (low_level only)"),
+    FLIGHT_STEP_PARAMETER,
+)
+HANDSPRING_TABLE = register_table(TableType(
+    "handspring", SETTING_RANGES,
+    lambda body: ((f"{kind} {e['strength']}", e["settings"]) for kind in ("handsprings", "not_found")
+                  for e in body.get(kind, [])),
+    (handspring_row,)))
+# the settings' defaults are data: the man's calibrated unlimited-strength row, so that low_level=1 with
+# nothing set runs that handspring
+DEFAULT_ROW = {**OLD_ROW, **(calibrated("man", "unlimited") or {"settings": {}})["settings"]}
+if set(DEFAULT_ROW) != set(SETTING_RANGES.by_name):
+    raise TableError("handspring_man.json: the handspring settings' defaults are its unlimited row, which names "
+                     f"{', '.join(sorted(DEFAULT_ROW)) or 'nothing'}; needed: {', '.join(SETTING_RANGES.by_name)}")
+HANDSPRING_SETTINGS = Schema(*(dataclasses.replace(p, default=float(DEFAULT_ROW[p.name]))
+                               for p in SETTING_RANGES.parameters))
 
 
 class HandContact:
@@ -119,50 +185,12 @@ class Handspring(Sequence):
     summary = ("Standing back handspring: sit back, leap backward, arch onto the hands, push off, snap down, "
                "land, balance (Wooten §8.3).")
     default_duration = 5.0
-    schema = Schema(
+    settings_schema = HANDSPRING_SETTINGS
+    schema = SkillSchema(
         Parameter("low_level", "bool", 0.0, 0.0, 1.0,
-                  "1 = use the settings below instead of the calibrated ones (rigs/tuned/handspring_<character>.json; "
-                  "the defaults below are the man's, unlimited strength)"),
-        Parameter("crouch_height", "m", 0.6061, 0.5, 0.9, "pelvis height of the sit (low_level only)"),
-        Parameter("crouch_pitch", "rad", 0.8678, -0.3, 1.5, "torso pitch in the sit (low_level only)"),
-        Parameter("com_offset", "m", -0.1346, -0.25, -0.05, "COM behind (-) the middle of the feet in the sit (low_level only)"),
-        Parameter("sit_extra", "m", 0.181, 0.0, 0.3,
-                  "the thrust starts once the COM, falling back, is this much further behind (low_level only)"),
-        Parameter("thrust_lean", "m", -0.1942, -0.4, 0.0,
-                  "COM behind (-) the middle of the feet along the thrust's extension: the push goes back (low_level only)"),
-        Parameter("liftoff_hip", "rad", 0.1225, 0.0, 0.5, "hip extension at lift-off (backward spin) (low_level only)"),
-        Parameter("arm_swing", "rad", 2.7331, 1.5, 3.14, "arm swing forward and up to overhead during the thrust (low_level only)"),
-        Parameter("arm_gain", "1", 6.6857, 1.0, 10.0, "gain factor of the shoulder and elbow servos for the arm swing (low_level only)"),
-        Parameter("arm_time", "s", 0.0803, 0.05, 0.3, "duration of the arm swing (low_level only)"),
-        Parameter("thrust_damping", "1", 0.4612, 0.1, 1.0,
-                  "share of the stiffened leg servos' damping kept in the thrust (low_level only)"),
-        Parameter("arch_arm", "rad", 2.3159, 1.5, 3.14,
-                  "shoulder flexion in the first flight: the arms reach for the floor behind the head (low_level only)"),
-        Parameter("arch_hip", "rad", 0.2857, 0.0, 0.52, "hip extension of the arched first flight (low_level only)"),
-        Parameter("neck", "rad", -0.2341, -1.0, 0.5, "head tilt in the first flight, back (-) to see the floor (low_level only)"),
-        Parameter("hand_gain", "1", 10.0185, 1.0, 15.0, "gain factor of the arm servos while the hands take the weight (low_level only)"),
-        Parameter("push_delay", "s", 0.0024, 0.0, 0.3, "the push starts this long after the hands touch (low_level only)"),
-        Parameter("push_shoulder", "rad", 1.6831, 1.0, 3.14, "shoulder angle the push (the block) moves to (low_level only)"),
-        Parameter("push_hip", "rad", -1.4108, -2.0, 0.5, "hip flexion (-) of the snap-down (low_level only)"),
-        Parameter("snap_knee", "rad", 0.1325, 0.0, 1.2, "knee bend of the snap-down (low_level only)"),
-        Parameter("push_move", "s", 0.0701, 0.03, 0.3, "duration of the push's moves (low_level only)"),
-        Parameter("push_gain", "1", 6.5252, 1.0, 10.0, "gain factor of the servos of the push (low_level only)"),
-        Parameter("push_damping", "1", 0.0, 0.0, 10.0,
-                  "damping factor of the servos of the push; 0 = push_gain (damped as much as stiffened, so no "
-                  "faster than the default servo); lighter moves the block and the snap-down sooner (low_level only)"),
-        Parameter("land_lean", "rad", 1.1018, 0.0, 1.6,
-                  "the landing starts when the pelvis has turned this much short of one turn (low_level only)"),
-        Parameter("open_height", "m", 0.7865, 0.4, 1.1,
-                  "... or when the COM has come down to this height, whichever is first (low_level only)"),
-        Parameter("ready_height", "m", 0.0406, 0.0, 0.8,
-                  "... or when a foot has come down to this height above the ground (low_level only)"),
-        Parameter("land_knee", "rad", 0.8716, 0.3, 1.4, "knee bend held for touchdown (low_level only)"),
-        Parameter("foot_delta", "m", -0.0953, -0.3, 0.3, "landing: foot servo delta (low_level only)"),
-        Parameter("foot_lead", "s", 0.3999, 0.0, 0.6,
-                  "landing: the feet land this many seconds of horizontal COM travel ahead of the COM (low_level only)"),
-        Parameter("spin_placement", "s/m", 0, 0.0, 0.5,
-                  "landing: feet placed this factor x (angular momentum / mass) against the spin (low_level only)"),
-        FLIGHT_STEP_PARAMETER,
+                  "1 = run the tuned settings as set (--set crouch_height=...; their defaults are the man's "
+                  "calibrated unlimited-strength row) instead of the calibrated ones"),
+        settings=HANDSPRING_SETTINGS,
     )
 
     def settings(self) -> dict:

@@ -20,9 +20,7 @@ leap_assess).
 """
 from __future__ import annotations
 
-import json
 import math
-from pathlib import Path
 
 import numpy as np
 
@@ -36,8 +34,9 @@ from sim_core.control.sequencer import Sequence, Step
 from sim_core.control.servo import hermite_scalar
 from sim_core.errors import ParameterError
 from sim_core.schema import Parameter, Schema
+from sim_core.tuned import TableType, load, register as register_table
+from sim_core.tuned.settings import SkillSchema
 
-TUNED_DIR = Path(__file__).resolve().parents[2] / "rigs" / "tuned"
 AIRBORNE_HEIGHT = 0.01          # m: every foot site this high above the ground = flight
 TOUCHDOWN_HEIGHT = 0.004        # m: a foot site this low = contact
 VERTICAL_TIMING = (0.10, 0.15, 0.22)     # s to full extension: hip, knee, ankle [W98 §4.1]
@@ -48,7 +47,7 @@ SIDEWAYS_HEADING_KP = 3.0       # rad/rad: a sideways lean's hips hold the pelvi
 BROAD_TRIGGER = 0.8             # share of the crouch's COM offset that triggers a broad jump's thrust
 THRUST_DAMPING = 1.0            # share of the stiffened servos' damping kept in the thrust when the
                                 # mapping names none. Damping brakes fast extension: high leaps use less
-                                # (calibrated per row of rigs/tuned/leap_<character>.json, with the
+                                # (calibrated per row of the leap table, with the
                                 # lift-off hip angle and COM offset that cancel the spin it brings)
 THRUST_GAIN = 3.0               # hip and knee servos stiffened for the thrust [W98 §4.3]
 LIFTOFF_ANKLE = 0.75            # rad of plantarflexion at the end of the thrust
@@ -182,7 +181,7 @@ class Landing(Behaviour):
                   "own landing keeps knee_flexion)"),
         Parameter("foot_delta", "m", 0.0, -0.3, 0.3,
                   "foot servo delta: extra forward placement of the feet, added to the calibrated one "
-                  "for the horizontal speed (rigs/tuned/landing_<character>.json, Table 6.1's role)"),
+                  "for the horizontal speed (the landing table, Table 6.1's role)"),
         Parameter("foot_lead_time", "s", 0.2, 0.0, 0.6,
                   "feet land this many seconds of horizontal COM travel ahead of the COM "
                   "(0.3 s ~ the capture point of a standing human)"),
@@ -492,15 +491,24 @@ def leap_assess(trajectory, squat_floor: float | None = None) -> tuple[str, dict
     return "success", metrics
 
 
-def calibrated_foot_delta(character: str, horizontal_speed: float, touchdown_speed: float = 0.0) -> float:
-    """Foot servo delta from scripts/calibrate_landing.py's table (0 where there is none): for
-    the horizontal speed, from the rows of the drops whose vertical touchdown speed is nearest
-    (interpolated between them), plus the extra for a fast touchdown (a high drop or leap), which
+LANDING_SETTINGS = Schema(
+    Parameter("foot_delta", "m", 0.0, -0.3, 0.3,
+              "foot servo delta the landing adds to its capture-point placement (Table 6.1's role)"))
+
+
+def _landing_rows(body: dict):
+    for row in body.get("foot_delta", []):
+        for speed, delta in zip(row["speed"], row["delta"]):
+            yield f"foot_delta drop {row['drop']:g} m, speed {speed:g} m/s", {"foot_delta": delta}
+    fast = body.get("fast_touchdown")
+    if fast:
+        yield "fast_touchdown", {"foot_delta": fast["delta"]}
+
+
+def foot_delta_row(table: dict, horizontal_speed: float, touchdown_speed: float) -> float:
+    """Interpolated over the horizontal speed in each drop's row, then over the vertical touchdown
+    speed between the drops, plus the extra for a fast touchdown (a high drop or leap), which
     ramps in from ``speed`` over ``ramp`` m/s of expected vertical touchdown speed."""
-    path = TUNED_DIR / f"landing_{character}.json"
-    if not path.exists():
-        return 0.0
-    table = json.loads(path.read_text())
     rows = [row for row in table["foot_delta"] if row["speed"]]
     if not rows:
         return 0.0
@@ -512,16 +520,17 @@ def calibrated_foot_delta(character: str, horizontal_speed: float, touchdown_spe
     return delta
 
 
+LANDING_TABLE = register_table(TableType("landing", LANDING_SETTINGS, _landing_rows, (foot_delta_row,)))
+
+
+def calibrated_foot_delta(character: str, horizontal_speed: float, touchdown_speed: float = 0.0) -> float:
+    """Foot servo delta from scripts/calibrate_landing.py's table (0 where there is none), for the
+    horizontal speed and the expected vertical touchdown speed (foot_delta_row)."""
+    table = load("landing", character)
+    return 0.0 if table is None else foot_delta_row(table, horizontal_speed, touchdown_speed)
+
+
 # ------------------------------------------------------------------------------- leap mapping
-DEFAULT_MAPPING = {
-    # Wooten Tables 4.1 / 4.2 as a starting point (crouch pelvis height, torso pitch, COM offset,
-    # arm swing) until scripts/calibrate_leap.py writes rigs/tuned/leap_<character>.json
-    "vertical": {"com_rise": [0.07, 0.22, 0.48, 0.71, 0.95], "crouch_height": [0.85, 0.75, 0.65, 0.55, 0.45],
-                 "torso_pitch": [0.0, 0.5, 1.0, 1.5, 1.8]},
-    "broad": {"com_travel": [], "params": []},      # planned jumps only (scripts/calibrate_leap.py)
-}
-
-
 def rise_tolerance(height: float) -> float:
     """TARGETS.md's tolerance of a vertical leap's COM rise: +-10 %, or +-3 cm below 0.3 m."""
     return 0.03 if height < 0.3 else 0.1 * height
@@ -575,11 +584,98 @@ def vertical_key(ctx: ControlContext) -> str:
     return "vertical" if run_strength(ctx) == "human" else "vertical_unlimited"
 
 
+# the leap's low-level settings: the columns of a vertical-leap table, a broad jump's and a planned
+# jump's settings (sim_core.control.target_jump searches them); a default is what a row that does
+# not name the setting runs with
+LEAP_SETTINGS = Schema(
+    Parameter("crouch_height", "m", 0.65, 0.4, 0.95, "pelvis height of the crouch"),
+    Parameter("crouch_pitch", "rad", 0.0, 0.0, 1.8, "torso pitch in the crouch"),
+    Parameter("com_offset", "m", 0.0, -0.05, 0.25, "COM ahead (+) of the middle of the feet in the crouch"),
+    Parameter("com_offset_y", "m", 0.0, -0.2, 0.2, "COM to the left (+) of the middle of the feet in the crouch"),
+    Parameter("liftoff_hip", "rad", 0.0, -1.0, 1.0, "hip flexion (-) or extension (+) at lift-off"),
+    Parameter("liftoff_roll", "rad", 0.0, -0.5, 0.5, "hip abduction at lift-off (a sideways jump's roll)"),
+    Parameter("vertical_thrust", "1", 0.0, 0.0, 1.0, "share of the vertical leap's thrust timing in a broad jump's"),
+    Parameter("arm_swing", "rad", 1.0, 0.0, 3.2, "arm swing forward and up in the thrust"),
+    Parameter("damping", "1", THRUST_DAMPING, 0.1, 1.0, "share of the stiffened servos' damping kept in the thrust"),
+    Parameter("foot_delta", "m", 0.0, -0.3, 0.3, "landing: foot servo delta"),
+    Parameter("swing_arms", "1", 0.0, 0.0, 1.0, "landing: share of the arm swing against the spin"),
+    Parameter("arm_flexion", "rad", 0.6, -1.0, 3.0, "landing: shoulder flexion"),
+    Parameter("foot_lead_time", "s", 0.2, 0.0, 0.6, "landing: the feet land this long of COM travel ahead"),
+    Parameter("crouch_arms", "rad", 0.0, -0.8, 0.0, "shoulder flexion in the crouch (back: -)"),
+    Parameter("thrust_lean", "m", 0.0, -0.2, 0.1, "COM ahead (+) of the feet along the thrust's extension"),
+    Parameter("spin_hold", "rad/(kg m²/s)", 0.0, 0.0, 0.5, "the hips turn against the spin about the vertical"),
+)
+LEAP_MEASURED = ("com_rise", "com_travel", "peak_thrust_grf_body_weights")   # columns a calibration measured
+
+
+def _leap_rows(body: dict):
+    for key in ("vertical", "vertical_unlimited"):
+        columns = body.get(key, {})
+        settings = [n for n in columns if n not in LEAP_MEASURED]
+        for k in range(len(columns.get("com_rise", []))):
+            yield f"{key} row {k}", {n: columns[n][k] for n in settings}
+    for k, row in enumerate(body.get("broad", {}).get("settings", [])):
+        yield f"broad row {k}", row
+
+
+def vertical_row(columns: dict, height: float) -> dict:
+    """The calibrated vertical leap nearest the commanded height when its measured rise is within
+    the tolerance (rise_tolerance), else interpolated over the measured rise between the rows
+    around it (a column a table lacks at its schema default). The rise is not smooth between rows
+    whose thrust differs (a damped and an undamped extension, another crouch): an interpolated
+    leap between them can miss or fall where both rows land, so a measured row is preferred."""
+    rises = columns["com_rise"]
+    nearest = min(rises, key=lambda rise: abs(rise - height))
+    h = nearest if abs(nearest - height) <= rise_tolerance(height) else height
+    default = LEAP_SETTINGS.defaults()
+    column = lambda name: float(np.interp(h, rises, columns.get(name, [default[name]] * len(rises))))
+    return {"crouch_height": column("crouch_height"), "crouch_pitch": column("crouch_pitch"),
+            "com_offset": column("com_offset"), "arm_swing": column("arm_swing"),
+            "damping": column("damping"), "foot_delta": column("foot_delta"), "liftoff_hip": column("liftoff_hip")}
+
+
+def broad_row(broad: dict, distance: float) -> dict:
+    """The calibrated broad jump whose measured COM travel is nearest the distance (its leap
+    parameters; a broad jump's travel is not smooth in its settings, so it is not interpolated)."""
+    k = int(np.argmin(np.abs(np.asarray(broad["com_travel"]) - distance)))
+    return dict(broad["params"][k])
+
+
+LEAP_TABLE = register_table(TableType("leap", LEAP_SETTINGS, _leap_rows, (vertical_row, broad_row)))
+
+
 def load_mapping(character: str) -> dict:
-    path = TUNED_DIR / f"leap_{character}.json"
-    if path.exists():
-        return json.loads(path.read_text())
-    return DEFAULT_MAPPING
+    """The character's leap table, else the design table every character starts from (leap_any)."""
+    return load("leap", character) or load("leap", "any")
+
+
+# the settings a low-level leap (low_level=1) runs with, by the leap parameters' names (the table's rows
+# name the thrust damping "damping" and the lift-off hip "liftoff_hip": Leap.settings maps them)
+LOW_LEVEL_SETTINGS = Schema(
+    Parameter("crouch_height", "m", 0.65, 0.4, 0.95, "pelvis height of the crouch (low_level only)"),
+    Parameter("crouch_pitch", "rad", 1.0, 0.0, 1.8, "torso pitch in the crouch (low_level only)"),
+    Parameter("com_offset", "m", 0.0, -0.05, 0.25, "COM forward of the feet in the crouch (low_level only)"),
+    Parameter("com_offset_y", "m", 0.0, -0.2, 0.2,
+              "COM to the left of the feet in the crouch: a sideways jump (low_level only)"),
+    Parameter("liftoff_roll", "rad", 0.0, -0.5, 0.5,
+              "hip abduction at lift-off for a sideways jump (+ swings the feet to the left, pushing the "
+              "body to the right): sets the roll rate, as the lift-off hip angle sets the somersault "
+              "rate (low_level only)"),
+    Parameter("thrust_lean", "m", 0.0, -0.2, 0.1,
+              "COM forward of the feet along the thrust's path of balanced poses: - pushes the body back "
+              "(a sideways jump of the woman otherwise leaves moving forward; low_level only)"),
+    Parameter("spin_hold", "rad/(kg m²/s)", 0.0, 0.0, 0.5,
+              "the hips turn against the body's angular momentum about the vertical in the crouch and the "
+              "thrust, this much hip rotation per kg m²/s (0 = not held): a sideways jump's push at the "
+              "forefeet, ahead of the COM, twists the body (low_level only)"),
+    Parameter("arm_swing", "rad", 1.0, 0.0, 3.2, "forward arm swing during the thrust (low_level only)"),
+    Parameter("crouch_arms", "rad", 0.0, -0.8, 0.0,
+              "arms swung back (-) in the crouch, to swing forward in the thrust; keeps the hands off "
+              "the ground in a deep crouch (low_level only)"),
+    Parameter("thrust_damping", "1", 1.0, 0.1, 1.0,
+              "share of the stiffened leg servos' damping kept in the thrust; less extends faster "
+              "(low_level only)"),
+)
 
 
 @register
@@ -587,7 +683,8 @@ class Leap(Sequence):
     name = "leap"
     summary = "Vertical leap or standing broad jump: crouch, extend, fly, land, balance (Wooten ch. 4, 6, 8)."
     default_duration = 5.0
-    schema = Schema(
+    settings_schema = LOW_LEVEL_SETTINGS
+    schema = SkillSchema(
         Parameter("height", "m", 0.3, 0.05, 1.2,
                   "commanded rise of the COM above standing (vertical leap): runs the calibrated leap nearest "
                   "it if that one's measured rise is within 10 % (3 cm below 0.3 m), else interpolates"),
@@ -597,30 +694,7 @@ class Leap(Sequence):
                   "hip flexion (-) or extension (+) at lift-off beyond the calibrated neutral (0 = no "
                   "somersault): sends the ground force past the COM and sets the somersault rate"),
         Parameter("low_level", "bool", 0.0, 0.0, 1.0,
-                  "1 = use the crouch/pitch/offset/arm values below instead of the calibrated mapping"),
-        Parameter("crouch_height", "m", 0.65, 0.4, 0.95, "pelvis height of the crouch (low_level only)"),
-        Parameter("crouch_pitch", "rad", 1.0, 0.0, 1.8, "torso pitch in the crouch (low_level only)"),
-        Parameter("com_offset", "m", 0.0, -0.05, 0.25, "COM forward of the feet in the crouch (low_level only)"),
-        Parameter("com_offset_y", "m", 0.0, -0.2, 0.2,
-                  "COM to the left of the feet in the crouch: a sideways jump (low_level only)"),
-        Parameter("liftoff_roll", "rad", 0.0, -0.5, 0.5,
-                  "hip abduction at lift-off for a sideways jump (+ swings the feet to the left, pushing the "
-                  "body to the right): sets the roll rate, as the lift-off hip angle sets the somersault "
-                  "rate (low_level only)"),
-        Parameter("thrust_lean", "m", 0.0, -0.2, 0.1,
-                  "COM forward of the feet along the thrust's path of balanced poses: - pushes the body back "
-                  "(a sideways jump of the woman otherwise leaves moving forward; low_level only)"),
-        Parameter("spin_hold", "rad/(kg m²/s)", 0.0, 0.0, 0.5,
-                  "the hips turn against the body's angular momentum about the vertical in the crouch and the "
-                  "thrust, this much hip rotation per kg m²/s (0 = not held): a sideways jump's push at the "
-                  "forefeet, ahead of the COM, twists the body (low_level only)"),
-        Parameter("arm_swing", "rad", 1.0, 0.0, 3.2, "forward arm swing during the thrust (low_level only)"),
-        Parameter("crouch_arms", "rad", 0.0, -0.8, 0.0,
-                  "arms swung back (-) in the crouch, to swing forward in the thrust; keeps the hands off "
-                  "the ground in a deep crouch (low_level only)"),
-        Parameter("thrust_damping", "1", 1.0, 0.1, 1.0,
-                  "share of the stiffened leg servos' damping kept in the thrust; less extends faster "
-                  "(low_level only)"),
+                  "1 = run the low-level settings as set (--set crouch_height=...) instead of the calibrated leap"),
         Parameter("crouch_time", "s", 0.8, 0.3, 3.0, "time to sink into the crouch"),
         Parameter("foot_delta", "m", 0.0, -0.3, 0.3, "landing: foot servo delta (see the land behaviour)"),
         Parameter("landing_knee_flexion", "rad", 0.9, 0.0, 1.5,
@@ -634,6 +708,7 @@ class Leap(Sequence):
                   "which pitches the trunk back so the feet reach forward)"),
         Parameter("landing_foot_lead_time", "s", 0.2, 0.0, 0.6,
                   "landing: the feet land this many seconds of horizontal COM travel ahead of the COM"),
+        settings=LOW_LEVEL_SETTINGS,
     )
 
     def run_params(self) -> dict:
@@ -645,19 +720,14 @@ class Leap(Sequence):
         p = self.params
         if p["low_level"] or p["distance"] <= 0:
             return p
-        broad = load_mapping(self.ctx.character.name)["broad"]
-        k = int(np.argmin(np.abs(np.asarray(broad["com_travel"]) - p["distance"])))
-        row = dict(broad["params"][k])
+        row = broad_row(load_mapping(self.ctx.character.name)["broad"], p["distance"])
         row["liftoff_hip_angle"] = row.get("liftoff_hip_angle", 0.0) + p["liftoff_hip_angle"]
         return self.schema.validate(row)
 
     def settings(self, p: dict) -> dict:
         """The leap's low-level settings for the run parameters ``p``: the user's own (low_level) or
-        the vertical-leap table's: the calibrated row nearest the commanded height when its measured
-        rise is within the tolerance (rise_tolerance), else interpolated between the rows around
-        it. The rise is not smooth between rows whose thrust differs (a damped and an undamped
-        extension, another crouch): an interpolated leap between them can miss or fall where both
-        rows land, so a measured row is preferred."""
+        the vertical-leap table's for the commanded height (vertical_row), with the user's lift-off
+        hip angle added."""
         if p["low_level"]:
             settings = {k: p[k] for k in ("crouch_height", "crouch_pitch", "com_offset", "com_offset_y",
                                           "liftoff_roll", "arm_swing", "crouch_arms", "thrust_damping",
@@ -665,16 +735,8 @@ class Leap(Sequence):
             settings["damping"] = settings.pop("thrust_damping")
             settings["liftoff_hip"] = p["liftoff_hip_angle"]
             return settings
-        mapping = load_mapping(self.ctx.character.name)
-        v = mapping[vertical_key(self.ctx)]
-        rises = v["com_rise"]
-        nearest = min(rises, key=lambda rise: abs(rise - p["height"]))
-        h = nearest if abs(nearest - p["height"]) <= rise_tolerance(p["height"]) else p["height"]
-        column = lambda name, default: float(np.interp(h, rises, v.get(name, [default] * len(rises))))
-        return {"crouch_height": column("crouch_height", 0.65), "crouch_pitch": column("torso_pitch", 0.0),
-                "com_offset": column("com_offset", 0.0), "arm_swing": column("arm_swing", 1.0),
-                "damping": column("damping", THRUST_DAMPING), "foot_delta": column("foot_delta", 0.0),
-                "liftoff_hip": column("liftoff_hip", 0.0) + p["liftoff_hip_angle"]}
+        row = vertical_row(load_mapping(self.ctx.character.name)[vertical_key(self.ctx)], p["height"])
+        return {**row, "liftoff_hip": row["liftoff_hip"] + p["liftoff_hip_angle"]}
 
     def check_feasible(self) -> None:
         p = self.params

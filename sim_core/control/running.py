@@ -28,15 +28,14 @@ into the turn (desired roll from the turn rate). The run starts from the standin
 body leans forward over the feet, the left leg pushes off and the state machine takes over
 while the commanded speed ramps up.
 
-Tuned values (the five parameters of Hodgins & Pollard §4.3.1) are data:
-``rigs/tuned/running_<character>.json``, written by ``scripts/tune_running.py``; the schema
-takes its defaults from it.
+Tuned values are data: the five parameters of Hodgins & Pollard §4.3.1 and the other scheduled
+settings per speed in ``sim_core/tuned/tables/running_<character>.json`` (written by
+``scripts/tune_running.py``), the constants of the laws in ``running_any.json`` (docs/tables.md).
 """
 from __future__ import annotations
 
-import json
 import math
-from pathlib import Path
+from types import SimpleNamespace
 
 import numpy as np
 
@@ -48,44 +47,32 @@ from sim_core.control.running_path import (PathFollower, circle_path, figure_eig
 from sim_core.control.servo import hermite_scalar
 from sim_core.errors import ParameterError
 from sim_core.schema import Parameter, Schema
+from sim_core.tuned import TableType, load, register as register_table
+from sim_core.tuned.settings import SkillSchema, with_defaults
+from sim_core.tuned.store import check_rows
 
-TUNED_DIR = Path(__file__).resolve().parents[2] / "rigs" / "tuned"
 TUNED_NAMES = ("ground_speed_matching", "stance_pitch", "thrust_time", "ankle_extension", "knee_extension")
 TABLE_NAMES = TUNED_NAMES + ("speed_gain", "touchdown_leg", "idle_knee")
-# constants of the stance and swing laws that the table may also schedule over the speed (not user
-# parameters: the searches of scripts/tune_running.py set them per row); name: (low, high) for the search
-SCHEDULED_CONSTANTS = {
-    "thrust_damping": (0.3, 1.0),      # share of the knee's and ankle's default damping during the thrust
-    "unloading_after": (0.25, 0.7),    # share of the expected stance after the thrust start when the leg unloads
-    "place_back": (0.05, 0.3),         # m: the foot lands this much closer to the hip than eq. 1 says
-    "swing_fold": (0.0, 2.0),          # knee flexion per radian the swinging thigh lags its touchdown angle
-    "yaw_first": (0.0, 1.0),           # share of the roll torque given up to keep the hip's rotation axis in range
-    "yaw_gain": (0.5, 1.5),            # scale of the stance hip's yaw servo gains
-    "twist_damping": (0.0, 30.0),      # N m s/rad: the stance hip's rotation damped about its own rate (the foot's pivot)
-    "thrust_gain": (1.0, 4.0),         # the knee's and ankle's position gain in the thrust, as a multiple of the default
-    "toe_push": (0.0, 0.7),            # rad: the toe joint's plantarflexion target in the thrust (0 = held flat)
+# settings of the stance and swing laws that the table also schedules over the speed (the searches of
+# scripts/tune_running.py set them per row): name: (unit, low, high, help); the range is the search's and a row's
+SCHEDULED = {
+    "thrust_damping": ("1", 0.3, 1.0, "share of the knee's and ankle's default damping during the thrust"),
+    "unloading_after": ("1", 0.25, 0.7, "share of the expected stance after the thrust start when the leg unloads"),
+    "place_back": ("m", 0.05, 0.3, "the foot lands this much closer to the hip than eq. 1 says"),
+    "swing_fold": ("1", 0.0, 2.0, "knee flexion per radian the swinging thigh lags its touchdown angle"),
+    "yaw_first": ("1", 0.0, 1.0, "share of the roll torque given up to keep the hip's rotation axis in range"),
+    "yaw_gain": ("1", 0.5, 1.5, "scale of the stance hip's yaw servo gains"),
+    "twist_damping": ("N m s/rad", 0.0, 30.0, "the stance hip's rotation damped about its own rate (the foot's pivot)"),
+    "thrust_gain": ("1", 1.0, 4.0, "the knee's and ankle's position gain in the thrust, as a multiple of the default"),
+    "toe_push": ("rad", 0.0, 0.7, "the toe joint's plantarflexion target in the thrust (0 = held flat)"),
 }
+SCHEDULED_CONSTANTS = {name: (low, high) for name, (_, low, high, _) in SCHEDULED.items()}   # the search's space
 
 # states of the active leg (Hodgins 1995 Fig. 3)
 FLIGHT, LOADING, HEEL, HEEL_TOE, TOE, UNLOADING, START = range(7)
 STATE_NAMES = ("flight", "loading", "heel", "heel_toe", "toe", "unloading", "start")
 
-CONTACT_HEIGHT = 0.004      # m: a foot contact sphere this close to the ground touches it
-FLYING_START_SPEED = 1.0    # m/s: a run that starts moving faster than this starts in flight
-FLYING_START_STANCE = 0.22  # s: expected stance time of its first step
-MIN_FLIGHT = 0.02           # s: a touchdown of the new active leg is not taken before this
-LOADING_TIME = 0.010        # s: contact held this long before the stance laws take over
-SWAP_BLEND = 0.06           # s: Hermite blend of the new active leg's targets after lift-off
-
-
 TUNED = -1.0                # the value of a tuned parameter that means "as tuned for the running speed"
-# fallback design values (the table in rigs/tuned/running_<character>.json overrides them)
-FALLBACK_TABLE = {"ground_speed_matching": 0.010, "stance_pitch": 0.100, "thrust_time": 0.289,
-                  "ankle_extension": 0.658, "knee_extension": 0.307, "speed_gain": 0.073,
-                  "touchdown_leg": 0.902, "idle_knee": 1.474,
-                  "thrust_damping": 1.0, "unloading_after": 0.556, "place_back": 0.187, "swing_fold": 0.0,
-                  "yaw_first": 0.0, "yaw_gain": 1.0, "twist_damping": 0.0, "thrust_gain": 1.0,
-                  "toe_push": 0.0}
 
 
 class SpeedTable:
@@ -98,26 +85,21 @@ class SpeedTable:
         self.values = {k: ([float(x) for x in v] if isinstance(v, (list, tuple)) else [float(v)] * len(self.speeds))
                        for k, v in values.items()}
 
-    # the table under evaluation while scripts/tune_running.py scores a candidate (set in its
-    # worker process only, so that what is scored is exactly the table that would be written)
-    override: "SpeedTable | None" = None
-
     @classmethod
     def load(cls, character: str = "man") -> "SpeedTable":
-        """rigs/tuned/running_<character>.json (the man's if the character has none), else the
-        built-in fallback values."""
-        if cls.override is not None:
-            return cls.override
+        """The character's running table (the man's if the character has none), its columns
+        completed from the design values of running_any (which is the table when neither exists)."""
+        fallback = load("running", "any")
         for name in (character, "man"):
-            path = TUNED_DIR / f"running_{name}.json"
-            try:
-                data = json.loads(path.read_text())
-            except (FileNotFoundError, json.JSONDecodeError):
-                continue
-            values = dict(FALLBACK_TABLE)
-            values.update(data.get("parameters", {}))
-            return cls(data.get("speeds", [3.5]), values)
-        return cls([3.5], FALLBACK_TABLE)
+            data = load("running", name)
+            if data is not None:
+                return cls(data.get("speeds", fallback["speeds"]), {**fallback["parameters"], **data.get("parameters", {})})
+        return cls(fallback["speeds"], fallback["parameters"])
+
+    def to_table(self) -> dict:
+        """The table's speeds and columns as a running table stores them (and a tuner passes a
+        candidate to a run: the ``table`` parameter)."""
+        return {"speeds": list(self.speeds), "parameters": {n: list(v) for n, v in self.values.items()}}
 
     def with_row(self, speed: float, row: dict[str, float]) -> "SpeedTable":
         """A copy with the values of ``row`` at ``speed`` (a new row if the speed is new; the
@@ -133,6 +115,7 @@ class SpeedTable:
         return SpeedTable(speeds, {n: [value(n, v) for v in speeds] for n in self.values})
 
     def at(self, name: str, speed: float) -> float:
+        """A column's value at the speed: piecewise linear between the rows, held beyond the ends."""
         xs, ys = self.speeds, self.values[name]
         if speed <= xs[0]:
             return ys[0]
@@ -148,16 +131,121 @@ def _tuned_parameter(name, unit, minimum, maximum, help_text) -> Parameter:
                      special=TUNED)
 
 
-class RunningSchema(Schema):
+def constant(name: str, unit: str, minimum: float, maximum: float, help_text: str) -> Parameter:
+    """A constant of the running laws (hand-tuned or searched, e.g. the steering's): its value is
+    data, the running_any table's "constants"; the range here is a sanity bound (the value's sign,
+    about ten times it) a table row is checked against."""
+    return Parameter(name, unit, minimum, minimum, maximum, help_text)
+
+
+SETTING_RANGES = Schema(
+    _tuned_parameter("ground_speed_matching", "m", 0.0, 0.3,
+                     "tuned: how much further forward the foot swings during flight before it is brought back to touchdown"),
+    _tuned_parameter("stance_pitch", "rad", -0.1, 0.4, "tuned: forward pitch of the pelvis the stance hip holds"),
+    _tuned_parameter("thrust_time", "1", 0.2, 0.7,
+                     "tuned: share of the expected stance time after which the ankle thrusts (toe state)"),
+    _tuned_parameter("ankle_extension", "rad", 0.0, 0.87, "tuned: ankle plantarflexion the stance ankle extends to in thrust"),
+    _tuned_parameter("knee_extension", "rad", 0.0, 0.8, "tuned: knee angle the stance knee extends to in thrust"),
+    _tuned_parameter("speed_gain", "s", 0.0, 0.3, "k of eqs. 1-2: extra forward placement of the foot per m/s of speed error"),
+    _tuned_parameter("touchdown_leg", "m", 0.75, 0.95, "hip-to-heel distance at touchdown (fixes z_hh of eqs. 1-2)"),
+    _tuned_parameter("idle_knee", "rad", 0.5, 2.4, "knee flexion of the idle (shortened) leg"),
+    *(_tuned_parameter(name, unit, low, high, help_text) for name, (unit, low, high, help_text) in SCHEDULED.items()),
+    constant("contact_height", "m", 0.0, 0.05, "a foot contact sphere this close to the ground touches it"),
+    constant("flying_start_speed", "m/s", 0.0, 10.0, "a run that starts moving faster than this starts in flight"),
+    constant("flying_start_stance", "s", 0.0, 5.0, "expected stance time of its first step"),
+    constant("min_flight", "s", 0.0, 0.2, "a touchdown of the new active leg is not taken before this"),
+    constant("loading_time", "s", 0.0, 0.1, "contact held this long before the stance laws take over"),
+    constant("swap_blend", "s", 0.0, 1.0, "Hermite blend of the new active leg's targets after lift-off"),
+    constant("flight_hip_gain", "1", 0.0, 20.0, "share of the default gains of the swinging (flight) hip's servos"),
+    constant("idle_hip_gain", "1", 0.0, 20.0, "share of the default gains of the idle hip's servos"),
+    constant("idle_knee_gain", "1", 0.0, 10.0, "share of the default gains of the idle knee's servo"),
+    constant("stance_hip_share", "1", 0.0, 1.0, "stance hip servos are torque-commanded: low kp so 5 ms holds drift little"),
+    constant("stance_knee_gain", "1", 0.0, 10.0, "share of the knee's default kp in stance (the knee is a spring)"),
+    constant("heel_ankle_gain", "1", 0.0, 5.0, "heel contact: a soft ankle lets the foot come down flat"),
+    constant("pitch_kp", "N m/rad", 0.0, 20000.0, "body pitch servo of the stance hip"),
+    constant("pitch_kd", "N m s/rad", 0.0, 2000.0, "body pitch servo of the stance hip"),
+    constant("roll_kp", "N m/rad", 0.0, 50000.0, "body roll servo of the stance hip"),
+    constant("roll_kd", "N m s/rad", 0.0, 5000.0, "body roll servo of the stance hip"),
+    constant("yaw_kp", "N m/rad", 0.0, 20000.0, "body yaw servo of the stance hip"),
+    constant("yaw_kd", "N m s/rad", 0.0, 2000.0, "body yaw servo of the stance hip"),
+    constant("attitude_onset", "s", 0.0, 0.2, "the attitude torque fades in after touchdown, out in unloading"),
+    constant("unload_knee", "rad", 0.0, 3.14, "knee flexion the unloading leg folds to (0 = it does not)"),
+    constant("unload_ramp", "s", 0.0, 1.0, "the unloading knee moves to unload_knee over this time"),
+    constant("thrust_ramp", "s", 0.0, 0.5, "the thrust targets move in over this time"),
+    constant("touchdown_toe_up", "rad", 0.0, 2.0, "foot pitched toe-up at touchdown, heel first"),
+    constant("foot_inward", "m", 0.0, 0.05, "the foot lands this far inside the hip, toward the centre line"),
+    constant("speed_trim_gain", "s", 0.0, 0.2, "m of placement trim per m/s of speed error, per step"),
+    constant("speed_trim_max", "m", 0.0, 2.0, "the placement trim is at most this"),
+    constant("place_back_speed", "m/s", 0.0, 50.0, "above which the full place_back applies"),
+    constant("drift_filter", "1/s", 0.0, 20.0, "low-pass of the sideways speed (about a stride)"),
+    constant("turn_place_gain", "m", 0.0, 10.0, "outward placement per g of centripetal acceleration"),
+    constant("lateral_gain", "s", 0.0, 1.0, "extra sideways placement per m/s of sideways speed error"),
+    constant("placement_limit", "1", 0.0, 10.0, "the hip-to-heel distance on the ground is at most this share of the leg"),
+    constant("hip_yaw_limit", "rad", 0.0, 3.14, "the stance hip's yaw goal is at most this"),
+    constant("hip_yaw_headroom", "1", 0.0, 10.0, "share of the rotation axis's torque limit the roll is reduced to keep within"),
+    constant("accel_margin", "m/s", 0.0, 5.0, "the speed command is at most this above the current speed"),
+    constant("table_lead", "1", 0.0, 10.0, "the table is looked up this share of the way from the current speed to the ramped command"),
+    constant("turn_rate_per_speed", "1/m", 0.0, 5.0, "rad/s of heading change per m/s of speed"),
+    constant("heading_gain", "1/s", 0.0, 20.0, "heading rate per radian of heading error"),
+    constant("turn_accel", "rad/s^2", 0.0, 10.0, "the heading rate changes at most this fast"),
+    constant("yaw_error_limit", "rad", 0.0, 3.14, "yaw error the stance hip acts on (limits the yaw change asked of one stance)"),
+    constant("roll_filter", "1", 0.0, 0.5, "share per control tick by which the turn rate and roll goal follow their targets (low-pass)"),
+    constant("start_ankle_lean", "rad", 0.0, 2.0, "ankle dorsiflexion while leaning into the start"),
+    constant("start_knee", "rad", 0.0, 2.0, "knee flexion while leaning"),
+    constant("start_pitch", "rad", 0.0, 1.0, "pelvis pitch the hips hold while leaning"),
+    constant("start_speed", "m/s", 0.0, 10.0, "forward COM speed at which the lean turns into the first push-off"),
+    constant("start_timeout", "s", 0.0, 10.0, "after the lean, the push-off starts at the latest this long whatever the speed"),
+    constant("start_stance", "s", 0.0, 5.0, "expected duration of the first (push-off) stance"),
+    constant("swing_fold_max", "rad", 0.0, 3.14, "at most this much extra knee flexion of a lagging swing"),
+    constant("gsm_retract", "s", 0.0, 1.0, "the swung-forward foot is brought back over this time before the predicted touchdown"),
+    constant("idle_forward_thigh", "rad", -3.14, 0.0, "forward angle (from vertical) the idle thigh reaches by the end of stance"),
+    constant("idle_unfold", "1", 0.0, 10.0, "share of the expected stance over which the idle knee unfolds after thrust"),
+    constant("idle_unfold_knee", "rad", 0.0, 3.14, "idle knee flexion at the end of the unfolding"),
+    constant("idle_ankle", "rad", -2.0, 0.0, "the idle ankle's target"),
+    constant("idle_knee_min", "rad", 0.0, 3.14, "idle knee flexion of a slow (starting) runner"),
+    constant("idle_knee_per_speed", "s/m", 0.0, 5.0, "rad of idle knee flexion per m/s: the idle knee folds more the faster the run"),
+    constant("idle_pitch_gain", "1", 0.0, 50.0, "idle hip extension per radian of trunk pitch error, in flight"),
+    constant("idle_pitch_damp", "s", 0.0, 5.0, "idle hip extension per rad/s of trunk pitch rate, in flight"),
+    constant("idle_abduction", "rad", 0.0, 2.0, "the idle hip abducts at most this much"),
+    constant("idle_adduction", "rad", -1.0, 0.0, "the idle hip adducts at least this much (negative: abduction)"),
+    constant("ff_max", "rad/s", 0.0, 200.0, "cap on a target's rate used as feed-forward"),
+    constant("arm_abduction", "rad", 0.0, 2.0, "the arms are held this far out from hanging"),
+    constant("arm_offset", "rad", 0.0, 1.0, "gamma_0 of eq. 5: the arms swing about this forward angle"),
+    constant("elbow_base", "rad", 0.0, 3.14, "running elbow flexion"),
+    constant("elbow_swing", "1", 0.0, 5.0, "extra elbow flexion per radian of forward arm swing"),
+)
+
+
+def _running_rows(body: dict):
+    speeds = body.get("speeds", [])
+    columns = body.get("parameters", {})
+    for k, speed in enumerate(speeds):
+        yield f"row {speed:g} m/s", {n: (v[k] if isinstance(v, list) else v) for n, v in columns.items()}
+    if "constants" in body:
+        yield "constants", body["constants"]
+
+
+RUNNING_TABLE = register_table(TableType("running", SETTING_RANGES, _running_rows, (SpeedTable.at,)))
+RUNNING_SETTINGS = with_defaults(SETTING_RANGES, load("running", "any")["constants"])
+CONSTANT_NAMES = tuple(load("running", "any")["constants"])
+
+
+class RunningSchema(SkillSchema):
     """The numeric parameters, plus ``path``: a list of [x, y] points in metres (on the CLI
-    ``--set path="x,y; x,y; ..."``), validated into a clean polyline or refused as degenerate."""
+    ``--set path="x,y; x,y; ..."``), validated into a clean polyline or refused as degenerate;
+    and ``table``: a running table's speeds and columns to run with instead of the stored one (a
+    tuner's candidate, SpeedTable.to_table), checked like a stored table's rows."""
 
     def validate(self, values: dict) -> dict:
         values = dict(values)
         path = values.pop("path", None)
+        table = values.pop("table", None)
         result = super().validate(values)
         if path is not None and not (isinstance(path, (list, tuple)) and len(path) == 0):
             result["path"] = validate_path(parse_points(path)).tolist()
+        if table is not None:
+            check_rows("the table parameter", "running", table)
+            result["table"] = table
         return result
 
 
@@ -167,6 +255,7 @@ class Running(Behaviour):
     summary = "Run at 2.5-5 m/s from a stand, facing a direction or along a path (Hodgins et al. 1995)."
     default_duration = 20.0
     control_rate = 200.0
+    settings_schema = RUNNING_SETTINGS
     schema = RunningSchema(
         Parameter("speed", "m/s", 3.5, 2.5, 5.0, "desired running speed on the ground plane"),
         Parameter("facing", "rad", 0.0, -math.pi, math.pi,
@@ -180,19 +269,10 @@ class Running(Behaviour):
         Parameter("turn_after", "m", 15.0, 2.0, 200.0, "course 1-3: distance run straight before the turn or the loops"),
         Parameter("lean", "1", 1.0, 0.0, 1.5, "share of the lean into a turn that balances the centripetal force (atan(v^2 / (g r)))"),
         Parameter("lookahead", "m", 2.5, 0.5, 10.0, "path following: distance along the path of the point the runner heads for"),
-        _tuned_parameter("ground_speed_matching", "m", 0.0, 0.3,
-                         "tuned: how much further forward the foot swings during flight before it is brought back to touchdown"),
-        _tuned_parameter("stance_pitch", "rad", -0.1, 0.4, "tuned: forward pitch of the pelvis the stance hip holds"),
-        _tuned_parameter("thrust_time", "1", 0.2, 0.7,
-                         "tuned: share of the expected stance time after which the ankle thrusts (toe state)"),
-        _tuned_parameter("ankle_extension", "rad", 0.0, 0.87, "tuned: ankle plantarflexion the stance ankle extends to in thrust"),
-        _tuned_parameter("knee_extension", "rad", 0.0, 0.8, "tuned: knee angle the stance knee extends to in thrust"),
-        _tuned_parameter("speed_gain", "s", 0.0, 0.3, "k of eqs. 1-2: extra forward placement of the foot per m/s of speed error"),
-        _tuned_parameter("touchdown_leg", "m", 0.75, 0.95, "hip-to-heel distance at touchdown (fixes z_hh of eqs. 1-2)"),
-        _tuned_parameter("idle_knee", "rad", 0.5, 2.4, "knee flexion of the idle (shortened) leg"),
         Parameter("arm_swing", "1", 0.8, 0.0, 2.0,
                   "k of eq. 5: shoulder swing per radian of the opposite hip's swing"),
         Parameter("start_lean", "s", 0.35, 0.1, 1.0, "time the standing body leans forward before the first push-off"),
+        settings=RUNNING_SETTINGS,
     )
 
     # --------------------------------------------------------------------- setup
@@ -221,9 +301,13 @@ class Running(Behaviour):
         self.kp0 = s.default_kp.copy()
         self.kv0 = s.default_kv.copy()
         self.ratio = (s.default_kv / s.default_kp).tolist()
-        self.table = SpeedTable.load(ch.name)
-        self.scheduled = [n for n in self.table.values
-                          if (n in params and params[n] == TUNED) or n in SCHEDULED_CONSTANTS]
+        self.table = (SpeedTable(params["table"]["speeds"], params["table"]["parameters"]) if "table" in params
+                      else SpeedTable.load(ch.name))
+        self.scheduled = [n for n in self.table.values if params.get(n, TUNED) == TUNED]
+        defaults = RUNNING_SETTINGS.defaults()
+        self.constants = SimpleNamespace(**{n: params.get(n, defaults[n]) for n in CONSTANT_NAMES})
+        share = self.constants.stance_hip_share      # stance hip servos are torque-commanded: low kp
+        self.stance_hip_gains = {key: (share, share) for key in ("hy", "hx", "hz")}
         self.p = dict(params)
         self._schedule(0.0)
         self.path = self._path()
@@ -274,6 +358,7 @@ class Running(Behaviour):
 
     # --------------------------------------------------------------------- start
     def start(self, t: float) -> None:
+        c = self.constants
         s = self.ctx.servos
         self.targets = self.base.tolist()
         self.kp = self.kp0.tolist()          # current gains (the torque-commanded servos need them)
@@ -302,7 +387,7 @@ class Running(Behaviour):
         self.heading_rate = 0.0              # rad/s: rate of the heading goal (smooth: limited acceleration)
         d = self.ctx.data
         vx, vy, _ = d.subtree_linvel[self.pelvis].tolist()
-        if math.hypot(vx, vy) > FLYING_START_SPEED:
+        if math.hypot(vx, vy) > c.flying_start_speed:
             # a running start state (RunRequest.start: the body already moving): the right leg
             # is placed for the first touchdown, as after a lift-off of the left
             q = self.ctx.servos.angles().tolist()
@@ -310,7 +395,7 @@ class Running(Behaviour):
             self.active = 0
             self.active_lo = [q[ja["hy"]], q[ja["hx"]]]
             self.idle_lo = [q[ji["hy"]], q[ji["hx"]]]
-            self.stance_time = FLYING_START_STANCE
+            self.stance_time = c.flying_start_stance
             self._schedule(math.hypot(vx, vy))
             self.event(t, "flying_start")
             self._enter(t, FLIGHT)
@@ -336,22 +421,23 @@ class Running(Behaviour):
             self.ctx.servos.set_gains(np.array(idx), np.array(kps), np.array(kvs))
 
     def _enter(self, t: float, state: int) -> None:
+        c = self.constants
         self.state = state
         self.t_state = t
         a = self.active
         self.event(t, f"{STATE_NAMES[state]}_{'R' if a == 0 else 'L'}")
         if state == FLIGHT:
-            g, gi, gk = FLIGHT_HIP_GAIN, IDLE_HIP_GAIN, IDLE_KNEE_GAIN
+            g, gi, gk = c.flight_hip_gain, c.idle_hip_gain, c.idle_knee_gain
             self._set_gains(a, {"hy": (g, g), "hx": (g, g), "hz": (g, g), "knee": (1.0, 1.0), "ay": (1.0, 1.0),
                                 "ax": (1.0, 1.0), "mt": (0.5, 0.5)})
             self._set_gains(1 - a, {"hy": (gi, gi), "hx": (gi, gi), "hz": (gi, gi), "knee": (gk, gk), "ay": (0.5, 0.5),
                                     "ax": (0.5, 0.5), "mt": (0.3, 0.3)})
         elif state == LOADING:
-            self._set_gains(a, STANCE_HIP_GAINS)
+            self._set_gains(a, self.stance_hip_gains)
         elif state == HEEL:
-            self._set_gains(a, {"knee": (STANCE_KNEE_GAIN, STANCE_KNEE_GAIN), "ay": (HEEL_ANKLE_GAIN, HEEL_ANKLE_GAIN)})
+            self._set_gains(a, {"knee": (c.stance_knee_gain, c.stance_knee_gain), "ay": (c.heel_ankle_gain, c.heel_ankle_gain)})
         elif state == HEEL_TOE:
-            self._set_gains(a, {"knee": (STANCE_KNEE_GAIN, STANCE_KNEE_GAIN), "ay": (1.0, 1.0)})
+            self._set_gains(a, {"knee": (c.stance_knee_gain, c.stance_knee_gain), "ay": (1.0, 1.0)})
         elif state == TOE:
             self.t_thrust = t
             damping = self.p["thrust_damping"]       # the servos' damping would eat the push's power
@@ -374,6 +460,7 @@ class Running(Behaviour):
 
     # --------------------------------------------------------------------- control
     def update(self, t: float) -> None:
+        c = self.constants
         d = self.ctx.data
         p = self.p
         servos = self.ctx.servos
@@ -385,8 +472,8 @@ class Running(Behaviour):
         cx, cy, _ = d.subtree_com[self.pelvis].tolist()
         vx, vy, vz = d.subtree_linvel[self.pelvis].tolist()
         z = d.site_xpos[self.foot_sites, 2].tolist()
-        heel = [min(z[0], z[1]) < CONTACT_HEIGHT, min(z[6], z[7]) < CONTACT_HEIGHT]
-        ball = [min(z[2], z[3], z[4], z[5]) < CONTACT_HEIGHT, min(z[8], z[9], z[10], z[11]) < CONTACT_HEIGHT]
+        heel = [min(z[0], z[1]) < c.contact_height, min(z[6], z[7]) < c.contact_height]
+        ball = [min(z[2], z[3], z[4], z[5]) < c.contact_height, min(z[8], z[9], z[10], z[11]) < c.contact_height]
         touch = [heel[0] or ball[0], heel[1] or ball[1]]
 
         yaw = math.atan2(m[3], m[0])
@@ -401,22 +488,22 @@ class Running(Behaviour):
         # the heading goal turns toward the goal at a rate proportional to the error, limited in
         # rate and in acceleration, so the yaw the stance hip asks for changes smoothly (an abrupt
         # change of facing direction makes the runner fall: Hodgins et al. 1995, Discussion)
-        max_rate = TURN_RATE_PER_SPEED * max(speed_now, 1.0)
-        wanted = HEADING_GAIN * _wrap(goal - self.heading_goal)
+        max_rate = c.turn_rate_per_speed * max(speed_now, 1.0)
+        wanted = c.heading_gain * _wrap(goal - self.heading_goal)
         wanted = max(-max_rate, min(max_rate, wanted))
-        step = TURN_ACCEL / self.control_rate
+        step = c.turn_accel / self.control_rate
         self.heading_rate += max(-step, min(step, wanted - self.heading_rate))
         self.heading_goal = _wrap(self.heading_goal + self.heading_rate / self.control_rate)
-        self.turn_rate += ROLL_FILTER * (self.heading_rate - self.turn_rate)
+        self.turn_rate += c.roll_filter * (self.heading_rate - self.turn_rate)
         roll_target = -p["lean"] * math.atan(speed_now * self.turn_rate / GRAVITY)
-        self.roll_goal += ROLL_FILTER * (roll_target - self.roll_goal)
+        self.roll_goal += c.roll_filter * (roll_target - self.roll_goal)
         heading = self.heading_goal
         ch, sh = math.cos(heading), math.sin(heading)
         # the speed command ramps up from the stand: the foot is placed to accelerate at most
-        # ACCEL_MARGIN above the current speed
-        speed_cmd = min(p["speed"], speed_now + ACCEL_MARGIN)
+        # accel_margin above the current speed
+        speed_cmd = min(p["speed"], speed_now + c.accel_margin)
         vxd, vyd = speed_cmd * ch, speed_cmd * sh
-        self.lateral_drift += DRIFT_FILTER / self.control_rate * ((-sh * vx + ch * vy) - self.lateral_drift)
+        self.lateral_drift += c.drift_filter / self.control_rate * ((-sh * vx + ch * vy) - self.lateral_drift)
 
         targets = self.targets
         a = self.active
@@ -426,25 +513,25 @@ class Running(Behaviour):
         state = self.state
         if state == START:
             # the lean ends when the body falls forward fast enough to step into the run
-            if vx * ch + vy * sh >= START_SPEED or t - self.t_state >= p["start_lean"] + START_TIMEOUT:
+            if vx * ch + vy * sh >= c.start_speed or t - self.t_state >= p["start_lean"] + c.start_timeout:
                 ji = self.j[1 - a]
                 self.idle_lo = [q[ji["hy"]], q[ji["hx"]]]
                 self.active_lo = [q[ja["hy"]], q[ja["hx"]]]
                 self.t_touchdown = t
                 self.t_liftoff = t
-                self.stance_time = START_STANCE
+                self.stance_time = c.start_stance
                 self.ankle_flat = q[ja["ay"]]
                 self.knee_touchdown = q[ja["knee"]]
-                self._set_gains(a, STANCE_HIP_GAINS)
+                self._set_gains(a, self.stance_hip_gains)
                 self._set_gains(1 - a, {"hy": (1.0, 1.0), "hx": (1.0, 1.0), "hz": (1.0, 1.0), "knee": (0.6, 0.6),
                                         "ay": (0.5, 0.5), "ax": (0.5, 0.5), "mt": (0.3, 0.3)})
                 self._enter(t, HEEL_TOE)
         elif state == FLIGHT:
-            if touch[a] and t - self.t_liftoff >= MIN_FLIGHT:
-                self._schedule(speed_now + TABLE_LEAD * (speed_cmd - speed_now))
+            if touch[a] and t - self.t_liftoff >= c.min_flight:
+                self._schedule(speed_now + c.table_lead * (speed_cmd - speed_now))
                 # a slow integral of the speed error trims the placement (steady-state speed)
-                trim = self.speed_trim + SPEED_TRIM_GAIN * (speed_cmd - speed_now)
-                self.speed_trim = max(-SPEED_TRIM_MAX, min(SPEED_TRIM_MAX, trim))
+                trim = self.speed_trim + c.speed_trim_gain * (speed_cmd - speed_now)
+                self.speed_trim = max(-c.speed_trim_max, min(c.speed_trim_max, trim))
                 self.flight_time = 0.5 * self.flight_time + 0.5 * (t - self.t_liftoff)
                 self.t_touchdown = t
                 self.knee_touchdown = q[ja["knee"]]
@@ -453,7 +540,7 @@ class Running(Behaviour):
         elif state == LOADING:
             if not touch[a]:
                 self._enter(t, FLIGHT)
-            elif t - self.t_state >= LOADING_TIME:
+            elif t - self.t_state >= c.loading_time:
                 self.ankle_flat = q[ja["ay"]]
                 self._enter(t, HEEL_TOE if ball[a] else HEEL)
         elif state == HEEL:
@@ -485,9 +572,9 @@ class Running(Behaviour):
             # inverted pendulum, the hips hold the pelvis pitch, the knees give a little
             s_ = hermite_scalar((t - self.t_state) / p["start_lean"])
             for jj in self.j:
-                targets[jj["ay"]] = -START_ANKLE_LEAN * s_
-                targets[jj["knee"]] = START_KNEE * s_
-                targets[jj["hy"]] = q[jj["hy"]] + (pitch - START_PITCH * s_) + self.kv[jj["hy"]] / self.kp[jj["hy"]] * (qd[jj["hy"]] + pitch_rate)
+                targets[jj["ay"]] = -c.start_ankle_lean * s_
+                targets[jj["knee"]] = c.start_knee * s_
+                targets[jj["hy"]] = q[jj["hy"]] + (pitch - c.start_pitch * s_) + self.kv[jj["hy"]] / self.kp[jj["hy"]] * (qd[jj["hy"]] + pitch_rate)
             hy_goal, hx_goal = targets[ja["hy"]], targets[ja["hx"]]
         elif state == FLIGHT:
             hy_goal, hx_goal = self._place_foot(t, p, a, ja, m, pitch, yaw, heading, ch, sh, vx, vy, vz, vxd, vyd)
@@ -496,14 +583,14 @@ class Running(Behaviour):
             # pelvis, net of the idle hip's torque (so the swinging leg does not tip the body)
             e_pitch = pitch - p["stance_pitch"]
             e_roll = roll - self.roll_goal
-            e_yaw = max(-YAW_ERROR_LIMIT, min(YAW_ERROR_LIMIT, _wrap(yaw - heading)))
-            share = hermite_scalar((t - self.t_touchdown) / ATTITUDE_ONSET) if state != UNLOADING else \
-                1.0 - hermite_scalar((t - self.t_state) / ATTITUDE_ONSET)
+            e_yaw = max(-c.yaw_error_limit, min(c.yaw_error_limit, _wrap(yaw - heading)))
+            share = hermite_scalar((t - self.t_touchdown) / c.attitude_onset) if state != UNLOADING else \
+                1.0 - hermite_scalar((t - self.t_state) / c.attitude_onset)
             # restoring torque on the pelvis (world frame): roll about its x axis, pitch about
             # its y axis, yaw about the vertical
-            t_roll = -(ROLL_KP * e_roll + ROLL_KD * roll_rate)
-            t_pitch = -(PITCH_KP * e_pitch + PITCH_KD * pitch_rate)
-            t_yaw = -p["yaw_gain"] * (YAW_KP * e_yaw + YAW_KD * (wz - self.heading_rate))     # damped relative to the turn
+            t_roll = -(c.roll_kp * e_roll + c.roll_kd * roll_rate)
+            t_pitch = -(c.pitch_kp * e_pitch + c.pitch_kd * pitch_rate)
+            t_yaw = -p["yaw_gain"] * (c.yaw_kp * e_yaw + c.yaw_kd * (wz - self.heading_rate))     # damped relative to the turn
             bx = t_roll * m[0] + t_pitch * m[1]
             by = t_roll * m[3] + t_pitch * m[4]
             bz = t_roll * m[6] + t_pitch * m[7] + t_yaw
@@ -534,16 +621,16 @@ class Running(Behaviour):
                 targets[ja["knee"]] = self.knee_touchdown
                 targets[ja["ay"]] = self.ankle_flat
             else:
-                s_ = hermite_scalar((t - self.t_thrust) / THRUST_RAMP)
+                s_ = hermite_scalar((t - self.t_thrust) / c.thrust_ramp)
                 targets[ja["knee"]] = self.knee_touchdown + (p["knee_extension"] - self.knee_touchdown) * s_
                 targets[ja["ay"]] = self.ankle_flat + (p["ankle_extension"] - self.ankle_flat) * s_
                 # thrust from the ankle and the metatarsal joint (Hodgins et al. 1995): the toes
                 # pushed down against the ground lengthen the push past the ankle's range
                 targets[ja["mt"]] = p["toe_push"] * s_
-                if state == UNLOADING and UNLOAD_KNEE > 0:
+                if state == UNLOADING and c.unload_knee > 0:
                     # the knee starts to fold so that the toe leaves the ground
-                    u_ = hermite_scalar((t - self.t_state) / UNLOAD_RAMP)
-                    targets[ja["knee"]] += (UNLOAD_KNEE - targets[ja["knee"]]) * u_
+                    u_ = hermite_scalar((t - self.t_state) / c.unload_ramp)
+                    targets[ja["knee"]] += (c.unload_knee - targets[ja["knee"]]) * u_
             targets[ja["ax"]] = 0.0
             hy_goal, hx_goal = q[ja["hy"]], q[ja["hx"]]
 
@@ -556,10 +643,10 @@ class Running(Behaviour):
         for leg in (0, 1):
             jj, opposite = self.j[leg], self.j[1 - leg]
             sign = 1.0 if leg == 0 else -1.0
-            swing = -k_arm * q[opposite["hy"]] + ARM_OFFSET
+            swing = -k_arm * q[opposite["hy"]] + c.arm_offset
             targets[jj["sz"]] = sign * swing
-            targets[jj["sx"]] = self.base[jj["sx"]] - sign * ARM_ABDUCTION      # arms clear the torso
-            targets[jj["ez"]] = sign * (ELBOW_BASE + ELBOW_SWING * swing)
+            targets[jj["sx"]] = self.base[jj["sx"]] - sign * c.arm_abduction      # arms clear the torso
+            targets[jj["ez"]] = sign * (c.elbow_base + c.elbow_swing * swing)
         targets[self.neck_y] = -p["stance_pitch"]
 
         # ---- eq. 6's desired velocity: the servos are position actuators (tau = kp (ctrl - q) -
@@ -573,7 +660,7 @@ class Running(Behaviour):
         for j_ in tracked:
             if j_ in previous:
                 v_ = (targets[j_] - previous[j_]) * rate
-                v_ = FF_MAX if v_ > FF_MAX else -FF_MAX if v_ < -FF_MAX else v_
+                v_ = c.ff_max if v_ > c.ff_max else -c.ff_max if v_ < -c.ff_max else v_
                 command[j_] += kv[j_] / kp[j_] * v_
         self.previous_goal = {j_: targets[j_] for j_ in tracked}
         servos.hold(np.array(command), t)
@@ -582,7 +669,8 @@ class Running(Behaviour):
         """The hip's rotation axis runs along the thigh, so with the thigh swept forward or back it
         carries part of the roll torque too; when that would take it past its torque limit, the
         roll demand is reduced (toward zero, never reversed) so that the yaw is still held."""
-        limit = self.ctx.model.actuator_forcerange[ja["hz"], 1] * HIP_YAW_HEADROOM
+        c = self.constants
+        limit = self.ctx.model.actuator_forcerange[ja["hz"], 1] * c.hip_yaw_headroom
         hz = taus[2] * share
         if abs(hz) <= limit or share <= 0.0:
             return taus
@@ -598,6 +686,7 @@ class Running(Behaviour):
     def _place_foot(self, t, p, a, ja, m, pitch, yaw, heading, ch, sh, vx, vy, vz, vxd, vyd):
         """Flight: hip, knee and ankle targets that put the heel at the touchdown point of
         eqs. 1-2 (plus the ground-speed-matching swing), by leg inverse kinematics."""
+        c = self.constants
         targets = self.targets
         leg = self.legs[a]
         hip = self.ctx.data.xpos[self.hip_body[a]].tolist()
@@ -606,51 +695,51 @@ class Running(Behaviour):
         # eqs. 1-2; departure: the foot lands place_back closer to the hip than eq. 1 says (our
         # stance is not symmetric about mid-stance: the hip passes over the foot early), less
         # when running slowly, where the stance sweep t_s xdot is short
-        back = p["place_back"] * min(1.0, math.hypot(vx, vy) / PLACE_BACK_SPEED) + self.speed_trim
+        back = p["place_back"] * min(1.0, math.hypot(vx, vy) / c.place_back_speed) + self.speed_trim
         x_hh = 0.5 * (ts * vx - ch * lf) + p["speed_gain"] * (vx - vxd) - back * ch          # eq. 1
         y_hh = 0.5 * (ts * vy - sh * lf) + p["speed_gain"] * (vy - vyd) - back * sh          # eq. 2
         # a sideways drift (the sway of each step averaged out over about a stride) is corrected
         # harder than eq. 2's k does
         # in a turn the foot lands outside the curve, so that the ground pushes the body round
         # it (centripetal acceleration v * omega, as a share of g, times a lever in metres)
-        outward = TURN_PLACE_GAIN * math.hypot(vx, vy) * self.turn_rate / GRAVITY
-        lateral = LATERAL_GAIN * self.lateral_drift - outward
+        outward = c.turn_place_gain * math.hypot(vx, vy) * self.turn_rate / GRAVITY
+        lateral = c.lateral_gain * self.lateral_drift - outward
         x_hh -= sh * lateral
         y_hh += ch * lateral
-        inward = FOOT_INWARD if a == 0 else -FOOT_INWARD                          # right foot lands left of its hip
+        inward = c.foot_inward if a == 0 else -c.foot_inward                          # right foot lands left of its hip
         x_hh -= sh * inward
         y_hh += ch * inward
         reach = math.hypot(x_hh, y_hh)
-        limit = PLACEMENT_LIMIT * p["touchdown_leg"]
+        limit = c.placement_limit * p["touchdown_leg"]
         if reach > limit:
             x_hh *= limit / reach
             y_hh *= limit / reach
         z_hh = math.sqrt(max(p["touchdown_leg"] ** 2 - x_hh * x_hh - y_hh * y_hh, 0.01))
         # ground speed matching: swung further forward during flight, brought back over the last
-        # GSM_RETRACT s before the predicted touchdown (ballistic hip height reaching z_hh)
+        # gsm_retract s before the predicted touchdown (ballistic hip height reaching z_hh)
         to_touchdown = time_to_fall_to(hip[2], vz, z_hh)
-        gsm = p["ground_speed_matching"] * hermite_scalar(to_touchdown / GSM_RETRACT)
+        gsm = p["ground_speed_matching"] * hermite_scalar(to_touchdown / c.gsm_retract)
         x_hh += gsm * ch
         y_hh += gsm * sh
-        fx, fz = leg.ankle_from_heel(TOUCHDOWN_TOE_UP)
+        fx, fz = leg.ankle_from_heel(c.touchdown_toe_up)
         ax_w, ay_w, az_w = x_hh + fx * ch, y_hh + fx * sh, -z_hh + fz
         px = m[0] * ax_w + m[3] * ay_w + m[6] * az_w              # world -> pelvis frame
         py = m[1] * ax_w + m[4] * ay_w + m[7] * az_w
         pz = m[2] * ax_w + m[5] * ay_w + m[8] * az_w
         hy_goal, hx_goal, knee_goal = leg.hip_knee_for(px, py, pz)
-        hz_goal = max(-HIP_YAW_LIMIT, min(HIP_YAW_LIMIT, _wrap(heading - yaw)))
+        hz_goal = max(-c.hip_yaw_limit, min(c.hip_yaw_limit, _wrap(heading - yaw)))
         # the foot pitched toe-up so that the heel lands first (foot pitch = pelvis pitch + hip + knee + ankle)
-        ankle_goal = -TOUCHDOWN_TOE_UP - pitch - hy_goal - knee_goal
+        ankle_goal = -c.touchdown_toe_up - pitch - hy_goal - knee_goal
         if p["swing_fold"] > 0:
             # a thigh still behind its touchdown angle keeps its knee folded (the foot clears the
             # ground until the leg has swung forward), instead of reaching down behind the body
             lag = self.ctx.servos.angles()[ja["hy"]] - hy_goal
             if lag > 0:
-                fold = min(SWING_FOLD_MAX, p["swing_fold"] * lag)
+                fold = min(c.swing_fold_max, p["swing_fold"] * lag)
                 knee_goal += fold
                 ankle_goal -= fold
         goals = (hy_goal, hx_goal, hz_goal, knee_goal, ankle_goal)
-        blend = hermite_scalar((t - self.t_liftoff) / SWAP_BLEND) if self.blend_from else 1.0
+        blend = hermite_scalar((t - self.t_liftoff) / c.swap_blend) if self.blend_from else 1.0
         for k, key in enumerate(BLENDED):
             start = self.blend_from[k] if self.blend_from else goals[k]
             targets[ja[key]] = start + (goals[k] - start) * blend
@@ -662,30 +751,31 @@ class Running(Behaviour):
         """Eqs. 3-4: the idle hip mirrors the active hip about their lift-off angles, shortened
         (knee folded, ankle flexed) so the toe clears the ground; it is kept on schedule to be
         forward by the end of stance and unfolds its knee while the active leg thrusts."""
+        c = self.constants
         targets = self.targets
         hy_idle = self.idle_lo[0] - (hy_goal - self.active_lo[0])
         hx_idle = self.idle_lo[1] - (hx_goal - self.active_lo[1])
         if state not in (FLIGHT, START):
             s_ = hermite_scalar((t - self.t_touchdown) / max(self.stance_time, 0.05))
-            schedule = self.idle_lo[0] + (IDLE_FORWARD_THIGH - pitch - self.idle_lo[0]) * s_
+            schedule = self.idle_lo[0] + (c.idle_forward_thigh - pitch - self.idle_lo[0]) * s_
             hy_idle = min(hy_idle, schedule)
         side = 1.0 if i == 0 else -1.0                  # +x adducts the right hip, abducts the left
-        hx_idle = side * max(-IDLE_ABDUCTION, min(IDLE_ADDUCTION, side * hx_idle))
+        hx_idle = side * max(-c.idle_abduction, min(c.idle_adduction, side * hx_idle))
         if state == FLIGHT:
             # in the air the body's angular momentum is fixed: swinging the idle leg back
             # pitches the trunk back (and forward, forward) - the only pitch control there is
-            hy_idle += IDLE_PITCH_GAIN * (pitch - p["stance_pitch"]) + IDLE_PITCH_DAMP * pitch_rate
+            hy_idle += c.idle_pitch_gain * (pitch - p["stance_pitch"]) + c.idle_pitch_damp * pitch_rate
         targets[ji["hy"]] = max(-1.3, min(0.5, hy_idle))
         # a slow runner folds the idle leg less (people jog with the foot low)
-        idle_knee = min(p["idle_knee"], max(IDLE_KNEE_MIN, IDLE_KNEE_PER_SPEED * speed_now))
+        idle_knee = min(p["idle_knee"], max(c.idle_knee_min, c.idle_knee_per_speed * speed_now))
         targets[ji["hx"]] = hx_idle
         targets[ji["hz"]] = 0.0
-        if state in (TOE, UNLOADING) and IDLE_UNFOLD > 0:
-            s_ = hermite_scalar((t - self.t_thrust) / max(IDLE_UNFOLD * self.stance_time, 0.02))
-            targets[ji["knee"]] = idle_knee + (IDLE_UNFOLD_KNEE - idle_knee) * s_
+        if state in (TOE, UNLOADING) and c.idle_unfold > 0:
+            s_ = hermite_scalar((t - self.t_thrust) / max(c.idle_unfold * self.stance_time, 0.02))
+            targets[ji["knee"]] = idle_knee + (c.idle_unfold_knee - idle_knee) * s_
         else:
             targets[ji["knee"]] = idle_knee
-        targets[ji["ay"]] = IDLE_ANKLE
+        targets[ji["ay"]] = c.idle_ankle
         targets[ji["ax"]] = 0.0
         targets[ji["mt"]] = 0.0
 
@@ -730,60 +820,3 @@ def _wrap(angle: float) -> float:
 
 
 BLENDED = ("hy", "hx", "hz", "knee", "ay")   # targets blended from idle to active after lift-off
-# gains as shares of the character's default (kp, kv)
-FLIGHT_HIP_GAIN = 1.11
-IDLE_HIP_GAIN = 1.02
-IDLE_KNEE_GAIN = 0.681
-STANCE_HIP_SHARE = 0.1        # stance hip servos are torque-commanded: low kp so 5 ms holds drift little
-STANCE_HIP_GAINS = {"hy": (STANCE_HIP_SHARE, STANCE_HIP_SHARE), "hx": (STANCE_HIP_SHARE, STANCE_HIP_SHARE),
-                    "hz": (STANCE_HIP_SHARE, STANCE_HIP_SHARE)}
-STANCE_KNEE_GAIN = 0.683        # share of the knee's default kp in stance (the knee is a spring)
-HEEL_ANKLE_GAIN = 0.331         # heel contact: a soft ankle lets the foot come down flat
-PITCH_KP, PITCH_KD = 1486.0, 149.0    # N m/rad, N m s/rad: body pitch servo of the stance hip
-ROLL_KP, ROLL_KD = 2752.0, 275.0
-YAW_KP, YAW_KD = 1109.0, 139.0
-ATTITUDE_ONSET = 0.02         # s: the attitude torque fades in after touchdown, out in unloading
-UNLOAD_KNEE = 0.836             # rad: knee flexion the unloading leg folds to (0 = it does not)
-UNLOAD_RAMP = 0.06
-THRUST_RAMP = 0.05            # s: the thrust targets move in over this time
-TOUCHDOWN_TOE_UP = 0.14       # rad: foot pitched toe-up at touchdown, heel first
-FOOT_INWARD = 0.00373            # m: the foot lands this far inside the hip, toward the centre line
-SPEED_TRIM_GAIN = 0.0101       # m of placement trim per m/s of speed error, per step
-SPEED_TRIM_MAX = 0.15
-PLACE_BACK_SPEED = 3.0       # m/s above which the full place_back applies
-DRIFT_FILTER = 2.0            # 1/s: low-pass of the sideways speed (about a stride)
-TURN_PLACE_GAIN = 1.0         # m: outward placement per g of centripetal acceleration
-LATERAL_GAIN = 0.1            # s: extra sideways placement per m/s of sideways speed error
-PLACEMENT_LIMIT = 0.6         # the hip-to-heel distance on the ground is at most this share of the leg
-HIP_YAW_LIMIT = 0.4           # rad
-HIP_YAW_HEADROOM = 0.95       # share of the rotation axis's torque limit the roll is reduced to keep within
-ACCEL_MARGIN = 0.231            # m/s: the speed command is at most this above the current speed
-TABLE_LEAD = 1.0              # the table is looked up this share of the way from the current speed to the ramped command
-TURN_RATE_PER_SPEED = 0.4     # rad/s of heading change per m/s of speed
-HEADING_GAIN = 2.0            # 1/s: heading rate per radian of heading error
-TURN_ACCEL = 1.0              # rad/s^2: the heading rate changes at most this fast
-YAW_ERROR_LIMIT = 0.4         # rad: yaw error the stance hip acts on (limits the yaw change asked of one stance)
-ROLL_FILTER = 0.05
-START_ANKLE_LEAN = 0.20       # rad of ankle dorsiflexion while leaning into the start
-START_KNEE = 0.15             # rad of knee flexion while leaning
-START_PITCH = 0.1             # rad: pelvis pitch the hips hold while leaning
-START_SPEED = 0.6             # m/s: forward COM speed at which the lean turns into the first push-off
-START_TIMEOUT = 1.0           # s after the lean at which the push-off starts whatever the speed
-START_STANCE = 0.3            # s: expected duration of the first (push-off) stance
-SWING_FOLD_MAX = 0.8          # rad: at most this much extra knee flexion of a lagging swing
-GSM_RETRACT = 0.08            # s before the predicted touchdown over which the swung-forward foot is brought back
-IDLE_FORWARD_THIGH = -0.552     # rad: forward angle (from vertical) the idle thigh reaches by the end of stance
-IDLE_UNFOLD = 0.6             # share of the expected stance over which the idle knee unfolds after thrust
-IDLE_UNFOLD_KNEE = 1.15        # rad: idle knee flexion at the end of the unfolding
-IDLE_ANKLE = -0.2
-IDLE_KNEE_MIN = 0.6           # rad: idle knee flexion of a slow (starting) runner
-IDLE_KNEE_PER_SPEED = 0.403    # rad per m/s: the idle knee folds more the faster the run
-IDLE_PITCH_GAIN = 4.0         # idle hip extension per radian of trunk pitch error, in flight
-IDLE_PITCH_DAMP = 0.3         # ... per rad/s of pitch rate
-IDLE_ABDUCTION = 0.15
-IDLE_ADDUCTION = -0.0573
-FF_MAX = 12.0                 # rad/s: cap on a target's rate used as feed-forward
-ARM_ABDUCTION = 0.2           # rad: the arms are held this far out from hanging
-ARM_OFFSET = 0.1              # gamma_0 of eq. 5 (rad, forward)
-ELBOW_BASE = 1.3              # rad: running elbow flexion
-ELBOW_SWING = 0.3             # extra elbow flexion per radian of forward arm swing

@@ -13,12 +13,11 @@ will still turn once opened, and opens when that is what the somersault has left
 spin back).
 
 The take-off and landing settings per character, direction and strength come from
-``rigs/tuned/somersaults_<character>.json``, written by ``scripts/calibrate_somersaults.py``
+``sim_core/tuned/tables/somersaults_<character>.json``, written by ``scripts/calibrate_somersaults.py``
 (a cross-entropy search over whole simulated somersaults, scored off the simulation).
 """
 from __future__ import annotations
 
-import json
 import math
 
 import numpy as np
@@ -26,13 +25,15 @@ import numpy as np
 from sim_core.ballistics import time_to_fall_to
 from sim_core.control.balance import Balance
 from sim_core.control.behaviour import register
-from sim_core.control.leap import AIRBORNE_HEIGHT, TUNED_DIR, Landing, balance_after_landing, leap_assess, run_strength
+from sim_core.control.leap import AIRBORNE_HEIGHT, Landing, balance_after_landing, leap_assess, run_strength
 from sim_core.control.sequencer import Sequence, Step
 from sim_core.control.takeoff import takeoff_steps
 from sim_core.control.tumble import FlightRotation, Tumble, position_inertia, rotation_to_come
 from sim_core.control.tuned import uncalibrated
 from sim_core.analysis import feet_above_surface
 from sim_core.schema import Parameter, Schema
+from sim_core.tuned import TableType, keyed, load, register as register_table
+from sim_core.tuned.settings import SkillSchema
 
 DIRECTIONS = ("backward", "forward")
 TUCK = 2                    # the tumble's position code
@@ -58,16 +59,60 @@ FLIGHT_STEP_PARAMETER = Parameter(
 
 
 def load_table(character: str) -> dict:
-    path = TUNED_DIR / f"somersaults_{character}.json"
-    return json.loads(path.read_text()) if path.exists() else {"somersaults": []}
+    """The character's somersault table (no rows if there is none)."""
+    return load("somersaults", character) or {"somersaults": []}
+
+
+def somersault_row(table: dict, direction: str, strength: str) -> dict | None:
+    """The row of the direction and strength (keyed), or None."""
+    return keyed(table["somersaults"], direction=direction, strength=strength)
 
 
 def calibrated(character: str, direction: str, strength: str) -> dict | None:
     """The calibrated somersault of this character, direction and strength, or None."""
-    for entry in load_table(character)["somersaults"]:
-        if entry["direction"] == direction and entry["strength"] == strength:
-            return entry
-    return None
+    return somersault_row(load_table(character), direction, strength)
+
+
+SOMERSAULT_SETTINGS = Schema(
+    Parameter("crouch_height", "m", 0.55, 0.42, 0.9, "pelvis height of the crouch (low_level only)"),
+    Parameter("crouch_pitch", "rad", 0.8, -0.3, 1.5, "torso pitch in the crouch (low_level only)"),
+    Parameter("com_offset", "m", -0.08, -0.2, 0.2,
+              "COM ahead (+) of or behind (-) the middle of the feet in the crouch; leaning, the thrust "
+              "starts once the COM has moved that far (low_level only)"),
+    Parameter("thrust_lean", "m", 0.0, -0.1, 0.1,
+              "COM ahead (+) of or behind (-) the middle of the feet along the thrust's extension (low_level only)"),
+    Parameter("liftoff_hip", "rad", 1.5, -2.0, 2.0,
+              "hip extension (+, backward spin) or flexion (-, forward spin) at lift-off (low_level only)"),
+    Parameter("arm_swing", "rad", 3.0, -1.0, 3.2, "arm swing forward and up during the thrust (low_level only)"),
+    Parameter("thrust_damping", "1", 0.4, 0.1, 1.0,
+              "share of the stiffened leg servos' damping kept in the thrust; less extends faster (low_level only)"),
+    Parameter("tuck_stiffness", "1", 3.0, 1.0, 4.0,
+              "gain factor of the hip, knee and spine servos for the snap into the tuck (low_level only)"),
+    Parameter("tuck_time", "s", TUCK_MOVE, 0.05, 0.4,
+              "duration of the servo move into the tuck; shorter closes it sooner and spins faster earlier "
+              "(low_level only)"),
+    Parameter("tuck_damping", "1", 0.0, 0.0, 8.0,
+              "damping factor of the hip, knee and spine servos in the move into the tuck; 0 = tuck_stiffness "
+              "x 2 (overdamped, slow to close); lighter closes the tuck sooner (low_level only)"),
+    FLIGHT_STEP_PARAMETER,
+    Parameter("landing_lean", "rad", 0.4, -0.5, 1.0,
+              "the body opens to land this far short of the full turn (whole-body angle at touchdown; "
+              "the landing's ground force turns the rest) (low_level only)"),
+    Parameter("open_time", "s", 0.1, 0.03, 0.4, "time to open from the tuck, in the opening prediction (low_level only)"),
+    Parameter("open_blend", "s", 0.1, 0.0, 0.3,
+              "the joints move from the tuck to the landing's targets over this time (low_level only)"),
+    Parameter("landing_knee_flexion", "rad", 0.8, 0.3, 1.4, "knee bend held for touchdown (low_level only)"),
+    Parameter("foot_delta", "m", -0.15, -0.3, 0.3, "landing: foot servo delta (low_level only)"),
+    Parameter("foot_lead_time", "s", 0.1, 0.0, 0.6,
+              "landing: the feet land this many seconds of horizontal COM travel ahead of the COM (low_level only)"),
+    Parameter("spin_placement", "s/m", 0.25, 0.0, 0.5,
+              "landing: feet placed this factor x (angular momentum / mass) against the spin (low_level only)"),
+)
+SOMERSAULTS_TABLE = register_table(TableType(
+    "somersaults", SOMERSAULT_SETTINGS,
+    lambda body: ((f"{kind} {e['direction']} {e['strength']}", e["settings"]) for kind in ("somersaults", "not_found")
+                  for e in body.get(kind, [])),
+    (somersault_row,)))
 
 
 @register
@@ -75,43 +120,12 @@ class Somersault(Sequence):
     name = "somersault"
     summary = "Standing tuck somersault, backward or forward: crouch, leap with spin, tuck, open, land, balance (Wooten §8.4-8.5)."
     default_duration = 5.0
-    schema = Schema(
+    settings_schema = SOMERSAULT_SETTINGS
+    schema = SkillSchema(
         Parameter("direction", "1", 1.0, 0.0, 1.0, "0 = backward somersault, 1 = forward somersault"),
         Parameter("low_level", "bool", 0.0, 0.0, 1.0,
                   "1 = use the take-off and landing settings below instead of the calibrated ones"),
-        Parameter("crouch_height", "m", 0.55, 0.42, 0.9, "pelvis height of the crouch (low_level only)"),
-        Parameter("crouch_pitch", "rad", 0.8, -0.3, 1.5, "torso pitch in the crouch (low_level only)"),
-        Parameter("com_offset", "m", -0.08, -0.2, 0.2,
-                  "COM ahead (+) of or behind (-) the middle of the feet in the crouch; leaning, the thrust "
-                  "starts once the COM has moved that far (low_level only)"),
-        Parameter("thrust_lean", "m", 0.0, -0.1, 0.1,
-                  "COM ahead (+) of or behind (-) the middle of the feet along the thrust's extension (low_level only)"),
-        Parameter("liftoff_hip", "rad", 1.5, -2.0, 2.0,
-                  "hip extension (+, backward spin) or flexion (-, forward spin) at lift-off (low_level only)"),
-        Parameter("arm_swing", "rad", 3.0, -1.0, 3.2, "arm swing forward and up during the thrust (low_level only)"),
-        Parameter("thrust_damping", "1", 0.4, 0.1, 1.0,
-                  "share of the stiffened leg servos' damping kept in the thrust; less extends faster (low_level only)"),
-        Parameter("tuck_stiffness", "1", 3.0, 1.0, 4.0,
-                  "gain factor of the hip, knee and spine servos for the snap into the tuck (low_level only)"),
-        Parameter("tuck_time", "s", TUCK_MOVE, 0.05, 0.4,
-                  "duration of the servo move into the tuck; shorter closes it sooner and spins faster earlier "
-                  "(low_level only)"),
-        Parameter("tuck_damping", "1", 0.0, 0.0, 8.0,
-                  "damping factor of the hip, knee and spine servos in the move into the tuck; 0 = tuck_stiffness "
-                  "x 2 (overdamped, slow to close); lighter closes the tuck sooner (low_level only)"),
-        FLIGHT_STEP_PARAMETER,
-        Parameter("landing_lean", "rad", 0.4, -0.5, 1.0,
-                  "the body opens to land this far short of the full turn (whole-body angle at touchdown; "
-                  "the landing's ground force turns the rest) (low_level only)"),
-        Parameter("open_time", "s", 0.1, 0.03, 0.4, "time to open from the tuck, in the opening prediction (low_level only)"),
-        Parameter("open_blend", "s", 0.1, 0.0, 0.3,
-                  "the joints move from the tuck to the landing's targets over this time (low_level only)"),
-        Parameter("landing_knee_flexion", "rad", 0.8, 0.3, 1.4, "knee bend held for touchdown (low_level only)"),
-        Parameter("foot_delta", "m", -0.15, -0.3, 0.3, "landing: foot servo delta (low_level only)"),
-        Parameter("foot_lead_time", "s", 0.1, 0.0, 0.6,
-                  "landing: the feet land this many seconds of horizontal COM travel ahead of the COM (low_level only)"),
-        Parameter("spin_placement", "s/m", 0.25, 0.0, 0.5,
-                  "landing: feet placed this factor x (angular momentum / mass) against the spin (low_level only)"),
+        settings=SOMERSAULT_SETTINGS,
     )
 
     @property

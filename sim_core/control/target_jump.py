@@ -17,7 +17,7 @@ pattern search then walks the best balanced trial to the target).
 Each trial is judged by what the simulation did: the middle of the feet at touchdown, the time
 the feet were off the ground, and whether the jump ended balanced. The final run repeats the
 best trial's settings - the same simulation - so its outcome is the plan's. Plans for the
-usual targets are kept as data (rigs/tuned/jump_targets_<character>.json, written by
+usual targets are kept as data (sim_core/tuned/tables/jump_targets_<character>.json, written by
 scripts/plan_jumps.py); any other request is planned when it is run (``plan_trials`` trials,
 about half a second each). A raised target gets a box under it; a target below the start
 (``target_z`` < 0) puts the character on a box with the ground that far below, and
@@ -27,7 +27,6 @@ about half a second each). A raised target gets a box under it; a target below t
 from __future__ import annotations
 
 import dataclasses
-import json
 import math
 import sys
 from pathlib import Path
@@ -37,11 +36,11 @@ import numpy as np
 from sim_core.analysis import feet_above_surface, surface_under_points
 from sim_core.ballistics import GRAVITY
 from sim_core.control.behaviour import register
-from sim_core.control.leap import (AIRBORNE_HEIGHT, TUNED_DIR, Leap, leap_assess, load_mapping, run_strength,
+from sim_core.control.leap import (AIRBORNE_HEIGHT, LEAP_SETTINGS, Leap, leap_assess, load_mapping, run_strength,
                                   vertical_key)
-from sim_core.control.tuned import write_table
 from sim_core.errors import ParameterError
 from sim_core.schema import Parameter, Schema
+from sim_core.tuned import TableType, load, register as register_table, save, table_path
 
 # where the COM is, relative to the middle of the feet, at take-off and at touchdown of a broad
 # jump (measured on the man's calibrated 1.0 m jump; used only for the path estimate)
@@ -428,18 +427,29 @@ def _stable_seed(target, air_time: float, windup_time: float) -> int:
     return seed
 
 
+def plan_row(table: dict, request: dict) -> dict | None:
+    """The plan stored for this very request (keyed: same_request), or None."""
+    return next((plan for plan in table["plans"] if same_request(plan["request"], request)), None)
+
+
+JUMP_TARGETS_TABLE = register_table(TableType(
+    "jump_targets", LEAP_SETTINGS,
+    lambda body: ((f"plan {k} {p['request']}", p["settings"]) for k, p in enumerate(body["plans"])),
+    (plan_row,)))
+
+
 def plans_path(character: str) -> Path:
-    return TUNED_DIR / f"jump_targets_{character}.json"
+    return table_path("jump_targets", character)
 
 
 def stored_plans(character: str) -> list[dict]:
-    """Every plan stored for ``character`` (none if its file does not exist yet)."""
-    path = plans_path(character)
-    return json.loads(path.read_text())["plans"] if path.exists() else []
+    """Every plan stored for ``character`` (none if its table does not exist yet)."""
+    table = load("jump_targets", character)
+    return table["plans"] if table is not None else []
 
 
 def stored_plan(character: str, request: dict) -> dict | None:
-    return next((plan for plan in stored_plans(character) if same_request(plan["request"], request)), None)
+    return plan_row({"plans": stored_plans(character)}, request)
 
 
 REQUEST_KEYS = ("target_x", "target_y", "target_z", "obstacle_height", "air_time", "windup_time")
@@ -452,12 +462,13 @@ def same_request(a: dict, b: dict) -> bool:
 
 
 def store_plan(character: str, request: dict, plan: dict, script: str) -> None:
-    """Keep a plan (found or not) in rigs/tuned/jump_targets_<character>.json, replacing the one
-    for the same request."""
+    """Keep a plan (found or not) in the character's jump_targets table, replacing the one for the
+    same request."""
     stored = [p for p in stored_plans(character) if not same_request(p["request"], request)]
     stored.append({"request": request, **plan})
     stored.sort(key=lambda p: tuple(p["request"].get(k, 0.0) for k in REQUEST_KEYS))
-    write_table(plans_path(character), {"character": character, "script": script, "plans": stored})
+    save("jump_targets", character, {"script": script, "plans": stored},
+         strengths=sorted({p["request"].get("strength", "human") for p in stored}))
 
 
 def _side(y: float) -> int:
@@ -510,6 +521,9 @@ class JumpToTarget(Leap):
     summary = ("Jump so that the feet land on a target point, with a given air time and wind-up time "
                "(Ooi 2015), by the leap and landing controllers; the settings are planned by simulation.")
     default_duration = 5.0
+    # its tuned settings are a plan's (the jump_targets table's rows, LEAP_SETTINGS): chosen by planning for
+    # the request, not set by hand
+    settings_schema = Schema()
     schema = Schema(
         Parameter("target_x", "m", 1.0, -2.5, 2.5, "landing point of the middle of the feet, forward of "
                   "the middle of the feet at the start"),

@@ -1,21 +1,11 @@
-"""Tables of calibrated settings in rigs/tuned (written by the calibration scripts, read by the
-skills): a table is written whole or not at all, and a skill that has no calibrated row for the
-character and strength is refused with what the calibration measured."""
+"""A calibration's bookkeeping (what a search keeps, which settings it varies, how a skill with no
+calibrated row is refused); the tables themselves are read and written by the one store,
+sim_core.tuned."""
 from __future__ import annotations
 
 import argparse
-import json
-import os
-from pathlib import Path
 
 from sim_core.errors import ParameterError
-
-
-def write_table(path: Path, table: dict) -> None:
-    """Write ``table`` as JSON to ``path`` through a temporary file: never a half-written table."""
-    tmp = path.with_suffix(".tmp")
-    tmp.write_text(json.dumps(table, indent=1) + "\n")
-    os.replace(tmp, path)
 
 
 def names_option(parser, space, example: tuple) -> None:

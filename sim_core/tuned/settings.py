@@ -1,0 +1,32 @@
+"""A behaviour's two schemas in one validator: the animator's parameters (what a person sets: the
+panel, ``describe``, the README's tables) and the tuned settings (what a search sets and a table
+stores; the panel folds them into a closed sub-panel). ``--set`` and a request may still set a tuned
+setting by its name - the one name it has in the schema, the table and the code."""
+from __future__ import annotations
+
+import dataclasses
+
+from sim_core.schema import Schema
+
+
+class SkillSchema(Schema):
+    """``parameters`` are the animator's; ``settings`` the tuned settings' schema. Validation
+    accepts both (a run's parameter dict holds both, the settings at their defaults unless set)."""
+
+    def __init__(self, *parameters, settings: Schema):
+        super().__init__(*parameters)
+        self.settings = settings
+        clash = sorted(set(self.by_name) & set(settings.by_name))
+        if clash:
+            raise ValueError(f"{', '.join(clash)}: both an animator parameter and a tuned setting")
+        self.by_name = {**self.by_name, **settings.by_name}
+
+    def defaults(self) -> dict[str, float]:
+        return {**super().defaults(), **self.settings.defaults()}
+
+
+def with_defaults(ranges: Schema, values: dict) -> Schema:
+    """``ranges`` with the defaults taken from ``values`` (a table's row: data), for the settings
+    whose default is a calibrated or hand-tuned number; the others keep theirs."""
+    return Schema(*(dataclasses.replace(p, default=float(values[p.name])) if p.name in values else p
+                    for p in ranges.parameters))

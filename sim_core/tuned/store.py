@@ -1,0 +1,167 @@
+"""The one store of calibrated tables: every number a search or a hand tuning produced is read from
+here and written here, never pasted into code (HOUSE.md "data vs code").
+
+A table is one JSON file ``<skill>_<character>.json`` in the package data folder
+``sim_core/tuned/tables`` (found with importlib.resources, so it travels with the package)::
+
+    {"schema_version": 1, "skill": "handspring", "character": "man", "strengths": ["human", "unlimited"],
+     ...the skill's own sections (rows, columns, records)...}
+
+Each skill declares its row type (a :class:`TableType`): the settings schema its rows are checked
+against and where in the file its rows are. Loading checks the header and every row; saving checks
+the same and writes the file whole through a temporary file and a rename, so a reader never sees a
+half-written table. JSON floats round-trip exactly (``repr``), so a stored row reproduces bit for bit.
+"""
+from __future__ import annotations
+
+import json
+import os
+import tempfile
+from dataclasses import dataclass
+from importlib import resources
+from pathlib import Path
+from typing import Callable, Iterable
+
+from sim_core.errors import ParameterError
+from sim_core.schema import Schema
+
+SCHEMA_VERSION = 1              # the layout of a table file; a file of another version is refused
+HEADER = ("schema_version", "skill", "character", "strengths")
+STRENGTHS = ("human", "unlimited")
+# the folder of the tables: package data of sim_core (a test may point it at a temporary folder)
+DIRECTORY = Path(str(resources.files("sim_core.tuned") / "tables"))
+
+
+class TableError(ParameterError):
+    """A table file that is not what its skill's row type says: wrong version, unknown or
+    out-of-range setting, missing header field. The message is one line naming the file and value."""
+
+
+@dataclass(frozen=True)
+class TableType:
+    """What a skill's table holds. ``settings``: the schema of the tuned settings its rows set
+    (units, ranges, help; the same names the behaviour reads). ``rows(body)``: the settings rows
+    of a table body, as (where, {setting: value}) pairs - the check reads every row through it.
+    ``lookup``: the skill's function(s) that pick a row from a table body for a request (nearest,
+    interpolated, keyed); the behaviour calls them, and their docstrings say how."""
+    skill: str
+    settings: Schema
+    rows: Callable[[dict], Iterable[tuple[str, dict]]]
+    lookup: tuple[Callable, ...]
+
+    def describe_lookup(self) -> str:
+        """How the skill picks a row: the first sentence of each lookup's docstring."""
+        return "; ".join(f"{f.__name__}: " + (f.__doc__ or "").strip().split(". ")[0].replace("\n", " ").replace("    ", "")
+                         for f in self.lookup)
+
+
+_TYPES: dict[str, TableType] = {}
+
+
+def register(table_type: TableType) -> TableType:
+    """Declare a skill's row type (at import of the skill's module)."""
+    _TYPES[table_type.skill] = table_type
+    return table_type
+
+
+def keyed(rows: list[dict], **key) -> dict | None:
+    """The first row whose fields equal ``key`` (e.g. direction="backward", strength="human"), or
+    None: the lookup of a table keyed by the request."""
+    return next((row for row in rows if all(row.get(k) == v for k, v in key.items())), None)
+
+
+def table_type(skill: str) -> TableType:
+    try:
+        return _TYPES[skill]
+    except KeyError:
+        raise TableError(f"no row type is declared for tables of skill {skill!r}; declared: "
+                         f"{', '.join(sorted(_TYPES)) or 'none'}") from None
+
+
+def table_path(skill: str, character: str) -> Path:
+    return DIRECTORY / f"{skill}_{character}.json"
+
+
+def exists(skill: str, character: str) -> bool:
+    return table_path(skill, character).exists()
+
+
+def load(skill: str, character: str) -> dict | None:
+    """The checked body of ``<skill>_<character>.json`` (every section but the header), or None
+    when there is no such table."""
+    path = table_path(skill, character)
+    try:
+        text = path.read_text()
+    except FileNotFoundError:
+        return None
+    try:
+        data = json.loads(text)
+    except json.JSONDecodeError as error:
+        raise TableError(f"{path.name}: not valid JSON ({error})") from None
+    return check(path.name, skill, character, data)
+
+
+def save(skill: str, character: str, body: dict, strengths: Iterable[str]) -> Path:
+    """Check ``body`` against the skill's row type and write it whole (temporary file, then
+    rename) as ``<skill>_<character>.json``; returns the path."""
+    data = {"schema_version": SCHEMA_VERSION, "skill": skill, "character": character,
+            "strengths": list(strengths), **{k: v for k, v in body.items() if k not in HEADER}}
+    path = table_path(skill, character)
+    check(path.name, skill, character, data)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=path.stem, suffix=".tmp")
+    try:
+        with os.fdopen(fd, "w") as f:
+            f.write(dumps(data))
+        os.replace(tmp, path)
+    except BaseException:
+        Path(tmp).unlink(missing_ok=True)
+        raise
+    return path
+
+
+def delete(skill: str, character: str) -> None:
+    """Remove a table (a calibration that must run against none, e.g. the landing's)."""
+    table_path(skill, character).unlink(missing_ok=True)
+
+
+def dumps(data: dict) -> str:
+    """The file text of a table: one layout for every table, so load-then-save is byte-stable."""
+    return json.dumps(data, indent=1) + "\n"
+
+
+def check(name: str, skill: str, character: str, data: dict) -> dict:
+    """``data`` (a whole file) checked: header, then every row against the skill's settings
+    schema; returns the body. Refusals are one line naming the file and the bad value."""
+    version = data.get("schema_version")
+    if version != SCHEMA_VERSION:
+        raise TableError(f"{name}: schema_version={version!r}, this sim_core reads version {SCHEMA_VERSION}")
+    for key, want in (("skill", skill), ("character", character)):
+        if data.get(key) != want:
+            raise TableError(f"{name}: {key}={data.get(key)!r}, expected {want!r}")
+    strengths = data.get("strengths")
+    if not isinstance(strengths, list) or any(s not in STRENGTHS for s in strengths):
+        raise TableError(f"{name}: strengths={strengths!r} must be a list of {', '.join(STRENGTHS)}")
+    body = {k: v for k, v in data.items() if k not in HEADER}
+    check_rows(name, skill, body)
+    return body
+
+
+def check_rows(name: str, skill: str, body: dict) -> None:
+    """Every settings row of a table body (a file's, or a candidate a tuner passes to a run) against
+    the skill's settings schema."""
+    kind = table_type(skill)
+    for where, row in kind.rows(body):
+        check_row(name, where, kind.settings, row)
+
+
+def check_row(name: str, where: str, settings: Schema, row: dict) -> None:
+    """One row: every setting known to the schema and within its range."""
+    for setting, value in row.items():
+        parameter = settings.by_name.get(setting)
+        if parameter is None:
+            raise TableError(f"{name} {where}: unknown setting {setting!r}; known: {', '.join(settings.by_name)}")
+        try:
+            parameter.validate(value)
+        except ParameterError as error:
+            raise TableError(f"{name} {where}: {error}") from None
