@@ -1,4 +1,4 @@
-"""Rewrite the parameter tables in README.md from the behaviour schemas (the single source):
+"""Rewrite the parameter tables in docs/skills/*.md from the behaviour schemas (the single source):
 
     python scripts/readme_schemas.py
 
@@ -16,16 +16,18 @@ from sim_core.control.behaviour import available_behaviours, behaviour_class  # 
 
 
 def main() -> int:
-    readme = ROOT / "README.md"
-    text = readme.read_text()
+    docs = sorted((ROOT / "docs" / "skills").glob("*.md"))
+    texts = {path: path.read_text() for path in docs}
     for name in available_behaviours():
         block = f"<!-- schema:{name} -->\n{schema_markdown(behaviour_class(name))}\n<!-- /schema:{name} -->"
         pattern = re.compile(rf"<!-- schema:{name} -->\n(?:.*?\n)?<!-- /schema:{name} -->", re.S)
-        if pattern.search(text):
-            text = pattern.sub(lambda _: block, text)
-        else:
-            print(f"README has no table for {name}; add '<!-- schema:{name} -->' and '<!-- /schema:{name} -->'")
-    readme.write_text(text)
+        found = [path for path, text in texts.items() if pattern.search(text)]
+        for path in found:
+            texts[path] = pattern.sub(lambda _: block, texts[path])
+        if not found:
+            print(f"docs/skills has no table for {name}; add '<!-- schema:{name} -->' and '<!-- /schema:{name} -->'")
+    for path, text in texts.items():
+        path.write_text(text)
     return 0
 
 
