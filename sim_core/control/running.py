@@ -43,11 +43,10 @@ import numpy as np
 from sim_core.ballistics import GRAVITY, time_to_fall_to
 from sim_core.control.behaviour import Behaviour, ControlContext, register
 from sim_core.control.running_leg import RunnerLeg
-from sim_core.control.running_path import (PathFollower, circle_path, figure_eight_path, parse_points,
-                                           turn_path, validate_path)
+from sim_core.control.running_path import (MAX_POINTS, PathFollower, circle_path, figure_eight_path, turn_path,
+                                           validate_path)
 from sim_core.control.servo import hermite_scalar
-from sim_core.errors import ParameterError
-from sim_core.schema import Parameter, Schema
+from sim_core.schema import Choice, Parameter, Points, Schema
 
 TUNED_DIR = Path(__file__).resolve().parents[2] / "rigs" / "tuned"
 TUNED_NAMES = ("ground_speed_matching", "stance_pitch", "thrust_time", "ankle_extension", "knee_extension")
@@ -68,6 +67,7 @@ SCHEDULED_CONSTANTS = {
 
 # states of the active leg (Hodgins 1995 Fig. 3)
 FLIGHT, LOADING, HEEL, HEEL_TOE, TOE, UNLOADING, START = range(7)
+COURSES = ("straight", "turn", "figure_eight", "circle")     # built-in paths, by the course codes 0-3 (_path_for)
 STATE_NAMES = ("flight", "loading", "heel", "heel_toe", "toe", "unloading", "start")
 
 CONTACT_HEIGHT = 0.004      # m: a foot contact sphere this close to the ground touches it
@@ -148,37 +148,27 @@ def _tuned_parameter(name, unit, minimum, maximum, help_text) -> Parameter:
                      special=TUNED)
 
 
-class RunningSchema(Schema):
-    """The numeric parameters, plus ``path``: a list of [x, y] points in metres (on the CLI
-    ``--set path="x,y; x,y; ..."``), validated into a clean polyline or refused as degenerate."""
-
-    def validate(self, values: dict) -> dict:
-        values = dict(values)
-        path = values.pop("path", None)
-        result = super().validate(values)
-        if path is not None and not (isinstance(path, (list, tuple)) and len(path) == 0):
-            result["path"] = validate_path(parse_points(path)).tolist()
-        return result
-
-
 @register
 class Running(Behaviour):
     name = "running"
     summary = "Run at 2.5-5 m/s from a stand, facing a direction or along a path (Hodgins et al. 1995)."
     default_duration = 20.0
     control_rate = 200.0
-    schema = RunningSchema(
+    schema = Schema(
         Parameter("speed", "m/s", 3.5, 2.5, 5.0, "desired running speed on the ground plane"),
         Parameter("facing", "rad", 0.0, -math.pi, math.pi,
                   "facing direction to run in (0 = +X, counter-clockwise), used when no path is given"),
-        Parameter("course", "1", 0.0, 0.0, 3.0,
-                  "built-in path: 0 = straight along facing, 1 = turn by turn_angle, 2 = figure eight, 3 = circle"),
+        Choice("course", COURSES, "straight",
+               "built-in path when no path is given: straight along facing, a turn by turn_angle, a figure eight, a circle"),
         Parameter("turn_angle", "rad", math.pi / 2, -math.pi, math.pi, "course 1: angle of the turn (left positive)"),
         Parameter("turn_radius", "m", 20.0, 1.5, 50.0,
                   "course 1-3: radius of the turn, of each loop of the eight, of the circle (at 3.5 m/s a 90-degree "
                   "turn of 10 m is run, an eight of 10 m loops is not: docs/running.md)"),
         Parameter("turn_after", "m", 15.0, 2.0, 200.0, "course 1-3: distance run straight before the turn or the loops"),
         Parameter("lean", "1", 1.0, 0.0, 1.5, "share of the lean into a turn that balances the centripetal force (atan(v^2 / (g r)))"),
+        Points("path", "the path to run along, [x, y] points in metres from the start (in Blender: a curve "
+               "object); given, it replaces the course", clean=lambda points: validate_path(points).tolist(),
+               max_points=MAX_POINTS),
         Parameter("lookahead", "m", 2.5, 0.5, 10.0, "path following: distance along the path of the point the runner heads for"),
         _tuned_parameter("ground_speed_matching", "m", 0.0, 0.3,
                          "tuned: how much further forward the foot swings during flight before it is brought back to touchdown"),
@@ -236,11 +226,6 @@ class Running(Behaviour):
         """Effective values of the tuned parameters left at -1: the table at this speed."""
         for name in self.scheduled:
             self.p[name] = self.table.at(name, speed)
-
-    def check_feasible(self) -> None:
-        p = self.params
-        if abs(p["course"] - round(p["course"])) > 1e-9:
-            raise ParameterError(f"parameter course={p['course']:g} must be a whole number 0, 1, 2 or 3")
 
     @classmethod
     def assess(cls, trajectory) -> tuple[str, dict]:
@@ -694,12 +679,12 @@ def _path_for(p: dict):
     """The polyline a run follows: the user's points, a built-in course, or None (facing)."""
     if "path" in p:
         return np.asarray(p["path"], dtype=float)
-    course = int(round(p["course"]))
-    if course == 1:
+    course = Running.schema.by_name["course"].option(p["course"])
+    if course == "turn":
         return turn_path(p["turn_angle"], p["turn_after"], p["turn_radius"])
-    if course == 2:
+    if course == "figure_eight":
         return figure_eight_path(p["turn_radius"], p["turn_after"])
-    if course == 3:
+    if course == "circle":
         return circle_path(p["turn_radius"], p["turn_after"])
     return None
 

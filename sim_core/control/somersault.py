@@ -32,7 +32,7 @@ from sim_core.control.takeoff import takeoff_steps
 from sim_core.control.tumble import FlightRotation, Tumble, position_inertia, rotation_to_come
 from sim_core.control.tuned import uncalibrated
 from sim_core.analysis import feet_above_surface
-from sim_core.schema import Parameter, Schema
+from sim_core.schema import Choice, Parameter, Schema
 
 DIRECTIONS = ("backward", "forward")
 TUCK = 2                    # the tumble's position code
@@ -76,7 +76,7 @@ class Somersault(Sequence):
     summary = "Standing tuck somersault, backward or forward: crouch, leap with spin, tuck, open, land, balance (Wooten §8.4-8.5)."
     default_duration = 5.0
     schema = Schema(
-        Parameter("direction", "1", 1.0, 0.0, 1.0, "0 = backward somersault, 1 = forward somersault"),
+        Choice("direction", DIRECTIONS, "forward", "the way the somersault turns: backward or forward"),
         Parameter("low_level", "bool", 0.0, 0.0, 1.0,
                   "1 = use the take-off and landing settings below instead of the calibrated ones"),
         Parameter("crouch_height", "m", 0.55, 0.42, 0.9, "pelvis height of the crouch (low_level only)"),
