@@ -22,7 +22,6 @@ from __future__ import annotations
 
 import json
 import math
-from pathlib import Path
 
 import numpy as np
 
@@ -35,9 +34,10 @@ from sim_core.control.measure import SupportGeometry, roll_of
 from sim_core.control.sequencer import Sequence, Step
 from sim_core.control.servo import hermite_scalar
 from sim_core.errors import ParameterError
+from sim_core.resources import rigs_dir
 from sim_core.schema import Parameter, Schema
 
-TUNED_DIR = Path(__file__).resolve().parents[2] / "rigs" / "tuned"
+TUNED_DIR = rigs_dir() / "tuned"
 AIRBORNE_HEIGHT = 0.01          # m: every foot site this high above the ground = flight
 TOUCHDOWN_HEIGHT = 0.004        # m: a foot site this low = contact
 VERTICAL_TIMING = (0.10, 0.15, 0.22)     # s to full extension: hip, knee, ankle [W98 §4.1]

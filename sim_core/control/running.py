@@ -36,7 +36,6 @@ from __future__ import annotations
 
 import json
 import math
-from pathlib import Path
 
 import numpy as np
 
@@ -46,9 +45,10 @@ from sim_core.control.running_leg import RunnerLeg
 from sim_core.control.running_path import (MAX_POINTS, PathFollower, circle_path, figure_eight_path, turn_path,
                                            validate_path)
 from sim_core.control.servo import hermite_scalar
+from sim_core.resources import rigs_dir
 from sim_core.schema import Choice, Parameter, Points, Schema
 
-TUNED_DIR = Path(__file__).resolve().parents[2] / "rigs" / "tuned"
+TUNED_DIR = rigs_dir() / "tuned"
 TUNED_NAMES = ("ground_speed_matching", "stance_pitch", "thrust_time", "ankle_extension", "knee_extension")
 TABLE_NAMES = TUNED_NAMES + ("speed_gain", "touchdown_leg", "idle_knee")
 # constants of the stance and swing laws that the table may also schedule over the speed (not user
