@@ -5,9 +5,8 @@ touches bpy (the bake) or writes a file (storing a jump plan) happens on the mai
 the job is done and was not cancelled - a cancelled job has written nothing. No bpy here.
 
 * :class:`SimulationJob` - one run (``simulate.run``), cancelled within 50 control ticks.
-* :class:`PlanningJob` - a jump plan (many trial runs): ``planning.jump.plan_jump`` with its
-  ``cancelled`` hook, or the older ``control.target_jump.plan_jump``, cancelled after the trial
-  in flight.
+* :class:`PlanningJob` - a jump plan (many trial runs of the planner, :class:`Planner`), whose
+  trial in flight is cancelled within 50 control ticks.
 """
 from __future__ import annotations
 
@@ -81,87 +80,86 @@ def cancelled_error() -> type[BaseException]:
     return getattr(errors, "Cancelled", None) or sim("simulate").Cancelled
 
 
-def planning_api():
-    """(plan_jump, store_plan, stored_plan, takes_cancel) of the jump planner: the planning
-    room's (``planning/jump.py``, which takes ``budget`` and ``cancelled``) where it exists,
-    else the older one in ``control/target_jump.py``."""
-    import importlib
-    try:
-        module = importlib.import_module(f"{SIM_CORE}.planning.jump")
-        new = True
-    except ModuleNotFoundError as exc:
-        if not (exc.name or "").startswith(f"{SIM_CORE}.planning"):
-            raise
-        module, new = None, False
-    old = sim("control.target_jump")
+class Planner:
+    """The jump planner of the sim_core in use: the planning room's (``planning/jump.py``: plans
+    take ``budget`` and ``cancelled``; kept in the user's plan store) where it exists, else the
+    older one in ``control/target_jump.py`` (plans kept in the shipped table). One interface for
+    both: ``stored``, ``plan``, ``store``."""
 
-    def pick(name):
-        return getattr(module, name, None) or getattr(old, name)
-    return (module.plan_jump if new else old.plan_jump), pick("store_plan"), pick("stored_plan"), new
+    def __init__(self):
+        import importlib
+        try:
+            self.module = importlib.import_module(f"{SIM_CORE}.planning.jump")
+        except ModuleNotFoundError as exc:
+            if not (exc.name or "").startswith(f"{SIM_CORE}.planning"):
+                raise
+            self.module = None
+        self.old = None if self.module is not None else sim("control.target_jump")
+
+    def stored(self, character: str, params: dict, strength):
+        if self.module is not None:
+            return self.module.planned(character, params, strength)
+        return self.old.stored_plan(character, jump_request(params, strength))
+
+    def plan(self, character: str, params: dict, strength, budget: int, progress, cancelled, executor=None) -> dict:
+        target = tuple(params[k] for k in ("target_x", "target_y", "target_z", "obstacle_height"))
+        if self.module is not None:
+            return self.module.plan_jump(character, target, params["air_time"], params["windup_time"],
+                                         self.module.strength_name(strength), budget, progress=progress,
+                                         cancelled=cancelled, executor=executor)
+        return self.old.plan_jump(character, target, params["air_time"], params["windup_time"], strength,
+                                  trials=budget, progress=progress, cancelled=cancelled)
+
+    def store(self, character: str, params: dict, strength, plan: dict) -> None:
+        if self.module is not None:
+            m = self.module
+            target = tuple(params[k] for k in ("target_x", "target_y", "target_z", "obstacle_height"))
+            m.store_user_plan(character, m.request_of(target, params["air_time"], params["windup_time"],
+                                                      m.strength_name(strength)), plan)
+        else:
+            self.old.store_plan(character, jump_request(params, strength), plan, "blender_addon: Plan Jump")
 
 
 JUMP_REQUEST_KEYS = ("target_x", "target_y", "target_z", "obstacle_height", "air_time", "windup_time")
 
 
 def jump_request(params: dict, strength) -> dict:
-    """The key a jump plan is stored under: the jump_to_target parameters that define the jump,
-    and the strength (as JumpToTarget.request)."""
+    """The key the older planner stores a plan under (as its JumpToTarget.request)."""
     request = {k: float(params[k]) for k in JUMP_REQUEST_KEYS}
     request["strength"] = strength
     return request
 
 
 class PlanningJob(Job):
-    """Plan a jump for ``character`` (a name) to the request's target; ``store()`` (main thread,
-    after a successful finish) writes the plan to the character's plan table."""
+    """Plan a jump of ``character`` (a name) for the jump_to_target ``params`` (validated) in at
+    most ``budget`` trials (default: its plan_trials); ``store()`` (main thread, after a finish
+    that was not cancelled) keeps the plan where Simulate & Bake finds it."""
 
     def __init__(self, character: str, params: dict, strength="human", budget: int | None = None, executor=None):
         super().__init__("sim-athletics-plan")
         self.character, self.params, self.strength = character, dict(params), strength
         self.budget = int(params["plan_trials"] if budget is None else budget)
         self.executor = executor
-        self.request = jump_request(params, strength)
-
-    @property
-    def target(self) -> tuple:
-        p = self.params
-        return (p["target_x"], p["target_y"], p["target_z"], p["obstacle_height"])
+        self.planner = Planner()
 
     def work(self):
-        plan_jump, _, _, new = planning_api()
-        Cancelled = cancelled_error()
-        p = self.params
-        if new:
-            return plan_jump(self.character, self.target, p["air_time"], p["windup_time"], self.strength,
-                             self.budget, progress=self._progress, cancelled=self._cancel.is_set,
-                             executor=self.executor)
-
-        def progress(done, total, best):          # the older planner has no cancel hook: stop it
-            self._progress(done, total, best)     # between trials
-            if self._cancel.is_set():
-                raise Cancelled("jump planning cancelled; nothing was written")
-        plan = plan_jump(self.character, self.target, p["air_time"], p["windup_time"], self.strength,
-                         trials=self.budget, progress=progress)
-        if self._cancel.is_set():
-            raise Cancelled("jump planning cancelled; nothing was written")
-        return plan
+        return self.planner.plan(self.character, self.params, self.strength, self.budget, self._progress,
+                                 self._cancel.is_set, self.executor)
 
     def _progress(self, done: int, total: int, best) -> None:
         self.progress = done / max(total, 1)
         self.status = f"trial {done}/{total}"
-        if isinstance(best, dict) and best.get("landing") is not None:
-            x, y = best["landing"][:2]
-            self.status += f", best landing ({x:.2f}, {y:.2f}) m"
+        landing = best.get("landing") if isinstance(best, dict) else None
+        if landing is not None:
+            self.status += f", best landing ({landing[0]:.2f}, {landing[1]:.2f}) m"
 
-    def store(self, script: str = "blender_addon: Plan Jump") -> None:
-        """Write the finished plan (main thread only; never after a cancel)."""
+    def store(self) -> None:
+        """Keep the finished plan (main thread only; never after a cancel)."""
         if self.cancelled or self.result is None:
             raise RuntimeError("a cancelled or unfinished plan is never stored")
-        _, store_plan, _, _ = planning_api()
-        store_plan(self.character, self.request, self.result, script)
+        self.planner.store(self.character, self.params, self.strength, self.result)
 
 
 def stored_jump_plan(character: str, params: dict, strength):
-    """The plan stored for this jump, or None (then Simulate & Bake would have to plan it)."""
-    _, _, stored_plan, _ = planning_api()
-    return stored_plan(character, jump_request(params, strength))
+    """The plan stored for this jump, or None (then it needs planning first)."""
+    return Planner().stored(character, params, strength)
