@@ -54,6 +54,21 @@ class _ModalJob:
     _timer = None
     busy_text = "Sim Athletics: working… (Esc to cancel)"
 
+    def invoke(self, context, event):
+        if bpy.app.background or context.window is None:
+            return self.execute(context)
+        try:
+            job = self._new_job(context)
+        except _user_errors() as exc:
+            self.report({"ERROR"}, str(exc))
+            return {"CANCELLED"}
+        if job is None:
+            return self._nothing_to_do()
+        return self._start_modal(context, job)
+
+    def _nothing_to_do(self):
+        return {"FINISHED"}
+
     def _start_modal(self, context, job):
         self._job = job.start()
         wm = context.window_manager
@@ -153,18 +168,12 @@ class SIMATHLETICS_OT_simulate_bake(_ModalJob, bpy.types.Operator):
             self.report({"ERROR"}, str(exc))
             return {"CANCELLED"}
 
-    # -- interactive: worker thread + modal timer, ESC cancels
+    # -- interactive: worker thread + modal timer, ESC cancels (_ModalJob.invoke)
 
-    def invoke(self, context, event):
-        if bpy.app.background or context.window is None:
-            return self.execute(context)
-        try:
-            obj, request, s = self._prepare(context)
-        except _user_errors() as exc:
-            self.report({"ERROR"}, str(exc))
-            return {"CANCELLED"}
+    def _new_job(self, context):
+        obj, request, s = self._prepare(context)
         self._rig_name, self._s = obj.name, s
-        return self._start_modal(context, SimulationJob(request))
+        return SimulationJob(request)
 
     def _finish_job(self, context, job):
         obj = bpy.data.objects.get(self._rig_name)
@@ -228,17 +237,20 @@ class SIMATHLETICS_OT_plan_jump(_ModalJob, bpy.types.Operator):
     strength: StringProperty(name="Strength", description="'human' or 'unlimited' (unset: the panel's)")
     armature: StringProperty(name="Armature", description="Rig whose character jumps (unset: the active one)")
 
-    def job(self, context):
+    def _new_job(self, context):
         """A PlanningJob for the panel's jump (not started), or None if a plan is stored already.
         Validates everything first (raises the user errors)."""
         return planning_job(context, **overrides(self))
 
+    def _nothing_to_do(self):
+        self.report({"INFO"}, "this jump is planned already (a stored plan)")
+        return {"FINISHED"}
+
     def execute(self, context):
         try:
-            job = self.job(context)
+            job = self._new_job(context)
             if job is None:
-                self.report({"INFO"}, "this jump is planned already (a stored plan)")
-                return {"FINISHED"}
+                return self._nothing_to_do()
             job.start().wait()
             if job.error is not None:
                 raise job.error
@@ -246,19 +258,6 @@ class SIMATHLETICS_OT_plan_jump(_ModalJob, bpy.types.Operator):
         except _user_errors() as exc:
             self.report({"ERROR"}, str(exc))
             return {"CANCELLED"}
-
-    def invoke(self, context, event):
-        if bpy.app.background or context.window is None:
-            return self.execute(context)
-        try:
-            job = self.job(context)
-        except _user_errors() as exc:
-            self.report({"ERROR"}, str(exc))
-            return {"CANCELLED"}
-        if job is None:
-            self.report({"INFO"}, "this jump is planned already (a stored plan)")
-            return {"FINISHED"}
-        return self._start_modal(context, job)
 
     def _finish_job(self, context, job):
         job.store()

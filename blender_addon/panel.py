@@ -72,27 +72,26 @@ class SIMATHLETICS_PT_panel(bpy.types.Panel):
             _draw_result(layout.box(), json.loads(target[rig.RESULT_KEY]))
 
 
-class SIMATHLETICS_PT_request(bpy.types.Panel):
-    """The run request: what a run is asked besides the behaviour's parameters."""
-    bl_label = "Run request"
-    bl_idname = "SIMATHLETICS_PT_request"
+class _SubPanel:
     bl_parent_id = SIMATHLETICS_PT_panel.bl_idname
     bl_space_type = "VIEW_3D"
     bl_region_type = "UI"
     bl_category = CATEGORY
+
+
+class SIMATHLETICS_PT_request(_SubPanel, bpy.types.Panel):
+    """The run request: what a run is asked besides the behaviour's parameters."""
+    bl_label = "Run request"
+    bl_idname = "SIMATHLETICS_PT_request"
 
     def draw(self, context):
         draw_schema(self.layout, context.scene.sim_athletics.request, props.request_schema())
 
 
-class SIMATHLETICS_PT_tuned(bpy.types.Panel):
+class SIMATHLETICS_PT_tuned(_SubPanel, bpy.types.Panel):
     """Tuned settings (what a search sets; the tables hold them): folded away, for experts."""
     bl_label = "Tuned settings"
     bl_idname = "SIMATHLETICS_PT_tuned"
-    bl_parent_id = SIMATHLETICS_PT_panel.bl_idname
-    bl_space_type = "VIEW_3D"
-    bl_region_type = "UI"
-    bl_category = CATEGORY
     bl_options = {"DEFAULT_CLOSED"}
 
     @classmethod

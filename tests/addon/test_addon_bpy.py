@@ -13,6 +13,8 @@ from blender_addon.core import bake_math as bm  # noqa: E402
 from blender_addon.core.axes import SIM_TO_BLENDER  # noqa: E402
 from sim_core.simulate import RunRequest, run  # noqa: E402
 
+from .panel_layout import draw  # noqa: E402
+
 FPS = 24                    # Blender's default: frames fall between the simulation's samples
 KNEE_BEND = dict(pelvis_height=0.52, move_start=0.3, move_time=1.2, hold_time=0.5)
 
@@ -251,34 +253,6 @@ def test_second_bake_gets_a_unique_name_and_stashes_the_first(empty_scene):
     assert stashed == ["balance defaults"] and arm.animation_data.action.name == "balance defaults.001"
 
 
-class _Layout:
-    """Stands in for a UI layout: records what a panel draws and checks every property exists."""
-
-    def __init__(self, log):
-        self.log = log
-
-    def box(self):
-        return self
-
-    def row(self, **kw):
-        return self
-
-    def column(self, **kw):
-        return self
-
-    def prop(self, data, name, **kw):
-        assert name in data.bl_rna.properties, f"{data} has no property {name!r}"
-        self.log.append(("prop", name))
-
-    def operator(self, idname, **kw):
-        module, name = idname.split(".")
-        assert hasattr(getattr(bpy.ops, module), name), idname
-        self.log.append(("operator", idname))
-
-    def label(self, text="", **kw):
-        self.log.append(("label", text))
-
-
 def test_panel_draws_the_schema_and_the_last_result(empty_scene):
     from sim_core.control.behaviour import behaviour_class
     from blender_addon import api
@@ -287,13 +261,11 @@ def test_panel_draws_the_schema_and_the_last_result(empty_scene):
     api.add_character(context, "man")
     _, trajectory = api.simulate_and_bake(context, behaviour="balance", duration=0.3)
     context.scene.sim_athletics.behaviour = "balance"
-    log = []
-    panel = type("P", (), {"layout": _Layout(log)})()
-    SIMATHLETICS_PT_panel.draw(panel, context)
-    drawn = [name for kind, name in log if kind == "prop"]
+    log = draw(SIMATHLETICS_PT_panel, context)
+    drawn = [entry[1] for entry in log if entry[0] == "prop"]
     assert [p.name for p in behaviour_class("balance").schema.parameters] == \
-        [n for n in drawn if n not in ("character", "behaviour", "strength", "duration", "start_frame", "fit_scene_range")]
-    labels = [text for kind, text in log if kind == "label"]
+        [n for n in drawn if n not in ("character", "behaviour", "start_frame", "fit_scene_range")]
+    labels = [entry[1] for entry in log if entry[0] == "label"]
     assert f"Outcome: {trajectory.meta['outcome']}" in labels
     assert any(text.startswith("min pelvis height:") for text in labels)
     assert ("operator", "sim_athletics.simulate_bake") in log

@@ -4,8 +4,6 @@ sub-panel, a curve as a running path, and Plan Jump's job cancelled within a sec
 written."""
 import json
 import time
-from types import SimpleNamespace
-
 import numpy as np
 import pytest
 
@@ -15,40 +13,7 @@ from blender_addon import operators, panel, props, rig  # noqa: E402
 from sim_core.control.behaviour import behaviour_class  # noqa: E402
 from sim_core.schema import Parameter, Schema  # noqa: E402
 
-
-class Layout:
-    """Records what a panel draws (and checks every property exists): ("prop", name, kind)."""
-
-    def __init__(self, log):
-        self.log = log
-
-    def box(self):
-        self.log.append(("box",))
-        return self
-
-    def row(self, **kw):
-        return self
-
-    def column(self, **kw):
-        return self
-
-    def prop(self, data, name, **kw):
-        assert name in data.bl_rna.properties, f"{data} has no property {name!r}"
-        self.log.append(("prop", name, data.bl_rna.properties[name].type))
-
-    def operator(self, idname, **kw):
-        module, name = idname.split(".")
-        assert hasattr(getattr(bpy.ops, module), name), idname
-        self.log.append(("operator", idname))
-
-    def label(self, text="", **kw):
-        self.log.append(("label", text))
-
-
-def draw(panel_class, context):
-    log = []
-    panel_class.draw(SimpleNamespace(layout=Layout(log)), context)
-    return log
+from .panel_layout import draw  # noqa: E402
 
 
 def test_choices_are_drop_downs_of_their_option_names(empty_scene):
