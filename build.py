@@ -23,8 +23,7 @@ import sys
 import zipfile
 from pathlib import Path
 
-ROOT = Path(__file__).resolve().parent
-sys.path.insert(0, str(ROOT))
+ROOT = Path(__file__).resolve().parent          # on sys.path already: `python build.py` runs from here
 
 THESIS_CHARACTERS = {
     "man": "Wooten 1998, Appendix A.1 (SD/FAST file), Tables 3.1 and 3.3",
@@ -53,7 +52,7 @@ def build_skin(spec) -> None:
     """rigs/<name>.glb: armature + one watertight skin; fails if a segment's skin mass is off
     by more than the tolerance (issue 3: 15 %)."""
     try:
-        from blender_addon.rigbuild import MASS_TOLERANCE, build_rig
+        from tools.rigbuild import MASS_TOLERANCE, build_rig
     except ImportError as exc:
         raise SystemExit(f"build.py rigs: {exc.name} is missing; pip install -e '.[rigs]' "
                          "(or use --no-skin)") from None
@@ -73,7 +72,7 @@ def build_skin(spec) -> None:
 
 ADDON_ID = "sim_athletics"
 ADDON_SOURCE = ROOT / "blender_addon"
-ADDON_EXCLUDE = {"rigbuild", "__pycache__"}         # build-time only
+ADDON_EXCLUDE = {"__pycache__"}         # build-time code lives in tools/, outside the add-on
 # Wheels of sim_core's dependencies (and theirs), Linux x86-64, CPython 3.11 (Blender 3.4-5.0).
 # scipy 1.15 is the newest that accepts the numpy 1.23 of the legacy bundle; Blender 4.2+ ships
 # its own numpy, so the extension bundles everything but numpy.
@@ -111,20 +110,27 @@ def fetch_wheels(requirements: list[str], dest: Path, platform: str = "linux-x64
 
 
 def stage_addon(stage: Path) -> None:
-    """<stage>/: the add-on's modules, lib/sim_core and lib/rigs (specs + skins)."""
+    """<stage>/: the add-on's modules, with sim_core as its own subpackage (<stage>/sim_core,
+    imported relatively: nothing goes on sys.path) carrying the rigs (specs + skins) and their
+    tuned tables in sim_core/rigs/, where sim_core.resources finds them."""
     if stage.exists():
         shutil.rmtree(stage)
     ignore = shutil.ignore_patterns("__pycache__", "*.pyc", "*.tmp")
     shutil.copytree(ADDON_SOURCE, stage, ignore=lambda d, names: [n for n in names if n in ADDON_EXCLUDE]
                     + list(ignore(d, names)))
-    shutil.copytree(ROOT / "sim_core", stage / "lib" / "sim_core", ignore=ignore)
-    (stage / "lib" / "rigs").mkdir(parents=True)
+    shutil.copytree(ROOT / "sim_core", stage / "sim_core", ignore=ignore)
+    rigs = stage / "sim_core" / "rigs"
+    if rigs.exists():
+        shutil.rmtree(rigs)
+    rigs.mkdir(parents=True)
     for name in THESIS_CHARACTERS:
         for suffix in (".json", ".glb"):
             src = ROOT / "rigs" / f"{name}{suffix}"
             if not src.exists():
                 raise SystemExit(f"{src.relative_to(ROOT)} is missing; run 'python build.py rigs' first")
-            shutil.copy2(src, stage / "lib" / "rigs" / src.name)
+            shutil.copy2(src, rigs / src.name)
+    if (ROOT / "rigs" / "tuned").is_dir():
+        shutil.copytree(ROOT / "rigs" / "tuned", rigs / "tuned", ignore=ignore)
 
 
 def zip_tree(root: Path, out: Path, prefix: str = "") -> None:
@@ -165,7 +171,8 @@ def build_addon() -> list[Path]:
     wheels = fetch_wheels(BUNDLED, ROOT / "build" / "wheels")
     legacy_wheels = fetch_wheels(BUNDLED + [LEGACY_NUMPY], ROOT / "build" / "wheels-legacy")
 
-    # legacy add-on (Blender 3.4-4.1): sim_athletics/ with the wheels unpacked into vendor/
+    # legacy add-on (Blender 3.4-4.1): sim_athletics/ with the wheels unpacked into vendor/, which
+    # the add-on appends to sys.path (after Blender's own packages: core/vendor.py)
     stage = ROOT / "build" / "legacy" / ADDON_ID
     stage_addon(stage)
     for wheel in legacy_wheels:

@@ -13,9 +13,11 @@ bl_info = {
     "category": "Animation",
 }
 
-from . import paths  # noqa: E402
+from pathlib import Path  # noqa: E402
 
-paths.ensure()
+from .core.vendor import add_vendored  # noqa: E402
+
+add_vendored(Path(__file__).resolve().parent / "vendor")     # the legacy zip's wheels, after Blender's own
 
 
 def register():

@@ -5,7 +5,7 @@
     action, trajectory = api.simulate_and_bake(bpy.context, behaviour="balance",
                                                params={"pelvis_height": 0.52}, duration=3)
 
-Errors a user can cause raise ``sim_core.errors.SimAthleticsError`` (bad parameter, unknown
+Errors a user can cause raise sim_core's ``errors.SimAthleticsError`` (bad parameter, unknown
 behaviour or character) or ``rig.RigError`` (no rig, not a rig) with a one-line message, before
 anything is written.
 """
@@ -15,14 +15,14 @@ import sys
 from typing import Callable
 
 from . import bake, rig, scenery
+from .core.simcore import sim
 
 
-def parse_params(behaviour: str, params) -> dict[str, float]:
+def parse_params(behaviour: str, params) -> dict:
     """A dict, a list of ``"name=value"`` strings, or one text ``"name=value name=value"``
     (commas or spaces), validated by the behaviour's schema: the full parameter dict, with the
-    defaults filled in."""
-    from sim_core.control.behaviour import behaviour_class
-    schema = behaviour_class(behaviour).schema
+    defaults filled in (a choice by its option name or number)."""
+    schema = sim("control.behaviour").behaviour_class(behaviour).schema
     if params is None:
         return schema.validate({})
     if isinstance(params, str):
@@ -33,25 +33,47 @@ def parse_params(behaviour: str, params) -> dict[str, float]:
     return schema.validate(dict(params))
 
 
-def make_request(character: str, behaviour: str, params, duration: float | None, strength: str = "human"):
-    """A validated RunRequest (raises before anything runs or is written)."""
-    from sim_core.simulate import RunRequest
-    request = RunRequest(behaviour=behaviour, character=character,
-                         params=parse_params(behaviour, params), duration=duration, strength=strength)
-    request.validated()
-    return request
+def make_request(character: str, behaviour: str, params, duration: float | None = None, strength: str | None = None,
+                 request: dict | None = None, pushes=()):
+    """A validated RunRequest (raises before anything runs or is written). ``request``: values
+    of the request schema (sim_core.request: start height and velocity, slope, backpack, push,
+    strength, duration); ``duration`` and ``strength`` override its own."""
+    values = dict(request or {})
+    if duration is not None:
+        values["duration"] = duration
+    if strength is not None:
+        values.pop("strength_factor", None)
+        values["strength"] = strength
+    run_request = sim("request").build_request(behaviour, character, parse_params(behaviour, params), values, pushes)
+    run_request.validated()
+    return run_request
 
 
 def target_from_object(obj, target) -> dict[str, float]:
     """The jump target parameters (target_x, target_y, target_z) for a scene object (an Empty, a
     box...): its origin, in the rig's start frame, from the middle of the character's feet."""
     import numpy as np
-    from sim_core.character.spec import load_character
-    from sim_core.control.target_jump import target_params
-    from .axes import BLENDER_TO_SIM
+    from .core.axes import BLENDER_TO_SIM
     local = obj.matrix_world.inverted() @ target.matrix_world.translation
     point = BLENDER_TO_SIM @ np.array(local[:3], dtype=float)
-    return {k: round(v, 4) for k, v in target_params(load_character(str(obj[rig.CHARACTER_KEY])), point).items()}
+    character = sim("character.spec").load_character(str(obj[rig.CHARACTER_KEY]))
+    return {k: round(v, 4) for k, v in sim("control.target_jump").target_params(character, point).items()}
+
+
+def path_from_curve(context, obj, curve) -> list[list[float]]:
+    """A path knob's points from a curve object: its evaluated points (modifiers and bevel-free
+    resolution applied, as the viewport shows it), in the rig ``obj``'s start frame."""
+    import numpy as np
+    from .core.values import path_in_rig_frame
+    evaluated = curve.evaluated_get(context.evaluated_depsgraph_get())
+    mesh = evaluated.to_mesh()
+    try:
+        co = np.empty(3 * len(mesh.vertices), dtype=np.float64)
+        mesh.vertices.foreach_get("co", co)
+    finally:
+        evaluated.to_mesh_clear()
+    world = co.reshape(-1, 3) @ np.array(curve.matrix_world)[:3, :3].T + np.array(curve.matrix_world)[:3, 3]
+    return path_in_rig_frame(world, np.array(obj.matrix_world))
 
 
 def add_character(context, character: str = "man", location=None):
@@ -70,23 +92,24 @@ def console_progress(fraction: float) -> None:
 
 def simulate_and_bake(context, *, behaviour: str, params=None, duration: float | None = None,
                       armature: str | None = None, start_frame: int | None = None,
-                      fit_scene_range: bool = False, target: str | None = None, strength: str = "human",
+                      fit_scene_range: bool = False, target: str | None = None, strength: str | None = None,
+                      request: dict | None = None, pushes=(),
                       progress: Callable[[float], None] | None = None,
                       cancelled: Callable[[], bool] | None = None):
     """Simulate ``behaviour`` on the rig's character and bake it as a new action on the rig.
     Keys land on every frame of the scene's frame rate from ``start_frame`` (default: the scene's
     start). ``target``: name of a scene object whose origin sets a jump's target parameters.
     Returns (action, trajectory). Nothing is written if validation, the run or the bake fails or
-    is cancelled. ``strength``: "human" (the rig's torque limits) or "unlimited"."""
+    is cancelled. ``strength``: "human" (the rig's torque limits) or "unlimited"; ``request``:
+    the request schema's values (a drop height, a push, a slope...), ``pushes`` further pushes."""
     import bpy
-    from sim_core.simulate import run
     obj = rig.find_rig(context, armature)
     if target:
         if target not in bpy.data.objects:
             raise rig.RigError(f"target object {target!r} is not in this file")
         params = {**parse_params(behaviour, params), **target_from_object(obj, bpy.data.objects[target])}
-    request = make_request(str(obj[rig.CHARACTER_KEY]), behaviour, params, duration, strength)
-    trajectory = run(request, progress=progress, cancelled=cancelled)
+    run_request = make_request(str(obj[rig.CHARACTER_KEY]), behaviour, params, duration, strength, request, pushes)
+    trajectory = sim("simulate").run(run_request, progress=progress, cancelled=cancelled)
     action = bake_result(context, obj, trajectory, start_frame, fit_scene_range)
     return action, trajectory
 

@@ -13,17 +13,26 @@ import bpy
 import numpy as np
 
 from . import compat
-from .bake_math import BoneChannels, bake_channels
+from .core.bake_math import BoneChannels, bake_channels
+from .core.simcore import sim
 from .rig import RESULT_KEY, RigError, bone_parents, rest_matrices
 
 ACTION_KEY = "sim_athletics"
 MAX_NAME = 60
 
 
-def action_name(behaviour: str, params: dict, defaults: dict) -> str:
+def action_name(behaviour: str, params: dict, schema) -> str:
     """``balance pelvis_height=0.52 move_start=0.3``: the behaviour and the parameters that differ
-    from their defaults (the full set is stored on the action). Blender makes it unique."""
-    changed = [f"{k}={v:g}" for k, v in params.items() if defaults.get(k) != v]
+    from their defaults (a choice by its option's name, a path as ``path``; the full set is
+    stored on the action). Blender makes it unique."""
+    defaults = schema.defaults()
+
+    def shown(k, v) -> str:
+        knob = schema.by_name.get(k)
+        if knob is not None and knob.kind == "points":
+            return k
+        return f"{k}={knob.option(v)}" if knob is not None and knob.kind == "choice" else f"{k}={v:g}"
+    changed = [shown(k, v) for k, v in params.items() if defaults.get(k) != v]
     name = " ".join([behaviour] + changed) if changed else f"{behaviour} defaults"
     return name if len(name) <= MAX_NAME else name[: MAX_NAME - 1] + "~"
 
@@ -72,9 +81,8 @@ def write_action(obj: bpy.types.Object, ch: BoneChannels, name: str, meta: dict)
 def bake_trajectory(obj: bpy.types.Object, trajectory, fps: float, start_frame: int = 1,
                     duration: float | None = None) -> bpy.types.Action:
     """Trajectory -> a new action on ``obj`` named after the behaviour and its parameters."""
-    from sim_core.control.behaviour import behaviour_class
     meta = trajectory.meta
-    defaults = behaviour_class(meta["behaviour"]).schema.defaults()
+    schema = sim("control.behaviour").behaviour_class(meta["behaviour"]).schema
     ch = channels_for(obj, trajectory, fps, start_frame, duration)
     info = {
         "character": meta.get("character"), "behaviour": meta["behaviour"], "params": meta.get("params", {}),
@@ -82,7 +90,7 @@ def bake_trajectory(obj: bpy.types.Object, trajectory, fps: float, start_frame: 
         "fps": fps, "start_frame": start_frame, "frames": len(ch.frames),
         "frame_end": float(ch.frames[-1]), "duration": float(ch.frames[-1] - ch.frames[0]) / fps,
     }
-    return write_action(obj, ch, action_name(meta["behaviour"], meta.get("params", {}), defaults), info)
+    return write_action(obj, ch, action_name(meta["behaviour"], meta.get("params", {}), schema), info)
 
 
 def scene_fps(scene) -> float:

@@ -37,19 +37,20 @@ def _package():
         return importlib.import_module(__package__)
     here = Path(__file__).resolve().parent
     if str(here.parent) not in sys.path:
-        sys.path.insert(0, str(here.parent))
+        sys.path.append(str(here.parent))      # after Blender's own packages: only finds the add-on
     return importlib.import_module(here.name)
 
 
-def parse_args(argv: list[str]) -> argparse.Namespace:
+def parse_args(argv: list[str], request_arguments=None) -> argparse.Namespace:
+    """``request_arguments``: sim_core.request.add_request_arguments (the run request's flags,
+    as ``python -m sim_core simulate`` has them: --duration, --strength, --slope, --push...)."""
     p = _Parser(prog=PROG, description="Simulate a behaviour and bake it into a .blend")
     p.add_argument("--character", default="man", help="character name (rigs/<name>.json); default man")
     p.add_argument("--behaviour", required=True, help="behaviour name, e.g. balance")
     p.add_argument("--set", dest="assignments", action="append", default=[], metavar="NAME=VALUE",
                    help="behaviour parameter (repeatable), SI units: metres, radians, seconds")
-    p.add_argument("--duration", type=float, default=None, help="seconds to simulate (default: the behaviour's)")
-    p.add_argument("--strength", choices=("human", "unlimited"), default="human",
-                   help="joint torque limits: the rig's human ones (default) or none, as Wooten ran")
+    if request_arguments is not None:
+        request_arguments(p, strength_choices=True)
     p.add_argument("--fps", type=int, default=None, help="scene frame rate (default: the file's)")
     p.add_argument("--start-frame", type=int, default=1, help="frame of the first key (default 1)")
     p.add_argument("--out", required=True, help="the .blend file to write")
@@ -75,11 +76,13 @@ def run(argv: list[str]) -> int:
     pkg = _package()
     api = importlib.import_module(pkg.__name__ + ".api")
     rig = importlib.import_module(pkg.__name__ + ".rig")
-    from sim_core.errors import SimAthleticsError
+    sim = importlib.import_module(pkg.__name__ + ".core.simcore").sim
+    SimAthleticsError = sim("errors").SimAthleticsError
     try:
-        args = parse_args(argv)
+        args = parse_args(argv, sim("request").add_request_arguments)
         params = api.parse_params(args.behaviour, args.assignments)
-        api.make_request(args.character, args.behaviour, params, args.duration, args.strength)   # validate all first
+        request, pushes = sim("request").request_values(args)
+        api.make_request(args.character, args.behaviour, params, request=request, pushes=pushes)   # validate all first
     except (BatchError, SimAthleticsError) as exc:
         print(f"{PROG}: error: {exc}", file=sys.stderr)
         return 2
@@ -95,8 +98,8 @@ def run(argv: list[str]) -> int:
     try:
         arm = api.add_character(context, args.character)
         action, trajectory = api.simulate_and_bake(
-            context, armature=arm.name, behaviour=args.behaviour, params=params, duration=args.duration,
-            start_frame=args.start_frame, fit_scene_range=True, strength=args.strength, progress=api.console_progress)
+            context, armature=arm.name, behaviour=args.behaviour, params=params, request=request, pushes=pushes,
+            start_frame=args.start_frame, fit_scene_range=True, progress=api.console_progress)
     except (SimAthleticsError, rig.RigError) as exc:
         print(f"{PROG}: error: {exc}", file=sys.stderr)
         return 2

@@ -1,5 +1,14 @@
-"""The "Sim Athletics" tab of the 3D viewport's sidebar. Parameters are drawn from the
-behaviour's schema through the generated property group: nothing here is per-behaviour."""
+"""The "Sim Athletics" tab of the 3D viewport's sidebar, drawn from the schemas through the
+generated property groups: nothing here is per-behaviour.
+
+* the main panel: character, behaviour, the behaviour's animator parameters (``schema``; a
+  choice is a drop-down, a path a curve object, a group a box under its heading), Simulate &
+  Bake, Plan Jump for a jump to a target, and the last result;
+* "Run request" (open): the request schema - duration, strength, start height and velocity,
+  slope, backpack, a push;
+* "Tuned settings" (closed by default): the behaviour's ``settings_schema`` - what a search
+  sets - where the behaviour has one.
+"""
 from __future__ import annotations
 
 import json
@@ -8,16 +17,29 @@ import bpy
 
 from . import props, rig
 
+CATEGORY = "Sim Athletics"
+
+
+def draw_schema(layout, group, schema) -> None:
+    """Every knob of ``schema`` from ``group``: loose ones in a column, a Group in a box under
+    its heading."""
+    for heading, knobs in schema.groups:
+        col = layout.column(align=True)
+        if heading is not None:
+            col = layout.box().column(align=True)
+            col.label(text=heading)
+        for p in knobs:
+            col.prop(group, p.name)
+
 
 class SIMATHLETICS_PT_panel(bpy.types.Panel):
     bl_label = "Sim Athletics"
     bl_idname = "SIMATHLETICS_PT_panel"
     bl_space_type = "VIEW_3D"
     bl_region_type = "UI"
-    bl_category = "Sim Athletics"
+    bl_category = CATEGORY
 
     def draw(self, context):
-        from sim_core.control.behaviour import behaviour_class
         layout = self.layout
         settings = context.scene.sim_athletics
 
@@ -33,24 +55,54 @@ class SIMATHLETICS_PT_panel(bpy.types.Panel):
 
         layout.prop(settings, "behaviour")
         if settings.behaviour:
-            cls = behaviour_class(settings.behaviour)
-            group = props.params_group(settings, settings.behaviour)
             if props.takes_target(settings.behaviour):
                 layout.prop(settings, "target_object")
-            col = layout.column(align=True)
-            for p in cls.schema.parameters:
-                col.prop(group, p.name)
+            draw_schema(layout, props.params_group(settings, settings.behaviour),
+                        props.behaviour_schema(settings.behaviour))
         col = layout.column(align=True)
-        col.prop(settings, "strength")
-        col.prop(settings, "duration")
         col.prop(settings, "start_frame")
         scene = context.scene
         col.label(text=f"Frame rate: {scene.render.fps / scene.render.fps_base:g} fps (scene)")
         col.prop(settings, "fit_scene_range")
+        if settings.behaviour == "jump_to_target":
+            layout.operator("sim_athletics.plan_jump", icon="VIEWZOOM")
         layout.operator("sim_athletics.simulate_bake", icon="PLAY")
 
         if target is not None and target.get(rig.RESULT_KEY):
             _draw_result(layout.box(), json.loads(target[rig.RESULT_KEY]))
+
+
+class _SubPanel:
+    bl_parent_id = SIMATHLETICS_PT_panel.bl_idname
+    bl_space_type = "VIEW_3D"
+    bl_region_type = "UI"
+    bl_category = CATEGORY
+
+
+class SIMATHLETICS_PT_request(_SubPanel, bpy.types.Panel):
+    """The run request: what a run is asked besides the behaviour's parameters."""
+    bl_label = "Run request"
+    bl_idname = "SIMATHLETICS_PT_request"
+
+    def draw(self, context):
+        draw_schema(self.layout, context.scene.sim_athletics.request, props.request_schema())
+
+
+class SIMATHLETICS_PT_tuned(_SubPanel, bpy.types.Panel):
+    """Tuned settings (what a search sets; the tables hold them): folded away, for experts."""
+    bl_label = "Tuned settings"
+    bl_idname = "SIMATHLETICS_PT_tuned"
+    bl_options = {"DEFAULT_CLOSED"}
+
+    @classmethod
+    def poll(cls, context):
+        settings = context.scene.sim_athletics
+        return bool(settings.behaviour) and props.tuned_group(settings, settings.behaviour) is not None
+
+    def draw(self, context):
+        settings = context.scene.sim_athletics
+        draw_schema(self.layout, props.tuned_group(settings, settings.behaviour),
+                    props.settings_schema(settings.behaviour))
 
 
 def _target(context):
@@ -75,4 +127,4 @@ def _draw_result(box, result: dict) -> None:
         col.label(text=f"{name.replace('_', ' ')}: {text}")
 
 
-classes = (SIMATHLETICS_PT_panel,)
+classes = (SIMATHLETICS_PT_panel, SIMATHLETICS_PT_request, SIMATHLETICS_PT_tuned)

@@ -1,12 +1,17 @@
-"""Scene settings of the panel, with one property group per behaviour generated from its
-parameter schema: no behaviour has UI code of its own (Rigify's rig types are the model).
+"""Scene settings of the panel, generated from the schemas: one property group per behaviour for
+its animator parameters (``schema``), one per behaviour for its tuned settings
+(``settings_schema``, where the behaviour has one), and one for the run request (the request
+schema: start height and speed, slope, backpack, push, strength, duration). No behaviour has UI
+code of its own (Rigify's rig types are the model).
 
-    unit 'rad'  -> FloatProperty(subtype ANGLE): stored in radians, shown in degrees
-    unit 'm'    -> FloatProperty(subtype DISTANCE, unit LENGTH)
-    unit 's'    -> FloatProperty(unit TIME_ABSOLUTE) where Blender has it
-    unit 'bool' -> BoolProperty
-    unit 'count' -> IntProperty (a whole number)
-    other units -> FloatProperty labelled with the unit
+    number, unit 'rad'  -> FloatProperty(subtype ANGLE): stored in radians, shown in degrees
+    number, unit 'm'    -> FloatProperty(subtype DISTANCE, unit LENGTH)
+    number, unit 's'    -> FloatProperty(unit TIME_ABSOLUTE) where Blender has it
+    bool                -> BoolProperty
+    count               -> IntProperty (a whole number)
+    choice              -> EnumProperty (a drop-down of the option names)
+    points              -> PointerProperty to a curve object (its evaluated points are the path)
+    other units         -> FloatProperty labelled with the unit
 Hard limits come from the schema's range (widened to admit a documented special value, such as
 ``pelvis_height = 0``: standing); the schema still validates before anything runs.
 """
@@ -14,6 +19,9 @@ from __future__ import annotations
 
 import bpy
 from bpy.props import BoolProperty, EnumProperty, FloatProperty, IntProperty, PointerProperty
+
+from .core.simcore import sim
+from .core.values import as_typed, knob_value  # noqa: F401 - as_typed is part of this module's API
 
 _generated: list[type] = []
 
@@ -23,7 +31,12 @@ def label(name: str) -> str:
 
 
 def tooltip(p) -> str:
-    text = f"{p.help[:1].upper()}{p.help[1:]}. Allowed: [{p.minimum:g}, {p.maximum:g}] {p.unit}"
+    text = f"{p.help[:1].upper()}{p.help[1:]}"
+    if p.kind == "choice":
+        return f"{text}. Options: {', '.join(p.options)}"
+    if p.kind == "points":
+        return f"{text}. A curve object: its evaluated points, in the rig's frame"
+    text += f". Allowed: [{p.minimum:g}, {p.maximum:g}] {p.unit}"
     if p.special is not None:
         text += f" (or {p.special:g})"
     return text
@@ -37,8 +50,18 @@ def _has_unit(unit: str) -> bool:
         return False
 
 
+def _is_curve(self, obj) -> bool:
+    return obj.type == "CURVE"
+
+
 def parameter_property(p):
-    """A bpy property for one schema Parameter."""
+    """A bpy property for one schema knob."""
+    if p.kind == "choice":
+        descriptions = p.descriptions or tuple(label(o) for o in p.options)
+        items = [(o, label(o), d) for o, d in zip(p.options, descriptions)]
+        return EnumProperty(name=label(p.name), description=tooltip(p), items=items, default=p.default_option)
+    if p.kind == "points":
+        return PointerProperty(name=label(p.name), description=tooltip(p), type=bpy.types.Object, poll=_is_curve)
     if p.unit == "bool":
         return BoolProperty(name=label(p.name), description=tooltip(p), default=bool(p.default))
     lo, hi = p.minimum, p.maximum
@@ -63,65 +86,104 @@ def parameter_property(p):
 TARGET_PARAMETERS = ("target_x", "target_y", "target_z")
 
 
+def behaviour_schema(behaviour: str):
+    return sim("control.behaviour").behaviour_class(behaviour).schema
+
+
+def settings_schema(behaviour: str):
+    """The behaviour's tuned settings (what a search sets), or None if it declares none."""
+    return getattr(sim("control.behaviour").behaviour_class(behaviour), "settings_schema", None)
+
+
+def request_schema():
+    return sim("request").REQUEST_SCHEMA
+
+
 def takes_target(behaviour: str) -> bool:
     """True when the behaviour's schema has a target point (a jump to a target)."""
-    from sim_core.control.behaviour import behaviour_class
-    names = {p.name for p in behaviour_class(behaviour).schema.parameters}
-    return all(n in names for n in TARGET_PARAMETERS)
+    return all(n in behaviour_schema(behaviour).by_name for n in TARGET_PARAMETERS)
+
+
+def _attr(prefix: str, behaviour: str) -> str:
+    return prefix + "".join(c if c.isalnum() else "_" for c in behaviour)
 
 
 def group_attr(behaviour: str) -> str:
-    return "params_" + "".join(c if c.isalnum() else "_" for c in behaviour)
+    return _attr("params_", behaviour)
+
+
+def settings_attr(behaviour: str) -> str:
+    return _attr("tuned_", behaviour)
 
 
 def params_group(settings, behaviour: str):
     return getattr(settings, group_attr(behaviour))
 
 
-def as_typed(value) -> float:
-    """A panel value as the number the user typed: Blender stores floats in single precision
-    (0.2 comes back as 0.20000000298...), so take the shortest decimal that the float32 rounds
-    to. The same request then gives the same run as the CLI, bit for bit."""
-    import numpy as np
-    return float(str(np.float32(value)))
+def tuned_group(settings, behaviour: str):
+    """The panel's tuned-settings group of ``behaviour`` (None if it has no settings schema)."""
+    return getattr(settings, settings_attr(behaviour), None)
 
 
-def panel_params(settings, behaviour: str) -> dict[str, float]:
-    """The panel's parameter values for ``behaviour`` as the schema's dict (bool -> 0/1)."""
-    from sim_core.control.behaviour import behaviour_class
+def _values(group, schema) -> dict:
+    """The panel's values of ``schema``'s knobs, as the CLI would give them (points are left to
+    :func:`panel_paths`: they need the rig's frame)."""
+    return {p.name: knob_value(p, getattr(group, p.name)) for p in schema.parameters if p.kind != "points"}
+
+
+def panel_params(settings, behaviour: str) -> dict:
+    """The panel's parameter values for ``behaviour`` as the CLI would give them (a choice by its
+    option name, bool -> 0/1); the schema validates them with the rest of the request."""
+    return _values(params_group(settings, behaviour), behaviour_schema(behaviour))
+
+
+def panel_paths(settings, behaviour: str) -> dict:
+    """{points knob: curve object} of the ones the panel has a curve for."""
     group = params_group(settings, behaviour)
-    return {p.name: as_typed(getattr(group, p.name)) for p in behaviour_class(behaviour).schema.parameters}
+    return {p.name: getattr(group, p.name) for p in behaviour_schema(behaviour).parameters
+            if p.kind == "points" and getattr(group, p.name) is not None}
 
 
-STRENGTH_ITEMS = [("human", "Human", "Human-plausible joint torque limits (the rig's, with their sources)"),
-                  ("unlimited", "Unlimited", "No joint torque limits, as Wooten's 1998 simulations ran")]
+def panel_settings(settings, behaviour: str) -> dict:
+    """The tuned-settings sub-panel's values of ``behaviour`` ({} if it has none)."""
+    schema, group = settings_schema(behaviour), tuned_group(settings, behaviour)
+    return _values(group, schema) if schema is not None and group is not None else {}
+
+
+def panel_request(settings) -> dict:
+    """The run request's values from the panel (the request schema's knobs)."""
+    return _values(settings.request, request_schema())
+
+
 _ITEMS: dict[str, list] = {}          # enum items must stay referenced while Blender shows them
 
 
 def _behaviour_items(self, context):
-    from sim_core.control.behaviour import available_behaviours, behaviour_class
-    _ITEMS["behaviour"] = [(n, label(n), behaviour_class(n).summary) for n in available_behaviours()]
+    behaviours = sim("control.behaviour")
+    _ITEMS["behaviour"] = [(n, label(n), behaviours.behaviour_class(n).summary) for n in behaviours.available_behaviours()]
     return _ITEMS["behaviour"]
 
 
 def _character_items(self, context):
-    from sim_core.character.spec import available_characters
-    _ITEMS["character"] = [(n, label(n), f"rigs/{n}.json") for n in available_characters()]
+    _ITEMS["character"] = [(n, label(n), f"rigs/{n}.json") for n in sim("character.spec").available_characters()]
     return _ITEMS["character"]
 
 
+def _group_class(name: str, schema) -> type:
+    return type(f"SIMATHLETICS_PG_{name}", (bpy.types.PropertyGroup,),
+                {"__annotations__": {p.name: parameter_property(p) for p in schema.parameters}})
+
+
 def _build_classes() -> list[type]:
-    from sim_core.control.behaviour import available_behaviours, behaviour_class
-    groups = []
+    behaviours = sim("control.behaviour")
+    request = _group_class("request", request_schema())
+    groups = [request]
     annotations = {
         "character": EnumProperty(name="Character", items=_character_items,
                                   description="Character to add (a rig from rigs/)"),
         "behaviour": EnumProperty(name="Behaviour", items=_behaviour_items,
                                   description="Behaviour to simulate"),
-        "strength": EnumProperty(name="Strength", items=STRENGTH_ITEMS, default="human",
-                                 description="Joint torque limits of the run"),
-        "duration": FloatProperty(name="Duration", default=0.0, min=0.0, max=3600.0, precision=2,
-                                  description="Seconds to simulate; 0 = the behaviour's default"),
+        "request": PointerProperty(type=request),
         "start_frame": IntProperty(name="Start frame", default=1,
                                    description="Scene frame of the run's first key"),
         "fit_scene_range": BoolProperty(name="Fit scene range", default=False,
@@ -131,12 +193,16 @@ def _build_classes() -> list[type]:
             description="Object (an Empty, a box...) whose origin sets the target of a jump: it overrides "
                         "the target parameters, measured from the middle of the character's feet"),
     }
-    for name in available_behaviours():
-        schema = behaviour_class(name).schema
-        group = type(f"SIMATHLETICS_PG_{group_attr(name)}", (bpy.types.PropertyGroup,),
-                     {"__annotations__": {p.name: parameter_property(p) for p in schema.parameters}})
+    for name in behaviours.available_behaviours():
+        cls = behaviours.behaviour_class(name)
+        group = _group_class(group_attr(name), cls.schema)
         groups.append(group)
         annotations[group_attr(name)] = PointerProperty(type=group)
+        tuned = getattr(cls, "settings_schema", None)
+        if tuned is not None:
+            group = _group_class(settings_attr(name), tuned)
+            groups.append(group)
+            annotations[settings_attr(name)] = PointerProperty(type=group)
     settings = type("SIMATHLETICS_PG_settings", (bpy.types.PropertyGroup,), {"__annotations__": annotations})
     return groups + [settings]
 

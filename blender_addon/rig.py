@@ -14,7 +14,8 @@ import numpy as np
 from mathutils import Vector
 
 from . import compat
-from .rig_frames import rest_frames
+from .core.rig_frames import rest_frames
+from .core.simcore import sim
 
 CHARACTER_KEY = "sim_athletics_character"
 RIG_KEY = "sim_athletics_rig"
@@ -27,15 +28,13 @@ class RigError(Exception):
 
 
 def rig_path(character: str) -> Path:
-    from sim_core.character.spec import RIGS_DIR
-    return RIGS_DIR / f"{character}.glb"
+    return sim("character.spec").RIGS_DIR / f"{character}.glb"
 
 
 def add_character(context, character: str, location=None) -> bpy.types.Object:
     """Import ``rigs/<character>.glb`` at ``location`` (default: the 3D cursor); return the
     armature object (active and selected). Raises SimAthleticsError for an unknown character."""
-    from sim_core.character.spec import load_character
-    spec = load_character(character)                 # unknown name -> UnknownNameError
+    spec = sim("character.spec").load_character(character)                 # unknown name -> UnknownNameError
     path = rig_path(spec.name)
     if not path.exists():
         raise RigError(f"rig file {path} is missing; run 'python build.py rigs'")
@@ -113,8 +112,8 @@ def find_rig(context, name: str | None = None) -> bpy.types.Object:
 
 def check_rig(obj: bpy.types.Object) -> bpy.types.Object:
     """Raise RigError unless ``obj`` is a Sim Athletics armature whose bones match its spec."""
-    from sim_core.character.spec import load_character
-    from sim_core.errors import SimAthleticsError
+    load_character = sim("character.spec").load_character
+    SimAthleticsError = sim("errors").SimAthleticsError
     if obj.type != "ARMATURE":
         raise RigError(f"{obj.name!r} is a {obj.type.lower()}, not a Sim Athletics armature")
     character = obj.get(CHARACTER_KEY)

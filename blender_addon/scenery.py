@@ -10,7 +10,7 @@ import bpy
 import mujoco
 import numpy as np
 
-from .axes import SIM_TO_BLENDER
+from .core.axes import SIM_TO_BLENDER
 
 PLATFORM_NAME, WATER_NAME, GROUND_NAME = "SimAthletics platform", "SimAthletics water", "SimAthletics ground"
 BOX_NAME = "SimAthletics box {}"

@@ -11,6 +11,7 @@ import math
 import sys
 
 from sim_core.errors import ParameterError, SimAthleticsError
+from sim_core.request import add_request_arguments
 
 EXIT_USAGE = 2
 
@@ -35,32 +36,14 @@ def _finite(text: str, name: str) -> float:
 
 
 def build_request(args):
-    from sim_core.character.model import World
-    from sim_core.perturbation import Push
-    from sim_core.simulate import RunRequest
+    """The RunRequest of ``simulate``'s flags: the behaviour's --set values by its schema, the
+    rest by the request schema (sim_core.request), as the panel and batch bakes do."""
     from sim_core.control.behaviour import behaviour_class
+    from sim_core.request import build_request as request_from_values, request_values
 
     params = behaviour_class(args.behaviour).schema.parse_assignments(args.set or [])
-    slope = math.radians(_finite(args.slope, "--slope"))
-    if not 0.0 <= abs(slope) <= math.radians(60):
-        raise ParameterError(f"--slope={args.slope} degrees is out of range; allowed range is [-60, 60]")
-    backpack = _finite(args.backpack, "--backpack")
-    if not 0.0 <= backpack <= 40.0:
-        raise ParameterError(f"--backpack={backpack:g} kg is out of range; allowed range is [0, 40] kg")
-    world = World(slope=abs(slope), slope_axis=args.slope_axis if slope >= 0 else args.slope_axis.replace("+", "#").replace("-", "+").replace("#", "-"),
-                  extra_mass={"CHEST1": backpack} if backpack else {})
-    strength = args.strength
-    if strength not in ("human", "unlimited"):
-        strength = _finite(strength, "--strength")
-    duration = None if args.duration is None else _finite(args.duration, "--duration")
-    from sim_core.simulate import StartState
-    velocity = tuple(_finite(v, "--start-velocity") for v in args.start_velocity.split(","))
-    if len(velocity) != 3:
-        raise ParameterError(f"--start-velocity {args.start_velocity!r} must be three numbers VX,VY,VZ in m/s")
-    start = StartState(height=_finite(args.start_height, "--start-height"), velocity=velocity)
-    return RunRequest(args.behaviour, args.character, params=params, duration=duration,
-                      pushes=[Push.parse(p) for p in args.push or []], world=world, strength=strength,
-                      start=start)
+    values, pushes = request_values(args)
+    return request_from_values(args.behaviour, args.character, params, values, pushes)
 
 
 def cmd_list(args) -> int:
@@ -77,9 +60,7 @@ def cmd_list(args) -> int:
 
 def schema_markdown(cls) -> str:
     """The parameter table of a behaviour as Markdown (the README's tables are made by this)."""
-    rows = [f"| `{p.name}` | {p.unit} | {p.default:g} | {p.minimum:g} … {p.maximum:g} | {p.help} |"
-            for p in cls.schema.parameters]
-    return "\n".join(["| parameter | unit | default | range | meaning |", "| --- | --- | --- | --- | --- |", *rows])
+    return cls.schema.markdown()
 
 
 def cmd_describe(args) -> int:
@@ -88,8 +69,12 @@ def cmd_describe(args) -> int:
     if args.markdown:
         print(schema_markdown(cls))
         return 0
+    from sim_core.request import REQUEST_SCHEMA
+    settings = getattr(cls, "settings_schema", None)
     print(json.dumps({"behaviour": cls.name, "summary": cls.summary, "default_duration": cls.default_duration,
-                      "parameters": cls.schema.to_json_dict()}, indent=1))
+                      "parameters": cls.schema.to_json_dict(),
+                      "settings": settings.to_json_dict() if settings is not None else [],
+                      "request": REQUEST_SCHEMA.to_json_dict()}, indent=1))
     return 0
 
 
@@ -151,16 +136,7 @@ def parser() -> argparse.ArgumentParser:
     s.add_argument("behaviour")
     s.add_argument("--character", default="man", help="character name (see list) or path to a spec .json")
     s.add_argument("--set", action="append", metavar="NAME=VALUE", help="behaviour parameter (repeatable)")
-    s.add_argument("--duration", help="seconds to simulate (default: the behaviour's)")
-    s.add_argument("--push", action="append", metavar="FORCE@DIR[:START[:DURATION]]",
-                   help="sternum push, e.g. 120@back:1.0:0.25 (N, direction name or degrees, s, s)")
-    s.add_argument("--slope", default="0", help="ground slope in degrees (default 0)")
-    s.add_argument("--slope-axis", default="x+", choices=["x+", "x-", "y+", "y-"],
-                   help="direction in which the ground rises")
-    s.add_argument("--backpack", default="0", help="extra mass in kg on the upper torso (CHEST1)")
-    s.add_argument("--strength", default="human", help="'human' torque limits, 'unlimited', or a factor")
-    s.add_argument("--start-height", default="0", help="start the standing pose this many metres up (drop tests)")
-    s.add_argument("--start-velocity", default="0,0,0", help="start moving at VX,VY,VZ m/s (landing tests)")
+    add_request_arguments(s)
     s.add_argument("--out", help="trajectory file to write (.npz); written only if the run completes")
     s.add_argument("--progress", action="store_true", help="show a progress bar on stderr")
     s.set_defaults(func=cmd_simulate)

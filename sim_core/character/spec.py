@@ -17,8 +17,9 @@ import numpy as np
 from sim_core.character import anthropometry as anthro
 from sim_core.character.sdfast import SdBody, parse_sdfast
 from sim_core.errors import RigFileError, UnknownNameError
+from sim_core.resources import rigs_dir
 
-RIGS_DIR = Path(__file__).resolve().parents[2] / "rigs"
+RIGS_DIR = rigs_dir()
 SPEC_VERSION = 1
 STRENGTH_CHOICES = ("human", "unlimited")
 

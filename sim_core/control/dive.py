@@ -27,10 +27,10 @@ from sim_core.control.leap import THRUST_DAMPING
 from sim_core.control.sequencer import Sequence, Step
 from sim_core.ballistics import GRAVITY, time_to_fall_to
 from sim_core.control.takeoff import SETTINGS, takeoff_steps
-from sim_core.control.tumble import (FlightRotation, Tumble, position_inertia, position_name, position_radius,
+from sim_core.control.tumble import (POSITION_NAMES, FlightRotation, Tumble, position_inertia, position_name, position_radius,
                                     rotation_to_come)
 from sim_core.errors import ParameterError
-from sim_core.schema import Parameter, Schema
+from sim_core.schema import Choice, Parameter, Schema
 from sim_core.tuned import TableType, load, register as register_table
 from sim_core.tuned.settings import SkillSchema
 
@@ -123,12 +123,13 @@ class Dive(Sequence):
     default_duration = 4.0
     settings_schema = DIVE_SETTINGS
     schema = SkillSchema(
-        Parameter("group", "1", 0.0, 0.0, 3.0,
-                  "standing backwards: 0 = inward (somersault towards the platform), 1 = back (away from it); "
-                  "facing the water: 2 = forward, 3 = reverse (somersault back towards the platform)"),
+        Choice("group", GROUPS, "inward", "the dive's group: standing backwards, inward or back; facing the water, "
+               "forward or reverse",
+               ("Standing backwards, somersault towards the platform", "Standing backwards, somersault away from it",
+                "Facing the water, somersault forward", "Facing the water, somersault back towards the platform")),
         Parameter("somersaults", "1", 1.5, 0.5, 3.5, "somersaults before entry (x.5 = head first)"),
         Parameter("twists", "1", 0.0, 0.0, 3.0, "twists (full turns about the long axis), by an arm throw in flight"),
-        Parameter("position", "1", 1.0, 0.0, 2.0, "0 = layout (straight), 1 = pike, 2 = tuck"),
+        Choice("position", POSITION_NAMES[:3], "pike", "body position in flight: layout (straight), pike or tuck"),
         Parameter("platform_height", "m", 10.0, 3.0, 10.0, "platform height above the water"),
         Parameter("low_level", "bool", 0.0, 0.0, 1.0, "1 = run the tuned settings as set (--set crouch_height=...) instead of the calibrated ones"),
         settings=DIVE_SETTINGS,

@@ -42,11 +42,10 @@ import numpy as np
 from sim_core.ballistics import GRAVITY, time_to_fall_to
 from sim_core.control.behaviour import Behaviour, ControlContext, register
 from sim_core.control.running_leg import RunnerLeg
-from sim_core.control.running_path import (PathFollower, circle_path, figure_eight_path, parse_points,
-                                           turn_path, validate_path)
+from sim_core.control.running_path import (MAX_POINTS, PathFollower, circle_path, figure_eight_path, turn_path,
+                                           validate_path)
 from sim_core.control.servo import hermite_scalar
-from sim_core.errors import ParameterError
-from sim_core.schema import Parameter, Schema
+from sim_core.schema import Choice, Parameter, Points, Schema
 from sim_core.tuned import TableType, load, register as register_table
 from sim_core.tuned.settings import SkillSchema, with_defaults
 from sim_core.tuned.store import check_rows
@@ -70,6 +69,7 @@ SCHEDULED_CONSTANTS = {name: (low, high) for name, (_, low, high, _) in SCHEDULE
 
 # states of the active leg (Hodgins 1995 Fig. 3)
 FLIGHT, LOADING, HEEL, HEEL_TOE, TOE, UNLOADING, START = range(7)
+COURSES = ("straight", "turn", "figure_eight", "circle")     # built-in paths, by the course codes 0-3 (_path_for)
 STATE_NAMES = ("flight", "loading", "heel", "heel_toe", "toe", "unloading", "start")
 
 TUNED = -1.0                # the value of a tuned parameter that means "as tuned for the running speed"
@@ -231,18 +231,14 @@ CONSTANT_NAMES = tuple(load("running", "any")["constants"])
 
 
 class RunningSchema(SkillSchema):
-    """The numeric parameters, plus ``path``: a list of [x, y] points in metres (on the CLI
-    ``--set path="x,y; x,y; ..."``), validated into a clean polyline or refused as degenerate;
-    and ``table``: a running table's speeds and columns to run with instead of the stored one (a
-    tuner's candidate, SpeedTable.to_table), checked like a stored table's rows."""
+    """The schema's parameters, plus ``table``: a running table's speeds and columns to run with
+    instead of the stored one (a tuner's candidate, SpeedTable.to_table), checked like a stored
+    table's rows."""
 
     def validate(self, values: dict) -> dict:
         values = dict(values)
-        path = values.pop("path", None)
         table = values.pop("table", None)
         result = super().validate(values)
-        if path is not None and not (isinstance(path, (list, tuple)) and len(path) == 0):
-            result["path"] = validate_path(parse_points(path)).tolist()
         if table is not None:
             check_rows("the table parameter", "running", table)
             result["table"] = table
@@ -260,14 +256,17 @@ class Running(Behaviour):
         Parameter("speed", "m/s", 3.5, 2.5, 5.0, "desired running speed on the ground plane"),
         Parameter("facing", "rad", 0.0, -math.pi, math.pi,
                   "facing direction to run in (0 = +X, counter-clockwise), used when no path is given"),
-        Parameter("course", "1", 0.0, 0.0, 3.0,
-                  "built-in path: 0 = straight along facing, 1 = turn by turn_angle, 2 = figure eight, 3 = circle"),
+        Choice("course", COURSES, "straight",
+               "built-in path when no path is given: straight along facing, a turn by turn_angle, a figure eight, a circle"),
         Parameter("turn_angle", "rad", math.pi / 2, -math.pi, math.pi, "course 1: angle of the turn (left positive)"),
         Parameter("turn_radius", "m", 20.0, 1.5, 50.0,
                   "course 1-3: radius of the turn, of each loop of the eight, of the circle (at 3.5 m/s a 90-degree "
                   "turn of 10 m is run, an eight of 10 m loops is not: docs/running.md)"),
         Parameter("turn_after", "m", 15.0, 2.0, 200.0, "course 1-3: distance run straight before the turn or the loops"),
         Parameter("lean", "1", 1.0, 0.0, 1.5, "share of the lean into a turn that balances the centripetal force (atan(v^2 / (g r)))"),
+        Points("path", "the path to run along, [x, y] points in metres from the start (in Blender: a curve "
+               "object); given, it replaces the course", clean=lambda points: validate_path(points).tolist(),
+               max_points=MAX_POINTS),
         Parameter("lookahead", "m", 2.5, 0.5, 10.0, "path following: distance along the path of the point the runner heads for"),
         Parameter("arm_swing", "1", 0.8, 0.0, 2.0,
                   "k of eq. 5: shoulder swing per radian of the opposite hip's swing"),
@@ -320,11 +319,6 @@ class Running(Behaviour):
         """Effective values of the tuned parameters left at -1: the table at this speed."""
         for name in self.scheduled:
             self.p[name] = self.table.at(name, speed)
-
-    def check_feasible(self) -> None:
-        p = self.params
-        if abs(p["course"] - round(p["course"])) > 1e-9:
-            raise ParameterError(f"parameter course={p['course']:g} must be a whole number 0, 1, 2 or 3")
 
     @classmethod
     def assess(cls, trajectory) -> tuple[str, dict]:
@@ -784,12 +778,12 @@ def _path_for(p: dict):
     """The polyline a run follows: the user's points, a built-in course, or None (facing)."""
     if "path" in p:
         return np.asarray(p["path"], dtype=float)
-    course = int(round(p["course"]))
-    if course == 1:
+    course = Running.schema.by_name["course"].option(p["course"])
+    if course == "turn":
         return turn_path(p["turn_angle"], p["turn_after"], p["turn_radius"])
-    if course == 2:
+    if course == "figure_eight":
         return figure_eight_path(p["turn_radius"], p["turn_after"])
-    if course == 3:
+    if course == "circle":
         return circle_path(p["turn_radius"], p["turn_after"])
     return None
 

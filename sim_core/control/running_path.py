@@ -19,32 +19,9 @@ MAX_POINTS = 10000
 MIN_TURN_RADIUS = 1.5       # m: a corner tighter than this is rounded to it (a runner cannot turn on a spot)
 
 
-def parse_points(value) -> list[list[float]]:
-    """Points from a list of pairs or from text 'x,y; x,y; ...' (the CLI's ``--set path=``)."""
-    if isinstance(value, str):
-        text = value.strip()
-        if not text:
-            raise ParameterError("parameter path is empty; give at least two points 'x,y; x,y' in metres")
-        try:
-            value = [[float(c) for c in item.replace(",", " ").split()] for item in text.split(";") if item.strip()]
-        except ValueError:
-            raise ParameterError(f"parameter path={text!r} is not a list of points 'x,y; x,y; ...' in metres") from None
-    try:
-        array = np.asarray(value, dtype=float)
-    except (TypeError, ValueError):
-        raise ParameterError("parameter path must be a list of [x, y] points in metres") from None
-    if array.ndim != 2 or array.shape[1] != 2:
-        raise ParameterError(f"parameter path must be a list of [x, y] points in metres (got shape {array.shape})")
-    if not np.all(np.isfinite(array)):
-        raise ParameterError("parameter path has a point that is not finite")
-    if len(array) > MAX_POINTS:
-        raise ParameterError(f"parameter path has {len(array)} points; at most {MAX_POINTS} are allowed")
-    return array.tolist()
-
-
 def validate_path(points) -> np.ndarray:
     """Clean a path (merge repeated points) and refuse a degenerate one with a clear message."""
-    array = np.asarray(parse_points(points), dtype=float)
+    array = np.asarray(points, dtype=float)
     if len(array) < 2:
         raise ParameterError(f"parameter path has {len(array)} point(s); a path needs at least 2 distinct points")
     kept = [array[0]]

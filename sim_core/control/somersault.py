@@ -31,7 +31,7 @@ from sim_core.control.takeoff import takeoff_steps
 from sim_core.control.tumble import FlightRotation, Tumble, position_inertia, rotation_to_come
 from sim_core.control.tuned import uncalibrated
 from sim_core.analysis import feet_above_surface
-from sim_core.schema import Parameter, Schema
+from sim_core.schema import Choice, Parameter, Schema
 from sim_core.tuned import TableType, keyed, load, register as register_table
 from sim_core.tuned.settings import SkillSchema
 
@@ -122,7 +122,7 @@ class Somersault(Sequence):
     default_duration = 5.0
     settings_schema = SOMERSAULT_SETTINGS
     schema = SkillSchema(
-        Parameter("direction", "1", 1.0, 0.0, 1.0, "0 = backward somersault, 1 = forward somersault"),
+        Choice("direction", DIRECTIONS, "forward", "the way the somersault turns: backward or forward"),
         Parameter("low_level", "bool", 0.0, 0.0, 1.0,
                   "1 = use the take-off and landing settings below instead of the calibrated ones"),
         settings=SOMERSAULT_SETTINGS,

@@ -305,7 +305,7 @@ def crouch_time(windup_time: float) -> float:
 
 def plan_jump(character: str, target, air_time: float, windup_time: float, strength="human",
               trials: int = 120, population: int = 12, elite: int = 4, progress=None, restart: int = 0,
-              start: dict | None = None) -> dict:
+              start: dict | None = None, cancelled=None) -> dict:
     """Search the leap's settings for a jump that lands the middle of the feet on ``target`` in
     ``air_time`` and ends balanced. Two stages share the ``trials``: the cross-entropy method
     over all the settings, starting from the best trial of an earlier search for the same
@@ -317,7 +317,8 @@ def plan_jump(character: str, target, air_time: float, windup_time: float, stren
     if this one does no better; the trial counts add up. ``restart`` > 0 starts a fresh search
     instead of continuing an earlier one that got stuck: from the stored plan found nearest the
     target (else the prior), with the random stream of that restart number. ``start`` (settings,
-    e.g. a trial found by a hand-run scan) overrides where the search starts.
+    e.g. a trial found by a hand-run scan) overrides where the search starts. ``cancelled()`` ->
+    True stops the trial in flight (simulate.Cancelled, within 50 control ticks).
     Returns {"settings", "measured", "trials", "found"}."""
 
     knobs = knobs_for(target)
@@ -342,7 +343,7 @@ def plan_jump(character: str, target, air_time: float, windup_time: float, stren
 
     def trial(x) -> tuple:
         settings = {n: float(v) for n, v in zip(names, x)}
-        measured = measure_settings(character, settings, target, air_time, windup_time, strength)
+        measured = measure_settings(character, settings, target, air_time, windup_time, strength, cancelled)
         tried.append((trial_cost(measured, target, air_time), np.asarray(x, dtype=float), settings, measured))
         if progress:
             progress(len(tried), trials, best()[3])
@@ -376,7 +377,7 @@ def plan_jump(character: str, target, air_time: float, windup_time: float, stren
 
 
 def measure_settings(character: str, settings: dict, target, air_time: float, windup_time: float,
-                     strength="human") -> dict:
+                     strength="human", cancelled=None) -> dict:
     """Run the leap with a plan's ``settings`` toward ``target`` (x, y, z, obstacle height) and read
     the landing off it (landing_measures): one trial of the planner, or a stored plan measured
     again. Judged over the run's whole default duration, as the final run is (a foot still creeping
@@ -384,7 +385,8 @@ def measure_settings(character: str, settings: dict, target, air_time: float, wi
     from sim_core.simulate import RunRequest, run
     duration = max(windup_time + air_time + 2.0, JumpToTarget.default_duration)
     trajectory = run(RunRequest("leap", character, params=leap_params(settings, target, windup_time),
-                                duration=duration, strength=strength, world=scene_for(character, target)))
+                                duration=duration, strength=strength, world=scene_for(character, target)),
+                     cancelled=cancelled)
     return landing_measures(trajectory)
 
 

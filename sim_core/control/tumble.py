@@ -24,7 +24,7 @@ import numpy as np
 
 from sim_core.character.model import set_standing_pose
 from sim_core.control.behaviour import Behaviour, ControlContext
-from sim_core.schema import Parameter, Schema
+from sim_core.schema import Choice, Parameter, Schema
 
 POSITION_NAMES = ("layout", "pike", "tuck", "line")     # by the schemas' position codes 0-3
 _SPINE_FLEXED = {"spine_l3_y": 0.26, "spine_l1_y": 0.26, "spine_t7_y": 0.21, "spine_t4_y": 0.21, "neck_c2_y": 0.8}
@@ -183,7 +183,7 @@ class Tumble(Behaviour):
     twist, and bring them back when the twist is done. The sequence decides when to leave."""
 
     schema = Schema(
-        Parameter("position", "1", 1.0, 0.0, 3.0, "0 = layout, 1 = pike, 2 = tuck, 3 = line (straight, arms overhead)"),
+        Choice("position", POSITION_NAMES, "pike", "body position: layout, pike, tuck or line (straight, arms overhead)"),
         Parameter("tightness", "1", 1.0, 0.0, 1.0, "share of the position's joint angles (0 = layout, 1 = full)"),
         Parameter("move_time", "s", 0.25, 0.05, 1.0, "time to move into the position"),
         Parameter("stiffness", "1", 1.0, 1.0, 4.0,

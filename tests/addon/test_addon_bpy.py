@@ -8,9 +8,12 @@ import pytest
 
 bpy = pytest.importorskip("bpy")
 
-from blender_addon import bake_math as bm, compat, props, rig  # noqa: E402
-from blender_addon.axes import SIM_TO_BLENDER  # noqa: E402
+from blender_addon import compat, props, rig  # noqa: E402
+from blender_addon.core import bake_math as bm  # noqa: E402
+from blender_addon.core.axes import SIM_TO_BLENDER  # noqa: E402
 from sim_core.simulate import RunRequest, run  # noqa: E402
+
+from .panel_layout import draw  # noqa: E402
 
 FPS = 24                    # Blender's default: frames fall between the simulation's samples
 KNEE_BEND = dict(pelvis_height=0.52, move_start=0.3, move_time=1.2, hold_time=0.5)
@@ -62,14 +65,28 @@ def test_add_character_imports_armature_skin_and_modifier_facing_minus_y(empty_s
     assert bpy.data.objects.get("Icosphere") is None          # no importer helper left behind
 
 
+def _check_generated(group, schema):
+    for p in schema.parameters:
+        prop = group.properties[p.name]
+        assert p.help[:20].lower() in prop.description.lower()
+        if p.kind == "choice":                     # a drop-down of the option names
+            assert prop.type == "ENUM" and [i.identifier for i in prop.enum_items] == list(p.options)
+            assert prop.default == p.default_option
+            continue
+        if p.kind == "points":                     # a curve object
+            assert prop.type == "POINTER" and prop.fixed_type.identifier == "Object"
+            continue
+        yield p, prop
+
+
 def test_panel_properties_are_generated_from_the_schema(addon):
     from sim_core.control.behaviour import available_behaviours, behaviour_class
+    from sim_core.request import REQUEST_SCHEMA
     settings_type = bpy.types.Scene.bl_rna.properties["sim_athletics"].fixed_type
+    list(_check_generated(settings_type.properties["request"].fixed_type, REQUEST_SCHEMA))
     for name in available_behaviours():
         group = settings_type.properties[props.group_attr(name)].fixed_type
-        for p in behaviour_class(name).schema.parameters:
-            prop = group.properties[p.name]
-            assert p.help[:20].lower() in prop.description.lower()
+        for p, prop in _check_generated(group, behaviour_class(name).schema):
             if p.unit == "bool":
                 assert prop.type == "BOOLEAN" and prop.default == bool(p.default)
                 continue
@@ -210,7 +227,7 @@ def test_a_parameter_out_of_range_is_refused_naming_the_range(empty_scene):
 
 def test_cancel_writes_nothing(empty_scene):
     from blender_addon import api
-    from blender_addon.job import SimulationJob
+    from blender_addon.core.jobs import SimulationJob
     from sim_core.simulate import Cancelled
     bpy.ops.sim_athletics.add_character(character="man")
     before = set(bpy.data.actions.keys())
@@ -236,34 +253,6 @@ def test_second_bake_gets_a_unique_name_and_stashes_the_first(empty_scene):
     assert stashed == ["balance defaults"] and arm.animation_data.action.name == "balance defaults.001"
 
 
-class _Layout:
-    """Stands in for a UI layout: records what a panel draws and checks every property exists."""
-
-    def __init__(self, log):
-        self.log = log
-
-    def box(self):
-        return self
-
-    def row(self, **kw):
-        return self
-
-    def column(self, **kw):
-        return self
-
-    def prop(self, data, name, **kw):
-        assert name in data.bl_rna.properties, f"{data} has no property {name!r}"
-        self.log.append(("prop", name))
-
-    def operator(self, idname, **kw):
-        module, name = idname.split(".")
-        assert hasattr(getattr(bpy.ops, module), name), idname
-        self.log.append(("operator", idname))
-
-    def label(self, text="", **kw):
-        self.log.append(("label", text))
-
-
 def test_panel_draws_the_schema_and_the_last_result(empty_scene):
     from sim_core.control.behaviour import behaviour_class
     from blender_addon import api
@@ -272,13 +261,11 @@ def test_panel_draws_the_schema_and_the_last_result(empty_scene):
     api.add_character(context, "man")
     _, trajectory = api.simulate_and_bake(context, behaviour="balance", duration=0.3)
     context.scene.sim_athletics.behaviour = "balance"
-    log = []
-    panel = type("P", (), {"layout": _Layout(log)})()
-    SIMATHLETICS_PT_panel.draw(panel, context)
-    drawn = [name for kind, name in log if kind == "prop"]
+    log = draw(SIMATHLETICS_PT_panel, context)
+    drawn = [entry[1] for entry in log if entry[0] == "prop"]
     assert [p.name for p in behaviour_class("balance").schema.parameters] == \
-        [n for n in drawn if n not in ("character", "behaviour", "strength", "duration", "start_frame", "fit_scene_range")]
-    labels = [text for kind, text in log if kind == "label"]
+        [n for n in drawn if n not in ("character", "behaviour", "start_frame", "fit_scene_range")]
+    labels = [entry[1] for entry in log if entry[0] == "label"]
     assert f"Outcome: {trajectory.meta['outcome']}" in labels
     assert any(text.startswith("min pelvis height:") for text in labels)
     assert ("operator", "sim_athletics.simulate_bake") in log
@@ -298,7 +285,7 @@ def test_a_dive_is_baked_with_its_platform_and_water(empty_scene):
     context.scene.render.fps, context.scene.render.fps_base = FPS, 1.0
     assert bpy.ops.sim_athletics.add_character(character="man") == {"FINISHED"}
     arm = context.view_layer.objects.active
-    params = "group=0 somersaults=1.5 position=1"
+    params = "group=inward somersaults=1.5 position=pike"
     assert bpy.ops.sim_athletics.simulate_bake(behaviour="dive", params=params, duration=4.5, start_frame=1) == {"FINISHED"}
     platform, water = bpy.data.objects[scenery.PLATFORM_NAME], bpy.data.objects[scenery.WATER_NAME]
     top = max((platform.matrix_world @ v.co).z for v in platform.data.vertices)
@@ -374,10 +361,11 @@ def test_a_somersault_is_baked_with_the_panels_strength(empty_scene):
     context = empty_scene
     context.scene.render.fps, context.scene.render.fps_base = FPS, 1.0
     strength = "human" if calibrated("man", "backward", "human") else "unlimited"
-    context.scene.sim_athletics.strength = strength
+    context.scene.sim_athletics.request.strength = strength
+    context.scene.sim_athletics.params_somersault.direction = "backward"      # the drop-down
     assert bpy.ops.sim_athletics.add_character(character="man") == {"FINISHED"}
     arm = context.view_layer.objects.active
-    assert bpy.ops.sim_athletics.simulate_bake(behaviour="somersault", params="direction=0", start_frame=1) == {"FINISHED"}
+    assert bpy.ops.sim_athletics.simulate_bake(behaviour="somersault", start_frame=1) == {"FINISHED"}
     result = json.loads(arm[rig.RESULT_KEY])
     assert result["strength"] == strength and result["outcome"] == "success"
     ups = []
@@ -401,7 +389,7 @@ def test_a_back_handspring_is_baked_with_its_hands_on_the_floor(empty_scene):
     strength = "human" if calibrated("man", "human") else "unlimited"
     if not calibrated("man", strength):
         pytest.xfail("no calibrated back handspring")
-    context.scene.sim_athletics.strength = strength
+    context.scene.sim_athletics.request.strength = strength
     assert bpy.ops.sim_athletics.add_character(character="man") == {"FINISHED"}
     arm = context.view_layer.objects.active
     assert bpy.ops.sim_athletics.simulate_bake(behaviour="handspring", start_frame=1) == {"FINISHED"}

@@ -5,8 +5,8 @@ import math
 import numpy as np
 import pytest
 
-from blender_addon import axes, bake_math as bm
-from blender_addon.rig_frames import rest_frames
+from blender_addon.core import axes, bake_math as bm
+from blender_addon.core.rig_frames import rest_frames
 from sim_core.character.spec import load_character
 from sim_core.simulate import RunRequest, run
 

@@ -5,7 +5,8 @@ documented batch command, open the saved .blend and check the bake.
 * extension zip -> Blender 5.0 as a Python module (the extension installer validates the
   manifest and installs the bundled wheels).
 Each Blender runs with temporary user folders, and without PYTHONPATH, so only what the zip
-brought is used.
+brought is used. sim_core is the add-on's own subpackage: no top-level ``sim_core`` is importable,
+and the legacy add-on's vendored wheels come after Blender's own packages on sys.path.
 """
 import json
 import os
@@ -46,8 +47,7 @@ def clean_env(**extra) -> dict:
 @pytest.fixture(scope="module")
 def zips():
     subprocess.run([sys.executable, "build.py", "addon"], cwd=ROOT, check=True)
-    sys.path.insert(0, str(ROOT))
-    import build
+    import build                     # the repository root is on sys.path (tests/conftest.py)
     version = build.addon_version()
     return ROOT / "dist" / f"sim_athletics-{version}.zip", ROOT / "dist" / f"sim_athletics-{version}-extension.zip"
 
@@ -67,6 +67,18 @@ def assert_baked(result: dict) -> None:
     assert result["info"]["outcome"] == "success"
     assert result["info"]["params"]["pelvis_height"] == 0.52
     assert result["skin_modifier"] == ["ARMATURE"]
+
+
+LAYOUT = """
+import importlib.util, json, sys, addon_utils
+addon_utils.enable('sim_athletics', default_set=True)
+import sim_athletics.sim_core.simulate as simulate
+vendor = [i for i, p in enumerate(sys.path) if p.endswith('sim_athletics/vendor')]
+own = [i for i, p in enumerate(sys.path) if p.startswith(sys.prefix) or 'blender/scripts' in p]
+print('CHECK ' + json.dumps({'sim_core': simulate.__file__,
+                             'top_level_sim_core': importlib.util.find_spec('sim_core') is not None,
+                             'vendor_after_blender': bool(vendor) and vendor[0] > max(own)}))
+"""
 
 
 @pytest.mark.slow
@@ -96,6 +108,15 @@ def test_legacy_zip_in_blender_3_4_batch_bakes_and_saves(zips, tmp_path):
     assert check.returncode == 0, check.stderr[-2000:]
     assert_baked(parse_check(check.stdout))
 
+    layout = subprocess.run(
+        [BLENDER, "-b", "--factory-startup", "--python-exit-code", "1", "--python-expr", LAYOUT],
+        env=env, capture_output=True, text=True, timeout=300)
+    assert layout.returncode == 0, layout.stdout[-2000:] + layout.stderr[-2000:]
+    found = parse_check(layout.stdout)
+    assert found["sim_core"].startswith(str(tmp_path / "scripts" / "addons" / "sim_athletics" / "sim_core"))
+    assert not found["top_level_sim_core"]
+    assert found["vendor_after_blender"]
+
     bad = subprocess.run(
         [BLENDER, "-b", "--factory-startup", "-P", str(batch), "--", "--behaviour", "balance",
          "--set", "pelvis_height=5", "--out", str(tmp_path / "bad.blend")],
@@ -116,10 +137,13 @@ def test_extension_zip_installs_offline_in_blender_5_and_bakes(zips, tmp_path):
 import bpy, sys
 bpy.ops.extensions.package_install_files(filepath={str(extension)!r}, repo='user_default', enable_on_install=True)
 from bl_ext.user_default.sim_athletics import batch
-import sim_core
+from bl_ext.user_default.sim_athletics import sim_core
 assert sim_core.__file__.startswith({str(tmp_path)!r}), sim_core.__file__
+from bl_ext.user_default.sim_athletics.core.simcore import SIM_CORE
+assert SIM_CORE == 'bl_ext.user_default.sim_athletics.sim_core', SIM_CORE
 code = batch.run(['--character', 'man', '--behaviour', 'balance', *{KNEE_BEND!r}, '--duration', '{DURATION}',
                   '--fps', '{FPS}', '--out', {str(out)!r}])
+assert 'sim_core' not in sys.modules, 'the add-on imported a top-level sim_core'
 bpy.ops.wm.open_mainfile(filepath={str(out)!r})
 exec({CHECK!r})
 sys.exit(code)

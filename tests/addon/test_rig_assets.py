@@ -7,8 +7,8 @@ import pytest
 
 pytest.importorskip("pygltflib")
 
-from blender_addon.rig_frames import rest_frames, spec_digest  # noqa: E402
-from blender_addon.rigbuild.gltf import read_rig_glb          # noqa: E402
+from blender_addon.core.rig_frames import rest_frames, spec_digest  # noqa: E402
+from tools.rigbuild.gltf import read_rig_glb          # noqa: E402
 from sim_core.character.spec import RIGS_DIR, load_character  # noqa: E402
 
 CHARACTERS = ["man", "woman"]
@@ -69,7 +69,7 @@ def test_weights_are_normalised_and_blend_across_every_joint(rig):
 def test_rebuilt_skin_mass_per_segment_within_15_percent(character, tmp_path: Path):
     pytest.importorskip("skimage")
     pytest.importorskip("trimesh")
-    from blender_addon.rigbuild import MASS_TOLERANCE, build_rig
+    from tools.rigbuild import MASS_TOLERANCE, build_rig
     report = build_rig(load_character(character), tmp_path / f"{character}.glb")
     print(f"\n{character}: {report.vertices} vertices\n{report.table()}")
     worst, error = report.worst_mass_error()

@@ -7,8 +7,8 @@ from pathlib import Path
 
 import numpy as np
 
-from ..axes import sim_to_blender_points
-from ..rig_frames import rest_frames, spec_digest
+from blender_addon.core.axes import sim_to_blender_points
+from blender_addon.core.rig_frames import rest_frames, spec_digest
 from . import skin
 from .gltf import write_rig_glb
 

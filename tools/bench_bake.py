@@ -4,37 +4,26 @@
   insert  a loop that sets each pose bone and calls keyframe_insert, frame by frame
   nla     Blender's own Bake Action (bpy.ops.nla.bake) from the same poses (the bulk action)
 
-    python blender_addon/bench_bake.py            # Blender as a Python module
-    blender -b -P blender_addon/bench_bake.py     # a Blender binary that has mujoco & scipy
+    python -m tools.bench_bake                    # from the repository root, Blender as a Python module
+    PYTHONPATH=. blender -b -P tools/bench_bake.py     # a Blender binary that has mujoco & scipy
+
+(Build-time tooling: not part of the shipped add-on.)
 
 Prints each time and the ratios to the bulk path (goal: insert / bulk >= 20); the simulation
 itself is not timed. Every method's keys are checked against the bulk keys.
 """
 from __future__ import annotations
 
-import importlib
-import sys
 import time
-from pathlib import Path
 
 DURATION, FPS = 10.0, 60
 
 
-def _package():
-    if __package__:
-        return importlib.import_module(__package__)
-    here = Path(__file__).resolve().parent
-    sys.path.insert(0, str(here.parent))
-    return importlib.import_module(here.name)
-
-
 def main() -> None:
     import bpy
-    pkg = _package()                  # puts the bundled numpy, mujoco, sim_core on sys.path
     import numpy as np
-    api = importlib.import_module(pkg.__name__ + ".api")
-    bake = importlib.import_module(pkg.__name__ + ".bake")
-    compat = importlib.import_module(pkg.__name__ + ".compat")
+    import blender_addon as pkg
+    from blender_addon import api, bake, compat
     from sim_core.simulate import RunRequest, run
 
     bpy.ops.wm.read_homefile(use_empty=True)

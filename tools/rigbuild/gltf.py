@@ -2,7 +2,7 @@
 body, at its bone head, no rotation, so the bind pose is the rest pose), one skinned mesh with
 JOINTS_0/WEIGHTS_0, and a plain skin-coloured material.
 
-Coordinates: the armature space of :mod:`blender_addon.axes`, mapped to glTF's own axes with
+Coordinates: the armature space of :mod:`blender_addon.core.axes`, mapped to glTF's own axes with
 ``BLENDER_TO_GLTF`` so that Blender's importer puts every vertex and bone back where the
 armature space says.
 """
@@ -13,7 +13,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ..axes import BLENDER_TO_GLTF
+from blender_addon.core.axes import BLENDER_TO_GLTF
 
 SKIN_COLOUR = [0.80, 0.62, 0.52, 1.0]
 
