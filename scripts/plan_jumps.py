@@ -32,8 +32,10 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 from sim_core.control.target_jump import (AIR_TIME_TOLERANCE, BOX_AIR_TIME, BOX_DISTANCE,  # noqa: E402
-                                          GROUND_AIR_TIME, LANDING_TOLERANCE, SIDEWAYS_AIR_TIME, measure_settings,
-                                          plan_jump, store_plan, stored_plan, stored_plans, within_tolerance)
+                                          GROUND_AIR_TIME, LANDING_TOLERANCE, SIDEWAYS_AIR_TIME, stored_plan,
+                                          stored_plans)
+from sim_core.planning.jump import measure_settings, plan_jump, store_plan, within_tolerance  # noqa: E402
+from sim_core.tuning import executor_for  # noqa: E402
 from sim_core.errors import ParameterError  # noqa: E402
 from sim_core.simulate import RunRequest, run  # noqa: E402
 
@@ -76,7 +78,7 @@ def to_side(settings: dict | None, target_y: float) -> dict | None:
 
 
 def plan(characters, requests, trials: int, restart: int = 0, start_settings: dict | None = None,
-         strength: str = "human") -> None:
+         strength: str = "human", workers: int | None = None) -> None:
     for character in characters:
         for params in requests:
             request = {**params, "strength": strength}
@@ -84,14 +86,16 @@ def plan(characters, requests, trials: int, restart: int = 0, start_settings: di
             start = time.perf_counter()
 
             def progress(done, total, best):
-                if done % 25 == 0 or done == total:
+                if done % 25 < 12 or done == total:          # (called per batch of up to 12 trials)
                     print(f"  {character} {label}: {done}/{total} trials, nearest ({best['landing'][0]:.3f}, "
                           f"{best['landing'][1]:.3f}) m, {best['air_time']:.3f} s, {best['outcome']}", flush=True)
 
-            result = plan_jump(character, tuple(params[k] for k in ("target_x", "target_y", "target_z",
-                                                                    "obstacle_height")),
-                               params["air_time"], params["windup_time"], strength, trials=trials, progress=progress,
-                               restart=restart, start=to_side(start_settings, params["target_y"]))
+            with executor_for(workers) as executor:
+                result = plan_jump(character, tuple(params[k] for k in ("target_x", "target_y", "target_z",
+                                                                        "obstacle_height")),
+                                   params["air_time"], params["windup_time"], strength, budget=trials,
+                                   progress=progress, executor=executor, restart=restart,
+                                   start=to_side(start_settings, params["target_y"]))
             print(f"{character} {label}: {'found' if result['found'] else 'NOT found'} after {result['trials']} "
                   f"trials ({time.perf_counter() - start:.0f} s)", flush=True)
             store_plan(character, request, result, "scripts/plan_jumps.py")
@@ -350,7 +354,9 @@ def main() -> None:
                         help="sideways targets (m), each to the left and to the right")
     parser.add_argument("--down", action=argparse.BooleanOptionalAction, default=True,
                         help="plan the jump from a box over a second box to the ground (--no-down: not)")
-    parser.add_argument("--trials", type=int, default=150, help="simulated trial jumps per target")
+    parser.add_argument("--trials", type=int, default=150, help="simulated trial jumps per target (the budget)")
+    parser.add_argument("--workers", type=int, default=None, help="processes running the trials (default: one per "
+                        "CPU; the same plans with any number)")
     parser.add_argument("--restart", type=int, default=0,
                         help="N > 0: search afresh (from the stored plan found nearest each target, with random "
                              "stream N) instead of continuing from the stored best; the stored best is kept "
@@ -373,7 +379,7 @@ def main() -> None:
         requests = [request_for(x) for x in args.distances] + [box_request(z) for z in args.boxes]
         requests += [request_for(0.0, side * y) for y in args.sideways for side in (1, -1)]
         requests += [down_request()] if args.down else []
-        plan(args.characters, requests, args.trials, args.restart, args.start, args.strength)
+        plan(args.characters, requests, args.trials, args.restart, args.start, args.strength, args.workers)
     if not args.plan_only:
         report(args.characters)
 
