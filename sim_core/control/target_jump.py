@@ -329,12 +329,12 @@ class JumpToTarget(Leap):
 
     def check_feasible(self) -> None:
         """Refuses what no plan can do, then looks the plan up (planning runs above the loop)."""
-        name = self.ctx.character.name
-        check_request(self.ctx.character, self.params, run_strength(self.ctx))
+        p, name = self.params, self.ctx.character.name
+        check_request(self.ctx.character, p, run_strength(self.ctx))
         plan = stored_plan(name, self.request())
         if plan is None:
             raise ParameterError(f"no stored plan for this jump of {name}; plan it first with "
-                                 f"'{plan_command(name, self.params)}' (or run it with 'python -m sim_core "
+                                 f"'{plan_command(name, p)}' (or run it with 'python -m sim_core "
                                  f"simulate', which plans it first)")
         if not plan["found"]:
             m = plan["measured"]
