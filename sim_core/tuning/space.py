@@ -16,7 +16,10 @@ from sim_core.errors import ParameterError
 class Space:
     """Named settings with their ranges, in the order given (the order of a search's vectors)."""
 
-    def __init__(self, bounds: dict[str, tuple[float, float]]):
+    def __init__(self, bounds: dict[str, tuple[float, float]], decimals: int | None = None):
+        """``decimals``: settings handed out rounded to this many decimals (a table then stores
+        exactly what was run)."""
+        self.decimals = decimals
         if not bounds:
             raise ParameterError("a search space needs at least one setting")
         for name, (low, high) in bounds.items():
@@ -57,7 +60,10 @@ class Space:
     def settings(self, z) -> dict[str, float]:
         """A point of [0, 1]^n (clipped into it) -> settings in natural units."""
         z = np.clip(np.asarray(z, dtype=float), 0.0, 1.0)
-        return {n: float(v) for n, v in zip(self.names, self.low + z * (self.high - self.low))}
+        x = self.low + z * (self.high - self.low)
+        if self.decimals is not None:
+            x = np.round(x, self.decimals)
+        return {n: float(v) for n, v in zip(self.names, x)}
 
     def middle(self) -> dict[str, float]:
         return self.settings(np.full(len(self), 0.5))
