@@ -49,7 +49,7 @@ sys.path.insert(0, str(ROOT))
 from sim_core.control.handspring import HAND_SETTINGS, OLD_ROW, SETTINGS, TUNED_DIR, Handspring, load_table  # noqa: E402
 from sim_core.control.tuned import kept_message, merge_search, names_option, searched_and_fixed, write_table  # noqa: E402
 from sim_core.simulate import RunRequest, run  # noqa: E402
-from sim_core.tuning import Space, executor_for, minimize  # noqa: E402
+from sim_core.tuning import Space, StopAfterFound, executor_for, minimize  # noqa: E402
 
 DURATION = 5.0
 DRIFT_GOAL = 0.009           # angular momentum drift in flight the search aims below (the tests' limit is 1 %)
@@ -95,6 +95,11 @@ def score(m: dict) -> float:
     return s
 
 
+def print_evaluation(evaluation) -> None:
+    """--verbose: every run of the search, with its settings."""
+    print(f"    {evaluation.score:.3f} {evaluation.extra['outcome']} {json.dumps(evaluation.settings)}", flush=True)
+
+
 def found(m: dict) -> bool:
     return m["outcome"] == "success" and (m["angular_momentum_drift"] or 0.0) < DRIFT_GOAL
 
@@ -112,31 +117,18 @@ def search(character: str, strength: str, budget: int, population: int, seed: in
     names, fixed = searched_and_fixed(SETTINGS, SPACE, only, start)
     space = Space({n: SPACE[n] for n in names}, decimals=4)
     first = {n: min(max(start[n], SPACE[n][0]), SPACE[n][1]) for n in names}
-    successes = []
-
-    def enough(evaluation) -> bool:
-        if found(evaluation.extra):
-            successes.append((evaluation.score, dict(fixed, **evaluation.settings), evaluation.extra))
-        if verbose:
-            print(f"    {evaluation.score:.3f} {evaluation.extra['outcome']} {json.dumps(evaluation.settings)}",
-                  flush=True)
-        return len(successes) >= ROBUST_CANDIDATES
+    found_ones = StopAfterFound(lambda e: found(e.extra), ROBUST_CANDIDATES, print_evaluation if verbose else None)
 
     def progress(done, total, best):
         m = best.extra
         print(f"  {character} ({strength}) {done}/{total} handsprings: best score {best.score:.3f} "
               f"({m['outcome']}, rotation {m['rotation']:.2f} rad, before a fall {m['rotation_before_fall']:.2f}, "
-              f"rise {m['com_rise']:.2f} m); {len(successes)} found", flush=True)
+              f"rise {m['com_rise']:.2f} m); {len(found_ones.found)} found", flush=True)
 
     result = minimize(functools.partial(handspring_trial, character, strength, fixed), space, method, budget, seed,
-                      start=first, sigma=spread, population=population, progress=progress, stop=enough,
+                      start=first, sigma=spread, population=population, progress=progress, stop=found_ones,
                       executor=executor)
-    best = result.best
-    if not successes:
-        return best.score, dict(fixed, **best.settings), best.extra
-    if not refine_best:
-        return min(successes, key=lambda r: r[0])
-    return most_robust(executor, character, strength, successes)
+    return found_ones.choose(result, fixed, (lambda found: most_robust(executor, character, strength, found)) if refine_best else None)
 
 
 ROBUST_CANDIDATES = 4        # handsprings found before choosing among them

@@ -54,7 +54,7 @@ from sim_core.control.somersault import DIRECTIONS, LANDING_SETTINGS, OLD_ROW, S
 from sim_core.control.tumble import snap_damping  # noqa: E402
 from sim_core.control.tuned import kept_message, merge_search, names_option, searched_and_fixed, write_table  # noqa: E402
 from sim_core.simulate import RunRequest, run  # noqa: E402
-from sim_core.tuning import Space, SerialExecutor, executor_for, minimize  # noqa: E402
+from sim_core.tuning import Space, SerialExecutor, StopAfterFound, executor_for, minimize  # noqa: E402
 
 DURATION = 5.0
 SLIDE_WEIGHT = 20.0         # per m a foot moves after landing beyond the stepping limit (a run on its feet that steps)
@@ -127,15 +127,7 @@ def search(character: str, direction: str, strength: str, budget: int, populatio
     names, fixed = searched_and_fixed(SETTINGS, SPACE, only, start)
     space = Space({n: SPACE[n][direction] for n in names}, decimals=4)
     first = {n: min(max(start[n], SPACE[n][direction][0]), SPACE[n][direction][1]) for n in names}
-    successes = []
-
-    def enough(evaluation) -> bool:
-        if found(evaluation.extra):
-            successes.append((evaluation.score, dict(fixed, **evaluation.settings), evaluation.extra))
-        if verbose:
-            print(f"    {evaluation.score:.3f} {evaluation.extra['outcome']} {json.dumps(evaluation.settings)}",
-                  flush=True)
-        return len(successes) >= ROBUST_CANDIDATES
+    found_ones = StopAfterFound(lambda e: found(e.extra), ROBUST_CANDIDATES, print_evaluation if verbose else None)
 
     def progress(done, total, best):
         m = best.extra
@@ -144,13 +136,9 @@ def search(character: str, direction: str, strength: str, budget: int, populatio
               f"take-off H {m['liftoff_angular_momentum'] or 0:.1f} kg m^2/s)", flush=True)
 
     result = minimize(functools.partial(somersault_trial, character, direction, strength, fixed), space, method,
-                      budget, seed, start=first, sigma=0.12, population=population, progress=progress, stop=enough,
+                      budget, seed, start=first, sigma=0.12, population=population, progress=progress, stop=found_ones,
                       executor=executor)
-    if not successes:
-        return result.best.score, dict(fixed, **result.best.settings), result.best.extra
-    if not refine_best:
-        return min(successes, key=lambda r: r[0])
-    return most_robust(character, direction, strength, successes, executor)
+    return found_ones.choose(result, fixed, (lambda found: most_robust(character, direction, strength, found, executor)) if refine_best else None)
 
 
 ROBUST_CANDIDATES = 4        # somersaults found before choosing among them
@@ -171,6 +159,11 @@ def most_robust(character: str, direction: str, strength: str, successes: list, 
         ranked.append((-neighbours, score, settings, dict(m, neighbours_succeeding=neighbours)))
     _, score, settings, m = min(ranked, key=lambda r: (r[0], r[1]))
     return score, settings, m
+
+
+def print_evaluation(evaluation) -> None:
+    """--verbose: every run of the search, with its settings."""
+    print(f"    {evaluation.score:.3f} {evaluation.extra['outcome']} {json.dumps(evaluation.settings)}", flush=True)
 
 
 def found(m: dict) -> bool:

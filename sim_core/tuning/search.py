@@ -197,6 +197,31 @@ def _comparable(score: float) -> float:
     return score if math.isfinite(score) else math.inf
 
 
+class StopAfterFound:
+    """A ``stop`` that keeps the evaluations ``accept`` takes (``found``, in order) and ends the
+    search at the ``count``-th (a calibration that chooses the most robust of a few found);
+    ``report(evaluation)``, if given, sees every evaluation."""
+
+    def __init__(self, accept: Callable[[Evaluation], bool], count: int, report: Callable | None = None):
+        self.accept, self.count, self.report = accept, count, report
+        self.found: list[Evaluation] = []
+
+    def __call__(self, evaluation: Evaluation) -> bool:
+        if self.report is not None:
+            self.report(evaluation)
+        if self.accept(evaluation):
+            self.found.append(evaluation)
+        return len(self.found) >= self.count
+
+    def choose(self, result: SearchResult, fixed: dict, robust: Callable | None = None) -> tuple[float, dict, Any]:
+        """(score, settings with the ``fixed`` ones, extra) a calibration keeps: the search's best if
+        none was found, else ``robust(found)`` (a list of such tuples, best first) or the best found."""
+        if not self.found:
+            return result.best.score, dict(fixed, **result.best.settings), result.best.extra
+        found = sorted(((e.score, dict(fixed, **e.settings), e.extra) for e in self.found), key=lambda r: r[0])
+        return robust(found) if robust is not None else found[0]
+
+
 def deadline_stop(seconds: float) -> Callable[[Evaluation], bool]:
     """A ``stop`` that ends a search once ``seconds`` of wall time have passed (a time-boxed
     search; its result then depends on the machine's speed)."""
