@@ -50,6 +50,7 @@ KNOB_DEFAULTS = {"crouch_arms": 0.0, "liftoff_roll": 0.0,    # a knob a prior or
                  "spin_hold": 0.0}                            # the thrust along poses balanced over the feet,
                                                               # no sideways lean, no hold on the twist); the
                                                               # leap's parameters by the same names
+
 GROUND_AIR_TIME = 0.45              # s: the air time the report asks of a jump to a target on the
                                     # ground, and the broad jump's planned jumps (a standing broad jump's)
 SIDEWAYS_AIR_TIME = 0.6             # s: the report's sideways jumps. The legs push sideways only along their
@@ -373,5 +374,3 @@ def _surface(measured: dict, target_z: float) -> str:
     if target_z <= 0:
         return ""
     return " on the box" if measured.get("landing_height", 0.0) > 0 else " on the ground"
-
-

@@ -73,7 +73,6 @@ BROAD_PRIOR = {"crouch_height": 0.655, "crouch_pitch": 0.0, "com_offset": 0.1, "
 LANDING_PRIOR = {"foot_delta": 0.0, "swing_arms": 0.0, "arm_flexion": 0.6, "foot_lead_time": 0.2}
 
 
-
 REFINE_SHARE = 0.4                  # share of a search's trials kept for refining the best balanced trial
 POPULATION = 12                     # trials per batch of the first stage (CMA-ES's population)
 FIRST_STEP = 0.25                   # the first stage's step, as a share of each setting's range
@@ -107,7 +106,6 @@ def search_prior(character: str, target) -> dict:
 def knobs_for(target) -> dict:
     """The settings searched for this target (sideways ones only for a target off to the side)."""
     return {**KNOBS, **SIDEWAYS_KNOBS} if abs(float(target[1])) > 1e-9 else dict(KNOBS)
-
 
 
 CAPTURE_SCALE = 0.1                 # m of capture-point error that cost a fallen trial as much as a tolerance
@@ -308,7 +306,6 @@ def _stable_seed(target, air_time: float, windup_time: float) -> int:
     for v in values:
         seed = (seed * 1_000_003 + v) % (2 ** 31)
     return seed
-
 
 
 def store_plan(character: str, request: dict, plan: dict, script: str) -> None:
