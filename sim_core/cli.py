@@ -108,14 +108,16 @@ def _use_store(args) -> None:
 
 
 def cmd_simulate(args) -> int:
-    from sim_core.planning import plan_before_run
     from sim_core.simulate import run
-    from sim_core.tuning import executor_for
     request = build_request(args)
     if args.out and not args.out.endswith(".npz"):
         raise ParameterError(f"--out {args.out!r} must end in .npz")
     _use_store(args)
-    if request.behaviour == "jump_to_target":      # planning runs here, above the loop, not in the behaviour
+    # planning runs here, above the loop, not in the behaviour; for planning.PLANNED_BEHAVIOURS only (imported
+    # only then: the search service's imports take about a second)
+    if request.behaviour == "jump_to_target":
+        from sim_core.planning import plan_before_run
+        from sim_core.tuning import executor_for
         with executor_for(args.workers) as executor:
             plan_before_run(request, int(request.params.get("plan_trials", 120)), progress=_plan_progress,
                             executor=executor)

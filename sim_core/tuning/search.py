@@ -22,7 +22,9 @@ from concurrent.futures import FIRST_COMPLETED, wait
 from dataclasses import dataclass, field
 from typing import Any, Callable
 
-import numpy as np
+import cma          # imported here, not inside a search: importing it takes ~1 s, and a cancel cannot land
+import numpy as np  # while an import runs
+from scipy.optimize import dual_annealing
 
 from sim_core.errors import Cancelled, ParameterError
 from sim_core.tuning.executor import SerialExecutor
@@ -157,7 +159,6 @@ class _Run:
 
 
 def _cma(run: _Run, z0, seed: int, sigma: float, population: int | None, options: dict) -> str:
-    import cma
     opts = {"bounds": [0.0, 1.0], "seed": seed + 1, "verbose": -9, **options}   # (cma takes seed 0 as "random")
     if population is not None:
         opts["popsize"] = population
@@ -171,7 +172,6 @@ def _cma(run: _Run, z0, seed: int, sigma: float, population: int | None, options
 
 
 def _anneal(run: _Run, z0, seed: int, options: dict) -> str:
-    from scipy.optimize import dual_annealing
     start_score = run.log[0].score
     first = [True]
 
