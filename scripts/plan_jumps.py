@@ -8,6 +8,11 @@ report what the final runs achieve.
     python3 scripts/plan_jumps.py --characters woman --distances 1.0 1.3 --trials 200
     python3 scripts/plan_jumps.py --characters man --distances 1.6 --boxes --sideways --no-down --restart 1
     python3 scripts/plan_jumps.py --characters man --distances --boxes --sideways --start '{"liftoff_hip": 1.0}'
+    python3 scripts/plan_jumps.py --characters man --distances 1.3 --boxes --sideways --no-down --workers 2
+
+The planning is sim_core/planning/jump.py's (the search service, trials in --workers processes,
+default one per CPU; the same plans with any number). A user's own plans go to the plan store of
+``python -m sim_core plan`` instead (docs/planning.md); this script writes the shipped tables.
 
 Plans go to rigs/tuned/jump_targets_<character>.json (found or not: a target whose search found no
 jump is stored with the nearest trial, so a request for it is refused at once with the numbers).

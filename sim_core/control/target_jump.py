@@ -344,7 +344,7 @@ class JumpToTarget(Leap):
                 f"({p['target_x']:g}, {p['target_y']:g}) m with air_time={p['air_time']:g} s "
                 f"(+-{AIR_TIME_TOLERANCE:g} s) and ends balanced, in {plan['trials']} simulated trials; the "
                 f"nearest landed at ({m['landing'][0]:.2f}, {m['landing'][1]:.2f}) m{_surface(m, p['target_z'])} "
-                f"after {m['air_time']:.2f} s ({m['outcome']})")
+                f"after {m['air_time']:.2f} s ({m['outcome']}); '{plan_command(name, p)} --budget N' searches on")
         self.plan = plan
 
     def settings(self, p: dict) -> dict:
