@@ -83,7 +83,7 @@ def to_side(settings: dict | None, target_y: float) -> dict | None:
 
 
 def plan(characters, requests, trials: int, restart: int = 0, start_settings: dict | None = None,
-         strength: str = "human", workers: int | None = None) -> None:
+         strength: str = "human", workers: int | None = None, tables: Path | None = None) -> None:
     for character in characters:
         for params in requests:
             request = {**params, "strength": strength}
@@ -103,7 +103,7 @@ def plan(characters, requests, trials: int, restart: int = 0, start_settings: di
                                    start=to_side(start_settings, params["target_y"]))
             print(f"{character} {label}: {'found' if result['found'] else 'NOT found'} after {result['trials']} "
                   f"trials ({time.perf_counter() - start:.0f} s)", flush=True)
-            store_plan(character, request, result, "scripts/plan_jumps.py")
+            store_plan(character, request, result, "scripts/plan_jumps.py", tables)
 
 
 def remeasure(characters) -> None:
@@ -378,14 +378,19 @@ def main() -> None:
     parser.add_argument("--report-only", action="store_true")
     parser.add_argument("--plan-only", action="store_true",
                         help="store the plans, write no report (to plan characters in parallel processes)")
+    parser.add_argument("--tables", type=Path, default=None,
+                        help="with --plan-only: store the plans in this directory instead of rigs/tuned (a quick look)")
     args = parser.parse_args()
+    if args.tables is not None and not args.plan_only:
+        parser.error("--tables goes with --plan-only (the report and --remeasure read the shipped tables)")
     if args.remeasure:
         remeasure(args.characters)
     elif not args.report_only:
         requests = [request_for(x) for x in args.distances] + [box_request(z) for z in args.boxes]
         requests += [request_for(0.0, side * y) for y in args.sideways for side in (1, -1)]
         requests += [down_request()] if args.down else []
-        plan(args.characters, requests, args.trials, args.restart, args.start, args.strength, args.workers)
+        plan(args.characters, requests, args.trials, args.restart, args.start, args.strength, args.workers,
+             args.tables)
     if not args.plan_only:
         report(args.characters)
 

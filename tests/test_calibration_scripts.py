@@ -34,6 +34,8 @@ def _shipped_digest() -> str:
      "somersaults_man.json", "man backward (unlimited) 4/4 somersaults"),
     ("tune_running", ["--speeds", "3.5", "--duration", "6", "--max-evaluations", "3", "--method", "cma",
                       "--leans", "0.35"], None, "3.5 m/s: 3 evaluations"),
+    ("plan_jumps", ["--characters", "man", "--distances", "1.31", "--boxes", "--sideways", "--no-down",
+                    "--trials", "3", "--plan-only"], "jump_targets_man.json", "man 1.3 m forward: 3/3 trials"),
 ])
 def test_a_tiny_budget_run_searches_and_writes_only_where_told(tmp_path, script, args, table, progress):
     before = _shipped_digest()

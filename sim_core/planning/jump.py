@@ -23,6 +23,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from pathlib import Path
 from typing import Callable
 
 import numpy as np
@@ -308,11 +309,13 @@ def _stable_seed(target, air_time: float, windup_time: float) -> int:
     return seed
 
 
-def store_plan(character: str, request: dict, plan: dict, script: str) -> None:
-    """Keep a plan (found or not) in the shipped table, rigs/tuned/jump_targets_<character>.json,
-    replacing the one for the same request (scripts/plan_jumps.py; a user's plans go to
-    store_user_plan)."""
-    _write_plans(plans_path(character), character, read_plans(plans_path(character)), request, plan, script)
+def store_plan(character: str, request: dict, plan: dict, script: str, directory: Path | None = None) -> None:
+    """Keep a plan (found or not) in the shipped table, rigs/tuned/jump_targets_<character>.json
+    (or in the table of that name in ``directory``), replacing the one for the same request
+    (scripts/plan_jumps.py; a user's plans go to store_user_plan)."""
+    path = plans_path(character) if directory is None else Path(directory) / plans_path(character).name
+    path.parent.mkdir(parents=True, exist_ok=True)
+    _write_plans(path, character, read_plans(path), request, plan, script)
 
 
 def _side(y: float) -> int:
