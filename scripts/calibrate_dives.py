@@ -2,9 +2,10 @@
 behaviour reads (sim_core/tuned/tables/dives_<character>.json) - the role of the hand tuning Wooten
 describes in §8.2.1 ("about five hours of effort" per dive), done by a search.
 
-For each dive of the character the search (cross-entropy method over the six leap settings:
-crouch height, torso pitch, backward COM offset, lift-off hip angle, arm swing, thrust damping;
-and the twist lead of a twisting dive) minimises
+For each dive of the character the search (the search service, sim_core.tuning: CMA-ES by
+default, or annealing, over the six leap settings: crouch height, torso pitch, backward COM
+offset, lift-off hip angle, arm swing, thrust damping; and the twist lead of a twisting dive)
+minimises
 
     score = 10 * hit_platform + 10 * |somersaults - wanted| + 10 * |twists - wanted|
             + max(0, entry angle from vertical - 5 deg) / 10 deg          (no water entry: 100)
@@ -16,10 +17,16 @@ feasibility check uses to refuse dives the flight cannot hold.
     python3 scripts/calibrate_dives.py                      # both characters, their dives
     python3 scripts/calibrate_dives.py --character woman --iterations 4 --population 10
     python3 scripts/calibrate_dives.py --character woman --only 0 --start '{"thrust_damping": 0.3}'
+    python3 scripts/calibrate_dives.py --character man --only 0 --budget 4 --no-refine --tables /tmp/t   # a quick look
+
+``--budget`` is the number of simulated dives the search may run per dive (default
+``--iterations`` x ``--population``); the refinement's 25 runs come on top (``--no-refine``
+skips it). ``--workers`` runs the dives in that many processes (the same result as 1).
 """
 from __future__ import annotations
 
 import argparse
+import functools
 import json
 import sys
 import time
@@ -34,6 +41,7 @@ from sim_core.control.dive import CALIBRATED_DIVES, FORWARD_ROTATING, GROUPS, Di
 from sim_core import tuned  # noqa: E402
 from sim_core.errors import ParameterError  # noqa: E402
 from sim_core.simulate import RunRequest, run  # noqa: E402
+from sim_core.tuning import Space, executor_for, minimize  # noqa: E402
 
 SPACE = {  # name: (low, high) per group
     "crouch_height": {g: (0.4, 0.8) for g in GROUPS},
@@ -75,44 +83,45 @@ def evaluate(character: str, dive: dict, settings: dict) -> tuple[float, dict]:
     return score, m
 
 
-def search(character: str, dive: dict, iterations: int, population: int, seed: int, start: dict | None = None) -> dict:
-    """Cross-entropy search from the middle of the space, or from ``start`` (the table's present
-    settings for this dive and ``--start``; a setting it lacks starts from the middle of its
-    range) with a narrower spread; then ``refine``."""
+def dive_trial(character: str, dive: dict, settings: dict) -> tuple[float, dict]:
+    """evaluate() under the calibration's lifted limits, for a search's executor (a worker
+    process does not inherit the NoLimits of the parent's with-block)."""
+    with NoLimits():
+        return evaluate(character, dive, settings)
+
+
+def search(character: str, dive: dict, budget: int, population: int, seed: int, start: dict | None = None,
+           method: str = "cma", executor=None, refine_best: bool = True) -> dict:
+    """A search (sim_core.tuning) from the middle of the space, or from ``start`` (the table's
+    present settings for this dive and ``--start``; a setting it lacks starts from the middle of
+    its range) with a narrower spread, stopped at the first dive that lands balanced within 8 deg
+    of vertical; then ``refine``."""
     group = GROUPS[dive["group"]]
     names = [n for n in SPACE if n != "twist_lead" or dive["twists"]]
-    low = np.array([SPACE[n][group][0] for n in names])
-    high = np.array([SPACE[n][group][1] for n in names])
-    rng = np.random.default_rng(seed)
-    mean, std = 0.5 * (low + high), 0.35 * (high - low)
-    if start:
-        mean = np.array([start.get(n, m) for n, m in zip(names, mean)])
-        std = np.where([n in start for n in names], 0.12, 0.35) * (high - low)
-    best = (np.inf, None, None)
-    momentum = 0.0
-    for iteration in range(iterations):
-        samples = np.clip(rng.normal(mean, std, size=(population, len(names))), low, high)
-        if iteration == 0 and best[1] is None:
-            samples[0] = mean
-        scored = []
-        for x in samples:
-            settings = {n: round(float(v), 4) for n, v in zip(names, x)}
-            score, m = evaluate(character, dive, settings)
-            scored.append((score, x))
-            if m.get("entered_water") and not m.get("hit_platform"):
-                momentum = max(momentum, abs(m["takeoff_angular_momentum"]))
-            if score < best[0]:
-                best = (score, settings, m)
-        scored.sort(key=lambda s: s[0])
-        elite = np.array([x for _, x in scored[: max(2, population // 3)]])
-        mean, std = elite.mean(axis=0), np.maximum(elite.std(axis=0), 0.03 * (high - low))
-        m = best[2] or {}
-        print(f"  {character} {group} iteration {iteration + 1}/{iterations}: best score {best[0]:.3f} "
+    space = Space({n: SPACE[n][group] for n in names}, decimals=4)
+    start = start or {}
+    first = {n: start.get(n, 0.5 * sum(SPACE[n][group])) for n in names}
+    spreads = [0.12 if n in start else 0.35 for n in names]       # a share of each range
+
+    def progress(done, total, best):
+        m = best.extra or {}
+        print(f"  {character} {group} {done}/{total} dives: best score {best.score:.3f} "
               f"({m.get('outcome')}, {m.get('somersaults', 0):.2f} somersaults, {m.get('twists', 0):.2f} twists, "
               f"entry {m.get('entry_angle_from_vertical_deg', 0):.0f} deg)", flush=True)
-        if m.get("outcome") == "success" and m.get("entry_angle_from_vertical_deg", 90) < 8.0:
-            break
-    best = refine(character, dive, best, names, low, high)
+
+    def landed(evaluation) -> bool:
+        m = evaluation.extra
+        return m.get("outcome") == "success" and m.get("entry_angle_from_vertical_deg", 90) < 8.0
+
+    result = minimize(functools.partial(dive_trial, character, dive), space, method, budget, seed, start=first,
+                      sigma=1.0 if method == "cma" else 0.25, population=population, progress=progress,
+                      stop=landed, executor=executor,
+                      options={"CMA_stds": spreads} if method == "cma" else None)
+    momentum = max([abs(e.extra["takeoff_angular_momentum"]) for e in result.evaluations
+                    if e.extra.get("entered_water") and not e.extra.get("hit_platform")] + [0.0])
+    best = (result.best.score, result.best.settings, result.best.extra)
+    if refine_best:
+        best = refine(character, dive, best, names, space.low, space.high, executor)
     score, settings, m = best
     keep = ("outcome", "somersaults", "twists", "entry_angle_from_vertical_deg", "takeoff_angular_momentum",
             "flight_time", "angular_momentum_drift", "hit_platform")
@@ -125,7 +134,7 @@ REFINE_STEPS = 5
 REFINE_SPAN = 0.06          # share of each range either side of the best
 
 
-def refine(character: str, dive: dict, best: tuple, names: list, low, high) -> tuple:
+def refine(character: str, dive: dict, best: tuple, names: list, low, high, executor) -> tuple:
     """A grid over the two settings the dive is most sensitive to (the lift-off hip angle, and
     the twist lead or the lean), around the search's best, +-6 % of their ranges; keeps the cell
     whose own score plus its neighbours' mean is lowest, so that the table holds a setting that
@@ -136,12 +145,13 @@ def refine(character: str, dive: dict, best: tuple, names: list, low, high) -> t
     axes = [np.clip(centre[n] + np.linspace(-REFINE_SPAN, REFINE_SPAN, REFINE_STEPS) * (high[k] - low[k]), low[k], high[k])
             for n, k in ((first, i), (second, j))]
     grid = np.full((REFINE_STEPS, REFINE_STEPS), np.inf)
+    cells = [(a, b) for a in range(REFINE_STEPS) for b in range(REFINE_STEPS)]
+    jobs = [dict(centre, **{first: round(float(axes[0][a]), 4), second: round(float(axes[1][b]), 4)}) for a, b in cells]
     runs = {}
-    for a, va in enumerate(axes[0]):
-        for b, vb in enumerate(axes[1]):
-            settings = dict(centre, **{first: round(float(va), 4), second: round(float(vb), 4)})
-            grid[a, b], m = evaluate(character, dive, settings)
-            runs[a, b] = (grid[a, b], settings, m)
+    for (a, b), settings, (score, m) in zip(cells, jobs, executor.map(functools.partial(dive_trial, character, dive),
+                                                                       jobs)):
+        grid[a, b] = score
+        runs[a, b] = (score, settings, m)
     robust = np.full_like(grid, np.inf)
     for a in range(REFINE_STEPS):
         for b in range(REFINE_STEPS):
@@ -173,9 +183,18 @@ def table_limits(dives: list[dict]) -> dict:
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--character", choices=sorted(CALIBRATED_DIVES), action="append")
-    parser.add_argument("--iterations", type=int, default=5)
-    parser.add_argument("--population", type=int, default=12)
+    parser.add_argument("--iterations", type=int, default=5, help="batches of the search (budget: this x --population)")
+    parser.add_argument("--population", type=int, default=12, help="dives per batch of the search")
+    parser.add_argument("--budget", type=int, help="simulated dives the search may run per dive "
+                        "(default --iterations x --population)")
+    parser.add_argument("--method", choices=("cma", "anneal"), default="cma")
     parser.add_argument("--seed", type=int, default=1)
+    parser.add_argument("--workers", type=int, default=None, help="processes running the dives (default: one per "
+                        "CPU; the same result as 1)")
+    parser.add_argument("--refine", action=argparse.BooleanOptionalAction, default=True,
+                        help="the robustness grid after the search (25 dives)")
+    parser.add_argument("--tables", type=Path, default=None,
+                        help="directory the table is written to (default: the shipped tables, sim_core/tuned/tables; read from there too)")
     parser.add_argument("--limits-only", action="store_true",
                         help="only recompute the table's limits from its rows (after a change of this script's rules)")
     parser.add_argument("--fresh", action="store_true", help="search from the middle of the space, not from the table")
@@ -183,24 +202,28 @@ def main() -> None:
     parser.add_argument("--only", type=int, action="append",
                         help="calibrate only the dive with this index in the character's list; keep the others' table rows")
     args = parser.parse_args()
+    budget = args.budget if args.budget is not None else args.iterations * args.population
     for character in args.character or sorted(CALIBRATED_DIVES):
         started = time.time()
-        stored = tuned.load("dives", character)
+        stored = tuned.load("dives", character, args.tables) or tuned.load("dives", character)  # where it starts
         old = stored["dives"] if stored is not None else []
         if args.limits_only:
             table = dict(stored, limits=table_limits(old))
-            path = tuned.save("dives", character, table, strengths=["human"])
+            path = tuned.save("dives", character, table, strengths=["human"], directory=args.tables)
             print(f"{character}: limits {table['limits']}")
             continue
-        with NoLimits():
-            starts = [dict(old[k]["settings"] if k < len(old) and not args.fresh else {},
-                           **json.loads(args.start or "{}")) for k in range(len(CALIBRATED_DIVES[character]))]
-            dives = [search(character, dive, args.iterations, args.population, args.seed, starts[k])
+        starts = [dict(old[k]["settings"] if k < len(old) and not args.fresh else {},
+                       **json.loads(args.start or "{}")) for k in range(len(CALIBRATED_DIVES[character]))]
+        with executor_for(args.workers) as executor:
+            dives = [search(character, dive, budget, args.population, args.seed, starts[k], args.method, executor,
+                            args.refine)
                      if args.only is None or k in args.only or k >= len(old) else old[k]
                      for k, dive in enumerate(CALIBRATED_DIVES[character])]
         limits = table_limits(dives)
-        path = tuned.save("dives", character, {"script": "scripts/calibrate_dives.py", "search": vars(args),
-                                               "dives": dives, "limits": limits}, strengths=["human"])
+        path = tuned.save("dives", character, {"script": "scripts/calibrate_dives.py",
+                                               "search": {**vars(args), "tables": str(args.tables), "budget": budget},
+                                               "dives": dives, "limits": limits}, strengths=["human"],
+                          directory=args.tables)
         print(f"{character}: wrote {path} in {time.time() - started:.0f} s")
         for d in dives:
             print(f"  {d['measured']}")

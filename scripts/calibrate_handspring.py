@@ -3,7 +3,8 @@
 aspect of this maneuver that required the most tuning was generating sufficient backwards angular
 velocity to land in a handstand position"), done by a search.
 
-For a character and strength, a cross-entropy search over the settings of every step (the sit,
+For a character and strength, a search (the search service, sim_core.tuning: CMA-ES by default,
+or annealing) over the settings of every step (the sit,
 the thrust and arm swing, the arched flight, the hands' stiffness, the push's delay, moves and
 damping, the snap-down and the landing; the flights' physics step, `flight_step_division`, is not
 searched: it stays as started, 1 in rows made before it, `--start '{"flight_step_division": 8}'`) minimises, with every quantity read off the simulated handspring
@@ -24,19 +25,23 @@ neighbours - push delay and landing lean +-0.01 - succeed too); where none did, 
 recorded under "not_found" and the behaviour refuses that handspring with it. The search starts
 from the table's entry (or from --start) and writes the table only when it found one.
 
-    python3 scripts/calibrate_handspring.py --character man --strength unlimited --processes 2
+    python3 scripts/calibrate_handspring.py --character man --strength unlimited --workers 2
+    python3 scripts/calibrate_handspring.py --budget 4 --no-refine --tables /tmp/t     # a quick look
+
+``--budget`` is the number of simulated handsprings the search may run (default ``--iterations`` x
+``--population``); choosing the most robust of the handsprings found runs up to 32 more
+(``--no-refine`` keeps the best by score). ``--workers`` (or ``--processes``) runs them in that
+many processes (the same result as 1).
 """
 from __future__ import annotations
 
 import argparse
+import functools
 import json
 import math
 import sys
 import time
-from multiprocessing import Pool
 from pathlib import Path
-
-import numpy as np
 
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
@@ -45,6 +50,7 @@ from sim_core.control.handspring import HAND_SETTINGS, OLD_ROW, SETTINGS, Handsp
 from sim_core.control.tuned import kept_message, merge_search, names_option, searched_and_fixed  # noqa: E402
 from sim_core import tuned  # noqa: E402
 from sim_core.simulate import RunRequest, run  # noqa: E402
+from sim_core.tuning import Space, StopAfterFound, executor_for, minimize  # noqa: E402
 
 DURATION = 5.0
 DRIFT_GOAL = 0.009           # angular momentum drift in flight the search aims below (the tests' limit is 1 %)
@@ -90,53 +96,50 @@ def score(m: dict) -> float:
     return s
 
 
+def print_evaluation(evaluation) -> None:
+    """--verbose: every run of the search, with its settings."""
+    print(f"    {evaluation.score:.3f} {evaluation.extra['outcome']} {json.dumps(evaluation.settings)}", flush=True)
+
+
 def found(m: dict) -> bool:
     return m["outcome"] == "success" and (m["angular_momentum_drift"] or 0.0) < DRIFT_GOAL
 
 
-def search(character: str, strength: str, iterations: int, population: int, seed: int, start: dict,
-           processes: int, verbose: bool = False, spread: float = 0.15,
-           only: list | None = None) -> tuple[float, dict, dict]:
+def handspring_trial(character: str, strength: str, fixed: dict, settings: dict) -> tuple[float, dict]:
+    """evaluate() of the searched ``settings`` with the ``fixed`` ones, for the search's executor."""
+    return evaluate((character, strength, dict(fixed, **settings)))
+
+
+def search(character: str, strength: str, budget: int, population: int, seed: int, start: dict,
+           executor, verbose: bool = False, spread: float = 0.15, only: list | None = None,
+           method: str = "cma", refine_best: bool = True) -> tuple[float, dict, dict]:
+    """A search (sim_core.tuning) from ``start``, stopped once ROBUST_CANDIDATES handsprings are
+    found; then the most robust of them (most_robust)."""
     names, fixed = searched_and_fixed(SETTINGS, SPACE, only, start)
-    low = np.array([SPACE[n][0] for n in names])
-    high = np.array([SPACE[n][1] for n in names])
-    rng = np.random.default_rng(seed)
-    mean, std = np.clip([start[n] for n in names], low, high), spread * (high - low)
-    best = (np.inf, None, None)
-    successes = []
-    with Pool(processes) as pool:
-        for iteration in range(iterations):
-            samples = np.clip(rng.normal(mean, std, size=(population, len(names))), low, high)
-            if iteration == 0:
-                samples[0] = mean
-            candidates = [dict(fixed, **{n: round(float(v), 4) for n, v in zip(names, x)}) for x in samples]
-            results = pool.map(evaluate, [(character, strength, c) for c in candidates])
-            for settings, (s, m) in zip(candidates, results):
-                if found(m):
-                    successes.append((s, settings, m))
-                if s < best[0]:
-                    best = (s, settings, m)
-                    if verbose:
-                        print(f"    {s:.3f} {m['outcome']} {json.dumps(settings)}", flush=True)
-            order = np.argsort([s for s, _ in results])
-            elite = samples[order[: max(2, population // 5)]]
-            mean, std = elite.mean(axis=0), np.maximum(elite.std(axis=0), 0.02 * (high - low))
-            m = best[2]
-            print(f"  {character} ({strength}) iteration {iteration + 1}/{iterations}: best score {best[0]:.3f} "
-                  f"({m['outcome']}, rotation {m['rotation']:.2f} rad, before a fall {m['rotation_before_fall']:.2f}, "
-                  f"rise {m['com_rise']:.2f} m); {len(successes)} found", flush=True)
-            if len(successes) >= 4:
-                break
-        if not successes:
-            return best
-        return most_robust(pool, character, strength, successes)
+    space = Space({n: SPACE[n] for n in names}, decimals=4)
+    first = {n: min(max(start[n], SPACE[n][0]), SPACE[n][1]) for n in names}
+    found_ones = StopAfterFound(lambda e: found(e.extra), ROBUST_CANDIDATES, print_evaluation if verbose else None)
+
+    def progress(done, total, best):
+        m = best.extra
+        print(f"  {character} ({strength}) {done}/{total} handsprings: best score {best.score:.3f} "
+              f"({m['outcome']}, rotation {m['rotation']:.2f} rad, before a fall {m['rotation_before_fall']:.2f}, "
+              f"rise {m['com_rise']:.2f} m); {len(found_ones.found)} found", flush=True)
+
+    result = minimize(functools.partial(handspring_trial, character, strength, fixed), space, method, budget, seed,
+                      start=first, sigma=spread, population=population, progress=progress, stop=found_ones,
+                      executor=executor)
+    return found_ones.choose(result, fixed, (lambda found: most_robust(executor, character, strength, found)) if refine_best else None)
 
 
-def most_robust(pool, character, strength, successes) -> tuple[float, dict, dict]:
+ROBUST_CANDIDATES = 4        # handsprings found before choosing among them
+
+
+def most_robust(executor, character, strength, successes) -> tuple[float, dict, dict]:
     """Of the handsprings found (the best four by score), the one whose eight neighbours (push
     delay and landing lean a step either way) succeed most often, then by score."""
     ranked = []
-    for s, settings, m in sorted(successes, key=lambda r: r[0])[:4]:
+    for s, settings, m in sorted(successes, key=lambda r: r[0])[:ROBUST_CANDIDATES]:
         jobs = []
         for a in (-1, 0, 1):
             for b in (-1, 0, 1):
@@ -145,7 +148,7 @@ def most_robust(pool, character, strength, successes) -> tuple[float, dict, dict
                     near["push_delay"] = max(0.0, near["push_delay"] + a * NEIGHBOUR_STEP["push_delay"])
                     near["land_lean"] = near["land_lean"] + b * NEIGHBOUR_STEP["land_lean"]
                     jobs.append((character, strength, near))
-        neighbours = sum(found(r[1]) for r in pool.map(evaluate, jobs))
+        neighbours = sum(found(r[1]) for r in executor.map(evaluate, jobs))
         print(f"    candidate score {s:.3f}: {neighbours}/8 neighbours succeed", flush=True)
         ranked.append((-neighbours, s, settings, dict(m, neighbours_succeeding=neighbours)))
     _, s, settings, m = min(ranked, key=lambda r: (r[0], r[1]))
@@ -156,12 +159,21 @@ def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--character", choices=("man", "woman"), default="man")
     parser.add_argument("--strength", choices=("human", "unlimited"), default="unlimited")
-    parser.add_argument("--iterations", type=int, default=30)
-    parser.add_argument("--population", type=int, default=40)
+    parser.add_argument("--iterations", type=int, default=30, help="batches of the search (budget: this x --population)")
+    parser.add_argument("--population", type=int, default=40, help="handsprings per batch of the search")
+    parser.add_argument("--budget", type=int, help="simulated handsprings the search may run "
+                        "(default --iterations x --population)")
+    parser.add_argument("--method", choices=("cma", "anneal"), default="cma")
     parser.add_argument("--seed", type=int, default=1)
-    parser.add_argument("--processes", type=int, default=2)
+    parser.add_argument("--workers", "--processes", dest="workers", type=int, default=None,
+                        help="processes running the handsprings (default: one per CPU; the same result as 1)")
     parser.add_argument("--spread", type=float, default=0.15,
-                        help="the first samples' standard deviation, as a share of each setting's search range")
+                        help="the search's first step, as a share of each setting's search range")
+    parser.add_argument("--refine", action=argparse.BooleanOptionalAction, default=True,
+                        help="choose the most robust of the handsprings found (up to 32 more runs)")
+    parser.add_argument("--tables", type=Path, default=None,
+                        help="directory the table is written to (default: the shipped tables, sim_core/tuned/tables); the search starts from "
+                             "the shipped table")
     parser.add_argument("--verbose", action="store_true", help="print every improvement with its settings")
     parser.add_argument("--start", help="JSON settings to start from, over the table's (or the schema's defaults)")
     names_option(parser, SPACE, HAND_SETTINGS)
@@ -172,8 +184,10 @@ def main() -> None:
     defaults = {k: v for k, v in Handspring.schema.defaults().items() if k in SETTINGS}
     start = {**defaults, **OLD_ROW, **(old[0]["settings"] if old else {}), **json.loads(args.start or "{}")}
     start["push_damping"] = start["push_damping"] or start["push_gain"]     # the old rule, as a searched value
-    s, settings, m = search(args.character, args.strength, args.iterations, args.population, args.seed, start,
-                            args.processes, args.verbose, args.spread, args.names)
+    budget = args.budget if args.budget is not None else args.iterations * args.population
+    with executor_for(args.workers) as executor:
+        s, settings, m = search(args.character, args.strength, budget, args.population, args.seed, start,
+                                executor, args.verbose, args.spread, args.names, args.method, args.refine)
     rows, missing = merge_search(
         table["handsprings"], table.get("not_found", []), {"strength": args.strength}, found(m),
         {"settings": settings, "score": round(s, 4), "measured": m},
@@ -181,7 +195,7 @@ def main() -> None:
         f"angular momentum drift in flight {100 * (m['angular_momentum_drift'] or 0):.2f} %")
     tuned.save("handspring", args.character, {"script": "scripts/calibrate_handspring.py", "duration": DURATION,
                                               "handsprings": rows, "not_found": missing},
-               strengths=sorted({e["strength"] for e in rows + missing}))
+               strengths=sorted({e["strength"] for e in rows + missing}), directory=args.tables)
     kept = kept_message(found(m), m["outcome"] == "success", DRIFT_GOAL, bool(old))
     print(f"{args.character} ({args.strength}): {m['outcome']}, drift {100 * (m['angular_momentum_drift'] or 0):.2f} % "
           f"after {time.time() - started:.0f} s - {kept}")

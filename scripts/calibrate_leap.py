@@ -43,8 +43,8 @@ sys.path.insert(0, str(ROOT))
 import numpy as np                                              # noqa: E402
 
 from sim_core.control.leap import AIRBORNE_HEIGHT, uncovered_gaps   # noqa: E402
-from sim_core.control.target_jump import (GROUND_AIR_TIME, leap_params, plan_jump, store_plan,  # noqa: E402
-                                          stored_plan)
+from sim_core.control.target_jump import GROUND_AIR_TIME, leap_params, stored_plan  # noqa: E402
+from sim_core.planning.jump import plan_jump, store_plan        # noqa: E402
 from sim_core import tuned                                       # noqa: E402
 from sim_core.simulate import RunRequest, run                   # noqa: E402
 
@@ -171,7 +171,7 @@ def broad_leap(character: str, aim: float) -> tuple[dict, dict, object]:
                "windup_time": BROAD_WINDUP, "strength": "human"}
     plan = stored_plan(character, request)
     if not (plan and plan["measured"]["outcome"] == "success"):
-        plan = plan_jump(character, target, GROUND_AIR_TIME, BROAD_WINDUP, trials=BROAD_TRIALS)
+        plan = plan_jump(character, target, GROUND_AIR_TIME, BROAD_WINDUP, budget=BROAD_TRIALS)
         store_plan(character, request, plan, "scripts/calibrate_leap.py")
     params = leap_params(plan["settings"], target, BROAD_WINDUP)
     traj = run(RunRequest("leap", character, params=params, duration=BROAD_WINDUP + GROUND_AIR_TIME + 2.5))

@@ -4,7 +4,8 @@ of tuning" Wooten describes in §8.4 (leap settings until the height and spin al
 then the timing of the opening), done by a search.
 
 For each character, direction (backward, forward) and strength (human torque limits,
-unlimited as the thesis ran) a cross-entropy search over the take-off settings (crouch height,
+unlimited as the thesis ran) a search (the search service, sim_core.tuning: CMA-ES by default, or
+annealing) over the take-off settings (crouch height,
 torso pitch, COM offset, lean along the thrust, lift-off hip angle, arm swing, thrust damping,
 the tuck's stiffness, damping and move time) and the landing settings (landing lean, opening time, knee bend, foot delta and lead, spin
 placement) minimises, with every quantity read off the simulated somersault,
@@ -27,18 +28,23 @@ whose eight neighbours (lift-off hip angle and landing lean +-0.02 rad) land mos
 
     python3 scripts/calibrate_somersaults.py --character man --direction backward --strength unlimited
     python3 scripts/calibrate_somersaults.py --character woman --direction forward --iterations 20
+    python3 scripts/calibrate_somersaults.py --character man --direction backward --strength unlimited \
+        --budget 4 --no-refine --tables /tmp/t                      # a quick look
+
+``--budget`` is the number of simulated somersaults each search may run (default ``--iterations``
+x ``--population``); choosing the most robust of those found runs up to 32 more (``--no-refine``
+keeps the best by score). ``--workers`` (or ``--processes``) runs them in that many processes (the
+same result as 1).
 """
 from __future__ import annotations
 
 import argparse
+import functools
 import json
 import math
 import sys
 import time
-from multiprocessing import Pool
 from pathlib import Path
-
-import numpy as np
 
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))      # this checkout's sim_core and rigs, not an installed one
@@ -49,6 +55,7 @@ from sim_core.control.tumble import snap_damping  # noqa: E402
 from sim_core.control.tuned import kept_message, merge_search, names_option, searched_and_fixed  # noqa: E402
 from sim_core import tuned  # noqa: E402
 from sim_core.simulate import RunRequest, run  # noqa: E402
+from sim_core.tuning import Space, SerialExecutor, StopAfterFound, executor_for, minimize  # noqa: E402
 
 DURATION = 5.0
 SLIDE_WEIGHT = 20.0         # per m a foot moves after landing beyond the stepping limit (a run on its feet that steps)
@@ -107,52 +114,39 @@ def evaluate_settings(job: tuple) -> tuple[float, dict]:
     return evaluate(*job)
 
 
-def evaluate_all(jobs: list, pool=None) -> list:
-    """evaluate() for every job, in the pool's processes where there is one (in order either way)."""
-    return pool.map(evaluate_settings, jobs) if pool else [evaluate_settings(job) for job in jobs]
+def somersault_trial(character: str, direction: str, strength: str, fixed: dict, settings: dict) -> tuple[float, dict]:
+    """evaluate() of the searched ``settings`` with the ``fixed`` ones, for the search's executor."""
+    return evaluate(character, direction, strength, dict(fixed, **settings))
 
 
-def search(character: str, direction: str, strength: str, iterations: int, population: int, seed: int,
-           start: dict, verbose: bool = False, pool=None, only: list | None = None) -> tuple[float, dict, dict]:
+def search(character: str, direction: str, strength: str, budget: int, population: int, seed: int,
+           start: dict, verbose: bool = False, executor=None, only: list | None = None, method: str = "cma",
+           refine_best: bool = True) -> tuple[float, dict, dict]:
+    """A search (sim_core.tuning) from ``start``, stopped once ROBUST_CANDIDATES somersaults are
+    found; then the most robust of them (most_robust)."""
+    executor = executor or SerialExecutor()
     names, fixed = searched_and_fixed(SETTINGS, SPACE, only, start)
-    low = np.array([SPACE[n][direction][0] for n in names])
-    high = np.array([SPACE[n][direction][1] for n in names])
-    rng = np.random.default_rng(seed)
-    mean, std = np.clip([start[n] for n in names], low, high), 0.12 * (high - low)
-    best = (np.inf, None, None)
-    successes = []
-    for iteration in range(iterations):
-        samples = np.clip(rng.normal(mean, std, size=(population, len(names))), low, high)
-        if iteration == 0:
-            samples[0] = mean
-        scored = []
-        batch = [dict(fixed, **{n: round(float(v), 4) for n, v in zip(names, x)}) for x in samples]
-        jobs = [(character, direction, strength, settings) for settings in batch]
-        for x, settings, (score, m) in zip(samples, batch, evaluate_all(jobs, pool)):
-            scored.append((score, x))
-            if found(m):
-                successes.append((score, settings, m))
-            if score < best[0]:
-                best = (score, settings, m)
-                if verbose:
-                    print(f"    {score:.3f} {m['outcome']} {json.dumps(settings)}", flush=True)
-        scored.sort(key=lambda s: s[0])
-        elite = np.array([x for _, x in scored[: max(2, population // 4)]])
-        mean, std = elite.mean(axis=0), np.maximum(elite.std(axis=0), 0.03 * (high - low))
-        m = best[2]
-        print(f"  {character} {direction} ({strength}) iteration {iteration + 1}/{iterations}: best score "
-              f"{best[0]:.3f} ({m['outcome']}, rotation {m['rotation']:.2f} rad, flight {m['flight_rotation'] or 0:.2f} rad, "
+    space = Space({n: SPACE[n][direction] for n in names}, decimals=4)
+    first = {n: min(max(start[n], SPACE[n][direction][0]), SPACE[n][direction][1]) for n in names}
+    found_ones = StopAfterFound(lambda e: found(e.extra), ROBUST_CANDIDATES, print_evaluation if verbose else None)
+
+    def progress(done, total, best):
+        m = best.extra
+        print(f"  {character} {direction} ({strength}) {done}/{total} somersaults: best score "
+              f"{best.score:.3f} ({m['outcome']}, rotation {m['rotation']:.2f} rad, flight {m['flight_rotation'] or 0:.2f} rad, "
               f"take-off H {m['liftoff_angular_momentum'] or 0:.1f} kg m^2/s)", flush=True)
-        if len(successes) >= ROBUST_CANDIDATES or (successes and iteration == iterations - 1):
-            break
-    return most_robust(character, direction, strength, successes, pool) if successes else best
+
+    result = minimize(functools.partial(somersault_trial, character, direction, strength, fixed), space, method,
+                      budget, seed, start=first, sigma=0.12, population=population, progress=progress, stop=found_ones,
+                      executor=executor)
+    return found_ones.choose(result, fixed, (lambda found: most_robust(character, direction, strength, found, executor)) if refine_best else None)
 
 
 ROBUST_CANDIDATES = 4        # somersaults found before choosing among them
 ROBUST_STEP = 0.02           # rad: the neighbours' change of the lift-off hip angle and the landing lean
 
 
-def most_robust(character: str, direction: str, strength: str, successes: list, pool=None) -> tuple[float, dict, dict]:
+def most_robust(character: str, direction: str, strength: str, successes: list, executor) -> tuple[float, dict, dict]:
     """Of the somersaults found (the best few by score), the one whose eight neighbours (lift-off hip
     angle and landing lean +-0.02 rad, the settings the outcome is most sensitive to) succeed most
     often, then by score: a table entry that still lands when the state at take-off differs a little."""
@@ -161,11 +155,16 @@ def most_robust(character: str, direction: str, strength: str, successes: list, 
         jobs = [(character, direction, strength, dict(settings, liftoff_hip=settings["liftoff_hip"] + dh,
                                                       landing_lean=settings["landing_lean"] + dl))
                 for dh in (-ROBUST_STEP, 0.0, ROBUST_STEP) for dl in (-ROBUST_STEP, 0.0, ROBUST_STEP) if dh or dl]
-        neighbours = sum(found(m) for _, m in evaluate_all(jobs, pool))
+        neighbours = sum(found(m) for _, m in executor.map(evaluate_settings, jobs))
         print(f"    candidate score {score:.3f}: {neighbours}/8 neighbours succeed", flush=True)
         ranked.append((-neighbours, score, settings, dict(m, neighbours_succeeding=neighbours)))
     _, score, settings, m = min(ranked, key=lambda r: (r[0], r[1]))
     return score, settings, m
+
+
+def print_evaluation(evaluation) -> None:
+    """--verbose: every run of the search, with its settings."""
+    print(f"    {evaluation.score:.3f} {evaluation.extra['outcome']} {json.dumps(evaluation.settings)}", flush=True)
 
 
 def found(m: dict) -> bool:
@@ -179,20 +178,32 @@ def main() -> None:
     parser.add_argument("--character", choices=("man", "woman"), action="append")
     parser.add_argument("--direction", choices=DIRECTIONS, action="append")
     parser.add_argument("--strength", choices=("human", "unlimited"), action="append")
-    parser.add_argument("--iterations", type=int, default=12)
-    parser.add_argument("--population", type=int, default=24)
+    parser.add_argument("--iterations", type=int, default=12, help="batches of a search (budget: this x --population)")
+    parser.add_argument("--population", type=int, default=24, help="somersaults per batch of a search")
+    parser.add_argument("--budget", type=int, help="simulated somersaults each search may run "
+                        "(default --iterations x --population)")
+    parser.add_argument("--method", choices=("cma", "anneal"), default="cma")
+    parser.add_argument("--refine", action=argparse.BooleanOptionalAction, default=True,
+                        help="choose the most robust of the somersaults found (up to 32 more runs)")
+    parser.add_argument("--tables", type=Path, default=None,
+                        help="directory the tables are written to (default: the shipped tables, sim_core/tuned/tables); the searches start "
+                             "from the shipped tables")
     parser.add_argument("--seed", type=int, default=1)
     parser.add_argument("--fresh", action="store_true",
                         help="start from START, not from the table's entry (its calibrated row, else its best searched run)")
     parser.add_argument("--verbose", action="store_true", help="print every improvement with its settings")
     parser.add_argument("--start", help="JSON settings to start from, over the table's (or START's)")
     names_option(parser, SPACE, LANDING_SETTINGS)
-    parser.add_argument("--processes", type=int, default=1,
-                        help="simulate a population's somersaults in this many processes (the same result as 1)")
+    parser.add_argument("--workers", "--processes", dest="workers", type=int, default=None,
+                        help="simulate the somersaults in this many processes (default: one per CPU; the same "
+                             "result as 1)")
     args = parser.parse_args()
-    if args.processes < 1:
-        parser.error(f"--processes {args.processes}: must be at least 1")
-    pool = Pool(args.processes) if args.processes > 1 else None
+    budget = args.budget if args.budget is not None else args.iterations * args.population
+    with executor_for(args.workers) as executor:
+        calibrate(args, budget, executor)
+
+
+def calibrate(args, budget: int, executor) -> None:
     for character in args.character or ("man", "woman"):
         for direction in args.direction or DIRECTIONS:
             for strength in args.strength or ("human", "unlimited"):
@@ -206,8 +217,9 @@ def main() -> None:
                     start = dict(start, **json.loads(args.start))
                 if not start["tuck_damping"]:                # the old rule's damping, as a searched value
                     start["tuck_damping"] = snap_damping(start["tuck_stiffness"])
-                score, settings, m = search(character, direction, strength, args.iterations, args.population,
-                                            args.seed, start, args.verbose, pool, args.names)
+                score, settings, m = search(character, direction, strength, budget, args.population,
+                                            args.seed, start, args.verbose, executor, args.names, args.method,
+                                            args.refine)
                 rows, missing = merge_search(
                     table["somersaults"], table.get("not_found", []), {"direction": direction, "strength": strength},
                     found(m), {"settings": settings, "score": round(score, 4), "measured": m},
@@ -216,7 +228,7 @@ def main() -> None:
                     f"angular momentum {m['liftoff_angular_momentum'] or 0:.1f} kg m^2/s")
                 tuned.save("somersaults", character, {"script": "scripts/calibrate_somersaults.py", "duration": DURATION,
                                                       "somersaults": rows, "not_found": missing},
-                           strengths=sorted({e["strength"] for e in rows + missing}))
+                           strengths=sorted({e["strength"] for e in rows + missing}), directory=args.tables)
                 kept = kept_message(found(m), m["outcome"] == "success", DRIFT_GOAL, bool(old))
                 print(f"{character} {direction} ({strength}): {m['outcome']}, drift {100 * (m['angular_momentum_drift'] or 0):.2f} % "
                       f"after {time.time() - started:.0f} s - {kept}")

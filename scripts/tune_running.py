@@ -5,7 +5,7 @@ sim_core/tuned/tables/running_<character>.json, which the running behaviour read
 
     python3 scripts/tune_running.py --speeds 3.5 --minutes 10     # simulated annealing at 3.5 m/s
     python3 scripts/tune_running.py --speeds 2.5 3.5 4.5 5.0 --minutes 40
-    python3 scripts/tune_running.py --method cma                  # CMA-ES, if the 'cma' package is installed
+    python3 scripts/tune_running.py --method cma                  # CMA-ES
     python3 scripts/tune_running.py --evaluate                    # only score the current table
     python3 scripts/tune_running.py --speeds 3.5 --courses --duration 30 --method cma   # ... and on the tight courses
     python3 scripts/tune_running.py --joint --speeds 4.83 5.0 --gait-at 4.83 --method cma --duration 30   # two rows at once
@@ -58,8 +58,10 @@ speeds named (Fig. 12's figures are the man's at 4.83 m/s; the 5.0 m/s runs then
 their speed, falls, smoothness and attitude). ``--start`` takes either one row for every searched
 speed or ``{"4.83": {name: value}, ...}``.
 
-Each evaluation runs its scenarios in a pool of ``--workers`` processes (2 on the project's
-machine). The search is time-boxed by ``--minutes``; the best point found is written only if it
+The searches are the search service's (sim_core.tuning: SciPy's annealing or CMA-ES, in the
+columns scaled to [0, 1] by their ranges). Each evaluation runs its scenarios in a pool of
+``--workers`` processes (default one per CPU). A search runs at most ``--max-evaluations``
+evaluations and is time-boxed by ``--minutes``; the best point found is written only if it
 scores better than the current defaults, together with both scores, the evaluation's weights
 and the search settings (the file is written atomically: never half-written).
 """
@@ -70,7 +72,6 @@ import json
 import math
 import sys
 import time
-from multiprocessing import Pool
 from pathlib import Path
 
 import numpy as np
@@ -81,6 +82,7 @@ sys.path.insert(0, str(ROOT))
 from sim_core.control.running import (SCHEDULED_CONSTANTS, TABLE_NAMES, TUNED_NAMES, Running,  # noqa: E402
                                       SpeedTable)
 from sim_core import tuned  # noqa: E402
+from sim_core.tuning import Space, deadline_stop, executor_for, minimize  # noqa: E402
 
 COLUMNS = TABLE_NAMES + tuple(SCHEDULED_CONSTANTS)     # what a row of the table can hold
 
@@ -201,41 +203,18 @@ def bounds(names=TUNED_NAMES) -> list[tuple[float, float]]:
             else (Running.schema.by_name[n].minimum, Running.schema.by_name[n].maximum) for n in names]
 
 
-def anneal(evaluate, x0, deadline, max_evaluations, seed):
-    """scipy's dual_annealing (the paper used simulated annealing), stopped at the deadline."""
-    from scipy.optimize import dual_annealing
-    best = {"x": list(x0), "f": evaluate(x0)}
-
-    def track(x, f, context):
-        if f < best["f"]:
-            best.update(x=list(map(float, x)), f=float(f))
-        return time.monotonic() > deadline
-
-    try:
-        dual_annealing(evaluate, bounds(evaluate.names) * len(evaluate.rows), x0=np.array(x0), maxfun=max_evaluations,
-                       seed=seed, callback=track, no_local_search=True, initial_temp=2000.0)
-    except StopIteration:
-        pass
-    return best
-
-
-def cma_search(evaluate, x0, deadline, max_evaluations, seed, sigma=0.1):
-    """CMA-ES in the columns scaled to [0, 1] by their ranges; ``sigma``: the initial step, as a
-    share of each range."""
-    import cma  # optional dependency
-    lo, hi = np.array(bounds(evaluate.names) * len(evaluate.rows)).T
-    scale = hi - lo
-    es = cma.CMAEvolutionStrategy(((np.array(x0) - lo) / scale).tolist(), sigma,
-                                  {"bounds": [0, 1], "seed": seed, "maxfevals": max_evaluations, "verbose": -9})
-    best = {"x": list(x0), "f": evaluate(x0)}
-    while not es.stop() and time.monotonic() < deadline:
-        z = es.ask()
-        f = [evaluate(lo + np.array(zi) * scale) for zi in z]
-        es.tell(z, f)
-        k = int(np.argmin(f))
-        if f[k] < best["f"]:
-            best.update(x=(lo + np.array(z[k]) * scale).tolist(), f=float(f[k]))
-    return best
+def search(evaluate, x0, deadline, max_evaluations, seed, method, sigma=0.1):
+    """The search service over the candidate's columns (every row's, one after the other): scipy's
+    dual_annealing (the paper used simulated annealing; no local search, initial temperature 2000)
+    or CMA-ES (``sigma``: the initial step, as a share of each range), from ``x0``, at most
+    ``max_evaluations`` evaluations and stopped at the ``deadline`` (time.monotonic())."""
+    columns = [f"{speed:g} {name}" for speed in evaluate.rows for name in evaluate.names]
+    space = Space(dict(zip(columns, bounds(evaluate.names) * len(evaluate.rows))))
+    result = minimize(lambda settings: evaluate([settings[c] for c in columns]), space, method, max_evaluations,
+                      seed, start=dict(zip(columns, map(float, x0))), sigma=sigma,
+                      stop=deadline_stop(deadline - time.monotonic()),
+                      options={"initial_temp": 2000.0} if method == "anneal" else None)
+    return {"x": [result.best.settings[c] for c in columns], "f": result.best.score}
 
 
 def start_rows(start: dict, speeds: list[float]) -> dict[float, dict]:
@@ -314,7 +293,7 @@ def steering_search(args) -> int:
     x0 = np.array([Running.schema.by_name[n].default for n in names], dtype=float)
     speed = 3.5
     history = []
-    with Pool(args.workers) as pool:
+    with executor_for(args.workers) as pool:
         def evaluate(x) -> float:
             values = dict(zip(names, map(float, x)))
             terms = pool.map(steering_scenario, [(values, c, d, speed) for c, d in STEERING_COURSES])
@@ -324,14 +303,10 @@ def steering_search(args) -> int:
             print(f"  {len(history):4d} {score:8.4f} " + " ".join(f"t_up={s['t_up']:.1f} v={s['mean_speed']:.2f} dev={s['deviation']:.2f}"
                                                                 for s in terms) + " " + json.dumps({k: round(v, 4) for k, v in values.items()}), flush=True)
             return score
-        import cma
-        deadline = time.monotonic() + 60.0 * args.minutes
-        baseline = evaluate(x0)
-        es = cma.CMAEvolutionStrategy(((x0 - lo) / (hi - lo)).clip(0, 1).tolist(), 0.2,
-                                      {"bounds": [0, 1], "seed": args.seed, "maxfevals": args.max_evaluations, "verbose": -9})
-        while not es.stop() and time.monotonic() < deadline:
-            z = es.ask()
-            es.tell(z, [evaluate(lo + np.array(zi) * (hi - lo)) for zi in z])
+        result = minimize(lambda values: evaluate([values[n] for n in names]), Space(STEERING_CONSTANTS), "cma",
+                          args.max_evaluations, args.seed, start=dict(zip(names, x0.clip(lo, hi))), sigma=0.2,
+                          stop=deadline_stop(60.0 * args.minutes))
+        baseline = result.evaluations[0].score
     best = min(history, key=lambda h: h[1])
     print(f"steering: {len(history)} evaluations, baseline {baseline:.4f}, best {best[1]:.4f}")
     if best[1] < baseline:
@@ -352,7 +327,8 @@ def main(argv=None) -> int:
     ap.add_argument("--minutes", type=float, default=20.0, help="time budget for all speeds together")
     ap.add_argument("--max-evaluations", type=int, default=300, help="per speed")
     ap.add_argument("--method", choices=("anneal", "cma"), default="anneal")
-    ap.add_argument("--workers", type=int, default=2)
+    ap.add_argument("--workers", type=int, default=None, help="processes running an evaluation's runs (default: one "
+                    "per CPU)")
     ap.add_argument("--names", nargs="+", default=list(TUNED_NAMES), choices=list(COLUMNS),
                     help="parameters searched (default the five of Hodgins & Pollard; the table has three more, "
                          "and the scheduled constants of the stance and swing laws)")
@@ -377,6 +353,9 @@ def main(argv=None) -> int:
     ap.add_argument("--gait-at", type=float, nargs="+", default=None, metavar="SPEED",
                     help="the Fig. 12 gait term counts only in the runs at these speeds (default: every run from "
                          f"{GAIT_FROM:g} m/s up)")
+    ap.add_argument("--tables", type=Path, default=None,
+                    help="directory the table is written to (default: the shipped tables, sim_core/tuned/tables); the search starts from the "
+                         "shipped table")
     ap.add_argument("--log", help="append each evaluation (row, score, runs) as a JSON line to this file")
     ap.add_argument("--steering", action="store_true",
                     help="search the steering constants on a 90-degree turn and a figure eight (CMA-ES; prints them)")
@@ -396,7 +375,7 @@ def main(argv=None) -> int:
     started = time.monotonic()
     per_speed = {}          # this search's rows' records, merged into the file's when it is written
     new_values = {}
-    with Pool(args.workers) as pool:
+    with executor_for(args.workers) as pool:
         groups = [tuple(args.speeds)] if args.joint else [(v,) for v in args.speeds]
         for k, rows in enumerate(groups):
             speed = rows[0] if len(rows) == 1 else list(rows)
@@ -412,10 +391,7 @@ def main(argv=None) -> int:
             stored_row = [table.at(n, v) for v in rows for n in args.names]
             # what a better row must beat is the stored one, also when the search starts elsewhere
             baseline = evaluate(stored_row) if x0 != stored_row else None
-            if args.method == "anneal":
-                best = anneal(evaluate, x0, deadline, args.max_evaluations, args.seed)
-            else:
-                best = cma_search(evaluate, x0, deadline, args.max_evaluations, args.seed, args.sigma)
+            best = search(evaluate, x0, deadline, args.max_evaluations, args.seed, args.method, args.sigma)
             baseline = evaluate.history[0][1] if baseline is None else baseline
             print(f"{label} m/s: {len(evaluate.history)} evaluations, baseline {baseline:.4f}, best {best['f']:.4f}",
                   flush=True)
@@ -440,7 +416,7 @@ def main(argv=None) -> int:
     # the rows found go into the table as it is now: another search (of other speeds) may have written it
     # since this one started
     table = with_found_rows(SpeedTable.load(args.character), args.names, new_values)
-    stored = tuned.load("running", args.character) or {}
+    stored = tuned.load("running", args.character, args.tables) or tuned.load("running", args.character) or {}
     per_speed = {**stored.get("evaluation", {}).get("per_speed", {}), **per_speed}
     speeds = table.speeds
     # as stored, unrounded (the runs are chaotic in them); not table.at() at the knots, which can change
@@ -459,7 +435,8 @@ def main(argv=None) -> int:
                        "duration_s": args.duration, "strength": args.strength, "per_speed": per_speed},
         "search": {"method": args.method, "minutes": round(elapsed / 60, 2), "seed": args.seed},
         "command": "python3 scripts/tune_running.py " + " ".join(argv if argv is not None else sys.argv[1:]),
-    }, strengths=["unlimited" if args.strength == "unlimited" else "human"])   # a factor scales the human limits
+    }, strengths=["unlimited" if args.strength == "unlimited" else "human"],   # a factor scales the human limits
+        directory=args.tables)
     print(f"wrote {path}")
     unchecked = [] if args.faster else faster_speeds(speeds, new_values)
     if unchecked:

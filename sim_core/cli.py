@@ -1,4 +1,4 @@
-"""Command line: python -m sim_core {list, describe, simulate, replay, bench, balance-report}.
+"""Command line: python -m sim_core {list, describe, simulate, plan, replay, bench, balance-report}.
 
 Errors a user can cause print one line ('error: ...') and exit with status 2; nothing is written.
 ``simulate`` prints a JSON summary (outcome and metrics) as its last line.
@@ -78,11 +78,34 @@ def cmd_describe(args) -> int:
     return 0
 
 
+def _plan_progress(done: int, total: int, best: dict) -> None:
+    print(f"planning: {done}/{total} trials, nearest so far lands at ({best['landing'][0]:.2f}, "
+          f"{best['landing'][1]:.2f}) m after {best['air_time']:.2f} s ({best['outcome']})", file=sys.stderr, flush=True)
+
+
+def _use_store(args) -> None:
+    """--store DIR: the user's plan store for this command (read and written), as
+    $SIM_ATHLETICS_PLANS would set it."""
+    if getattr(args, "store", None):
+        import os
+        from sim_core.control.target_jump import PLAN_STORE_VARIABLE
+        os.environ[PLAN_STORE_VARIABLE] = args.store
+
+
 def cmd_simulate(args) -> int:
     from sim_core.simulate import run
     request = build_request(args)
     if args.out and not args.out.endswith(".npz"):
         raise ParameterError(f"--out {args.out!r} must end in .npz")
+    _use_store(args)
+    # planning runs here, above the loop, not in the behaviour; for planning.PLANNED_BEHAVIOURS only (imported
+    # only then: the search service's imports take about a second)
+    if request.behaviour == "jump_to_target":
+        from sim_core.planning import plan_before_run
+        from sim_core.tuning import executor_for
+        with executor_for(args.workers) as executor:
+            plan_before_run(request, int(request.params.get("plan_trials", 120)), progress=_plan_progress,
+                            executor=executor)
     trajectory = run(request, progress=_progress_printer(args.progress or sys.stderr.isatty()))
     if args.out:
         trajectory.save(args.out)
@@ -90,6 +113,28 @@ def cmd_simulate(args) -> int:
                "behaviour": trajectory.meta["behaviour"], "character": trajectory.meta["character"],
                "out": args.out}
     print(json.dumps(summary))
+    return 0
+
+
+def cmd_plan(args) -> int:
+    from sim_core.control.behaviour import behaviour_class
+    from sim_core.planning import PLANNED_BEHAVIOURS, plan_and_store
+    from sim_core.tuning import executor_for
+    if args.behaviour not in PLANNED_BEHAVIOURS:
+        raise ParameterError(f"behaviour {args.behaviour!r} needs no plan; planned behaviours: "
+                             f"{', '.join(PLANNED_BEHAVIOURS)}")
+    if args.budget < 1:
+        raise ParameterError(f"--budget {args.budget}: must be at least 1 trial (a simulated jump, ~0.5 s)")
+    params = behaviour_class(args.behaviour).schema.parse_assignments(args.set or [])
+    strength = args.strength if args.strength in ("human", "unlimited") else _finite(args.strength, "--strength")
+    _use_store(args)
+    with executor_for(args.workers) as executor:
+        plan = plan_and_store(args.character, params, strength, args.budget, progress=_plan_progress,
+                              executor=executor)
+    from sim_core.control.target_jump import plan_store_dir
+    m = plan["measured"]
+    print(json.dumps({"found": plan["found"], "trials": plan["trials"], "landing": m["landing"],
+                      "air_time": m["air_time"], "outcome": m["outcome"], "store": str(plan_store_dir())}))
     return 0
 
 
@@ -139,7 +184,20 @@ def parser() -> argparse.ArgumentParser:
     add_request_arguments(s)
     s.add_argument("--out", help="trajectory file to write (.npz); written only if the run completes")
     s.add_argument("--progress", action="store_true", help="show a progress bar on stderr")
+    s.add_argument("--workers", type=int, help="processes for planning an unplanned jump (default: one per CPU)")
+    s.add_argument("--store", help="the user's plan store directory (default $SIM_ATHLETICS_PLANS, else "
+                   "~/.cache/sim_athletics/plans)")
     s.set_defaults(func=cmd_simulate)
+    pl = sub.add_parser("plan", help="plan a behaviour's request by simulation and store the plan")
+    pl.add_argument("behaviour")
+    pl.add_argument("--character", default="man", help="character name (see list) or path to a spec .json")
+    pl.add_argument("--set", action="append", metavar="NAME=VALUE", help="behaviour parameter (repeatable)")
+    pl.add_argument("--strength", default="human", help="'human' torque limits, 'unlimited', or a factor")
+    pl.add_argument("--budget", type=int, default=120, help="simulated trials the search may run (default 120)")
+    pl.add_argument("--workers", type=int, help="processes running the trials (default: one per CPU)")
+    pl.add_argument("--store", help="the user's plan store directory (default $SIM_ATHLETICS_PLANS, else "
+                    "~/.cache/sim_athletics/plans)")
+    pl.set_defaults(func=cmd_plan)
     r = sub.add_parser("replay", help="re-run a trajectory's log and report the largest difference")
     r.add_argument("file")
     r.set_defaults(func=cmd_replay)

@@ -48,11 +48,16 @@ class EditLog:
                 "edit_value": np.array(self._values, dtype=np.float64)}
 
 
+def applied_forces(data) -> np.ndarray:
+    """The one array through which a push acts (world-frame force and torque at each body's COM;
+    sim_core.perturbation's pushes write it through the log)."""
+    return data.xfrc_applied
+
+
 def resolve_field(model, data, field: str) -> np.ndarray:
     if field == "opt.gravity":
         return model.opt.gravity
     if field == "push_force":                    # the pushes' forces (sim_core.perturbation)
-        from sim_core.perturbation import applied_forces
         return applied_forces(data)
     return getattr(model, field)
 

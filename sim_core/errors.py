@@ -19,3 +19,7 @@ class UnknownNameError(SimAthleticsError):
 
 class ReplayMismatchError(SimAthleticsError):
     """A replayed run did not reproduce the recorded one."""
+
+
+class Cancelled(SimAthleticsError):
+    """The user cancelled a run, a search or a plan; nothing was written."""

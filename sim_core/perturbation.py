@@ -11,7 +11,7 @@ from dataclasses import asdict, dataclass
 
 import numpy as np
 
-from sim_core.edit_log import EditLog
+from sim_core.edit_log import EditLog, applied_forces
 from sim_core.errors import ParameterError
 
 DIRECTIONS = {"forward": 0.0, "forward_left": 45.0, "left": 90.0, "back_left": 135.0,
@@ -58,11 +58,6 @@ class Push:
 
     def to_dict(self) -> dict:
         return asdict(self)
-
-
-def applied_forces(data) -> np.ndarray:
-    """The one array through which a push acts (world-frame force and torque at each body's COM)."""
-    return data.xfrc_applied
 
 
 class PushSchedule:

@@ -25,7 +25,7 @@ from sim_core.character.spec import CharacterSpec, load_character
 from sim_core.control.behaviour import Behaviour, ControlContext, behaviour_class
 from sim_core.control.servo import ServoBank
 from sim_core.edit_log import EDITABLE_FIELDS, EditLog, EditPlayer
-from sim_core.errors import ParameterError, SimAthleticsError
+from sim_core.errors import Cancelled, ParameterError, SimAthleticsError
 from sim_core.perturbation import Push, PushSchedule
 from sim_core.trajectory import Trajectory
 
@@ -33,10 +33,6 @@ STATE_SPEC = mujoco.mjtState.mjSTATE_INTEGRATION
 # MuJoCo's answer to a diverging state is to reset it (a teleport): any of these ends the run
 DIVERGENCE_WARNINGS = (mujoco.mjtWarning.mjWARN_BADQACC, mujoco.mjtWarning.mjWARN_BADQPOS,
                        mujoco.mjtWarning.mjWARN_BADQVEL)
-
-
-class Cancelled(SimAthleticsError):
-    """The user cancelled a run; nothing was written."""
 
 
 class UnstableSimulation(SimAthleticsError):

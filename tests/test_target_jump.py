@@ -49,11 +49,13 @@ def test_target_params_are_measured_from_the_middle_of_the_feet():
     ({"target_x": 2.5, "air_time": 0.1}, ["needs a take-off at", "strongest take-off of man"]),
     ({"target_x": -1.0}, ["target_x=-1", "allowed range"]),
     ({"target_x": 0.0, "target_y": 1.1, "plan_trials": 0}, ["no stored plan"]),
+    ({"target_x": 1.1, "plan_trials": 120}, ["no stored plan", "python -m sim_core plan jump_to_target "
+                                             "--character man --set target_x=1.1"]),     # a run never plans
     ({"target_x": 0.0, "target_y": 0.0}, ["target_x=0", "not back or on the spot"]),
     ({"target_z": -0.5, "obstacle_height": 0.3, "target_x": 0.5}, ["obstacle_height=0.3", "ahead of the toes"]),
     ({"target_z": 0.5, "obstacle_height": 0.3, "target_x": 1.5}, ["obstacle_height=0.3", "target_z <= 0"]),
     ({"obstacle_height": -0.1}, ["obstacle_height", "allowed range"]),
-    ({"target_x": 1.1, "plan_trials": 0}, ["no stored plan", "plan_trials"]),
+    ({"target_x": 1.1, "plan_trials": 0}, ["no stored plan", "plan it first"]),
 ])
 def test_bad_requests_are_refused_before_simulating(params, words):
     with pytest.raises(ParameterError) as refused:
@@ -148,12 +150,12 @@ def test_a_restarted_search_starts_from_the_stored_plan_nearest_the_target():
     """plan_jump(restart=N) does not continue the request's own earlier search: it starts from the
     stored plan found nearest the target (here the target's own, so its first trial repeats it),
     and the trial counts add up."""
-    from sim_core.control.target_jump import plan_jump
+    from sim_core.planning.jump import plan_jump
     stored = _stored("man", dict(target_x=1.3, target_y=0.0, target_z=0.0, air_time=GROUND_AIR_TIME,
                                  windup_time=WINDUP_TIME))
     assert stored is not None and stored["found"]
     first = []
-    plan = plan_jump("man", (1.3, 0.0, 0.0), GROUND_AIR_TIME, WINDUP_TIME, trials=3, restart=1,
+    plan = plan_jump("man", (1.3, 0.0, 0.0), GROUND_AIR_TIME, WINDUP_TIME, budget=3, restart=1,
                      progress=lambda done, total, best: first.append(dict(best)) if done == 1 else None)
     assert first[0]["landing"] == pytest.approx(stored["measured"]["landing"], abs=1e-6)
     assert plan["found"]
@@ -164,11 +166,11 @@ def test_a_search_given_start_settings_starts_there():
     """plan_jump(start=...) starts the search from the given settings: its first trial is the
     same jump as a run of those settings (here the man's stored 1.3 m plan, asked for a target
     nobody planned, so no earlier search takes over)."""
-    from sim_core.control.target_jump import plan_jump
+    from sim_core.planning.jump import plan_jump
     stored = _stored("man", dict(target_x=1.3, target_y=0.0, target_z=0.0, air_time=GROUND_AIR_TIME,
                                  windup_time=WINDUP_TIME))
     first = []
-    plan_jump("man", (1.27, 0.0, 0.0), GROUND_AIR_TIME, WINDUP_TIME, trials=1, start=stored["settings"],
+    plan_jump("man", (1.27, 0.0, 0.0), GROUND_AIR_TIME, WINDUP_TIME, budget=1, start=stored["settings"],
               progress=lambda done, total, best: first.append(dict(best)) if done == 1 else None)
     assert first[0]["landing"] == pytest.approx(stored["measured"]["landing"], abs=1e-6)
 
@@ -203,7 +205,7 @@ def test_remeasure_stores_what_a_plan_measures_now(tmp_path, monkeypatch):
 
 
 def test_a_sideways_search_varies_the_thrust_lean_and_a_forward_one_does_not():
-    from sim_core.control.target_jump import knobs_for, search_prior
+    from sim_core.planning.jump import knobs_for, search_prior
     assert "thrust_lean" in knobs_for((0.0, 1.0, 0.0, 0.0)) and "thrust_lean" not in knobs_for((1.0, 0.0, 0.0, 0.0))
     assert search_prior("woman", (0.0, 1.0, 0.0, 0.0))["thrust_lean"] == 0.0     # starts as before: no lean
 
@@ -232,7 +234,8 @@ def test_the_spin_hold_takes_the_twist_out_of_the_womans_sideways_take_off():
     leaves turning about the vertical (measured -5.2 kg m²/s); with the hips turning against that
     angular momentum in the crouch and the thrust (spin_hold 0.12 rad per kg m²/s) it leaves with
     almost none (+0.5). Read off the simulation 50 ms after lift-off, in flight."""
-    from sim_core.control.target_jump import knobs_for, leap_params, scene_for
+    from sim_core.control.target_jump import leap_params, scene_for
+    from sim_core.planning.jump import knobs_for
     assert "spin_hold" in knobs_for((0.0, -1.3, 0.0, 0.0)) and "spin_hold" not in knobs_for((1.3, 0.0, 0.0, 0.0))
     target = (0.0, -1.3, 0.0, 0.0)
     plan = _stored("woman", dict(target_x=0.0, target_y=-1.3, target_z=0.0, obstacle_height=0.0,

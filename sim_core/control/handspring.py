@@ -14,8 +14,8 @@ The landing controller positions the legs for touchdown and transitions to the b
 controller." Nothing holds the hands: they touch, carry the body and leave by contact forces alone.
 
 The settings per character and strength come from ``sim_core/tuned/tables/handspring_<character>.json``,
-written by ``scripts/calibrate_handspring.py`` (a cross-entropy search over whole simulated
-handsprings, scored off the simulation).
+written by ``scripts/calibrate_handspring.py`` (a search over whole simulated
+handsprings, scored off the simulation; docs/planning.md).
 """
 from __future__ import annotations
 

@@ -581,7 +581,12 @@ def run_strength(ctx: ControlContext) -> str:
 
 def vertical_key(ctx: ControlContext) -> str:
     """The vertical-leap table for this run's strength: "vertical" or "vertical_unlimited"."""
-    return "vertical" if run_strength(ctx) == "human" else "vertical_unlimited"
+    return vertical_table(run_strength(ctx))
+
+
+def vertical_table(strength: str) -> str:
+    """The vertical-leap table of a strength ("human" or "unlimited", run_strength's names)."""
+    return "vertical" if strength == "human" else "vertical_unlimited"
 
 
 # the leap's low-level settings: the columns of a vertical-leap table, a broad jump's and a planned

@@ -14,7 +14,7 @@ spin back).
 
 The take-off and landing settings per character, direction and strength come from
 ``sim_core/tuned/tables/somersaults_<character>.json``, written by ``scripts/calibrate_somersaults.py``
-(a cross-entropy search over whole simulated somersaults, scored off the simulation).
+(a search over whole simulated somersaults, scored off the simulation; docs/planning.md).
 """
 from __future__ import annotations
 

@@ -29,7 +29,7 @@ SCHEMA_VERSION = 1              # the layout of a table file; a file of another 
 HEADER = ("schema_version", "skill", "character", "strengths")
 STRENGTHS = ("human", "unlimited")
 # the folder of the tables: package data of sim_core (a test may point it at a temporary folder)
-DIRECTORY = Path(str(resources.files("sim_core.tuned") / "tables"))
+DIRECTORY = Path(str(resources.files(__package__) / "tables"))
 
 
 class TableError(ParameterError):
@@ -78,18 +78,20 @@ def table_type(skill: str) -> TableType:
                          f"{', '.join(sorted(_TYPES)) or 'none'}") from None
 
 
-def table_path(skill: str, character: str) -> Path:
-    return DIRECTORY / f"{skill}_{character}.json"
+def table_path(skill: str, character: str, directory: Path | None = None) -> Path:
+    """Where ``<skill>_<character>.json`` is: in ``directory`` (a calibration's --tables, a test's
+    folder) or the shipped tables."""
+    return (DIRECTORY if directory is None else Path(directory)) / f"{skill}_{character}.json"
 
 
-def exists(skill: str, character: str) -> bool:
-    return table_path(skill, character).exists()
+def exists(skill: str, character: str, directory: Path | None = None) -> bool:
+    return table_path(skill, character, directory).exists()
 
 
-def load(skill: str, character: str) -> dict | None:
+def load(skill: str, character: str, directory: Path | None = None) -> dict | None:
     """The checked body of ``<skill>_<character>.json`` (every section but the header), or None
     when there is no such table."""
-    path = table_path(skill, character)
+    path = table_path(skill, character, directory)
     try:
         text = path.read_text()
     except FileNotFoundError:
@@ -101,12 +103,12 @@ def load(skill: str, character: str) -> dict | None:
     return check(path.name, skill, character, data)
 
 
-def save(skill: str, character: str, body: dict, strengths: Iterable[str]) -> Path:
+def save(skill: str, character: str, body: dict, strengths: Iterable[str], directory: Path | None = None) -> Path:
     """Check ``body`` against the skill's row type and write it whole (temporary file, then
     rename) as ``<skill>_<character>.json``; returns the path."""
     data = {"schema_version": SCHEMA_VERSION, "skill": skill, "character": character,
             "strengths": list(strengths), **{k: v for k, v in body.items() if k not in HEADER}}
-    path = table_path(skill, character)
+    path = table_path(skill, character, directory)
     check(path.name, skill, character, data)
     path.parent.mkdir(parents=True, exist_ok=True)
     fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=path.stem, suffix=".tmp")
@@ -120,9 +122,9 @@ def save(skill: str, character: str, body: dict, strengths: Iterable[str]) -> Pa
     return path
 
 
-def delete(skill: str, character: str) -> None:
+def delete(skill: str, character: str, directory: Path | None = None) -> None:
     """Remove a table (a calibration that must run against none, e.g. the landing's)."""
-    table_path(skill, character).unlink(missing_ok=True)
+    table_path(skill, character, directory).unlink(missing_ok=True)
 
 
 def dumps(data: dict) -> str:

@@ -1,0 +1,24 @@
+"""Planning: whatever runs whole simulations to choose a behaviour's settings sits here, above
+sim_core/simulate.py (it calls ``simulate.run`` for its trials); a behaviour never runs a nested
+simulation, it only looks up what was planned. See docs/planning.md."""
+from __future__ import annotations
+
+from sim_core.planning.jump import plan_and_store, plan_jump, planned
+
+PLANNED_BEHAVIOURS = ("jump_to_target",)     # behaviours whose runs need a plan first
+
+
+def plan_before_run(request, budget: int, progress=None, cancelled=None, executor=None) -> dict | None:
+    """For a run ``request`` (simulate.RunRequest) of a planned behaviour with no stored plan: plan
+    it now, above the loop, and store the plan (None if it needs none or has one; a budget of 0
+    plans nothing, and the run refuses the request). Returns the new plan."""
+    if request.behaviour not in PLANNED_BEHAVIOURS or budget < 1:
+        return None
+    character, _, params, _ = request.validated()
+    if planned(character.name, params, request.strength) is not None:
+        return None
+    return plan_and_store(character, params, request.strength, budget, progress=progress, cancelled=cancelled,
+                          executor=executor)
+
+
+__all__ = ["PLANNED_BEHAVIOURS", "plan_and_store", "plan_before_run", "plan_jump", "planned"]
