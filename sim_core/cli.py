@@ -35,7 +35,7 @@ def _finite(text: str, name: str) -> float:
 
 
 def build_request(args):
-    from sim_core.character.model import World
+    from sim_core.world import World
     from sim_core.perturbation import Push
     from sim_core.simulate import RunRequest
     from sim_core.control.behaviour import behaviour_class

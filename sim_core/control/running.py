@@ -199,10 +199,10 @@ class Running(Behaviour):
     def __init__(self, params, ctx: ControlContext):
         super().__init__(params, ctx)
         m, s, ch = ctx.model, ctx.servos, ctx.character
-        self.pelvis = m.body("PELVIS").id
-        self.hip_body = [m.body("ULEGR").id, m.body("ULEGL").id]
+        self.pelvis = ctx.actor.body_id("PELVIS")
+        self.hip_body = [ctx.actor.body_id("ULEGR"), ctx.actor.body_id("ULEGL")]
         self.legs = [RunnerLeg(ch, "R"), RunnerLeg(ch, "L")]
-        site = lambda n: m.site(n).id
+        site = ctx.actor.site_id
         self.heel_sites = [[site(f"FOOT{c}_heel_a"), site(f"FOOT{c}_heel_b")] for c in "RL"]
         self.ball_sites = [[site(f"FOOT{c}_ball_a"), site(f"FOOT{c}_ball_b"), site(f"TOE{c}_toe_a"),
                             site(f"TOE{c}_toe_b")] for c in "RL"]
@@ -212,7 +212,7 @@ class Running(Behaviour):
                        ay=ix[f"ankle_{c}_y"], ax=ix[f"ankle_{c}_x"], mt=ix[f"mt_{c}_y"],
                        sx=ix[f"shoulder_{c}_x"], sy=ix[f"shoulder_{c}_y"], sz=ix[f"shoulder_{c}_z"],
                        ez=ix[f"elbow_{c}_z"]) for c in "rl"]
-        self.hip_joint_ids = np.array([m.joint(f"hip_{c}_{ax}").id for c in "rl" for ax in "yxz"])
+        self.hip_joint_ids = np.array([ctx.actor.joint_id(f"hip_{c}_{ax}") for c in "rl" for ax in "yxz"])
         self.leg_idx = [s.indices([f"hip_{c}_y", f"hip_{c}_x", f"hip_{c}_z", f"knee_{c}_y", f"ankle_{c}_y",
                                    f"ankle_{c}_x", f"mt_{c}_y"]) for c in "rl"]
         self.neck_y = ix["neck_c2_y"]
@@ -379,7 +379,7 @@ class Running(Behaviour):
         servos = self.ctx.servos
         q = servos.angles().tolist()
         qd = servos.velocities().tolist()
-        force = d.actuator_force.tolist()
+        force = d.actuator_force[servos.actuators].tolist()
         m = d.xmat[self.pelvis].tolist()
         wx, wy, wz = d.cvel[self.pelvis, :3].tolist()
         cx, cy, _ = d.subtree_com[self.pelvis].tolist()
@@ -582,7 +582,7 @@ class Running(Behaviour):
         """The hip's rotation axis runs along the thigh, so with the thigh swept forward or back it
         carries part of the roll torque too; when that would take it past its torque limit, the
         roll demand is reduced (toward zero, never reversed) so that the yaw is still held."""
-        limit = self.ctx.model.actuator_forcerange[ja["hz"], 1] * HIP_YAW_HEADROOM
+        limit = self.ctx.model.actuator_forcerange[self.ctx.servos.actuators][ja["hz"], 1] * HIP_YAW_HEADROOM
         hz = taus[2] * share
         if abs(hz) <= limit or share <= 0.0:
             return taus

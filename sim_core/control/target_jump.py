@@ -169,7 +169,7 @@ def scene_for(character, target, world=None):
     box under a raised target (z > 0); for a target below the start (z < 0) the ground at z and a
     box the character starts on (its top at 0, its front edge just ahead of the toes); and a box
     to jump over, standing on the surface landed on halfway between the toes and the target."""
-    from sim_core.character.model import World
+    from sim_core.world import World
     from sim_core.character.spec import load_character
     world = world or World()
     obstacle = obstacle_of(target)
