@@ -95,9 +95,13 @@ def cmd_describe(args) -> int:
 
 def cmd_simulate(args) -> int:
     from sim_core.simulate import run
-    request = build_request(args)
     if args.out and not args.out.endswith(".npz"):
         raise ParameterError(f"--out {args.out!r} must end in .npz")
+    if args.scene:
+        return simulate_scene(args)
+    if not args.behaviour:
+        raise ParameterError("simulate needs a behaviour (see list) or --scene FILE")
+    request = build_request(args)
     trajectory = run(request, progress=_progress_printer(args.progress or sys.stderr.isatty()))
     if args.out:
         trajectory.save(args.out)
@@ -105,6 +109,31 @@ def cmd_simulate(args) -> int:
                "behaviour": trajectory.meta["behaviour"], "character": trajectory.meta["character"],
                "out": args.out}
     print(json.dumps(summary))
+    return 0
+
+
+SINGLE_ACTOR_OPTIONS = ("set", "duration", "push", "start_height", "start_velocity", "backpack", "slope", "strength",
+                        "character")
+
+
+def simulate_scene(args) -> int:
+    """``simulate --scene FILE``: every actor of the scene file in one run; the summary lists each
+    actor's outcome. The scene file says everything: the one-character options are refused."""
+    from sim_core.scene import load_scene
+    from sim_core.simulate import run_scene
+    defaults = parser().parse_args(["simulate", "x"])
+    for option in SINGLE_ACTOR_OPTIONS:
+        if getattr(args, option) != getattr(defaults, option):
+            raise ParameterError(f"--{option.replace('_', '-')} does not apply to --scene: set it in the scene file")
+    if args.behaviour:
+        raise ParameterError(f"give a behaviour ({args.behaviour!r}) or --scene, not both")
+    trajectory = run_scene(load_scene(args.scene), progress=_progress_printer(args.progress or sys.stderr.isatty()))
+    if args.out:
+        trajectory.save(args.out)
+    actors = [{"name": a["name"], "character": a["character"], "behaviour": a["behaviour"],
+               "outcome": a["outcome"]} for a in trajectory.meta["actors"]]
+    print(json.dumps({"scene": args.scene, "duration": trajectory.meta["duration"], "actors": actors,
+                      "out": args.out}))
     return 0
 
 
@@ -147,8 +176,9 @@ def parser() -> argparse.ArgumentParser:
     d.add_argument("behaviour")
     d.add_argument("--markdown", action="store_true", help="print the parameter table as Markdown")
     d.set_defaults(func=cmd_describe)
-    s = sub.add_parser("simulate", help="run a behaviour and save its trajectory")
-    s.add_argument("behaviour")
+    s = sub.add_parser("simulate", help="run a behaviour (or a scene of several actors) and save its trajectory")
+    s.add_argument("behaviour", nargs="?", help="behaviour name (see list); omit with --scene")
+    s.add_argument("--scene", metavar="FILE", help="scene file (.json or .toml; see docs/scenes.md): a world and its actors")
     s.add_argument("--character", default="man", help="character name (see list) or path to a spec .json")
     s.add_argument("--set", action="append", metavar="NAME=VALUE", help="behaviour parameter (repeatable)")
     s.add_argument("--duration", help="seconds to simulate (default: the behaviour's)")

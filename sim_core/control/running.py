@@ -41,6 +41,7 @@ from pathlib import Path
 import numpy as np
 
 from sim_core.ballistics import GRAVITY, time_to_fall_to
+from sim_core.character.model import Placement
 from sim_core.control.behaviour import Behaviour, ControlContext, register
 from sim_core.control.running_leg import RunnerLeg
 from sim_core.control.running_path import (PathFollower, circle_path, figure_eight_path, parse_points,
@@ -226,11 +227,14 @@ class Running(Behaviour):
                           if (n in params and params[n] == TUNED) or n in SCHEDULED_CONSTANTS]
         self.p = dict(params)
         self._schedule(0.0)
+        placement = ctx.actor.placement
         self.path = self._path()
+        # a scene's actor runs in its placed frame: its facing turned by its heading, its path moved
+        self.facing = params["facing"] + placement.heading if placement is not None else params["facing"]
         self.follower = PathFollower(self.path, params["lookahead"]) if self.path is not None else None
 
     def _path(self):
-        return _path_for(self.params)
+        return _path_for(self.params, self.ctx.actor.placement)
 
     def _schedule(self, speed: float) -> None:
         """Effective values of the tuned parameters left at -1: the table at this speed."""
@@ -263,7 +267,8 @@ class Running(Behaviour):
         reached = np.nonzero((speed >= 0.9 * params["speed"]) & upright)[0]
         metrics["time_to_90pct_speed"] = float(a["time"][reached[0]]) if len(reached) else None
         metrics["stride_attitude_variation"] = stride_attitude_variation(trajectory, t_from=max(0.0, a["time"][-1] - 10.0))
-        path = _path_for(params)
+        placement = trajectory.meta.get("placement")
+        path = _path_for(params, Placement(**placement) if placement else None)
         if path is not None:
             t0 = _first_time_on_path(a, path)
             sel = a["time"] >= t0
@@ -396,7 +401,7 @@ class Running(Behaviour):
         roll_rate = wx * m[0] + wy * m[3] + wz * m[6]
 
         # ---- steering: facing direction (or pure pursuit on the path), lean into the turn
-        goal = self.follower.heading(cx, cy) if self.follower is not None else p["facing"]
+        goal = self.follower.heading(cx, cy) if self.follower is not None else self.facing
         speed_now = math.hypot(vx, vy)
         # the heading goal turns toward the goal at a rate proportional to the error, limited in
         # rate and in acceleration, so the yaw the stance hip asks for changes smoothly (an abrupt
@@ -690,18 +695,24 @@ class Running(Behaviour):
         targets[ji["mt"]] = 0.0
 
 
-def _path_for(p: dict):
-    """The polyline a run follows: the user's points, a built-in course, or None (facing)."""
+def _path_for(p: dict, placement: Placement | None = None):
+    """The polyline a run follows: the user's points, a built-in course, or None (facing); in
+    the world frame of a runner placed at ``placement`` (None: the origin, facing +X)."""
     if "path" in p:
-        return np.asarray(p["path"], dtype=float)
-    course = int(round(p["course"]))
-    if course == 1:
-        return turn_path(p["turn_angle"], p["turn_after"], p["turn_radius"])
-    if course == 2:
-        return figure_eight_path(p["turn_radius"], p["turn_after"])
-    if course == 3:
-        return circle_path(p["turn_radius"], p["turn_after"])
-    return None
+        path = np.asarray(p["path"], dtype=float)
+    else:
+        course = int(round(p["course"]))
+        if course == 1:
+            path = turn_path(p["turn_angle"], p["turn_after"], p["turn_radius"])
+        elif course == 2:
+            path = figure_eight_path(p["turn_radius"], p["turn_after"])
+        elif course == 3:
+            path = circle_path(p["turn_radius"], p["turn_after"])
+        else:
+            return None
+    if placement is None:
+        return path
+    return np.array([placement.point([x, y, 0.0])[:2] for x, y in path])
 
 
 def _first_time_on_path(a: dict, path: np.ndarray) -> float:
