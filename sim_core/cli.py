@@ -159,6 +159,13 @@ def cmd_bench(args) -> int:
     print(f"raw mj_step:            {result['raw_mj_step_sim_s_per_wall_s']:.2f} sim s / wall s")
     print(f"ratio:                  {result['ratio']:.3f}  (goal >= 0.75)")
     print(json.dumps(result))
+    if args.scene_actors:
+        from sim_core.bench import scene_bench
+        scene = scene_bench(count=args.scene_actors, duration=_finite(args.scene_duration, "--scene-duration"),
+                            repeats=args.repeats)
+        print(f"scene of {args.scene_actors} runners: {scene['scene_loop_sim_s_per_wall_s']:.2f} sim s / wall s, raw "
+              f"mj_step of the same model {scene['raw_mj_step_sim_s_per_wall_s']:.2f}, ratio {scene['ratio']:.3f}")
+        print(json.dumps(scene))
     return 0
 
 
@@ -203,6 +210,8 @@ def parser() -> argparse.ArgumentParser:
     b.add_argument("--set", action="append", metavar="NAME=VALUE")
     b.add_argument("--duration", default="10")
     b.add_argument("--repeats", type=int, default=5)
+    b.add_argument("--scene-actors", type=int, default=4, help="runners in the scene benchmark (0 = none)")
+    b.add_argument("--scene-duration", default="5", help="seconds simulated in the scene benchmark")
     b.set_defaults(func=cmd_bench)
     br = sub.add_parser("balance-report", help="push scan, slopes and backpacks for the balance behaviour")
     br.add_argument("--character", action="append", help="man and/or woman (default both)")

@@ -33,6 +33,7 @@ from sim_core.trajectory import PER_ACTOR_FIELDS, Trajectory
 from sim_core.world import World
 
 STATE_SPEC = mujoco.mjtState.mjSTATE_INTEGRATION
+THREE = np.arange(3)        # a contact's force components (normal, two tangents) in its efc rows
 # MuJoCo's answer to a diverging state is to reset it (a teleport): any of these ends the run
 DIVERGENCE_WARNINGS = (mujoco.mjtWarning.mjWARN_BADQACC, mujoco.mjtWarning.mjWARN_BADQPOS,
                        mujoco.mjtWarning.mjWARN_BADQVEL)
@@ -125,8 +126,8 @@ class Recorder:
             "grf": np.zeros((n_frames, na, 3)),
             "ground_contact": np.zeros((n_frames, nb), dtype=bool),
             "support_points": np.zeros((n_frames, len(site_ids), 3)), "push_force": np.zeros((n_frames, na, 3)),
-            "contact_force": np.zeros((n_frames, nb, len(self.world_geom_ids), 3)),
         }
+        self.contacts = []          # per frame with contacts: (frame, geoms, frames, efc addresses, dims, forces)
         self.n = 0
 
     def record(self, data: mujoco.MjData) -> None:
@@ -151,35 +152,39 @@ class Recorder:
             touched = np.where(world[first], second, np.where(world[second], first, -1))
             touched = touched[touched >= 0]
             b["ground_contact"][k, self.geom_body[touched]] = True
-            if k:
-                self._contact_forces(data, b["contact_force"][k])
+            if k and data.nefc:             # the contacts' forces, assembled in contact_forces()
+                contact = data.contact
+                address = contact.efc_address
+                self.contacts.append((k, contact.geom.copy(), contact.frame.copy(), address.copy(), contact.dim.copy(),
+                                      data.efc_force.take(address[:, None] + THREE, mode="clip")))
         b["support_points"][k] = data.site_xpos[self.sites]
         self.n += 1
 
-    def _contact_forces(self, data: mujoco.MjData, out: np.ndarray) -> None:
-        """World-frame force of each named world geom on each body (summed over its contacts) in
-        the last physics step. A contact's force in its frame (normal, two tangents) is the
-        constraint force of its rows (an elliptic cone: the rows are exactly those components);
-        it pushes geom2 along the frame's normal (geom1 -> geom2), geom1 the other way."""
-        contact = data.contact
-        geoms = contact.geom
+    def contact_forces(self) -> np.ndarray:
+        """contact_force (frames x bodies x named world geoms x 3): the world-frame force of each
+        named world geom on each body, summed over its contacts in the last physics step. A
+        contact's force in its own frame (normal, two tangents) is the constraint force of its
+        rows (with elliptic cones the rows are exactly those components); it pushes geom2 along
+        the frame's normal (geom1 -> geom2) and geom1 the other way. The frames' contacts are
+        copied in ``record`` and turned into forces here, all frames at once."""
+        out = np.zeros((self.n, len(self.bodies), len(self.world_geom_ids), 3))
+        if not self.contacts:
+            return out
+        frame = np.concatenate([np.full(len(c[1]), c[0]) for c in self.contacts])
+        geoms, axes, address, dim, rows = (np.concatenate([c[i] for c in self.contacts]) for i in range(1, 6))
         column1, column2 = self.world_column[geoms[:, 0]], self.world_column[geoms[:, 1]]
-        address = contact.efc_address
         use = ((column1 >= 0) ^ (column2 >= 0)) & (address >= 0)
-        if not use.any():
-            return
-        address, dim = address[use], contact.dim[use]
-        components = np.arange(3)
-        rows = address[:, None] + np.minimum(components, dim[:, None] - 1)
-        local = data.efc_force[rows] * (components < dim[:, None])
-        force = np.einsum("ni,nij->nj", local, contact.frame[use].reshape(-1, 3, 3))
-        on_second = column1[use] >= 0                      # the world geom is geom1: the body is geom2
+        local = rows[use] * (THREE < dim[use, None])            # components a contact does not have: 0
+        force = np.einsum("ni,nij->nj", local, axes[use].reshape(-1, 3, 3))
+        on_second = column1[use] >= 0                          # the world geom is geom1: the body is geom2
         body = np.where(on_second, self.geom_body[geoms[use, 1]], self.geom_body[geoms[use, 0]])
         column = np.where(on_second, column1[use], column2[use])
-        np.add.at(out, (body, column), np.where(on_second[:, None], force, -force))
+        np.add.at(out, (frame[use], body, column), np.where(on_second[:, None], force, -force))
+        return out
 
     def arrays(self) -> dict[str, np.ndarray]:
         out = {name: array[: self.n] for name, array in self.buf.items()}
+        out["contact_force"] = self.contact_forces()
         if not self.per_actor:
             for name in PER_ACTOR_FIELDS:
                 out[name] = out[name][:, 0]
