@@ -81,6 +81,19 @@ def script_argv(argv: list[str] | None = None) -> list[str]:
     return argv[argv.index("--") + 1:] if "--" in argv else argv[1:]
 
 
+def _prepared_file(args: argparse.Namespace, pkg):
+    """An empty file (or the loaded one with --keep-scene), the add-on registered, the frame rate
+    set; returns bpy.context."""
+    import bpy
+    if not args.keep_scene:
+        bpy.ops.wm.read_homefile(use_empty=True)
+    if "sim_athletics" not in bpy.types.Scene.bl_rna.properties:
+        pkg.register()
+    if args.fps is not None:
+        bpy.context.scene.render.fps, bpy.context.scene.render.fps_base = args.fps, 1.0
+    return bpy.context
+
+
 def run(argv: list[str]) -> int:
     import bpy
     pkg = _package()
@@ -97,14 +110,8 @@ def run(argv: list[str]) -> int:
         print(f"{PROG}: error: {exc}", file=sys.stderr)
         return 2
 
-    if not args.keep_scene:
-        bpy.ops.wm.read_homefile(use_empty=True)
-    if "sim_athletics" not in bpy.types.Scene.bl_rna.properties:
-        pkg.register()
-    context = bpy.context
+    context = _prepared_file(args, pkg)
     scene = context.scene
-    if args.fps is not None:
-        scene.render.fps, scene.render.fps_base = args.fps, 1.0
     try:
         arm = api.add_character(context, args.character)
         action, trajectory = api.simulate_and_bake(
@@ -144,14 +151,8 @@ def run_scene(args: argparse.Namespace, pkg) -> int:
     except SimAthleticsError as exc:
         print(f"{PROG}: error: {exc}", file=sys.stderr)
         return 2
-    if not args.keep_scene:
-        bpy.ops.wm.read_homefile(use_empty=True)
-    if "sim_athletics" not in bpy.types.Scene.bl_rna.properties:
-        pkg.register()
-    context = bpy.context
+    context = _prepared_file(args, pkg)
     scene = context.scene
-    if args.fps is not None:
-        scene.render.fps, scene.render.fps_base = args.fps, 1.0
     fps, end = bake.scene_fps(scene), args.start_frame
     outcomes = {}
     try:

@@ -192,6 +192,9 @@ def _actor(raw, k: int) -> Actor:
     if not (strength in ("human", "unlimited") or (
             not isinstance(strength, bool) and isinstance(strength, (int, float)) and 0.1 <= strength <= 10)):
         raise SceneError(f"{where}: strength={strength!r} must be 'human', 'unlimited' or a factor in [0.1, 10]")
+    if cls.world_frame and (x, y, heading) != (0.0, 0.0, 0.0):
+        raise SceneError(f"{where}: behaviour {cls.name!r} turns and aims in the world's own axes from the "
+                         f"origin; put it at position [0, 0] with heading 0")
     return Actor(name, character, cls, params, Placement(x, y, heading), strength)
 
 

@@ -1,5 +1,6 @@
 """Scenes: several actors in one model, each judged by its own behaviour, replayed bit for bit;
 bad scene files refused with one line and nothing written."""
+import dataclasses
 import json
 import math
 import os
@@ -10,9 +11,11 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from sim_core.character.model import Placement
 from sim_core.scene import SceneError, load_scene, merge_prop_requests, scene_from_dict
 from sim_core.simulate import RunRequest, largest_difference, replay, run, run_scene
 from sim_core.trajectory import Trajectory
+from sim_core.world import World
 
 ROOT = Path(__file__).resolve().parents[1]
 EXAMPLES = ROOT / "examples"
@@ -124,8 +127,12 @@ def test_props_asked_for_by_a_behaviour_join_the_world():
          "params": {"plan_trials": 0, "target_x": 1.0, "target_z": 0.2}},
         {"name": "watcher", "character": "woman", "behaviour": "balance", "position": [0, 2.5]}]})
     assert len(scene.world.boxes) == 1 and scene.world.boxes[0][2] == pytest.approx(0.2)
-    with pytest.raises(SceneError, match="asks for props .*platform.* position \\[0, 0\\]"):
+    with pytest.raises(SceneError, match="'dive' turns and aims in the world's own axes from the origin"):
         scene_from_dict({"actors": [{"name": "d", "character": "man", "behaviour": "dive", "position": [1, 0]}]})
+    diver = scene_from_dict({"actors": [{"name": "d", "character": "man", "behaviour": "dive"}]}).actors[0]
+    moved = dataclasses.replace(diver, placement=Placement(1.0, 0.0, 0.0))
+    with pytest.raises(SceneError, match="asks for props \\(platform\\) .* position \\[0, 0\\]"):
+        merge_prop_requests(World(), [moved])
     # two actors asking for different worlds (both at the origin, which the clearance check would
     # refuse first: the merge is checked on its own)
     a = scene_from_dict({"actors": [{"name": "a", "character": "man", "behaviour": "dive",

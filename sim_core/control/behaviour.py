@@ -71,6 +71,10 @@ class Behaviour:
     schema: ClassVar[Schema]
     default_duration: ClassVar[float] = 5.0
     control_rate: ClassVar[float] = 200.0     # Hz at which update() runs; the servos run every step
+    # True for a skill that measures or aims in the world's own axes (a somersault's rotation in
+    # the X-Z plane, a jump's target from the origin): in a scene it must start at the origin
+    # facing +X (sim_core.scene refuses it elsewhere)
+    world_frame: ClassVar[bool] = False
 
     def __init__(self, params: dict[str, float], ctx: ControlContext):
         self.params = params

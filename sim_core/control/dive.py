@@ -102,6 +102,7 @@ def load_settings(character: str, p: dict) -> dict:
 @register
 class Dive(Sequence):
     name = "dive"
+    world_frame = True             # turns / aims in the world's X-Z plane from the origin
     summary = "Platform dive: leap backwards off the edge, somersault and twist in flight, enter the water straight (Wooten §8.2.1)."
     default_duration = 4.0
     schema = Schema(

@@ -116,6 +116,7 @@ class PoseMove(Behaviour):
 @register
 class Handspring(Sequence):
     name = "handspring"
+    world_frame = True             # turns / aims in the world's X-Z plane from the origin
     summary = ("Standing back handspring: sit back, leap backward, arch onto the hands, push off, snap down, "
                "land, balance (Wooten §8.3).")
     default_duration = 5.0

@@ -73,6 +73,7 @@ def calibrated(character: str, direction: str, strength: str) -> dict | None:
 @register
 class Somersault(Sequence):
     name = "somersault"
+    world_frame = True             # turns / aims in the world's X-Z plane from the origin
     summary = "Standing tuck somersault, backward or forward: crouch, leap with spin, tuck, open, land, balance (Wooten §8.4-8.5)."
     default_duration = 5.0
     schema = Schema(

@@ -507,6 +507,7 @@ def nearest_found_plan(character: str, target, strength="human", raised=False) -
 @register
 class JumpToTarget(Leap):
     name = "jump_to_target"
+    world_frame = True             # turns / aims in the world's X-Z plane from the origin
     summary = ("Jump so that the feet land on a target point, with a given air time and wind-up time "
                "(Ooi 2015), by the leap and landing controllers; the settings are planned by simulation.")
     default_duration = 5.0
