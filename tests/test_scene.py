@@ -203,3 +203,50 @@ def test_cli_simulates_and_replays_a_scene_file(tmp_path):
     assert json.loads(replayed.stdout)["bit_identical"] is True
     refused = _cli("simulate", "--scene", str(scene), "--set", "speed=3")
     assert refused.returncode == 2 and "--set does not apply to --scene" in refused.stderr
+
+
+def test_each_actors_servo_bank_writes_only_its_slice_and_names_resolve_through_its_prefix():
+    import mujoco
+
+    from sim_core.character.model import place_standing
+    from sim_core.control.actor import ActorView
+    from sim_core.control.servo import ServoBank
+    from sim_core.edit_log import EditLog
+    from sim_core.scene import compile_scene
+
+    scene = scene_from_dict({"actors": [{"name": "a", "character": "man", "behaviour": "balance"},
+                                        {"name": "b", "character": "woman", "behaviour": "balance",
+                                         "position": [0, 2], "heading": 90}]})
+    model, _ = compile_scene(scene)
+    data = mujoco.MjData(model)
+    for actor in scene.actors:
+        place_standing(model, data, actor.character, actor.prefix, actor.placement)
+    views = [ActorView.of(model, a.prefix, a.placement) for a in scene.actors]
+    a, b = views
+    assert a.body_id("PELVIS") == a.root and model.body(b.root).name == "b/PELVIS"
+    assert a.qpos.stop == b.qpos.start and b.qpos.stop == model.nq
+    assert a.actuators.stop == b.actuators.start and b.actuators.stop == model.nu
+    assert data.qpos[b.root_qpos + 1] == pytest.approx(2.0 + scene.actors[1].character.bodies[0]["com"][0])
+    log = EditLog()
+    banks = [ServoBank(model, data, s.character, log, v) for s, v in zip(scene.actors, views)]
+    data.ctrl[:] = -7.0
+    banks[1].hold(np.full(len(banks[1].names), 0.25), 0.0)
+    banks[1].write(0.0)
+    assert np.all(data.ctrl[a.actuators] == -7.0) and np.all(data.ctrl[b.actuators] == 0.25)
+    assert banks[1].names == banks[0].names                       # unprefixed, in the same order
+    knee = banks[1].indices(["knee_r_y"])
+    banks[1].set_gains(knee, 123.0, 4.0)
+    assert model.actuator_gainprm[model.actuator("b/knee_r_y").id, 0] == 123.0
+    assert model.actuator_gainprm[model.actuator("a/knee_r_y").id, 0] != 123.0
+
+
+def test_rates_that_do_not_share_a_loop_are_refused():
+    from sim_core.control.behaviour import behaviour_class
+    from sim_core.scene import Scene, control_tick
+
+    balance = scene_from_dict({"actors": [{"name": "a", "character": "man", "behaviour": "balance"}]}).actors[0]
+    odd = type("OddRate", (behaviour_class("balance"),), {"control_rate": 150.0, "name": "odd"})
+    other = dataclasses.replace(balance, name="b", behaviour=odd, placement=Placement(0.0, 3.0, 0.0))
+    assert control_tick(Scene(World(), [balance], 1.0)) == (100.0, {"a": 1})
+    with pytest.raises(SceneError, match="actor 'a' runs at 100 Hz, which does not divide the scene's 150 Hz loop"):
+        control_tick(Scene(World(), [balance, other], 1.0))
