@@ -30,7 +30,7 @@ from pathlib import Path
 import mujoco
 import numpy as np
 
-from sim_core.character.model import Placement, add_character, new_spec, place_standing
+from sim_core.character.model import TIMESTEP, Placement, add_character, new_spec, place_standing
 from sim_core.character.spec import CharacterSpec, load_character
 from sim_core.control.behaviour import Behaviour, behaviour_class
 from sim_core.errors import SimAthleticsError
@@ -270,7 +270,6 @@ def control_tick(scene: Scene) -> tuple[float, dict[str, int]]:
     """The loop's control rate (Hz) and each actor's update interval in ticks. The scene ticks at
     the fastest actor's rate; every other rate must divide it (200 and 100 Hz share a 200 Hz
     loop, the 100 Hz actor updating every 2nd tick), and a tick must be whole physics steps."""
-    from sim_core.character.model import TIMESTEP
     rates = {a.name: float(a.behaviour.control_rate) for a in scene.actors}
     fastest = max(rates.values())
     every = {}

@@ -197,6 +197,11 @@ def named_world_geoms(model: mujoco.MjModel) -> np.ndarray:
     return np.array([g for g in range(model.ngeom) if model.geom_bodyid[g] == 0 and model.geom(g).name], dtype=int)
 
 
+def hold_pose(model: mujoco.MjModel, data: mujoco.MjData) -> None:
+    """Every servo's target at its joint's current angle (the start holds the pose it is put in)."""
+    data.ctrl[:] = data.qpos[[model.jnt_qposadr[model.actuator_trnid[i, 0]] for i in range(model.nu)]]
+
+
 def refresh_kinematics(model: mujoco.MjModel, data: mujoco.MjData) -> None:
     """Contact forces of the last physics step (cfrc_ext), then positions, COM, body velocities,
     COM velocity and angular momentum of the current state."""
@@ -227,7 +232,7 @@ def run(request: RunRequest, progress: Callable[[float], None] | None = None,
     data = mujoco.MjData(model)
     set_standing_pose(model, data, character)
     request.start.apply(data)
-    data.ctrl[:] = data.qpos[[model.jnt_qposadr[model.actuator_trnid[i, 0]] for i in range(model.nu)]]
+    hold_pose(model, data)
     mujoco.mj_forward(model, data)
 
     log = EditLog()
@@ -281,7 +286,7 @@ def run_scene(scene: Scene, progress: Callable[[float], None] | None = None,
     mujoco.mj_resetData(model, data)
     for a in scene.actors:
         place_standing(model, data, a.character, a.prefix, a.placement)
-    data.ctrl[:] = data.qpos[[model.jnt_qposadr[model.actuator_trnid[i, 0]] for i in range(model.nu)]]
+    hold_pose(model, data)
     mujoco.mj_forward(model, data)
 
     log = EditLog()
