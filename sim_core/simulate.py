@@ -221,6 +221,7 @@ class ActorRun:
     behaviour: Behaviour
     every: int = 1
     done: bool = False
+    last_tick: int | None = None      # the tick after whose physics its skill had ended
 
 
 def run(request: RunRequest, progress: Callable[[float], None] | None = None,
@@ -321,6 +322,8 @@ def run_scene(scene: Scene, progress: Callable[[float], None] | None = None,
             "support_site_side": [model.body(model.site_bodyid[i]).name[-1] for i in sites],
             "dof_names": [model.actuator(i).name[len(a.prefix):] for i in range(v.actuators.start, v.actuators.stop)],
             "completed": r.done,
+            # its own run ends with the state after its last tick, as a one-character run's does
+            "end_frame": len(arrays["time"]) if r.last_tick is None else r.last_tick + 2,
         })
         first_site += len(sites)
     meta = {
@@ -406,7 +409,7 @@ class _Loop:
             else:
                 for a in actors:
                     if not a.done and a.behaviour.run_complete:
-                        a.done = True
+                        a.done, a.last_tick = True, tick
                         a.behaviour.event(data.time, "complete_holding")
             if progress and tick % 200 == 0:
                 progress(tick / n_ticks)

@@ -81,21 +81,27 @@ class Trajectory:
         else:
             raise KeyError(f"no actor {name!r} in this trajectory; actors: {', '.join(self.actor_names) or 'none'}")
         a = self.arrays
+        end = m.get("end_frame", len(a["time"]))        # an actor whose skill ended early: up to there
+        frames = slice(0, end)
         bodies, sites = slice(*m["bodies"]), slice(*m["support_sites"])
-        view = {"time": a["time"], "qpos": a["qpos"][:, slice(*m["qpos"])], "qvel": a["qvel"][:, slice(*m["qvel"])],
-                "support_points": a["support_points"][:, sites],
+        view = {"time": a["time"][frames], "qpos": a["qpos"][frames, slice(*m["qpos"])],
+                "qvel": a["qvel"][frames, slice(*m["qvel"])], "support_points": a["support_points"][frames, sites],
                 "body_names": np.array([str(n)[len(m["prefix"]):] for n in a["body_names"][bodies]])}
         for field_name in BODY_FIELDS:
-            view[field_name] = a[field_name][:, bodies]
+            view[field_name] = a[field_name][frames, bodies]
         for field_name in PER_ACTOR_FIELDS:
-            view[field_name] = a[field_name][:, k]
+            view[field_name] = a[field_name][frames, k]
         for field_name in LOG_FIELDS:
             if field_name in a:
                 view[field_name] = a[field_name]
-        view["control"] = a["control"][:, slice(*m["actuators"])]
+        view["control"] = a["control"][: end - 1, slice(*m["actuators"])]
+        view["step_division"] = a["step_division"][: end - 1]
         meta = {key: self.meta[key] for key in SHARED_META if key in self.meta}
         meta.update({key: m[key] for key in ACTOR_META if key in m})
         meta.update(actor=name, actor_prefix=m["prefix"])
+        if end < len(a["time"]):
+            tick_time = self.meta["steps_per_tick"] * self.meta["timestep"]
+            meta.update(ended_early=True, duration=float((end - 1) * tick_time))   # as a lone run counts it
         return Trajectory(view, meta)
 
     def save(self, path: str | Path) -> Path:

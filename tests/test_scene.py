@@ -250,3 +250,20 @@ def test_rates_that_do_not_share_a_loop_are_refused():
     assert control_tick(Scene(World(), [balance], 1.0)) == (100.0, {"a": 1})
     with pytest.raises(SceneError, match="actor 'a' runs at 100 Hz, which does not divide the scene's 150 Hz loop"):
         control_tick(Scene(World(), [balance, other], 1.0))
+
+
+def test_an_actor_whose_skill_ends_holds_and_is_judged_up_to_its_end():
+    """A dive ends at water entry: alone the run stops there; in a scene the diver holds while the
+    coach on the platform balances on, and the diver's view ends where the lone run does."""
+    lone = run(RunRequest("dive", "man", duration=3.0))
+    scene = run_scene(scene_from_dict({"duration": 3.0, "actors": [
+        {"name": "diver", "character": "man", "behaviour": "dive"},
+        {"name": "coach", "character": "woman", "behaviour": "balance", "position": [2.5, 0], "heading": 180}]}))
+    diver, coach = scene.meta["actors"]
+    assert scene.meta["world"]["platform"] == 10.0                 # the dive's platform, for both
+    assert diver["completed"] and diver["phase_events"][-1][1] == "complete_holding"
+    assert (diver["outcome"], coach["outcome"]) == ("success", "success")
+    view = scene.actor("diver")
+    assert view.meta["ended_early"] and view.meta["duration"] == lone.meta["duration"]
+    assert len(view.time) == len(lone.time) and scene.time[-1] == pytest.approx(3.0)
+    assert largest_difference(scene, replay(scene)) == 0.0
