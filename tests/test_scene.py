@@ -266,4 +266,6 @@ def test_an_actor_whose_skill_ends_holds_and_is_judged_up_to_its_end():
     view = scene.actor("diver")
     assert view.meta["ended_early"] and view.meta["duration"] == lone.meta["duration"]
     assert len(view.time) == len(lone.time) and scene.time[-1] == pytest.approx(3.0)
+    # the coach never touches the diver: the diver moves as alone, to the solver's round-off
+    assert np.abs(view.qpos - lone.qpos).max() < 1e-5
     assert largest_difference(scene, replay(scene)) == 0.0
