@@ -9,6 +9,10 @@ Per control tick, in this order (replay follows the same order):
   3. record a frame;
   4. the behaviour sets servo targets -> control vector (live run) / read it from the log (replay);
   5. ``steps_per_tick`` x ``step_division`` physics steps of the model's step / ``step_division``.
+
+``run`` drives one character (a RunRequest); ``run_scene`` drives every actor of a scene
+(sim_core.scene) in one model with the same loop: in step 4 each actor's behaviour writes its own
+slice of the control vector, on its own ticks.
 """
 from __future__ import annotations
 
