@@ -6,6 +6,11 @@
 (In a repository checkout the add-on folder is ``blender_addon``; with Blender as a Python
 module, ``python blender_addon/batch.py --character man ...`` does the same.)
 
+A scene of several actors (sim_core.scene; docs/scenes.md) bakes each actor onto its own
+armature, named after the actor, in one .blend:
+
+    blender -b -P <add-on folder>/batch.py -- --scene examples/two_runners.json --out out/runners.blend
+
 Everything is validated before the scene is touched. Exit status: 0 baked (the outcome is
 printed, whatever it is), 2 bad input (one line on stderr naming the value and what is
 allowed), 3 the run's outcome was not success and ``--require-success`` was given, 1 anything
@@ -46,7 +51,8 @@ def parse_args(argv: list[str], request_arguments=None) -> argparse.Namespace:
     as ``python -m sim_core simulate`` has them: --duration, --strength, --slope, --push...)."""
     p = _Parser(prog=PROG, description="Simulate a behaviour and bake it into a .blend")
     p.add_argument("--character", default="man", help="character name (rigs/<name>.json); default man")
-    p.add_argument("--behaviour", required=True, help="behaviour name, e.g. balance")
+    p.add_argument("--behaviour", help="behaviour name, e.g. balance (or --scene)")
+    p.add_argument("--scene", help="scene file (.json/.toml): every actor baked onto its own armature")
     p.add_argument("--set", dest="assignments", action="append", default=[], metavar="NAME=VALUE",
                    help="behaviour parameter (repeatable), SI units: metres, radians, seconds")
     if request_arguments is not None:
@@ -60,6 +66,11 @@ def parse_args(argv: list[str], request_arguments=None) -> argparse.Namespace:
     args = p.parse_args(argv)
     if not args.out.endswith(".blend"):
         raise BatchError(f"--out {args.out!r} must end in .blend")
+    if bool(args.behaviour) == bool(args.scene):
+        raise BatchError("give --behaviour (one character) or --scene FILE (its actors), one of the two")
+    if args.scene and (args.assignments or args.duration is not None or args.strength != "human"
+                       or args.character != "man"):
+        raise BatchError("--character, --set, --duration and --strength do not apply to --scene: set them in the scene file")
     if args.fps is not None and not 1 <= args.fps <= 1000:
         raise BatchError(f"--fps {args.fps} is out of range; allowed range is [1, 1000]")
     return args
@@ -71,6 +82,19 @@ def script_argv(argv: list[str] | None = None) -> list[str]:
     return argv[argv.index("--") + 1:] if "--" in argv else argv[1:]
 
 
+def _prepared_file(args: argparse.Namespace, pkg):
+    """An empty file (or the loaded one with --keep-scene), the add-on registered, the frame rate
+    set; returns bpy.context."""
+    import bpy
+    if not args.keep_scene:
+        bpy.ops.wm.read_homefile(use_empty=True)
+    if "sim_athletics" not in bpy.types.Scene.bl_rna.properties:
+        pkg.register()
+    if args.fps is not None:
+        bpy.context.scene.render.fps, bpy.context.scene.render.fps_base = args.fps, 1.0
+    return bpy.context
+
+
 def run(argv: list[str]) -> int:
     import bpy
     pkg = _package()
@@ -80,6 +104,8 @@ def run(argv: list[str]) -> int:
     SimAthleticsError = sim("errors").SimAthleticsError
     try:
         args = parse_args(argv, sim("request").add_request_arguments)
+        if args.scene:
+            return run_scene(args, pkg)
         params = api.parse_params(args.behaviour, args.assignments)
         request, pushes = sim("request").request_values(args)
         api.make_request(args.character, args.behaviour, params, request=request, pushes=pushes)   # validate all first
@@ -87,14 +113,8 @@ def run(argv: list[str]) -> int:
         print(f"{PROG}: error: {exc}", file=sys.stderr)
         return 2
 
-    if not args.keep_scene:
-        bpy.ops.wm.read_homefile(use_empty=True)
-    if "sim_athletics" not in bpy.types.Scene.bl_rna.properties:
-        pkg.register()
-    context = bpy.context
+    context = _prepared_file(args, pkg)
     scene = context.scene
-    if args.fps is not None:
-        scene.render.fps, scene.render.fps_base = args.fps, 1.0
     try:
         arm = api.add_character(context, args.character)
         action, trajectory = api.simulate_and_bake(
@@ -113,6 +133,53 @@ def run(argv: list[str]) -> int:
     print(f"{PROG}: baked {action.name!r} onto {arm.name}: frames {frames[0]:g}-{frames[1]:g} at "
           f"{scene.render.fps / scene.render.fps_base:g} fps, outcome {outcome}; wrote {out}")
     if args.require_success and outcome != "success":
+        return 3
+    return 0
+
+
+def run_scene(args: argparse.Namespace, pkg) -> int:
+    """Bake every actor of the scene file onto its own armature (named after the actor; the
+    armature at the world origin, so its baked root motion puts the actor where the scene placed
+    it), the world's props once, and save one .blend."""
+    import bpy
+    from sim_core.errors import SimAthleticsError
+    from sim_core.scene import load_scene
+    from sim_core.simulate import run_scene as simulate_scene
+    api = importlib.import_module(pkg.__name__ + ".api")
+    rig = importlib.import_module(pkg.__name__ + ".rig")
+    bake = importlib.import_module(pkg.__name__ + ".bake")
+    scenery = importlib.import_module(pkg.__name__ + ".scenery")
+    try:
+        trajectory = simulate_scene(load_scene(args.scene), progress=api.console_progress)
+    except SimAthleticsError as exc:
+        print(f"{PROG}: error: {exc}", file=sys.stderr)
+        return 2
+    context = _prepared_file(args, pkg)
+    scene = context.scene
+    fps, end = bake.scene_fps(scene), args.start_frame
+    outcomes = {}
+    try:
+        for actor in trajectory.meta["actors"]:
+            arm = api.add_character(context, actor["character"], location=(0.0, 0.0, 0.0))
+            arm.name = arm.data.name = actor["name"]
+            for child in arm.children:
+                child.name = f"{actor['name']}_skin"
+            action = bake.bake_trajectory(arm, trajectory.actor(actor["name"]), fps=fps, start_frame=args.start_frame)
+            end = max(end, int(round(action.frame_range[1])))
+            outcomes[arm.name] = actor["outcome"]
+        scenery.add_scenery(context, arm, trajectory)
+    except (SimAthleticsError, rig.RigError) as exc:
+        print(f"{PROG}: error: {exc}", file=sys.stderr)
+        return 2
+    scene.frame_start, scene.frame_end = args.start_frame, end
+    out = Path(args.out).resolve()
+    out.parent.mkdir(parents=True, exist_ok=True)
+    if args.trajectory:
+        trajectory.save(args.trajectory)
+    bpy.ops.wm.save_as_mainfile(filepath=str(out))
+    print(f"{PROG}: baked {len(outcomes)} actors (frames {args.start_frame}-{end} at {fps:g} fps), outcomes "
+          f"{', '.join(f'{k} {v}' for k, v in outcomes.items())}; wrote {out}")
+    if args.require_success and any(v != "success" for v in outcomes.values()):
         return 3
     return 0
 

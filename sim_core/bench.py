@@ -5,6 +5,10 @@ The raw baseline steps the same compiled model from the same initial state with 
 vectors the controlled run produced, so both meet the same contacts; it does no control and no
 recording. Both time the stepping loop only (building the model and analysing the run are
 outside it). Each figure is the best of ``repeats`` runs, interleaved.
+
+``scene_bench`` does the same for a scene of several runners side by side in one model: the
+scene loop (every actor's behaviour, servos and recording) against raw ``mj_step`` of the same
+many-actor model.
 """
 from __future__ import annotations
 
@@ -12,7 +16,10 @@ import time
 
 import mujoco
 
-from sim_core.simulate import RunRequest, run
+from sim_core.scene import scene_from_dict
+from sim_core.simulate import RunRequest, run, run_scene
+
+SCENE_SPACING = 1.2          # m between the runners of the benchmark scene (side by side)
 
 
 def raw_stepping_rate(trajectory, repeats: int) -> float:
@@ -21,6 +28,9 @@ def raw_stepping_rate(trajectory, repeats: int) -> float:
     data = mujoco.MjData(model)
     control = trajectory.arrays["control"]
     steps = meta["steps_per_tick"]
+    divisions = trajectory.arrays["step_division"]
+    if (divisions != 1).any():
+        raise ValueError("the raw baseline steps at the model's step: bench a run without divided steps")
     best = float("inf")
     for _ in range(repeats):
         mujoco.mj_setState(model, data, trajectory.arrays["initial_state"], meta["state_spec"])
@@ -53,4 +63,26 @@ def bench(behaviour: str = "balance", character: str = "man", duration: float = 
         raw_rate = max(raw_rate, raw_stepping_rate(trajectory, 1))
     return {"behaviour": behaviour, "character": character, "simulated_s": duration,
             "controller_in_loop_sim_s_per_wall_s": loop_rate, "raw_mj_step_sim_s_per_wall_s": raw_rate,
+            "ratio": loop_rate / raw_rate}
+
+
+def runners_scene(count: int, duration: float, speed: float = 3.0) -> dict:
+    """A scene file's dict: ``count`` men running side by side along +X."""
+    return {"duration": duration, "actors": [
+        {"name": f"runner{k}", "character": "man", "behaviour": "running", "params": {"speed": speed},
+         "position": [0.0, SCENE_SPACING * (k - (count - 1) / 2)], "heading": 0.0} for k in range(count)]}
+
+
+def scene_bench(count: int = 4, duration: float = 5.0, repeats: int = 3) -> dict:
+    """Scene loop against raw mj_step of the same ``count``-actor model (interleaved, best of
+    ``repeats``); also each runner's outcome, so a benchmark of falling runners shows."""
+    scene = scene_from_dict(runners_scene(count, duration))
+    loop_rate = raw_rate = 0.0
+    for _ in range(repeats):
+        trajectory = run_scene(scene)
+        loop_rate = max(loop_rate, trajectory.meta["duration"] / trajectory.meta["wall_seconds_in_loop"])
+        raw_rate = max(raw_rate, raw_stepping_rate(trajectory, 1))
+    return {"scene": f"{count} runners", "simulated_s": duration,
+            "outcomes": {a["name"]: a["outcome"] for a in trajectory.meta["actors"]},
+            "scene_loop_sim_s_per_wall_s": loop_rate, "raw_mj_step_sim_s_per_wall_s": raw_rate,
             "ratio": loop_rate / raw_rate}

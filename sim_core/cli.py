@@ -94,9 +94,13 @@ def _use_store(args) -> None:
 
 def cmd_simulate(args) -> int:
     from sim_core.simulate import run
-    request = build_request(args)
     if args.out and not args.out.endswith(".npz"):
         raise ParameterError(f"--out {args.out!r} must end in .npz")
+    if args.scene:
+        return simulate_scene(args)
+    if not args.behaviour:
+        raise ParameterError("simulate needs a behaviour (see list) or --scene FILE")
+    request = build_request(args)
     _use_store(args)
     # planning runs here, above the loop, not in the behaviour; for planning.PLANNED_BEHAVIOURS only (imported
     # only then: the search service's imports take about a second)
@@ -138,6 +142,31 @@ def cmd_plan(args) -> int:
     return 0
 
 
+SINGLE_ACTOR_OPTIONS = ("set", "duration", "push", "start_height", "start_velocity", "backpack", "slope", "strength",
+                        "character")
+
+
+def simulate_scene(args) -> int:
+    """``simulate --scene FILE``: every actor of the scene file in one run; the summary lists each
+    actor's outcome. The scene file says everything: the one-character options are refused."""
+    from sim_core.scene import load_scene
+    from sim_core.simulate import run_scene
+    defaults = parser().parse_args(["simulate", "x"])
+    for option in SINGLE_ACTOR_OPTIONS:
+        if getattr(args, option) != getattr(defaults, option):
+            raise ParameterError(f"--{option.replace('_', '-')} does not apply to --scene: set it in the scene file")
+    if args.behaviour:
+        raise ParameterError(f"give a behaviour ({args.behaviour!r}) or --scene, not both")
+    trajectory = run_scene(load_scene(args.scene), progress=_progress_printer(args.progress or sys.stderr.isatty()))
+    if args.out:
+        trajectory.save(args.out)
+    actors = [{"name": a["name"], "character": a["character"], "behaviour": a["behaviour"],
+               "outcome": a["outcome"]} for a in trajectory.meta["actors"]]
+    print(json.dumps({"scene": args.scene, "duration": trajectory.meta["duration"], "actors": actors,
+                      "out": args.out}))
+    return 0
+
+
 def cmd_replay(args) -> int:
     from sim_core.simulate import largest_difference, replay
     from sim_core.trajectory import Trajectory
@@ -160,6 +189,13 @@ def cmd_bench(args) -> int:
     print(f"raw mj_step:            {result['raw_mj_step_sim_s_per_wall_s']:.2f} sim s / wall s")
     print(f"ratio:                  {result['ratio']:.3f}  (goal >= 0.75)")
     print(json.dumps(result))
+    if args.scene_actors:
+        from sim_core.bench import scene_bench
+        scene = scene_bench(count=args.scene_actors, duration=_finite(args.scene_duration, "--scene-duration"),
+                            repeats=args.repeats)
+        print(f"scene of {args.scene_actors} runners: {scene['scene_loop_sim_s_per_wall_s']:.2f} sim s / wall s, raw "
+              f"mj_step of the same model {scene['raw_mj_step_sim_s_per_wall_s']:.2f}, ratio {scene['ratio']:.3f}")
+        print(json.dumps(scene))
     return 0
 
 
@@ -177,8 +213,9 @@ def parser() -> argparse.ArgumentParser:
     d.add_argument("behaviour")
     d.add_argument("--markdown", action="store_true", help="print the parameter table as Markdown")
     d.set_defaults(func=cmd_describe)
-    s = sub.add_parser("simulate", help="run a behaviour and save its trajectory")
-    s.add_argument("behaviour")
+    s = sub.add_parser("simulate", help="run a behaviour (or a scene of several actors) and save its trajectory")
+    s.add_argument("behaviour", nargs="?", help="behaviour name (see list); omit with --scene")
+    s.add_argument("--scene", metavar="FILE", help="scene file (.json or .toml; see docs/scenes.md): a world and its actors")
     s.add_argument("--character", default="man", help="character name (see list) or path to a spec .json")
     s.add_argument("--set", action="append", metavar="NAME=VALUE", help="behaviour parameter (repeatable)")
     add_request_arguments(s)
@@ -207,6 +244,8 @@ def parser() -> argparse.ArgumentParser:
     b.add_argument("--set", action="append", metavar="NAME=VALUE")
     b.add_argument("--duration", default="10")
     b.add_argument("--repeats", type=int, default=5)
+    b.add_argument("--scene-actors", type=int, default=4, help="runners in the scene benchmark (0 = none)")
+    b.add_argument("--scene-duration", default="5", help="seconds simulated in the scene benchmark")
     b.set_defaults(func=cmd_bench)
     br = sub.add_parser("balance-report", help="push scan, slopes and backpacks for the balance behaviour")
     br.add_argument("--character", action="append", help="man and/or woman (default both)")

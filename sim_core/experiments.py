@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import math
 
-from sim_core.character.model import World
+from sim_core.world import World
 from sim_core.perturbation import DIRECTIONS, Push
 from sim_core.simulate import RunRequest, run
 

@@ -38,11 +38,12 @@ class Contact:
 def foot_site_columns(traj: Trajectory) -> dict[str, np.ndarray]:
     """Columns of ``support_points`` that belong to each foot (read off the model in the run)."""
     model = mujoco.MjModel.from_xml_string(traj.meta["model_xml"])
-    feet = {model.body(n).id for n in ("FOOTR", "FOOTL", "TOER", "TOEL")}
+    prefix = traj.meta.get("actor_prefix", "")              # one actor of a scene: its own feet
+    feet = {model.body(prefix + n).id for n in ("FOOTR", "FOOTL", "TOER", "TOEL")}
     sites = [i for i in range(model.nsite) if model.site_bodyid[i] in feet]   # the recorder's order
     columns = {}
     for foot, bodies in FEET:
-        ids = {model.body(b).id for b in bodies}
+        ids = {model.body(prefix + b).id for b in bodies}
         columns[foot] = np.array([k for k, s in enumerate(sites) if model.site_bodyid[s] in ids])
     return columns
 

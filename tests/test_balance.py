@@ -4,7 +4,7 @@ import math
 import numpy as np
 import pytest
 
-from sim_core.character.model import World
+from sim_core.world import World
 from sim_core.experiments import backpack_stands, push_recovered, slope_holds
 from sim_core.simulate import RunRequest, run
 

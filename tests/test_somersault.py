@@ -96,7 +96,8 @@ def test_a_lighter_tuck_damping_closes_the_tuck_sooner_and_the_finer_flight_step
     angular momentum within 1 % (measured 0.25 %; the same tuck in the model's 1 ms step drifts
     2 %), and the replay log reproduces the finer step bit for bit."""
     import numpy as np
-    from sim_core.character.model import World, compile_model
+    from sim_core.character.model import compile_model
+    from sim_core.world import World
     from sim_core.character.spec import load_character
     settings = {"crouch_height": 0.7008, "crouch_pitch": 1.4023, "com_offset": -0.1381, "thrust_lean": -0.0669,
                 "liftoff_hip": 1.9558, "arm_swing": 3.1917, "thrust_damping": 0.9597, "tuck_stiffness": 2.9339,

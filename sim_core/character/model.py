@@ -1,4 +1,5 @@
-"""Character spec -> MuJoCo model, built in code with MjSpec, plus the world around it.
+"""Character spec -> MuJoCo bodies, joints and servos in an MjSpec (the world's props are
+sim_core.world's; a scene puts several characters, prefixed, into one spec).
 
 Physics choices (ARCHITECTURE.md "Choices"):
   * timestep 1 ms with the ``implicitfast`` integrator: the PD servos are MuJoCo position
@@ -16,75 +17,39 @@ replayed from the text stored in its trajectory and reproduce it bit for bit.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 
 import mujoco
 import numpy as np
 
-from sim_core.ballistics import GRAVITY
 from sim_core.character.spec import CharacterSpec
+from sim_core.world import World, add_world
+from sim_core.world.props import CONTACT_GROUP, FOOT_FRICTION
 
 TIMESTEP = 0.001
 ARMATURE = 0.01            # kg m^2 on every hinge: numerical regularisation of light distal joints
-FOOT_FRICTION = 1.0
 BODY_FRICTION = 0.8
-SLOPE_RAMP_PER_DEGREE = 0.15   # s per degree: the ground tilts at ~6.7 deg/s
-PLATFORM_HEEL_GAP = 0.02   # m: the platform's edge is this far behind the heels (or ahead of the toes)
-PLATFORM_LENGTH, PLATFORM_WIDTH, PLATFORM_THICKNESS = 5.0, 2.0, 0.3     # m (FINA: >= 6 x 2 m)
 # thigh against belly: the rigid shapes would stop a pike or tuck well before a human's soft
 # tissue does (thighs on the chest); the hip's range of motion limits the flexion instead
 SOFT_TISSUE_PAIRS = [(f"ULEG{side}", chest) for side in "RL" for chest in ("CHEST3", "CHEST2", "CHEST1")]
-CONTACT_GROUP = 1          # contype/conaffinity bit for character and world geoms
 
 
-@dataclass
-class World:
-    """The world a character is put in. ``slope`` tilts the ground (radians) about the axis
-    named by ``slope_axis``: 'x+' means the ground rises towards +X. As in Wooten §7.3 the
-    ground starts level and tilts to the slope along a Hermite curve over ``slope_ramp``
-    seconds from ``slope_start``. The tilt is implemented by turning gravity, which is exactly
-    equivalent for a flat plane; each change is a logged model edit.
+@dataclass(frozen=True)
+class Placement:
+    """Where a character's standing start is put: its spec's origin moved to (x, y) on the ground
+    and turned by ``heading`` (rad, counter-clockwise from +X) about the vertical."""
+    x: float = 0.0
+    y: float = 0.0
+    heading: float = 0.0
 
-    ``platform`` > 0 makes a diving platform: the character stands on a platform whose top is
-    the z = 0 plane (so every standing controller works unchanged) and whose edge is just behind
-    the heels (the -X side, where a diver standing backwards has the water) or, with
-    ``platform_edge='ahead'``, just ahead of the toes (facing the water); the water surface
-    is ``platform`` metres below. Water is not simulated: the dive ends at entry (Wooten §8.2.1
-    lets entering the water end the run)."""
-    slope: float = 0.0
-    slope_axis: str = "x+"
-    extra_mass: dict[str, float] = field(default_factory=dict)   # body -> added kg (backpack)
-    slope_start: float = 0.5
-    slope_ramp: float | None = None            # s; default SLOPE_RAMP_PER_DEGREE per degree
-    platform: float = 0.0                      # m: height of a diving platform above the water (0 = none)
-    platform_edge: str = "behind"              # 'behind' the heels (water at -X) or 'ahead' of the toes (+X)
-    boxes: tuple = ()                          # ((x, y, height, length, width), ...) m: boxes standing on the
-                                               # ground, centred at (x, y), their tops at z = height, to jump
-                                               # onto, from or over (geoms "box0", "box1", ...)
-    floor: float = 0.0                         # m: height of the ground plane. Below 0, the character starts
-                                               # on a box (a box of World.boxes with its top at z = 0, so every
-                                               # standing controller works unchanged) and can jump down
+    def point(self, local) -> list[float]:
+        """A point of the character's own frame (x, y, z) in the world."""
+        c, s = math.cos(self.heading), math.sin(self.heading)
+        return [self.x + c * local[0] - s * local[1], self.y + s * local[0] + c * local[1], float(local[2])]
 
-    @property
-    def ramp_time(self) -> float:
-        if self.slope_ramp is not None:
-            return self.slope_ramp
-        return max(1.0, SLOPE_RAMP_PER_DEGREE * math.degrees(self.slope))
-
-    def gravity(self, t: float = 0.0) -> np.ndarray:
-        s = min(max((t - self.slope_start) / self.ramp_time, 0.0), 1.0) if self.slope else 0.0
-        return gravity_for_slope(self.slope * s * s * (3.0 - 2.0 * s), self.slope_axis)
-
-    def tilting(self, t: float) -> bool:
-        return bool(self.slope) and t <= self.slope_start + self.ramp_time + 0.02
-
-
-def gravity_for_slope(slope: float, axis: str) -> np.ndarray:
-    g = GRAVITY
-    # ground rising towards +X by angle a == gravity tilted to pull towards -X in the ground frame
-    direction = {"x+": np.array([-1.0, 0, 0]), "x-": np.array([1.0, 0, 0]),
-                 "y+": np.array([0, -1.0, 0]), "y-": np.array([0, 1.0, 0])}[axis]
-    return g * (math.sin(slope) * direction - math.cos(slope) * np.array([0, 0, 1.0]))
+    def quat(self) -> list[float]:
+        """The heading as a quaternion (w first)."""
+        return [math.cos(self.heading / 2), 0.0, 0.0, math.sin(self.heading / 2)]
 
 
 def _quat_from_x_to(direction) -> list[float]:
@@ -100,81 +65,38 @@ def _quat_from_x_to(direction) -> list[float]:
     return list(q / np.linalg.norm(q))
 
 
-def build_mjspec(character: CharacterSpec, world: World | None = None, strength: str | float = "human") -> mujoco.MjSpec:
-    world = world or World()
+def new_spec(name: str) -> mujoco.MjSpec:
+    """An empty MjSpec with the physics choices of the module doc (gravity is the world's)."""
     spec = mujoco.MjSpec()
-    spec.modelname = f"sim_athletics_{character.name}"
+    spec.modelname = name
     spec.option.timestep = TIMESTEP
     spec.option.integrator = mujoco.mjtIntegrator.mjINT_IMPLICITFAST
-    spec.option.gravity = world.gravity()
+    spec.option.gravity = World().gravity()
     spec.option.cone = mujoco.mjtCone.mjCONE_ELLIPTIC
     spec.compiler.inertiafromgeom = mujoco.mjtInertiaFromGeom.mjINERTIAFROMGEOM_FALSE
     spec.compiler.autolimits = True
     spec.compiler.degree = False          # every angle in the spec is in radians
+    return spec
 
-    if world.platform > 0:
-        sites = [c["pos"][0] for c in character.body("FOOTR")["contacts"] + character.body("TOER")["contacts"]]
-        if world.platform_edge == "ahead":         # facing the water: the edge just ahead of the toes
-            centre = max(sites) + PLATFORM_HEEL_GAP - PLATFORM_LENGTH / 2
-        else:                                      # backwards: the edge just behind the heels
-            centre = min(sites) - PLATFORM_HEEL_GAP + PLATFORM_LENGTH / 2
-        ground = spec.worldbody.add_geom(name="ground", type=mujoco.mjtGeom.mjGEOM_BOX,
-                                         size=[PLATFORM_LENGTH / 2, PLATFORM_WIDTH / 2, PLATFORM_THICKNESS / 2],
-                                         pos=[centre, 0, -PLATFORM_THICKNESS / 2])
-        water = spec.worldbody.add_geom(name="water", type=mujoco.mjtGeom.mjGEOM_PLANE, size=[20, 20, 0.05],
-                                        pos=[0, 0, -world.platform], rgba=[0.2, 0.4, 0.8, 0.5])
-        water.contype = water.conaffinity = 0               # seen, not felt: the dive ends at entry
-    else:
-        ground = spec.worldbody.add_geom(name="ground", type=mujoco.mjtGeom.mjGEOM_PLANE, size=[0, 0, 0.05],
-                                         pos=[0, 0, world.floor])
-    ground.friction = [FOOT_FRICTION, 0.005, 0.0001]
-    ground.contype = ground.conaffinity = CONTACT_GROUP
-    for k, (x, y, height, length, width) in enumerate(world.boxes):
-        half = (height - world.floor) / 2              # from the ground up to its top
-        box = spec.worldbody.add_geom(name=f"box{k}", type=mujoco.mjtGeom.mjGEOM_BOX,
-                                      size=[length / 2, width / 2, half], pos=[x, y, world.floor + half],
-                                      rgba=[0.6, 0.5, 0.4, 1])
-        box.friction = [FOOT_FRICTION, 0.005, 0.0001]
-        box.contype = box.conaffinity = CONTACT_GROUP
 
+def build_mjspec(character: CharacterSpec, world: World | None = None, strength: str | float = "human") -> mujoco.MjSpec:
+    """One character, unprefixed, standing at the origin facing +X, in ``world``."""
+    world = world or World()
+    spec = new_spec(f"sim_athletics_{character.name}")
+    add_world(spec, world, character)
+    add_character(spec, character, world.extra_mass, strength)
+    return spec
+
+
+def add_character(spec: mujoco.MjSpec, character: CharacterSpec, extra_mass: dict | None = None,
+                  strength: str | float = "human", prefix: str = "", placement: Placement | None = None) -> None:
+    """The character's bodies, joints, geoms, sites, servos and excluded contact pairs, every name
+    prefixed by ``prefix`` (a scene's "<actor>/"; "" for a single character), its root at
+    ``placement`` (None: the spec's own frame, as a single character stands)."""
+    _add_bodies(spec, character, extra_mass or {}, prefix, placement)
     torque_scale = _torque_scale(strength)
-    frames: dict[str, np.ndarray] = {}
-    mj_bodies: dict[str, mujoco.MjsBody] = {}
-    for b in character.bodies:
-        com = np.array(b["com"])
-        if b["parent"] is None:
-            origin = com.copy()
-            body = spec.worldbody.add_body(name=b["name"], pos=origin.tolist())
-            body.add_freejoint(name="root")
-        else:
-            origin = np.array(b["joint"]["pos"])
-            body = mj_bodies[b["parent"]].add_body(name=b["name"], pos=(origin - frames[b["parent"]]).tolist())
-            for d in b["joint"]["dofs"]:
-                j = body.add_joint(name=d["name"], type=mujoco.mjtJoint.mjJNT_HINGE, axis=d["axis"],
-                                   range=d["range"], limited=mujoco.mjtLimited.mjLIMITED_TRUE)
-                j.armature = ARMATURE
-        frames[b["name"]] = origin
-        mj_bodies[b["name"]] = body
-        mass = b["mass"] + world.extra_mass.get(b["name"], 0.0)
-        body.explicitinertial = True
-        body.mass = mass
-        body.ipos = (com - origin).tolist()
-        inertia = np.array(b["inertia"]) * (mass / b["mass"])
-        body.fullinertia = [inertia[0, 0], inertia[1, 1], inertia[2, 2], inertia[0, 1], inertia[0, 2], inertia[1, 2]]
-        for k, shape in enumerate(b["shapes"]):
-            _add_shape(body, shape, origin, f"{b['name']}_shape{k}")
-        for c in b.get("contacts", []):
-            g = body.add_geom(name=f"{b['name']}_{c['site']}", type=mujoco.mjtGeom.mjGEOM_SPHERE,
-                              size=[c["radius"], 0, 0], pos=(np.array(c["pos"]) - origin).tolist())
-            g.friction = [FOOT_FRICTION, 0.005, 0.0001]
-            g.contype = g.conaffinity = CONTACT_GROUP
-            g.group = 3
-            body.add_site(name=f"{b['name']}_{c['site']}", pos=(np.array(c["pos"]) - origin - [0, 0, c["radius"]]).tolist())
-    sternum = character.body("STERNUM")
-    mj_bodies["STERNUM"].add_site(name="push_point", pos=(np.array(sternum["com"]) - frames["STERNUM"]).tolist())
-
     for dof in character.dofs:
-        act = spec.add_actuator(name=dof.name, target=dof.name, trntype=mujoco.mjtTrn.mjTRN_JOINT)
+        act = spec.add_actuator(name=prefix + dof.name, target=prefix + dof.name, trntype=mujoco.mjtTrn.mjTRN_JOINT)
         act.set_to_position(kp=dof.kp, kv=dof.kv)
         act.ctrllimited = mujoco.mjtLimited.mjLIMITED_FALSE
         if torque_scale is not None:
@@ -182,8 +104,51 @@ def build_mjspec(character: CharacterSpec, world: World | None = None, strength:
             act.forcerange = [-dof.torque_limit * torque_scale, dof.torque_limit * torque_scale]
         else:
             act.forcelimited = mujoco.mjtLimited.mjLIMITED_FALSE
-    _exclude_touching_pairs(spec, character)
-    return spec
+    for a, b in excluded_pairs(character):
+        spec.add_exclude(bodyname1=prefix + a, bodyname2=prefix + b)
+
+
+def _add_bodies(spec: mujoco.MjSpec, character: CharacterSpec, extra_mass: dict, prefix: str,
+                placement: Placement | None) -> None:
+    """Bodies, joints, shapes and contact spheres with their sites (see add_character)."""
+    frames: dict[str, np.ndarray] = {}
+    mj_bodies: dict[str, mujoco.MjsBody] = {}
+    for b in character.bodies:
+        com = np.array(b["com"])
+        if b["parent"] is None:
+            origin = com.copy()
+            if placement is None:
+                body = spec.worldbody.add_body(name=prefix + b["name"], pos=origin.tolist())
+            else:
+                body = spec.worldbody.add_body(name=prefix + b["name"], pos=placement.point(origin),
+                                               quat=placement.quat())
+            body.add_freejoint(name=prefix + "root")
+        else:
+            origin = np.array(b["joint"]["pos"])
+            body = mj_bodies[b["parent"]].add_body(name=prefix + b["name"], pos=(origin - frames[b["parent"]]).tolist())
+            for d in b["joint"]["dofs"]:
+                j = body.add_joint(name=prefix + d["name"], type=mujoco.mjtJoint.mjJNT_HINGE, axis=d["axis"],
+                                   range=d["range"], limited=mujoco.mjtLimited.mjLIMITED_TRUE)
+                j.armature = ARMATURE
+        frames[b["name"]] = origin
+        mj_bodies[b["name"]] = body
+        mass = b["mass"] + extra_mass.get(b["name"], 0.0)
+        body.explicitinertial = True
+        body.mass = mass
+        body.ipos = (com - origin).tolist()
+        inertia = np.array(b["inertia"]) * (mass / b["mass"])
+        body.fullinertia = [inertia[0, 0], inertia[1, 1], inertia[2, 2], inertia[0, 1], inertia[0, 2], inertia[1, 2]]
+        for k, shape in enumerate(b["shapes"]):
+            _add_shape(body, shape, origin, f"{prefix}{b['name']}_shape{k}")
+        for c in b.get("contacts", []):
+            g = body.add_geom(name=f"{prefix}{b['name']}_{c['site']}", type=mujoco.mjtGeom.mjGEOM_SPHERE,
+                              size=[c["radius"], 0, 0], pos=(np.array(c["pos"]) - origin).tolist())
+            g.friction = [FOOT_FRICTION, 0.005, 0.0001]
+            g.contype = g.conaffinity = CONTACT_GROUP
+            g.group = 3
+            body.add_site(name=f"{prefix}{b['name']}_{c['site']}", pos=(np.array(c["pos"]) - origin - [0, 0, c["radius"]]).tolist())
+    sternum = character.body("STERNUM")
+    mj_bodies["STERNUM"].add_site(name=prefix + "push_point", pos=(np.array(sternum["com"]) - frames["STERNUM"]).tolist())
 
 
 def _torque_scale(strength) -> float | None:
@@ -214,33 +179,45 @@ def _add_shape(body, shape: dict, origin: np.ndarray, name: str) -> None:
     geom.rgba = [0.8, 0.65, 0.55, 1]
 
 
-def _exclude_touching_pairs(spec: mujoco.MjSpec, character: CharacterSpec) -> None:
+def excluded_pairs(character: CharacterSpec) -> list[tuple[str, str]]:
     """Bodies whose shapes already touch in the standing pose (e.g. an upper arm against the
     chest) would push each other apart from the first step; exclude those pairs, keep all others
-    colliding so limbs cannot pass through each other. (Parent and child never collide in MuJoCo.)"""
+    colliding so limbs cannot pass through each other. (Parent and child never collide in MuJoCo.)
+    Read off the character alone: contacts with the world's geoms do not count."""
+    spec = new_spec(f"sim_athletics_{character.name}")
+    _add_bodies(spec, character, {}, "", None)
     model = spec.compile()
     data = mujoco.MjData(model)
     set_standing_pose(model, data, character)
     mujoco.mj_forward(model, data)
     pairs = set()
     for c in data.contact[: data.ncon]:
-        if model.geom_bodyid[c.geom1] == 0 or model.geom_bodyid[c.geom2] == 0:     # the world's geoms
-            continue
         b1, b2 = model.geom_bodyid[c.geom1], model.geom_bodyid[c.geom2]
         pairs.add(tuple(sorted((model.body(b1).name, model.body(b2).name))))
     pairs |= {tuple(sorted(pair)) for pair in SOFT_TISSUE_PAIRS}
-    for a, b in sorted(pairs):
-        spec.add_exclude(bodyname1=a, bodyname2=b)
+    return sorted(pairs)
 
 
 def set_standing_pose(model: mujoco.MjModel, data: mujoco.MjData, character: CharacterSpec) -> None:
     """Reference configuration with the spec's standing pose; feet on the ground."""
     mujoco.mj_resetData(model, data)
+    place_standing(model, data, character)
+
+
+def place_standing(model: mujoco.MjModel, data: mujoco.MjData, character: CharacterSpec, prefix: str = "",
+                   placement: Placement | None = None) -> None:
+    """The character named by ``prefix`` in the spec's standing pose at ``placement`` (None: its
+    own frame); the rest of ``data`` is left as it is."""
     pelvis = character.bodies[0]
-    data.qpos[:3] = pelvis["com"]
-    data.qpos[3:7] = [1, 0, 0, 0]
+    root = model.joint(prefix + "root").qposadr[0]
+    if placement is None:
+        data.qpos[root:root + 3] = pelvis["com"]
+        data.qpos[root + 3:root + 7] = [1, 0, 0, 0]
+    else:
+        data.qpos[root:root + 3] = placement.point(pelvis["com"])
+        data.qpos[root + 3:root + 7] = placement.quat()
     for i, dof in enumerate(character.dofs):
-        data.qpos[model.joint(dof.name).qposadr[0]] = character.standing_pose[i]
+        data.qpos[model.joint(prefix + dof.name).qposadr[0]] = character.standing_pose[i]
 
 
 def compile_model(character: CharacterSpec, world: World | None = None, strength="human") -> tuple[mujoco.MjModel, str]:

@@ -134,13 +134,14 @@ class Balance(Behaviour):
         ch = ctx.character
         m = ctx.model
         self.legs = {s: LegGeometry(ch, s) for s in "RL"}
-        self.support = SupportGeometry(m)
+        self.support = SupportGeometry(m, prefix=ctx.actor.prefix)
         s = ctx.servos
         self.i = s.index
-        self.pelvis = m.body("PELVIS").id
+        body = ctx.actor.body_id
+        self.pelvis = body("PELVIS")
         self.total_mass = float(m.body_subtreemass[self.pelvis])
-        self.feet = [m.body("FOOTR").id, m.body("FOOTL").id]
-        self.hips = [m.body("ULEGR").id, m.body("ULEGL").id]
+        self.feet = [body("FOOTR"), body("FOOTL")]
+        self.hips = [body("ULEGR"), body("ULEGL")]
         self.spine_idx = s.indices(SPINE_Y)
         self.base = ch.standing_pose.copy()
         self.damping_ratio = s.default_kv / s.default_kp
@@ -196,7 +197,7 @@ class Balance(Behaviour):
 
     def _crouch_residual(self, height: float) -> float:
         """How far the COM of the best crouch pose at this height misses the centre of the feet."""
-        table = CrouchTable(self.ctx.model, self.ctx.character, [height], self.stand_height)
+        table = CrouchTable(self.ctx.model, self.ctx.character, [height], self.stand_height, actor=self.ctx.actor)
         knee, hip, ankle = table.table[0, :3]
         return abs(table.measure(knee, hip, ankle)[1])
 
@@ -257,7 +258,8 @@ class Balance(Behaviour):
         goal = self.params["pelvis_height"] or self.stand_height
         low = min(goal, self.initial_posture()[0])
         heights = np.linspace(low, self.stand_height, CROUCH_TABLE_ROWS) if low < self.stand_height else [goal]
-        self.crouch = CrouchTable(self.ctx.model, self.ctx.character, heights, self.stand_height)
+        self.crouch = CrouchTable(self.ctx.model, self.ctx.character, heights, self.stand_height,
+                                  actor=self.ctx.actor)
         self._postures = (self.initial_posture(), self.target_posture(), self.standing_posture())
         self.ctx.servos.hold(self.joint_targets(self.initial_posture()), t)
         self.event(t, "stand" if self.from_height is None else "balance")

@@ -10,6 +10,7 @@ import mujoco
 import numpy as np
 
 from sim_core.character.spec import CharacterSpec
+from sim_core.control.actor import ActorView
 from sim_core.control.servo import ServoBank
 from sim_core.errors import UnknownNameError
 from sim_core.schema import Schema
@@ -56,6 +57,12 @@ class ControlContext:
     step_division: int = 1            # the physics step of the coming control tick is the model's
                                       # divided by this (a behaviour sets it where fast motion needs
                                       # a finer step, e.g. a twisting flight); logged for replay
+    actor: ActorView | None = None    # where this behaviour's character is in the model (its name
+                                      # prefix, root body, index ranges); None: the model's only one
+
+    def __post_init__(self):
+        if self.actor is None:
+            self.actor = ActorView.of(self.model)
 
 
 class Behaviour:
@@ -65,6 +72,10 @@ class Behaviour:
     settings_schema: ClassVar[Schema] = Schema()   # what a search sets (a tuned table's rows; docs/tables.md)
     default_duration: ClassVar[float] = 5.0
     control_rate: ClassVar[float] = 200.0     # Hz at which update() runs; the servos run every step
+    # True for a skill that measures or aims in the world's own axes (a somersault's rotation in
+    # the X-Z plane, a jump's target from the origin): in a scene it must start at the origin
+    # facing +X (sim_core.scene refuses it elsewhere)
+    world_frame: ClassVar[bool] = False
 
     def __init__(self, params: dict[str, float], ctx: ControlContext):
         self.params = params

@@ -15,6 +15,7 @@ import mujoco
 import numpy as np
 
 from sim_core.character.spec import CharacterSpec
+from sim_core.control.actor import ActorView
 
 DORSIFLEXION_USE = 0.85        # share of the ankle's dorsiflexion range a crouch may use
 ARM_REACH_PER_DEPTH = 3.0      # forward arm raise (rad) per unit of relative crouch depth, as people
@@ -29,19 +30,23 @@ def arm_reach(height: float, standing_height: float) -> float:
 
 class CrouchTable:
     def __init__(self, model: mujoco.MjModel, character: CharacterSpec, heights: np.ndarray,
-                 standing_height: float, com_offset: float = 0.0):
+                 standing_height: float, com_offset: float = 0.0, actor: ActorView | None = None):
+        """``actor``: the character's part of the model (default: the model's only character);
+        the poses are measured in its foot's frame, wherever it stands."""
         self.model, self.character = model, character
+        actor = actor or ActorView.of(model)
         self.com_offset = com_offset
         self.data = mujoco.MjData(model)
         self.base_qpos = np.zeros(model.nq)
-        self.base_qpos[3] = 1.0                          # root at the origin, upright
+        for joint in np.nonzero(model.jnt_type == mujoco.mjtJoint.mjJNT_FREE)[0]:
+            self.base_qpos[model.jnt_qposadr[joint] + 3] = 1.0       # every root at the origin, upright
         for i, dof in enumerate(character.dofs):
-            self.base_qpos[model.joint(dof.name).qposadr[0]] = character.standing_pose[i]
-        jnt = lambda n: model.joint(n).qposadr[0]
+            self.base_qpos[actor.joint_qposadr(dof.name)] = character.standing_pose[i]
+        jnt = actor.joint_qposadr
         self.adr = {n: jnt(n) for n in ("knee_r_y", "knee_l_y", "hip_r_y", "hip_l_y", "ankle_r_y", "ankle_l_y")}
-        self.foot = model.body("FOOTR").id
-        self.pelvis = model.body("PELVIS").id
-        self.hips = (model.body("ULEGR").id, model.body("ULEGL").id)
+        self.foot = actor.body_id("FOOTR")
+        self.pelvis = actor.body_id("PELVIS")
+        self.hips = (actor.body_id("ULEGR"), actor.body_id("ULEGL"))
         ankle = character.joint_position("FOOTR")
         self.ankle_height = float(ankle[2])
         sites = [c["pos"] for c in character.body("FOOTR")["contacts"] + character.body("TOER")["contacts"]]
@@ -49,7 +54,7 @@ class CrouchTable:
         lo = character.dofs[character.dof_index["ankle_r_y"]].range[0]
         self.ankle_min = DORSIFLEXION_USE * lo
         self.standing_height = standing_height
-        self.shoulders = [(model.joint(f"shoulder_{side}_z").qposadr[0], sign) for side, sign in (("r", 1.0), ("l", -1.0))]
+        self.shoulders = [(jnt(f"shoulder_{side}_z"), sign) for side, sign in (("r", 1.0), ("l", -1.0))]
         self.heights = np.asarray(heights, dtype=float)
         rows = [self.solve(h) for h in self.heights]                 # knee, hip_y, ankle_y, pelvis_pitch
         self.table = np.array([(*row, self.leg_length(*row[:3])) for row in rows])   # + hip-ankle distance

@@ -119,6 +119,7 @@ DIVES_TABLE = register_table(TableType(
 @register
 class Dive(Sequence):
     name = "dive"
+    world_frame = True             # turns / aims in the world's X-Z plane from the origin
     summary = "Platform dive: leap backwards off the edge, somersault and twist in flight, enter the water straight (Wooten §8.2.1)."
     default_duration = 4.0
     settings_schema = DIVE_SETTINGS
@@ -205,21 +206,22 @@ class Dive(Sequence):
         return ENTRY_REACH * float(self.ctx.character.bodies[0]["com"][2])
 
     def _position_inertia(self) -> float:
-        return position_inertia(self.ctx.model, self.ctx.character, position_name(self.params["position"]))
+        return position_inertia(self.ctx.model, self.ctx.character, position_name(self.params["position"]),
+                                self.ctx.actor)
 
     def _line_inertia(self) -> float:
         if not hasattr(self, "_line"):
-            self._line = position_inertia(self.ctx.model, self.ctx.character, "line")
+            self._line = position_inertia(self.ctx.model, self.ctx.character, "line", self.ctx.actor)
         return self._line
 
     # ------------------------------------------------------------------ the script
     def steps(self) -> list[Step]:
         p, ctx = self.params, self.ctx
         cfg = self.cfg = self.settings()
-        self.rotation = FlightRotation(ctx.model, ctx.data)
+        self.rotation = FlightRotation(ctx.model, ctx.data, ctx.actor)
         self.target = 2 * math.pi * p["somersaults"]
         self.twist_target = 2 * math.pi * p["twists"]
-        self.entry_bodies = [ctx.model.body(n).id for n in ("HANDR", "HANDL", "HEAD", "FOOTR", "FOOTL")]
+        self.entry_bodies = [ctx.actor.body_id(n) for n in ("HANDR", "HANDL", "HEAD", "FOOTR", "FOOTL")]
 
         def tumble(t):
             self.rotation.takeoff(t)
@@ -240,8 +242,9 @@ class Dive(Sequence):
         d = self.ctx.data
         remaining = self.target - self.direction * self.rotation.whole_body
         rate_now = self.direction * self.rotation.rate()
-        rate_line = self.direction * float(d.subtree_angmom[1][1]) / self._line_inertia()
-        time_left = time_to_fall_to(float(d.subtree_com[1][2]), float(d.subtree_linvel[1][2]),
+        root = self.ctx.actor.root
+        rate_line = self.direction * float(d.subtree_angmom[root][1]) / self._line_inertia()
+        time_left = time_to_fall_to(float(d.subtree_com[root][2]), float(d.subtree_linvel[root][2]),
                                     -self.params["platform_height"] + self._entry_reach())
         coming = rotation_to_come(rate_now, rate_line, time_left, OPEN_TIME)
         if self.twist_target and time_left <= self.cfg["twist_lead"]:
@@ -283,11 +286,11 @@ class _Aerial(Tumble):
         # the side of the platform the water is on: -1 (-X, standing backwards) or +1 (facing it)
         self.water_side = 1.0 if group_name(dive.params) in FACING_THE_WATER else -1.0
         self.edge = float(m.geom_pos[ground][0] + self.water_side * m.geom_size[ground][0])
-        self.feet = [m.body(n).id for n in ("FOOTR", "FOOTL", "TOER", "TOEL")]
+        self.feet = [ctx.actor.body_id(n) for n in ("FOOTR", "FOOTL", "TOER", "TOEL")]
         self.clear = self.params["position"] in (0, 3)
         self.moves = twist_moves(dive.twist_target / (2 * math.pi)) if dive.twist_target else []
         self.moves_made = 0                 # of self.moves
-        self.radius = position_radius(m, ctx.character, position_name(self.params["position"]))
+        self.radius = position_radius(m, ctx.character, position_name(self.params["position"]), ctx.actor)
 
     def start(self, t: float) -> None:
         self.ctx.step_division = FLIGHT_STEP_DIVISION
@@ -304,7 +307,7 @@ class _Aerial(Tumble):
         above the platform, or farther past its edge, than the position's reach; or the feet are
         already past the edge."""
         d = self.ctx.data
-        com = d.subtree_com[1]
+        com = d.subtree_com[self.ctx.actor.root]
         past = self.water_side * (com[0] - self.edge)           # how far the COM is out over the water
         if com[2] - self.radius > PLATFORM_MARGIN or past - self.radius > PLATFORM_MARGIN:
             return True
@@ -320,7 +323,7 @@ class _Aerial(Tumble):
             return
         if self.moves_made == len(self.moves):
             return
-        rate = abs(float(self.ctx.data.qvel[5]))
+        rate = abs(float(self.ctx.data.qvel[self.ctx.actor.root_dof + 5]))
         turns = (abs(self.rotation.twist) + rate * TWIST_STOP_LEAD) / (2 * math.pi)
         at, move = self.moves[self.moves_made]
         if turns >= at:

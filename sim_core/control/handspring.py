@@ -141,9 +141,9 @@ HANDSPRING_SETTINGS = Schema(*(dataclasses.replace(p, default=float(DEFAULT_ROW[
 class HandContact:
     """Whether a hand touches the world (the ground or a box), from MuJoCo's contact list."""
 
-    def __init__(self, model):
+    def __init__(self, model, prefix: str = ""):
         self.model = model
-        self.hands = np.array([model.body(n).id for n in HAND_BODIES])
+        self.hands = np.array([model.body(prefix + n).id for n in HAND_BODIES])
 
     def touching(self, data) -> bool:
         if not data.ncon:
@@ -182,6 +182,7 @@ class PoseMove(Behaviour):
 @register
 class Handspring(Sequence):
     name = "handspring"
+    world_frame = True             # turns / aims in the world's X-Z plane from the origin
     summary = ("Standing back handspring: sit back, leap backward, arch onto the hands, push off, snap down, "
                "land, balance (Wooten §8.3).")
     default_duration = 5.0
@@ -213,9 +214,9 @@ class Handspring(Sequence):
     def steps(self) -> list[Step]:
         ctx = self.ctx
         c = self.cfg = self.settings()
-        self.rotation = FlightRotation(ctx.model, ctx.data)
-        self.hands = HandContact(ctx.model)
-        self.airborne = Airborne(ctx.model)
+        self.rotation = FlightRotation(ctx.model, ctx.data, ctx.actor)
+        self.hands = HandContact(ctx.model, ctx.actor.prefix)
+        self.airborne = Airborne(ctx.model, ctx.actor.prefix)
         stand = standing_hip_height(ctx.character)
         self.t_hands = None
 
@@ -250,7 +251,7 @@ class Handspring(Sequence):
 
         def open_for_landing(b, t):
             turned = -self.rotation.somersault
-            return (turned >= 2 * math.pi - c["land_lean"] or ctx.data.subtree_com[1][2] < c["open_height"]
+            return (turned >= 2 * math.pi - c["land_lean"] or ctx.data.subtree_com[ctx.actor.root][2] < c["open_height"]
                     or self.airborne.feet_heights(ctx.data).min() < c["ready_height"])
 
         def land(t):

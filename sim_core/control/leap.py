@@ -80,8 +80,8 @@ def _sides(servos, *names):
 class Airborne:
     """Foot contact state from the foot sites."""
 
-    def __init__(self, model):
-        self.support = SupportGeometry(model)
+    def __init__(self, model, prefix: str = ""):
+        self.support = SupportGeometry(model, prefix=prefix)
 
     def feet_heights(self, data) -> np.ndarray:
         return self.support.heights(data)
@@ -112,7 +112,7 @@ class LeapThrust(Behaviour):
         super().__init__(params, ctx)
         self.timing, self.ankle_gain = timing, ankle_gain
         self.liftoff_hip, self.arm_swing = liftoff_hip, arm_swing
-        self.airborne = Airborne(ctx.model)
+        self.airborne = Airborne(ctx.model, ctx.actor.prefix)
         self.crouch_height = crouch_height
         self.stand_height = stand_height
         self.damping = damping
@@ -125,10 +125,11 @@ class LeapThrust(Behaviour):
         s.offset[:] = 0.0
         self.t0 = t
         heights = np.linspace(self.crouch_height, self.stand_height, 8)
-        self.path = CrouchTable(self.ctx.model, self.ctx.character, heights, self.stand_height, com_offset=self.lean)
+        self.path = CrouchTable(self.ctx.model, self.ctx.character, heights, self.stand_height, com_offset=self.lean,
+                                actor=self.ctx.actor)
         self.idx = {name: s.indices([f"{name}_r_y", f"{name}_l_y"]) for name in ("hip", "knee", "ankle")}
         self.hip_rotation = s.indices(["hip_r_z", "hip_l_z"])
-        self.pelvis = self.ctx.model.body("PELVIS").id
+        self.pelvis = self.ctx.actor.body_id("PELVIS")
         t_hip, t_knee, t_ankle = self.timing
         for side, sign in (("r", 1.0), ("l", -1.0)):
             s.move_to(s.indices([f"hip_{side}_x", f"hip_{side}_z", f"ankle_{side}_x"]),
@@ -209,10 +210,11 @@ class Landing(Behaviour):
     def __init__(self, params, ctx: ControlContext):
         super().__init__(params, ctx)
         m, s = ctx.model, ctx.servos
-        self.airborne = Airborne(m)
-        self.pelvis = m.body("PELVIS").id
-        self.feet = [m.body("FOOTR").id, m.body("FOOTL").id]
-        self.hips = [m.body("ULEGR").id, m.body("ULEGL").id]
+        body = ctx.actor.body_id
+        self.airborne = Airborne(m, ctx.actor.prefix)
+        self.pelvis = body("PELVIS")
+        self.feet = [body("FOOTR"), body("FOOTL")]
+        self.hips = [body("ULEGR"), body("ULEGL")]
         self.leg = LegGeometry(ctx.character, "R")
         self.ankle_height = self.leg.ankle_height
         balance = Balance(Balance.schema.defaults(), ctx)
@@ -227,17 +229,17 @@ class Landing(Behaviour):
         self.calibrated_delta = None
         self.last_fx = [None, None]
         self.last_fy = [None, None]
-        self.hip_x_range = [tuple(m.jnt_range[m.joint(f"hip_{side}_x").id]) for side in "rl"]
+        self.hip_x_range = [tuple(m.jnt_range[ctx.actor.joint_id(f"hip_{side}_x")]) for side in "rl"]
         self.touchdown_knee_speed = None
         self.com_height = float(ctx.data.subtree_com[self.pelvis][2])
         self.mass = float(m.body_subtreemass[self.pelvis])
         self.finished_at = None
         self.torque_cap = None
-        forcerange = m.actuator_forcerange[:, 1]
+        forcerange = m.actuator_forcerange[s.actuators, 1]
         limits = np.array([ctx.character.dofs[ctx.character.dof_index[n]].torque_limit for n in s.names])
         legs = s.indices([f"{j}_{side}_{a}" for j, a in (("hip", "y"), ("knee", "y"), ("ankle", "y"))
                           for side in "rl"])
-        if (~m.actuator_forcelimited.astype(bool)[legs]).any() or (forcerange[legs] > limits[legs] * LANDING_TORQUE_LIMIT).any():
+        if (~m.actuator_forcelimited[s.actuators].astype(bool)[legs]).any() or (forcerange[legs] > limits[legs] * LANDING_TORQUE_LIMIT).any():
             self.torque_cap = (legs, None, None, limits[legs] * LANDING_TORQUE_LIMIT)   # (model's own gains)
 
     def start(self, t: float) -> None:
@@ -245,7 +247,8 @@ class Landing(Behaviour):
         s.offset[:] = 0.0
         s.hold(s.smoothed_target(t), t)
         stand = standing_hip_height(self.ctx.character)
-        self.crouch = CrouchTable(self.ctx.model, self.ctx.character, np.linspace(0.5 * stand, stand, 6), stand)
+        self.crouch = CrouchTable(self.ctx.model, self.ctx.character, np.linspace(0.5 * stand, stand, 6), stand,
+                                  actor=self.ctx.actor)
         s.set_gains(np.arange(len(s.names)), s.default_kp, s.default_kv)     # undo the thrust gains
         # the arms swing in flight (their targets are set every tick: update() holds all targets)
         self.shoulders = s.indices(["shoulder_r_z", "shoulder_l_z"])
@@ -391,8 +394,8 @@ class Landing(Behaviour):
         if self.torque_cap is not None:
             # the servo's torque kp (target - q) - kv dq kept within the human limits by the target
             legs, _, _, cap = self.torque_cap
-            kp = self.ctx.model.actuator_gainprm[legs, 0]
-            kv = -self.ctx.model.actuator_biasprm[legs, 2]
+            kp = self.ctx.model.actuator_gainprm[s.actuators][legs, 0]
+            kv = -self.ctx.model.actuator_biasprm[s.actuators][legs, 2]
             q, dq = angles[legs], velocities[legs]
             torque = np.clip(kp * (targets[legs] + s.offset[legs] - q) - kv * dq, -cap, cap)
             targets[legs] = q + (torque + kv * dq) / kp - s.offset[legs]
@@ -427,9 +430,9 @@ def balance_after_landing(ctx: ControlContext, landing: Landing) -> Balance:
     the landed legs' (the balance's knees servo that distance): with the feet landed ahead of the
     hips, the vertical height would name a shorter leg, and the knees would snap up to it and pull
     the feet off the ground."""
-    d, m = ctx.data, ctx.model
-    hips = 0.5 * (d.xpos[m.body("ULEGR").id] + d.xpos[m.body("ULEGL").id])
-    feet = 0.5 * (d.xpos[m.body("FOOTR").id] + d.xpos[m.body("FOOTL").id])
+    d, body = ctx.data, ctx.actor.body_id
+    hips = 0.5 * (d.xpos[body("ULEGR")] + d.xpos[body("ULEGL")])
+    feet = 0.5 * (d.xpos[body("FOOTR")] + d.xpos[body("FOOTL")])
     leg_length = float(np.linalg.norm(hips - feet))
     height = float(np.interp(leg_length, landing.crouch.table[:, 4], landing.crouch.heights))
     return Balance(Balance.schema.validate(dict(move_start=0.0, move_time=1.2, return_to_stand=0)), ctx,
@@ -576,7 +579,7 @@ def run_strength(ctx: ControlContext) -> str:
     """The strength a calibration is kept under: "human" for the human torque limits (or a factor
     of them), "unlimited" when the leg servos have no torque limit."""
     knee = ctx.servos.index["knee_r_y"]
-    return "human" if ctx.model.actuator_forcelimited[knee] else "unlimited"
+    return "human" if ctx.model.actuator_forcelimited[ctx.servos.actuators][knee] else "unlimited"
 
 
 def vertical_key(ctx: ControlContext) -> str:

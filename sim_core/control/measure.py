@@ -61,10 +61,11 @@ class SupportGeometry:
     contributes all its sites to the support area, so a heel that lifts under a push does not
     move the centre of support forward (which would make the COM servo give way)."""
 
-    def __init__(self, model: mujoco.MjModel, feet=(("FOOTR", "TOER"), ("FOOTL", "TOEL"))):
+    def __init__(self, model: mujoco.MjModel, feet=(("FOOTR", "TOER"), ("FOOTL", "TOEL")), prefix: str = ""):
+        """``prefix``: the character's name prefix in a scene's model ("" for a single one)."""
         groups = []
         for bodies in feet:
-            ids = {model.body(b).id for b in bodies}
+            ids = {model.body(prefix + b).id for b in bodies}
             groups.append([i for i in range(model.nsite) if model.site_bodyid[i] in ids])
         self.site_ids = np.array([i for g in groups for i in g])
         self.foot_of_site = np.array([k for k, g in enumerate(groups) for _ in g])

@@ -40,6 +40,7 @@ from types import SimpleNamespace
 import numpy as np
 
 from sim_core.ballistics import GRAVITY, time_to_fall_to
+from sim_core.character.model import Placement
 from sim_core.control.behaviour import Behaviour, ControlContext, register
 from sim_core.control.running_leg import RunnerLeg
 from sim_core.control.running_path import (MAX_POINTS, PathFollower, circle_path, figure_eight_path, turn_path,
@@ -278,10 +279,10 @@ class Running(Behaviour):
     def __init__(self, params, ctx: ControlContext):
         super().__init__(params, ctx)
         m, s, ch = ctx.model, ctx.servos, ctx.character
-        self.pelvis = m.body("PELVIS").id
-        self.hip_body = [m.body("ULEGR").id, m.body("ULEGL").id]
+        self.pelvis = ctx.actor.body_id("PELVIS")
+        self.hip_body = [ctx.actor.body_id("ULEGR"), ctx.actor.body_id("ULEGL")]
         self.legs = [RunnerLeg(ch, "R"), RunnerLeg(ch, "L")]
-        site = lambda n: m.site(n).id
+        site = ctx.actor.site_id
         self.heel_sites = [[site(f"FOOT{c}_heel_a"), site(f"FOOT{c}_heel_b")] for c in "RL"]
         self.ball_sites = [[site(f"FOOT{c}_ball_a"), site(f"FOOT{c}_ball_b"), site(f"TOE{c}_toe_a"),
                             site(f"TOE{c}_toe_b")] for c in "RL"]
@@ -291,7 +292,7 @@ class Running(Behaviour):
                        ay=ix[f"ankle_{c}_y"], ax=ix[f"ankle_{c}_x"], mt=ix[f"mt_{c}_y"],
                        sx=ix[f"shoulder_{c}_x"], sy=ix[f"shoulder_{c}_y"], sz=ix[f"shoulder_{c}_z"],
                        ez=ix[f"elbow_{c}_z"]) for c in "rl"]
-        self.hip_joint_ids = np.array([m.joint(f"hip_{c}_{ax}").id for c in "rl" for ax in "yxz"])
+        self.hip_joint_ids = np.array([ctx.actor.joint_id(f"hip_{c}_{ax}") for c in "rl" for ax in "yxz"])
         self.leg_idx = [s.indices([f"hip_{c}_y", f"hip_{c}_x", f"hip_{c}_z", f"knee_{c}_y", f"ankle_{c}_y",
                                    f"ankle_{c}_x", f"mt_{c}_y"]) for c in "rl"]
         self.neck_y = ix["neck_c2_y"]
@@ -309,11 +310,14 @@ class Running(Behaviour):
         self.stance_hip_gains = {key: (share, share) for key in ("hy", "hx", "hz")}
         self.p = dict(params)
         self._schedule(0.0)
+        placement = ctx.actor.placement
         self.path = self._path()
+        # a scene's actor runs in its placed frame: its facing turned by its heading, its path moved
+        self.facing = params["facing"] + placement.heading if placement is not None else params["facing"]
         self.follower = PathFollower(self.path, params["lookahead"]) if self.path is not None else None
 
     def _path(self):
-        return _path_for(self.params)
+        return _path_for(self.params, self.ctx.actor.placement)
 
     def _schedule(self, speed: float) -> None:
         """Effective values of the tuned parameters left at -1: the table at this speed."""
@@ -341,7 +345,8 @@ class Running(Behaviour):
         reached = np.nonzero((speed >= 0.9 * params["speed"]) & upright)[0]
         metrics["time_to_90pct_speed"] = float(a["time"][reached[0]]) if len(reached) else None
         metrics["stride_attitude_variation"] = stride_attitude_variation(trajectory, t_from=max(0.0, a["time"][-1] - 10.0))
-        path = _path_for(params)
+        placement = trajectory.meta.get("placement")
+        path = _path_for(params, Placement(**placement) if placement else None)
         if path is not None:
             t0 = _first_time_on_path(a, path)
             sel = a["time"] >= t0
@@ -460,7 +465,7 @@ class Running(Behaviour):
         servos = self.ctx.servos
         q = servos.angles().tolist()
         qd = servos.velocities().tolist()
-        force = d.actuator_force.tolist()
+        force = d.actuator_force[servos.actuators].tolist()
         m = d.xmat[self.pelvis].tolist()
         wx, wy, wz = d.cvel[self.pelvis, :3].tolist()
         cx, cy, _ = d.subtree_com[self.pelvis].tolist()
@@ -477,7 +482,7 @@ class Running(Behaviour):
         roll_rate = wx * m[0] + wy * m[3] + wz * m[6]
 
         # ---- steering: facing direction (or pure pursuit on the path), lean into the turn
-        goal = self.follower.heading(cx, cy) if self.follower is not None else p["facing"]
+        goal = self.follower.heading(cx, cy) if self.follower is not None else self.facing
         speed_now = math.hypot(vx, vy)
         # the heading goal turns toward the goal at a rate proportional to the error, limited in
         # rate and in acceleration, so the yaw the stance hip asks for changes smoothly (an abrupt
@@ -664,7 +669,7 @@ class Running(Behaviour):
         carries part of the roll torque too; when that would take it past its torque limit, the
         roll demand is reduced (toward zero, never reversed) so that the yaw is still held."""
         c = self.constants
-        limit = self.ctx.model.actuator_forcerange[ja["hz"], 1] * c.hip_yaw_headroom
+        limit = self.ctx.model.actuator_forcerange[self.ctx.servos.actuators][ja["hz"], 1] * c.hip_yaw_headroom
         hz = taus[2] * share
         if abs(hz) <= limit or share <= 0.0:
             return taus
@@ -774,18 +779,24 @@ class Running(Behaviour):
         targets[ji["mt"]] = 0.0
 
 
-def _path_for(p: dict):
-    """The polyline a run follows: the user's points, a built-in course, or None (facing)."""
+def _path_for(p: dict, placement: Placement | None = None):
+    """The polyline a run follows: the user's points, a built-in course, or None (facing); in
+    the world frame of a runner placed at ``placement`` (None: the origin, facing +X)."""
     if "path" in p:
-        return np.asarray(p["path"], dtype=float)
-    course = Running.schema.by_name["course"].option(p["course"])
-    if course == "turn":
-        return turn_path(p["turn_angle"], p["turn_after"], p["turn_radius"])
-    if course == "figure_eight":
-        return figure_eight_path(p["turn_radius"], p["turn_after"])
-    if course == "circle":
-        return circle_path(p["turn_radius"], p["turn_after"])
-    return None
+        path = np.asarray(p["path"], dtype=float)
+    else:
+        course = Running.schema.by_name["course"].option(p["course"])
+        if course == "turn":
+            path = turn_path(p["turn_angle"], p["turn_after"], p["turn_radius"])
+        elif course == "figure_eight":
+            path = figure_eight_path(p["turn_radius"], p["turn_after"])
+        elif course == "circle":
+            path = circle_path(p["turn_radius"], p["turn_after"])
+        else:
+            return None
+    if placement is None:
+        return path
+    return np.array([placement.point([x, y, 0.0])[:2] for x, y in path])
 
 
 def _first_time_on_path(a: dict, path: np.ndarray) -> float:

@@ -8,6 +8,7 @@ import mujoco
 import numpy as np
 
 from sim_core.character.spec import CharacterSpec
+from sim_core.control.actor import ActorView
 from sim_core.edit_log import EditLog
 
 
@@ -24,19 +25,28 @@ def hermite_scalar(s: float) -> float:
 
 
 class ServoBank:
-    def __init__(self, model: mujoco.MjModel, data: mujoco.MjData, character: CharacterSpec, log: EditLog):
+    def __init__(self, model: mujoco.MjModel, data: mujoco.MjData, character: CharacterSpec, log: EditLog,
+                 actor: ActorView | None = None):
+        """The servos of ``actor`` (default: the model's only character); it writes only its own
+        slice of the control vector and logs gain edits at the model's actuator indices."""
         self.model, self.data, self.log = model, data, log
-        self.names = [model.actuator(i).name for i in range(model.nu)]
+        actor = actor or ActorView.of(model)
+        first, count = actor.actuators.start, actor.actuators.stop - actor.actuators.start
+        ids = range(first, first + count)
+        self.first = first                   # model index of this bank's servo 0
+        self.actuators = actor.actuators     # its slice of the model's actuator arrays
+        self.ctrl = data.ctrl[actor.actuators]   # a view: the bank's slice of the control vector
+        self.names = [model.actuator(i).name[len(actor.prefix):] for i in ids]
         self.index = {n: i for i, n in enumerate(self.names)}
-        self.qpos_adr = np.array([model.jnt_qposadr[model.actuator_trnid[i, 0]] for i in range(model.nu)])
-        self.dof_adr = np.array([model.jnt_dofadr[model.actuator_trnid[i, 0]] for i in range(model.nu)])
-        self.default_kp = model.actuator_gainprm[:, 0].copy()
-        self.default_kv = -model.actuator_biasprm[:, 2].copy()
+        self.qpos_adr = np.array([model.jnt_qposadr[model.actuator_trnid[i, 0]] for i in ids])
+        self.dof_adr = np.array([model.jnt_dofadr[model.actuator_trnid[i, 0]] for i in ids])
+        self.default_kp = model.actuator_gainprm[actor.actuators, 0].copy()
+        self.default_kv = -model.actuator_biasprm[actor.actuators, 2].copy()
         self.start = data.qpos[self.qpos_adr].copy()
         self.goal = self.start.copy()
-        self.t0 = np.zeros(model.nu)
-        self.duration = np.ones(model.nu) * 1e-9
-        self.offset = np.zeros(model.nu)      # feedback added on top of the smoothed target
+        self.t0 = np.zeros(count)
+        self.duration = np.ones(count) * 1e-9
+        self.offset = np.zeros(count)         # feedback added on top of the smoothed target
         self._moving = False
 
     def indices(self, names) -> np.ndarray:
@@ -72,12 +82,13 @@ class ServoBank:
     def set_gains(self, idx: np.ndarray, kp, kv) -> None:
         kp = np.broadcast_to(np.asarray(kp, dtype=float), idx.shape)
         kv = np.broadcast_to(np.asarray(kv, dtype=float), idx.shape)
+        idx = idx + self.first if self.first else idx
         self.log.set_array(self.model.actuator_gainprm, "actuator_gainprm", idx, 0, kp)
         self.log.set_array(self.model.actuator_biasprm, "actuator_biasprm", idx, 1, -kp)
         self.log.set_array(self.model.actuator_biasprm, "actuator_biasprm", idx, 2, -kv)
 
     def write(self, t: float) -> None:
         if self._moving:
-            self.data.ctrl[:] = self.smoothed_target(t) + self.offset
+            self.ctrl[:] = self.smoothed_target(t) + self.offset
         else:
-            np.add(self.goal, self.offset, out=self.data.ctrl)
+            np.add(self.goal, self.offset, out=self.ctrl)

@@ -118,6 +118,7 @@ SOMERSAULTS_TABLE = register_table(TableType(
 @register
 class Somersault(Sequence):
     name = "somersault"
+    world_frame = True             # turns / aims in the world's X-Z plane from the origin
     summary = "Standing tuck somersault, backward or forward: crouch, leap with spin, tuck, open, land, balance (Wooten §8.4-8.5)."
     default_duration = 5.0
     settings_schema = SOMERSAULT_SETTINGS
@@ -160,9 +161,9 @@ class Somersault(Sequence):
     def steps(self) -> list[Step]:
         ctx = self.ctx
         cfg = self.cfg = self.settings()
-        self.rotation = FlightRotation(ctx.model, ctx.data)
-        self.open_inertia = position_inertia(ctx.model, ctx.character, "layout")
-        self.touchdown_com = TOUCHDOWN_COM * float(ctx.data.subtree_com[1][2])
+        self.rotation = FlightRotation(ctx.model, ctx.data, ctx.actor)
+        self.open_inertia = position_inertia(ctx.model, ctx.character, "layout", ctx.actor)
+        self.touchdown_com = TOUCHDOWN_COM * float(ctx.data.subtree_com[ctx.actor.root][2])
         takeoff = dict(cfg, lean=cfg["thrust_lean"], damping=cfg["thrust_damping"])
 
         def tuck(t):
@@ -191,8 +192,9 @@ class Somersault(Sequence):
         turned = self.direction * self.rotation.whole_body
         remaining = 2 * math.pi - self.cfg["landing_lean"] - turned
         rate_now = self.direction * self.rotation.rate()
-        rate_open = self.direction * float(d.subtree_angmom[1][1]) / self.open_inertia
-        time_left = time_to_fall_to(float(d.subtree_com[1][2]), float(d.subtree_linvel[1][2]), self.touchdown_com)
+        root = self.ctx.actor.root
+        rate_open = self.direction * float(d.subtree_angmom[root][1]) / self.open_inertia
+        time_left = time_to_fall_to(float(d.subtree_com[root][2]), float(d.subtree_linvel[root][2]), self.touchdown_com)
         if time_left <= self.cfg["open_time"]:
             return True
         return rotation_to_come(rate_now, rate_open, time_left, self.cfg["open_time"]) >= remaining

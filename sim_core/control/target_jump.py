@@ -102,7 +102,7 @@ def scene_for(character, target, world=None):
     box under a raised target (z > 0); for a target below the start (z < 0) the ground at z and a
     box the character starts on (its top at 0, its front edge just ahead of the toes); and a box
     to jump over, standing on the surface landed on halfway between the toes and the target."""
-    from sim_core.character.model import World
+    from sim_core.world import World
     from sim_core.character.spec import load_character
     world = world or World()
     obstacle = obstacle_of(target)
@@ -301,6 +301,7 @@ def same_request(a: dict, b: dict) -> bool:
 @register
 class JumpToTarget(Leap):
     name = "jump_to_target"
+    world_frame = True             # turns / aims in the world's X-Z plane from the origin
     summary = ("Jump so that the feet land on a target point, with a given air time and wind-up time "
                "(Ooi 2015), by the leap and landing controllers; the settings are planned by simulation.")
     default_duration = 5.0

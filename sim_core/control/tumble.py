@@ -22,7 +22,8 @@ import math
 import mujoco
 import numpy as np
 
-from sim_core.character.model import set_standing_pose
+from sim_core.character.model import place_standing
+from sim_core.control.actor import ActorView
 from sim_core.control.behaviour import Behaviour, ControlContext
 from sim_core.schema import Choice, Parameter, Schema
 
@@ -83,38 +84,44 @@ def position_name(code: float) -> str:
     return POSITION_NAMES[int(round(code))]
 
 
-def inertia_about_com(model: mujoco.MjModel, data: mujoco.MjData) -> np.ndarray:
-    """Whole-body inertia tensor (world frame, kg m^2) about the COM of the current state."""
-    rotation = data.ximat[1:].reshape(-1, 3, 3)
-    own = np.einsum("bij,bj,bkj->ik", rotation, model.body_inertia[1:], rotation)
-    r = data.xipos[1:] - data.subtree_com[1]
-    mass = model.body_mass[1:]
+def inertia_about_com(model: mujoco.MjModel, data: mujoco.MjData, actor: ActorView | None = None) -> np.ndarray:
+    """Whole-body inertia tensor (world frame, kg m^2) about the COM of the current state, of
+    ``actor`` (default: the model's only character)."""
+    actor = actor or ActorView.of(model)
+    bodies = actor.bodies
+    rotation = data.ximat[bodies].reshape(-1, 3, 3)
+    own = np.einsum("bij,bj,bkj->ik", rotation, model.body_inertia[bodies], rotation)
+    r = data.xipos[bodies] - data.subtree_com[actor.root]
+    mass = model.body_mass[bodies]
     parallel = np.eye(3) * float(mass @ np.einsum("bi,bi->b", r, r)) - np.einsum("b,bi,bj->ij", mass, r, r)
     return own + parallel
 
 
-def _posed(model: mujoco.MjModel, character, position: str) -> mujoco.MjData:
+def _posed(model: mujoco.MjModel, character, position: str, actor: ActorView) -> mujoco.MjData:
     data = mujoco.MjData(model)
-    set_standing_pose(model, data, character)
+    mujoco.mj_resetData(model, data)
+    place_standing(model, data, character, actor.prefix, actor.placement)
     for name, value in position_angles(position).items():
-        data.qpos[model.joint(name).qposadr[0]] = value
+        data.qpos[actor.joint_qposadr(name)] = value
     mujoco.mj_kinematics(model, data)
     mujoco.mj_comPos(model, data)
     return data
 
 
-def position_inertia(model: mujoco.MjModel, character, position: str) -> float:
+def position_inertia(model: mujoco.MjModel, character, position: str, actor: ActorView | None = None) -> float:
     """Moment of inertia about the somersault (lateral, Y) axis of a named position, the body
     upright, read off MuJoCo's kinematics of the model."""
-    return float(inertia_about_com(model, _posed(model, character, position))[1, 1])
+    actor = actor or ActorView.of(model)
+    return float(inertia_about_com(model, _posed(model, character, position, actor), actor)[1, 1])
 
 
-def position_radius(model: mujoco.MjModel, character, position: str) -> float:
+def position_radius(model: mujoco.MjModel, character, position: str, actor: ActorView | None = None) -> float:
     """Farthest reach (m) of the feet, hands and head from the COM in a named position: how much
     room the body needs to turn in it."""
-    data = _posed(model, character, position)
-    ends = [model.body(n).id for n in ("TOER", "TOEL", "HANDR", "HANDL", "HEAD", "FOOTR", "FOOTL")]
-    return float(max(np.linalg.norm(data.xpos[b] - data.subtree_com[1]) for b in ends))
+    actor = actor or ActorView.of(model)
+    data = _posed(model, character, position, actor)
+    ends = [actor.body_id(n) for n in ("TOER", "TOEL", "HANDR", "HANDL", "HEAD", "FOOTR", "FOOTL")]
+    return float(max(np.linalg.norm(data.xpos[b] - data.subtree_com[actor.root]) for b in ends))
 
 
 class FlightRotation:
@@ -131,9 +138,11 @@ class FlightRotation:
     * ``twist``: the pelvis's rotation about its long axis since take-off (rad).
     """
 
-    def __init__(self, model: mujoco.MjModel, data: mujoco.MjData):
+    def __init__(self, model: mujoco.MjModel, data: mujoco.MjData, actor: ActorView | None = None):
         self.model, self.data = model, data
-        self.pelvis = model.body("PELVIS").id
+        self.actor = actor = actor or ActorView.of(model)
+        self.pelvis = actor.body_id("PELVIS")
+        self.spin_dof = actor.root_dof + 5          # the free joint's local angular velocity about z
         self.flying = False
         self.reset(0.0)
 
@@ -152,7 +161,7 @@ class FlightRotation:
         """Start the whole-body angle at the body's long principal axis (the branch nearest the
         pelvis's angle) and the twist at zero."""
         self.update(t)
-        inertia = inertia_about_com(self.model, self.data)
+        inertia = inertia_about_com(self.model, self.data, self.actor)
         # long axis = least inertia in the X-Z plane; its angle from vertical towards +X
         axis = 0.5 * math.atan2(-2.0 * inertia[0, 2], inertia[0, 0] - inertia[2, 2])
         self.whole_body = axis + math.pi * round((self.somersault - axis) / math.pi)
@@ -164,7 +173,7 @@ class FlightRotation:
         self.somersault += (raw - self.last + math.pi) % (2 * math.pi) - math.pi
         self.last = raw
         dt = t - self.t
-        self.twist += float(self.data.qvel[5]) * dt      # free joint: local angular velocity
+        self.twist += float(self.data.qvel[self.spin_dof]) * dt      # free joint: local angular velocity
         self._rate = None
         if self.flying:
             self.whole_body += self.rate() * dt
@@ -174,7 +183,8 @@ class FlightRotation:
         """Mean somersault rate of the whole body (rad/s): H_y / I_yy about the COM (of the state
         at the last ``update``)."""
         if getattr(self, "_rate", None) is None:
-            self._rate = float(self.data.subtree_angmom[1][1]) / float(inertia_about_com(self.model, self.data)[1, 1])
+            self._rate = (float(self.data.subtree_angmom[self.actor.root][1])
+                          / float(inertia_about_com(self.model, self.data, self.actor)[1, 1]))
         return self._rate
 
 
@@ -196,7 +206,7 @@ class Tumble(Behaviour):
 
     def __init__(self, params, ctx: ControlContext, rotation: FlightRotation | None = None):
         super().__init__(params, ctx)
-        self.rotation = rotation or FlightRotation(ctx.model, ctx.data)
+        self.rotation = rotation or FlightRotation(ctx.model, ctx.data, ctx.actor)
         self.twisting = False
 
     def _targets(self) -> dict[str, float]:
