@@ -142,9 +142,9 @@ def run_scene(args: argparse.Namespace, pkg) -> int:
     armature at the world origin, so its baked root motion puts the actor where the scene placed
     it), the world's props once, and save one .blend."""
     import bpy
-    from sim_core.errors import SimAthleticsError
-    from sim_core.scene import load_scene
-    from sim_core.simulate import run_scene as simulate_scene
+    sim = importlib.import_module(pkg.__name__ + ".core.simcore").sim
+    SimAthleticsError = sim("errors").SimAthleticsError
+    load_scene, simulate_scene = sim("scene").load_scene, sim("simulate").run_scene
     api = importlib.import_module(pkg.__name__ + ".api")
     rig = importlib.import_module(pkg.__name__ + ".rig")
     bake = importlib.import_module(pkg.__name__ + ".bake")

@@ -203,6 +203,7 @@ def run_settings(context, behaviour: str | None = None, params: str = "", durati
     behaviour = behaviour or settings.behaviour
     has_group = hasattr(settings, props.group_attr(behaviour))
     values = props.panel_params(settings, behaviour) if has_group else {}
+    values.update(props.panel_tuned_overrides(settings, behaviour))
     if params.strip():
         values.update(api.parse_params(behaviour, params))
         values = api.parse_params(behaviour, values)

@@ -92,7 +92,8 @@ def behaviour_schema(behaviour: str):
 
 def settings_schema(behaviour: str):
     """The behaviour's tuned settings (what a search sets), or None if it declares none."""
-    return getattr(sim("control.behaviour").behaviour_class(behaviour), "settings_schema", None)
+    schema = getattr(sim("control.behaviour").behaviour_class(behaviour), "settings_schema", None)
+    return schema if schema is not None and schema.parameters else None
 
 
 def request_schema():
@@ -150,6 +151,14 @@ def panel_settings(settings, behaviour: str) -> dict:
     return _values(group, schema) if schema is not None and group is not None else {}
 
 
+def panel_tuned_overrides(settings, behaviour: str) -> dict:
+    """The tuned settings the user changed in the sub-panel (those off their schema default): a
+    run takes them on top of the calibrated ones; the untouched ones stay the table's."""
+    schema = settings_schema(behaviour)
+    defaults = schema.defaults() if schema is not None else {}
+    return {k: v for k, v in panel_settings(settings, behaviour).items() if v != defaults.get(k)}
+
+
 def panel_request(settings) -> dict:
     """The run request's values from the panel (the request schema's knobs)."""
     return _values(settings.request, request_schema())
@@ -198,7 +207,7 @@ def _build_classes() -> list[type]:
         group = _group_class(group_attr(name), cls.schema)
         groups.append(group)
         annotations[group_attr(name)] = PointerProperty(type=group)
-        tuned = getattr(cls, "settings_schema", None)
+        tuned = settings_schema(name)
         if tuned is not None:
             group = _group_class(settings_attr(name), tuned)
             groups.append(group)

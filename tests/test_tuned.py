@@ -183,10 +183,7 @@ ALLOWED = {
     "somersault": {"TUCK": "definition", "OLD_ROW": "definition", "TUCK_MOVE": "design", "TOUCHDOWN_COM": "design",
                    "ROTATION_TOLERANCE": "criterion"},
     "takeoff": {"LEAN_TRIGGER": "design"},
-    "target_jump": {n: "search" for n in ("TAKEOFF_COM", "TOUCHDOWN_COM", "WINDUP_OVERHEAD", "PLAN_MARGIN", "KNOBS",
-                                          "KNOB_DEFAULTS", "SIDEWAYS_KNOBS", "SIDEWAYS_PRIOR", "SIDEWAYS_LIFTOFF_ROLL",
-                                          "BOX_PRIOR", "BROAD_PRIOR", "LANDING_PRIOR", "REFINE_SHARE", "CAPTURE_SCALE",
-                                          "UNBALANCED_PRICE")}
+    "target_jump": {n: "search" for n in ("TAKEOFF_COM", "TOUCHDOWN_COM", "WINDUP_OVERHEAD", "KNOB_DEFAULTS")}
                    | {n: "criterion" for n in ("LANDING_TOLERANCE", "AIR_TIME_TOLERANCE", "GROUND_AIR_TIME",
                                                "SIDEWAYS_AIR_TIME", "BOX_DISTANCE", "BOX_AIR_TIME", "BOX_LENGTH",
                                                "BOX_WIDTH", "START_BOX_LENGTH", "START_BOX_EDGE", "OBSTACLE_LENGTH")},

@@ -83,7 +83,8 @@ def test_tuned_settings_are_a_closed_sub_panel_generated_from_the_settings_schem
         assert "crouch_depth" not in main and "pelvis_height" in main          # animator knobs only
         settings.tuned_balance.arm_gain = 3.0
         assert props.panel_settings(settings, "balance") == {"crouch_depth": 0.2, "arm_gain": 3.0}
-        settings.behaviour = "leap"                                            # no settings schema
+        assert props.panel_tuned_overrides(settings, "balance") == {"arm_gain": 3.0}   # what a run takes
+        settings.behaviour = "land"                                            # no tuned settings
         assert not panel.SIMATHLETICS_PT_tuned.poll(context)
     finally:
         monkeypatch.undo()

@@ -8,7 +8,7 @@ import pytest
 bpy = pytest.importorskip("bpy")
 
 from blender_addon import batch  # noqa: E402
-from blender_addon.axes import SIM_TO_BLENDER  # noqa: E402
+from blender_addon.core.axes import SIM_TO_BLENDER  # noqa: E402
 from sim_core.simulate import run_scene  # noqa: E402
 from sim_core.scene import scene_from_dict  # noqa: E402
 
