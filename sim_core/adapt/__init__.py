@@ -1,0 +1,2 @@
+"""Adapting controllers to new characters (Hodgins & Pollard 1997): the Fig. 6 scaling rules
+(scaling.py) and the bodies each joint's gain moves (moved_bodies.py)."""
