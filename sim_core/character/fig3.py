@@ -152,7 +152,7 @@ def build_fig3_character(name: str, base: CharacterSpec) -> dict:
     if name not in PRESETS:
         raise UnknownNameError(f"unknown Fig. 3 character {name!r}; choose from {', '.join(PRESETS)}")
     data, p = fit_fig3(base, FIG3[name])
-    leg_ratio = FIG3[name]["leg length"] / fig3_measures(base)["leg length"]
+    leg_ratio = fig3_measures(CharacterSpec(data))["leg length"] / fig3_measures(base)["leg length"]
     data = mass_scaled_servos(data, base, leg_ratio)
     data["name"] = name
     data["source"] = (f"Hodgins & Pollard 1997, Fig. 3 ({name}): per-segment scaling of {base.name} fitted to the "
