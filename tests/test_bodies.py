@@ -206,9 +206,9 @@ def _balance(character):
     return trajectory.meta
 
 
-@pytest.mark.parametrize("make", ["child", "man_woman_70", "man_150cm_60kg"])
+@pytest.mark.parametrize("make", [*PRESETS, "man_woman_70", "man_150cm_60kg"])
 def test_new_bodies_balance_for_5_s(man, woman, make):
-    character = {"child": lambda: load_character("child"),
+    character = {**{name: (lambda name=name: load_character(name)) for name in PRESETS},
                  "man_woman_70": lambda: CharacterSpec(between(man, woman, 0.7)),
                  "man_150cm_60kg": lambda: CharacterSpec(scaled_to(man, 1.5, 60.0))}[make]()
     meta = _balance(character)

@@ -5,9 +5,11 @@ three joint-referenced moments of inertia, as ABSOLUTE values. Its man (~75 kg, 
 ours (97.84 kg, 1.81 m), so its ratios do not carry over: each character is fitted to the
 absolute values (SEEDS-WAVE2.md §5.3, trap 4). What the figure leaves open, we choose and say so:
 
-  * how a limb's mass is shared between its parts (thigh, shank, foot) and how the leg length is
-    shared between thigh and shank: free, fitted, because the leg's inertia about the hip (Fig. 3)
-    depends on it (the imaginary runner's 1.58 kg m^2 for a 6.84 kg, 0.72 m leg needs heavy shanks);
+  * how a leg's mass is shared between thigh and shank and how its length is shared between
+    them: free, fitted, because the leg's inertia about the hip (Fig. 3) depends on it (the
+    imaginary runner's 1.58 kg m^2 for a 6.84 kg, 0.72 m leg needs heavy shanks). The feet keep
+    the man's share of the leg's mass: their footprint, which follows their mass at Dempster's
+    density, is the support a standing character balances on;
   * how the torso's mass is shared between the lower (CHEST3, CHEST2) and upper trunk (CHEST1,
     STERNUM, shoulder girdle), and the trunk's width and height: fitted to the height and to the
     inertias about the ankle and the hip;
@@ -16,9 +18,9 @@ absolute values (SEEDS-WAVE2.md §5.3, trap 4). What the figure leaves open, we 
     a higher ankle (its 5.98 kg head alone, 0.75 m above a hip at leg length over a man-like ankle,
     would take 3.4 of the 3.6 kg m^2 its body/hip leaves after the swing leg);
   * the arm's parts keep the man's mass shares; head and hands are geometric copies of the man's
-    at their new mass (Fig. 3 gives no head or hand length); the feet's footprint follows their mass.
+    at their new mass (Fig. 3 gives no head or hand length).
 
-The fit is a least-squares problem on the relative errors (sim_core.character.dimensions measures
+The fit is a bounded least-squares problem (SciPy's trust-region reflective) on the relative errors (sim_core.character.dimensions measures
 each row the same way for every character), with a weak pull of the free shares towards the
 man's. Segment masses are met exactly by construction. Servo gains and torque limits follow by
 mass scaling (sim_core.adapt.servos), with L the leg-length ratio to the man.
@@ -74,14 +76,14 @@ LOWER_TRUNK, UPPER_TRUNK = ("CHEST3", "CHEST2"), ("CHEST1", "STERNUM", "CHESTR",
 FIT_BAND_SHARE = 0.2
 SHARE_PULL = 0.05
 # How far (in log-ratio) each parameter may go from its start: the thigh/shank length split and the
-# trunk's width by ~40 %, the ankle's height by a factor 2, the mass shares by e^2.5; unbounded,
+# trunk's width by ~40 %, the ankle's height by a factor 2, the mass shares' odds by e^2.5; unbounded,
 # the fit meets the rows with caricatures (a torso seven times as wide and a centimetre deep).
-FIT_BOUNDS = np.array([2.0, 0.35, 2.5, 2.5, 2.0, 2.0, 0.35, 2.5, 2.0, 0.7])
-# Finite-difference step of the fit (relative): the model is measured through its MJCF text, whose
-# numbers carry ~6 significant digits, so a smaller step sees rounding, not slope.
+FIT_BOUNDS = np.array([2.0, 0.35, 2.5, 2.0, 2.0, 0.35, 2.5, 2.0, 0.7])
+# Finite-difference step of the fit (absolute, in log-ratio): the model is measured through its MJCF
+# text, whose numbers carry ~6 significant digits, so a smaller step sees rounding, not slope.
 FIT_STEP = 1e-3
 FIT_EVALUATIONS = 300
-PARAMETERS = ("leg axial", "thigh/shank", "thigh mass", "shank mass", "arm axial", "trunk height",
+PARAMETERS = ("leg axial", "thigh/shank", "thigh mass", "arm axial", "trunk height",
               "trunk width", "upper trunk mass", "pelvis width", "foot height")
 
 
@@ -90,13 +92,14 @@ def fig3_scales(base: CharacterSpec, target: dict, p: np.ndarray) -> dict[str, B
     mass = lambda names: sum(base.body(n)["mass"] for n in names)           # noqa: E731
     side_names = lambda prefixes, side: [p_ + side for p_ in prefixes]       # noqa: E731
     scales: dict[str, BodyScale] = {}
-    (leg_axial, thigh_shank, thigh_logit, shank_logit, arm_axial, trunk_height, trunk_width, upper_logit,
+    (leg_axial, thigh_shank, thigh_logit, arm_axial, trunk_height, trunk_width, upper_logit,
      pelvis_width, foot_height) = p
     for side in "RL":
         parts = [side_names(part, side) for part in LEG_PARTS]
         man_share = np.array([mass(part) for part in parts]) / mass(sum(parts, []))
-        share = man_share * np.exp([thigh_logit, shank_logit, 0.0])
-        share /= share.sum()
+        shift = np.exp([thigh_logit, 0.0])              # the feet keep the man's share (their footprint
+        thigh_shank_share = man_share[:2] * shift / (man_share[:2] * shift).sum() * man_share[:2].sum()
+        share = np.array([*thigh_shank_share, man_share[2]])   # is the support: see the module doc)
         ratios = target["leg mass"] * share / [mass(part) for part in parts]
         scales["ULEG" + side] = BodyScale.stretched(2, math.exp(leg_axial + thigh_shank / 2), ratios[0])
         scales["LLEG" + side] = BodyScale.stretched(2, math.exp(leg_axial - thigh_shank / 2), ratios[1])
@@ -125,26 +128,36 @@ def fit_fig3(base: CharacterSpec, target: dict) -> tuple[dict, np.ndarray]:
     man = fig3_measures(base)
     rows = [k for k in target if KIND[k] != "mass"]
 
-    def parameters(q):            # bounded parameters from unbounded ones (Levenberg-Marquardt is unbounded)
-        return start + FIT_BOUNDS * np.tanh(q)
-
     def build(p):
         return reshaped(base.data, fig3_scales(base, target, p))
 
-    def residuals(q):
-        p = parameters(q)
+    def residuals(p):
         measured = fig3_measures(CharacterSpec(build(p)))
         errors = [(measured[k] / target[k] - 1) / (TOLERANCE[KIND[k]] * FIT_BAND_SHARE) for k in rows]
-        pulls = SHARE_PULL * np.array([p[1], p[2], p[3], p[7], p[6] - start[6], p[9]])
+        pulls = SHARE_PULL * np.array([p[1], p[2], p[6], p[5] - start[5], p[8]])
         return np.concatenate([errors, pulls])
 
     length = lambda k: math.log(target[k] / man[k])                          # noqa: E731
     torso_ratio = target["torso mass"] / man["torso mass"]
-    start = np.array([length("leg length"), 0.0, 0.0, 0.0, length("arm length"), length("height"),
+    start = np.array([length("leg length"), 0.0, 0.0, length("arm length"), length("height"),
                       0.5 * (math.log(torso_ratio) - length("height")), 0.0, length("hip spacing"), 0.0])
-    fit = least_squares(residuals, np.zeros(len(start)), method="lm", diff_step=FIT_STEP,
+    upper_bounds = start + FIT_BOUNDS
+
+    def jacobian(p):
+        """Forward differences of absolute step FIT_STEP (backward at an upper bound): SciPy's
+        own steps are relative to the parameter, and those that start at 0 would be ~1e-8."""
+        base_residuals = residuals(p)
+        columns = []
+        for i in range(len(p)):
+            step = FIT_STEP if p[i] + FIT_STEP <= upper_bounds[i] else -FIT_STEP
+            moved = p.copy()
+            moved[i] += step
+            columns.append((residuals(moved) - base_residuals) / step)
+        return np.array(columns).T
+
+    fit = least_squares(residuals, start, jac=jacobian, bounds=(start - FIT_BOUNDS, upper_bounds), method="trf",
                         max_nfev=FIT_EVALUATIONS)
-    return build(parameters(fit.x)), parameters(fit.x)
+    return build(fit.x), fit.x
 
 
 def build_fig3_character(name: str, base: CharacterSpec) -> dict:
