@@ -243,6 +243,13 @@ def test_presets_load_by_name_in_simulate():
     assert json.loads(p.stdout.strip().splitlines()[-1])["character"] == "child"
 
 
+def test_a_preset_name_never_replaces_a_thesis_spec():
+    before = (RIGS_DIR / "man.json").read_bytes()
+    p = _cli("character", "make", "--preset", "child", "--name", "man")
+    assert p.returncode == 2 and "rigs/man.json is not a made character" in p.stderr
+    assert (RIGS_DIR / "man.json").read_bytes() == before
+
+
 def _bad_spec(tmp_path, mass):
     data = json.loads((RIGS_DIR / "man.json").read_text())
     data["bodies"][4]["mass"] = mass                    # LLEGR

@@ -9,6 +9,7 @@ CharacterSpec validates and compile_model compiles; ``write_character`` stores i
 from __future__ import annotations
 
 import copy
+import json
 import math
 import re
 from pathlib import Path
@@ -102,7 +103,7 @@ def scaled_to(base: CharacterSpec, height: float, mass: float, name: str | None 
 
 def write_character(data: dict, out: str | Path | None = None) -> Path:
     """Validate ``data`` (and that it compiles) and write it whole to ``out`` (default
-    rigs/<name>.json, where load_character finds it by name)."""
+    rigs/<name>.json, where load_character finds it by name; never over a spec build.py made)."""
     from sim_core.character.model import compile_model
     if not re.fullmatch(r"[a-z][a-z0-9_]*", data["name"]):
         raise ParameterError(f"character name {data['name']!r} must be lower-case letters, digits and '_'")
@@ -111,6 +112,9 @@ def write_character(data: dict, out: str | Path | None = None) -> Path:
     path = Path(out) if out else RIGS_DIR / f"{data['name']}.json"
     if path.suffix != ".json":
         raise ParameterError(f"--out {str(path)!r} must end in .json")
+    if not out and path.exists() and "made" not in json.loads(path.read_text()):
+        raise ParameterError(f"rigs/{path.name} is not a made character (build.py makes it); "
+                             "choose another --name or give --out")
     write_table(path, data)
     return path
 
