@@ -1,6 +1,7 @@
-"""New characters from existing specs: a body part of the way between two characters and a
-character scaled to a height and a mass (the Fig. 3 presets are sim_core.character.fig3). Each returns spec data that
-CharacterSpec validates and compile_model compiles; ``write_character`` stores it.
+"""New characters from existing specs: a body some fraction of the way between two characters,
+and a character scaled to a height and a mass (the Fig. 3 presets are sim_core.character.fig3).
+Each returns spec data that CharacterSpec validates and compile_model compiles;
+``write_character`` stores it.
 
     python -m sim_core character make --preset child                  # -> rigs/child.json
     python -m sim_core character make --from man --to woman --fraction 0.7 --out F.json
@@ -24,11 +25,11 @@ from sim_core.errors import ParameterError
 HEIGHT_RANGE = (0.8, 2.2)          # m: issue 28's range for a character made to a height
 MASS_RANGE = (10.0, 200.0)         # kg
 # The long axis of each body in the reference configuration (T-pose): legs and trunk along Z,
-# arms and the shoulder girdle along Y, feet and toes along X.
-# The head (a sphere) and the hands (boxes along the forearm) are scaled as geometric copies.
+# arms and the shoulder girdle along Y, feet and toes along X. The head (a sphere) and the hands
+# (boxes along the forearm) are scaled as geometric copies.
 AXIS_OF = {"UARM": 1, "LARM": 1, "CHESTR": 1, "CHESTL": 1, "FOOT": 0, "TOE": 0}
 UNIFORM = ("HEAD", "HAND")
-HEIGHT_ITERATIONS = 6              # fixed-point steps of the height fit (each halves the error ~10x)
+HEIGHT_ITERATIONS = 6              # fixed-point steps of the height fit (each cuts the error ~10x)
 
 
 def long_axis(body: str) -> int:
