@@ -152,6 +152,18 @@ def test_the_gains_move_the_lighter_side_unless_it_is_grounded(man):
     assert moved_bodies(standing, "hip_r_y", side="outboard") == leg              # swing hip: the leg
 
 
+def test_gain_factors_of_a_swing_hip_are_the_legs_ratios(man):
+    """The factors a per-state gain will be scaled by: the swing hip moves the leg, so M and I are
+    the ratios of the legs' masses and of their inertias about the hip (Fig. 3's leg / hip row)."""
+    from sim_core.adapt.moved_bodies import gain_factors
+    child = load_character("child")
+    f = gain_factors(StandingBody(man), StandingBody(child), "hip_r_y", length=0.46, side="outboard")
+    ours, theirs = fig3_measures(child), fig3_measures(man)
+    assert f.mass == pytest.approx(ours["leg mass"] / theirs["leg mass"], rel=1e-5)
+    assert f.inertia == pytest.approx(ours["leg / hip"] / theirs["leg / hip"], rel=1e-9)
+    assert scale(1.0, scaling.TORSIONAL_STIFFNESS, f) == pytest.approx(f.inertia / 0.46)
+
+
 @pytest.mark.parametrize("name", PRESETS)
 def test_fig3_characters_are_within_the_bands(name):
     rows = fig3_rows(name)

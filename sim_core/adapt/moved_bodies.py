@@ -11,6 +11,7 @@ per-state controller gain (swing hip: the leg about the hip) names its side expl
 """
 from __future__ import annotations
 
+from sim_core.adapt.scaling import ScaleFactors
 from sim_core.character.mass_properties import StandingBody
 
 
@@ -36,3 +37,12 @@ def moved_inertia(standing: StandingBody, dof: str, bodies=None) -> float:
     of ``dof`` through its joint, in the standing pose."""
     bodies = moved_bodies(standing, dof) if bodies is None else bodies
     return standing.inertia_about(bodies, standing.joint_anchor(dof), standing.joint_axis(dof))
+
+
+def gain_factors(old: StandingBody, new: StandingBody, dof: str, length: float, side: str = "rule") -> ScaleFactors:
+    """The Fig. 6 factors of a gain of ``dof`` that moves ``side`` (see moved_bodies): the bodies
+    are chosen on ``old`` and measured in both, M and I the ratios of their mass and of their
+    inertia about the joint's axis; ``length`` is the character's L."""
+    bodies = moved_bodies(old, dof, side)
+    return ScaleFactors(length=length, mass=new.mass(bodies) / old.mass(bodies),
+                        inertia=moved_inertia(new, dof, bodies) / moved_inertia(old, dof, bodies))

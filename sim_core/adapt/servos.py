@@ -6,33 +6,23 @@ from __future__ import annotations
 
 import copy
 
-from sim_core.adapt.moved_bodies import moved_bodies, moved_inertia
-from sim_core.adapt.scaling import TORQUE, TORSIONAL_DAMPING, TORSIONAL_STIFFNESS, ScaleFactors, scale
+from sim_core.adapt.moved_bodies import gain_factors
+from sim_core.adapt.scaling import TORQUE, TORSIONAL_DAMPING, TORSIONAL_STIFFNESS, scale
 from sim_core.character.mass_properties import StandingBody
 from sim_core.character.spec import CharacterSpec
 
 SERVO_UNITS = {"kp": TORSIONAL_STIFFNESS, "kv": TORSIONAL_DAMPING, "torque_limit": TORQUE}
 
 
-def inertia_ratios(new: CharacterSpec, old: CharacterSpec) -> dict[str, float]:
-    """I'/I per DOF: the moved bodies are chosen on ``old`` and measured in both."""
-    old_standing, new_standing = StandingBody(old), StandingBody(new)
-    ratios = {}
-    for dof in old.dofs:
-        bodies = moved_bodies(old_standing, dof.name)
-        ratios[dof.name] = moved_inertia(new_standing, dof.name, bodies) / moved_inertia(old_standing, dof.name, bodies)
-    return ratios
-
-
 def mass_scaled_servos(new_data: dict, old: CharacterSpec, length_ratio: float) -> dict:
     """``new_data`` (a reshaped copy of ``old``) with every DOF's kp, kv and torque limit scaled
     from ``old``'s by Fig. 6's mass-scaling column."""
-    ratios = inertia_ratios(CharacterSpec(new_data), old)
+    old_standing, new_standing = StandingBody(old), StandingBody(CharacterSpec(new_data))
     old_dofs = {d.name: d for d in old.dofs}
     out = copy.deepcopy(new_data)
     for body in out["bodies"]:
         for dof in (body.get("joint") or {}).get("dofs", []):
-            factors = ScaleFactors(length=length_ratio, inertia=ratios[dof["name"]])
+            factors = gain_factors(old_standing, new_standing, dof["name"], length_ratio)
             for key, units in SERVO_UNITS.items():
                 dof[key] = scale(getattr(old_dofs[dof["name"]], key), units, factors)
     return out
