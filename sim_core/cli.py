@@ -1,4 +1,4 @@
-"""Command line: python -m sim_core {list, describe, simulate, plan, replay, bench, balance-report}.
+"""Command line: python -m sim_core {list, describe, simulate, plan, replay, bench, balance-report, character}.
 
 Errors a user can cause print one line ('error: ...') and exit with status 2; nothing is written.
 ``simulate`` prints a JSON summary (outcome and metrics) as its last line.
@@ -205,6 +205,43 @@ def cmd_balance_report(args) -> int:
     return 0
 
 
+def cmd_character(args) -> int:
+    """``character make``: a new body (Fig. 3 preset, between two characters, or to a height and
+    mass), validated and compiled before it is written; ``character report``: Fig. 3 comparison."""
+    from sim_core.character.spec import load_character
+    if args.character_command == "report":
+        from sim_core.character.fig3_report import write_report
+        print(write_report(args.out))
+        return 0
+    from sim_core.character import make
+    modes = [args.preset is not None, args.to is not None, args.height is not None or args.mass is not None]
+    if sum(modes) != 1:
+        raise ParameterError("character make needs exactly one of --preset NAME, --to CHARACTER --fraction F, "
+                             "or --height H --mass M")
+    base = load_character(args.from_)
+    if args.preset is not None:
+        from sim_core.character.fig3 import build_fig3_character
+        data = build_fig3_character(args.preset, base)
+    elif args.to is not None:
+        if args.fraction is None:
+            raise ParameterError("--to needs --fraction F (how far from --from, in [0, 1])")
+        fraction = _finite(args.fraction, "--fraction")
+        make.check_fraction(fraction)
+        data = make.between(base, load_character(args.to), fraction)
+    else:
+        if args.height is None or args.mass is None:
+            raise ParameterError("character make by targets needs both --height H (m) and --mass M (kg)")
+        data = make.scaled_to(base, _finite(args.height, "--height"), _finite(args.mass, "--mass"))
+    if args.name:
+        data["name"] = args.name
+    if args.out is None and args.preset is None:
+        raise ParameterError("--out F.json is required (only --preset writes rigs/<name>.json by default)")
+    path = make.write_character(data, args.out)
+    print(json.dumps({"character": data["name"], "out": str(path), "total_mass": data["total_mass"],
+                      "height": data["height"]}))
+    return 0
+
+
 def parser() -> argparse.ArgumentParser:
     p = argparse.ArgumentParser(prog="python -m sim_core", description="Sim Athletics simulation core")
     sub = p.add_subparsers(dest="command", required=True)
@@ -251,6 +288,21 @@ def parser() -> argparse.ArgumentParser:
     br.add_argument("--character", action="append", help="man and/or woman (default both)")
     br.add_argument("--quick", action="store_true", help="coarser search (for a fast look)")
     br.set_defaults(func=cmd_balance_report)
+    ch = sub.add_parser("character", help="make new characters (Hodgins & Pollard 1997) and report them")
+    ch_sub = ch.add_subparsers(dest="character_command", required=True)
+    mk = ch_sub.add_parser("make", help="write a new character spec (any command's --character takes it)")
+    mk.add_argument("--from", dest="from_", default="man", help="character to start from (name or .json)")
+    mk.add_argument("--preset", help="a Fig. 3 character: child, imaginary_runner or imaginary_cyclist")
+    mk.add_argument("--to", help="character to interpolate towards (name or .json), with --fraction")
+    mk.add_argument("--fraction", help="0..1: how far from --from to --to")
+    mk.add_argument("--height", help="target height in m (top of the head), with --mass")
+    mk.add_argument("--mass", help="target total mass in kg, with --height")
+    mk.add_argument("--name", help="name of the new character (default: made from the inputs)")
+    mk.add_argument("--out", help="spec file to write (.json); a --preset defaults to rigs/<name>.json")
+    mk.set_defaults(func=cmd_character)
+    rp = ch_sub.add_parser("report", help="compare the built characters with Fig. 3 (Markdown)")
+    rp.add_argument("--out", help="Markdown file whose Fig. 3 table block to rewrite (e.g. docs/bodies.md)")
+    rp.set_defaults(func=cmd_character)
     return p
 
 

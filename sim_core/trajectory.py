@@ -26,12 +26,12 @@ No pickle: every array is numeric or a fixed-width string.
 from __future__ import annotations
 
 import json
-import os
-import tempfile
 from dataclasses import dataclass, field
 from pathlib import Path
 
 import numpy as np
+
+from sim_core.files import write_atomically
 
 FORMAT = "sim_athletics.trajectory"
 VERSION = 1
@@ -106,18 +106,9 @@ class Trajectory:
 
     def save(self, path: str | Path) -> Path:
         """Write atomically: a failed save leaves no partial file."""
-        path = Path(path)
-        path.parent.mkdir(parents=True, exist_ok=True)
-        fd, tmp = tempfile.mkstemp(dir=path.parent, suffix=".tmp.npz")
-        os.close(fd)
-        try:
-            meta = dict(self.meta, format=FORMAT, version=VERSION)
-            np.savez_compressed(tmp, meta=np.array(json.dumps(meta)), **self.arrays)
-            os.replace(tmp, path)
-        finally:
-            if os.path.exists(tmp):
-                os.unlink(tmp)
-        return path
+        meta = dict(self.meta, format=FORMAT, version=VERSION)
+        return write_atomically(path, write=lambda tmp: np.savez_compressed(tmp, meta=np.array(json.dumps(meta)),
+                                                                             **self.arrays))
 
     @classmethod
     def load(cls, path: str | Path) -> "Trajectory":

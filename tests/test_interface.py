@@ -59,7 +59,7 @@ def test_unknown_parameter():
 
 @pytest.mark.parametrize("args, message", [
     (["simulate", "balanc"], "unknown behaviour 'balanc'; available: balance"),
-    (["simulate", "balance", "--character", "robot"], "unknown character 'robot'; available: man, woman"),
+    (["simulate", "balance", "--character", "robot"], "unknown character 'robot'; available: child, imaginary_cyclist, imaginary_runner, man, woman"),
     (["simulate", "balance", "--set", "torso_pitch=3"], "torso_pitch=3 rad is out of range; allowed range"),
     (["simulate", "balance", "--set", "pelvis_height=nan"], "pelvis_height=nan is not finite"),
     (["simulate", "balance", "--set", "com_kp=high"], "com_kp='high' is not a number"),

@@ -15,14 +15,13 @@ half-written table. JSON floats round-trip exactly (``repr``), so a stored row r
 from __future__ import annotations
 
 import json
-import os
-import tempfile
 from dataclasses import dataclass
 from importlib import resources
 from pathlib import Path
 from typing import Callable, Iterable
 
 from sim_core.errors import ParameterError
+from sim_core.files import write_atomically
 from sim_core.schema import Schema
 
 SCHEMA_VERSION = 1              # the layout of a table file; a file of another version is refused
@@ -110,16 +109,7 @@ def save(skill: str, character: str, body: dict, strengths: Iterable[str], direc
             "strengths": list(strengths), **{k: v for k, v in body.items() if k not in HEADER}}
     path = table_path(skill, character, directory)
     check(path.name, skill, character, data)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=path.stem, suffix=".tmp")
-    try:
-        with os.fdopen(fd, "w") as f:
-            f.write(dumps(data))
-        os.replace(tmp, path)
-    except BaseException:
-        Path(tmp).unlink(missing_ok=True)
-        raise
-    return path
+    return write_atomically(path, dumps(data))
 
 
 def delete(skill: str, character: str, directory: Path | None = None) -> None:

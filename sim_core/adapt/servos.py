@@ -1,0 +1,28 @@
+"""Mass scaling of a spec's joint servos (Fig. 6): each DOF's stiffness kp (N m/rad) by
+I'/I L^-1, its damping kv (N m s/rad) by I'/I L^-1/2 and its torque limit (N m) by I'/I L^-1,
+with I'/I the ratio of the inertias of the bodies the DOF moves (moved_bodies, the same bodies
+in both characters) and L the leg-length ratio (the seed's choice of L for runners, [B] 144)."""
+from __future__ import annotations
+
+import copy
+
+from sim_core.adapt.moved_bodies import gain_factors
+from sim_core.adapt.scaling import TORQUE, TORSIONAL_DAMPING, TORSIONAL_STIFFNESS, scale
+from sim_core.character.mass_properties import StandingBody
+from sim_core.character.spec import CharacterSpec
+
+SERVO_UNITS = {"kp": TORSIONAL_STIFFNESS, "kv": TORSIONAL_DAMPING, "torque_limit": TORQUE}
+
+
+def mass_scaled_servos(new_data: dict, old: CharacterSpec, length_ratio: float) -> dict:
+    """``new_data`` (a reshaped copy of ``old``) with every DOF's kp, kv and torque limit scaled
+    from ``old``'s by Fig. 6's mass-scaling column."""
+    old_standing, new_standing = StandingBody(old), StandingBody(CharacterSpec(new_data))
+    old_dofs = {d.name: d for d in old.dofs}
+    out = copy.deepcopy(new_data)
+    for body in out["bodies"]:
+        for dof in (body.get("joint") or {}).get("dofs", []):
+            factors = gain_factors(old_standing, new_standing, dof["name"], length_ratio)
+            for key, units in SERVO_UNITS.items():
+                dof[key] = scale(getattr(old_dofs[dof["name"]], key), units, factors)
+    return out

@@ -1,0 +1,293 @@
+"""New bodies (issue 28): Fig. 6 scaling rules, the Fig. 3 characters, characters between two
+specs and by height/mass, the `character` command; outcomes read off the simulation."""
+import json
+import math
+import subprocess
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from sim_core.adapt import scaling
+from sim_core.adapt.scaling import ScaleFactors, Units, factor, scale
+from sim_core.errors import ParameterError
+
+ROOT = Path(__file__).resolve().parents[1]
+
+# SEEDS-WAVE2.md §8.5 S1: Fig. 6's geometric column at L = 0.5.
+GEOMETRIC_AT_HALF = {
+    "LENGTH": 0.5, "TIME": 0.7071, "FORCE": 0.125, "TORQUE": 0.0625, "VELOCITY": 0.7071,
+    "ACCELERATION": 1.0, "ANGLE": 1.0, "ANGULAR_VELOCITY": 1.414, "ANGULAR_ACCELERATION": 2.0,
+    "MASS": 0.125, "STIFFNESS": 0.25, "DAMPING": 0.1768, "MOMENT_OF_INERTIA": 0.03125,
+    "TORSIONAL_STIFFNESS": 0.0625, "TORSIONAL_DAMPING": 0.04419,
+}
+
+
+@pytest.mark.parametrize("quantity", sorted(GEOMETRIC_AT_HALF))
+def test_fig6_geometric_scaling_at_half_size(quantity):
+    got = factor(getattr(scaling, quantity), ScaleFactors(length=0.5))
+    assert got == pytest.approx(GEOMETRIC_AT_HALF[quantity], rel=2e-4)
+
+
+def test_fig6_mass_scaling_uses_the_actual_mass_and_inertia_ratios():
+    L, M, I = 0.5, 0.3, 0.2
+    f = ScaleFactors(length=L, mass=M, inertia=I)
+    k, kv = 1200.0, 96.0
+    assert scale(k, scaling.TORSIONAL_STIFFNESS, f) == pytest.approx(k * I / L)            # eq. 4
+    assert scale(kv, scaling.TORSIONAL_DAMPING, f) == pytest.approx(kv * I / math.sqrt(L))
+    assert scale(300.0, scaling.TORQUE, f) == pytest.approx(300.0 * I / L)
+    assert scale(5000.0, scaling.STIFFNESS, f) == pytest.approx(5000.0 * M / L)          # hand springs
+    assert scale(50.0, scaling.DAMPING, f) == pytest.approx(50.0 * M / math.sqrt(L))
+    assert scale(100.0, scaling.FORCE, f) == pytest.approx(100.0 * M)
+    assert scale(2.0, scaling.MOMENT_OF_INERTIA, f) == pytest.approx(2.0 * I)
+    for quantity in ("LENGTH", "TIME", "VELOCITY", "ANGULAR_VELOCITY", "ANGLE"):         # '-' in the mass column
+        units = getattr(scaling, quantity)
+        assert factor(units, f) == factor(units, ScaleFactors(length=L))
+    # same lengths, different inertia (eq. 3): the gains scale by I'/I alone
+    assert scale(k, scaling.TORSIONAL_STIFFNESS, ScaleFactors(length=1.0, inertia=I)) == pytest.approx(k * I)
+
+
+def test_geometric_scaling_is_mass_scaling_with_mass_as_length_cubed():
+    L = 0.8
+    for name in GEOMETRIC_AT_HALF:
+        units = getattr(scaling, name)
+        assert factor(units, ScaleFactors(L)) == pytest.approx(factor(units, ScaleFactors(L, mass=L ** 3, inertia=L ** 5)))
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("m", Units(length=1)), ("s", Units(time=1)), ("rad", Units()), ("1", Units()), ("bool", Units()),
+    ("rad/m", Units(length=-1)), ("rad s/m", Units(length=-1, time=1)), ("m/s^2", Units(length=1, time=-2)),
+    ("N m/rad", scaling.TORSIONAL_STIFFNESS), ("N m s/rad", scaling.TORSIONAL_DAMPING),
+    ("kg m²", scaling.MOMENT_OF_INERTIA), ("N/m", scaling.STIFFNESS),
+    ("rad/(kg m²/s)", Units(length=-2, time=1, mass=-1, rotational=True)),
+])
+def test_unit_strings_of_the_schemas_parse(text, expected):
+    assert Units.parse(text) == expected
+
+
+def test_bad_units_and_factors_are_refused():
+    with pytest.raises(ParameterError, match="furlong"):
+        Units.parse("furlong/s")
+    with pytest.raises(ParameterError, match="length=-0.5"):
+        ScaleFactors(length=-0.5)
+    with pytest.raises(ParameterError, match="rotational"):
+        Units(length=1, mass=1, rotational=True)
+
+
+# ---------------------------------------------------------------- characters by scaling
+
+from sim_core.adapt.moved_bodies import moved_bodies  # noqa: E402
+from sim_core.adapt.servos import mass_scaled_servos  # noqa: E402
+from sim_core.character.dimensions import fig3_measures  # noqa: E402
+from sim_core.character.fig3 import FIG3, PRESETS, build_fig3_character  # noqa: E402
+from sim_core.character.fig3_report import BEGIN, END, fig3_rows, report_markdown  # noqa: E402
+from sim_core.character.make import between, scaled_to  # noqa: E402
+from sim_core.character.mass_properties import StandingBody  # noqa: E402
+from sim_core.character.model import compile_model  # noqa: E402
+from sim_core.character.reshape import BodyScale, reshaped, stretched_inertia  # noqa: E402
+from sim_core.character.spec import RIGS_DIR, CharacterSpec, load_character  # noqa: E402
+from sim_core.simulate import RunRequest, run  # noqa: E402
+
+
+@pytest.fixture(scope="module")
+def man():
+    return load_character("man")
+
+
+@pytest.fixture(scope="module")
+def woman():
+    return load_character("woman")
+
+
+def _volume(shape):
+    if shape["type"] == "capsule":
+        r, length = shape["radius"], np.linalg.norm(np.subtract(shape["to"], shape["from"]))
+        return math.pi * r * r * length + 4 / 3 * math.pi * r ** 3
+    if shape["type"] == "sphere":
+        return 4 / 3 * math.pi * shape["radius"] ** 3
+    if shape["type"] == "box":
+        return 8 * np.prod(shape["half"])
+    return math.pi * shape["half"][0] * shape["half"][1] * 2 * shape["half"][2]       # ellipse slab
+
+
+def test_a_uniform_half_size_copy_is_geometric_scaling(man):
+    """Every length x 0.5 and mass x 0.125: inertias x L^5, feet on the ground, skin volume x
+    density = mass as before, and the mass-scaled servos reduce to Fig. 6's geometric column."""
+    L = 0.5
+    data = reshaped(man.data, {b: BodyScale.uniform(L ** 3) for b in man.body_names})
+    half = CharacterSpec(data)
+    assert half.total_mass == pytest.approx(man.total_mass * L ** 3)
+    assert data["height"] == pytest.approx(man.data["height"] * L, rel=1e-9)
+    for old, new in zip(man.bodies, half.bodies):
+        assert np.allclose(new["inertia"], np.array(old["inertia"]) * L ** 5)
+        if old["parent"]:
+            assert np.linalg.norm(np.subtract(new["joint"]["pos"], half.bodies[0]["com"])) == pytest.approx(
+                L * np.linalg.norm(np.subtract(old["joint"]["pos"], man.bodies[0]["com"])))
+        old_volume, new_volume = sum(map(_volume, old["shapes"])), sum(map(_volume, new["shapes"]))
+        assert new_volume == pytest.approx(old_volume * L ** 3, rel=1e-6)
+    bottoms = [c["pos"][2] - c["radius"] for b in data["bodies"] for c in b["contacts"]]
+    assert np.allclose(bottoms, 0.0)
+    servos = CharacterSpec(mass_scaled_servos(data, man, L))
+    for old, new in zip(man.dofs, servos.dofs):
+        assert new.kp == pytest.approx(old.kp * L ** 4, rel=1e-4)          # torsional stiffness
+        assert new.kv == pytest.approx(old.kv * L ** 4.5, rel=1e-4)        # torsional damping
+        assert new.torque_limit == pytest.approx(old.torque_limit * L ** 4, rel=1e-4)
+
+
+def test_stretched_inertia_is_a_stretched_box():
+    m, a, b, c = 2.0, 0.3, 0.2, 0.1                      # box of full sides a, b, c
+    box = lambda m, a, b, c: m / 12 * np.diag([b * b + c * c, a * a + c * c, a * a + b * b])  # noqa: E731
+    s, mass = np.array([1.5, 0.5, 2.0]), 1.5 * 0.5 * 2.0
+    assert np.allclose(stretched_inertia(box(m, a, b, c), s, mass), box(m * mass, a * 1.5, b * 0.5, c * 2.0))
+
+
+def test_the_gains_move_the_lighter_side_unless_it_is_grounded(man):
+    standing = StandingBody(man)
+    leg = standing.subtree("ULEGR")
+    assert moved_bodies(standing, "hip_r_y") == standing.all_bodies() - leg       # stance hip: body about the hip
+    assert moved_bodies(standing, "ankle_r_y") == standing.all_bodies() - standing.subtree("FOOTR")
+    assert moved_bodies(standing, "shoulder_r_x") == standing.subtree("UARMR")    # the arm
+    assert moved_bodies(standing, "neck_c2_y") == {"HEAD"}
+    assert moved_bodies(standing, "hip_r_y", side="outboard") == leg              # swing hip: the leg
+
+
+def test_gain_factors_of_a_swing_hip_are_the_legs_ratios(man):
+    """The factors a per-state gain will be scaled by: the swing hip moves the leg, so M and I are
+    the ratios of the legs' masses and of their inertias about the hip (Fig. 3's leg / hip row)."""
+    from sim_core.adapt.moved_bodies import gain_factors
+    child = load_character("child")
+    f = gain_factors(StandingBody(man), StandingBody(child), "hip_r_y", length=0.46, side="outboard")
+    ours, theirs = fig3_measures(child), fig3_measures(man)
+    assert f.mass == pytest.approx(ours["leg mass"] / theirs["leg mass"], rel=1e-5)
+    assert f.inertia == pytest.approx(ours["leg / hip"] / theirs["leg / hip"], rel=1e-9)
+    assert scale(1.0, scaling.TORSIONAL_STIFFNESS, f) == pytest.approx(f.inertia / 0.46)
+
+
+@pytest.mark.parametrize("name", PRESETS)
+def test_fig3_characters_are_within_the_bands(name):
+    rows = fig3_rows(name)
+    assert len(rows) == 12
+    bad = [f"{r['row']}: {r['ours']:.3f} vs {r['fig3']:.3f} ({100 * r['error']:+.1f} %)" for r in rows if not r["within"]]
+    assert not bad, bad
+    limits = {"mass": 0.05, "length": 0.03, "inertia": 0.10}
+    assert all(abs(r["error"]) <= limits[r["kind"]] for r in rows)
+    CharacterSpec(json.loads((RIGS_DIR / f"{name}.json").read_text()))
+
+
+@pytest.mark.parametrize("name", [pytest.param("child"),
+                                  pytest.param("imaginary_runner", marks=pytest.mark.slow),
+                                  pytest.param("imaginary_cyclist", marks=pytest.mark.slow)])
+def test_stored_fig3_characters_are_what_the_command_makes(man, name):
+    """rigs/<preset>.json is generated: python -m sim_core character make --preset <name>."""
+    fresh = json.loads(json.dumps(build_fig3_character(name, man)))
+    assert fresh == json.loads((RIGS_DIR / f"{name}.json").read_text()), \
+        f"run: python -m sim_core character make --preset {name}"
+
+
+def test_docs_table_is_the_report():
+    text = (ROOT / "docs" / "bodies.md").read_text()
+    block = text.split(BEGIN, 1)[1].split(END, 1)[0].strip()
+    assert block == report_markdown().strip(), "run: python -m sim_core character report --out docs/bodies.md"
+
+
+def test_between_interpolates_every_number(man, woman):
+    assert between(man, woman, 0.0)["bodies"] == man.data["bodies"]
+    at_one = CharacterSpec(between(man, woman, 1.0))
+    for a, b in zip(at_one.dofs, woman.dofs):
+        assert (a.kp, a.torque_limit) == pytest.approx((b.kp, b.torque_limit))
+    body = CharacterSpec(between(man, woman, 0.7))
+    assert body.total_mass == pytest.approx(0.3 * man.total_mass + 0.7 * woman.total_mass)
+    hip = body.dofs[body.dof_index["hip_r_y"]]
+    assert hip.kp == pytest.approx(0.3 * man.dofs[man.dof_index["hip_r_y"]].kp + 0.7 * woman.dofs[woman.dof_index["hip_r_y"]].kp)
+    assert np.allclose(body.body("ULEGR")["inertia"],
+                       0.3 * np.array(man.body("ULEGR")["inertia"]) + 0.7 * np.array(woman.body("ULEGR")["inertia"]))
+    compile_model(body)
+
+
+def test_scaled_to_a_height_and_mass(man):
+    body = CharacterSpec(scaled_to(man, 1.5, 60.0))
+    assert body.data["height"] == pytest.approx(1.5, abs=1e-3)
+    assert body.total_mass == pytest.approx(60.0)
+    assert fig3_measures(body)["hip spacing"] < fig3_measures(man)["hip spacing"]
+    compile_model(body)
+
+
+def _balance(character):
+    trajectory = run(RunRequest("balance", character, duration=5.0))
+    return trajectory.meta
+
+
+@pytest.mark.parametrize("make", [*PRESETS, "man_woman_70", "man_150cm_60kg"])
+def test_new_bodies_balance_for_5_s(man, woman, make):
+    character = {**{name: (lambda name=name: load_character(name)) for name in PRESETS},
+                 "man_woman_70": lambda: CharacterSpec(between(man, woman, 0.7)),
+                 "man_150cm_60kg": lambda: CharacterSpec(scaled_to(man, 1.5, 60.0))}[make]()
+    meta = _balance(character)
+    assert meta["outcome"] == "success", meta["metrics"]
+    assert meta["metrics"]["fell"] is False and meta["metrics"]["stepped"] is False
+    assert meta["metrics"]["duration"] == pytest.approx(5.0)
+    assert meta["metrics"]["com_inside_support_throughout"]
+    # standing height held: the pelvis did not sink
+    assert meta["metrics"]["min_pelvis_height"] > 0.9 * meta["metrics"]["final_pelvis_height"]
+
+
+# ---------------------------------------------------------------- the command
+
+def _cli(*args):
+    return subprocess.run([sys.executable, "-m", "sim_core", *args], cwd=ROOT, capture_output=True, text=True,
+                          env={"PYTHONPATH": str(ROOT), "PATH": "/usr/bin:/bin:/usr/local/bin"})
+
+
+def test_character_make_between_writes_a_spec_simulate_takes(tmp_path):
+    out = tmp_path / "f.json"
+    p = _cli("character", "make", "--from", "man", "--to", "woman", "--fraction", "0.7", "--out", str(out))
+    assert p.returncode == 0, p.stderr
+    assert json.loads(p.stdout.strip().splitlines()[-1])["out"] == str(out)
+    assert CharacterSpec(json.loads(out.read_text())).name == "man_woman_70"
+    p = _cli("simulate", "balance", "--character", str(out), "--duration", "0.5")
+    assert p.returncode == 0 and json.loads(p.stdout.strip().splitlines()[-1])["outcome"] == "success"
+
+
+def test_presets_load_by_name_in_simulate():
+    p = _cli("simulate", "balance", "--character", "child", "--duration", "0.5")
+    assert p.returncode == 0, p.stderr
+    assert json.loads(p.stdout.strip().splitlines()[-1])["character"] == "child"
+
+
+def test_a_preset_name_never_replaces_a_thesis_spec():
+    before = (RIGS_DIR / "man.json").read_bytes()
+    p = _cli("character", "make", "--preset", "child", "--name", "man")
+    assert p.returncode == 2 and "rigs/man.json is not a made character" in p.stderr
+    assert (RIGS_DIR / "man.json").read_bytes() == before
+
+
+def _bad_spec(tmp_path, mass):
+    data = json.loads((RIGS_DIR / "man.json").read_text())
+    data["bodies"][4]["mass"] = mass                    # LLEGR
+    path = tmp_path / f"bad_{mass}.json"
+    path.write_text(json.dumps(data))
+    return path
+
+
+@pytest.mark.parametrize("args, message", [
+    (["--to", "woman", "--fraction", "1.5"], "--fraction=1.5 is out of range; allowed range is [0, 1]"),
+    (["--to", "woman", "--fraction", "-0.1"], "--fraction=-0.1 is out of range"),
+    (["--height", "0.5", "--mass", "30"], "--height=0.5 m is out of range; allowed range is [0.8, 2.2] m"),
+    (["--height", "2.5", "--mass", "90"], "--height=2.5 m is out of range"),
+    (["--height", "1.5"], "needs both --height"),
+    (["--preset", "dragon"], "unknown Fig. 3 character 'dragon'"),
+    (["zero mass"], "mass 0 must be a finite number > 0"),
+    (["negative mass"], "mass -2.0 must be a finite number > 0"),
+])
+def test_character_make_refuses_bad_input_and_writes_nothing(tmp_path, args, message):
+    out = tmp_path / "out.json"
+    if args == ["zero mass"]:
+        args = ["--from", str(_bad_spec(tmp_path, 0)), "--height", "1.7", "--mass", "70"]
+    elif args == ["negative mass"]:
+        args = ["--from", str(_bad_spec(tmp_path, -2.0)), "--to", "woman", "--fraction", "0.5"]
+    p = _cli("character", "make", *args, "--out", str(out))
+    assert p.returncode == 2
+    lines = p.stderr.strip().splitlines()
+    assert len(lines) == 1 and lines[0].startswith("error: ") and message in lines[0], p.stderr
+    assert not out.exists() and not list(tmp_path.glob("*.tmp"))
