@@ -22,7 +22,7 @@ def parse_params(behaviour: str, params) -> dict:
     """A dict, a list of ``"name=value"`` strings, or one text ``"name=value name=value"``
     (commas or spaces), validated by the behaviour's schema: the full parameter dict, with the
     defaults filled in (a choice by its option name or number)."""
-    schema = sim("control.behaviour").behaviour_class(behaviour).schema
+    schema = sim("skills").behaviour_class(behaviour).schema
     if params is None:
         return schema.validate({})
     if isinstance(params, str):
@@ -57,7 +57,7 @@ def target_from_object(obj, target) -> dict[str, float]:
     local = obj.matrix_world.inverted() @ target.matrix_world.translation
     point = BLENDER_TO_SIM @ np.array(local[:3], dtype=float)
     character = sim("character.spec").load_character(str(obj[rig.CHARACTER_KEY]))
-    return {k: round(v, 4) for k, v in sim("control.target_jump").target_params(character, point).items()}
+    return {k: round(v, 4) for k, v in sim("skills.jump_to_target.behaviour").target_params(character, point).items()}
 
 
 def path_from_curve(context, obj, curve) -> list[list[float]]:

@@ -82,7 +82,7 @@ def bake_trajectory(obj: bpy.types.Object, trajectory, fps: float, start_frame: 
                     duration: float | None = None) -> bpy.types.Action:
     """Trajectory -> a new action on ``obj`` named after the behaviour and its parameters."""
     meta = trajectory.meta
-    schema = sim("control.behaviour").behaviour_class(meta["behaviour"]).schema
+    schema = sim("skills").behaviour_class(meta["behaviour"]).schema
     ch = channels_for(obj, trajectory, fps, start_frame, duration)
     info = {
         "character": meta.get("character"), "behaviour": meta["behaviour"], "params": meta.get("params", {}),

@@ -87,12 +87,12 @@ TARGET_PARAMETERS = ("target_x", "target_y", "target_z")
 
 
 def behaviour_schema(behaviour: str):
-    return sim("control.behaviour").behaviour_class(behaviour).schema
+    return sim("skills").behaviour_class(behaviour).schema
 
 
 def settings_schema(behaviour: str):
     """The behaviour's tuned settings (what a search sets), or None if it declares none."""
-    schema = getattr(sim("control.behaviour").behaviour_class(behaviour), "settings_schema", None)
+    schema = getattr(sim("skills").behaviour_class(behaviour), "settings_schema", None)
     return schema if schema is not None and schema.parameters else None
 
 
@@ -168,7 +168,7 @@ _ITEMS: dict[str, list] = {}          # enum items must stay referenced while Bl
 
 
 def _behaviour_items(self, context):
-    behaviours = sim("control.behaviour")
+    behaviours = sim("skills")
     _ITEMS["behaviour"] = [(n, label(n), behaviours.behaviour_class(n).summary) for n in behaviours.available_behaviours()]
     return _ITEMS["behaviour"]
 
@@ -184,7 +184,7 @@ def _group_class(name: str, schema) -> type:
 
 
 def _build_classes() -> list[type]:
-    behaviours = sim("control.behaviour")
+    behaviours = sim("skills")
     request = _group_class("request", request_schema())
     groups = [request]
     annotations = {

@@ -1,4 +1,4 @@
-"""Command line: python -m sim_core {list, describe, simulate, plan, replay, bench, balance-report, character}.
+"""Command line: python -m sim_core {list, describe, simulate, plan, replay, bench, calibrate, report, character}.
 
 Errors a user can cause print one line ('error: ...') and exit with status 2; nothing is written.
 ``simulate`` prints a JSON summary (outcome and metrics) as its last line.
@@ -38,7 +38,7 @@ def _finite(text: str, name: str) -> float:
 def build_request(args):
     """The RunRequest of ``simulate``'s flags: the behaviour's --set values by its schema, the
     rest by the request schema (sim_core.request), as the panel and batch bakes do."""
-    from sim_core.control.behaviour import behaviour_class
+    from sim_core.skills import behaviour_class
     from sim_core.request import build_request as request_from_values, request_values
 
     params = behaviour_class(args.behaviour).schema.parse_assignments(args.set or [])
@@ -48,7 +48,7 @@ def build_request(args):
 
 def cmd_list(args) -> int:
     from sim_core.character.spec import available_characters
-    from sim_core.control.behaviour import available_behaviours, behaviour_class
+    from sim_core.skills import available_behaviours, behaviour_class
     print("behaviours:")
     for name in available_behaviours():
         print(f"  {name:12s} {behaviour_class(name).summary}")
@@ -64,7 +64,7 @@ def schema_markdown(cls) -> str:
 
 
 def cmd_describe(args) -> int:
-    from sim_core.control.behaviour import behaviour_class
+    from sim_core.skills import behaviour_class
     cls = behaviour_class(args.behaviour)
     if args.markdown:
         print(schema_markdown(cls))
@@ -88,7 +88,7 @@ def _use_store(args) -> None:
     $SIM_ATHLETICS_PLANS would set it."""
     if getattr(args, "store", None):
         import os
-        from sim_core.control.target_jump import PLAN_STORE_VARIABLE
+        from sim_core.skills.jump_to_target.behaviour import PLAN_STORE_VARIABLE
         os.environ[PLAN_STORE_VARIABLE] = args.store
 
 
@@ -121,7 +121,7 @@ def cmd_simulate(args) -> int:
 
 
 def cmd_plan(args) -> int:
-    from sim_core.control.behaviour import behaviour_class
+    from sim_core.skills import behaviour_class
     from sim_core.planning import PLANNED_BEHAVIOURS, plan_and_store
     from sim_core.tuning import executor_for
     if args.behaviour not in PLANNED_BEHAVIOURS:
@@ -135,7 +135,7 @@ def cmd_plan(args) -> int:
     with executor_for(args.workers) as executor:
         plan = plan_and_store(args.character, params, strength, args.budget, progress=_plan_progress,
                               executor=executor)
-    from sim_core.control.target_jump import plan_store_dir
+    from sim_core.skills.jump_to_target.behaviour import plan_store_dir
     m = plan["measured"]
     print(json.dumps({"found": plan["found"], "trials": plan["trials"], "landing": m["landing"],
                       "air_time": m["air_time"], "outcome": m["outcome"], "store": str(plan_store_dir())}))
@@ -181,7 +181,7 @@ def cmd_replay(args) -> int:
 
 def cmd_bench(args) -> int:
     from sim_core.bench import bench
-    from sim_core.control.behaviour import behaviour_class
+    from sim_core.skills import behaviour_class
     params = behaviour_class(args.behaviour).schema.parse_assignments(args.set or [])
     result = bench(behaviour=args.behaviour, character=args.character, params=params,
                    duration=_finite(args.duration, "--duration"), repeats=args.repeats)
@@ -199,10 +199,13 @@ def cmd_bench(args) -> int:
     return 0
 
 
-def cmd_balance_report(args) -> int:
-    from sim_core.experiments import balance_report
-    balance_report(characters=args.character or ["man", "woman"], quick=args.quick)
-    return 0
+def cmd_skill_part(args) -> int:
+    """``calibrate SKILL ...`` / ``report SKILL ...``: the skill room's calibrate.py or report.py,
+    with the rest of the command line as its own options (``--help`` lists them)."""
+    from sim_core.skills import skill_module
+    module = skill_module(args.skill, args.part)
+    sys.argv = [f"python -m sim_core {args.part} {args.skill}", *args.options]     # its usage line names it so
+    return module.main(args.options) or 0
 
 
 def cmd_character(args) -> int:
@@ -284,10 +287,12 @@ def parser() -> argparse.ArgumentParser:
     b.add_argument("--scene-actors", type=int, default=4, help="runners in the scene benchmark (0 = none)")
     b.add_argument("--scene-duration", default="5", help="seconds simulated in the scene benchmark")
     b.set_defaults(func=cmd_bench)
-    br = sub.add_parser("balance-report", help="push scan, slopes and backpacks for the balance behaviour")
-    br.add_argument("--character", action="append", help="man and/or woman (default both)")
-    br.add_argument("--quick", action="store_true", help="coarser search (for a fast look)")
-    br.set_defaults(func=cmd_balance_report)
+    for part, text in (("calibrate", "run a skill's calibration: it searches by simulation and writes the skill's table"),
+                       ("report", "run a skill's report: it simulates and writes its figures and plots under docs/")):
+        sp = sub.add_parser(part, help=text, add_help=False)
+        sp.add_argument("skill", help="skill name (see list)")
+        sp.add_argument("options", nargs=argparse.REMAINDER, help="the skill's own options (SKILL --help)")
+        sp.set_defaults(func=cmd_skill_part, part=part)
     ch = sub.add_parser("character", help="make new characters (Hodgins & Pollard 1997) and report them")
     ch_sub = ch.add_subparsers(dest="character_command", required=True)
     mk = ch_sub.add_parser("make", help="write a new character spec (any command's --character takes it)")

@@ -32,7 +32,8 @@ import numpy as np
 
 from sim_core.character.model import TIMESTEP, Placement, add_character, new_spec, place_standing
 from sim_core.character.spec import CharacterSpec, load_character
-from sim_core.control.behaviour import Behaviour, behaviour_class
+from sim_core.control.behaviour import Behaviour
+from sim_core.skills import behaviour_class
 from sim_core.errors import SimAthleticsError
 from sim_core.world import World, add_world
 

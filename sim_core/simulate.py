@@ -27,7 +27,8 @@ import numpy as np
 from sim_core.character.model import compile_model, place_standing, set_standing_pose
 from sim_core.character.spec import CharacterSpec, load_character
 from sim_core.control.actor import ActorView
-from sim_core.control.behaviour import Behaviour, ControlContext, behaviour_class
+from sim_core.control.behaviour import Behaviour, ControlContext
+from sim_core.skills import behaviour_class
 from sim_core.control.servo import ServoBank
 from sim_core.edit_log import EDITABLE_FIELDS, EditLog, EditPlayer
 from sim_core.errors import Cancelled, ParameterError, SimAthleticsError

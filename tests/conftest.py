@@ -1,12 +1,6 @@
-import sys
-from pathlib import Path
-
-ROOT = Path(__file__).resolve().parents[1]
-if str(ROOT) not in sys.path:
-    sys.path.insert(0, str(ROOT))
-
-
-import pytest  # noqa: E402
+"""Shared fixtures. The checkout's root is on sys.path by pytest's ``pythonpath`` option
+(pyproject.toml), so the tests import this checkout's sim_core, blender_addon, tools and build."""
+import pytest
 
 
 @pytest.fixture(autouse=True)

@@ -5,7 +5,7 @@ import numpy as np
 import pytest
 
 from sim_core.world import World
-from sim_core.experiments import backpack_stands, push_recovered, slope_holds
+from sim_core.skills.balance.experiments import backpack_stands, push_recovered, slope_holds
 from sim_core.simulate import RunRequest, run
 
 KNEE_BEND = {"man": 0.52, "woman": 0.47}          # TARGETS.md: pelvis to 0.52 m / 0.47 m

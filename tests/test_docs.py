@@ -4,7 +4,7 @@ import re
 from pathlib import Path
 
 from sim_core.cli import schema_markdown
-from sim_core.control.behaviour import available_behaviours, behaviour_class
+from sim_core.skills import available_behaviours, behaviour_class
 
 ROOT = Path(__file__).resolve().parents[1]
 SKILL_DOCS = ROOT / "docs" / "skills"
@@ -16,7 +16,7 @@ def test_skill_docs_parameter_tables_match_the_schemas():
         match = re.search(rf"<!-- schema:{name} -->\n(.*?)\n<!-- /schema:{name} -->", text, re.S)
         assert match, f"docs/skills has no <!-- schema:{name} --> table"
         assert match.group(1).strip() == schema_markdown(behaviour_class(name)).strip(), \
-            f"regenerate with: python3 scripts/readme_schemas.py"
+            f"regenerate with: tools/readme_schemas.py"
 
 
 def test_readme_is_an_entry_point():

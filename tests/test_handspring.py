@@ -5,8 +5,8 @@ import math
 import numpy as np
 import pytest
 
-from sim_core.control.handspring import HAND_BODIES, calibrated, load_table
-from sim_core.control.somersault import ROTATION_TOLERANCE
+from sim_core.skills.handspring.behaviour import HAND_BODIES, calibrated, load_table
+from sim_core.skills.somersault.behaviour import ROTATION_TOLERANCE
 from sim_core.errors import ParameterError
 from sim_core.simulate import RunRequest, largest_difference, replay, run
 
@@ -58,7 +58,7 @@ def test_handspring_replays_bit_for_bit(handsprings):
 
 
 def test_an_uncalibrated_handspring_is_refused_before_simulating(monkeypatch):
-    import sim_core.control.handspring as handspring
+    import sim_core.skills.handspring.behaviour as handspring
     monkeypatch.setattr(handspring, "load_table", lambda character: {"handsprings": [], "not_found": [
         {"strength": "human", "best": "fell, rotation 4.90 rad"}]})
     with pytest.raises(ParameterError, match="no calibrated back handspring.*best searched: fell"):

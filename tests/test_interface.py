@@ -8,7 +8,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from sim_core.control.behaviour import available_behaviours, behaviour_class
+from sim_core.skills import available_behaviours, behaviour_class
 from sim_core.control.servo import hermite_blend
 from sim_core.errors import ParameterError
 from sim_core.perturbation import Push
@@ -167,7 +167,7 @@ def test_gain_changes_and_hermite_moves_replay_bit_for_bit():
     """A behaviour that changes servo gains per state and moves targets along Hermite curves:
     every gain change is in the edit log, and the replay reproduces the run exactly."""
     from sim_core.control.balance import Balance
-    from sim_core.control.behaviour import _REGISTRY
+    from sim_core.control.behaviour import REGISTRY
 
     class SoftKnees(Balance):
         name = "_test_soft_knees"
@@ -181,11 +181,11 @@ def test_gain_changes_and_hermite_moves_replay_bit_for_bit():
             if abs(t - 2.0) < 1e-9:
                 servos.set_gains(knees, servos.default_kp[knees], servos.default_kv[knees])
 
-    _REGISTRY[SoftKnees.name] = SoftKnees
+    REGISTRY[SoftKnees.name] = SoftKnees
     try:
         traj = run(RunRequest(SoftKnees.name, "man", duration=3.0))
     finally:
-        del _REGISTRY[SoftKnees.name]
+        del REGISTRY[SoftKnees.name]
     field = traj.meta["edit_fields"].index("actuator_gainprm")
     ticks = traj.arrays["edit_tick"][traj.arrays["edit_field"] == field]
     assert sorted(set(ticks.tolist())) == [100, 200]            # 10 ms ticks: t = 1 s and 2 s

@@ -8,7 +8,7 @@ from sim_core.control.leap import commandable_heights, load_mapping, rise_tolera
 from sim_core.errors import ParameterError
 from sim_core.simulate import RunRequest, StartState, largest_difference, replay, run
 
-from project_scripts import load_script
+import importlib
 
 
 def first_flight(traj):
@@ -119,7 +119,7 @@ BROAD_DISTANCES = {"man": (0.3, 0.5, 0.75, 1.0, 1.1, 1.3, 1.6, 1.9, 2.1), "woman
 def test_broad_jump_travels_the_commanded_distance_and_lands_balanced(name, distance):
     """TARGETS.md: broad jumps 0.3 .. 2.1 m (man) and 0.3 .. 1.6 m (woman), composites 1.1 and
     2.1 m (man): COM travel within +-10 %, ending balanced, the feet staying where they land. A
-    distance with no calibrated jump (scripts/calibrate_leap.py plans them) is refused before
+    distance with no calibrated jump (python -m sim_core calibrate leap plans them) is refused before
     simulating, with the calibrated ones: an xfail naming them."""
     try:
         traj = run(RunRequest("leap", name, params=dict(distance=distance), duration=5.0))
@@ -138,7 +138,7 @@ def test_every_commanded_height_runs_a_calibrated_leap_within_its_tolerance(name
     """From 0.1 m up to the highest calibrated leap (or 1 m), every height (5 mm apart) has a
     calibrated row whose measured rise is within its tolerance, so the leap runs that measured row
     and no interpolation between rows (which missed or fell: the woman's 0.44 / 0.59 m, the man's
-    0.27 m unlimited) is left; scripts/calibrate_leap.py --fill fills the gaps."""
+    0.27 m unlimited) is left; python -m sim_core calibrate leap --fill fills the gaps."""
     assert uncovered_gaps(load_mapping(name)[table]["com_rise"]) == []
 
 
@@ -146,7 +146,7 @@ def test_a_fill_tries_crouches_between_the_neighbours_whose_rises_straddle_a_gap
     """calibrate_leap.py --fill: for a gap in the rises, each damping's neighbouring crouches whose
     measured rises lie either side of its middle get two crouches between them (a third and two
     thirds of the way); a family that does not straddle it gets none."""
-    calibrate_leap = load_script("calibrate_leap")
+    calibrate_leap = importlib.import_module("sim_core.skills.leap.calibrate")
     results = [dict(crouch_height=0.60, damping=1.0, com_rise=0.30), dict(crouch_height=0.57, damping=1.0, com_rise=0.40),
                dict(crouch_height=0.55, damping=1.0, com_rise=0.45), dict(crouch_height=0.60, damping=0.3, com_rise=0.50)]
     assert uncovered_gaps([0.30, 0.45])[-1] == pytest.approx((0.335, 0.405))   # beyond 10 % of both rows

@@ -13,7 +13,7 @@ from pathlib import Path
 import pytest
 
 from sim_core.errors import Cancelled, ParameterError
-from sim_core.control.target_jump import GROUND_AIR_TIME, stored_plan, user_plans_path
+from sim_core.skills.jump_to_target.behaviour import GROUND_AIR_TIME, stored_plan, user_plans_path
 
 ROOT = Path(__file__).resolve().parents[1]
 UNPLANNED = {"target_x": 1.17, "air_time": GROUND_AIR_TIME}     # no shipped plan has this request

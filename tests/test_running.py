@@ -12,14 +12,14 @@ import pytest
 
 from sim_core.character.model import compile_model, set_standing_pose
 from sim_core.character.spec import load_character
-from sim_core.control.running import Running, SpeedTable
-from sim_core.control.running_leg import RunnerLeg
-from sim_core.control.running_path import PathFollower, path_deviation, turn_path
+from sim_core.skills.running.behaviour import Running, SpeedTable
+from sim_core.skills.running.leg import RunnerLeg
+from sim_core.skills.running.path import PathFollower, path_deviation, turn_path
 from sim_core.errors import ParameterError
 from sim_core.gait import HUMAN_FIG12, STEADY_RUN, compare_with_human
 from sim_core.simulate import RunRequest, largest_difference, replay, run
 
-from project_scripts import load_script
+import importlib
 
 SPEED_TOLERANCE = 0.05          # TARGETS.md: mean speed over the last 10 s within 5 %
 FIG12_TOLERANCE = 0.10          # TARGETS.md: each gait figure within 10 % of the human one
@@ -239,11 +239,11 @@ def test_a_tuned_row_replaces_only_its_speed():
 
 
 def _tune_running():
-    return load_script("tune_running")
+    return importlib.import_module("sim_core.skills.running.calibrate")
 
 
 def test_evaluation_function_adds_the_fig_12_gait_at_the_fast_end():
-    """scripts/tune_running.py's evaluation (docs/running.md): the gait term against Fig. 12
+    """python -m sim_core calibrate running's evaluation (docs/running.md): the gait term against Fig. 12
     (step frequency, step length, stance fraction) counts from 4.5 m/s up, not at the slower
     speeds; a speed error or a Fig. 12 error beyond its band costs more."""
     tune = _tune_running()
@@ -340,7 +340,7 @@ def test_human_figures_are_the_papers():
 
 def test_a_running_constant_is_a_setting_a_run_may_set_by_name():
     """The constants of the running laws are data (running_any) and settings: a tuner passes a
-    candidate by name (scripts/tune_running.py --steering), no module is patched. The stored value
+    candidate by name (python -m sim_core calibrate running --steering), no module is patched. The stored value
     given explicitly runs bit for bit as the default; another changes the run."""
     stored = Running.settings_schema.by_name["start_speed"].default
     default, same, other = (run_running(1.2, **extra).arrays["qpos"]

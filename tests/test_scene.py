@@ -241,7 +241,7 @@ def test_each_actors_servo_bank_writes_only_its_slice_and_names_resolve_through_
 
 
 def test_rates_that_do_not_share_a_loop_are_refused():
-    from sim_core.control.behaviour import behaviour_class
+    from sim_core.skills import behaviour_class
     from sim_core.scene import Scene, control_tick
 
     balance = scene_from_dict({"actors": [{"name": "a", "character": "man", "behaviour": "balance"}]}).actors[0]

@@ -9,7 +9,7 @@ from pathlib import Path
 
 import pytest
 
-from sim_core.control.behaviour import behaviour_class
+from sim_core.skills import behaviour_class
 from sim_core.errors import ParameterError
 from sim_core.request import REQUEST_SCHEMA, build_request
 from sim_core.schema import Choice, Group, Parameter, Points, Schema

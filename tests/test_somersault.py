@@ -4,7 +4,7 @@ import math
 
 import pytest
 
-from sim_core.control.somersault import DIRECTIONS, ROTATION_TOLERANCE, calibrated, load_table
+from sim_core.skills.somersault.behaviour import DIRECTIONS, ROTATION_TOLERANCE, calibrated, load_table
 from sim_core.errors import ParameterError
 from sim_core.simulate import RunRequest, largest_difference, replay, run
 
@@ -58,7 +58,7 @@ def test_somersault_replays_bit_for_bit(somersaults):
 def test_an_uncalibrated_somersault_is_refused_before_simulating(monkeypatch):
     """A somersault with no calibrated take-off for the character, direction and strength is
     refused with the reason; nothing is simulated."""
-    import sim_core.control.somersault as somersault
+    import sim_core.skills.somersault.behaviour as somersault
     monkeypatch.setattr(somersault, "load_table", lambda character: {"somersaults": [], "not_found": [
         {"direction": "backward", "strength": "human", "best": "fell, rotation 3.37 rad"}]})
     with pytest.raises(ParameterError, match="no calibrated backward somersault.*best searched: fell"):
@@ -76,7 +76,7 @@ def test_the_crouch_before_the_take_off_is_a_squat_not_a_fall():
     take-off; that is the skill's squat (allowed down to SQUAT_LOWEST), not a fall - the same run
     judged by the standing rule throughout would be a fall."""
     from sim_core.analysis import standard_metrics
-    from sim_core.control.somersault import SQUAT_LOWEST
+    from sim_core.skills.somersault.behaviour import SQUAT_LOWEST
     settings = {"crouch_height": 0.55, "crouch_pitch": 1.3655, "com_offset": -0.1459, "thrust_lean": -0.1,
                 "liftoff_hip": 1.6871, "arm_swing": 3.0478, "thrust_damping": 0.8088, "tuck_stiffness": 2.1365}
     traj = run(RunRequest("somersault", "man", params=dict(settings, low_level=1, direction=0), duration=1.6))

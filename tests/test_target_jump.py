@@ -1,7 +1,7 @@
 """Jumping to a target (Ooi 2015; TARGETS.md "Jumping to a target"): the path estimate, refusals
 before anything is simulated, and the planned jumps read off the simulation.
 
-A target whose stored plan found no jump within the tolerances (scripts/plan_jumps.py) is an
+A target whose stored plan found no jump within the tolerances (python -m sim_core calibrate jump_to_target) is an
 xfail that names the nearest measured landing; a found one must land within 5 cm, with the air
 time within 0.05 s, and end balanced."""
 from __future__ import annotations
@@ -14,13 +14,11 @@ import pytest
 
 from sim_core.ballistics import GRAVITY
 from sim_core.character.spec import load_character
-from sim_core.control.target_jump import (AIR_TIME_TOLERANCE, BOX_AIR_TIME, BOX_DISTANCE, GROUND_AIR_TIME,
-                                          LANDING_TOLERANCE, SIDEWAYS_AIR_TIME, path_estimate, stored_plans,
-                                          start_feet_centre, takeoff_velocity, target_params)
+from sim_core.skills.jump_to_target.behaviour import AIR_TIME_TOLERANCE, BOX_AIR_TIME, BOX_DISTANCE, GROUND_AIR_TIME, LANDING_TOLERANCE, SIDEWAYS_AIR_TIME, path_estimate, stored_plans, start_feet_centre, takeoff_velocity, target_params
 from sim_core.errors import ParameterError
 from sim_core.simulate import RunRequest, run
 
-from project_scripts import load_script
+import importlib
 
 FORWARD = (1.0, 1.3, 1.6, 1.9)
 WINDUP_TIME = 1.25
@@ -80,7 +78,7 @@ def _planned_jump(character: str, label: str, **params):
                   **params, plan_trials=0)
     plan = _stored(character, params)
     if plan is None:
-        pytest.xfail(f"{character} {label}: not planned (scripts/plan_jumps.py)")
+        pytest.xfail(f"{character} {label}: not planned (python -m sim_core calibrate jump_to_target)")
     if not plan["found"]:
         with pytest.raises(ParameterError) as refused:
             run(RunRequest("jump_to_target", character, params=params))
@@ -127,7 +125,7 @@ def test_a_jump_down_starts_on_a_box_and_is_measured_from_the_ground_below():
     of the toes, the obstacle stands on the ground, and the feet's heights are read above what is
     under them."""
     from sim_core.control.measure import surface_under
-    from sim_core.control.target_jump import scene_for, toe_tip
+    from sim_core.skills.jump_to_target.behaviour import scene_for, toe_tip
     man = load_character("man")
     world = scene_for(man, (1.4, 0.0, -0.5, 0.3))
     (start_box, obstacle), toes = world.boxes, toe_tip(man)
@@ -176,9 +174,9 @@ def test_a_search_given_start_settings_starts_there():
 
 
 def test_start_settings_for_one_side_are_mirrored_to_the_other():
-    """scripts/plan_jumps.py --start: settings found for a jump to the right start the left one's
+    """python -m sim_core calibrate jump_to_target --start: settings found for a jump to the right start the left one's
     search mirrored (the sideways lean and the lift-off roll change sign, nothing else)."""
-    plan_jumps = load_script("plan_jumps")
+    plan_jumps = importlib.import_module("sim_core.skills.jump_to_target.calibrate")
     right = {"com_offset_y": -0.15, "liftoff_roll": 0.3, "crouch_height": 0.6, "foot_delta": -0.05}
     assert plan_jumps.to_side(right, 1.3) == {"com_offset_y": 0.15, "liftoff_roll": -0.3, "crouch_height": 0.6,
                                               "foot_delta": -0.05}
@@ -187,7 +185,7 @@ def test_start_settings_for_one_side_are_mirrored_to_the_other():
 
 
 def test_remeasure_stores_what_a_plan_measures_now(tmp_path, monkeypatch):
-    """scripts/plan_jumps.py --remeasure runs a stored plan's settings again and stores the measured
+    """python -m sim_core calibrate jump_to_target --remeasure runs a stored plan's settings again and stores the measured
     landing and whether it is found: a plan whose stored numbers are stale (here made up: it
     'fell' at (9, 9) m) gets the man's 1.3 m jump's real landing back, found again."""
     stored = _stored("man", dict(target_x=1.3, target_y=0.0, target_z=0.0, air_time=GROUND_AIR_TIME,
@@ -197,7 +195,7 @@ def test_remeasure_stores_what_a_plan_measures_now(tmp_path, monkeypatch):
     shutil.copytree(store.DIRECTORY, tmp_path, dirs_exist_ok=True)      # the other tables as they are
     monkeypatch.setattr(store, "DIRECTORY", tmp_path)
     store.save("jump_targets", "man", {"plans": [stale]}, strengths=["human"])
-    load_script("plan_jumps").remeasure(["man"])
+    importlib.import_module("sim_core.skills.jump_to_target.calibrate").remeasure(["man"])
     again = json.loads((tmp_path / "jump_targets_man.json").read_text())["plans"]
     assert len(again) == 1 and again[0]["found"] and again[0]["settings"] == stored["settings"]
     assert again[0]["measured"]["landing"] == pytest.approx(stored["measured"]["landing"], abs=1e-6)
@@ -214,7 +212,7 @@ def test_a_thrust_leaning_back_slows_the_forward_take_off_of_the_womans_sideways
     """Her best 1.0 m jump to the left leaves moving forward (it lands 0.2 m ahead of the target);
     the same settings with the thrust along poses 0.15 m behind the feet leave slower forward
     (measured 0.28 -> 0.11 m/s). Read off the simulation at lift-off."""
-    from sim_core.control.target_jump import leap_params, scene_for
+    from sim_core.skills.jump_to_target.behaviour import leap_params, scene_for
     target = (0.0, 1.0, 0.0, 0.0)
     plan = _stored("woman", dict(target_x=0.0, target_y=1.0, target_z=0.0, obstacle_height=0.0,
                                  air_time=SIDEWAYS_AIR_TIME, windup_time=WINDUP_TIME))
@@ -234,7 +232,7 @@ def test_the_spin_hold_takes_the_twist_out_of_the_womans_sideways_take_off():
     leaves turning about the vertical (measured -5.2 kg m²/s); with the hips turning against that
     angular momentum in the crouch and the thrust (spin_hold 0.12 rad per kg m²/s) it leaves with
     almost none (+0.5). Read off the simulation 50 ms after lift-off, in flight."""
-    from sim_core.control.target_jump import leap_params, scene_for
+    from sim_core.skills.jump_to_target.behaviour import leap_params, scene_for
     from sim_core.planning.jump import knobs_for
     assert "spin_hold" in knobs_for((0.0, -1.3, 0.0, 0.0)) and "spin_hold" not in knobs_for((1.3, 0.0, 0.0, 0.0))
     target = (0.0, -1.3, 0.0, 0.0)

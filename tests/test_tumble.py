@@ -6,7 +6,7 @@ import pytest
 
 from sim_core.character.model import compile_model
 from sim_core.character.spec import load_character
-from sim_core.control.dive import takeoff_index, twist_moves
+from sim_core.skills.dive.behaviour import takeoff_index, twist_moves
 from sim_core.control.tumble import SEED_INERTIA, position_inertia
 from sim_core.errors import ParameterError
 from sim_core.simulate import RunRequest, largest_difference, replay, run
@@ -165,7 +165,7 @@ def test_twist_moves_double_the_tilt_for_multiple_twists():
 def test_a_twisting_flight_takes_a_finer_step_and_still_replays_exactly():
     """The flight of a dive runs at the model's step / FLIGHT_STEP_DIVISION (logged per tick); the
     replay follows the log to the bit."""
-    from sim_core.control.dive import FLIGHT_STEP_DIVISION
+    from sim_core.skills.dive.behaviour import FLIGHT_STEP_DIVISION
     traj = run(RunRequest("dive", "woman", params=WOMAN_DIVES["back 1.5 with 2.5 twists"], duration=4.5))
     divisions = traj.arrays["step_division"]
     assert divisions[0] == 1 and divisions[-1] == FLIGHT_STEP_DIVISION

@@ -112,7 +112,7 @@ def test_bad_requests_are_refused_with_the_allowed_values():
 
 
 def test_a_space_from_a_schema_uses_its_ranges_or_narrower_ones():
-    from sim_core.control.behaviour import behaviour_class
+    from sim_core.skills import behaviour_class
     schema = behaviour_class("leap").schema
     space = Space.from_schema(schema, ["crouch_height", "arm_swing"], narrower={"arm_swing": (0.5, 3.0)})
     p = schema.by_name["crouch_height"]

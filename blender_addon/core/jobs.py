@@ -13,7 +13,7 @@ from __future__ import annotations
 import threading
 import time
 
-from .simcore import SIM_CORE, sim
+from .simcore import sim
 
 
 class Job:
@@ -81,53 +81,29 @@ def cancelled_error() -> type[BaseException]:
 
 
 class Planner:
-    """The jump planner of the sim_core in use: the planning room's (``planning/jump.py``: plans
-    take ``budget`` and ``cancelled``; kept in the user's plan store) where it exists, else the
-    older one in ``control/target_jump.py`` (plans kept in the shipped table). One interface for
-    both: ``stored``, ``plan``, ``store``."""
+    """The jump planner of the sim_core in use (``planning/jump.py``: plans take ``budget`` and
+    ``cancelled``; kept in the user's plan store): ``stored``, ``plan``, ``store``."""
 
     def __init__(self):
-        import importlib
-        try:
-            self.module = importlib.import_module(f"{SIM_CORE}.planning.jump")
-        except ModuleNotFoundError as exc:
-            if not (exc.name or "").startswith(f"{SIM_CORE}.planning"):
-                raise
-            self.module = None
-        self.old = None if self.module is not None else sim("control.target_jump")
+        self.module = sim("planning.jump")
 
     def stored(self, character: str, params: dict, strength):
-        if self.module is not None:
-            return self.module.planned(character, params, strength)
-        return self.old.stored_plan(character, jump_request(params, strength))
+        return self.module.planned(character, params, strength)
 
     def plan(self, character: str, params: dict, strength, budget: int, progress, cancelled, executor=None) -> dict:
-        target = tuple(params[k] for k in ("target_x", "target_y", "target_z", "obstacle_height"))
-        if self.module is not None:
-            return self.module.plan_jump(character, target, params["air_time"], params["windup_time"],
-                                         self.module.strength_name(strength), budget, progress=progress,
-                                         cancelled=cancelled, executor=executor)
-        return self.old.plan_jump(character, target, params["air_time"], params["windup_time"], strength,
-                                  trials=budget, progress=progress, cancelled=cancelled)
+        m = self.module
+        return m.plan_jump(character, target_of(params), params["air_time"], params["windup_time"],
+                           m.strength_name(strength), budget, progress=progress, cancelled=cancelled, executor=executor)
 
     def store(self, character: str, params: dict, strength, plan: dict) -> None:
-        if self.module is not None:
-            m = self.module
-            target = tuple(params[k] for k in ("target_x", "target_y", "target_z", "obstacle_height"))
-            m.store_user_plan(character, m.request_of(target, params["air_time"], params["windup_time"],
-                                                      m.strength_name(strength)), plan)
-        else:
-            self.old.store_plan(character, jump_request(params, strength), plan, "blender_addon: Plan Jump")
+        m = self.module
+        m.store_user_plan(character, m.request_of(target_of(params), params["air_time"], params["windup_time"],
+                                                  m.strength_name(strength)), plan)
 
 
-JUMP_REQUEST_KEYS = ("target_x", "target_y", "target_z", "obstacle_height", "air_time", "windup_time")
-
-
-def jump_request(params: dict, strength) -> dict:
-    """The key the older planner stores a plan under (as its JumpToTarget.request)."""
-    request = {k: float(params[k]) for k in JUMP_REQUEST_KEYS}
-    request["strength"] = strength
-    return request
+def target_of(params: dict) -> tuple:
+    """The planner's target of jump_to_target parameters: (x, y, z, obstacle height)."""
+    return tuple(params[k] for k in ("target_x", "target_y", "target_z", "obstacle_height"))
 
 
 class PlanningJob(Job):

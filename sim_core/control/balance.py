@@ -85,7 +85,6 @@ class LegGeometry:
         return self.ankle_height + math.sqrt(max(u * u + l * l + 2 * u * l * math.cos(flex), 0.0))
 
 
-@register
 class Balance(Behaviour):
     name = "balance"
     summary = "Stand balanced; bend the knees, pitch the torso or shift the COM, and come back (Wooten ch. 7)."

@@ -1,5 +1,5 @@
 """Mid-level control: behaviours are named state machines with a parameter schema, found by a
-registry (like Rigify's rig types). A behaviour reads the measured state and sets servo targets
+registry (sim_core.skills, like Rigify's rig types). A behaviour reads the measured state and sets servo targets
 and gains; it never applies forces or sets positions."""
 from __future__ import annotations
 
@@ -12,39 +12,15 @@ import numpy as np
 from sim_core.character.spec import CharacterSpec
 from sim_core.control.actor import ActorView
 from sim_core.control.servo import ServoBank
-from sim_core.errors import UnknownNameError
 from sim_core.schema import Schema
 
-_REGISTRY: dict[str, type["Behaviour"]] = {}
+REGISTRY: dict[str, type["Behaviour"]] = {}
 
 
 def register(cls: type["Behaviour"]) -> type["Behaviour"]:
-    _REGISTRY[cls.name] = cls
+    REGISTRY[cls.name] = cls
     return cls
 
-
-def behaviour_class(name: str) -> type["Behaviour"]:
-    _load_builtin()
-    try:
-        return _REGISTRY[name]
-    except KeyError:
-        raise UnknownNameError(f"unknown behaviour {name!r}; available: {', '.join(sorted(_REGISTRY))}") from None
-
-
-def available_behaviours() -> list[str]:
-    _load_builtin()
-    return sorted(_REGISTRY)
-
-
-def _load_builtin() -> None:
-    """Import every module of sim_core.control: behaviours register themselves with @register,
-    so a new behaviour needs no list to be edited."""
-    import importlib
-    import pkgutil
-
-    import sim_core.control as package
-    for info in pkgutil.iter_modules(package.__path__):
-        importlib.import_module(f"{package.__name__}.{info.name}")
 
 
 @dataclass

@@ -17,7 +17,7 @@ simulation - so its outcome is the plan's.
 ``plan_jump`` takes ``progress`` and ``cancelled`` callables (the Blender operator's status bar
 and Esc): a cancel raises ``Cancelled`` within a trial's tick check and nothing is stored.
 ``plan_and_store`` keeps the plan in the user's plan store (control.target_jump.plan_store_dir),
-where later runs find it; ``store_plan`` writes the shipped table (scripts/plan_jumps.py).
+where later runs find it; ``store_plan`` writes the shipped table (python -m sim_core calibrate jump_to_target).
 """
 from __future__ import annotations
 
@@ -30,11 +30,7 @@ import numpy as np
 
 from sim_core.character.spec import load_character
 from sim_core.control.leap import load_mapping
-from sim_core.control.target_jump import (AIR_TIME_TOLERANCE, KNOB_DEFAULTS, LANDING_TOLERANCE, REQUEST_KEYS,
-                                          JumpToTarget,
-                                          check_request, landing_measures, leap_params, obstacle_of,
-                                          plan_store_dir, read_plans, same_request, scene_for, stored_plan,
-                                          stored_plans)
+from sim_core.skills.jump_to_target.behaviour import AIR_TIME_TOLERANCE, KNOB_DEFAULTS, LANDING_TOLERANCE, REQUEST_KEYS, JumpToTarget, check_request, landing_measures, leap_params, obstacle_of, plan_store_dir, read_plans, same_request, scene_for, stored_plan, stored_plans
 from sim_core import tuned
 from sim_core.errors import ParameterError
 from sim_core.simulate import RunRequest, run
@@ -313,7 +309,7 @@ def _stable_seed(target, air_time: float, windup_time: float) -> int:
 def store_plan(character: str, request: dict, plan: dict, script: str, directory: Path | None = None) -> None:
     """Keep a plan (found or not) in the shipped table, sim_core/tuned/tables/jump_targets_<character>.json
     (or in the table of that name in ``directory``), replacing the one for the same request
-    (scripts/plan_jumps.py; a user's plans go to store_user_plan)."""
+    (python -m sim_core calibrate jump_to_target; a user's plans go to store_user_plan)."""
     _store(character, request, plan, script, directory)
 
 

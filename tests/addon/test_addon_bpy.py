@@ -80,7 +80,7 @@ def _check_generated(group, schema):
 
 
 def test_panel_properties_are_generated_from_the_schema(addon):
-    from sim_core.control.behaviour import available_behaviours, behaviour_class
+    from sim_core.skills import available_behaviours, behaviour_class
     from sim_core.request import REQUEST_SCHEMA
     settings_type = bpy.types.Scene.bl_rna.properties["sim_athletics"].fixed_type
     list(_check_generated(settings_type.properties["request"].fixed_type, REQUEST_SCHEMA))
@@ -173,7 +173,7 @@ def test_a_fully_weighted_shin_vertex_moves_rigidly_with_the_shin(baked):
 
 
 def behaviour_defaults(name):
-    from sim_core.control.behaviour import behaviour_class
+    from sim_core.skills import behaviour_class
     return behaviour_class(name).schema.defaults()
 
 
@@ -254,7 +254,7 @@ def test_second_bake_gets_a_unique_name_and_stashes_the_first(empty_scene):
 
 
 def test_panel_draws_the_schema_and_the_last_result(empty_scene):
-    from sim_core.control.behaviour import behaviour_class
+    from sim_core.skills import behaviour_class
     from blender_addon import api
     from blender_addon.panel import SIMATHLETICS_PT_panel
     context = empty_scene
@@ -308,7 +308,7 @@ def test_a_jump_takes_its_target_from_an_empty(empty_scene):
     the rig's frame wherever the rig stands; the baked jump lands on it."""
     from mathutils import Vector
     from sim_core.character.spec import load_character
-    from sim_core.control.target_jump import start_feet_centre
+    from sim_core.skills.jump_to_target.behaviour import start_feet_centre
     context = empty_scene
     assert bpy.ops.sim_athletics.add_character(character="man") == {"FINISHED"}
     arm = context.view_layer.objects.active
@@ -357,7 +357,7 @@ def test_a_somersault_is_baked_with_the_panels_strength(empty_scene):
     """The standing back somersault through the operator, at the strength the panel's Strength
     sets: the baked trunk turns upside down in the air and the rig ends upright; the run's
     strength is the one asked for."""
-    from sim_core.control.somersault import calibrated
+    from sim_core.skills.somersault.behaviour import calibrated
     context = empty_scene
     context.scene.render.fps, context.scene.render.fps_base = FPS, 1.0
     strength = "human" if calibrated("man", "backward", "human") else "unlimited"
@@ -383,7 +383,7 @@ def test_a_back_handspring_is_baked_with_its_hands_on_the_floor(empty_scene):
     (backward: against the way the feet point), as far as the simulation's centre of mass
     travelled (the pelvis follows it to within 15 cm; human strength travels about 1.2 m,
     unlimited more than 2 m)."""
-    from sim_core.control.handspring import calibrated
+    from sim_core.skills.handspring.behaviour import calibrated
     context = empty_scene
     context.scene.render.fps, context.scene.render.fps_base = FPS, 1.0
     strength = "human" if calibrated("man", "human") else "unlimited"

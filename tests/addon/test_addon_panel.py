@@ -10,7 +10,7 @@ import pytest
 bpy = pytest.importorskip("bpy")
 
 from blender_addon import operators, panel, props, rig  # noqa: E402
-from sim_core.control.behaviour import behaviour_class  # noqa: E402
+from sim_core.skills import behaviour_class
 from sim_core.schema import Parameter, Schema  # noqa: E402
 
 from .panel_layout import draw  # noqa: E402

@@ -10,7 +10,7 @@ import pytest
 from blender_addon.core import values, vendor
 from blender_addon.core.jobs import PlanningJob, cancelled_error, stored_jump_plan
 from blender_addon.core.simcore import SIM_CORE
-from sim_core.control.behaviour import behaviour_class
+from sim_core.skills import behaviour_class
 
 UNPLANNED = {"target_x": 1.17, "target_y": 0.0, "plan_trials": 40}     # a jump no table has a plan for
 

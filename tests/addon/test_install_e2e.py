@@ -47,7 +47,7 @@ def clean_env(**extra) -> dict:
 @pytest.fixture(scope="module")
 def zips():
     subprocess.run([sys.executable, "build.py", "addon"], cwd=ROOT, check=True)
-    import build                     # the repository root is on sys.path (tests/conftest.py)
+    import build                     # the repository root is on sys.path (pytest's pythonpath option)
     version = build.addon_version()
     return ROOT / "dist" / f"sim_athletics-{version}.zip", ROOT / "dist" / f"sim_athletics-{version}-extension.zip"
 

@@ -8,7 +8,7 @@ fast touchdowns (high drops and leaps, vertical touchdown speed above FAST_FROM)
 FAST_DELTAS that lands the most drops from rest of HIGH_DROPS (the smallest on a tie).
 Rerun after a change to the model or the controllers:
 
-    python scripts/calibrate_landing.py [--character man woman] [--processes 2]
+    python -m sim_core calibrate land [--character man woman] [--processes 2]
 """
 from __future__ import annotations
 
@@ -17,13 +17,12 @@ import sys
 from multiprocessing import Pool
 from pathlib import Path
 
-ROOT = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(ROOT))
+ROOT = Path.cwd()                   # docs are written under the folder it runs in (the checkout)
 
-from sim_core.ballistics import GRAVITY                           # noqa: E402
-from sim_core import tuned                                       # noqa: E402
-from sim_core.control.leap import LANDING_TABLE  # noqa: E402,F401  (declares the landing table's row type)
-from sim_core.simulate import RunRequest, StartState, run          # noqa: E402
+from sim_core.ballistics import GRAVITY
+from sim_core import tuned
+from sim_core.control.leap import LANDING_TABLE  # noqa: F401  (declares the landing table's row type)
+from sim_core.simulate import RunRequest, StartState, run
 
 SPEEDS = [-1.0, -0.5, 0.0, 0.5, 1.0, 1.5, 2.0, 2.5, 3.0]
 DELTAS = [round(-0.3 + 0.02 * k, 2) for k in range(28)]     # -0.30 ... 0.24 m
@@ -89,15 +88,15 @@ def calibrate(character: str, processes: int) -> dict:
                 deltas.append(round(middle_of_longest_run(ok), 3))
         rows.append({"drop": h, "touchdown_speed": round((2.0 * GRAVITY * h) ** 0.5, 3),
                      "speed": speeds, "delta": deltas})
-    return {"script": "scripts/calibrate_landing.py", "foot_delta": rows,
+    return {"script": "python -m sim_core calibrate land", "foot_delta": rows,
             "landed": landed}
 
 
-def main() -> int:
+def main(argv=None) -> int:
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--character", nargs="+", default=["man", "woman"])
     parser.add_argument("--processes", type=int, default=2)
-    args = parser.parse_args()
+    args = parser.parse_args(argv)
     for character in args.character:
         table = calibrate(character, args.processes)
         table["fast_touchdown"] = fast_touchdown(character, table)

@@ -14,7 +14,7 @@ found by searching over whole simulated jumps - in sim_core/planning/jump.py, wh
 sim_core/simulate.py: this behaviour never runs a simulation. It only looks its plan up
 (``stored_plan``): in the user's plan store (``plan_store_dir``, written by ``python -m sim_core
 plan jump_to_target ...``) over the shipped tables (sim_core/tuned/tables/jump_targets_<character>.json,
-written by scripts/plan_jumps.py), and refuses a request with no plan with the command that
+written by python -m sim_core calibrate jump_to_target), and refuses a request with no plan with the command that
 plans it. A raised target gets a box under it; a target below the start (``target_z`` < 0) puts
 the character on a box with the ground that far below, and ``obstacle_height`` a box to clear
 on the way (Ooi's box -> over a second box -> ground; see ``scene_for``).
@@ -31,8 +31,8 @@ import numpy as np
 from sim_core.analysis import feet_above_surface, surface_under_points
 from sim_core.ballistics import GRAVITY
 from sim_core.control.behaviour import register
-from sim_core.control.leap import (AIRBORNE_HEIGHT, LEAP_SETTINGS, Leap, leap_assess, load_mapping, run_strength,
-                                  vertical_table)
+from sim_core.control.leap import AIRBORNE_HEIGHT, LEAP_SETTINGS, leap_assess, load_mapping, run_strength, vertical_table
+from sim_core.skills.leap.behaviour import Leap
 from sim_core.errors import ParameterError
 from sim_core.schema import Parameter, Schema
 from sim_core.tuned import TableType, load, register as register_table, table_path

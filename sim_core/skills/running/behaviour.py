@@ -30,7 +30,7 @@ while the commanded speed ramps up.
 
 Tuned values are data: the five parameters of Hodgins & Pollard §4.3.1 and the other scheduled
 settings per speed in ``sim_core/tuned/tables/running_<character>.json`` (written by
-``scripts/tune_running.py``), the constants of the laws in ``running_any.json`` (docs/tables.md).
+``python -m sim_core calibrate running``), the constants of the laws in ``running_any.json`` (docs/tables.md).
 """
 from __future__ import annotations
 
@@ -42,9 +42,8 @@ import numpy as np
 from sim_core.ballistics import GRAVITY, time_to_fall_to
 from sim_core.character.model import Placement
 from sim_core.control.behaviour import Behaviour, ControlContext, register
-from sim_core.control.running_leg import RunnerLeg
-from sim_core.control.running_path import (MAX_POINTS, PathFollower, circle_path, figure_eight_path, turn_path,
-                                           validate_path)
+from sim_core.skills.running.leg import RunnerLeg
+from sim_core.skills.running.path import MAX_POINTS, PathFollower, circle_path, figure_eight_path, turn_path, validate_path
 from sim_core.control.servo import hermite_scalar
 from sim_core.schema import Choice, Parameter, Points, Schema
 from sim_core.tuned import TableType, load, register as register_table
@@ -54,7 +53,7 @@ from sim_core.tuned.store import check_rows
 TUNED_NAMES = ("ground_speed_matching", "stance_pitch", "thrust_time", "ankle_extension", "knee_extension")
 TABLE_NAMES = TUNED_NAMES + ("speed_gain", "touchdown_leg", "idle_knee")
 # settings of the stance and swing laws that the table also schedules over the speed (the searches of
-# scripts/tune_running.py set them per row): name: (unit, low, high, help); the range is the search's and a row's
+# python -m sim_core calibrate running set them per row): name: (unit, low, high, help); the range is the search's and a row's
 SCHEDULED = {
     "thrust_damping": ("1", 0.3, 1.0, "share of the knee's and ankle's default damping during the thrust"),
     "unloading_after": ("1", 0.25, 0.7, "share of the expected stance after the thrust start when the leg unloads"),
@@ -70,7 +69,7 @@ SCHEDULED_CONSTANTS = {name: (low, high) for name, (_, low, high, _) in SCHEDULE
 
 # states of the active leg (Hodgins 1995 Fig. 3)
 FLIGHT, LOADING, HEEL, HEEL_TOE, TOE, UNLOADING, START = range(7)
-COURSES = ("straight", "turn", "figure_eight", "circle")     # built-in paths, by the course codes 0-3 (_path_for)
+COURSES = ("straight", "turn", "figure_eight", "circle")     # built-in paths, by the course codes 0-3 (path_for)
 STATE_NAMES = ("flight", "loading", "heel", "heel_toe", "toe", "unloading", "start")
 
 TUNED = -1.0                # the value of a tuned parameter that means "as tuned for the running speed"
@@ -317,7 +316,7 @@ class Running(Behaviour):
         self.follower = PathFollower(self.path, params["lookahead"]) if self.path is not None else None
 
     def _path(self):
-        return _path_for(self.params, self.ctx.actor.placement)
+        return path_for(self.params, self.ctx.actor.placement)
 
     def _schedule(self, speed: float) -> None:
         """Effective values of the tuned parameters left at -1: the table at this speed."""
@@ -331,7 +330,7 @@ class Running(Behaviour):
         commanded speed from the stand, and for a path the lateral deviation from it."""
         from sim_core.analysis import standard_metrics
         from sim_core.gait import gait_metrics, stride_attitude_variation
-        from sim_core.control.running_path import path_deviation
+        from sim_core.skills.running.path import path_deviation
         metrics = standard_metrics(trajectory)
         for key in ("stepped", "max_foot_slide", "com_outside_support_max", "com_inside_support_throughout",
                     "final_com_speed", "max_hand_below_knee"):
@@ -346,7 +345,7 @@ class Running(Behaviour):
         metrics["time_to_90pct_speed"] = float(a["time"][reached[0]]) if len(reached) else None
         metrics["stride_attitude_variation"] = stride_attitude_variation(trajectory, t_from=max(0.0, a["time"][-1] - 10.0))
         placement = trajectory.meta.get("placement")
-        path = _path_for(params, Placement(**placement) if placement else None)
+        path = path_for(params, Placement(**placement) if placement else None)
         if path is not None:
             t0 = _first_time_on_path(a, path)
             sel = a["time"] >= t0
@@ -488,11 +487,11 @@ class Running(Behaviour):
         # rate and in acceleration, so the yaw the stance hip asks for changes smoothly (an abrupt
         # change of facing direction makes the runner fall: Hodgins et al. 1995, Discussion)
         max_rate = c.turn_rate_per_speed * max(speed_now, 1.0)
-        wanted = c.heading_gain * _wrap(goal - self.heading_goal)
+        wanted = c.heading_gain * wrap_angle(goal - self.heading_goal)
         wanted = max(-max_rate, min(max_rate, wanted))
         step = c.turn_accel / self.control_rate
         self.heading_rate += max(-step, min(step, wanted - self.heading_rate))
-        self.heading_goal = _wrap(self.heading_goal + self.heading_rate / self.control_rate)
+        self.heading_goal = wrap_angle(self.heading_goal + self.heading_rate / self.control_rate)
         self.turn_rate += c.roll_filter * (self.heading_rate - self.turn_rate)
         roll_target = -p["lean"] * math.atan(speed_now * self.turn_rate / GRAVITY)
         self.roll_goal += c.roll_filter * (roll_target - self.roll_goal)
@@ -582,7 +581,7 @@ class Running(Behaviour):
             # pelvis, net of the idle hip's torque (so the swinging leg does not tip the body)
             e_pitch = pitch - p["stance_pitch"]
             e_roll = roll - self.roll_goal
-            e_yaw = max(-c.yaw_error_limit, min(c.yaw_error_limit, _wrap(yaw - heading)))
+            e_yaw = max(-c.yaw_error_limit, min(c.yaw_error_limit, wrap_angle(yaw - heading)))
             share = hermite_scalar((t - self.t_touchdown) / c.attitude_onset) if state != UNLOADING else \
                 1.0 - hermite_scalar((t - self.t_state) / c.attitude_onset)
             # restoring torque on the pelvis (world frame): roll about its x axis, pitch about
@@ -726,7 +725,7 @@ class Running(Behaviour):
         py = m[1] * ax_w + m[4] * ay_w + m[7] * az_w
         pz = m[2] * ax_w + m[5] * ay_w + m[8] * az_w
         hy_goal, hx_goal, knee_goal = leg.hip_knee_for(px, py, pz)
-        hz_goal = max(-c.hip_yaw_limit, min(c.hip_yaw_limit, _wrap(heading - yaw)))
+        hz_goal = max(-c.hip_yaw_limit, min(c.hip_yaw_limit, wrap_angle(heading - yaw)))
         # the foot pitched toe-up so that the heel lands first (foot pitch = pelvis pitch + hip + knee + ankle)
         ankle_goal = -c.touchdown_toe_up - pitch - hy_goal - knee_goal
         if p["swing_fold"] > 0:
@@ -779,7 +778,7 @@ class Running(Behaviour):
         targets[ji["mt"]] = 0.0
 
 
-def _path_for(p: dict, placement: Placement | None = None):
+def path_for(p: dict, placement: Placement | None = None):
     """The polyline a run follows: the user's points, a built-in course, or None (facing); in
     the world frame of a runner placed at ``placement`` (None: the origin, facing +X)."""
     if "path" in p:
@@ -820,7 +819,7 @@ def _solve3(a1, a2, a3, bx, by, bz):
     return c1, c2, c3
 
 
-def _wrap(angle: float) -> float:
+def wrap_angle(angle: float) -> float:
     return (angle + math.pi) % (2.0 * math.pi) - math.pi
 
 

@@ -3,7 +3,7 @@ four 10 m platform dives of §8.2.1, the standing somersaults of §8.4-8.5 and t
 §8.3 measured off the simulation, and a plot of the somersault and twist rates in flight (like Figs. 5.3 and 5.7).
 Writes docs/tumbling.md's results block and docs/tumbling_rates.png.
 
-    python3 scripts/tumble_report.py
+    python -m sim_core report dive
 """
 from __future__ import annotations
 
@@ -14,16 +14,15 @@ from pathlib import Path
 import mujoco
 import numpy as np
 
-ROOT = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(ROOT))
+ROOT = Path.cwd()                   # docs are written under the folder it runs in (the checkout)
 
-from sim_core.character.model import compile_model  # noqa: E402
-from sim_core.character.spec import load_character  # noqa: E402
-from sim_core.control.dive import CALIBRATED_DIVES, dive_name  # noqa: E402
-from sim_core.control.somersault import DIRECTIONS  # noqa: E402
-from sim_core.control.tumble import SEED_INERTIA, inertia_about_com, position_inertia  # noqa: E402
-from sim_core.errors import ParameterError  # noqa: E402
-from sim_core.simulate import RunRequest, run  # noqa: E402
+from sim_core.character.model import compile_model
+from sim_core.character.spec import load_character
+from sim_core.skills.dive.behaviour import CALIBRATED_DIVES, dive_name
+from sim_core.skills.somersault.behaviour import DIRECTIONS
+from sim_core.control.tumble import SEED_INERTIA, inertia_about_com, position_inertia
+from sim_core.errors import ParameterError
+from sim_core.simulate import RunRequest, run
 
 DOC = ROOT / "docs" / "tumbling.md"
 PLOT = ROOT / "docs" / "tumbling_rates.png"
@@ -157,18 +156,18 @@ def plot(runs: dict) -> None:
     fig.savefig(PLOT, dpi=110)
 
 
-def main() -> int:
-    lines = ["Measured by `python3 scripts/tumble_report.py`.", "",
+def main(argv=None) -> int:
+    lines = ["Measured by `python -m sim_core report dive`.", "",
              "Moments of inertia about the somersault axis (positions as commanded, body upright):", ""]
     lines += inertia_table()
     dives, runs = dive_rows()
     lines += ["", "10 m platform dives (rotation counted from the standing start to the hands reaching the water); "
               "the first four are Wooten's (§8.2.1), the rest face the water (forward, reverse groups):", ""]
     lines += dives
-    lines += ["", "Standing tuck somersaults (§8.4-8.5; calibrated by `scripts/calibrate_somersaults.py`; a skill "
+    lines += ["", "Standing tuck somersaults (§8.4-8.5; calibrated by `python -m sim_core calibrate somersault`; a skill "
               "succeeds when it turns once, 2π ± 0.35 rad, and ends balanced on the feet):", ""]
     lines += somersault_rows()
-    lines += ["", "Back handspring (§8.3; calibrated by `scripts/calibrate_handspring.py`; it succeeds when it turns once, "
+    lines += ["", "Back handspring (§8.3; calibrated by `python -m sim_core calibrate handspring`; it succeeds when it turns once, "
               "2π ± 0.35 rad, with the hands on the ground between two flights, and ends balanced on the feet):", ""]
     lines += handspring_rows()
     plot(runs)

@@ -1,6 +1,6 @@
 """Rewrite the parameter tables in docs/skills/*.md from the behaviour schemas (the single source):
 
-    python scripts/readme_schemas.py
+    tools/readme_schemas.py
 
 Each table sits between <!-- schema:NAME --> and <!-- /schema:NAME -->; tests/test_docs.py
 fails when one is stale."""
@@ -8,14 +8,13 @@ import re
 import sys
 from pathlib import Path
 
-ROOT = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(ROOT))
+ROOT = Path.cwd()                   # docs are written under the folder it runs in (the checkout)
 
-from sim_core.cli import schema_markdown                                    # noqa: E402
-from sim_core.control.behaviour import available_behaviours, behaviour_class  # noqa: E402
+from sim_core.cli import schema_markdown
+from sim_core.skills import available_behaviours, behaviour_class
 
 
-def main() -> int:
+def main(argv=None) -> int:
     docs = sorted((ROOT / "docs" / "skills").glob("*.md"))
     texts = {path: path.read_text() for path in docs}
     for name in available_behaviours():

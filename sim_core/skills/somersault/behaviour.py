@@ -13,7 +13,7 @@ will still turn once opened, and opens when that is what the somersault has left
 spin back).
 
 The take-off and landing settings per character, direction and strength come from
-``sim_core/tuned/tables/somersaults_<character>.json``, written by ``scripts/calibrate_somersaults.py``
+``sim_core/tuned/tables/somersaults_<character>.json``, written by ``python -m sim_core calibrate somersault``
 (a search over whole simulated somersaults, scored off the simulation; docs/planning.md).
 """
 from __future__ import annotations
@@ -155,7 +155,7 @@ class Somersault(Sequence):
                     if e["direction"] == self.direction_name and e["strength"] == strength]
             raise uncalibrated(name, f"{self.direction_name} somersault", strength,
                                [f"{e['direction']} with {e['strength']} strength" for e in table["somersaults"]],
-                               best[0] if best else None, "scripts/calibrate_somersaults.py")
+                               best[0] if best else None, "python -m sim_core calibrate somersault")
 
     # ------------------------------------------------------------------ the script
     def steps(self) -> list[Step]:

@@ -1,7 +1,7 @@
 """Landing report (Wooten §6.2): highest drop landed balanced, and landings with horizontal COM
 speed, for the man and the woman. Prints a table (paste into the README / docs):
 
-    python scripts/landing_report.py
+    python -m sim_core report land
 """
 from __future__ import annotations
 
@@ -9,10 +9,9 @@ import sys
 from multiprocessing import Pool
 from pathlib import Path
 
-ROOT = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(ROOT))
+ROOT = Path.cwd()                   # docs are written under the folder it runs in (the checkout)
 
-from sim_core.simulate import RunRequest, StartState, run     # noqa: E402
+from sim_core.simulate import RunRequest, StartState, run
 
 DROPS = [round(0.1 * k, 1) for k in range(1, 13)]
 SPEEDS = [-1.0, -0.5, 0.0, 0.5, 1.0, 1.5, 2.0, 3.0]
@@ -26,7 +25,7 @@ def landed(args) -> bool:
     return traj.meta["outcome"] == "success"
 
 
-def main() -> int:
+def main(argv=None) -> int:
     with Pool(2) as pool:
         for character in ("man", "woman"):
             drops = pool.map(landed, [(character, h, 0.0) for h in DROPS])

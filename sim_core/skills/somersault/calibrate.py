@@ -26,9 +26,9 @@ the best run is recorded under "not_found" and the behaviour refuses that somers
 The search goes on until it has found a few somersaults (ROBUST_CANDIDATES) and keeps the one
 whose eight neighbours (lift-off hip angle and landing lean +-0.02 rad) land most often.
 
-    python3 scripts/calibrate_somersaults.py --character man --direction backward --strength unlimited
-    python3 scripts/calibrate_somersaults.py --character woman --direction forward --iterations 20
-    python3 scripts/calibrate_somersaults.py --character man --direction backward --strength unlimited \
+    python -m sim_core calibrate somersault --character man --direction backward --strength unlimited
+    python -m sim_core calibrate somersault --character woman --direction forward --iterations 20
+    python -m sim_core calibrate somersault --character man --direction backward --strength unlimited \
         --budget 4 --no-refine --tables /tmp/t                      # a quick look
 
 ``--budget`` is the number of simulated somersaults each search may run (default ``--iterations``
@@ -46,16 +46,15 @@ import sys
 import time
 from pathlib import Path
 
-ROOT = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(ROOT))      # this checkout's sim_core and rigs, not an installed one
+ROOT = Path.cwd()                   # docs are written under the folder it runs in (the checkout)
 
-from sim_core.control.leap import LANDING_SLIDE_LIMIT  # noqa: E402
-from sim_core.control.somersault import DIRECTIONS, LANDING_SETTINGS, OLD_ROW, SETTINGS, load_table  # noqa: E402
-from sim_core.control.tumble import snap_damping  # noqa: E402
-from sim_core.control.tuned import kept_message, merge_search, names_option, searched_and_fixed  # noqa: E402
-from sim_core import tuned  # noqa: E402
-from sim_core.simulate import RunRequest, run  # noqa: E402
-from sim_core.tuning import Space, SerialExecutor, StopAfterFound, executor_for, minimize  # noqa: E402
+from sim_core.control.leap import LANDING_SLIDE_LIMIT
+from sim_core.skills.somersault.behaviour import DIRECTIONS, LANDING_SETTINGS, OLD_ROW, SETTINGS, load_table
+from sim_core.control.tumble import snap_damping
+from sim_core.control.tuned import kept_message, merge_search, names_option, searched_and_fixed
+from sim_core import tuned
+from sim_core.simulate import RunRequest, run
+from sim_core.tuning import Space, SerialExecutor, StopAfterFound, executor_for, minimize
 
 DURATION = 5.0
 SLIDE_WEIGHT = 20.0         # per m a foot moves after landing beyond the stepping limit (a run on its feet that steps)
@@ -173,7 +172,7 @@ def found(m: dict) -> bool:
     return m["outcome"] == "success" and (m["angular_momentum_drift"] or 0.0) < DRIFT_GOAL
 
 
-def main() -> None:
+def main(argv=None) -> None:
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--character", choices=("man", "woman"), action="append")
     parser.add_argument("--direction", choices=DIRECTIONS, action="append")
@@ -197,7 +196,7 @@ def main() -> None:
     parser.add_argument("--workers", "--processes", dest="workers", type=int, default=None,
                         help="simulate the somersaults in this many processes (default: one per CPU; the same "
                              "result as 1)")
-    args = parser.parse_args()
+    args = parser.parse_args(argv)
     budget = args.budget if args.budget is not None else args.iterations * args.population
     with executor_for(args.workers) as executor:
         calibrate(args, budget, executor)
@@ -226,7 +225,7 @@ def calibrate(args, budget: int, executor) -> None:
                     f"{m['outcome']}, angular momentum drift in flight {100 * (m['angular_momentum_drift'] or 0):.2f} %, "
                     f"rotation {m['rotation']:.2f} rad, flight rotation {m['flight_rotation'] or 0:.2f} rad, take-off "
                     f"angular momentum {m['liftoff_angular_momentum'] or 0:.1f} kg m^2/s")
-                tuned.save("somersaults", character, {"script": "scripts/calibrate_somersaults.py", "duration": DURATION,
+                tuned.save("somersaults", character, {"script": "python -m sim_core calibrate somersault", "duration": DURATION,
                                                       "somersaults": rows, "not_found": missing},
                            strengths=sorted({e["strength"] for e in rows + missing}), directory=args.tables)
                 kept = kept_message(found(m), m["outcome"] == "success", DRIFT_GOAL, bool(old))

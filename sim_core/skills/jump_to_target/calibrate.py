@@ -1,14 +1,14 @@
 """Plan the jumps to a target of TARGETS.md (Ooi 2015) by simulation, store the plans as data, and
 report what the final runs achieve.
 
-    python3 scripts/plan_jumps.py                      # plan every target (a few minutes each), then report
-    python3 scripts/plan_jumps.py --report-only        # rerun the stored plans and rewrite the report
-    python3 scripts/plan_jumps.py --remeasure          # store what each plan measures now, then report
-    python3 scripts/plan_jumps.py --characters man --sideways 1.3 --distances --boxes --no-down --strength unlimited
-    python3 scripts/plan_jumps.py --characters woman --distances 1.0 1.3 --trials 200
-    python3 scripts/plan_jumps.py --characters man --distances 1.6 --boxes --sideways --no-down --restart 1
-    python3 scripts/plan_jumps.py --characters man --distances --boxes --sideways --start '{"liftoff_hip": 1.0}'
-    python3 scripts/plan_jumps.py --characters man --distances 1.3 --boxes --sideways --no-down --workers 2
+    python -m sim_core calibrate jump_to_target                      # plan every target (a few minutes each), then report
+    python -m sim_core calibrate jump_to_target --report-only        # rerun the stored plans and rewrite the report
+    python -m sim_core calibrate jump_to_target --remeasure          # store what each plan measures now, then report
+    python -m sim_core calibrate jump_to_target --characters man --sideways 1.3 --distances --boxes --no-down --strength unlimited
+    python -m sim_core calibrate jump_to_target --characters woman --distances 1.0 1.3 --trials 200
+    python -m sim_core calibrate jump_to_target --characters man --distances 1.6 --boxes --sideways --no-down --restart 1
+    python -m sim_core calibrate jump_to_target --characters man --distances --boxes --sideways --start '{"liftoff_hip": 1.0}'
+    python -m sim_core calibrate jump_to_target --characters man --distances 1.3 --boxes --sideways --no-down --workers 2
 
 The planning is sim_core/planning/jump.py's (the search service, trials in --workers processes,
 default one per CPU; the same plans with any number). A user's own plans go to the plan store of
@@ -28,21 +28,18 @@ import sys
 import time
 from pathlib import Path
 
-ROOT = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(ROOT))
+ROOT = Path.cwd()                   # docs are written under the folder it runs in (the checkout)
 
-import matplotlib  # noqa: E402
+import matplotlib
 
 matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
+import matplotlib.pyplot as plt
 
-from sim_core.control.target_jump import (AIR_TIME_TOLERANCE, BOX_AIR_TIME, BOX_DISTANCE,  # noqa: E402
-                                          GROUND_AIR_TIME, LANDING_TOLERANCE, SIDEWAYS_AIR_TIME, stored_plan,
-                                          stored_plans)
-from sim_core.planning.jump import measure_settings, plan_jump, store_plan, within_tolerance  # noqa: E402
-from sim_core.tuning import executor_for  # noqa: E402
-from sim_core.errors import ParameterError  # noqa: E402
-from sim_core.simulate import RunRequest, run  # noqa: E402
+from sim_core.skills.jump_to_target.behaviour import AIR_TIME_TOLERANCE, BOX_AIR_TIME, BOX_DISTANCE, GROUND_AIR_TIME, LANDING_TOLERANCE, SIDEWAYS_AIR_TIME, stored_plan, stored_plans
+from sim_core.planning.jump import measure_settings, plan_jump, store_plan, within_tolerance
+from sim_core.tuning import executor_for
+from sim_core.errors import ParameterError
+from sim_core.simulate import RunRequest, run
 
 FORWARD = (1.0, 1.3, 1.6, 1.9)            # TARGETS.md: forward targets (m)
 SIDEWAYS = (1.0, 1.3, 1.6)                # to the left and to the right
@@ -103,7 +100,7 @@ def plan(characters, requests, trials: int, restart: int = 0, start_settings: di
                                    start=to_side(start_settings, params["target_y"]))
             print(f"{character} {label}: {'found' if result['found'] else 'NOT found'} after {result['trials']} "
                   f"trials ({time.perf_counter() - start:.0f} s)", flush=True)
-            store_plan(character, request, result, "scripts/plan_jumps.py", tables)
+            store_plan(character, request, result, "python -m sim_core calibrate jump_to_target", tables)
 
 
 def remeasure(characters) -> None:
@@ -128,7 +125,7 @@ def remeasure(characters) -> None:
                      f"found {stored['found']} -> {found}" if changed else "unchanged"), flush=True)
             if changed:
                 kept = {k: v for k, v in stored.items() if k != "request"}
-                store_plan(character, r, {**kept, "measured": measured, "found": found}, "scripts/plan_jumps.py")
+                store_plan(character, r, {**kept, "measured": measured, "found": found}, "python -m sim_core calibrate jump_to_target")
 
 
 def _same(a: float, b: float) -> bool:
@@ -161,7 +158,7 @@ strength, e.g. the panel's Strength, uses these plans):
 The animator gives a landing point for the middle of the feet, an air time and a wind-up time;
 `jump_to_target` (sim_core/control/target_jump.py) estimates the take-off velocity from the path
 (Ooi §3.4.1), refuses what the legs cannot give, and runs the leap's settings planned by simulating
-whole jumps (sim_core/planning/jump.py, above the loop; docs/planning.md). Generated by `python3 scripts/plan_jumps.py --report-only`
+whole jumps (sim_core/planning/jump.py, above the loop; docs/planning.md). Generated by `python -m sim_core calibrate jump_to_target --report-only`
 from the stored plans (sim_core/tuned/tables/jump_targets_<character>.json); every row is a fresh run of the
 behaviour, read off the simulation. Request: air time {GROUND_AIR_TIME} s ahead on the ground, {SIDEWAYS_AIR_TIME} s
 sideways (the legs push sideways only along their lean, at most ~0.6 m/s sideways per m/s up: asked in
@@ -277,10 +274,10 @@ torques to the human limits at any strength (`LANDING_TORQUE_LIMIT`), so strengt
 
 ![the man's 1.0 m jump to the right in 0.6 s, seen from ahead, 1.0-2.9 s](jump_sideways_filmstrip.png)
 
-(`python3 scripts/filmstrip.py jump_to_target --set target_x=0 --set target_y=-1.0 --set air_time=0.6
+(`tools/filmstrip.py jump_to_target --set target_x=0 --set target_y=-1.0 --set air_time=0.6
 --set plan_trials=0 --duration 3.5 --start 1.0 --end 2.9 --view front --out docs/jump_sideways_filmstrip.png`)
 
-(`python3 scripts/filmstrip.py jump_to_target --set target_x=1.3 --set plan_trials=0 --duration 3
+(`tools/filmstrip.py jump_to_target --set target_x=1.3 --set plan_trials=0 --duration 3
 --start 1.0 --end 2.1 --out docs/jump_to_target_filmstrip.png`)
 
 | character | target | landing (x, y) m | error cm | air time s | outcome |
@@ -351,7 +348,7 @@ def _plot(points) -> None:
     fig.savefig(DOCS / "jump_to_target.png", dpi=100)
 
 
-def main() -> None:
+def main(argv=None) -> None:
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--characters", nargs="+", default=["man", "woman"])
     parser.add_argument("--distances", nargs="*", type=float, default=list(FORWARD), help="forward targets (m)")
@@ -380,7 +377,7 @@ def main() -> None:
                         help="store the plans, write no report (to plan characters in parallel processes)")
     parser.add_argument("--tables", type=Path, default=None,
                         help="with --plan-only: store the plans in this directory instead of sim_core/tuned/tables (a quick look)")
-    args = parser.parse_args()
+    args = parser.parse_args(argv)
     if args.tables is not None and not args.plan_only:
         parser.error("--tables goes with --plan-only (the report and --remeasure read the shipped tables)")
     if args.remeasure:

@@ -3,12 +3,12 @@ search, speed by speed, and write them as data - a table over the running speed 
 sim_core/tuned/tables/running_<character>.json, which the running behaviour reads (a tuned parameter left at
 -1 takes the table's value for the current speed).
 
-    python3 scripts/tune_running.py --speeds 3.5 --minutes 10     # simulated annealing at 3.5 m/s
-    python3 scripts/tune_running.py --speeds 2.5 3.5 4.5 5.0 --minutes 40
-    python3 scripts/tune_running.py --method cma                  # CMA-ES
-    python3 scripts/tune_running.py --evaluate                    # only score the current table
-    python3 scripts/tune_running.py --speeds 3.5 --courses --duration 30 --method cma   # ... and on the tight courses
-    python3 scripts/tune_running.py --joint --speeds 4.83 5.0 --gait-at 4.83 --method cma --duration 30   # two rows at once
+    python -m sim_core calibrate running --speeds 3.5 --minutes 10     # simulated annealing at 3.5 m/s
+    python -m sim_core calibrate running --speeds 2.5 3.5 4.5 5.0 --minutes 40
+    python -m sim_core calibrate running --method cma                  # CMA-ES
+    python -m sim_core calibrate running --evaluate                    # only score the current table
+    python -m sim_core calibrate running --speeds 3.5 --courses --duration 30 --method cma   # ... and on the tight courses
+    python -m sim_core calibrate running --joint --speeds 4.83 5.0 --gait-at 4.83 --method cma --duration 30   # two rows at once
 
 The five parameters: ground-speed matching (forward speed), stance pitch (body attitude), and
 thrust timing, ankle extension and knee extension (flight duration).
@@ -76,13 +76,11 @@ from pathlib import Path
 
 import numpy as np
 
-ROOT = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(ROOT))
+ROOT = Path.cwd()                   # docs are written under the folder it runs in (the checkout)
 
-from sim_core.control.running import (SCHEDULED_CONSTANTS, TABLE_NAMES, TUNED_NAMES, Running,  # noqa: E402
-                                      SpeedTable)
-from sim_core import tuned  # noqa: E402
-from sim_core.tuning import Space, deadline_stop, executor_for, minimize  # noqa: E402
+from sim_core.skills.running.behaviour import SCHEDULED_CONSTANTS, TABLE_NAMES, TUNED_NAMES, Running, SpeedTable
+from sim_core import tuned
+from sim_core.tuning import Space, deadline_stop, executor_for, minimize
 
 COLUMNS = TABLE_NAMES + tuple(SCHEDULED_CONSTANTS)     # what a row of the table can hold
 
@@ -434,7 +432,7 @@ def main(argv=None) -> int:
                        "runs": f"{len(args.leans)} per speed from a stand (lean " + ", ".join(f"{x:g}" for x in args.leans) + " s)",
                        "duration_s": args.duration, "strength": args.strength, "per_speed": per_speed},
         "search": {"method": args.method, "minutes": round(elapsed / 60, 2), "seed": args.seed},
-        "command": "python3 scripts/tune_running.py " + " ".join(argv if argv is not None else sys.argv[1:]),
+        "command": "python -m sim_core calibrate running " + " ".join(argv if argv is not None else sys.argv[1:]),
     }, strengths=["unlimited" if args.strength == "unlimited" else "human"],   # a factor scales the human limits
         directory=args.tables)
     print(f"wrote {path}")

@@ -14,7 +14,7 @@ The landing controller positions the legs for touchdown and transitions to the b
 controller." Nothing holds the hands: they touch, carry the body and leave by contact forces alone.
 
 The settings per character and strength come from ``sim_core/tuned/tables/handspring_<character>.json``,
-written by ``scripts/calibrate_handspring.py`` (a search over whole simulated
+written by ``python -m sim_core calibrate handspring`` (a search over whole simulated
 handsprings, scored off the simulation; docs/planning.md).
 """
 from __future__ import annotations
@@ -31,7 +31,7 @@ from sim_core.control.behaviour import Behaviour, ControlContext, register
 from sim_core.control.leap import (ANKLE_GAIN_VERTICAL, AIRBORNE_HEIGHT, VERTICAL_TIMING, Airborne,
                                    Landing, LeapThrust, balance_after_landing, run_strength)
 from sim_core.control.sequencer import Sequence, Step
-from sim_core.control.somersault import FLIGHT_STEP_PARAMETER, ROTATION_TOLERANCE, SQUAT_LOWEST, pelvis_pitch
+from sim_core.skills.somersault.behaviour import FLIGHT_STEP_PARAMETER, ROTATION_TOLERANCE, SQUAT_LOWEST, pelvis_pitch
 from sim_core.control.tumble import FlightRotation, both_sides
 from sim_core.control.tuned import uncalibrated
 from sim_core.schema import Parameter, Schema
@@ -208,7 +208,7 @@ class Handspring(Sequence):
             table = load_table(name)
             best = [e["best"] for e in table.get("not_found", []) if e["strength"] == strength]
             raise uncalibrated(name, "back handspring", strength, [f"{e['strength']} strength" for e in table["handsprings"]],
-                               best[0] if best else None, "scripts/calibrate_handspring.py")
+                               best[0] if best else None, "python -m sim_core calibrate handspring")
 
     # ------------------------------------------------------------------ the script
     def steps(self) -> list[Step]:

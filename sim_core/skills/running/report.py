@@ -1,8 +1,8 @@
 """Measure the running behaviour and write the results into docs/running.md (between the
 <!-- results --> markers) and the figures docs/running_*.png.
 
-    python3 scripts/running_report.py            # everything (several minutes on 2 cores)
-    python3 scripts/running_report.py --quick    # shorter runs, no 100 s runs
+    python -m sim_core report running            # everything (several minutes on 2 cores)
+    python -m sim_core report running --quick    # shorter runs, no 100 s runs
 
 Every number comes from a simulation started from the standing pose (the issue asks for a start
 from a stand), read off the trajectory by sim_core.gait and the behaviour's own assess().
@@ -19,10 +19,9 @@ from pathlib import Path
 
 import numpy as np
 
-ROOT = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(ROOT))
+ROOT = Path.cwd()                   # docs are written under the folder it runs in (the checkout)
 
-from sim_core.gait import HUMAN_FIG12, SIMULATED_1997, STEADY_RUN  # noqa: E402
+from sim_core.gait import HUMAN_FIG12, SIMULATED_1997, STEADY_RUN
 
 DOC = ROOT / "docs" / "running.md"
 SPEEDS = (2.5, 3.0, 3.5, 4.0, 4.5, 5.0)
@@ -35,7 +34,7 @@ def hip_yaw_probe():
     the stance foot turned about the vertical on the ground (touchdown to lift-off) and the
     largest rotation of the stance hip. Returns the lists the samples go to: (time, saturated)
     per tick and (lift-off time, foot pivot rad, largest |hip rotation| rad) per stance."""
-    import sim_core.control.running as running
+    import sim_core.skills.running.behaviour as running
     update = running.Running.update
     if getattr(update, "probe", None) is not None:
         return update.probe
@@ -47,7 +46,7 @@ def hip_yaw_probe():
         d, model = self.ctx.data, self.ctx.model
         key = (self.active, self.t_touchdown)
         if current and (current["key"] != key or self.state not in stance):
-            stances.append((t, abs(running._wrap(current["last"] - current["first"])), current["hz"]))
+            stances.append((t, abs(running.wrap_angle(current["last"] - current["first"])), current["hz"]))
             current.clear()
         if self.state in stance:
             i = self.j[self.active]["hz"]
@@ -131,7 +130,7 @@ def fmt(x, digits=2):
 
 
 def results_markdown(res: dict) -> str:
-    lines = ["Measured by `python3 scripts/running_report.py` (man, human strength, every run from the standing pose).", ""]
+    lines = ["Measured by `python -m sim_core report running` (man, human strength, every run from the standing pose).", ""]
     lines += ["| commanded m/s | outcome | mean speed, last 10 s | error | steps/s | step length m | stance/step % | stance hip yaw at its limit, % of stance (last 5 s) | stance foot's turn on the ground, deg, mean per stance (last 5 s) | stances whose hip rotation reaches its ±45° range, % (last 5 s) |",
               "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"]
     for v in SPEEDS:
@@ -200,13 +199,13 @@ def figures(res: dict) -> None:
     fig.savefig(ROOT / "docs" / "running_phase.png", dpi=110)
     plt.close(fig)
 
-    from sim_core.control.running import _path_for
-    from sim_core.control.behaviour import behaviour_class
+    from sim_core.skills.running.behaviour import path_for
+    from sim_core.skills import behaviour_class
     schema = behaviour_class("running").schema
     keys = [k for k in ("turn 90", "eight r20", "eight r10", "circle 40") if k in res]
     fig, axes = plt.subplots(1, len(keys), figsize=(4.4 * len(keys), 4.2))
     for ax, key in zip(axes, keys):
-        path = _path_for(schema.validate(res[key]["params"]))
+        path = path_for(schema.validate(res[key]["params"]))
         xy = np.array(res[key]["xy"])
         ax.plot(path[:, 0], path[:, 1], "k--", lw=0.8, label="path")
         ax.plot(xy[:, 0], xy[:, 1], lw=1.0, label="COM")

@@ -13,7 +13,7 @@ what remains of the dive's rotation (Wooten opened on timing; ch. 5's summary pr
 
 The leap settings per dive (crouch, lean, lift-off hip angle, arm swing) come from
 the dive table (``sim_core/tuned/tables/dives_<character>.json``, else ``dives_any.json``: design values),
-written by ``scripts/calibrate_dives.py``.
+written by ``python -m sim_core calibrate dive``.
 """
 from __future__ import annotations
 
@@ -53,7 +53,7 @@ FLIGHT_STEP_DIVISION = 8    # the flight's physics step is the model's / this: w
 ENTRY_REACH = 1.15          # share of the standing COM height: hands below the COM in the line
 ROTATION_TOLERANCE = 0.25   # turns: a dive's somersaults and twists count within a quarter turn of its name
 
-CALIBRATED_DIVES = {   # the dives scripts/calibrate_dives.py calibrates, per character, in its table's order:
+CALIBRATED_DIVES = {   # the dives python -m sim_core calibrate dive calibrates, per character, in its table's order:
                       # Wooten §8.2.1's two 10 m dives of the man and of the woman; then two beyond the seed
     "man": [dict(group=0, somersaults=1.5, twists=0.0, position=1),      # inward 1 1/2 pike
             dict(group=1, somersaults=1.5, twists=0.5, position=2),      # back 1 1/2 with 1/2 twist
@@ -164,7 +164,7 @@ class Dive(Sequence):
         if limits["angular_momentum"].get(group_name(p), 0.0) <= 0:
             raise ParameterError(
                 f"the {self.ctx.character.name} has no calibrated {group_name(p)} take-off that clears "
-                f"the platform (scripts/calibrate_dives.py found none)")
+                f"the platform (python -m sim_core calibrate dive found none)")
         if p["twists"] > limits.get("twists", 0.0) + ROTATION_TOLERANCE:
             raise ParameterError(
                 f"{_article(dive_name(p))} cannot be completed by the {self.ctx.character.name}: the arm throw made at most "

@@ -19,15 +19,15 @@ Broad jump: the distance is not smooth in the leap's settings (the thrust starts
 condition), so each distance of BROAD_DISTANCES is planned by simulation as a jump to a point on
 the ground straight ahead (sim_core/control/target_jump.py's planner: crouch, lean, thrust, arm
 swing, lift-off hip angle and the landing's settings) with the air time of the report's targets
-(GROUND_AIR_TIME: the request scripts/plan_jumps.py makes for a forward target, whose stored plan
+(GROUND_AIR_TIME: the request python -m sim_core calibrate jump_to_target makes for a forward target, whose stored plan
 is reused when its best trial ended balanced; new plans are stored there too); the whole leap is
 then run with the plan's settings and kept as a row (measured COM travel - within a few cm of the
 landing point - and the leap's low-level parameters) if it ends balanced.
 The behaviour runs the row nearest the commanded distance. Rerun after any change to the model
 or the controllers:
 
-    python scripts/calibrate_leap.py [--character man woman] [--processes 1] [--only vertical broad]
-    python scripts/calibrate_leap.py --fill [--only vertical]     # more crouches where no row is near
+    python -m sim_core calibrate leap [--character man woman] [--processes 1] [--only vertical broad]
+    python -m sim_core calibrate leap --fill [--only vertical]     # more crouches where no row is near
 """
 from __future__ import annotations
 
@@ -37,16 +37,15 @@ import sys
 from multiprocessing import Pool
 from pathlib import Path
 
-ROOT = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(ROOT))
+ROOT = Path.cwd()                   # docs are written under the folder it runs in (the checkout)
 
-import numpy as np                                              # noqa: E402
+import numpy as np
 
-from sim_core.control.leap import AIRBORNE_HEIGHT, uncovered_gaps   # noqa: E402
-from sim_core.control.target_jump import GROUND_AIR_TIME, leap_params, stored_plan  # noqa: E402
-from sim_core.planning.jump import plan_jump, store_plan        # noqa: E402
-from sim_core import tuned                                       # noqa: E402
-from sim_core.simulate import RunRequest, run                   # noqa: E402
+from sim_core.control.leap import AIRBORNE_HEIGHT, uncovered_gaps
+from sim_core.skills.jump_to_target.behaviour import GROUND_AIR_TIME, leap_params, stored_plan
+from sim_core.planning.jump import plan_jump, store_plan
+from sim_core import tuned
+from sim_core.simulate import RunRequest, run
 
 CROUCH_FRACTIONS = (0.9, 0.875, 0.85, 0.825, 0.8, 0.775, 0.75, 0.725, 0.7, 0.68, 0.66, 0.64, 0.62, 0.59)   # of the standing hip height
 CROUCH_FRACTIONS_FAST = (0.75, 0.7, 0.68, 0.66, 0.64, 0.62, 0.59, 0.56, 0.53, 0.5)
@@ -163,7 +162,7 @@ BROAD_AIM_TOLERANCE = 0.05   # share of the distance the COM travel may miss by 
 
 
 def broad_leap(character: str, aim: float) -> tuple[dict, dict, object]:
-    """The planned jump to ``aim`` m straight ahead (GROUND_AIR_TIME; scripts/plan_jumps.py makes the
+    """The planned jump to ``aim`` m straight ahead (GROUND_AIR_TIME; python -m sim_core calibrate jump_to_target makes the
     same request for its forward targets, and its best trial serves if it ended balanced, whether or
     not it met the air time - a broad jump asks only for the distance), run as a leap."""
     target = (aim, 0.0, 0.0)
@@ -172,7 +171,7 @@ def broad_leap(character: str, aim: float) -> tuple[dict, dict, object]:
     plan = stored_plan(character, request)
     if not (plan and plan["measured"]["outcome"] == "success"):
         plan = plan_jump(character, target, GROUND_AIR_TIME, BROAD_WINDUP, budget=BROAD_TRIALS)
-        store_plan(character, request, plan, "scripts/calibrate_leap.py")
+        store_plan(character, request, plan, "python -m sim_core calibrate leap")
     params = leap_params(plan["settings"], target, BROAD_WINDUP)
     traj = run(RunRequest("leap", character, params=params, duration=BROAD_WINDUP + GROUND_AIR_TIME + 2.5))
     m = traj.meta["metrics"]
@@ -279,7 +278,7 @@ def calibrate(character: str, processes: int, only: list[str], previous: dict, f
     spec = load_character(character)
     stand = standing_hip_height(spec)
     mapping = dict(previous)
-    mapping.update({"character": character, "script": "scripts/calibrate_leap.py"})
+    mapping.update({"character": character, "script": "python -m sim_core calibrate leap"})
     trials = dict(mapping.get("trials_by_table", {}))
     with Pool(processes) as pool:
         for key, (strength, grid) in VERTICAL_TABLES.items():
@@ -301,7 +300,7 @@ def calibrate(character: str, processes: int, only: list[str], previous: dict, f
     return mapping
 
 
-def main() -> int:
+def main(argv=None) -> int:
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--character", nargs="+", default=["man", "woman"])
     parser.add_argument("--processes", type=int, default=1)
@@ -310,7 +309,7 @@ def main() -> int:
     parser.add_argument("--fill", action="store_true",
                         help="keep the vertical tables' trials and add crouches in their gaps (commanded heights no "
                              "row is within the tolerance of), instead of calibrating them afresh")
-    args = parser.parse_args()
+    args = parser.parse_args(argv)
     for character in args.character:
         previous = tuned.load("leap", character) or {}
         only = [k for k in args.only if k in VERTICAL_TABLES] if args.fill else args.only

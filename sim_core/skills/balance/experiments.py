@@ -1,6 +1,6 @@
 """Balance experiments of Wooten §7.3, run by simulation: push recovery in 8 directions, the
-steepest slope held, and standing with a backpack. ``python -m sim_core balance-report`` prints
-the tables (scripts/balance_report.py writes them into docs/)."""
+steepest slope held, and standing with a backpack; ``python -m sim_core report balance`` prints
+the tables and writes them into docs/."""
 from __future__ import annotations
 
 import math

@@ -14,10 +14,10 @@ with every quantity read off the simulated dive. The table also records the larg
 angular momentum seen per dive group without touching the platform, which the dive's
 feasibility check uses to refuse dives the flight cannot hold.
 
-    python3 scripts/calibrate_dives.py                      # both characters, their dives
-    python3 scripts/calibrate_dives.py --character woman --iterations 4 --population 10
-    python3 scripts/calibrate_dives.py --character woman --only 0 --start '{"thrust_damping": 0.3}'
-    python3 scripts/calibrate_dives.py --character man --only 0 --budget 4 --no-refine --tables /tmp/t   # a quick look
+    python -m sim_core calibrate dive                      # both characters, their dives
+    python -m sim_core calibrate dive --character woman --iterations 4 --population 10
+    python -m sim_core calibrate dive --character woman --only 0 --start '{"thrust_damping": 0.3}'
+    python -m sim_core calibrate dive --character man --only 0 --budget 4 --no-refine --tables /tmp/t   # a quick look
 
 ``--budget`` is the number of simulated dives the search may run per dive (default
 ``--iterations`` x ``--population``); the refinement's 25 runs come on top (``--no-refine``
@@ -34,14 +34,13 @@ from pathlib import Path
 
 import numpy as np
 
-ROOT = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(ROOT))      # this checkout's sim_core and rigs, not an installed one
+ROOT = Path.cwd()                   # docs are written under the folder it runs in (the checkout)
 
-from sim_core.control.dive import CALIBRATED_DIVES, FORWARD_ROTATING, GROUPS, Dive  # noqa: E402
-from sim_core import tuned  # noqa: E402
-from sim_core.errors import ParameterError  # noqa: E402
-from sim_core.simulate import RunRequest, run  # noqa: E402
-from sim_core.tuning import Space, executor_for, minimize  # noqa: E402
+from sim_core.skills.dive.behaviour import CALIBRATED_DIVES, FORWARD_ROTATING, GROUPS, Dive
+from sim_core import tuned
+from sim_core.errors import ParameterError
+from sim_core.simulate import RunRequest, run
+from sim_core.tuning import Space, executor_for, minimize
 
 SPACE = {  # name: (low, high) per group
     "crouch_height": {g: (0.4, 0.8) for g in GROUPS},
@@ -180,7 +179,7 @@ def table_limits(dives: list[dict]) -> dict:
             "twists": round(max(twists + [0.0]), 3)}
 
 
-def main() -> None:
+def main(argv=None) -> None:
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--character", choices=sorted(CALIBRATED_DIVES), action="append")
     parser.add_argument("--iterations", type=int, default=5, help="batches of the search (budget: this x --population)")
@@ -201,7 +200,7 @@ def main() -> None:
     parser.add_argument("--start", help="JSON settings to start from, over the table's")
     parser.add_argument("--only", type=int, action="append",
                         help="calibrate only the dive with this index in the character's list; keep the others' table rows")
-    args = parser.parse_args()
+    args = parser.parse_args(argv)
     budget = args.budget if args.budget is not None else args.iterations * args.population
     for character in args.character or sorted(CALIBRATED_DIVES):
         started = time.time()
@@ -220,7 +219,7 @@ def main() -> None:
                      if args.only is None or k in args.only or k >= len(old) else old[k]
                      for k, dive in enumerate(CALIBRATED_DIVES[character])]
         limits = table_limits(dives)
-        path = tuned.save("dives", character, {"script": "scripts/calibrate_dives.py",
+        path = tuned.save("dives", character, {"script": "python -m sim_core calibrate dive",
                                                "search": {**vars(args), "tables": str(args.tables), "budget": budget},
                                                "dives": dives, "limits": limits}, strengths=["human"],
                           directory=args.tables)

@@ -25,8 +25,8 @@ neighbours - push delay and landing lean +-0.01 - succeed too); where none did, 
 recorded under "not_found" and the behaviour refuses that handspring with it. The search starts
 from the table's entry (or from --start) and writes the table only when it found one.
 
-    python3 scripts/calibrate_handspring.py --character man --strength unlimited --workers 2
-    python3 scripts/calibrate_handspring.py --budget 4 --no-refine --tables /tmp/t     # a quick look
+    python -m sim_core calibrate handspring --character man --strength unlimited --workers 2
+    python -m sim_core calibrate handspring --budget 4 --no-refine --tables /tmp/t     # a quick look
 
 ``--budget`` is the number of simulated handsprings the search may run (default ``--iterations`` x
 ``--population``); choosing the most robust of the handsprings found runs up to 32 more
@@ -43,14 +43,13 @@ import sys
 import time
 from pathlib import Path
 
-ROOT = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(ROOT))
+ROOT = Path.cwd()                   # docs are written under the folder it runs in (the checkout)
 
-from sim_core.control.handspring import HAND_SETTINGS, OLD_ROW, SETTINGS, Handspring, load_table  # noqa: E402
-from sim_core.control.tuned import kept_message, merge_search, names_option, searched_and_fixed  # noqa: E402
-from sim_core import tuned  # noqa: E402
-from sim_core.simulate import RunRequest, run  # noqa: E402
-from sim_core.tuning import Space, StopAfterFound, executor_for, minimize  # noqa: E402
+from sim_core.skills.handspring.behaviour import HAND_SETTINGS, OLD_ROW, SETTINGS, Handspring, load_table
+from sim_core.control.tuned import kept_message, merge_search, names_option, searched_and_fixed
+from sim_core import tuned
+from sim_core.simulate import RunRequest, run
+from sim_core.tuning import Space, StopAfterFound, executor_for, minimize
 
 DURATION = 5.0
 DRIFT_GOAL = 0.009           # angular momentum drift in flight the search aims below (the tests' limit is 1 %)
@@ -155,7 +154,7 @@ def most_robust(executor, character, strength, successes) -> tuple[float, dict, 
     return s, settings, m
 
 
-def main() -> None:
+def main(argv=None) -> None:
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--character", choices=("man", "woman"), default="man")
     parser.add_argument("--strength", choices=("human", "unlimited"), default="unlimited")
@@ -177,7 +176,7 @@ def main() -> None:
     parser.add_argument("--verbose", action="store_true", help="print every improvement with its settings")
     parser.add_argument("--start", help="JSON settings to start from, over the table's (or the schema's defaults)")
     names_option(parser, SPACE, HAND_SETTINGS)
-    args = parser.parse_args()
+    args = parser.parse_args(argv)
     started = time.time()
     table = load_table(args.character)
     old = [e for e in table["handsprings"] if e["strength"] == args.strength]
@@ -193,7 +192,7 @@ def main() -> None:
         {"settings": settings, "score": round(s, 4), "measured": m},
         f"{m['outcome']}, rotation {m['rotation']:.2f} rad ({m['rotation_before_fall']:.2f} before falling), "
         f"angular momentum drift in flight {100 * (m['angular_momentum_drift'] or 0):.2f} %")
-    tuned.save("handspring", args.character, {"script": "scripts/calibrate_handspring.py", "duration": DURATION,
+    tuned.save("handspring", args.character, {"script": "python -m sim_core calibrate handspring", "duration": DURATION,
                                               "handsprings": rows, "not_found": missing},
                strengths=sorted({e["strength"] for e in rows + missing}), directory=args.tables)
     kept = kept_message(found(m), m["outcome"] == "success", DRIFT_GOAL, bool(old))

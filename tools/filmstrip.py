@@ -1,7 +1,7 @@
 """Filmstrip of a baked skill, like the thesis's figures: simulate, bake onto the rigged skin,
 render frames at fixed intervals headless (Cycles on the CPU) and lay them side by side.
 
-    python scripts/filmstrip.py leap --set height=0.35 --frames 8 --out docs/leap_filmstrip.png
+    tools/filmstrip.py leap --set height=0.35 --frames 8 --out docs/leap_filmstrip.png
 
 Needs the bpy module (pip install -e ".[test]")."""
 from __future__ import annotations
@@ -12,8 +12,7 @@ import sys
 import tempfile
 from pathlib import Path
 
-ROOT = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(ROOT))
+ROOT = Path.cwd()                   # docs are written under the folder it runs in (the checkout)
 
 
 def main(argv=None) -> int:

@@ -1,0 +1,25 @@
+"""The landing skill (Wooten ch. 6): land from a fall (a start height / velocity), absorb and
+stand up balanced."""
+from __future__ import annotations
+
+from sim_core.control.behaviour import register
+from sim_core.control.leap import Landing, balance_after_landing, leap_assess
+from sim_core.control.sequencer import Sequence, Step
+
+
+@register
+class Land(Sequence):
+    """Composite: land from a fall or a flight, absorb, then balance and stand up."""
+
+    name = "land"
+    summary = "Land from a fall (use a start height / velocity), absorb and stand up balanced (Wooten ch. 6)."
+    default_duration = 3.0
+    schema = Landing.schema
+
+    def steps(self) -> list[Step]:
+        return [Step("land", lambda t: Landing(self.params, self.ctx), lambda b, t: b.finished),
+                Step("balance", lambda t: balance_after_landing(self.ctx, self.previous))]
+
+    @classmethod
+    def assess(cls, trajectory):
+        return leap_assess(trajectory)

@@ -1,0 +1,170 @@
+"""The leap skill (Wooten ch. 4, 8): a vertical leap to a commanded height or a broad jump to a
+commanded distance - balance crouch, proximal-to-distal thrust, landing, balance - with the
+settings looked up in the calibrated leap table."""
+from __future__ import annotations
+
+import math
+import numpy as np
+
+from sim_core.control.balance import Balance, standing_hip_height
+from sim_core.control.behaviour import register
+from sim_core.control.leap import ANKLE_GAIN_BROAD, ANKLE_GAIN_VERTICAL, BROAD_TIMING, BROAD_TRIGGER, LOW_LEVEL_SETTINGS, Landing, LeapThrust, SIDEWAYS_HEADING_KP, VERTICAL_TIMING, balance_after_landing, broad_row, commandable_heights, leap_assess, load_mapping, vertical_key, vertical_row
+from sim_core.control.sequencer import Sequence, Step
+from sim_core.errors import ParameterError
+from sim_core.schema import Parameter
+from sim_core.tuned.settings import SkillSchema
+
+
+@register
+class Leap(Sequence):
+    name = "leap"
+    summary = "Vertical leap or standing broad jump: crouch, extend, fly, land, balance (Wooten ch. 4, 6, 8)."
+    default_duration = 5.0
+    settings_schema = LOW_LEVEL_SETTINGS
+    schema = SkillSchema(
+        Parameter("height", "m", 0.3, 0.05, 1.2,
+                  "commanded rise of the COM above standing (vertical leap): runs the calibrated leap nearest "
+                  "it if that one's measured rise is within 10 % (3 cm below 0.3 m), else interpolates"),
+        Parameter("distance", "m", 0.0, 0.0, 2.5,
+                  "commanded horizontal COM travel (broad jump); 0 = vertical leap"),
+        Parameter("liftoff_hip_angle", "rad", 0.0, -1.0, 1.0,
+                  "hip flexion (-) or extension (+) at lift-off beyond the calibrated neutral (0 = no "
+                  "somersault): sends the ground force past the COM and sets the somersault rate"),
+        Parameter("low_level", "bool", 0.0, 0.0, 1.0,
+                  "1 = run the low-level settings as set (--set crouch_height=...) instead of the calibrated leap"),
+        Parameter("crouch_time", "s", 0.8, 0.3, 3.0, "time to sink into the crouch"),
+        Parameter("foot_delta", "m", 0.0, -0.3, 0.3, "landing: foot servo delta (see the land behaviour)"),
+        Parameter("landing_knee_flexion", "rad", 0.9, 0.0, 1.5,
+                  "landing: knee bend held in flight (less: the feet reach further forward)"),
+        Parameter("landing_place_sideways", "bool", 0.0, 0.0, 1.0,
+                  "landing: 1 = place the leading foot sideways by the COM's sideways speed (a sideways jump)"),
+        Parameter("landing_swing_arms", "bool", 0.0, 0.0, 1.0,
+                  "landing: 1 = swing the arms to landing_arm_flexion in flight (0 = hold them)"),
+        Parameter("landing_arm_flexion", "rad", 0.6, -1.0, 3.0,
+                  "landing: forward raise of the arms they swing to in flight (below 0: down and back, "
+                  "which pitches the trunk back so the feet reach forward)"),
+        Parameter("landing_foot_lead_time", "s", 0.2, 0.0, 0.6,
+                  "landing: the feet land this many seconds of horizontal COM travel ahead of the COM"),
+        settings=LOW_LEVEL_SETTINGS,
+    )
+
+    def run_params(self) -> dict:
+        """The parameters the leap runs with: the user's, or for a broad jump (distance > 0) the
+        low-level leap of the calibrated broad jump nearest the distance (python -m sim_core calibrate leap
+        plans each as a jump to a point straight ahead, by simulation: the broad jump's distance is
+        not smooth in its settings, so it is not interpolated), with the user's lift-off hip angle
+        added to the row's."""
+        p = self.params
+        if p["low_level"] or p["distance"] <= 0:
+            return p
+        row = broad_row(load_mapping(self.ctx.character.name)["broad"], p["distance"])
+        row["liftoff_hip_angle"] = row.get("liftoff_hip_angle", 0.0) + p["liftoff_hip_angle"]
+        return self.schema.validate(row)
+
+    def settings(self, p: dict) -> dict:
+        """The leap's low-level settings for the run parameters ``p``: the user's own (low_level) or
+        the vertical-leap table's for the commanded height (vertical_row), with the user's lift-off
+        hip angle added."""
+        if p["low_level"]:
+            settings = {k: p[k] for k in ("crouch_height", "crouch_pitch", "com_offset", "com_offset_y",
+                                          "liftoff_roll", "arm_swing", "crouch_arms", "thrust_damping",
+                                          "thrust_lean", "spin_hold")}
+            settings["damping"] = settings.pop("thrust_damping")
+            settings["liftoff_hip"] = p["liftoff_hip_angle"]
+            return settings
+        row = vertical_row(load_mapping(self.ctx.character.name)[vertical_key(self.ctx)], p["height"])
+        return {**row, "liftoff_hip": row["liftoff_hip"] + p["liftoff_hip_angle"]}
+
+    def check_feasible(self) -> None:
+        p = self.params
+        if p["low_level"]:
+            return
+        mapping = load_mapping(self.ctx.character.name)
+        if p["distance"] > 0:
+            travels = np.asarray(mapping["broad"]["com_travel"])
+            if not len(travels):
+                raise ParameterError(f"the broad jump of {self.ctx.character.name} is not calibrated (distance "
+                                     f"must be 0): run python -m sim_core calibrate leap --only broad (or use low_level=1)")
+            nearest = travels[int(np.argmin(np.abs(travels - p["distance"])))]
+            if abs(nearest - p["distance"]) > 0.1 * p["distance"]:
+                calibrated = ", ".join(f"{t:.2f}" for t in sorted(travels))
+                raise ParameterError(
+                    f"parameter distance={p['distance']:g} m has no calibrated broad jump within 10 % for "
+                    f"{self.ctx.character.name} (nearest {nearest:.2f} m; calibrated: {calibrated} m; "
+                    f"python -m sim_core calibrate leap)")
+        else:
+            key = vertical_key(self.ctx)
+            strength = "unlimited strength" if key.endswith("unlimited") else "human torque limits"
+            rises = mapping.get(key, {}).get("com_rise", [])
+            if not rises:
+                raise ParameterError(f"the vertical leap of {self.ctx.character.name} with {strength} is not "
+                                     f"calibrated: run python -m sim_core calibrate leap (or use low_level=1)")
+            low, high = commandable_heights(rises)
+            allowed = (f"allowed range is [{low:.2f}, {high:.2f}] m (calibrated leaps rise "
+                       f"{min(rises):.2f} ... {max(rises):.2f} m)")
+            if p["height"] < low:
+                raise ParameterError(f"parameter height={p['height']:g} m is below the calibrated leaps of "
+                                     f"{self.ctx.character.name} with {strength}; {allowed}")
+            if p["height"] > high:
+                raise ParameterError(f"parameter height={p['height']:g} m is infeasible for "
+                                     f"{self.ctx.character.name} with {strength}; {allowed}")
+
+    def is_broad(self, p: dict) -> bool:
+        """The broad jump's thrust (0.15/0.20/0.45 s extension, triggered by the leaning COM) for
+        the run parameters ``p``."""
+        return p["distance"] > 0
+
+    def steps(self) -> list[Step]:
+        p, ctx = self.run_params(), self.ctx
+        cfg = self.settings(p)
+        broad = self.is_broad(p)
+        schema = Balance.schema
+
+        def crouch(t):
+            return Balance(schema.validate(dict(pelvis_height=cfg["crouch_height"], torso_pitch=cfg["crouch_pitch"],
+                                                com_offset_x=cfg["com_offset"],
+                                                com_offset_y=cfg.get("com_offset_y", 0.0),
+                                                arm_flexion=cfg.get("crouch_arms", 0.0), move_start=0.2,
+                                                heading_kp=SIDEWAYS_HEADING_KP if cfg.get("com_offset_y") else 0.0,
+                                                spin_kp=cfg.get("spin_hold", 0.0),
+                                                move_time=cfg["crouch_time"] if "crouch_time" in cfg
+                                                else p["crouch_time"],
+                                                hold_time=0.0, return_to_stand=0)), ctx)
+
+        def crouched(b, t):
+            if broad:
+                # broad jump: thrust once the COM, leaning forward, has left the middle of the
+                # feet by the requested offset (Wooten §4.2: it would fall out of the support next)
+                sideways = cfg.get("com_offset_y", 0.0)
+                if sideways:        # a sideways jump: thrust once the COM has left the feet sideways
+                    return b.posture_reached(t) or b.com_left_of_support() * math.copysign(1.0, sideways) > \
+                        BROAD_TRIGGER * abs(sideways)
+                return b.posture_reached(t) or b.com_ahead_of_support() > BROAD_TRIGGER * cfg["com_offset"]
+            return b.posture_reached(t - 0.15)
+
+        def thrust(t):
+            return LeapThrust({}, ctx, cfg["crouch_height"], BROAD_TIMING if broad else VERTICAL_TIMING,
+                              ANKLE_GAIN_BROAD if broad else ANKLE_GAIN_VERTICAL, cfg["liftoff_hip"],
+                              cfg["arm_swing"], stand_height=standing_hip_height(ctx.character), damping=cfg["damping"],
+                              liftoff_roll=cfg.get("liftoff_roll", 0.0), lean=cfg.get("thrust_lean", 0.0),
+                              spin_hold=cfg.get("spin_hold", 0.0))
+
+        def land(t):
+            # the calibrated leap's own correction of the landing's foot servo delta, plus the user's
+            delta = min(max(p.get("foot_delta", 0.0) + cfg.get("foot_delta", 0.0), -0.3), 0.3)
+            landing = {k: cfg.get(k, p.get("landing_" + k, Landing.schema.defaults()[k]))
+                       for k in ("swing_arms", "arm_flexion", "foot_lead_time", "place_sideways", "knee_flexion")}
+            landing["fast_knee_flexion"] = landing["knee_flexion"]     # calibrated with one knee bend
+            return Landing(Landing.schema.validate(dict(foot_delta=delta, **landing)), ctx)
+
+        def stand(t):
+            return balance_after_landing(ctx, self.previous)
+
+        return [Step("crouch", crouch, crouched),
+                Step("thrust", thrust, lambda b, t: b.lifted_off()),
+                Step("land", land, lambda b, t: b.finished),
+                Step("balance", stand)]
+
+    @classmethod
+    def assess(cls, trajectory):
+        return leap_assess(trajectory)
