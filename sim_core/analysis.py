@@ -6,9 +6,9 @@ from __future__ import annotations
 import numpy as np
 from scipy.spatial import ConvexHull, QhullError
 
-from sim_core.ballistics import GRAVITY
-from sim_core.control.measure import surface_under
-from sim_core.trajectory import Trajectory
+from .ballistics import GRAVITY
+from .control.measure import surface_under
+from .trajectory import Trajectory
 
 FOOT_BODIES = ("FOOTR", "FOOTL", "TOER", "TOEL")
 STILL_SPEED = 0.1            # m/s

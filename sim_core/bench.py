@@ -16,8 +16,8 @@ import time
 
 import mujoco
 
-from sim_core.scene import scene_from_dict
-from sim_core.simulate import RunRequest, run, run_scene
+from .scene import scene_from_dict
+from .simulate import RunRequest, run, run_scene
 
 SCENE_SPACING = 1.2          # m between the runners of the benchmark scene (side by side)
 

@@ -10,8 +10,8 @@ import json
 import math
 import sys
 
-from sim_core.errors import ParameterError, SimAthleticsError
-from sim_core.request import add_request_arguments
+from .errors import ParameterError, SimAthleticsError
+from .request import add_request_arguments
 
 EXIT_USAGE = 2
 
@@ -38,8 +38,8 @@ def _finite(text: str, name: str) -> float:
 def build_request(args):
     """The RunRequest of ``simulate``'s flags: the behaviour's --set values by its schema, the
     rest by the request schema (sim_core.request), as the panel and batch bakes do."""
-    from sim_core.skills import behaviour_class
-    from sim_core.request import build_request as request_from_values, request_values
+    from .skills import behaviour_class
+    from .request import build_request as request_from_values, request_values
 
     params = behaviour_class(args.behaviour).schema.parse_assignments(args.set or [])
     values, pushes = request_values(args)
@@ -47,8 +47,8 @@ def build_request(args):
 
 
 def cmd_list(args) -> int:
-    from sim_core.character.spec import available_characters
-    from sim_core.skills import available_behaviours, behaviour_class
+    from .character.spec import available_characters
+    from .skills import available_behaviours, behaviour_class
     print("behaviours:")
     for name in available_behaviours():
         print(f"  {name:12s} {behaviour_class(name).summary}")
@@ -64,12 +64,12 @@ def schema_markdown(cls) -> str:
 
 
 def cmd_describe(args) -> int:
-    from sim_core.skills import behaviour_class
+    from .skills import behaviour_class
     cls = behaviour_class(args.behaviour)
     if args.markdown:
         print(schema_markdown(cls))
         return 0
-    from sim_core.request import REQUEST_SCHEMA
+    from .request import REQUEST_SCHEMA
     settings = getattr(cls, "settings_schema", None)
     print(json.dumps({"behaviour": cls.name, "summary": cls.summary, "default_duration": cls.default_duration,
                       "parameters": cls.schema.to_json_dict(),
@@ -88,12 +88,12 @@ def _use_store(args) -> None:
     $SIM_ATHLETICS_PLANS would set it."""
     if getattr(args, "store", None):
         import os
-        from sim_core.skills.jump_to_target.behaviour import PLAN_STORE_VARIABLE
+        from .skills.jump_to_target.behaviour import PLAN_STORE_VARIABLE
         os.environ[PLAN_STORE_VARIABLE] = args.store
 
 
 def cmd_simulate(args) -> int:
-    from sim_core.simulate import run
+    from .simulate import run
     if args.out and not args.out.endswith(".npz"):
         raise ParameterError(f"--out {args.out!r} must end in .npz")
     if args.scene:
@@ -105,8 +105,8 @@ def cmd_simulate(args) -> int:
     # planning runs here, above the loop, not in the behaviour; for planning.PLANNED_BEHAVIOURS only (imported
     # only then: the search service's imports take about a second)
     if request.behaviour == "jump_to_target":
-        from sim_core.planning import plan_before_run
-        from sim_core.tuning import executor_for
+        from .planning import plan_before_run
+        from .tuning import executor_for
         with executor_for(args.workers) as executor:
             plan_before_run(request, int(request.params.get("plan_trials", 120)), progress=_plan_progress,
                             executor=executor)
@@ -121,9 +121,9 @@ def cmd_simulate(args) -> int:
 
 
 def cmd_plan(args) -> int:
-    from sim_core.skills import behaviour_class
-    from sim_core.planning import PLANNED_BEHAVIOURS, plan_and_store
-    from sim_core.tuning import executor_for
+    from .skills import behaviour_class
+    from .planning import PLANNED_BEHAVIOURS, plan_and_store
+    from .tuning import executor_for
     if args.behaviour not in PLANNED_BEHAVIOURS:
         raise ParameterError(f"behaviour {args.behaviour!r} needs no plan; planned behaviours: "
                              f"{', '.join(PLANNED_BEHAVIOURS)}")
@@ -135,7 +135,7 @@ def cmd_plan(args) -> int:
     with executor_for(args.workers) as executor:
         plan = plan_and_store(args.character, params, strength, args.budget, progress=_plan_progress,
                               executor=executor)
-    from sim_core.skills.jump_to_target.behaviour import plan_store_dir
+    from .skills.jump_to_target.behaviour import plan_store_dir
     m = plan["measured"]
     print(json.dumps({"found": plan["found"], "trials": plan["trials"], "landing": m["landing"],
                       "air_time": m["air_time"], "outcome": m["outcome"], "store": str(plan_store_dir())}))
@@ -149,8 +149,8 @@ SINGLE_ACTOR_OPTIONS = ("set", "duration", "push", "start_height", "start_veloci
 def simulate_scene(args) -> int:
     """``simulate --scene FILE``: every actor of the scene file in one run; the summary lists each
     actor's outcome. The scene file says everything: the one-character options are refused."""
-    from sim_core.scene import load_scene
-    from sim_core.simulate import run_scene
+    from .scene import load_scene
+    from .simulate import run_scene
     defaults = parser().parse_args(["simulate", "x"])
     for option in SINGLE_ACTOR_OPTIONS:
         if getattr(args, option) != getattr(defaults, option):
@@ -168,8 +168,8 @@ def simulate_scene(args) -> int:
 
 
 def cmd_replay(args) -> int:
-    from sim_core.simulate import largest_difference, replay
-    from sim_core.trajectory import Trajectory
+    from .simulate import largest_difference, replay
+    from .trajectory import Trajectory
     try:
         original = Trajectory.load(args.file)
     except Exception as exc:  # noqa: BLE001 - any unreadable file is the same user error
@@ -180,8 +180,8 @@ def cmd_replay(args) -> int:
 
 
 def cmd_bench(args) -> int:
-    from sim_core.bench import bench
-    from sim_core.skills import behaviour_class
+    from .bench import bench
+    from .skills import behaviour_class
     params = behaviour_class(args.behaviour).schema.parse_assignments(args.set or [])
     result = bench(behaviour=args.behaviour, character=args.character, params=params,
                    duration=_finite(args.duration, "--duration"), repeats=args.repeats)
@@ -190,7 +190,7 @@ def cmd_bench(args) -> int:
     print(f"ratio:                  {result['ratio']:.3f}  (goal >= 0.75)")
     print(json.dumps(result))
     if args.scene_actors:
-        from sim_core.bench import scene_bench
+        from .bench import scene_bench
         scene = scene_bench(count=args.scene_actors, duration=_finite(args.scene_duration, "--scene-duration"),
                             repeats=args.repeats)
         print(f"scene of {args.scene_actors} runners: {scene['scene_loop_sim_s_per_wall_s']:.2f} sim s / wall s, raw "
@@ -202,7 +202,7 @@ def cmd_bench(args) -> int:
 def cmd_skill_part(args) -> int:
     """``calibrate SKILL ...`` / ``report SKILL ...``: the skill room's calibrate.py or report.py,
     with the rest of the command line as its own options (``--help`` lists them)."""
-    from sim_core.skills import skill_module
+    from .skills import skill_module
     module = skill_module(args.skill, args.part)
     sys.argv = [f"python -m sim_core {args.part} {args.skill}", *args.options]     # its usage line names it so
     return module.main(args.options) or 0
@@ -211,19 +211,19 @@ def cmd_skill_part(args) -> int:
 def cmd_character(args) -> int:
     """``character make``: a new body (Fig. 3 preset, between two characters, or to a height and
     mass), validated and compiled before it is written; ``character report``: Fig. 3 comparison."""
-    from sim_core.character.spec import load_character
+    from .character.spec import load_character
     if args.character_command == "report":
-        from sim_core.character.fig3_report import write_report
+        from .character.fig3_report import write_report
         print(write_report(args.out))
         return 0
-    from sim_core.character import make
+    from .character import make
     modes = [args.preset is not None, args.to is not None, args.height is not None or args.mass is not None]
     if sum(modes) != 1:
         raise ParameterError("character make needs exactly one of --preset NAME, --to CHARACTER --fraction F, "
                              "or --height H --mass M")
     base = load_character(args.from_)
     if args.preset is not None:
-        from sim_core.character.fig3 import build_fig3_character
+        from .character.fig3 import build_fig3_character
         data = build_fig3_character(args.preset, base)
     elif args.to is not None:
         if args.fraction is None:

@@ -13,8 +13,8 @@ from dataclasses import dataclass
 import mujoco
 import numpy as np
 
-from sim_core.analysis import true_runs
-from sim_core.trajectory import Trajectory
+from .analysis import true_runs
+from .trajectory import Trajectory
 
 STEADY_RUN = 30.0            # s: a run from a stand whose last 10 s are at steady speed, where TARGETS.md's
                              # speed is measured (the fast speeds accelerate for ~14 s: 90 % of 4.5 m/s at 13.7 s)

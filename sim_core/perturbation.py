@@ -11,8 +11,8 @@ from dataclasses import asdict, dataclass
 
 import numpy as np
 
-from sim_core.edit_log import EditLog, applied_forces
-from sim_core.errors import ParameterError
+from .edit_log import EditLog, applied_forces
+from .errors import ParameterError
 
 DIRECTIONS = {"forward": 0.0, "forward_left": 45.0, "left": 90.0, "back_left": 135.0,
               "back": 180.0, "back_right": 225.0, "right": 270.0, "forward_right": 315.0}

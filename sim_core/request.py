@@ -14,8 +14,8 @@ from __future__ import annotations
 import argparse
 import math
 
-from sim_core.errors import ParameterError
-from sim_core.schema import Choice, Group, Parameter, Schema
+from .errors import ParameterError
+from .schema import Choice, Group, Parameter, Schema
 
 STRENGTHS = ("human", "unlimited")
 SLOPE_AXES = ("x+", "x-", "y+", "y-")
@@ -56,9 +56,9 @@ def build_request(behaviour: str, character, params: dict, values: dict | None =
     """A RunRequest from the behaviour's validated ``params`` and the request ``values``
     (validated here by REQUEST_SCHEMA; missing ones take its defaults); ``pushes`` are further
     :class:`Push` es (the CLI's repeatable --push) after the schema's own push, if it has one."""
-    from sim_core.character.model import World
-    from sim_core.perturbation import Push
-    from sim_core.simulate import RunRequest, StartState
+    from .character.model import World
+    from .perturbation import Push
+    from .simulate import RunRequest, StartState
     v = REQUEST_SCHEMA.validate(values or {})
     slope = math.radians(v["slope"])
     axis = REQUEST_SCHEMA.by_name["slope_axis"].option(v["slope_axis"])
@@ -90,7 +90,7 @@ def add_request_arguments(parser: argparse.ArgumentParser, *, strength_choices: 
 def request_values(args) -> tuple[dict, list]:
     """The flags of :func:`add_request_arguments` as REQUEST_SCHEMA values (text, validated
     when the request is built) and the list of pushes."""
-    from sim_core.perturbation import Push
+    from .perturbation import Push
     velocity = args.start_velocity.split(",")
     if len(velocity) != 3:
         raise ParameterError(f"--start-velocity {args.start_velocity!r} must be three numbers VX,VY,VZ in m/s")

@@ -30,12 +30,12 @@ from pathlib import Path
 import mujoco
 import numpy as np
 
-from sim_core.character.model import TIMESTEP, Placement, add_character, new_spec, place_standing
-from sim_core.character.spec import CharacterSpec, load_character
-from sim_core.control.behaviour import Behaviour
-from sim_core.skills import behaviour_class
-from sim_core.errors import SimAthleticsError
-from sim_core.world import World, add_world
+from .character.model import TIMESTEP, Placement, add_character, new_spec, place_standing
+from .character.spec import CharacterSpec, load_character
+from .control.behaviour import Behaviour
+from .skills import behaviour_class
+from .errors import SimAthleticsError
+from .world import World, add_world
 
 TOP_KEYS = ("duration", "world", "actors")
 WORLD_KEYS = ("slope", "slope_axis", "floor", "boxes")

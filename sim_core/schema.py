@@ -21,7 +21,7 @@ import math
 from dataclasses import asdict, dataclass, field
 from typing import Callable, Union
 
-from sim_core.errors import ParameterError
+from .errors import ParameterError
 
 
 @dataclass(frozen=True)

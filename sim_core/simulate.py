@@ -24,18 +24,18 @@ from typing import Callable
 import mujoco
 import numpy as np
 
-from sim_core.character.model import compile_model, place_standing, set_standing_pose
-from sim_core.character.spec import CharacterSpec, load_character
-from sim_core.control.actor import ActorView
-from sim_core.control.behaviour import Behaviour, ControlContext
-from sim_core.skills import behaviour_class
-from sim_core.control.servo import ServoBank
-from sim_core.edit_log import EDITABLE_FIELDS, EditLog, EditPlayer
-from sim_core.errors import Cancelled, ParameterError, SimAthleticsError
-from sim_core.perturbation import Push, PushSchedule
-from sim_core.scene import Scene, compile_scene, control_tick
-from sim_core.trajectory import PER_ACTOR_FIELDS, Trajectory
-from sim_core.world import World
+from .character.model import compile_model, place_standing, set_standing_pose
+from .character.spec import CharacterSpec, load_character
+from .control.actor import ActorView
+from .control.behaviour import Behaviour, ControlContext
+from .skills import behaviour_class
+from .control.servo import ServoBank
+from .edit_log import EDITABLE_FIELDS, EditLog, EditPlayer
+from .errors import Cancelled, ParameterError, SimAthleticsError
+from .perturbation import Push, PushSchedule
+from .scene import Scene, compile_scene, control_tick
+from .trajectory import PER_ACTOR_FIELDS, Trajectory
+from .world import World
 
 STATE_SPEC = mujoco.mjtState.mjSTATE_INTEGRATION
 THREE = np.arange(3)        # a contact's force components (normal, two tangents) in its efc rows

@@ -31,7 +31,7 @@ from pathlib import Path
 
 import numpy as np
 
-from sim_core.files import write_atomically
+from .files import write_atomically
 
 FORMAT = "sim_athletics.trajectory"
 VERSION = 1

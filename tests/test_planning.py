@@ -29,8 +29,14 @@ def import_graph() -> dict[str, set[str]]:
     graph = {}
     for name, path in modules.items():
         imported = set()
+        package = name.split(".") if path.name == "__init__.py" else name.split(".")[:-1]
         for node in ast.walk(ast.parse(path.read_text())):
-            if isinstance(node, ast.ImportFrom) and node.module and node.module.startswith("sim_core"):
+            if isinstance(node, ast.ImportFrom) and node.level:        # sim_core imports itself relatively
+                base = package[: len(package) - node.level + 1]
+                module = ".".join(base + ([node.module] if node.module else []))
+                imported.add(module)
+                imported.update(f"{module}.{a.name}" for a in node.names)
+            elif isinstance(node, ast.ImportFrom) and node.module and node.module.startswith("sim_core"):
                 imported.add(node.module)
                 imported.update(f"{node.module}.{a.name}" for a in node.names)
             elif isinstance(node, ast.Import):

@@ -11,8 +11,8 @@ per-state controller gain (swing hip: the leg about the hip) names its side expl
 """
 from __future__ import annotations
 
-from sim_core.adapt.scaling import ScaleFactors
-from sim_core.character.mass_properties import StandingBody
+from .scaling import ScaleFactors
+from ..character.mass_properties import StandingBody
 
 
 def moved_bodies(standing: StandingBody, dof: str, side: str = "rule") -> frozenset[str]:

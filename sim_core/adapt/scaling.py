@@ -24,7 +24,7 @@ import math
 import re
 from dataclasses import dataclass
 
-from sim_core.errors import ParameterError
+from ..errors import ParameterError
 
 
 @dataclass(frozen=True)

@@ -6,10 +6,10 @@ from __future__ import annotations
 
 import copy
 
-from sim_core.adapt.moved_bodies import gain_factors
-from sim_core.adapt.scaling import TORQUE, TORSIONAL_DAMPING, TORSIONAL_STIFFNESS, scale
-from sim_core.character.mass_properties import StandingBody
-from sim_core.character.spec import CharacterSpec
+from .moved_bodies import gain_factors
+from .scaling import TORQUE, TORSIONAL_DAMPING, TORSIONAL_STIFFNESS, scale
+from ..character.mass_properties import StandingBody
+from ..character.spec import CharacterSpec
 
 SERVO_UNITS = {"kp": TORSIONAL_STIFFNESS, "kv": TORSIONAL_DAMPING, "torque_limit": TORQUE}
 

@@ -24,7 +24,7 @@ import math
 
 import numpy as np
 
-from sim_core.character.sdfast import SdBody
+from .sdfast import SdBody
 
 # SD/FAST joint name -> our joint name. DOF names are '<joint>_<axis>' (e.g. 'hip_r_y').
 JOINT_NAMES = {

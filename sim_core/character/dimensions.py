@@ -16,8 +16,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from sim_core.character.mass_properties import StandingBody
-from sim_core.character.spec import CharacterSpec
+from .mass_properties import StandingBody
+from .spec import CharacterSpec
 
 SEGMENTS = {
     "head": ("HEAD",),

@@ -32,11 +32,11 @@ import math
 import numpy as np
 from scipy.optimize import least_squares
 
-from sim_core.adapt.servos import mass_scaled_servos
-from sim_core.character.dimensions import SEGMENTS, fig3_measures
-from sim_core.character.reshape import BodyScale, reshaped
-from sim_core.character.spec import CharacterSpec
-from sim_core.errors import UnknownNameError
+from ..adapt.servos import mass_scaled_servos
+from .dimensions import SEGMENTS, fig3_measures
+from .reshape import BodyScale, reshaped
+from .spec import CharacterSpec
+from ..errors import UnknownNameError
 
 # Hodgins & Pollard 1997, Fig. 3 ([B] 71-91), absolute values (SEEDS-WAVE2.md §5.3). kg, m, kg m^2.
 FIG3 = {

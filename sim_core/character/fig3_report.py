@@ -12,10 +12,10 @@ from __future__ import annotations
 import re
 from pathlib import Path
 
-from sim_core.character.dimensions import fig3_measures
-from sim_core.character.fig3 import FIG3, FIG3_FACTORS, KIND, PRESETS, TOLERANCE
-from sim_core.character.spec import load_character
-from sim_core.errors import ParameterError
+from .dimensions import fig3_measures
+from .fig3 import FIG3, FIG3_FACTORS, KIND, PRESETS, TOLERANCE
+from .spec import load_character
+from ..errors import ParameterError
 
 POWER = {"mass": 3, "length": 1, "inertia": 5}
 UNIT = {"mass": "kg", "length": "m", "inertia": "kg m²"}

@@ -15,12 +15,12 @@ import math
 import re
 from pathlib import Path
 
-from sim_core.adapt.servos import mass_scaled_servos
-from sim_core.character.dimensions import fig3_measures
-from sim_core.character.reshape import BodyScale, reshaped, standing_height
-from sim_core.character.spec import RIGS_DIR, CharacterSpec
-from sim_core.files import write_atomically
-from sim_core.errors import ParameterError
+from ..adapt.servos import mass_scaled_servos
+from .dimensions import fig3_measures
+from .reshape import BodyScale, reshaped, standing_height
+from .spec import RIGS_DIR, CharacterSpec
+from ..files import write_atomically
+from ..errors import ParameterError
 
 HEIGHT_RANGE = (0.8, 2.2)          # m: issue 28's range for a character made to a height
 MASS_RANGE = (10.0, 200.0)         # kg
@@ -105,7 +105,7 @@ def scaled_to(base: CharacterSpec, height: float, mass: float, name: str | None 
 def write_character(data: dict, out: str | Path | None = None) -> Path:
     """Validate ``data`` (and that it compiles) and write it whole to ``out`` (default
     rigs/<name>.json, where load_character finds it by name; never over a spec build.py made)."""
-    from sim_core.character.model import compile_model
+    from .model import compile_model
     if not re.fullmatch(r"[a-z][a-z0-9_]*", data["name"]):
         raise ParameterError(f"character name {data['name']!r} must be lower-case letters, digits and '_'")
     spec = CharacterSpec(data, str(out or data["name"]))

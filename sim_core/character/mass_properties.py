@@ -10,8 +10,8 @@ from __future__ import annotations
 import mujoco
 import numpy as np
 
-from sim_core.character.model import compile_model, set_standing_pose
-from sim_core.character.spec import CharacterSpec
+from .model import compile_model, set_standing_pose
+from .spec import CharacterSpec
 
 
 class StandingBody:

@@ -22,9 +22,9 @@ from dataclasses import dataclass
 import mujoco
 import numpy as np
 
-from sim_core.character.spec import CharacterSpec
-from sim_core.world import World, add_world
-from sim_core.world.props import CONTACT_GROUP, FOOT_FRICTION
+from .spec import CharacterSpec
+from ..world import World, add_world
+from ..world.props import CONTACT_GROUP, FOOT_FRICTION
 
 TIMESTEP = 0.001
 ARMATURE = 0.01            # kg m^2 on every hinge: numerical regularisation of light distal joints

@@ -21,7 +21,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from sim_core.character.anthropometry import capsule_radius
+from .anthropometry import capsule_radius
 
 
 @dataclass(frozen=True)

@@ -18,7 +18,7 @@ from pathlib import Path
 
 import numpy as np
 
-from sim_core.errors import RigFileError
+from ..errors import RigFileError
 
 JOINT_DOF_COUNT = {"gimbal": 3, "ujoint": 2, "pin": 1, "ball": 3}
 

@@ -14,10 +14,10 @@ from pathlib import Path
 
 import numpy as np
 
-from sim_core.character import anthropometry as anthro
-from sim_core.character.sdfast import SdBody, parse_sdfast
-from sim_core.errors import RigFileError, UnknownNameError
-from sim_core.resources import rigs_dir
+from . import anthropometry as anthro
+from .sdfast import SdBody, parse_sdfast
+from ..errors import RigFileError, UnknownNameError
+from ..resources import rigs_dir
 
 RIGS_DIR = rigs_dir()
 SPEC_VERSION = 1

@@ -9,7 +9,7 @@ from dataclasses import dataclass
 import mujoco
 import numpy as np
 
-from sim_core.character.model import Placement
+from ..character.model import Placement
 
 
 @dataclass(frozen=True)

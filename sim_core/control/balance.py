@@ -16,12 +16,12 @@ import math
 
 import numpy as np
 
-from sim_core.control.behaviour import Behaviour, ControlContext, register
-from sim_core.control.crouch import CrouchTable, arm_reach
-from sim_core.control.measure import SupportGeometry
-from sim_core.control.servo import hermite_scalar
-from sim_core.errors import ParameterError
-from sim_core.schema import Parameter, Schema
+from .behaviour import Behaviour, ControlContext, register
+from .crouch import CrouchTable, arm_reach
+from .measure import SupportGeometry
+from .servo import hermite_scalar
+from ..errors import ParameterError
+from ..schema import Parameter, Schema
 
 SPINE_Y = ("spine_l3_y", "spine_l1_y", "spine_t7_y", "spine_t4_y")
 SPINE_SHARE = 0.25           # share of the torso pitch taken by the spine (the rest by the hips)

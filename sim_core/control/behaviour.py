@@ -9,10 +9,10 @@ from typing import ClassVar
 import mujoco
 import numpy as np
 
-from sim_core.character.spec import CharacterSpec
-from sim_core.control.actor import ActorView
-from sim_core.control.servo import ServoBank
-from sim_core.schema import Schema
+from ..character.spec import CharacterSpec
+from .actor import ActorView
+from .servo import ServoBank
+from ..schema import Schema
 
 REGISTRY: dict[str, type["Behaviour"]] = {}
 
@@ -87,7 +87,7 @@ class Behaviour:
     def assess(cls, trajectory) -> tuple[str, dict]:
         """Outcome and metrics read off a finished run. The default judges a standing skill
         (TARGETS.md "stable"); behaviours that end in motion override it."""
-        from sim_core.analysis import standing_outcome, standard_metrics
+        from ..analysis import standing_outcome, standard_metrics
         metrics = standard_metrics(trajectory)
         return standing_outcome(metrics), metrics
 

@@ -14,8 +14,8 @@ import math
 import mujoco
 import numpy as np
 
-from sim_core.character.spec import CharacterSpec
-from sim_core.control.actor import ActorView
+from ..character.spec import CharacterSpec
+from .actor import ActorView
 
 DORSIFLEXION_USE = 0.85        # share of the ankle's dorsiflexion range a crouch may use
 ARM_REACH_PER_DEPTH = 3.0      # forward arm raise (rad) per unit of relative crouch depth, as people

@@ -24,18 +24,18 @@ import math
 
 import numpy as np
 
-from sim_core.analysis import feet_above_surface, standard_metrics
-from sim_core.ballistics import GRAVITY
-from sim_core.control.balance import Balance, LegGeometry, standing_hip_height
-from sim_core.control.crouch import CrouchTable
-from sim_core.control.behaviour import Behaviour, ControlContext, register
-from sim_core.control.measure import SupportGeometry, roll_of
-from sim_core.control.sequencer import Sequence, Step
-from sim_core.control.servo import hermite_scalar
-from sim_core.errors import ParameterError
-from sim_core.schema import Parameter, Schema
-from sim_core.tuned import TableType, load, register as register_table
-from sim_core.tuned.settings import SkillSchema
+from ..analysis import feet_above_surface, standard_metrics
+from ..ballistics import GRAVITY
+from .balance import Balance, LegGeometry, standing_hip_height
+from .crouch import CrouchTable
+from .behaviour import Behaviour, ControlContext, register
+from .measure import SupportGeometry, roll_of
+from .sequencer import Sequence, Step
+from .servo import hermite_scalar
+from ..errors import ParameterError
+from ..schema import Parameter, Schema
+from ..tuned import TableType, load, register as register_table
+from ..tuned.settings import SkillSchema
 
 AIRBORNE_HEIGHT = 0.01          # m: every foot site this high above the ground = flight
 TOUCHDOWN_HEIGHT = 0.004        # m: a foot site this low = contact

@@ -9,7 +9,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Callable
 
-from sim_core.control.behaviour import Behaviour
+from .behaviour import Behaviour
 
 
 @dataclass

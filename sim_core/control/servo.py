@@ -7,9 +7,9 @@ from __future__ import annotations
 import mujoco
 import numpy as np
 
-from sim_core.character.spec import CharacterSpec
-from sim_core.control.actor import ActorView
-from sim_core.edit_log import EditLog
+from ..character.spec import CharacterSpec
+from .actor import ActorView
+from ..edit_log import EditLog
 
 
 def hermite_blend(s: np.ndarray) -> np.ndarray:

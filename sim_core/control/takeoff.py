@@ -3,10 +3,10 @@ thrust extends the legs and ends with the lift-off hip angle that sets the somer
 (Wooten §4.3)."""
 from __future__ import annotations
 
-from sim_core.control.balance import Balance, standing_hip_height
-from sim_core.control.behaviour import ControlContext
-from sim_core.control.leap import ANKLE_GAIN_VERTICAL, THRUST_DAMPING, VERTICAL_TIMING, LeapThrust
-from sim_core.control.sequencer import Step
+from .balance import Balance, standing_hip_height
+from .behaviour import ControlContext
+from .leap import ANKLE_GAIN_VERTICAL, THRUST_DAMPING, VERTICAL_TIMING, LeapThrust
+from .sequencer import Step
 
 LEAN_TRIGGER = 1.0         # share of a backward COM offset that triggers the thrust
 SETTINGS = ("crouch_height", "crouch_pitch", "com_offset", "liftoff_hip", "arm_swing")

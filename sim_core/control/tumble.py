@@ -22,10 +22,10 @@ import math
 import mujoco
 import numpy as np
 
-from sim_core.character.model import place_standing
-from sim_core.control.actor import ActorView
-from sim_core.control.behaviour import Behaviour, ControlContext
-from sim_core.schema import Choice, Parameter, Schema
+from ..character.model import place_standing
+from .actor import ActorView
+from .behaviour import Behaviour, ControlContext
+from ..schema import Choice, Parameter, Schema
 
 POSITION_NAMES = ("layout", "pike", "tuck", "line")     # by the schemas' position codes 0-3
 _SPINE_FLEXED = {"spine_l3_y": 0.26, "spine_l1_y": 0.26, "spine_t7_y": 0.21, "spine_t4_y": 0.21, "neck_c2_y": 0.8}

@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import argparse
 
-from sim_core.errors import ParameterError
+from ..errors import ParameterError
 
 
 def names_option(parser, space, example: tuple) -> None:

@@ -3,7 +3,7 @@ sim_core/simulate.py (it calls ``simulate.run`` for its trials); a behaviour nev
 simulation, it only looks up what was planned. See docs/planning.md."""
 from __future__ import annotations
 
-from sim_core.planning.jump import plan_and_store, plan_jump, planned
+from .jump import plan_and_store, plan_jump, planned
 
 PLANNED_BEHAVIOURS = ("jump_to_target",)     # behaviours whose runs need a plan first
 

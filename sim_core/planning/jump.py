@@ -28,13 +28,13 @@ from typing import Callable
 
 import numpy as np
 
-from sim_core.character.spec import load_character
-from sim_core.control.leap import load_mapping
-from sim_core.skills.jump_to_target.behaviour import AIR_TIME_TOLERANCE, KNOB_DEFAULTS, LANDING_TOLERANCE, REQUEST_KEYS, JumpToTarget, check_request, landing_measures, leap_params, obstacle_of, plan_store_dir, read_plans, same_request, scene_for, stored_plan, stored_plans
-from sim_core import tuned
-from sim_core.errors import ParameterError
-from sim_core.simulate import RunRequest, run
-from sim_core.tuning import SerialExecutor, Space, minimize
+from ..character.spec import load_character
+from ..control.leap import load_mapping
+from ..skills.jump_to_target.behaviour import AIR_TIME_TOLERANCE, KNOB_DEFAULTS, LANDING_TOLERANCE, REQUEST_KEYS, JumpToTarget, check_request, landing_measures, leap_params, obstacle_of, plan_store_dir, read_plans, same_request, scene_for, stored_plan, stored_plans
+from .. import tuned
+from ..errors import ParameterError
+from ..simulate import RunRequest, run
+from ..tuning import SerialExecutor, Space, minimize
 
 PLAN_MARGIN = 0.6                   # the search aims inside this share of the tolerances
 

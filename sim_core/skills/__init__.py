@@ -7,8 +7,8 @@ from __future__ import annotations
 import importlib
 import pkgutil
 
-from sim_core.control.behaviour import REGISTRY, Behaviour
-from sim_core.errors import UnknownNameError
+from ..control.behaviour import REGISTRY, Behaviour
+from ..errors import UnknownNameError
 
 
 def _load_rooms() -> None:

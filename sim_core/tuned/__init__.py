@@ -1,6 +1,6 @@
 """Calibrated tables: one store (load/save with a schema version, rows checked against the skill's
 settings schema), see store.py and docs/tables.md."""
-from sim_core.tuned.store import (DIRECTORY, SCHEMA_VERSION, TableError, TableType, delete, exists, keyed, load,
+from .store import (DIRECTORY, SCHEMA_VERSION, TableError, TableType, delete, exists, keyed, load,
                                   register, save, table_path)
 
 __all__ = ["DIRECTORY", "SCHEMA_VERSION", "TableError", "TableType", "delete", "exists", "keyed", "load", "register", "save",

@@ -6,7 +6,7 @@ from __future__ import annotations
 
 import dataclasses
 
-from sim_core.schema import Schema
+from ..schema import Schema
 
 
 class SkillSchema(Schema):

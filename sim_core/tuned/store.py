@@ -20,9 +20,9 @@ from importlib import resources
 from pathlib import Path
 from typing import Callable, Iterable
 
-from sim_core.errors import ParameterError
-from sim_core.files import write_atomically
-from sim_core.schema import Schema
+from ..errors import ParameterError
+from ..files import write_atomically
+from ..schema import Schema
 
 SCHEMA_VERSION = 1              # the layout of a table file; a file of another version is refused
 HEADER = ("schema_version", "skill", "character", "strengths")

@@ -12,7 +12,7 @@ from __future__ import annotations
 import os
 from concurrent.futures import Future, ProcessPoolExecutor
 
-from sim_core.errors import ParameterError
+from ..errors import ParameterError
 
 
 class SerialExecutor:

@@ -26,9 +26,9 @@ import cma          # imported here, not inside a search: importing it takes ~1 
 import numpy as np  # while an import runs
 from scipy.optimize import dual_annealing
 
-from sim_core.errors import Cancelled, ParameterError
-from sim_core.tuning.executor import SerialExecutor
-from sim_core.tuning.space import Space
+from ..errors import Cancelled, ParameterError
+from .executor import SerialExecutor
+from .space import Space
 
 METHODS = ("cma", "anneal")
 CANCEL_POLL = 0.05          # s between looks at ``cancelled`` while an evaluation runs elsewhere

@@ -10,7 +10,7 @@ import math
 
 import numpy as np
 
-from sim_core.errors import ParameterError
+from ..errors import ParameterError
 
 
 class Space:

@@ -9,7 +9,7 @@ from typing import Callable
 
 import mujoco
 
-from sim_core.world.world import World
+from .world import World
 
 FOOT_FRICTION = 1.0        # what a foot meets on the ground, a box or a platform
 CONTACT_GROUP = 1          # contype/conaffinity bit for character and world geoms

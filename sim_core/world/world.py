@@ -7,7 +7,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from sim_core.ballistics import GRAVITY
+from ..ballistics import GRAVITY
 
 SLOPE_RAMP_PER_DEGREE = 0.15   # s per degree: the ground tilts at ~6.7 deg/s
 

@@ -5,9 +5,9 @@ from __future__ import annotations
 
 import math
 
-from sim_core.world import World
-from sim_core.perturbation import DIRECTIONS, Push
-from sim_core.simulate import RunRequest, run
+from ...world import World
+from ...perturbation import DIRECTIONS, Push
+from ...simulate import RunRequest, run
 
 PUSH_START, PUSH_DURATION, RECOVERY = 1.0, 0.25, 3.0
 FORCE_STEP = 5.0

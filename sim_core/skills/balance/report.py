@@ -18,8 +18,8 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import numpy as np
 
-from sim_core.skills.balance.experiments import balance_report
-from sim_core.simulate import RunRequest, run
+from .experiments import balance_report
+from ...simulate import RunRequest, run
 
 KNEE_BEND = {"man": 0.52, "woman": 0.47}
 

@@ -22,17 +22,17 @@ import math
 
 import numpy as np
 
-from sim_core.control.behaviour import register
-from sim_core.control.leap import THRUST_DAMPING
-from sim_core.control.sequencer import Sequence, Step
-from sim_core.ballistics import GRAVITY, time_to_fall_to
-from sim_core.control.takeoff import SETTINGS, takeoff_steps
-from sim_core.control.tumble import (POSITION_NAMES, FlightRotation, Tumble, position_inertia, position_name, position_radius,
+from ...control.behaviour import register
+from ...control.leap import THRUST_DAMPING
+from ...control.sequencer import Sequence, Step
+from ...ballistics import GRAVITY, time_to_fall_to
+from ...control.takeoff import SETTINGS, takeoff_steps
+from ...control.tumble import (POSITION_NAMES, FlightRotation, Tumble, position_inertia, position_name, position_radius,
                                     rotation_to_come)
-from sim_core.errors import ParameterError
-from sim_core.schema import Choice, Parameter, Schema
-from sim_core.tuned import TableType, load, register as register_table
-from sim_core.tuned.settings import SkillSchema
+from ...errors import ParameterError
+from ...schema import Choice, Parameter, Schema
+from ...tuned import TableType, load, register as register_table
+from ...tuned.settings import SkillSchema
 
 GROUPS = ("inward", "back", "forward", "reverse")
 FORWARD_ROTATING = ("inward", "forward")      # the others somersault backward

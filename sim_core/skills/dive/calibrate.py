@@ -36,11 +36,11 @@ import numpy as np
 
 ROOT = Path.cwd()                   # docs are written under the folder it runs in (the checkout)
 
-from sim_core.skills.dive.behaviour import CALIBRATED_DIVES, FORWARD_ROTATING, GROUPS, Dive
-from sim_core import tuned
-from sim_core.errors import ParameterError
-from sim_core.simulate import RunRequest, run
-from sim_core.tuning import Space, executor_for, minimize
+from .behaviour import CALIBRATED_DIVES, FORWARD_ROTATING, GROUPS, Dive
+from ... import tuned
+from ...errors import ParameterError
+from ...simulate import RunRequest, run
+from ...tuning import Space, executor_for, minimize
 
 SPACE = {  # name: (low, high) per group
     "crouch_height": {g: (0.4, 0.8) for g in GROUPS},

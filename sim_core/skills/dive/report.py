@@ -16,13 +16,13 @@ import numpy as np
 
 ROOT = Path.cwd()                   # docs are written under the folder it runs in (the checkout)
 
-from sim_core.character.model import compile_model
-from sim_core.character.spec import load_character
-from sim_core.skills.dive.behaviour import CALIBRATED_DIVES, dive_name
-from sim_core.skills.somersault.behaviour import DIRECTIONS
-from sim_core.control.tumble import SEED_INERTIA, inertia_about_com, position_inertia
-from sim_core.errors import ParameterError
-from sim_core.simulate import RunRequest, run
+from ...character.model import compile_model
+from ...character.spec import load_character
+from .behaviour import CALIBRATED_DIVES, dive_name
+from ..somersault.behaviour import DIRECTIONS
+from ...control.tumble import SEED_INERTIA, inertia_about_com, position_inertia
+from ...errors import ParameterError
+from ...simulate import RunRequest, run
 
 DOC = ROOT / "docs" / "tumbling.md"
 PLOT = ROOT / "docs" / "tumbling_rates.png"

@@ -24,19 +24,19 @@ import math
 
 import numpy as np
 
-from sim_core.ballistics import GRAVITY
-from sim_core.analysis import FOOT_BODIES, feet_above_surface, standard_metrics, surface_under_points, true_runs
-from sim_core.control.balance import Balance, standing_hip_height
-from sim_core.control.behaviour import Behaviour, ControlContext, register
-from sim_core.control.leap import (ANKLE_GAIN_VERTICAL, AIRBORNE_HEIGHT, VERTICAL_TIMING, Airborne,
+from ...ballistics import GRAVITY
+from ...analysis import FOOT_BODIES, feet_above_surface, standard_metrics, surface_under_points, true_runs
+from ...control.balance import Balance, standing_hip_height
+from ...control.behaviour import Behaviour, ControlContext, register
+from ...control.leap import (ANKLE_GAIN_VERTICAL, AIRBORNE_HEIGHT, VERTICAL_TIMING, Airborne,
                                    Landing, LeapThrust, balance_after_landing, run_strength)
-from sim_core.control.sequencer import Sequence, Step
-from sim_core.skills.somersault.behaviour import FLIGHT_STEP_PARAMETER, ROTATION_TOLERANCE, SQUAT_LOWEST, pelvis_pitch
-from sim_core.control.tumble import FlightRotation, both_sides
-from sim_core.control.tuned import uncalibrated
-from sim_core.schema import Parameter, Schema
-from sim_core.tuned import TableError, TableType, keyed, load, register as register_table
-from sim_core.tuned.settings import SkillSchema
+from ...control.sequencer import Sequence, Step
+from ..somersault.behaviour import FLIGHT_STEP_PARAMETER, ROTATION_TOLERANCE, SQUAT_LOWEST, pelvis_pitch
+from ...control.tumble import FlightRotation, both_sides
+from ...control.tuned import uncalibrated
+from ...schema import Parameter, Schema
+from ...tuned import TableError, TableType, keyed, load, register as register_table
+from ...tuned.settings import SkillSchema
 
 HAND_BODIES = ("HANDR", "HANDL")
 SIT_TIMEOUT = 3.0          # s into the run: the thrust starts at the latest then, fallen back or not

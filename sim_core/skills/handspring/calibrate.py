@@ -45,11 +45,11 @@ from pathlib import Path
 
 ROOT = Path.cwd()                   # docs are written under the folder it runs in (the checkout)
 
-from sim_core.skills.handspring.behaviour import HAND_SETTINGS, OLD_ROW, SETTINGS, Handspring, load_table
-from sim_core.control.tuned import kept_message, merge_search, names_option, searched_and_fixed
-from sim_core import tuned
-from sim_core.simulate import RunRequest, run
-from sim_core.tuning import Space, StopAfterFound, executor_for, minimize
+from .behaviour import HAND_SETTINGS, OLD_ROW, SETTINGS, Handspring, load_table
+from ...control.tuned import kept_message, merge_search, names_option, searched_and_fixed
+from ... import tuned
+from ...simulate import RunRequest, run
+from ...tuning import Space, StopAfterFound, executor_for, minimize
 
 DURATION = 5.0
 DRIFT_GOAL = 0.009           # angular momentum drift in flight the search aims below (the tests' limit is 1 %)

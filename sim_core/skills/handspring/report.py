@@ -1,5 +1,5 @@
 """The handspring's report is the tumbling report (dives, standing somersaults and the back handspring
 together, docs/tumbling.md): ``python -m sim_core report handspring`` runs it."""
-from sim_core.skills.dive.report import main
+from ..dive.report import main
 
 __all__ = ["main"]

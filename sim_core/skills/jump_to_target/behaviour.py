@@ -28,14 +28,14 @@ from pathlib import Path
 
 import numpy as np
 
-from sim_core.analysis import feet_above_surface, surface_under_points
-from sim_core.ballistics import GRAVITY
-from sim_core.control.behaviour import register
-from sim_core.control.leap import AIRBORNE_HEIGHT, LEAP_SETTINGS, leap_assess, load_mapping, run_strength, vertical_table
-from sim_core.skills.leap.behaviour import Leap
-from sim_core.errors import ParameterError
-from sim_core.schema import Parameter, Schema
-from sim_core.tuned import TableType, load, register as register_table, table_path
+from ...analysis import feet_above_surface, surface_under_points
+from ...ballistics import GRAVITY
+from ...control.behaviour import register
+from ...control.leap import AIRBORNE_HEIGHT, LEAP_SETTINGS, leap_assess, load_mapping, run_strength, vertical_table
+from ..leap.behaviour import Leap
+from ...errors import ParameterError
+from ...schema import Parameter, Schema
+from ...tuned import TableType, load, register as register_table, table_path
 
 # where the COM is, relative to the middle of the feet, at take-off and at touchdown of a broad
 # jump (measured on the man's calibrated 1.0 m jump; used only for the path estimate)
@@ -102,8 +102,8 @@ def scene_for(character, target, world=None):
     box under a raised target (z > 0); for a target below the start (z < 0) the ground at z and a
     box the character starts on (its top at 0, its front edge just ahead of the toes); and a box
     to jump over, standing on the surface landed on halfway between the toes and the target."""
-    from sim_core.world import World
-    from sim_core.character.spec import load_character
+    from ...world import World
+    from ...character.spec import load_character
     world = world or World()
     obstacle = obstacle_of(target)
     if target[2] == 0 and not obstacle:

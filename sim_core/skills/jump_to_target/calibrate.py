@@ -35,11 +35,11 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 
-from sim_core.skills.jump_to_target.behaviour import AIR_TIME_TOLERANCE, BOX_AIR_TIME, BOX_DISTANCE, GROUND_AIR_TIME, LANDING_TOLERANCE, SIDEWAYS_AIR_TIME, stored_plan, stored_plans
-from sim_core.planning.jump import measure_settings, plan_jump, store_plan, within_tolerance
-from sim_core.tuning import executor_for
-from sim_core.errors import ParameterError
-from sim_core.simulate import RunRequest, run
+from .behaviour import AIR_TIME_TOLERANCE, BOX_AIR_TIME, BOX_DISTANCE, GROUND_AIR_TIME, LANDING_TOLERANCE, SIDEWAYS_AIR_TIME, stored_plan, stored_plans
+from ...planning.jump import measure_settings, plan_jump, store_plan, within_tolerance
+from ...tuning import executor_for
+from ...errors import ParameterError
+from ...simulate import RunRequest, run
 
 FORWARD = (1.0, 1.3, 1.6, 1.9)            # TARGETS.md: forward targets (m)
 SIDEWAYS = (1.0, 1.3, 1.6)                # to the left and to the right

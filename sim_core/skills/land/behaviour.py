@@ -2,9 +2,9 @@
 stand up balanced."""
 from __future__ import annotations
 
-from sim_core.control.behaviour import register
-from sim_core.control.leap import Landing, balance_after_landing, leap_assess
-from sim_core.control.sequencer import Sequence, Step
+from ...control.behaviour import register
+from ...control.leap import Landing, balance_after_landing, leap_assess
+from ...control.sequencer import Sequence, Step
 
 
 @register

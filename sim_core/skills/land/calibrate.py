@@ -19,10 +19,10 @@ from pathlib import Path
 
 ROOT = Path.cwd()                   # docs are written under the folder it runs in (the checkout)
 
-from sim_core.ballistics import GRAVITY
-from sim_core import tuned
-from sim_core.control.leap import LANDING_TABLE  # noqa: F401  (declares the landing table's row type)
-from sim_core.simulate import RunRequest, StartState, run
+from ...ballistics import GRAVITY
+from ... import tuned
+from ...control.leap import LANDING_TABLE  # noqa: F401  (declares the landing table's row type)
+from ...simulate import RunRequest, StartState, run
 
 SPEEDS = [-1.0, -0.5, 0.0, 0.5, 1.0, 1.5, 2.0, 2.5, 3.0]
 DELTAS = [round(-0.3 + 0.02 * k, 2) for k in range(28)]     # -0.30 ... 0.24 m

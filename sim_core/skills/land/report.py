@@ -11,7 +11,7 @@ from pathlib import Path
 
 ROOT = Path.cwd()                   # docs are written under the folder it runs in (the checkout)
 
-from sim_core.simulate import RunRequest, StartState, run
+from ...simulate import RunRequest, StartState, run
 
 DROPS = [round(0.1 * k, 1) for k in range(1, 13)]
 SPEEDS = [-1.0, -0.5, 0.0, 0.5, 1.0, 1.5, 2.0, 3.0]

@@ -6,13 +6,13 @@ from __future__ import annotations
 import math
 import numpy as np
 
-from sim_core.control.balance import Balance, standing_hip_height
-from sim_core.control.behaviour import register
-from sim_core.control.leap import ANKLE_GAIN_BROAD, ANKLE_GAIN_VERTICAL, BROAD_TIMING, BROAD_TRIGGER, LOW_LEVEL_SETTINGS, Landing, LeapThrust, SIDEWAYS_HEADING_KP, VERTICAL_TIMING, balance_after_landing, broad_row, commandable_heights, leap_assess, load_mapping, vertical_key, vertical_row
-from sim_core.control.sequencer import Sequence, Step
-from sim_core.errors import ParameterError
-from sim_core.schema import Parameter
-from sim_core.tuned.settings import SkillSchema
+from ...control.balance import Balance, standing_hip_height
+from ...control.behaviour import register
+from ...control.leap import ANKLE_GAIN_BROAD, ANKLE_GAIN_VERTICAL, BROAD_TIMING, BROAD_TRIGGER, LOW_LEVEL_SETTINGS, Landing, LeapThrust, SIDEWAYS_HEADING_KP, VERTICAL_TIMING, balance_after_landing, broad_row, commandable_heights, leap_assess, load_mapping, vertical_key, vertical_row
+from ...control.sequencer import Sequence, Step
+from ...errors import ParameterError
+from ...schema import Parameter
+from ...tuned.settings import SkillSchema
 
 
 @register

@@ -41,11 +41,11 @@ ROOT = Path.cwd()                   # docs are written under the folder it runs 
 
 import numpy as np
 
-from sim_core.control.leap import AIRBORNE_HEIGHT, uncovered_gaps
-from sim_core.skills.jump_to_target.behaviour import GROUND_AIR_TIME, leap_params, stored_plan
-from sim_core.planning.jump import plan_jump, store_plan
-from sim_core import tuned
-from sim_core.simulate import RunRequest, run
+from ...control.leap import AIRBORNE_HEIGHT, uncovered_gaps
+from ..jump_to_target.behaviour import GROUND_AIR_TIME, leap_params, stored_plan
+from ...planning.jump import plan_jump, store_plan
+from ... import tuned
+from ...simulate import RunRequest, run
 
 CROUCH_FRACTIONS = (0.9, 0.875, 0.85, 0.825, 0.8, 0.775, 0.75, 0.725, 0.7, 0.68, 0.66, 0.64, 0.62, 0.59)   # of the standing hip height
 CROUCH_FRACTIONS_FAST = (0.75, 0.7, 0.68, 0.66, 0.64, 0.62, 0.59, 0.56, 0.53, 0.5)
@@ -273,8 +273,8 @@ def fill_gaps(character: str, key: str, strength: str, results: list[dict], pool
 
 
 def calibrate(character: str, processes: int, only: list[str], previous: dict, fill: bool = False) -> dict:
-    from sim_core.character.spec import load_character
-    from sim_core.control.balance import standing_hip_height
+    from ...character.spec import load_character
+    from ...control.balance import standing_hip_height
     spec = load_character(character)
     stand = standing_hip_height(spec)
     mapping = dict(previous)

@@ -21,9 +21,9 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 
-from sim_core.control.leap import height_grid, load_mapping, rise_tolerance
-from sim_core.errors import ParameterError
-from sim_core.simulate import RunRequest, StartState, run
+from ...control.leap import height_grid, load_mapping, rise_tolerance
+from ...errors import ParameterError
+from ...simulate import RunRequest, StartState, run
 
 CHARACTERS = ("man", "woman")
 STRENGTHS = {"human": "vertical", "unlimited": "vertical_unlimited"}

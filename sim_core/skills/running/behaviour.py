@@ -39,16 +39,16 @@ from types import SimpleNamespace
 
 import numpy as np
 
-from sim_core.ballistics import GRAVITY, time_to_fall_to
-from sim_core.character.model import Placement
-from sim_core.control.behaviour import Behaviour, ControlContext, register
-from sim_core.skills.running.leg import RunnerLeg
-from sim_core.skills.running.path import MAX_POINTS, PathFollower, circle_path, figure_eight_path, turn_path, validate_path
-from sim_core.control.servo import hermite_scalar
-from sim_core.schema import Choice, Parameter, Points, Schema
-from sim_core.tuned import TableType, load, register as register_table
-from sim_core.tuned.settings import SkillSchema, with_defaults
-from sim_core.tuned.store import check_rows
+from ...ballistics import GRAVITY, time_to_fall_to
+from ...character.model import Placement
+from ...control.behaviour import Behaviour, ControlContext, register
+from .leg import RunnerLeg
+from .path import MAX_POINTS, PathFollower, circle_path, figure_eight_path, turn_path, validate_path
+from ...control.servo import hermite_scalar
+from ...schema import Choice, Parameter, Points, Schema
+from ...tuned import TableType, load, register as register_table
+from ...tuned.settings import SkillSchema, with_defaults
+from ...tuned.store import check_rows
 
 TUNED_NAMES = ("ground_speed_matching", "stance_pitch", "thrust_time", "ankle_extension", "knee_extension")
 TABLE_NAMES = TUNED_NAMES + ("speed_gain", "touchdown_leg", "idle_knee")
@@ -328,9 +328,9 @@ class Running(Behaviour):
         """Success = no fall for the whole run (TARGETS.md "Running"); metrics: the standard ones,
         the gait over the last 10 s (sim_core.gait), the time the run took to reach 90 % of the
         commanded speed from the stand, and for a path the lateral deviation from it."""
-        from sim_core.analysis import standard_metrics
-        from sim_core.gait import gait_metrics, stride_attitude_variation
-        from sim_core.skills.running.path import path_deviation
+        from ...analysis import standard_metrics
+        from ...gait import gait_metrics, stride_attitude_variation
+        from .path import path_deviation
         metrics = standard_metrics(trajectory)
         for key in ("stepped", "max_foot_slide", "com_outside_support_max", "com_inside_support_throughout",
                     "final_com_speed", "max_hand_below_knee"):

@@ -78,9 +78,9 @@ import numpy as np
 
 ROOT = Path.cwd()                   # docs are written under the folder it runs in (the checkout)
 
-from sim_core.skills.running.behaviour import SCHEDULED_CONSTANTS, TABLE_NAMES, TUNED_NAMES, Running, SpeedTable
-from sim_core import tuned
-from sim_core.tuning import Space, deadline_stop, executor_for, minimize
+from .behaviour import SCHEDULED_CONSTANTS, TABLE_NAMES, TUNED_NAMES, Running, SpeedTable
+from ... import tuned
+from ...tuning import Space, deadline_stop, executor_for, minimize
 
 COLUMNS = TABLE_NAMES + tuple(SCHEDULED_CONSTANTS)     # what a row of the table can hold
 
@@ -95,8 +95,8 @@ GRAVITY = 9.80665
 
 def scenario(args) -> dict:
     """One run from a stand; the terms of the evaluation function."""
-    from sim_core.gait import HUMAN_FIG12, compare_with_human, head_acceleration, stride_attitude_variation
-    from sim_core.simulate import RunRequest, run
+    from ...gait import HUMAN_FIG12, compare_with_human, head_acceleration, stride_attitude_variation
+    from ...simulate import RunRequest, run
     table, speed, start_lean, duration, character, strength, course = args
     # the candidate table is the run's ``table`` parameter: what is scored is the table that would be written
     traj = run(RunRequest("running", character, params=dict(course or {}, speed=speed, start_lean=start_lean, table=table),
@@ -272,7 +272,7 @@ STEERING_COURSES = (
 
 
 def steering_scenario(args) -> dict:
-    from sim_core.simulate import RunRequest, run
+    from ...simulate import RunRequest, run
     values, course, duration, speed = args
     traj = run(RunRequest("running", "man", params=dict(course, speed=speed, **values), duration=duration))
     m = traj.meta["metrics"]

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import math
 
-from sim_core.character.spec import CharacterSpec
+from ...character.spec import CharacterSpec
 
 
 class RunnerLeg:

@@ -11,7 +11,7 @@ import math
 
 import numpy as np
 
-from sim_core.errors import ParameterError
+from ...errors import ParameterError
 
 MIN_SEGMENT = 0.05          # m: consecutive points closer than this are merged
 MIN_LENGTH = 2.0            # m: a path shorter than this cannot be run along

@@ -21,7 +21,7 @@ import numpy as np
 
 ROOT = Path.cwd()                   # docs are written under the folder it runs in (the checkout)
 
-from sim_core.gait import HUMAN_FIG12, SIMULATED_1997, STEADY_RUN
+from ...gait import HUMAN_FIG12, SIMULATED_1997, STEADY_RUN
 
 DOC = ROOT / "docs" / "running.md"
 SPEEDS = (2.5, 3.0, 3.5, 4.0, 4.5, 5.0)
@@ -34,7 +34,7 @@ def hip_yaw_probe():
     the stance foot turned about the vertical on the ground (touchdown to lift-off) and the
     largest rotation of the stance hip. Returns the lists the samples go to: (time, saturated)
     per tick and (lift-off time, foot pivot rad, largest |hip rotation| rad) per stance."""
-    import sim_core.skills.running.behaviour as running
+    from . import behaviour as running
     update = running.Running.update
     if getattr(update, "probe", None) is not None:
         return update.probe
@@ -66,7 +66,7 @@ def hip_yaw_probe():
 
 def simulate(job):
     """(name, params, duration) -> summary dict (run in a worker process)."""
-    from sim_core.simulate import RunRequest, run
+    from ...simulate import RunRequest, run
     name, params, duration = job
     started = time.perf_counter()
     samples, stances = hip_yaw_probe()
@@ -199,8 +199,8 @@ def figures(res: dict) -> None:
     fig.savefig(ROOT / "docs" / "running_phase.png", dpi=110)
     plt.close(fig)
 
-    from sim_core.skills.running.behaviour import path_for
-    from sim_core.skills import behaviour_class
+    from .behaviour import path_for
+    from .. import behaviour_class
     schema = behaviour_class("running").schema
     keys = [k for k in ("turn 90", "eight r20", "eight r10", "circle 40") if k in res]
     fig, axes = plt.subplots(1, len(keys), figsize=(4.4 * len(keys), 4.2))

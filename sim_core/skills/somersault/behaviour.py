@@ -22,18 +22,18 @@ import math
 
 import numpy as np
 
-from sim_core.ballistics import time_to_fall_to
-from sim_core.control.balance import Balance
-from sim_core.control.behaviour import register
-from sim_core.control.leap import AIRBORNE_HEIGHT, Landing, balance_after_landing, leap_assess, run_strength
-from sim_core.control.sequencer import Sequence, Step
-from sim_core.control.takeoff import takeoff_steps
-from sim_core.control.tumble import FlightRotation, Tumble, position_inertia, rotation_to_come
-from sim_core.control.tuned import uncalibrated
-from sim_core.analysis import feet_above_surface
-from sim_core.schema import Choice, Parameter, Schema
-from sim_core.tuned import TableType, keyed, load, register as register_table
-from sim_core.tuned.settings import SkillSchema
+from ...ballistics import time_to_fall_to
+from ...control.balance import Balance
+from ...control.behaviour import register
+from ...control.leap import AIRBORNE_HEIGHT, Landing, balance_after_landing, leap_assess, run_strength
+from ...control.sequencer import Sequence, Step
+from ...control.takeoff import takeoff_steps
+from ...control.tumble import FlightRotation, Tumble, position_inertia, rotation_to_come
+from ...control.tuned import uncalibrated
+from ...analysis import feet_above_surface
+from ...schema import Choice, Parameter, Schema
+from ...tuned import TableType, keyed, load, register as register_table
+from ...tuned.settings import SkillSchema
 
 DIRECTIONS = ("backward", "forward")
 TUCK = 2                    # the tumble's position code

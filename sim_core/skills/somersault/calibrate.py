@@ -48,13 +48,13 @@ from pathlib import Path
 
 ROOT = Path.cwd()                   # docs are written under the folder it runs in (the checkout)
 
-from sim_core.control.leap import LANDING_SLIDE_LIMIT
-from sim_core.skills.somersault.behaviour import DIRECTIONS, LANDING_SETTINGS, OLD_ROW, SETTINGS, load_table
-from sim_core.control.tumble import snap_damping
-from sim_core.control.tuned import kept_message, merge_search, names_option, searched_and_fixed
-from sim_core import tuned
-from sim_core.simulate import RunRequest, run
-from sim_core.tuning import Space, SerialExecutor, StopAfterFound, executor_for, minimize
+from ...control.leap import LANDING_SLIDE_LIMIT
+from .behaviour import DIRECTIONS, LANDING_SETTINGS, OLD_ROW, SETTINGS, load_table
+from ...control.tumble import snap_damping
+from ...control.tuned import kept_message, merge_search, names_option, searched_and_fixed
+from ... import tuned
+from ...simulate import RunRequest, run
+from ...tuning import Space, SerialExecutor, StopAfterFound, executor_for, minimize
 
 DURATION = 5.0
 SLIDE_WEIGHT = 20.0         # per m a foot moves after landing beyond the stepping limit (a run on its feet that steps)
