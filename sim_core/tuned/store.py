@@ -87,6 +87,24 @@ def exists(skill: str, character: str, directory: Path | None = None) -> bool:
     return table_path(skill, character, directory).exists()
 
 
+def characters_of(skill: str, directory: Path | None = None) -> list[str]:
+    """The characters that have a ``skill`` table of their own (not the ``any`` design table)."""
+    folder = DIRECTORY if directory is None else Path(directory)
+    names = (p.stem[len(skill) + 1:] for p in folder.glob(f"{skill}_*.json"))
+    return sorted(n for n in names if n != "any" and not n.endswith(".tmp"))
+
+
+def require_calibrated(table: str, character: str, skill: str) -> None:
+    """Refuse a run of ``skill`` for a character with no ``table`` of its own: the design (``any``)
+    table or another character's is not a calibration, and a skill run on one falls (measured: the
+    woman on the man's running table falls 0.9 s into the run; the child drops from 0.5 m and
+    falls on the landing's design values)."""
+    if not exists(table, character):
+        raise TableError(f"{skill} is not calibrated for the {character} (calibrated for: "
+                         f"{', '.join(characters_of(table)) or 'nobody'}): another body's settings make it "
+                         f"fall; `python -m sim_core calibrate {skill}` writes a character's table")
+
+
 def load(skill: str, character: str, directory: Path | None = None) -> dict | None:
     """The checked body of ``<skill>_<character>.json`` (every section but the header), or None
     when there is no such table."""

@@ -31,7 +31,7 @@ from ...control.tumble import (POSITION_NAMES, FlightRotation, Tumble, position_
                                     rotation_to_come)
 from ...errors import ParameterError
 from ...schema import Choice, Parameter, Schema
-from ...tuned import TableType, load, register as register_table
+from ...tuned import TableType, load, register as register_table, require_calibrated
 from ...tuned.settings import SkillSchema
 
 GROUPS = ("inward", "back", "forward", "reverse")
@@ -156,6 +156,8 @@ class Dive(Sequence):
 
     def check_feasible(self) -> None:
         p = self.params
+        if not p["low_level"]:
+            require_calibrated("dives", self.ctx.character.name, self.name)
         if abs(p["somersaults"] * 2 - round(p["somersaults"] * 2)) > 1e-9:
             raise ParameterError(f"parameter somersaults={p['somersaults']:g} must be a whole or half number")
         if abs(p["twists"] * 2 - round(p["twists"] * 2)) > 1e-9:

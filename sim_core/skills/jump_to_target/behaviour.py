@@ -35,7 +35,7 @@ from ...control.leap import AIRBORNE_HEIGHT, LEAP_SETTINGS, leap_assess, load_ma
 from ..leap.behaviour import Leap
 from ...errors import ParameterError
 from ...schema import Parameter, Schema
-from ...tuned import TableType, load, register as register_table, table_path
+from ...tuned import TableType, load, register as register_table, require_calibrated, table_path
 
 # where the COM is, relative to the middle of the feet, at take-off and at touchdown of a broad
 # jump (measured on the man's calibrated 1.0 m jump; used only for the path estimate)
@@ -210,6 +210,7 @@ def check_request(character, p: dict, strength: str) -> None:
     """The refusals of a jump that need no simulation (the box to clear, the direction, the
     take-off speed against the character's strongest), for the behaviour and for the planner
     before it searches; ``strength``: "human" or "unlimited" (leap.run_strength)."""
+    require_calibrated("leap", character.name, "leap")        # a jump to a target takes off as the leap does
     target = np.array([p["target_x"], p["target_y"], p["target_z"], p["obstacle_height"]])
     if p["obstacle_height"] > 0.0:
         gap = p["target_x"] - (toe_tip(character) - start_feet_centre(character)[0])

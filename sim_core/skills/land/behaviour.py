@@ -5,6 +5,7 @@ from __future__ import annotations
 from ...control.behaviour import register
 from ...control.leap import Landing, balance_after_landing, leap_assess
 from ...control.sequencer import Sequence, Step
+from ...tuned import require_calibrated
 
 
 @register
@@ -15,6 +16,9 @@ class Land(Sequence):
     summary = "Land from a fall (use a start height / velocity), absorb and stand up balanced (Wooten ch. 6)."
     default_duration = 3.0
     schema = Landing.schema
+
+    def check_feasible(self) -> None:
+        require_calibrated("landing", self.ctx.character.name, self.name)
 
     def steps(self) -> list[Step]:
         return [Step("land", lambda t: Landing(self.params, self.ctx), lambda b, t: b.finished),

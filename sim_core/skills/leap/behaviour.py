@@ -12,6 +12,7 @@ from ...control.leap import ANKLE_GAIN_BROAD, ANKLE_GAIN_VERTICAL, BROAD_TIMING,
 from ...control.sequencer import Sequence, Step
 from ...errors import ParameterError
 from ...schema import Parameter
+from ...tuned import require_calibrated
 from ...tuned.settings import SkillSchema
 
 
@@ -79,6 +80,7 @@ class Leap(Sequence):
         p = self.params
         if p["low_level"]:
             return
+        require_calibrated("leap", self.ctx.character.name, self.name)
         mapping = load_mapping(self.ctx.character.name)
         if p["distance"] > 0:
             travels = np.asarray(mapping["broad"]["com_travel"])

@@ -46,7 +46,7 @@ from .leg import RunnerLeg
 from .path import MAX_POINTS, PathFollower, circle_path, figure_eight_path, turn_path, validate_path
 from ...control.servo import hermite_scalar
 from ...schema import Choice, Parameter, Points, Schema
-from ...tuned import TableType, load, register as register_table
+from ...tuned import TableType, load, register as register_table, require_calibrated
 from ...tuned.settings import SkillSchema, with_defaults
 from ...tuned.store import check_rows
 
@@ -273,6 +273,12 @@ class Running(Behaviour):
         Parameter("start_lean", "s", 0.35, 0.1, 1.0, "time the standing body leans forward before the first push-off"),
         settings=RUNNING_SETTINGS,
     )
+
+    def check_feasible(self) -> None:
+        """A runner needs its own running table; a ``table`` parameter (a tuner's or a scaled
+        candidate, checked like a stored one) is its own."""
+        if "table" not in self.params:
+            require_calibrated("running", self.ctx.character.name, self.name)
 
     # --------------------------------------------------------------------- setup
     def __init__(self, params, ctx: ControlContext):

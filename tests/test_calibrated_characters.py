@@ -1,0 +1,32 @@
+"""A skill runs only for a character it is calibrated for (its own table); every other character
+is refused before anything is simulated, with one line naming who is calibrated - another body's
+settings make it fall (the woman on the man's running table falls 0.9 s into the run)."""
+import pytest
+
+from sim_core.character.spec import available_characters
+from sim_core.errors import ParameterError
+from sim_core.simulate import RunRequest, run
+from sim_core.tuned import characters_of, exists
+
+TABLE_OF = {"running": "running", "leap": "leap", "land": "landing", "dive": "dives", "jump_to_target": "leap",
+            "somersault": "somersaults", "handspring": "handspring"}
+
+
+@pytest.mark.parametrize("skill", sorted(TABLE_OF))
+def test_a_skill_is_refused_for_every_character_it_is_not_calibrated_for(skill):
+    table = TABLE_OF[skill]
+    refused = [c for c in available_characters() if not exists(table, c)]
+    assert refused, "every character has a table: nothing to refuse"
+    for character in refused:
+        with pytest.raises(ParameterError) as error:
+            run(RunRequest(skill, character, duration=0.05))
+        message = str(error.value)
+        assert "\n" not in message and character in message
+        assert "not calibrated" in message or "no calibrated" in message, message
+        for calibrated in characters_of(table):
+            assert calibrated in message or table in ("somersaults", "handspring"), message
+
+
+def test_the_characters_a_table_is_for_are_its_own_files():
+    assert characters_of("running") == ["man"]
+    assert characters_of("leap") == ["man", "woman"]
