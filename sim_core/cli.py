@@ -240,9 +240,22 @@ def cmd_character(args) -> int:
     if args.out is None and args.preset is None:
         raise ParameterError("--out F.json is required (only --preset writes rigs/<name>.json by default)")
     path = make.write_character(data, args.out)
+    skin = None if args.no_skin else _write_skin(load_character(str(path)), path.with_suffix(".glb"))
     print(json.dumps({"character": data["name"], "out": str(path), "total_mass": data["total_mass"],
-                      "height": data["height"]}))
+                      "height": data["height"], "skin": skin}))
     return 0
+
+
+def _write_skin(spec, out) -> str:
+    """The made character's rigged skin next to its spec, by the builder build.py uses
+    (tools.rigbuild, a checkout's build-time code with the rig extras); where it or its
+    extras are missing (the add-on), or the skin fails the builder's check, a note says so."""
+    try:
+        from tools.rigbuild import write_checked_rig
+    except ImportError as exc:
+        return f"not built: {exc.name} is missing (pip install -e '.[rigs]' in a checkout)"
+    report, failure = write_checked_rig(spec, out)
+    return f"not built: {failure}" if failure else str(out)
 
 
 def parser() -> argparse.ArgumentParser:
@@ -303,6 +316,7 @@ def parser() -> argparse.ArgumentParser:
     mk.add_argument("--height", help="target height in m (top of the head), with --mass")
     mk.add_argument("--mass", help="target total mass in kg, with --height")
     mk.add_argument("--name", help="name of the new character (default: made from the inputs)")
+    mk.add_argument("--no-skin", action="store_true", help="write only the spec, not its rigged skin (.glb)")
     mk.add_argument("--out", help="spec file to write (.json); a --preset defaults to rigs/<name>.json")
     mk.set_defaults(func=cmd_character)
     rp = ch_sub.add_parser("report", help="compare the built characters with Fig. 3 (Markdown)")
