@@ -216,6 +216,12 @@ def cmd_character(args) -> int:
         from .character.fig3_report import write_report
         print(write_report(args.out))
         return 0
+    if args.character_command == "scaling-report":
+        from .adapt.experiment import write_report as write_scaling_report
+        print(write_scaling_report(args.out, skills=args.skill or ("balance", "running"), cap=_finite(args.cap, "--cap"),
+                                   progress=lambda t: print(f"{t.skill} {100 * t.fraction:g} % {t.controller}: "
+                                                            f"{t.time_before_falling:.2f} s", file=sys.stderr)))
+        return 0
     from .character import make
     modes = [args.preset is not None, args.to is not None, args.height is not None or args.mass is not None]
     if sum(modes) != 1:
@@ -322,6 +328,12 @@ def parser() -> argparse.ArgumentParser:
     rp = ch_sub.add_parser("report", help="compare the built characters with Fig. 3 (Markdown)")
     rp.add_argument("--out", help="Markdown file whose Fig. 3 table block to rewrite (e.g. docs/bodies.md)")
     rp.set_defaults(func=cmd_character)
+    sr = ch_sub.add_parser("scaling-report", help="the seed's Fig. 5/8 experiment: time before falling of the man's "
+                           "controller, unscaled, geometric and mass-scaled, on bodies from the man to the woman")
+    sr.add_argument("--out", default="docs/bodies.md", help="Markdown file whose scaling block is rewritten")
+    sr.add_argument("--skill", action="append", choices=["balance", "running"], help="repeatable; default both")
+    sr.add_argument("--cap", default="20", help="seconds: a run that has not fallen by then stops (default 20)")
+    sr.set_defaults(func=cmd_character)
     return p
 
 
