@@ -60,13 +60,13 @@ def man():
 
 
 @pytest.fixture(scope="module")
-def woman():
-    return load_character("woman")
+def running_schema():
+    return behaviour_class("running").schema
 
 
 @pytest.fixture(scope="module")
-def running_schema():
-    return behaviour_class("running").schema
+def woman():
+    return load_character("woman")
 
 
 def test_geometric_scaling_of_a_settings_row_at_half_size(man, running_schema):
@@ -157,3 +157,14 @@ def test_bad_experiment_input_is_refused():
         experiment("dive")
     with pytest.raises(ParameterError, match="--cap=0.1 s is out of range; allowed range is \\[0.5, 600\\] s"):
         experiment("balance", cap=0.1)
+
+
+def test_the_scaling_report_rewrites_its_block_and_plots(tmp_path):
+    from sim_core.adapt.experiment import BEGIN, END, write_report
+    out = tmp_path / "bodies.md"
+    out.write_text(f"# title\n\n{BEGIN}\nold\n{END}\n\nafter\n")
+    block = write_report(out, skills=("balance",), cap=1.0, fractions=(0.0, 0.7))
+    text = out.read_text()
+    assert text.startswith("# title") and text.endswith("after\n") and "old" not in text and block in text
+    assert "| 70 % | 1.00 (no fall) | 1.00 (no fall) | 1.00 (no fall) | yes | - |" in text
+    assert (tmp_path / "bodies_scaling.png").stat().st_size > 10_000
