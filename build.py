@@ -3,6 +3,8 @@
     python build.py rigs      # rigs/man.json, rigs/woman.json from rigs/sdfast/*.sd, then
                               # rigs/man.glb, rigs/woman.glb (armature + weighted skin)
     python build.py rigs --no-skin   # only the JSON specs
+    python build.py rigs --character child   # rigs/child.glb for a made character (name or .json
+                              # path; the .glb goes next to the spec), repeatable
     python build.py addon     # dist/sim_athletics-<version>.zip (legacy add-on, Blender 3.4-4.1)
                               # dist/sim_athletics-<version>-extension.zip (extension, 4.2+)
     python build.py           # both
@@ -48,24 +50,33 @@ def build_rigs(skin: bool = True) -> None:
             build_skin(CharacterSpec(data, name))
 
 
-def build_skin(spec) -> None:
-    """rigs/<name>.glb: armature + one watertight skin; fails if a segment's skin mass is off
-    by more than the tolerance (issue 3: 15 %)."""
+def build_skin(spec, out: Path | None = None) -> None:
+    """rigs/<name>.glb (or ``out``): armature + one watertight skin, written only if it passes the
+    check (tools.rigbuild.check_rig: each segment's skin mass within 15 %, issue 3)."""
     try:
-        from tools.rigbuild import MASS_TOLERANCE, build_rig
+        from tools.rigbuild import write_checked_rig
     except ImportError as exc:
         raise SystemExit(f"build.py rigs: {exc.name} is missing; pip install -e '.[rigs]' "
                          "(or use --no-skin)") from None
-    report = build_rig(spec, ROOT / "rigs" / f"{spec.name}.glb")
+    out = out or ROOT / "rigs" / f"{spec.name}.glb"
+    report, failure = write_checked_rig(spec, out)
     worst, error = report.worst_mass_error()
-    print(f"wrote rigs/{spec.name}.glb ({report.vertices} vertices, {report.faces} triangles, "
-          f"watertight={report.watertight}, mesh volume {1000 * report.mesh_volume:.2f} L vs level set "
-          f"{1000 * report.field_volume:.2f} L, {100 * report.rigid_vertices:.0f} % of vertices on one bone)")
     print(report.table())
     print(f"largest segment mass error: {worst} {100 * error:+.1f} %")
-    if abs(error) > MASS_TOLERANCE or not report.watertight:
-        raise SystemExit(f"rigs/{spec.name}.glb: skin check failed ({worst} {100 * error:+.1f} %, "
-                         f"watertight={report.watertight})")
+    if failure:
+        raise SystemExit(f"{out.name}: skin check failed ({failure}); nothing written")
+    print(f"wrote {out} ({report.vertices} vertices, {report.faces} triangles, "
+          f"watertight={report.watertight}, mesh volume {1000 * report.mesh_volume:.2f} L vs level set "
+          f"{1000 * report.field_volume:.2f} L, {100 * report.rigid_vertices:.0f} % of vertices on one bone)")
+
+
+def build_character_skins(names: list[str]) -> None:
+    """The skins of made characters (``character make`` output): each .glb next to its spec."""
+    from sim_core.character.spec import RIGS_DIR, load_character
+    for name in names:
+        spec = load_character(name)
+        path = Path(name) if name.endswith(".json") else RIGS_DIR / f"{name}.json"
+        build_skin(spec, path.with_suffix(".glb"))
 
 
 # ----------------------------------------------------------------------------- add-on zips
@@ -129,6 +140,10 @@ def stage_addon(stage: Path) -> None:
             if not src.exists():
                 raise SystemExit(f"{src.relative_to(ROOT)} is missing; run 'python build.py rigs' first")
             shutil.copy2(src, rigs / src.name)
+    for skin in sorted((ROOT / "rigs").glob("*.glb")):      # made characters with a built skin
+        if skin.stem not in THESIS_CHARACTERS and skin.with_suffix(".json").exists():
+            for src in (skin.with_suffix(".json"), skin):
+                shutil.copy2(src, rigs / src.name)
     if (ROOT / "rigs" / "tuned").is_dir():
         shutil.copytree(ROOT / "rigs" / "tuned", rigs / "tuned", ignore=ignore)
 
@@ -203,8 +218,14 @@ def main(argv=None) -> int:
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("target", nargs="?", default="all", choices=["rigs", "addon", "all"])
     parser.add_argument("--no-skin", action="store_true", help="rigs: write only the JSON specs")
+    parser.add_argument("--character", action="append", metavar="NAME_OR_JSON",
+                        help="rigs: only the skin of this made character (repeatable), next to its spec")
     args = parser.parse_args(argv)
-    if args.target in ("rigs", "all"):
+    if args.character:
+        if args.target != "rigs" or args.no_skin:
+            parser.error("--character builds a skin: use it with 'rigs' and without --no-skin")
+        build_character_skins(args.character)
+    elif args.target in ("rigs", "all"):
         build_rigs(skin=not args.no_skin)
     if args.target in ("addon", "all"):
         build_addon()

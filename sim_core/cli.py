@@ -216,6 +216,12 @@ def cmd_character(args) -> int:
         from .character.fig3_report import write_report
         print(write_report(args.out))
         return 0
+    if args.character_command == "scaling-report":
+        from .adapt.experiment import write_report as write_scaling_report
+        print(write_scaling_report(args.out, skills=args.skill or ("balance", "running"), cap=_finite(args.cap, "--cap"),
+                                   progress=lambda t: print(f"{t.skill} {100 * t.fraction:g} % {t.controller}: "
+                                                            f"{t.time_before_falling:.2f} s", file=sys.stderr)))
+        return 0
     from .character import make
     modes = [args.preset is not None, args.to is not None, args.height is not None or args.mass is not None]
     if sum(modes) != 1:
@@ -240,9 +246,22 @@ def cmd_character(args) -> int:
     if args.out is None and args.preset is None:
         raise ParameterError("--out F.json is required (only --preset writes rigs/<name>.json by default)")
     path = make.write_character(data, args.out)
+    skin = None if args.no_skin else _write_skin(load_character(str(path)), path.with_suffix(".glb"))
     print(json.dumps({"character": data["name"], "out": str(path), "total_mass": data["total_mass"],
-                      "height": data["height"]}))
+                      "height": data["height"], "skin": skin}))
     return 0
+
+
+def _write_skin(spec, out) -> str:
+    """The made character's rigged skin next to its spec, by the builder build.py uses
+    (tools.rigbuild, a checkout's build-time code with the rig extras); where it or its
+    extras are missing (the add-on), or the skin fails the builder's check, a note says so."""
+    try:
+        from tools.rigbuild import write_checked_rig
+    except ImportError as exc:
+        return f"not built: {exc.name} is missing (pip install -e '.[rigs]' in a checkout)"
+    report, failure = write_checked_rig(spec, out)
+    return f"not built: {failure}" if failure else str(out)
 
 
 def parser() -> argparse.ArgumentParser:
@@ -303,11 +322,18 @@ def parser() -> argparse.ArgumentParser:
     mk.add_argument("--height", help="target height in m (top of the head), with --mass")
     mk.add_argument("--mass", help="target total mass in kg, with --height")
     mk.add_argument("--name", help="name of the new character (default: made from the inputs)")
+    mk.add_argument("--no-skin", action="store_true", help="write only the spec, not its rigged skin (.glb)")
     mk.add_argument("--out", help="spec file to write (.json); a --preset defaults to rigs/<name>.json")
     mk.set_defaults(func=cmd_character)
     rp = ch_sub.add_parser("report", help="compare the built characters with Fig. 3 (Markdown)")
     rp.add_argument("--out", help="Markdown file whose Fig. 3 table block to rewrite (e.g. docs/bodies.md)")
     rp.set_defaults(func=cmd_character)
+    sr = ch_sub.add_parser("scaling-report", help="the seed's Fig. 5/8 experiment: time before falling of the man's "
+                           "controller, unscaled, geometric and mass-scaled, on bodies from the man to the woman")
+    sr.add_argument("--out", default="docs/bodies.md", help="Markdown file whose scaling block is rewritten")
+    sr.add_argument("--skill", action="append", choices=["balance", "running"], help="repeatable; default both")
+    sr.add_argument("--cap", default="20", help="seconds: a run that has not fallen by then stops (default 20)")
+    sr.set_defaults(func=cmd_character)
     return p
 
 

@@ -245,6 +245,9 @@ def test_character_make_between_writes_a_spec_simulate_takes(tmp_path):
     assert p.returncode == 0, p.stderr
     assert json.loads(p.stdout.strip().splitlines()[-1])["out"] == str(out)
     assert CharacterSpec(json.loads(out.read_text())).name == "man_woman_70"
+    if _has_rig_extras():                   # the skin is written next to the spec, by build.py's builder
+        assert json.loads(p.stdout.strip().splitlines()[-1])["skin"] == str(out.with_suffix(".glb"))
+        assert _skin_problems(out.with_suffix(".glb"), load_character(str(out))) == []
     p = _cli("simulate", "balance", "--character", str(out), "--duration", "0.5")
     assert p.returncode == 0 and json.loads(p.stdout.strip().splitlines()[-1])["outcome"] == "success"
 
@@ -291,3 +294,114 @@ def test_character_make_refuses_bad_input_and_writes_nothing(tmp_path, args, mes
     lines = p.stderr.strip().splitlines()
     assert len(lines) == 1 and lines[0].startswith("error: ") and message in lines[0], p.stderr
     assert not out.exists() and not list(tmp_path.glob("*.tmp"))
+
+
+# ----------------------------------------------------------------------------- skins (rigs/<name>.glb)
+
+SKINNED = ["child", "imaginary_cyclist"]      # made characters with a committed skin
+
+
+def _has_rig_extras() -> bool:
+    try:
+        import pygltflib, skimage, trimesh  # noqa: F401
+    except ImportError:
+        return False
+    return True
+
+
+def _skin_problems(path: Path, spec) -> list[str]:
+    """What is wrong with a rig file, by the checks tests/addon/test_rig_assets.py makes of the
+    man's: built from this spec, one bone per body, one closed surface whose volume is the
+    body's at its segments' densities (within 2 %)."""
+    from blender_addon.core.rig_frames import spec_digest
+    from tools.rigbuild.gltf import read_rig_glb
+    glb = read_rig_glb(path)
+    problems = []
+    if glb["extras"]["spec_digest"] != spec_digest(spec.bodies):
+        problems.append(f"{path.name} is stale: run python build.py rigs --character {spec.name}")
+    if glb["names"] != spec.body_names:
+        problems.append("bones differ from the bodies")
+    faces = glb["faces"]
+    edges = np.sort(np.concatenate([faces[:, [0, 1]], faces[:, [1, 2]], faces[:, [2, 0]]]), axis=1)
+    _, counts = np.unique(edges, axis=0, return_counts=True)
+    if not np.all(counts == 2) or len(glb["vertices"]) - len(counts) + len(faces) != 2:
+        problems.append("not one closed surface")
+    v = glb["vertices"][faces]
+    volume = np.sum(np.einsum("ij,ij->i", v[:, 0], np.cross(v[:, 1], v[:, 2]))) / 6.0
+    spec_volume = sum(b["mass"] / b["density"] for b in spec.bodies)
+    if abs(volume / spec_volume - 1.0) >= 0.02:
+        problems.append(f"skin volume {1000 * volume:.2f} L against the body's {1000 * spec_volume:.2f} L")
+    return problems
+
+
+@pytest.mark.parametrize("name", SKINNED)
+def test_made_characters_have_a_current_skin_holding_their_mass(name):
+    pytest.importorskip("pygltflib")
+    assert _skin_problems(RIGS_DIR / f"{name}.glb", load_character(name)) == []
+
+
+@pytest.mark.slow
+def test_the_childs_rebuilt_skin_passes_the_mans_mass_check(tmp_path):
+    """build.py's check: every segment's skin volume x density within MASS_TOLERANCE (15 %) of its
+    mass; the committed rig is this build."""
+    if not _has_rig_extras():
+        pytest.skip("the rig extras (pip install -e '.[rigs]') are not installed")
+    from tools.rigbuild import MASS_TOLERANCE, build_rig, check_rig
+    from tools.rigbuild.gltf import read_rig_glb
+    report = build_rig(load_character("child"), tmp_path / "child.glb")
+    worst, error = report.worst_mass_error()
+    print(f"\nchild: {report.vertices} vertices, worst segment {worst} {100 * error:+.1f} %\n{report.table()}")
+    assert abs(error) < MASS_TOLERANCE and check_rig(report) is None
+    assert len(read_rig_glb(RIGS_DIR / "child.glb")["vertices"]) == report.vertices
+
+
+@pytest.mark.slow
+def test_a_skin_that_falls_apart_is_refused_and_nothing_is_written(tmp_path):
+    """The imaginary runner's fitted upper trunk is a sheet (CHEST1 3 cm deep, the sternum 6 mm):
+    its skin cannot hold the mass in one surface, so the builder refuses it."""
+    if not _has_rig_extras():
+        pytest.skip("the rig extras (pip install -e '.[rigs]') are not installed")
+    from tools.rigbuild import write_checked_rig
+    out = tmp_path / "imaginary_runner.glb"
+    report, failure = write_checked_rig(load_character("imaginary_runner"), out)
+    assert failure and "falls apart" in failure
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_build_py_refuses_character_with_no_skin():
+    p = subprocess.run([sys.executable, "build.py", "rigs", "--no-skin", "--character", "child"], cwd=ROOT,
+                       capture_output=True, text=True)
+    assert p.returncode == 2 and "--character builds a skin" in p.stderr
+
+
+@pytest.mark.slow
+def test_the_child_imports_and_bakes_balance_in_blender():
+    """The add-on's operators on the child as on the man (bpy module, headless): the rig imports,
+    a 1 s balance bake makes an action whose bones follow the trajectory within 1 mm."""
+    bpy = pytest.importorskip("bpy")
+    import blender_addon
+    from blender_addon import rig
+    from blender_addon.core import bake_math as bm
+    from sim_core.simulate import RunRequest, run
+    if "sim_athletics" not in bpy.types.Scene.bl_rna.properties:
+        blender_addon.register()
+    bpy.ops.wm.read_homefile(use_empty=True)
+    context = bpy.context
+    context.scene.render.fps, context.scene.render.fps_base = 24, 1.0
+    assert bpy.ops.sim_athletics.add_character(character="child") == {"FINISHED"}
+    arm = context.view_layer.objects.active
+    assert arm.type == "ARMATURE" and any(c.type == "MESH" for c in arm.children)
+    assert bpy.ops.sim_athletics.simulate_bake(behaviour="balance", duration=1.0, start_frame=1) == {"FINISHED"}
+    action = arm.animation_data.action
+    assert action is not None and action.frame_range[1] >= 24
+    trajectory = run(RunRequest("balance", "child", duration=1.0))
+    names = trajectory.body_names
+    rest = rig.rest_matrices(arm, names)
+    frames = [1, 9, 17, 25]
+    truth_pos, _ = bm.resample(trajectory.arrays["time"], trajectory.arrays["body_pos"],
+                               trajectory.arrays["body_quat"], (np.asarray(frames, float) - 1.0) / 24)
+    for k, frame in enumerate(frames):
+        context.scene.frame_set(frame)
+        pose = np.array([np.array(arm.pose.bones[n].matrix) for n in names])
+        pos, _ = bm.body_pose_from_bone(pose, rest)
+        assert np.max(np.linalg.norm(pos - truth_pos[k], axis=1)) < 1e-3

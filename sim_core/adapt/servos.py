@@ -7,7 +7,7 @@ from __future__ import annotations
 import copy
 
 from .moved_bodies import gain_factors
-from .scaling import TORQUE, TORSIONAL_DAMPING, TORSIONAL_STIFFNESS, scale
+from .scaling import TORQUE, TORSIONAL_DAMPING, TORSIONAL_STIFFNESS, ScaleFactors, scale
 from ..character.mass_properties import StandingBody
 from ..character.spec import CharacterSpec
 
@@ -25,4 +25,26 @@ def mass_scaled_servos(new_data: dict, old: CharacterSpec, length_ratio: float) 
             factors = gain_factors(old_standing, new_standing, dof["name"], length_ratio)
             for key, units in SERVO_UNITS.items():
                 dof[key] = scale(getattr(old_dofs[dof["name"]], key), units, factors)
+    return out
+
+
+CONTROLLERS = ("unscaled", "geometric", "mass")     # the three controllers of the seed's Fig. 5/8
+
+
+def controller_servos(new_data: dict, old: CharacterSpec, length_ratio: float, controller: str) -> dict:
+    """``new_data`` with the servos of ``old``'s controller carried over as ``controller`` says:
+    'unscaled' (old's kp, kv and torque limits as they are), 'geometric' (Fig. 6 with L only)
+    or 'mass' (mass_scaled_servos)."""
+    if controller == "mass":
+        return mass_scaled_servos(new_data, old, length_ratio)
+    if controller not in CONTROLLERS:
+        raise ValueError(f"controller {controller!r} must be one of {', '.join(CONTROLLERS)}")
+    geometric = ScaleFactors(length_ratio)
+    old_dofs = {d.name: d for d in old.dofs}
+    out = copy.deepcopy(new_data)
+    for body in out["bodies"]:
+        for dof in (body.get("joint") or {}).get("dofs", []):
+            for key, units in SERVO_UNITS.items():
+                value = getattr(old_dofs[dof["name"]], key)
+                dof[key] = value if controller == "unscaled" else scale(value, units, geometric)
     return out

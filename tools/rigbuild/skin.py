@@ -34,6 +34,7 @@ SMOOTH_UNION = 0.025        # m: fillet size where a parent and a child limb mee
 SLAB_UNION = 0.04           # m: fillet between the trunk and a limb, the neck or a thigh
 BOX_ROUNDING = 0.008        # m: edge radius of boxes (hands, feet)
 SLAB_ROUNDING = 0.03        # m: edge radius of the trunk's bottom and top
+SEAM_BRIDGE = 0.02          # m: half-height of the whole trunk put back across a spine joint where it shrinks
 TRUNK_BLEND = 0.06          # m: half-width of the smooth change between two torso slices
 MAX_INFLUENCES = 4          # weights per vertex (glTF JOINTS_0/WEIGHTS_0)
 
@@ -293,17 +294,48 @@ class Offsets:
         self.slices, self.mids = [self.slices[k] for k in order], self.mids[order]
         self.z = points[:, 2]
 
+    def trunk_offset(self, offsets: np.ndarray, z: np.ndarray | None = None) -> np.ndarray:
+        """The trunk's offset at heights ``z`` (default: the grid's), between the slices' own."""
+        return np.interp(self.z if z is None else z, self.mids, offsets[self.slices])
+
     def apply(self, distances: np.ndarray, offsets: np.ndarray) -> np.ndarray:
         shifted = distances - offsets[:, None]
         if self.slices:
-            along = np.interp(self.z, self.mids, offsets[self.slices]).astype(distances.dtype)
+            along = self.trunk_offset(offsets).astype(distances.dtype)
             shifted[self.slices] = distances[self.slices] - along
         return shifted
 
 
+class SeamBridge:
+    """Makes the trunk whole across every spine joint where it shrinks. Each torso slice is cut
+    by its own end planes, so at a joint the skin field is minus the trunk's offset there: a
+    trunk that grows (the thesis characters) stays joined, one that shrinks (a made character's
+    thin trunk slice) splits there into two surfaces, and the mesh keeps only the larger. With
+    the bridge, the loft itself, shifted by its offset, fills +/- SEAM_BRIDGE about such a joint;
+    near the surface it equals the slices' own field, so only the split closes. build_rig uses it
+    only when the skin without it falls apart (so the rigs that never split are unchanged)."""
+
+    def __init__(self, bodies: list[dict], points: np.ndarray, offsets_of: Offsets):
+        self.offsets_of = offsets_of
+        slabs = [bodies[i]["shapes"][0] for i in offsets_of.slices]
+        self.joints = [0.5 * (low["pos"][2] + low["half"][2] + up["pos"][2] - up["half"][2])
+                       for low, up in zip(slabs, slabs[1:])]
+        self.loft = TorsoLoft(slabs).distance(points, SLAB_ROUNDING).astype(np.float32) if slabs else None
+        self.z = points[:, 2]
+
+    def __call__(self, field: np.ndarray, offsets: np.ndarray) -> np.ndarray:
+        shrunk = [j for j in self.joints if self.offsets_of.trunk_offset(offsets, np.array([j]))[0] < 0.0]
+        if not shrunk:
+            return field
+        loft = self.loft - self.offsets_of.trunk_offset(offsets).astype(np.float32)
+        for joint in shrunk:
+            field = np.minimum(field, np.maximum(loft, np.abs(self.z - joint) - SEAM_BRIDGE))
+        return field
+
+
 def calibrate_offsets(distances: np.ndarray, edges, targets: np.ndarray, spacing: float,
                       offsets_of: Offsets, iterations: int = 40, tolerance: float = 0.01,
-                      damping: float = 0.3) -> tuple[np.ndarray, np.ndarray]:
+                      damping: float = 0.3, bridge: SeamBridge | None = None) -> tuple[np.ndarray, np.ndarray]:
     """Per-body offsets (m, positive = grow) so that each body's assigned interior volume x its
     density matches its mass; returns (offsets, volumes). Damped Newton steps per body: a body
     short of ``dV`` grows by ``dV / growth_area`` (buried bodies such as the sternum take their
@@ -312,6 +344,8 @@ def calibrate_offsets(distances: np.ndarray, edges, targets: np.ndarray, spacing
     for _ in range(iterations):
         shifted = offsets_of.apply(distances, offsets)
         field = skin_field(shifted, edges)
+        if bridge is not None:
+            field = bridge(field, offsets)
         volumes = segment_volumes(shifted, field, spacing)
         if np.all(np.abs(volumes / targets - 1.0) < tolerance):
             break
@@ -320,7 +354,8 @@ def calibrate_offsets(distances: np.ndarray, edges, targets: np.ndarray, spacing
         offsets = offsets + np.clip(step, -0.005, 0.005).astype(np.float32)
     else:
         shifted = offsets_of.apply(distances, offsets)
-        volumes = segment_volumes(shifted, skin_field(shifted, edges), spacing)
+        field = skin_field(shifted, edges)
+        volumes = segment_volumes(shifted, field if bridge is None else bridge(field, offsets), spacing)
     return offsets, volumes
 
 
