@@ -174,7 +174,10 @@ def _behaviour_items(self, context):
 
 
 def _character_items(self, context):
-    _ITEMS["character"] = [(n, label(n), f"rigs/{n}.json") for n in sim("character.spec").available_characters()]
+    """The characters that can be added: those with a rigged skin (rigs/<name>.glb) beside their spec."""
+    spec = sim("character.spec")
+    _ITEMS["character"] = [(n, label(n), f"rigs/{n}.json") for n in spec.available_characters()
+                           if (spec.RIGS_DIR / f"{n}.glb").exists()]
     return _ITEMS["character"]
 
 
