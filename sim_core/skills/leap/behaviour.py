@@ -8,7 +8,7 @@ import numpy as np
 
 from ...control.balance import Balance, standing_hip_height
 from ...control.behaviour import register
-from ...control.leap import ANKLE_GAIN_BROAD, ANKLE_GAIN_VERTICAL, BROAD_TIMING, BROAD_TRIGGER, LOW_LEVEL_SETTINGS, Landing, LeapThrust, SIDEWAYS_HEADING_KP, VERTICAL_TIMING, balance_after_landing, broad_row, commandable_heights, leap_assess, load_mapping, vertical_key, vertical_row
+from ...control.leap import CONSTANTS as LEAP, LOW_LEVEL_SETTINGS, Landing, LeapThrust, balance_after_landing, broad_row, commandable_heights, leap_assess, load_mapping, vertical_key, vertical_row
 from ...control.sequencer import Sequence, Step
 from ...errors import ParameterError
 from ...schema import Parameter
@@ -125,7 +125,7 @@ class Leap(Sequence):
                                                 com_offset_x=cfg["com_offset"],
                                                 com_offset_y=cfg.get("com_offset_y", 0.0),
                                                 arm_flexion=cfg.get("crouch_arms", 0.0), move_start=0.2,
-                                                heading_kp=SIDEWAYS_HEADING_KP if cfg.get("com_offset_y") else 0.0,
+                                                heading_kp=LEAP.sideways_heading_kp if cfg.get("com_offset_y") else 0.0,
                                                 spin_kp=cfg.get("spin_hold", 0.0),
                                                 move_time=cfg["crouch_time"] if "crouch_time" in cfg
                                                 else p["crouch_time"],
@@ -138,13 +138,13 @@ class Leap(Sequence):
                 sideways = cfg.get("com_offset_y", 0.0)
                 if sideways:        # a sideways jump: thrust once the COM has left the feet sideways
                     return b.posture_reached(t) or b.com_left_of_support() * math.copysign(1.0, sideways) > \
-                        BROAD_TRIGGER * abs(sideways)
-                return b.posture_reached(t) or b.com_ahead_of_support() > BROAD_TRIGGER * cfg["com_offset"]
+                        LEAP.broad_trigger * abs(sideways)
+                return b.posture_reached(t) or b.com_ahead_of_support() > LEAP.broad_trigger * cfg["com_offset"]
             return b.posture_reached(t - 0.15)
 
         def thrust(t):
-            return LeapThrust({}, ctx, cfg["crouch_height"], BROAD_TIMING if broad else VERTICAL_TIMING,
-                              ANKLE_GAIN_BROAD if broad else ANKLE_GAIN_VERTICAL, cfg["liftoff_hip"],
+            return LeapThrust({}, ctx, cfg["crouch_height"], LEAP.broad_timing if broad else LEAP.vertical_timing,
+                              LEAP.ankle_gain_broad if broad else LEAP.ankle_gain_vertical, cfg["liftoff_hip"],
                               cfg["arm_swing"], stand_height=standing_hip_height(ctx.character), damping=cfg["damping"],
                               liftoff_roll=cfg.get("liftoff_roll", 0.0), lean=cfg.get("thrust_lean", 0.0),
                               spin_hold=cfg.get("spin_hold", 0.0))
