@@ -123,15 +123,15 @@ class LeapThrust(Behaviour):
 
     def __init__(self, params, ctx: ControlContext, crouch_height: float, timing=CONSTANTS.vertical_timing,
                  ankle_gain=CONSTANTS.ankle_gain_vertical, liftoff_hip=0.0, arm_swing=2.5, stand_height=None,
-                 damping=CONSTANTS.thrust_damping_default, lean=0.0, liftoff_roll=0.0, spin_hold=0.0):
+                 thrust_damping=CONSTANTS.thrust_damping_default, thrust_lean=0.0, liftoff_roll=0.0, spin_hold=0.0):
         super().__init__(params, ctx)
         self.timing, self.ankle_gain = timing, ankle_gain
         self.liftoff_hip, self.arm_swing = liftoff_hip, arm_swing
         self.airborne = Airborne(ctx.model, ctx.actor.prefix)
         self.crouch_height = crouch_height
         self.stand_height = stand_height
-        self.damping = damping
-        self.lean = lean
+        self.thrust_damping = thrust_damping
+        self.thrust_lean = thrust_lean
         self.liftoff_roll = liftoff_roll
         self.spin_hold = spin_hold
 
@@ -140,7 +140,7 @@ class LeapThrust(Behaviour):
         s.offset[:] = 0.0
         self.t0 = t
         heights = np.linspace(self.crouch_height, self.stand_height, 8)
-        self.path = CrouchTable(self.ctx.model, self.ctx.character, heights, self.stand_height, com_offset=self.lean,
+        self.path = CrouchTable(self.ctx.model, self.ctx.character, heights, self.stand_height, com_offset=self.thrust_lean,
                                 actor=self.ctx.actor)
         self.idx = {name: s.indices([f"{name}_r_y", f"{name}_l_y"]) for name in ("hip", "knee", "ankle")}
         self.hip_rotation = s.indices(["hip_r_z", "hip_l_z"])
@@ -155,9 +155,9 @@ class LeapThrust(Behaviour):
         s.move_to(s.indices(spine), 0.0, t_hip, t)
         ankles = self.idx["ankle"]
         s.set_gains(ankles, s.default_kp[ankles] * self.ankle_gain,
-                    s.default_kv[ankles] * self.ankle_gain * self.damping)
+                    s.default_kv[ankles] * self.ankle_gain * self.thrust_damping)
         legs = np.concatenate([self.idx["hip"], self.idx["knee"]])
-        s.set_gains(legs, s.default_kp[legs] * CONSTANTS.thrust_gain, s.default_kv[legs] * CONSTANTS.thrust_gain * self.damping)
+        s.set_gains(legs, s.default_kp[legs] * CONSTANTS.thrust_gain, s.default_kv[legs] * CONSTANTS.thrust_gain * self.thrust_damping)
         self.event(t, "thrust")
 
     def _height(self, t: float, duration: float) -> float:
@@ -601,11 +601,11 @@ LEAP_SETTINGS = Schema(
     Parameter("liftoff_roll", "rad", 0.0, -0.5, 0.5, "hip abduction at lift-off (a sideways jump's roll)"),
     Parameter("vertical_thrust", "1", 0.0, 0.0, 1.0, "share of the vertical leap's thrust timing in a broad jump's"),
     Parameter("arm_swing", "rad", 1.0, 0.0, 3.2, "arm swing forward and up in the thrust"),
-    Parameter("damping", "1", CONSTANTS.thrust_damping_default, 0.1, 1.0, "share of the stiffened servos' damping kept in the thrust"),
+    Parameter("thrust_damping", "1", CONSTANTS.thrust_damping_default, 0.1, 1.0, "share of the stiffened servos' damping kept in the thrust"),
     Parameter("foot_delta", "m", 0.0, -0.3, 0.3, "landing: foot servo delta"),
-    Parameter("swing_arms", "1", 0.0, 0.0, 1.0, "landing: share of the arm swing against the spin"),
-    Parameter("arm_flexion", "rad", 0.6, -1.0, 3.0, "landing: shoulder flexion"),
-    Parameter("foot_lead_time", "s", 0.2, 0.0, 0.6, "landing: the feet land this long of COM travel ahead"),
+    Parameter("landing_swing_arms", "1", 0.0, 0.0, 1.0, "landing: above 0.5 the arms swing to landing_arm_flexion in flight"),
+    Parameter("landing_arm_flexion", "rad", 0.6, -1.0, 3.0, "landing: shoulder flexion"),
+    Parameter("landing_foot_lead_time", "s", 0.2, 0.0, 0.6, "landing: the feet land this long of COM travel ahead"),
     Parameter("crouch_arms", "rad", 0.0, -0.8, 0.0, "shoulder flexion in the crouch (back: -)"),
     Parameter("thrust_lean", "m", 0.0, -0.2, 0.1, "COM ahead (+) of the feet along the thrust's extension"),
     Parameter("spin_hold", "rad/(kg m²/s)", 0.0, 0.0, 0.5, "the hips turn against the spin about the vertical"),
@@ -637,7 +637,7 @@ def vertical_row(columns: dict, height: float) -> dict:
     column = lambda name: float(np.interp(h, rises, columns.get(name, [default[name]] * len(rises))))
     return {"crouch_height": column("crouch_height"), "crouch_pitch": column("crouch_pitch"),
             "com_offset": column("com_offset"), "arm_swing": column("arm_swing"),
-            "damping": column("damping"), "foot_delta": column("foot_delta"), "liftoff_hip": column("liftoff_hip")}
+            "thrust_damping": column("thrust_damping"), "foot_delta": column("foot_delta"), "liftoff_hip": column("liftoff_hip")}
 
 
 def broad_row(broad: dict, distance: float) -> dict:
@@ -656,8 +656,7 @@ def load_mapping(character: str) -> dict:
     return load("leap", character) or load("leap", "any")
 
 
-# the settings a low-level leap (low_level=1) runs with, by the leap parameters' names (the table's rows
-# name the thrust damping "damping" and the lift-off hip "liftoff_hip": Leap.settings maps them)
+# the settings a low-level leap (low_level=1) runs with, by the names the leap table and the jump plans use
 LOW_LEVEL_SETTINGS = Schema(
     Parameter("crouch_height", "m", 0.65, 0.4, 0.95, "pelvis height of the crouch (low_level only)"),
     Parameter("crouch_pitch", "rad", 1.0, 0.0, 1.8, "torso pitch in the crouch (low_level only)"),

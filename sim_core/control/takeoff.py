@@ -42,6 +42,7 @@ def takeoff_steps(ctx: ControlContext, cfg: dict) -> list[Step]:
     def thrust(t):
         return LeapThrust({}, ctx, cfg["crouch_height"], LEAP.vertical_timing, LEAP.ankle_gain_vertical,
                           cfg["liftoff_hip"], cfg["arm_swing"], stand_height=stand,
-                          damping=cfg.get("damping", LEAP.thrust_damping_default), lean=cfg.get("lean", 0.0))
+                          thrust_damping=cfg.get("thrust_damping", LEAP.thrust_damping_default),
+                          thrust_lean=cfg.get("thrust_lean", 0.0))
 
     return [Step("crouch", crouch, crouched), Step("thrust", thrust, lambda b, t: b.lifted_off())]

@@ -238,7 +238,7 @@ class Dive(Sequence):
             return _Aerial(Tumble.schema.validate(dict(position=3, move_time=CONSTANTS.open_move, stiffness=CONSTANTS.snap)), ctx,
                            self.rotation, self)
 
-        return takeoff_steps(ctx, dict(cfg, damping=cfg["thrust_damping"])) + [
+        return takeoff_steps(ctx, cfg) + [
             Step("tumble", tumble, lambda b, t: self.time_to_open(t)), Step("entry", entry)]
 
     # ------------------------------------------------------------------ transitions

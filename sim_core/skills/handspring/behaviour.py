@@ -235,8 +235,8 @@ class Handspring(Sequence):
 
         def thrust(t):
             return ArmSwingThrust({}, ctx, c["crouch_height"], LEAP.vertical_timing, LEAP.ankle_gain_vertical,
-                                  c["liftoff_hip"], c["arm_swing"], stand_height=stand, damping=c["thrust_damping"],
-                                  lean=c["thrust_lean"], arm_gain=c["arm_gain"], arm_time=c["arm_time"])
+                                  c["liftoff_hip"], c["arm_swing"], stand_height=stand, thrust_damping=c["thrust_damping"],
+                                  thrust_lean=c["thrust_lean"], arm_gain=c["arm_gain"], arm_time=c["arm_time"])
 
         arch = both_sides({"shoulder_*_z": c["arch_arm"], "hip_*_y": c["arch_hip"], "neck_c2_y": c["neck"], **CONSTANTS.arch})
         push = both_sides({"shoulder_*_z": c["push_shoulder"], "hip_*_y": c["push_hip"], "knee_*_y": c["snap_knee"],

@@ -170,7 +170,7 @@ class Somersault(Sequence):
         self.rotation = FlightRotation(ctx.model, ctx.data, ctx.actor)
         self.open_inertia = position_inertia(ctx.model, ctx.character, "layout", ctx.actor)
         self.touchdown_com = CONSTANTS.touchdown_com * float(ctx.data.subtree_com[ctx.actor.root][2])
-        takeoff = dict(cfg, lean=cfg["thrust_lean"], damping=cfg["thrust_damping"])
+        takeoff = cfg
 
         def tuck(t):
             self.rotation.takeoff(t)
