@@ -314,3 +314,24 @@ def test_every_controller_constant_has_a_unit_a_range_and_help():
             kind = store.table_type(skill)
             assert set(vars(as_constants(body))) <= set(kind.settings.by_name), skill
             assert all(kind.settings.by_name[n].unit and kind.settings.by_name[n].help for n in body["constants"]), skill
+
+
+def test_every_knob_has_one_name_in_its_table_and_in_the_behaviour_that_runs_it():
+    """A table row names each setting as the behaviour that runs it does (its animator schema or
+    settings schema): the leap table and the jump plans in the leap's names (thrust_damping,
+    liftoff_hip, landing_*), never a second name mapped in code. vertical_thrust is the planner's
+    choice of the thrust (the leap's is its distance); constants are their controller's."""
+    runs = {"leap": "leap", "jump_targets": "leap", "dives": "dive", "somersaults": "somersault",
+            "handspring": "handspring", "running": "running", "landing": "land"}
+    for table, skill in runs.items():
+        cls = behaviour_class(skill)
+        named = set(cls.schema.by_name) | set(cls.settings_schema.by_name)
+        for character in ("man", "woman", "any"):
+            body = tuned.load(table, character)
+            if body is None:
+                continue
+            used = {n for where, row in store.table_type(table).rows(body) if not where.startswith("constants") for n in row}
+            assert used - named <= {"vertical_thrust"}, (f"{table}_{character}", sorted(used - named))
+    composites = [set(behaviour_class(s).settings_schema.by_name) | set(behaviour_class(s).schema.by_name)
+                  for s in ("leap", "somersault", "handspring")]
+    assert all({"landing_knee_flexion", "landing_foot_lead_time", "thrust_damping", "liftoff_hip"} <= n for n in composites)

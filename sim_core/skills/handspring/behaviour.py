@@ -60,7 +60,7 @@ TAKEOFF_SETTINGS = ("crouch_height", "crouch_pitch", "com_offset", "sit_extra", 
                     "arm_swing", "arm_gain", "arm_time", "thrust_damping")
 HAND_SETTINGS = ("arch_arm", "arch_hip", "neck", "hand_gain", "push_delay", "push_shoulder", "push_hip",
                  "snap_knee", "push_move", "push_gain", "push_damping")
-LANDING_SETTINGS = ("land_lean", "open_height", "ready_height", "land_knee", "foot_delta", "foot_lead", "spin_placement")
+LANDING_SETTINGS = ("landing_lean", "open_height", "ready_height", "landing_knee_flexion", "foot_delta", "landing_foot_lead_time", "spin_placement")
 SETTINGS = TAKEOFF_SETTINGS + HAND_SETTINGS + LANDING_SETTINGS + ("flight_step_division",)
 OLD_ROW = {"push_damping": 0.0, "flight_step_division": 1}   # what a row calibrated before these settings
                             # ran with: it reproduces
@@ -114,15 +114,15 @@ SETTING_RANGES = Schema(
     setting("push_damping", "1", 0.0, 10.0,
               "damping factor of the servos of the push; 0 = push_gain (damped as much as stiffened, so no "
               "faster than the default servo); lighter moves the block and the snap-down sooner (low_level only)"),
-    setting("land_lean", "rad", 0.0, 1.6,
+    setting("landing_lean", "rad", 0.0, 1.6,
               "the landing starts when the pelvis has turned this much short of one turn (low_level only)"),
     setting("open_height", "m", 0.4, 1.1,
               "... or when the COM has come down to this height, whichever is first (low_level only)"),
     setting("ready_height", "m", 0.0, 0.8,
               "... or when a foot has come down to this height above the ground (low_level only)"),
-    setting("land_knee", "rad", 0.3, 1.4, "knee bend held for touchdown (low_level only)"),
+    setting("landing_knee_flexion", "rad", 0.3, 1.4, "knee bend held for touchdown (low_level only)"),
     setting("foot_delta", "m", -0.3, 0.3, "landing: foot servo delta (low_level only)"),
-    setting("foot_lead", "s", 0.0, 0.6,
+    setting("landing_foot_lead_time", "s", 0.0, 0.6,
               "landing: the feet land this many seconds of horizontal COM travel ahead of the COM (low_level only)"),
     setting("spin_placement", "s/m", 0.0, 0.5,
               "landing: feet placed this factor x (angular momentum / mass) against the spin (low_level only)"),
@@ -256,13 +256,13 @@ class Handspring(Sequence):
 
         def open_for_landing(b, t):
             turned = -self.rotation.somersault
-            return (turned >= 2 * math.pi - c["land_lean"] or ctx.data.subtree_com[ctx.actor.root][2] < c["open_height"]
+            return (turned >= 2 * math.pi - c["landing_lean"] or ctx.data.subtree_com[ctx.actor.root][2] < c["open_height"]
                     or self.airborne.feet_heights(ctx.data).min() < c["ready_height"])
 
         def land(t):
             return Landing(Landing.schema.validate(dict(
-                knee_flexion=c["land_knee"], fast_knee_flexion=c["land_knee"], foot_delta=c["foot_delta"],
-                foot_lead_time=c["foot_lead"], spin_placement=c["spin_placement"], blend_time=CONSTANTS.landing_blend)), ctx)
+                knee_flexion=c["landing_knee_flexion"], fast_knee_flexion=c["landing_knee_flexion"], foot_delta=c["foot_delta"],
+                foot_lead_time=c["landing_foot_lead_time"], spin_placement=c["spin_placement"], blend_time=CONSTANTS.landing_blend)), ctx)
 
         return [
             Step("crouch", sit, fallen_back),

@@ -51,7 +51,7 @@ SQUAT_LOWEST = Balance.schema.by_name["pelvis_height"].minimum   # m: the crouch
 TAKEOFF_SETTINGS = ("crouch_height", "crouch_pitch", "com_offset", "thrust_lean", "liftoff_hip", "arm_swing",
                     "thrust_damping", "tuck_stiffness", "tuck_time", "tuck_damping")
 LANDING_SETTINGS = ("landing_lean", "open_time", "open_blend", "landing_knee_flexion", "foot_delta",
-                    "foot_lead_time", "spin_placement")
+                    "landing_foot_lead_time", "spin_placement")
 SETTINGS = TAKEOFF_SETTINGS + LANDING_SETTINGS + ("flight_step_division",)
 OLD_ROW = {"tuck_time": CONSTANTS.tuck_move, "tuck_damping": 0.0, "flight_step_division": 1}   # what a calibrated row
                             # made before these settings ran with: every stored row reproduces
@@ -109,7 +109,7 @@ SOMERSAULT_SETTINGS = Schema(
               "the joints move from the tuck to the landing's targets over this time (low_level only)"),
     Parameter("landing_knee_flexion", "rad", 0.8, 0.3, 1.4, "knee bend held for touchdown (low_level only)"),
     Parameter("foot_delta", "m", -0.15, -0.3, 0.3, "landing: foot servo delta (low_level only)"),
-    Parameter("foot_lead_time", "s", 0.1, 0.0, 0.6,
+    Parameter("landing_foot_lead_time", "s", 0.1, 0.0, 0.6,
               "landing: the feet land this many seconds of horizontal COM travel ahead of the COM (low_level only)"),
     Parameter("spin_placement", "s/m", 0.25, 0.0, 0.5,
               "landing: feet placed this factor x (angular momentum / mass) against the spin (low_level only)"),
@@ -182,7 +182,7 @@ class Somersault(Sequence):
         def land(t):
             return Landing(Landing.schema.validate(dict(
                 knee_flexion=cfg["landing_knee_flexion"], fast_knee_flexion=cfg["landing_knee_flexion"],
-                foot_delta=cfg["foot_delta"], foot_lead_time=cfg["foot_lead_time"],
+                foot_delta=cfg["foot_delta"], foot_lead_time=cfg["landing_foot_lead_time"],
                 spin_placement=cfg["spin_placement"], blend_time=cfg["open_blend"])), ctx)
 
         return takeoff_steps(ctx, takeoff) + [
