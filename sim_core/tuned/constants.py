@@ -16,14 +16,11 @@ from __future__ import annotations
 from types import SimpleNamespace
 from typing import Iterable
 
-from ..schema import Parameter, Schema
+from ..schema import Schema
+from .settings import ranged as constant   # a constant's schema entry: unit, sanity range, help
 from .store import TableError, TableType, check_header, check_row, read, register, table_path
 
-
-def constant(name: str, unit: str, minimum: float, maximum: float, help_text: str) -> Parameter:
-    """A constant's schema entry: its value is data (the table's "constants"); the range is a sanity
-    bound a stored value is checked against, the default only the range's low end (never run)."""
-    return Parameter(name, unit, minimum, minimum, maximum, help_text)
+__all__ = ["as_constants", "constant", "constant_rows", "read_constants", "register_constants", "with_constants"]
 
 
 def constant_rows(body: dict) -> Iterable[tuple[str, dict]]:

@@ -36,7 +36,7 @@ from ...control.tumble import FlightRotation, both_sides
 from ...control.tuned import uncalibrated
 from ...schema import Parameter, Schema
 from ...tuned import TableError, TableType, keyed, load, register as register_table
-from ...tuned.settings import SkillSchema
+from ...tuned.settings import SkillSchema, ranged as setting   # a setting's range: its default is the table's
 from ...tuned.constants import constant, constant_rows, read_constants, with_constants
 
 # the handspring's hand-set constants: data, handspring_any.json's "constants" (docs/tables.md)
@@ -79,11 +79,6 @@ def handspring_row(table: dict, strength: str) -> dict | None:
 def calibrated(character: str, strength: str) -> dict | None:
     """The calibrated handspring of this character and strength, or None."""
     return handspring_row(load_table(character), strength)
-
-
-def setting(name: str, unit: str, minimum: float, maximum: float, help_text: str) -> Parameter:
-    """A handspring setting's range (its default is set below from the table)."""
-    return Parameter(name, unit, minimum, minimum, maximum, help_text)
 
 
 SETTING_RANGES = Schema(
