@@ -76,8 +76,8 @@ HUMAN_TRIAL = {   # a searched human-strength handspring (it falls; the settings
     "liftoff_hip": 0.1409, "arm_swing": 2.6102, "arm_gain": 5.7723, "arm_time": 0.082, "thrust_damping": 0.3124,
     "arch_arm": 2.4293, "arch_hip": 0.2662, "neck": -0.2527, "hand_gain": 11.2545, "push_delay": 0.0231,
     "push_shoulder": 1.6404, "push_hip": -1.4188, "snap_knee": 0.0521, "push_move": 0.0744, "push_gain": 6.0903,
-    "land_lean": 0.9615, "open_height": 0.7942, "ready_height": 0.0299, "land_knee": 0.7669, "foot_delta": -0.0837,
-    "foot_lead": 0.3754, "spin_placement": 0.0554}
+    "landing_lean": 0.9615, "open_height": 0.7942, "ready_height": 0.0299, "landing_knee_flexion": 0.7669, "foot_delta": -0.0837,
+    "landing_foot_lead_time": 0.3754, "spin_placement": 0.0554}
 
 
 def test_a_lighter_push_damping_lengthens_the_second_flight_and_a_finer_flight_step_keeps_the_momentum():

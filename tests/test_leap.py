@@ -64,9 +64,9 @@ def test_leap_goes_straight_up_without_spinning(height):
 
 
 @pytest.mark.parametrize("hip, sign", [(0.3, -1.0), (-0.3, 1.0)])
-def test_liftoff_hip_angle_sets_the_somersault_direction(hip, sign):
+def test_liftoff_hip_sets_the_somersault_direction(hip, sign):
     traj = run(RunRequest("leap", "man", params=dict(low_level=1, crouch_height=0.65, crouch_pitch=0.0,
-                                                     liftoff_hip_angle=hip), duration=2.0))
+                                                     liftoff_hip=hip), duration=2.0))
     start, _ = first_flight(traj)
     assert sign * traj.arrays["angmom"][start, 1] > 3.0
 
@@ -75,7 +75,7 @@ def test_angular_momentum_is_constant_in_flight():
     """Physics check: only gravity acts in flight, so the angular momentum about the COM stays
     constant (relative drift < 1 %) whatever the limbs do."""
     traj = run(RunRequest("leap", "man", params=dict(low_level=1, crouch_height=0.65, crouch_pitch=0.0,
-                                                     liftoff_hip_angle=0.3), duration=2.0))
+                                                     liftoff_hip=0.3), duration=2.0))
     start, end = first_flight(traj)
     momentum = traj.arrays["angmom"][start:end + 1]
     drift = np.abs(momentum - momentum[0]).max() / np.linalg.norm(momentum[0])
@@ -147,8 +147,8 @@ def test_a_fill_tries_crouches_between_the_neighbours_whose_rises_straddle_a_gap
     measured rises lie either side of its middle get two crouches between them (a third and two
     thirds of the way); a family that does not straddle it gets none."""
     calibrate_leap = importlib.import_module("sim_core.skills.leap.calibrate")
-    results = [dict(crouch_height=0.60, damping=1.0, com_rise=0.30), dict(crouch_height=0.57, damping=1.0, com_rise=0.40),
-               dict(crouch_height=0.55, damping=1.0, com_rise=0.45), dict(crouch_height=0.60, damping=0.3, com_rise=0.50)]
+    results = [dict(crouch_height=0.60, thrust_damping=1.0, com_rise=0.30), dict(crouch_height=0.57, thrust_damping=1.0, com_rise=0.40),
+               dict(crouch_height=0.55, thrust_damping=1.0, com_rise=0.45), dict(crouch_height=0.60, thrust_damping=0.3, com_rise=0.50)]
     assert uncovered_gaps([0.30, 0.45])[-1] == pytest.approx((0.335, 0.405))   # beyond 10 % of both rows
     assert calibrate_leap.gap_crouches(results, [(0.34, 0.36)]) == [(0.59, 1.0), (0.58, 1.0)]
 

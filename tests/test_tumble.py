@@ -7,7 +7,7 @@ import pytest
 from sim_core.character.model import compile_model
 from sim_core.character.spec import load_character
 from sim_core.skills.dive.behaviour import takeoff_index, twist_moves
-from sim_core.control.tumble import SEED_INERTIA, position_inertia
+from sim_core.control.tumble import CONSTANTS as TUMBLE, position_inertia
 from sim_core.errors import ParameterError
 from sim_core.simulate import RunRequest, largest_difference, replay, run
 
@@ -27,7 +27,7 @@ def test_position_inertias_are_the_seeds(character):
     model, _ = compile_model(spec)
     measured = {p: position_inertia(model, spec, p) for p in ("layout", "pike", "tuck")}
     assert measured["layout"] > measured["pike"] > measured["tuck"]
-    for position, seed in SEED_INERTIA[character].items():
+    for position, seed in TUMBLE.seed_inertia[character].items():
         assert measured[position] == pytest.approx(seed, rel=0.10), (position, measured)
 
 
@@ -163,10 +163,10 @@ def test_twist_moves_double_the_tilt_for_multiple_twists():
 
 
 def test_a_twisting_flight_takes_a_finer_step_and_still_replays_exactly():
-    """The flight of a dive runs at the model's step / FLIGHT_STEP_DIVISION (logged per tick); the
+    """The flight of a dive runs at the model's step / the dive's flight_step_division constant (logged per tick); the
     replay follows the log to the bit."""
-    from sim_core.skills.dive.behaviour import FLIGHT_STEP_DIVISION
+    from sim_core.skills.dive.behaviour import CONSTANTS as DIVE
     traj = run(RunRequest("dive", "woman", params=WOMAN_DIVES["back 1.5 with 2.5 twists"], duration=4.5))
     divisions = traj.arrays["step_division"]
-    assert divisions[0] == 1 and divisions[-1] == FLIGHT_STEP_DIVISION
+    assert divisions[0] == 1 and divisions[-1] == DIVE.flight_step_division
     assert largest_difference(traj, replay(traj)) == 0.0

@@ -22,20 +22,27 @@ from .measure import SupportGeometry
 from .servo import hermite_scalar
 from ..errors import ParameterError
 from ..schema import Parameter, Schema
+from ..tuned.constants import constant, read_constants, register_constants
+
+# the balance's hand-set constants: data, balance_any.json's "constants" (docs/tables.md)
+BALANCE_CONSTANTS = Schema(
+    constant("spine_share", "1", 0.0, 1.0, "share of the torso pitch taken by the spine (the rest by the hips)"),
+    constant("standing_knee_flex", "rad", 0.0, 0.5, "knees are never locked straight (the law of cosines is singular there)"),
+    constant("hip_strategy_max", "rad", 0.0, 2.0, "largest hip offset of the fast hip strategy"),
+    constant("lean_rate", "1/s", 0.0, 5.0, "rad/s of trunk lean per radian of COM error beyond the ankles' reach"),
+    constant("lean_leak", "1/s", 0.0, 5.0, "the lean returns to zero at this rate when the error is gone"),
+    constant("lean_max", "rad", 0.0, 2.0, "largest trunk lean"),
+    constant("crouch_com_tolerance", "m", 0.0, 0.2, "a crouch whose COM misses the centre of the feet by more is refused"),
+    constant("hip_share", "1", 0.0, 2.0, "hip offset per unit of ankle offset of the COM servo (eq. 7.2, opposite sign)"),
+    constant("ankle_authority", "1", 0.0, 2.0, "share of the torque the foot can take (COP at its edge) used by the ankles"),
+    constant("toe_share", "1", 0.0, 1.0, "where between ball (0) and toe tip (1) the front edge of the foot is taken"),
+    constant("excess_to_hip", "1", 0.0, 20.0, "hip flexion per radian of COM demand the ankles cannot deliver"),
+)
+register_constants("balance", BALANCE_CONSTANTS)
+CONSTANTS = read_constants("balance", BALANCE_CONSTANTS)
 
 SPINE_Y = ("spine_l3_y", "spine_l1_y", "spine_t7_y", "spine_t4_y")
-SPINE_SHARE = 0.25           # share of the torso pitch taken by the spine (the rest by the hips)
-STANDING_KNEE_FLEX = 0.10    # rad: knees are never locked straight (law of cosines is singular there)
-HIP_STRATEGY_MAX = 0.8     # rad: largest hip offset of the fast hip strategy
-LEAN_RATE = 0.5            # rad/s of trunk lean per radian of COM error beyond the ankles' reach
-LEAN_LEAK = 0.2            # 1/s: the lean returns to zero when the error is gone
-LEAN_MAX = 0.8             # rad
-CROUCH_COM_TOLERANCE = 0.04  # m: a crouch whose COM misses the centre of the feet by more is refused
 CROUCH_TABLE_ROWS = 6      # balanced crouch poses solved between standing and the requested height
-HIP_SHARE = 0.5
-ANKLE_AUTHORITY = 1.0      # share of the torque the foot can take (COP at its edge) used by the ankles
-TOE_SHARE = 1.0            # where between ball (0) and toe tip (1) the front edge of the foot is taken
-EXCESS_TO_HIP = 4.0        # hip flexion per radian of COM demand the ankles cannot deliver
 
 
 def standing_hip_height(character) -> float:
@@ -76,7 +83,7 @@ class LegGeometry:
 
     def standing_hip_height(self) -> float:
         u, l = self.upper, self.lower
-        flex = STANDING_KNEE_FLEX + self.rest_flex
+        flex = CONSTANTS.standing_knee_flex + self.rest_flex
         return self.ankle_height + math.sqrt(u * u + l * l + 2 * u * l * math.cos(flex))
 
     def lowest_hip_height(self, knee_limit: float) -> float:
@@ -154,11 +161,11 @@ class Balance(Behaviour):
         weight_per_foot = 0.5 * self.total_mass * float(np.linalg.norm(m.opt.gravity))
         ankle = ch.joint_position("FOOTR")
         sites = [c["pos"] for c in ch.body("FOOTR")["contacts"] + ch.body("TOER")["contacts"]]
-        front = TOE_SHARE * max(p[0] for p in sites) + (1 - TOE_SHARE) * ch.joint_position("TOER")[0] - ankle[0]
+        front = CONSTANTS.toe_share * max(p[0] for p in sites) + (1 - CONSTANTS.toe_share) * ch.joint_position("TOER")[0] - ankle[0]
         back = ankle[0] - min(p[0] for p in sites)
         kp_ankle = ch.dofs[ch.dof_index["ankle_r_y"]].kp
-        self.ankle_limit_front = ANKLE_AUTHORITY * weight_per_foot * front / kp_ankle
-        self.ankle_limit_back = ANKLE_AUTHORITY * weight_per_foot * back / kp_ankle
+        self.ankle_limit_front = CONSTANTS.ankle_authority * weight_per_foot * front / kp_ankle
+        self.ankle_limit_back = CONSTANTS.ankle_authority * weight_per_foot * back / kp_ankle
         self.ankle_height = self.legs["R"].ankle_height
         self.stand_height = standing_hip_height(ch)
 
@@ -183,7 +190,7 @@ class Balance(Behaviour):
 
         def balanced(height):
             return (lowest_stable <= height <= self.stand_height
-                    and self._crouch_residual(height) < CROUCH_COM_TOLERANCE)
+                    and self._crouch_residual(height) < CONSTANTS.crouch_com_tolerance)
         if balanced(h):
             return
         lo, hi = 0.3, self.stand_height                  # bisection for the lowest balanced height
@@ -204,7 +211,7 @@ class Balance(Behaviour):
         height = self.from_height if self.from_height is not None else self.stand_height
         torso = 0.0
         if self.from_pitch is not None:         # the torso pitch that gives the current pelvis pitch
-            torso = (self.from_pitch - self._crouch_pitch_at(height)) / (1.0 - SPINE_SHARE)
+            torso = (self.from_pitch - self._crouch_pitch_at(height)) / (1.0 - CONSTANTS.spine_share)
         return np.array([height, torso, 0.0, 0.0])
 
     def _crouch_pitch_at(self, height: float) -> float:
@@ -277,7 +284,7 @@ class Balance(Behaviour):
         knee, _, _, self._crouch_pitch, self._leg_length = self.crouch.at(height)
         q[i["knee_r_y"]] = q[i["knee_l_y"]] = knee
         reach = arm_reach(height, self.stand_height)
-        q[self.spine_idx] = torso_pitch * SPINE_SHARE / len(SPINE_Y)
+        q[self.spine_idx] = torso_pitch * CONSTANTS.spine_share / len(SPINE_Y)
         mirror = {"r": 1.0, "l": -1.0}
         for s, sign in mirror.items():
             q[i[f"shoulder_{s}_x"]] = self.base[i[f"shoulder_{s}_x"]] - sign * p["arm_abduction"]
@@ -317,8 +324,8 @@ class Balance(Behaviour):
         # (forward only: bending at the hips stops a forward fall; leaning the trunk back to stop
         # a backward one tips a character that is already behind its heels)
         velocity_excess = max(velocity_x - self.ankle_limit_front, 0.0)
-        hip_x = -HIP_SHARE * velocity_x - EXCESS_TO_HIP * velocity_excess
-        hip_x = min(max(hip_x, -HIP_STRATEGY_MAX), HIP_STRATEGY_MAX)
+        hip_x = -CONSTANTS.hip_share * velocity_x - CONSTANTS.excess_to_hip * velocity_excess
+        hip_x = min(max(hip_x, -CONSTANTS.hip_strategy_max), CONSTANTS.hip_strategy_max)
         delta_y = kp * (-s * gx + c * gy - centre_y - posture[3]) + kv * (-s * vx + c * vy)  # eq. 7.2
 
         # the ankles can only push as hard as the foot can take with its centre of pressure at the
@@ -330,9 +337,9 @@ class Balance(Behaviour):
         # a COM error the ankles cannot hold for long (a slope, a load) slowly leans the trunk
         # towards it - the quasi-static complement of the fast hip strategy below
         clipped = min(max(position_x, -self.ankle_limit_back), self.ankle_limit_front)
-        self._lean += (LEAN_RATE * (clipped - position_x) - LEAN_LEAK * self._lean) * self.ctx.control_dt
-        self._lean = min(max(self._lean, -LEAN_MAX), LEAN_MAX)
-        pelvis_pitch_goal = posture[1] * (1.0 - SPINE_SHARE) + self._crouch_pitch + self._lean
+        self._lean += (CONSTANTS.lean_rate * (clipped - position_x) - CONSTANTS.lean_leak * self._lean) * self.ctx.control_dt
+        self._lean = min(max(self._lean, -CONSTANTS.lean_max), CONSTANTS.lean_max)
+        pelvis_pitch_goal = posture[1] * (1.0 - CONSTANTS.spine_share) + self._crouch_pitch + self._lean
         pelvis_pitch = math.atan2(-(pelvis_m[0] * ux + pelvis_m[3] * uy + pelvis_m[6] * uz),
                                   pelvis_m[2] * ux + pelvis_m[5] * uy + pelvis_m[8] * uz)
         # the knees servo the hip-to-ankle distance of the crouch pose (not the height, which
@@ -368,7 +375,7 @@ class Balance(Behaviour):
             # hips hold the pelvis attitude, plus half the ankle offset (eqs. 7.1-7.2)
             targets[hy] = angles[hy] + (pelvis_pitch - pelvis_pitch_goal)
             offset[hy] = hip_x
-            offset[hx] = HIP_SHARE * delta_y
+            offset[hx] = CONSTANTS.hip_share * delta_y
             if heading_kp or spin_kp:
                 heading_error = math.remainder(yaw - math.atan2(f[3], f[0]), math.tau) if heading_kp else 0.0
                 offset[j["hip_z"]] = heading_kp * heading_error + spin          # pelvis vs this foot, and the spin

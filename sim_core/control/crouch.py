@@ -16,16 +16,25 @@ import numpy as np
 
 from ..character.spec import CharacterSpec
 from .actor import ActorView
+from ..schema import Schema
+from ..tuned.constants import constant, read_constants, register_constants
 
-DORSIFLEXION_USE = 0.85        # share of the ankle's dorsiflexion range a crouch may use
-ARM_REACH_PER_DEPTH = 3.0      # forward arm raise (rad) per unit of relative crouch depth, as people
-ARM_REACH_MAX = 1.4            # reach forward to counterbalance a deep squat
+# the crouch's hand-set constants: data, crouch_any.json's "constants" (docs/tables.md)
+CROUCH_CONSTANTS = Schema(
+    constant("dorsiflexion_use", "1", 0.0, 1.0, "share of the ankle's dorsiflexion range a crouch may use"),
+    constant("arm_reach_per_depth", "rad", 0.0, 10.0,
+             "forward arm raise per unit of relative crouch depth: people reach forward to counterbalance a deep squat"),
+    constant("arm_reach_max", "rad", 0.0, 3.2, "the forward arm raise of a crouch is at most this"),
+)
+register_constants("crouch", CROUCH_CONSTANTS)
+CONSTANTS = read_constants("crouch", CROUCH_CONSTANTS)
+
 
 
 def arm_reach(height: float, standing_height: float) -> float:
     """Forward arm flexion that goes with a crouch to this pelvis height."""
     depth = max(0.0, (standing_height - height) / standing_height)
-    return min(ARM_REACH_MAX, ARM_REACH_PER_DEPTH * depth)
+    return min(CONSTANTS.arm_reach_max, CONSTANTS.arm_reach_per_depth * depth)
 
 
 class CrouchTable:
@@ -52,7 +61,7 @@ class CrouchTable:
         sites = [c["pos"] for c in character.body("FOOTR")["contacts"] + character.body("TOER")["contacts"]]
         self.centre_from_ankle = 0.5 * (max(p[0] for p in sites) + min(p[0] for p in sites)) - float(ankle[0])
         lo = character.dofs[character.dof_index["ankle_r_y"]].range[0]
-        self.ankle_min = DORSIFLEXION_USE * lo
+        self.ankle_min = CONSTANTS.dorsiflexion_use * lo
         self.standing_height = standing_height
         self.shoulders = [(jnt(f"shoulder_{side}_z"), sign) for side, sign in (("r", 1.0), ("l", -1.0))]
         self.heights = np.asarray(heights, dtype=float)

@@ -36,41 +36,56 @@ from ..errors import ParameterError
 from ..schema import Parameter, Schema
 from ..tuned import TableType, load, register as register_table
 from ..tuned.settings import SkillSchema
+from ..tuned.constants import constant, constant_rows, read_constants, with_constants
+
+# the leap's thrust and landing's hand-set constants: data, leap_any.json's "constants", shared by
+# every skill that composes them (docs/tables.md)
+LEAP_CONSTANTS = Schema(
+    constant("vertical_timing", "s", 0.0, 1.0, "vertical leap: time to full extension of the hip, knee, ankle [W98 §4.1]"),
+    constant("broad_timing", "s", 0.0, 1.0, "broad jump: time to full extension of the hip, knee, ankle [W98 §4.2]"),
+    constant("ankle_gain_vertical", "1", 1.0, 10.0, "ankle servo gain factor of a vertical leap's thrust"),
+    constant("ankle_gain_broad", "1", 1.0, 10.0, "ankle servo gain factor of a broad jump's thrust"),
+    constant("sideways_heading_kp", "1", 0.0, 20.0,
+             "rad/rad: a sideways lean's hips hold the pelvis's heading on the feet's (its hip abduction in the "
+             "crouch turned the pelvis 25 deg before lift-off)"),
+    constant("broad_trigger", "1", 0.0, 2.0, "share of the crouch's COM offset that triggers a broad jump's thrust"),
+    constant("thrust_damping_default", "1", 0.1, 1.0,
+             "share of the stiffened servos' damping kept in the thrust when the row names none (damping brakes "
+             "fast extension: high leaps use less, calibrated per row with the lift-off hip angle and COM offset "
+             "that cancel the spin it brings)"),
+    constant("thrust_gain", "1", 1.0, 10.0, "hip and knee servos stiffened for the thrust [W98 §4.3]"),
+    constant("liftoff_ankle", "rad", 0.0, 1.5, "ankle plantarflexion at the end of the thrust"),
+    constant("soft_knee_kp", "1", 0.0, 1.0,
+             "knee kp factor while absorbing (the thesis: kp 0; with human torque limits a little spring keeps the "
+             "squat shallower)"),
+    constant("soft_knee_kv", "1", 0.0, 10.0, "knee damping factor while absorbing"),
+    constant("com_kp", "rad/m", 0.0, 20.0, "the balance's COM servo gain (eq. 7.1), used while absorbing"),
+    constant("com_kv", "rad s/m", 0.0, 20.0, "the balance's COM servo damping (eq. 7.1), used while absorbing"),
+    constant("absorb_time", "s", 0.0, 2.0, "hand over to balance at the latest this long after touchdown"),
+    constant("knee_restore", "1", 0.0, 1.0, "knees stiffen again at this share of their touchdown speed [W98 §6.1]"),
+    constant("toe_point_per_speed", "s", 0.0, 2.0, "rad of toe-down foot pitch before touchdown per m/s of expected touchdown speed"),
+    constant("toe_point_from", "m/s", 0.0, 10.0,
+             "touchdown speed above which the forefoot lands first and the ankles give, like a person landing from a height"),
+    constant("toe_point_max", "rad", 0.0, 1.5, "the toe-down pitch is at most this (0 = feet parallel to the ground)"),
+    constant("fast_landing_speed", "m/s", 0.0, 5.0, "horizontal COM speeds over which the flight knee eases to the fast one"),
+    constant("fast_backward_landing_speed", "m/s", 0.0, 5.0,
+             "the same, moving backward (a backward landing takes less speed with bent knees: the woman falls at "
+             "-1.0 m/s with the slow knee)"),
+    constant("toe_fade_speed", "m/s", 0.0, 5.0, "horizontal COM speeds over which the toe-down pitch fades out"),
+    constant("settle_time", "s", 0.0, 1.0,
+             "after the last touchdown the feet have settled by this time (the heels coming down after a toe-first landing)"),
+    constant("landing_torque_limit", "1", 0.1, 10.0,
+             "landing joints use at most this share of the human torque limits, whatever the model's strength "
+             "(stiffer legs land harder, not better)"),
+)
+CONSTANTS = read_constants("leap", LEAP_CONSTANTS)
 
 AIRBORNE_HEIGHT = 0.01          # m: every foot site this high above the ground = flight
 TOUCHDOWN_HEIGHT = 0.004        # m: a foot site this low = contact
-VERTICAL_TIMING = (0.10, 0.15, 0.22)     # s to full extension: hip, knee, ankle [W98 §4.1]
-BROAD_TIMING = (0.15, 0.20, 0.45)        # [W98 §4.2]
-ANKLE_GAIN_VERTICAL, ANKLE_GAIN_BROAD = 4.45, 3.6
-SIDEWAYS_HEADING_KP = 3.0       # rad/rad: a sideways lean's hips hold the pelvis's heading on the feet's (its
-                                # hip abduction in the crouch turned the pelvis 25 deg before lift-off)
-BROAD_TRIGGER = 0.8             # share of the crouch's COM offset that triggers a broad jump's thrust
-THRUST_DAMPING = 1.0            # share of the stiffened servos' damping kept in the thrust when the
-                                # mapping names none. Damping brakes fast extension: high leaps use less
-                                # (calibrated per row of the leap table, with the
-                                # lift-off hip angle and COM offset that cancel the spin it brings)
-THRUST_GAIN = 3.0               # hip and knee servos stiffened for the thrust [W98 §4.3]
-LIFTOFF_ANKLE = 0.75            # rad of plantarflexion at the end of the thrust
-SOFT_KNEE_KP, SOFT_KNEE_KV = 0.3, 2.5    # knee gain factors while absorbing (the thesis: kp 0; with human
-                                         # torque limits a little spring keeps the squat shallower)
-COM_KP, COM_KV = 4.0, 2.0      # the balance behaviour's COM servo gains (eq. 7.1), used while absorbing
-ABSORB_TIME = 0.35              # s: hand over to balance at the latest this long after touchdown
-KNEE_RESTORE = 0.2              # knees stiffen again at 20 % of their touchdown speed [W98 §6.1]
-TOE_POINT_PER_SPEED = 0.25      # rad of toe-down foot pitch before touchdown per m/s of expected touchdown
-TOE_POINT_FROM = 2.0            # speed above this (m/s): the forefoot lands first and the ankles give
-TOE_POINT_MAX = 0.5             # like a person landing from a height (0 = feet parallel to the ground)
-FAST_LANDING_SPEED = (1.0, 1.5)  # m/s of horizontal COM speed over which the flight knee eases to the fast one
-FAST_BACKWARD_LANDING_SPEED = (0.5, 1.0)   # the same, moving backward (a backward landing takes less speed
-                                           # with bent knees: the woman falls at -1.0 m/s with the slow knee)
-TOE_FADE_SPEED = (0.5, 1.5)     # m/s of horizontal COM speed over which the toe-down pitch fades out
 UP = np.array([0.0, 0.0, 1.0])
-SETTLE_TIME = 0.15              # s after the last touchdown by which the feet have settled (the heels
-                                # coming down after a toe-first landing)
 LANDING_SLIDE_LIMIT = 0.05      # m: a foot further than this from where it settled, at any time after the touchdown, has stepped
 LANDING_SKID_LIMIT = 0.05       # m: the middle of the feet moving further than this between the first
                                 # touchdown and settling is a skid (feet dragged or bounced), not a landing
-LANDING_TORQUE_LIMIT = 1.0      # landing joints use at most this share of the human torque limits,
-                                # whatever the model's strength (stiffer legs land harder, not better)
 
 
 def _sides(servos, *names):
@@ -106,17 +121,17 @@ class LeapThrust(Behaviour):
     which sets the roll rate; ``spin_hold`` turns the hips against the body's angular momentum about
     the vertical while the feet are down, as the crouch's Balance ``spin_kp`` does (a sideways jump)."""
 
-    def __init__(self, params, ctx: ControlContext, crouch_height: float, timing=VERTICAL_TIMING,
-                 ankle_gain=ANKLE_GAIN_VERTICAL, liftoff_hip=0.0, arm_swing=2.5, stand_height=None,
-                 damping=THRUST_DAMPING, lean=0.0, liftoff_roll=0.0, spin_hold=0.0):
+    def __init__(self, params, ctx: ControlContext, crouch_height: float, timing=CONSTANTS.vertical_timing,
+                 ankle_gain=CONSTANTS.ankle_gain_vertical, liftoff_hip=0.0, arm_swing=2.5, stand_height=None,
+                 thrust_damping=CONSTANTS.thrust_damping_default, thrust_lean=0.0, liftoff_roll=0.0, spin_hold=0.0):
         super().__init__(params, ctx)
         self.timing, self.ankle_gain = timing, ankle_gain
         self.liftoff_hip, self.arm_swing = liftoff_hip, arm_swing
         self.airborne = Airborne(ctx.model, ctx.actor.prefix)
         self.crouch_height = crouch_height
         self.stand_height = stand_height
-        self.damping = damping
-        self.lean = lean
+        self.thrust_damping = thrust_damping
+        self.thrust_lean = thrust_lean
         self.liftoff_roll = liftoff_roll
         self.spin_hold = spin_hold
 
@@ -125,7 +140,7 @@ class LeapThrust(Behaviour):
         s.offset[:] = 0.0
         self.t0 = t
         heights = np.linspace(self.crouch_height, self.stand_height, 8)
-        self.path = CrouchTable(self.ctx.model, self.ctx.character, heights, self.stand_height, com_offset=self.lean,
+        self.path = CrouchTable(self.ctx.model, self.ctx.character, heights, self.stand_height, com_offset=self.thrust_lean,
                                 actor=self.ctx.actor)
         self.idx = {name: s.indices([f"{name}_r_y", f"{name}_l_y"]) for name in ("hip", "knee", "ankle")}
         self.hip_rotation = s.indices(["hip_r_z", "hip_l_z"])
@@ -140,9 +155,9 @@ class LeapThrust(Behaviour):
         s.move_to(s.indices(spine), 0.0, t_hip, t)
         ankles = self.idx["ankle"]
         s.set_gains(ankles, s.default_kp[ankles] * self.ankle_gain,
-                    s.default_kv[ankles] * self.ankle_gain * self.damping)
+                    s.default_kv[ankles] * self.ankle_gain * self.thrust_damping)
         legs = np.concatenate([self.idx["hip"], self.idx["knee"]])
-        s.set_gains(legs, s.default_kp[legs] * THRUST_GAIN, s.default_kv[legs] * THRUST_GAIN * self.damping)
+        s.set_gains(legs, s.default_kp[legs] * CONSTANTS.thrust_gain, s.default_kv[legs] * CONSTANTS.thrust_gain * self.thrust_damping)
         self.event(t, "thrust")
 
     def _height(self, t: float, duration: float) -> float:
@@ -158,7 +173,7 @@ class LeapThrust(Behaviour):
         knee = self.path.at(self._height(t, t_knee))[0]
         ankle = self.path.at(self._height(t, t_ankle))[2]
         push = hermite_scalar((t - self.t0 - 0.5 * t_ankle) / (0.5 * t_ankle))
-        ankle = ankle + (LIFTOFF_ANKLE - ankle) * push
+        ankle = ankle + (CONSTANTS.liftoff_ankle - ankle) * push
         for name, value in (("hip", hip), ("knee", knee), ("ankle", ankle)):
             for i in self.idx[name]:
                 s.start[i] = s.goal[i] = value
@@ -239,8 +254,8 @@ class Landing(Behaviour):
         limits = np.array([ctx.character.dofs[ctx.character.dof_index[n]].torque_limit for n in s.names])
         legs = s.indices([f"{j}_{side}_{a}" for j, a in (("hip", "y"), ("knee", "y"), ("ankle", "y"))
                           for side in "rl"])
-        if (~m.actuator_forcelimited[s.actuators].astype(bool)[legs]).any() or (forcerange[legs] > limits[legs] * LANDING_TORQUE_LIMIT).any():
-            self.torque_cap = (legs, None, None, limits[legs] * LANDING_TORQUE_LIMIT)   # (model's own gains)
+        if (~m.actuator_forcelimited[s.actuators].astype(bool)[legs]).any() or (forcerange[legs] > limits[legs] * CONSTANTS.landing_torque_limit).any():
+            self.torque_cap = (legs, None, None, limits[legs] * CONSTANTS.landing_torque_limit)   # (model's own gains)
 
     def start(self, t: float) -> None:
         s = self.ctx.servos
@@ -264,11 +279,11 @@ class Landing(Behaviour):
 
     def _flight_knee(self, vx: float) -> float:
         """Knee bend held in flight: ``knee_flexion``, easing to ``fast_knee_flexion`` as the
-        horizontal speed rises over FAST_LANDING_SPEED (FAST_BACKWARD_LANDING_SPEED moving backward;
+        horizontal speed rises over CONSTANTS.fast_landing_speed (CONSTANTS.fast_backward_landing_speed moving backward;
         straighter legs reach further ahead of a fast COM and take the horizontal speed with the
         whole leg)."""
         p = self.params
-        low, high = FAST_LANDING_SPEED if vx >= 0 else FAST_BACKWARD_LANDING_SPEED
+        low, high = CONSTANTS.fast_landing_speed if vx >= 0 else CONSTANTS.fast_backward_landing_speed
         share = hermite_scalar((abs(vx) - low) / (high - low))
         return p["knee_flexion"] + (p["fast_knee_flexion"] - p["knee_flexion"]) * share
 
@@ -317,31 +332,31 @@ class Landing(Behaviour):
             points = self.airborne.support.supporting_points(d)
             px = c * points[:, 0] + sn * points[:, 1]
             com_x = c * com[0] + sn * com[1]
-            ankle_command = COM_KP * (com_x - 0.5 * (px.min() + px.max())) + COM_KV * vx
+            ankle_command = CONSTANTS.com_kp * (com_x - 0.5 * (px.min() + px.max())) + CONSTANTS.com_kv * vx
         toe_point = 0.0
         if self.stage == "flight":
             # a fast touchdown lands on the forefoot so the ankles absorb the first impact
             feet_height = max(float(self.airborne.feet_heights(d).min()), 0.0)
             touchdown_speed = math.sqrt(vel[2] * vel[2] + 2.0 * GRAVITY * feet_height)
-            toe_point = min(max(TOE_POINT_PER_SPEED * (touchdown_speed - TOE_POINT_FROM), 0.0), TOE_POINT_MAX)
+            toe_point = min(max(CONSTANTS.toe_point_per_speed * (touchdown_speed - CONSTANTS.toe_point_from), 0.0), CONSTANTS.toe_point_max)
             # moving forward or back fast, the feet land flat: the whole sole has to stop the COM's
             # horizontal speed (the forefoot alone would let the ankles give way)
-            toe_point *= min(max((TOE_FADE_SPEED[1] - abs(vx)) / (TOE_FADE_SPEED[1] - TOE_FADE_SPEED[0]), 0.0), 1.0)
+            toe_point *= min(max((CONSTANTS.toe_fade_speed[1] - abs(vx)) / (CONSTANTS.toe_fade_speed[1] - CONSTANTS.toe_fade_speed[0]), 0.0), 1.0)
         if self.stage == "flight" and self.airborne.touching(d):
             self.stage = "absorb"
             self.ctx.step_division = 1      # a flight run at a finer physics step lands at the model's
             self.touchdown_knee_speed = max(abs(float(velocities[self.knees].mean())), 1e-3)
             self.knees_touched_at = angles[self.knees].copy()
-            s.set_gains(self.knees, s.default_kp[self.knees] * SOFT_KNEE_KP, s.default_kv[self.knees] * SOFT_KNEE_KV)
+            s.set_gains(self.knees, s.default_kp[self.knees] * CONSTANTS.soft_knee_kp, s.default_kv[self.knees] * CONSTANTS.soft_knee_kv)
             self.touchdown_at = t
             self.event(t, "touchdown")
-        elif self.stage == "absorb" and abs(float(velocities[self.knees].mean())) < KNEE_RESTORE * self.touchdown_knee_speed:
+        elif self.stage == "absorb" and abs(float(velocities[self.knees].mean())) < CONSTANTS.knee_restore * self.touchdown_knee_speed:
             self.stage = "settle"
             self.knees_stopped_at = angles[self.knees].copy()
             s.set_gains(self.knees, s.default_kp[self.knees], s.default_kv[self.knees])
             self.event(t, "knees_restored")
         if self.finished_at is None and (self.stage == "settle" or (
-                self.stage == "absorb" and t - self.touchdown_at > ABSORB_TIME)):
+                self.stage == "absorb" and t - self.touchdown_at > CONSTANTS.absorb_time)):
             self.finished_at = t
         knee = self._flight_knee(vx) if self.stage == "flight" else None
         spin_offset = 0.0
@@ -447,7 +462,7 @@ def leap_assess(trajectory, squat_floor: float | None = None) -> tuple[str, dict
         metrics["liftoff_angular_momentum"] = float(a["angmom"][first, 1])
         metrics["liftoff_horizontal_speed"] = float(a["com_vel"][first, 0])
         after = a["support_points"][last + 1:, :, :2]
-        settle = min(int(SETTLE_TIME * trajectory.meta["control_rate"]), len(after) - 1)
+        settle = min(int(CONSTANTS.settle_time * trajectory.meta["control_rate"]), len(after) - 1)
         metrics["foot_slide_after_landing"] = float(
             np.linalg.norm(after - after[settle], axis=2).max()) if len(after) else 0.0
         # a jump travels: the standard "stepped" (a foot away from where it stood at the start)
@@ -586,11 +601,11 @@ LEAP_SETTINGS = Schema(
     Parameter("liftoff_roll", "rad", 0.0, -0.5, 0.5, "hip abduction at lift-off (a sideways jump's roll)"),
     Parameter("vertical_thrust", "1", 0.0, 0.0, 1.0, "share of the vertical leap's thrust timing in a broad jump's"),
     Parameter("arm_swing", "rad", 1.0, 0.0, 3.2, "arm swing forward and up in the thrust"),
-    Parameter("damping", "1", THRUST_DAMPING, 0.1, 1.0, "share of the stiffened servos' damping kept in the thrust"),
+    Parameter("thrust_damping", "1", CONSTANTS.thrust_damping_default, 0.1, 1.0, "share of the stiffened servos' damping kept in the thrust"),
     Parameter("foot_delta", "m", 0.0, -0.3, 0.3, "landing: foot servo delta"),
-    Parameter("swing_arms", "1", 0.0, 0.0, 1.0, "landing: share of the arm swing against the spin"),
-    Parameter("arm_flexion", "rad", 0.6, -1.0, 3.0, "landing: shoulder flexion"),
-    Parameter("foot_lead_time", "s", 0.2, 0.0, 0.6, "landing: the feet land this long of COM travel ahead"),
+    Parameter("landing_swing_arms", "1", 0.0, 0.0, 1.0, "landing: above 0.5 the arms swing to landing_arm_flexion in flight"),
+    Parameter("landing_arm_flexion", "rad", 0.6, -1.0, 3.0, "landing: shoulder flexion"),
+    Parameter("landing_foot_lead_time", "s", 0.2, 0.0, 0.6, "landing: the feet land this long of COM travel ahead"),
     Parameter("crouch_arms", "rad", 0.0, -0.8, 0.0, "shoulder flexion in the crouch (back: -)"),
     Parameter("thrust_lean", "m", 0.0, -0.2, 0.1, "COM ahead (+) of the feet along the thrust's extension"),
     Parameter("spin_hold", "rad/(kg m²/s)", 0.0, 0.0, 0.5, "the hips turn against the spin about the vertical"),
@@ -606,6 +621,7 @@ def _leap_rows(body: dict):
             yield f"{key} row {k}", {n: columns[n][k] for n in settings}
     for k, row in enumerate(body.get("broad", {}).get("settings", [])):
         yield f"broad row {k}", row
+    yield from constant_rows(body)
 
 
 def vertical_row(columns: dict, height: float) -> dict:
@@ -621,7 +637,7 @@ def vertical_row(columns: dict, height: float) -> dict:
     column = lambda name: float(np.interp(h, rises, columns.get(name, [default[name]] * len(rises))))
     return {"crouch_height": column("crouch_height"), "crouch_pitch": column("crouch_pitch"),
             "com_offset": column("com_offset"), "arm_swing": column("arm_swing"),
-            "damping": column("damping"), "foot_delta": column("foot_delta"), "liftoff_hip": column("liftoff_hip")}
+            "thrust_damping": column("thrust_damping"), "foot_delta": column("foot_delta"), "liftoff_hip": column("liftoff_hip")}
 
 
 def broad_row(broad: dict, distance: float) -> dict:
@@ -631,7 +647,8 @@ def broad_row(broad: dict, distance: float) -> dict:
     return dict(broad["params"][k])
 
 
-LEAP_TABLE = register_table(TableType("leap", LEAP_SETTINGS, _leap_rows, (vertical_row, broad_row)))
+LEAP_TABLE = register_table(TableType("leap", with_constants(LEAP_SETTINGS, LEAP_CONSTANTS), _leap_rows,
+                                      (vertical_row, broad_row)))
 
 
 def load_mapping(character: str) -> dict:
@@ -639,8 +656,7 @@ def load_mapping(character: str) -> dict:
     return load("leap", character) or load("leap", "any")
 
 
-# the settings a low-level leap (low_level=1) runs with, by the leap parameters' names (the table's rows
-# name the thrust damping "damping" and the lift-off hip "liftoff_hip": Leap.settings maps them)
+# the settings a low-level leap (low_level=1) runs with, by the names the leap table and the jump plans use
 LOW_LEVEL_SETTINGS = Schema(
     Parameter("crouch_height", "m", 0.65, 0.4, 0.95, "pelvis height of the crouch (low_level only)"),
     Parameter("crouch_pitch", "rad", 1.0, 0.0, 1.8, "torso pitch in the crouch (low_level only)"),

@@ -5,10 +5,18 @@ from __future__ import annotations
 
 from .balance import Balance, standing_hip_height
 from .behaviour import ControlContext
-from .leap import ANKLE_GAIN_VERTICAL, THRUST_DAMPING, VERTICAL_TIMING, LeapThrust
+from .leap import CONSTANTS as LEAP, LeapThrust
 from .sequencer import Step
+from ..schema import Schema
+from ..tuned.constants import constant, read_constants, register_constants
 
-LEAN_TRIGGER = 1.0         # share of a backward COM offset that triggers the thrust
+# the take-off's hand-set constant: data, takeoff_any.json's "constants" (docs/tables.md)
+TAKEOFF_CONSTANTS = Schema(
+    constant("lean_trigger", "1", 0.0, 2.0, "share of the crouch's COM offset, reached moving, that triggers the thrust"),
+)
+register_constants("takeoff", TAKEOFF_CONSTANTS)
+CONSTANTS = read_constants("takeoff", TAKEOFF_CONSTANTS)
+
 SETTINGS = ("crouch_height", "crouch_pitch", "com_offset", "liftoff_hip", "arm_swing")
 
 
@@ -25,15 +33,16 @@ def takeoff_steps(ctx: ControlContext, cfg: dict) -> list[Step]:
 
     def crouched(b, t):
         lean = cfg["com_offset"]
-        if lean < 0 and b.com_ahead_of_support() < LEAN_TRIGGER * lean:
+        if lean < 0 and b.com_ahead_of_support() < CONSTANTS.lean_trigger * lean:
             return True
-        if lean > 0 and b.com_ahead_of_support() > LEAN_TRIGGER * lean:
+        if lean > 0 and b.com_ahead_of_support() > CONSTANTS.lean_trigger * lean:
             return True
         return b.posture_reached(t - 0.15)
 
     def thrust(t):
-        return LeapThrust({}, ctx, cfg["crouch_height"], VERTICAL_TIMING, ANKLE_GAIN_VERTICAL,
+        return LeapThrust({}, ctx, cfg["crouch_height"], LEAP.vertical_timing, LEAP.ankle_gain_vertical,
                           cfg["liftoff_hip"], cfg["arm_swing"], stand_height=stand,
-                          damping=cfg.get("damping", THRUST_DAMPING), lean=cfg.get("lean", 0.0))
+                          thrust_damping=cfg.get("thrust_damping", LEAP.thrust_damping_default),
+                          thrust_lean=cfg.get("thrust_lean", 0.0))
 
     return [Step("crouch", crouch, crouched), Step("thrust", thrust, lambda b, t: b.lifted_off())]

@@ -3,7 +3,7 @@ gave the body.
 
 Once airborne nothing can change the whole-body angular momentum H about the COM; the tumbling
 controller changes the body's shape instead. A layout, pike or tuck (predetermined angles of the
-hips, knees, spine and arms, ``POSITIONS``) lowers the moment of inertia about the somersault
+hips, knees, spine and arms, ``CONSTANTS.positions``) lowers the moment of inertia about the somersault
 axis and so raises the somersault rate; ``tightness`` blends between the layout and the full
 position. A twist is started in flight, with no twist at take-off, by an asymmetric arm throw
 (Frohlich's torque-free twist, §5.2): one arm goes up over the head and the other down across
@@ -26,34 +26,36 @@ from ..character.model import place_standing
 from .actor import ActorView
 from .behaviour import Behaviour, ControlContext
 from ..schema import Choice, Parameter, Schema
+from ..tuned.constants import constant, read_constants, register_constants
+
+# the tumbling's hand-set constants: data, tumble_any.json's "constants" (docs/tables.md).
+# positions: joint angles (rad) of each position; "*" is r or l, arm angles are the right side's (mirrored
+# for the left); joints not named keep the standing pose (straight, arms hanging: shoulder x is the arm's
+# elevation in the frontal plane, 1.43 hanging, 0 sideways, -1.5 overhead; shoulder z swings it forward in
+# the sagittal plane); the entry "line" is straight, arms overhead (a head-first water entry).
+# twist_throw: the asymmetric arm throw that starts a twist (§5.2), from the line: the right arm stays up by
+# the head, the left comes down to the side in the frontal plane, which tilts the body out of the plane of
+# the angular momentum; the legs, together, swing twist_hip_swing to the left with it (an asymmetric hip
+# movement, as twisting divers and gymnasts add to the arms' tilt: on the woman's back 1 1/2 with 2 1/2
+# twists it took the twists from 2.13 to 2.43, measured); mirrored_throw: the left arm up, the right one
+# down, the legs to the right.
+TUMBLE_CONSTANTS = Schema(
+    constant("positions", "rad", -3.2, 3.2, "joint angles of each position (layout, pike, tuck, line) by joint name"),
+    constant("twist_hip_swing", "rad", 0.0, 1.0, "hip abduction (left) / adduction (right) of the twist's throw"),
+    constant("twist_throw", "rad", -3.2, 3.2, "shoulder angles of the arm throw that starts a twist"),
+    constant("mirrored_throw", "rad", -3.2, 3.2, "shoulder angles of the mirrored throw (a twist the other way)"),
+    constant("snap_damping", "1", 0.0, 10.0,
+             "a stiffened move is damped this much more again: fast but overdamped (with critical damping the "
+             "1 ms step let the flight's angular momentum drift ~1 %)"),
+    constant("pointed_toes", "rad", 0.0, 1.5, "ankle plantarflexion in flight"),
+    constant("seed_inertia", "kg m^2", 0.0, 100.0, "moment of inertia of each position per character, Wooten Fig. 5.2"),
+)
+register_constants("tumble", TUMBLE_CONSTANTS)
+CONSTANTS = read_constants("tumble", TUMBLE_CONSTANTS)
+TWIST_THROW = {**CONSTANTS.twist_throw, "hip_r_x": CONSTANTS.twist_hip_swing, "hip_l_x": CONSTANTS.twist_hip_swing}
+MIRRORED_THROW = {**CONSTANTS.mirrored_throw, "hip_r_x": -CONSTANTS.twist_hip_swing, "hip_l_x": -CONSTANTS.twist_hip_swing}
 
 POSITION_NAMES = ("layout", "pike", "tuck", "line")     # by the schemas' position codes 0-3
-_SPINE_FLEXED = {"spine_l3_y": 0.26, "spine_l1_y": 0.26, "spine_t7_y": 0.21, "spine_t4_y": 0.21, "neck_c2_y": 0.8}
-# joint angles (rad) of each position; "*" is r or l, arm angles are the right side's (mirrored
-# for the left); joints not named keep the standing pose (straight, arms hanging: shoulder x is
-# the arm's elevation in the frontal plane, 1.43 hanging, 0 sideways, -1.5 overhead; shoulder z
-# swings it forward in the sagittal plane)
-POSITIONS = {
-    "layout": {},
-    "pike": {"hip_*_y": -2.18, **_SPINE_FLEXED, "shoulder_*_z": 0.3, "elbow_*_z": 0.0},
-    "tuck": {"hip_*_y": -2.18, "knee_*_y": 2.62, **_SPINE_FLEXED, "shoulder_*_z": 0.5, "elbow_*_z": 1.8},
-    # the entry "line": straight, arms overhead (a head-first water entry)
-    "line": {"shoulder_*_x": -1.5, "shoulder_*_z": 0.0, "elbow_*_z": 0.0},
-}
-# the asymmetric arm throw that starts a twist (§5.2), from the line: the right arm stays up by
-# the head, the left comes down to the side in the frontal plane, which tilts the body out of
-# the plane of the angular momentum; the legs, together, swing TWIST_HIP_SWING to the left with
-# it (an asymmetric hip movement, as twisting divers and gymnasts add to the arms' tilt: on the
-# woman's back 1 1/2 with 2 1/2 twists it took the twists from 2.13 to 2.43, measured)
-TWIST_HIP_SWING = 0.5       # rad of hip abduction (left) / adduction (right)
-TWIST_THROW = {"shoulder_r_x": -1.5, "shoulder_l_x": -1.43, "hip_r_x": TWIST_HIP_SWING, "hip_l_x": TWIST_HIP_SWING}
-MIRRORED_THROW = {"shoulder_r_x": 1.43, "shoulder_l_x": 1.5,     # the left arm up, the right one down,
-                  "hip_r_x": -TWIST_HIP_SWING, "hip_l_x": -TWIST_HIP_SWING}   # the legs to the right
-SNAP_DAMPING = 2.0          # a stiffened move is damped twice as much again: fast but overdamped (with
-                            # critical damping the 1 ms step let the flight's angular momentum drift ~1 %)
-POINTED_TOES = 0.7          # rad of ankle plantarflexion in flight
-SEED_INERTIA = {"man": {"layout": 18.31, "pike": 5.84, "tuck": 4.84},
-                "woman": {"layout": 7.43, "pike": 2.52, "tuck": 1.92}}   # kg m^2, Wooten Fig. 5.2
 
 
 def _is_mirrored(name: str) -> bool:
@@ -76,7 +78,7 @@ def both_sides(angles: dict[str, float]) -> dict[str, float]:
 
 def position_angles(position: str) -> dict[str, float]:
     """Joint name -> angle of a named position, both sides spelled out."""
-    return both_sides(POSITIONS[position])
+    return both_sides(CONSTANTS.positions[position])
 
 
 def position_name(code: float) -> str:
@@ -219,7 +221,7 @@ class Tumble(Behaviour):
         targets = {name: value + k * (position_angles(position).get(name, value) - value)
                    for name, value in straight.items()}
         for side in "rl":
-            targets[f"ankle_{side}_y"] = POINTED_TOES
+            targets[f"ankle_{side}_y"] = CONSTANTS.pointed_toes
         return targets
 
     def start(self, t: float) -> None:
@@ -255,7 +257,7 @@ class Tumble(Behaviour):
 
 def snap_damping(stiffness: float) -> float:
     """The move's damping factor where none is given: the stiffness, doubled for a snap (> 1)."""
-    return stiffness * (SNAP_DAMPING if stiffness > 1.0 else 1.0)
+    return stiffness * (CONSTANTS.snap_damping if stiffness > 1.0 else 1.0)
 
 
 def rotation_to_come(rate_now: float, rate_open: float, time_left: float, open_time: float) -> float:

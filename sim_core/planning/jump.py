@@ -41,9 +41,9 @@ PLAN_MARGIN = 0.6                   # the search aims inside this share of the t
 # the leap's low-level settings the planner searches, with their ranges
 KNOBS = {
     "crouch_height": (0.48, 0.80), "crouch_pitch": (0.0, 0.5), "com_offset": (0.0, 0.20),
-    "liftoff_hip": (-0.2, 1.0), "vertical_thrust": (0.0, 1.0), "arm_swing": (0.5, 3.0), "damping": (0.3, 1.0),
-    "foot_delta": (-0.15, 0.15), "swing_arms": (0.0, 1.0), "arm_flexion": (-1.0, 1.0),
-    "foot_lead_time": (0.15, 0.35), "crouch_arms": (-0.8, 0.0),
+    "liftoff_hip": (-0.2, 1.0), "vertical_thrust": (0.0, 1.0), "arm_swing": (0.5, 3.0), "thrust_damping": (0.3, 1.0),
+    "foot_delta": (-0.15, 0.15), "landing_swing_arms": (0.0, 1.0), "landing_arm_flexion": (-1.0, 1.0),
+    "landing_foot_lead_time": (0.15, 0.35), "crouch_arms": (-0.8, 0.0),
 }
 
 SIDEWAYS_KNOBS = {"com_offset_y": (-0.2, 0.2), "liftoff_roll": (-0.5, 0.5),   # searched only for a target off to
@@ -55,19 +55,19 @@ SIDEWAYS_KNOBS = {"com_offset_y": (-0.2, 0.2), "liftoff_roll": (-0.5, 0.5),   # 
                   "spin_hold": (0.0, 0.3)}         # the hips may turn against the twist that the push at the
                                                    # forefeet gives (the woman's 1.3 m right left at -5.3 kg m²/s)
 SIDEWAYS_PRIOR = {"crouch_height": 0.6, "crouch_pitch": 0.0, "com_offset": 0.0, "liftoff_hip": 0.6,
-                  "arm_swing": 1.0, "damping": 0.3, "vertical_thrust": 1.0, "foot_lead_time": 0.3}
+                  "arm_swing": 1.0, "thrust_damping": 0.3, "vertical_thrust": 1.0, "landing_foot_lead_time": 0.3}
 SIDEWAYS_LIFTOFF_ROLL = 0.3         # rad: where a sideways search starts, feet abducted away from the target at
                                     # lift-off (with none, the man's 1.0 m jump left rolling at 4 kg m^2/s and
                                     # rolled to 59 deg by touchdown; 0.4 rad: -3)
 BOX_PRIOR = {"crouch_height": 0.55, "crouch_pitch": 0.0, "com_offset": 0.12, "liftoff_hip": 0.8,
-             "arm_swing": 1.0, "damping": 0.3, "vertical_thrust": 1.0, "crouch_arms": -0.6}
+             "arm_swing": 1.0, "thrust_damping": 0.3, "vertical_thrust": 1.0, "crouch_arms": -0.6}
                                     # where a box jump's search starts: the deep vertical leap of the
                                     # calibrated table (low thrust damping, the hips extending at lift-off
                                     # to cancel its spin), leaning forward, the arms back so that the
                                     # hands stay off the ground in the deep crouch
 BROAD_PRIOR = {"crouch_height": 0.655, "crouch_pitch": 0.0, "com_offset": 0.1, "liftoff_hip": 0.3,
-               "arm_swing": 1.0, "damping": 1.0, "vertical_thrust": 0.0}   # a ground target's, with no broad jump
-LANDING_PRIOR = {"foot_delta": 0.0, "swing_arms": 0.0, "arm_flexion": 0.6, "foot_lead_time": 0.2}
+               "arm_swing": 1.0, "thrust_damping": 1.0, "vertical_thrust": 0.0}   # a ground target's, with no broad jump
+LANDING_PRIOR = {"foot_delta": 0.0, "landing_swing_arms": 0.0, "landing_arm_flexion": 0.6, "landing_foot_lead_time": 0.2}
 
 
 REFINE_SHARE = 0.4                  # share of a search's trials kept for refining the best balanced trial

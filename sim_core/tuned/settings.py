@@ -6,7 +6,7 @@ from __future__ import annotations
 
 import dataclasses
 
-from ..schema import Schema
+from ..schema import Parameter, Schema
 
 
 class SkillSchema(Schema):
@@ -30,3 +30,10 @@ def with_defaults(ranges: Schema, values: dict) -> Schema:
     whose default is a calibrated or hand-tuned number; the others keep theirs."""
     return Schema(*(dataclasses.replace(p, default=float(values[p.name])) if p.name in values else p
                     for p in ranges.parameters))
+
+
+def ranged(name: str, unit: str, minimum: float, maximum: float, help_text: str) -> Parameter:
+    """A schema entry whose value is data (a table's row or constants): its unit, its range (a
+    sanity bound a stored value is checked against) and help; the default is only the range's low
+    end until ``with_defaults`` sets it from the table."""
+    return Parameter(name, unit, minimum, minimum, maximum, help_text)

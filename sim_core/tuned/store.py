@@ -108,16 +108,21 @@ def require_calibrated(table: str, character: str, skill: str) -> None:
 def load(skill: str, character: str, directory: Path | None = None) -> dict | None:
     """The checked body of ``<skill>_<character>.json`` (every section but the header), or None
     when there is no such table."""
+    data = read(skill, character, directory)
+    return None if data is None else check(table_path(skill, character, directory).name, skill, character, data)
+
+
+def read(skill: str, character: str, directory: Path | None = None) -> dict | None:
+    """The parsed file ``<skill>_<character>.json``, unchecked (None when there is none)."""
     path = table_path(skill, character, directory)
     try:
         text = path.read_text()
     except FileNotFoundError:
         return None
     try:
-        data = json.loads(text)
+        return json.loads(text)
     except json.JSONDecodeError as error:
         raise TableError(f"{path.name}: not valid JSON ({error})") from None
-    return check(path.name, skill, character, data)
 
 
 def save(skill: str, character: str, body: dict, strengths: Iterable[str], directory: Path | None = None) -> Path:
@@ -143,6 +148,13 @@ def dumps(data: dict) -> str:
 def check(name: str, skill: str, character: str, data: dict) -> dict:
     """``data`` (a whole file) checked: header, then every row against the skill's settings
     schema; returns the body. Refusals are one line naming the file and the bad value."""
+    body = check_header(name, skill, character, data)
+    check_rows(name, skill, body)
+    return body
+
+
+def check_header(name: str, skill: str, character: str, data: dict) -> dict:
+    """The header of ``data`` (a whole file) checked; returns the body (every section but the header)."""
     version = data.get("schema_version")
     if version != SCHEMA_VERSION:
         raise TableError(f"{name}: schema_version={version!r}, this sim_core reads version {SCHEMA_VERSION}")
@@ -152,9 +164,7 @@ def check(name: str, skill: str, character: str, data: dict) -> dict:
     strengths = data.get("strengths")
     if not isinstance(strengths, list) or any(s not in STRENGTHS for s in strengths):
         raise TableError(f"{name}: strengths={strengths!r} must be a list of {', '.join(STRENGTHS)}")
-    body = {k: v for k, v in data.items() if k not in HEADER}
-    check_rows(name, skill, body)
-    return body
+    return {k: v for k, v in data.items() if k not in HEADER}
 
 
 def check_rows(name: str, skill: str, body: dict) -> None:

@@ -23,7 +23,7 @@ import math
 import numpy as np
 
 from ...control.behaviour import register
-from ...control.leap import THRUST_DAMPING
+from ...control.leap import CONSTANTS as LEAP
 from ...control.sequencer import Sequence, Step
 from ...ballistics import GRAVITY, time_to_fall_to
 from ...control.takeoff import SETTINGS, takeoff_steps
@@ -33,24 +33,30 @@ from ...errors import ParameterError
 from ...schema import Choice, Parameter, Schema
 from ...tuned import TableType, load, register as register_table, require_calibrated
 from ...tuned.settings import SkillSchema
+from ...tuned.constants import constant, constant_rows, read_constants, with_constants
+
+# the dive's hand-set constants: data, dives_any.json's "constants" (docs/tables.md)
+DIVE_CONSTANTS = Schema(
+    constant("takeoff_clear", "s", 0.0, 1.0, "this long without contact makes a take-off"),
+    constant("platform_margin", "m", 0.0, 0.5, "room kept between the turning body and the platform"),
+    constant("feet_clearance", "m", 0.0, 1.0, "the position is taken once the feet are this far past the platform's edge"),
+    constant("position_move", "s", 0.0, 1.0, "after take-off, before the position is held (in the feasibility estimate)"),
+    constant("snap", "1", 1.0, 10.0, "gain factor of the hip, knee and spine servos for the moves into and out of the position"),
+    constant("open_move", "s", 0.01, 1.0, "the servo move from the position to the line"),
+    constant("open_time", "s", 0.0, 1.0, "time to straighten from the position into the line"),
+    constant("twist_stop_lead", "s", 0.0, 1.0, "the arms come back this much of the measured twist rate early"),
+    constant("tilt_doubling_twists", "1", 0.0, 5.0, "from this many twists the arms come back at the half twist (see twist_moves)"),
+    constant("flight_step_division", "count", 1.0, 64.0,
+             "the flight's physics step is the model's divided by this: with the 1 ms step a fast twist (10-12 rad/s) "
+             "let the flight's angular momentum drift 4 % (measured: 4.4 / 2.1 / 1.0 % at 1 / 0.5 / 0.25 ms)"),
+    constant("entry_reach", "1", 0.0, 3.0, "share of the standing COM height the hands reach below the COM in the line"),
+)
+CONSTANTS = read_constants("dives", DIVE_CONSTANTS)
 
 GROUPS = ("inward", "back", "forward", "reverse")
 FORWARD_ROTATING = ("inward", "forward")      # the others somersault backward
 FACING_THE_WATER = ("forward", "reverse")     # the others stand backwards, heels at the edge
 LEAP_SETTINGS = SETTINGS + ("thrust_damping", "twist_lead")
-TAKEOFF_CLEAR = 0.05       # s without contact that make a take-off
-PLATFORM_MARGIN = 0.05     # m of room kept between the turning body and the platform
-FEET_CLEARANCE = 0.15      # m: the position is taken once the feet are this far past the platform's edge
-POSITION_MOVE = 0.15       # s after take-off before the position is held (in the feasibility estimate)
-SNAP = 3.0                 # hip, knee and spine gains x3 for the moves into and out of the position
-OPEN_MOVE = 0.2            # s: the servo move from the position to the line
-OPEN_TIME = 0.18            # s: time to straighten from the position into the line
-TWIST_STOP_LEAD = 0.15      # s of the measured twist rate: arms come back this early
-TILT_DOUBLING_TWISTS = 1.5  # from this many twists the arms come back at the half twist (see twist_moves)
-FLIGHT_STEP_DIVISION = 8    # the flight's physics step is the model's / this: with the 1 ms step a fast
-                            # twist (10-12 rad/s) let the flight's angular momentum drift 4 % (measured:
-                            # 4.4 / 2.1 / 1.0 % at 1 / 0.5 / 0.25 ms, the dive otherwise the same)
-ENTRY_REACH = 1.15          # share of the standing COM height: hands below the COM in the line
 ROTATION_TOLERANCE = 0.25   # turns: a dive's somersaults and twists count within a quarter turn of its name
 
 CALIBRATED_DIVES = {   # the dives python -m sim_core calibrate dive calibrates, per character, in its table's order:
@@ -105,7 +111,7 @@ DIVE_SETTINGS = Schema(
     Parameter("liftoff_hip", "rad", 0.0, -2.2, 2.0,
               "hip flexion (-, forward somersault) or extension (+, backward) at lift-off"),
     Parameter("arm_swing", "rad", 2.5, -1.0, 3.2, "arm swing during the thrust, forward and up (+) or back (-)"),
-    Parameter("thrust_damping", "1", THRUST_DAMPING, 0.1, 1.0,
+    Parameter("thrust_damping", "1", LEAP.thrust_damping_default, 0.1, 1.0,
               "share of the stiffened leg servos' damping kept in the thrust; less extends faster"),
     Parameter("twist_lead", "s", 0.6, 0.0, 2.0,
               "twisting dives: open and throw the arms at the latest this long before the predicted entry "
@@ -113,7 +119,8 @@ DIVE_SETTINGS = Schema(
 )
 
 DIVES_TABLE = register_table(TableType(
-    "dives", DIVE_SETTINGS, lambda body: ((f"dive {k}", d["settings"]) for k, d in enumerate(body["dives"])), (dive_row,)))
+    "dives", with_constants(DIVE_SETTINGS, DIVE_CONSTANTS),
+    lambda body: (*((f"dive {k}", d["settings"]) for k, d in enumerate(body["dives"])), *constant_rows(body)), (dive_row,)))
 
 
 @register
@@ -193,7 +200,7 @@ class Dive(Sequence):
         spent in the position for the flight time less the take-off and opening, and in the line
         for the rest."""
         momentum = limits["angular_momentum"].get(group_name(self.params), 0.0)
-        straight = min(flight, OPEN_TIME + POSITION_MOVE)
+        straight = min(flight, CONSTANTS.open_time + CONSTANTS.position_move)
         angle = momentum * ((flight - straight) / self._position_inertia() + straight / self._line_inertia())
         return angle / (2 * math.pi)
 
@@ -205,7 +212,7 @@ class Dive(Sequence):
         return math.sqrt(2 * rise / GRAVITY) + math.sqrt(2 * max(drop, 0.0) / GRAVITY)
 
     def _entry_reach(self) -> float:
-        return ENTRY_REACH * float(self.ctx.character.bodies[0]["com"][2])
+        return CONSTANTS.entry_reach * float(self.ctx.character.bodies[0]["com"][2])
 
     def _position_inertia(self) -> float:
         return position_inertia(self.ctx.model, self.ctx.character, position_name(self.params["position"]),
@@ -227,13 +234,13 @@ class Dive(Sequence):
 
         def tumble(t):
             self.rotation.takeoff(t)
-            return _Aerial(Tumble.schema.validate(dict(position=p["position"], stiffness=SNAP)), ctx, self.rotation, self)
+            return _Aerial(Tumble.schema.validate(dict(position=p["position"], stiffness=CONSTANTS.snap)), ctx, self.rotation, self)
 
         def entry(t):
-            return _Aerial(Tumble.schema.validate(dict(position=3, move_time=OPEN_MOVE, stiffness=SNAP)), ctx,
+            return _Aerial(Tumble.schema.validate(dict(position=3, move_time=CONSTANTS.open_move, stiffness=CONSTANTS.snap)), ctx,
                            self.rotation, self)
 
-        return takeoff_steps(ctx, dict(cfg, damping=cfg["thrust_damping"])) + [
+        return takeoff_steps(ctx, cfg) + [
             Step("tumble", tumble, lambda b, t: self.time_to_open(t)), Step("entry", entry)]
 
     # ------------------------------------------------------------------ transitions
@@ -248,10 +255,10 @@ class Dive(Sequence):
         rate_line = self.direction * float(d.subtree_angmom[root][1]) / self._line_inertia()
         time_left = time_to_fall_to(float(d.subtree_com[root][2]), float(d.subtree_linvel[root][2]),
                                     -self.params["platform_height"] + self._entry_reach())
-        coming = rotation_to_come(rate_now, rate_line, time_left, OPEN_TIME)
+        coming = rotation_to_come(rate_now, rate_line, time_left, CONSTANTS.open_time)
         if self.twist_target and time_left <= self.cfg["twist_lead"]:
             return True                  # the twist needs this long in the layout
-        if time_left <= OPEN_TIME:
+        if time_left <= CONSTANTS.open_time:
             return True                  # enter straight even if the rotation falls short
         return coming >= remaining
 
@@ -295,7 +302,7 @@ class _Aerial(Tumble):
         self.radius = position_radius(m, ctx.character, position_name(self.params["position"]), ctx.actor)
 
     def start(self, t: float) -> None:
-        self.ctx.step_division = FLIGHT_STEP_DIVISION
+        self.ctx.step_division = CONSTANTS.flight_step_division
         if self.clear:
             super().start(t)
             return
@@ -311,9 +318,9 @@ class _Aerial(Tumble):
         d = self.ctx.data
         com = d.subtree_com[self.ctx.actor.root]
         past = self.water_side * (com[0] - self.edge)           # how far the COM is out over the water
-        if com[2] - self.radius > PLATFORM_MARGIN or past - self.radius > PLATFORM_MARGIN:
+        if com[2] - self.radius > CONSTANTS.platform_margin or past - self.radius > CONSTANTS.platform_margin:
             return True
-        return min(self.water_side * (float(d.xpos[b][0]) - self.edge) for b in self.feet) > FEET_CLEARANCE
+        return min(self.water_side * (float(d.xpos[b][0]) - self.edge) for b in self.feet) > CONSTANTS.feet_clearance
 
     def update(self, t: float) -> None:
         super().update(t)
@@ -326,7 +333,7 @@ class _Aerial(Tumble):
         if self.moves_made == len(self.moves):
             return
         rate = abs(float(self.ctx.data.qvel[self.ctx.actor.root_dof + 5]))
-        turns = (abs(self.rotation.twist) + rate * TWIST_STOP_LEAD) / (2 * math.pi)
+        turns = (abs(self.rotation.twist) + rate * CONSTANTS.twist_stop_lead) / (2 * math.pi)
         at, move = self.moves[self.moves_made]
         if turns >= at:
             if move == "back":
@@ -338,7 +345,7 @@ class _Aerial(Tumble):
 
 def twist_moves(twists: float) -> list[tuple[float, str]]:
     """The arm moves of a twist, each made once the twist count (with the measured rate's lead)
-    reaches its turn: the throw at once and the arms back at the end; from TILT_DOUBLING_TWISTS
+    reaches its turn: the throw at once and the arms back at the end; from CONSTANTS.tilt_doubling_twists
     on, also the arms back at the half twist and a second throw half a twist before the end.
     An arm move turns the body about its own front-to-back axis; after half a twist that axis
     points the other way about the angular momentum, so the same move tilts the body the other
@@ -348,7 +355,7 @@ def twist_moves(twists: float) -> list[tuple[float, str]]:
     away and the arms back at the end the other: half a twist before a whole number of twists
     that is the same throw, before a whole-and-a-half the mirrored one (the other arm down),
     whose arms-back then comes at a half twist (Frohlich 1979; Yeadon 1993)."""
-    if twists < TILT_DOUBLING_TWISTS:
+    if twists < CONSTANTS.tilt_doubling_twists:
         return [(0.0, "throw"), (twists, "back")]
     whole = abs(twists - round(twists)) < 1e-6
     return [(0.0, "throw"), (0.5, "back"), (twists - 0.5, "throw" if whole else "mirrored throw"), (twists, "back")]
@@ -378,7 +385,7 @@ def dive_assess(trajectory) -> tuple[str, dict]:
     feet = [names.index("FOOTR"), names.index("FOOTL")]
     on_platform = a["ground_contact"].any(axis=1)
     metrics: dict = {}
-    start = takeoff_index(on_platform, int(TAKEOFF_CLEAR * meta["control_rate"]))
+    start = takeoff_index(on_platform, int(CONSTANTS.takeoff_clear * meta["control_rate"]))
     end = len(a["time"]) - 1
     if start is None or start >= end:
         return "no_flight", metrics

@@ -20,7 +20,7 @@ from ...character.model import compile_model
 from ...character.spec import load_character
 from .behaviour import CALIBRATED_DIVES, dive_name
 from ..somersault.behaviour import DIRECTIONS
-from ...control.tumble import SEED_INERTIA, inertia_about_com, position_inertia
+from ...control.tumble import CONSTANTS as TUMBLE, inertia_about_com, position_inertia
 from ...errors import ParameterError
 from ...simulate import RunRequest, run
 
@@ -45,7 +45,7 @@ def inertia_series(trajectory) -> np.ndarray:
 
 def inertia_table() -> list[str]:
     lines = ["| character | position | this model, kg m² | Wooten Fig. 5.2 | difference |", "| --- | --- | --- | --- | --- |"]
-    for character, seeds in SEED_INERTIA.items():
+    for character, seeds in TUMBLE.seed_inertia.items():
         spec = load_character(character)
         model, _ = compile_model(spec)
         for position, seed in seeds.items():

@@ -28,7 +28,7 @@ from ...ballistics import GRAVITY
 from ...analysis import FOOT_BODIES, feet_above_surface, standard_metrics, surface_under_points, true_runs
 from ...control.balance import Balance, standing_hip_height
 from ...control.behaviour import Behaviour, ControlContext, register
-from ...control.leap import (ANKLE_GAIN_VERTICAL, AIRBORNE_HEIGHT, VERTICAL_TIMING, Airborne,
+from ...control.leap import (CONSTANTS as LEAP, AIRBORNE_HEIGHT, Airborne,
                                    Landing, LeapThrust, balance_after_landing, run_strength)
 from ...control.sequencer import Sequence, Step
 from ..somersault.behaviour import FLIGHT_STEP_PARAMETER, ROTATION_TOLERANCE, SQUAT_LOWEST, pelvis_pitch
@@ -36,18 +36,23 @@ from ...control.tumble import FlightRotation, both_sides
 from ...control.tuned import uncalibrated
 from ...schema import Parameter, Schema
 from ...tuned import TableError, TableType, keyed, load, register as register_table
-from ...tuned.settings import SkillSchema
+from ...tuned.settings import SkillSchema, ranged as setting   # a setting's range: its default is the table's
+from ...tuned.constants import constant, constant_rows, read_constants, with_constants
+
+# the handspring's hand-set constants: data, handspring_any.json's "constants" (docs/tables.md)
+HANDSPRING_CONSTANTS = Schema(
+    constant("sit_timeout", "s", 0.0, 10.0, "the thrust starts at the latest this long into the run, fallen back or not"),
+    constant("arch_move", "s", 0.01, 1.0, "the servo move into the arch after lift-off"),
+    constant("arch_gain", "1", 1.0, 10.0, "gain factor of the arched joints' servos in the first flight"),
+    constant("push_clear", "s", 0.0, 0.5, "after the push starts, this long before a flight counts as the second one"),
+    constant("landing_blend", "s", 0.0, 1.0, "the landing's targets blend in from the snap over this time"),
+    constant("arch", "rad", -3.2, 3.2, "joint angles of the arch by joint name (the spine at, near, its extension range)"),
+    constant("snap_spine", "rad", -3.2, 3.2, "spine angles of the snap-down by joint name"),
+)
+CONSTANTS = read_constants("handspring", HANDSPRING_CONSTANTS)
 
 HAND_BODIES = ("HANDR", "HANDL")
-SIT_TIMEOUT = 3.0          # s into the run: the thrust starts at the latest then, fallen back or not
-ARCH_MOVE = 0.2            # s: the servo move into the arch after lift-off
-ARCH_GAIN = 2.0            # gain factor of the arched joints' servos in the first flight
-PUSH_CLEAR = 0.03          # s after the push starts before a flight counts as the second one
-LANDING_BLEND = 0.1        # s: the landing's targets blend in from the snap
 SKID_LIMIT = 0.05          # m: the middle of the feet moving further after touchdown is a step or skid
-ARCH = {"elbow_*_z": 0.0, "knee_*_y": 0.0, "spine_l3_y": -0.13, "spine_l1_y": -0.13, "spine_t7_y": -0.08,
-        "spine_t4_y": -0.08, "wrist_*_x": 0.0, "ankle_*_y": 0.5}      # the spine at (near) its extension range
-SNAP_SPINE = {"spine_l3_y": 0.2, "spine_l1_y": 0.2}
 ARMS = ["shoulder_r_z", "shoulder_l_z", "shoulder_r_x", "shoulder_l_x", "elbow_r_z", "elbow_l_z",
         "wrist_r_x", "wrist_l_x"]
 
@@ -55,7 +60,7 @@ TAKEOFF_SETTINGS = ("crouch_height", "crouch_pitch", "com_offset", "sit_extra", 
                     "arm_swing", "arm_gain", "arm_time", "thrust_damping")
 HAND_SETTINGS = ("arch_arm", "arch_hip", "neck", "hand_gain", "push_delay", "push_shoulder", "push_hip",
                  "snap_knee", "push_move", "push_gain", "push_damping")
-LANDING_SETTINGS = ("land_lean", "open_height", "ready_height", "land_knee", "foot_delta", "foot_lead", "spin_placement")
+LANDING_SETTINGS = ("landing_lean", "open_height", "ready_height", "landing_knee_flexion", "foot_delta", "landing_foot_lead_time", "spin_placement")
 SETTINGS = TAKEOFF_SETTINGS + HAND_SETTINGS + LANDING_SETTINGS + ("flight_step_division",)
 OLD_ROW = {"push_damping": 0.0, "flight_step_division": 1}   # what a row calibrated before these settings
                             # ran with: it reproduces
@@ -74,11 +79,6 @@ def handspring_row(table: dict, strength: str) -> dict | None:
 def calibrated(character: str, strength: str) -> dict | None:
     """The calibrated handspring of this character and strength, or None."""
     return handspring_row(load_table(character), strength)
-
-
-def setting(name: str, unit: str, minimum: float, maximum: float, help_text: str) -> Parameter:
-    """A handspring setting's range (its default is set below from the table)."""
-    return Parameter(name, unit, minimum, minimum, maximum, help_text)
 
 
 SETTING_RANGES = Schema(
@@ -109,24 +109,24 @@ SETTING_RANGES = Schema(
     setting("push_damping", "1", 0.0, 10.0,
               "damping factor of the servos of the push; 0 = push_gain (damped as much as stiffened, so no "
               "faster than the default servo); lighter moves the block and the snap-down sooner (low_level only)"),
-    setting("land_lean", "rad", 0.0, 1.6,
+    setting("landing_lean", "rad", 0.0, 1.6,
               "the landing starts when the pelvis has turned this much short of one turn (low_level only)"),
     setting("open_height", "m", 0.4, 1.1,
               "... or when the COM has come down to this height, whichever is first (low_level only)"),
     setting("ready_height", "m", 0.0, 0.8,
               "... or when a foot has come down to this height above the ground (low_level only)"),
-    setting("land_knee", "rad", 0.3, 1.4, "knee bend held for touchdown (low_level only)"),
+    setting("landing_knee_flexion", "rad", 0.3, 1.4, "knee bend held for touchdown (low_level only)"),
     setting("foot_delta", "m", -0.3, 0.3, "landing: foot servo delta (low_level only)"),
-    setting("foot_lead", "s", 0.0, 0.6,
+    setting("landing_foot_lead_time", "s", 0.0, 0.6,
               "landing: the feet land this many seconds of horizontal COM travel ahead of the COM (low_level only)"),
     setting("spin_placement", "s/m", 0.0, 0.5,
               "landing: feet placed this factor x (angular momentum / mass) against the spin (low_level only)"),
     FLIGHT_STEP_PARAMETER,
 )
 HANDSPRING_TABLE = register_table(TableType(
-    "handspring", SETTING_RANGES,
-    lambda body: ((f"{kind} {e['strength']}", e["settings"]) for kind in ("handsprings", "not_found")
-                  for e in body.get(kind, [])),
+    "handspring", with_constants(SETTING_RANGES, HANDSPRING_CONSTANTS),
+    lambda body: (*((f"{kind} {e['strength']}", e["settings"]) for kind in ("handsprings", "not_found")
+                    for e in body.get(kind, [])), *constant_rows(body)),
     (handspring_row,)))
 # the settings' defaults are data: the man's calibrated unlimited-strength row, so that low_level=1 with
 # nothing set runs that handspring
@@ -226,16 +226,16 @@ class Handspring(Sequence):
                 move_start=0.2, move_time=0.8, hold_time=0.0, return_to_stand=0)), ctx)
 
         def fallen_back(b, t):
-            return b.com_ahead_of_support() < c["com_offset"] - c["sit_extra"] or t > SIT_TIMEOUT
+            return b.com_ahead_of_support() < c["com_offset"] - c["sit_extra"] or t > CONSTANTS.sit_timeout
 
         def thrust(t):
-            return ArmSwingThrust({}, ctx, c["crouch_height"], VERTICAL_TIMING, ANKLE_GAIN_VERTICAL,
-                                  c["liftoff_hip"], c["arm_swing"], stand_height=stand, damping=c["thrust_damping"],
-                                  lean=c["thrust_lean"], arm_gain=c["arm_gain"], arm_time=c["arm_time"])
+            return ArmSwingThrust({}, ctx, c["crouch_height"], LEAP.vertical_timing, LEAP.ankle_gain_vertical,
+                                  c["liftoff_hip"], c["arm_swing"], stand_height=stand, thrust_damping=c["thrust_damping"],
+                                  thrust_lean=c["thrust_lean"], arm_gain=c["arm_gain"], arm_time=c["arm_time"])
 
-        arch = both_sides({"shoulder_*_z": c["arch_arm"], "hip_*_y": c["arch_hip"], "neck_c2_y": c["neck"], **ARCH})
+        arch = both_sides({"shoulder_*_z": c["arch_arm"], "hip_*_y": c["arch_hip"], "neck_c2_y": c["neck"], **CONSTANTS.arch})
         push = both_sides({"shoulder_*_z": c["push_shoulder"], "hip_*_y": c["push_hip"], "knee_*_y": c["snap_knee"],
-                            **SNAP_SPINE})
+                            **CONSTANTS.snap_spine})
 
         def hands(t):
             self.t_hands = t
@@ -243,21 +243,21 @@ class Handspring(Sequence):
 
         def arch_flight(t):
             ctx.step_division = int(c["flight_step_division"])     # until the landing's touchdown
-            return PoseMove(ctx, arch, ARCH_MOVE, ARCH_GAIN)
+            return PoseMove(ctx, arch, CONSTANTS.arch_move, CONSTANTS.arch_gain)
 
         def pushed_off(b, t):
-            return (t - self.t_hands > c["push_delay"] + PUSH_CLEAR and not self.hands.touching(ctx.data)
+            return (t - self.t_hands > c["push_delay"] + CONSTANTS.push_clear and not self.hands.touching(ctx.data)
                     and self.airborne.in_flight(ctx.data))
 
         def open_for_landing(b, t):
             turned = -self.rotation.somersault
-            return (turned >= 2 * math.pi - c["land_lean"] or ctx.data.subtree_com[ctx.actor.root][2] < c["open_height"]
+            return (turned >= 2 * math.pi - c["landing_lean"] or ctx.data.subtree_com[ctx.actor.root][2] < c["open_height"]
                     or self.airborne.feet_heights(ctx.data).min() < c["ready_height"])
 
         def land(t):
             return Landing(Landing.schema.validate(dict(
-                knee_flexion=c["land_knee"], fast_knee_flexion=c["land_knee"], foot_delta=c["foot_delta"],
-                foot_lead_time=c["foot_lead"], spin_placement=c["spin_placement"], blend_time=LANDING_BLEND)), ctx)
+                knee_flexion=c["landing_knee_flexion"], fast_knee_flexion=c["landing_knee_flexion"], foot_delta=c["foot_delta"],
+                foot_lead_time=c["landing_foot_lead_time"], spin_placement=c["spin_placement"], blend_time=CONSTANTS.landing_blend)), ctx)
 
         return [
             Step("crouch", sit, fallen_back),

@@ -59,15 +59,15 @@ SPACE = {                    # name: (low, high) of the search (inside the schem
     "thrust_lean": (-0.4, -0.1), "liftoff_hip": (0.0, 0.5), "arm_swing": (2.0, 3.1), "arm_gain": (2.0, 10.0),
     "arm_time": (0.06, 0.2), "thrust_damping": (0.2, 1.0), "arch_arm": (1.6, 3.0), "arch_hip": (0.0, 0.5),
     "neck": (-0.8, 0.0), "hand_gain": (1.0, 15.0), "push_delay": (0.0, 0.15), "push_shoulder": (1.5, 3.1),
-    "push_hip": (-1.5, 0.3), "snap_knee": (0.0, 1.0), "ready_height": (0.0, 0.7), "push_move": (0.05, 0.25), "push_gain": (1.0, 8.0), "push_damping": (0.5, 8.0), "land_lean": (0.0, 1.5),
-    "open_height": (0.5, 1.0), "land_knee": (0.3, 0.9), "foot_delta": (-0.3, 0.1), "foot_lead": (0.0, 0.4),
+    "push_hip": (-1.5, 0.3), "snap_knee": (0.0, 1.0), "ready_height": (0.0, 0.7), "push_move": (0.05, 0.25), "push_gain": (1.0, 8.0), "push_damping": (0.5, 8.0), "landing_lean": (0.0, 1.5),
+    "open_height": (0.5, 1.0), "landing_knee_flexion": (0.3, 0.9), "foot_delta": (-0.3, 0.1), "landing_foot_lead_time": (0.0, 0.4),
     "spin_placement": (0.0, 0.5),
 }
 KEEP = ("rotation", "rotation_before_fall", "rotation_at_hands", "com_rise", "com_travel", "liftoff_angular_momentum",
         "liftoff_velocity", "first_flight_time", "hand_contact_time", "second_flight_time", "touchdown_velocity",
         "angular_momentum_drift", "landing_skid", "rebounds", "fall_time", "touchdown_time", "final_com_speed",
         "feet_down_at_hands", "sit_shortfall", "time_on_feet")
-NEIGHBOUR_STEP = {"push_delay": 0.01, "land_lean": 0.01}
+NEIGHBOUR_STEP = {"push_delay": 0.01, "landing_lean": 0.01}
 
 
 def evaluate(job) -> tuple[float, dict]:
@@ -145,7 +145,7 @@ def most_robust(executor, character, strength, successes) -> tuple[float, dict, 
                 if a or b:
                     near = dict(settings)
                     near["push_delay"] = max(0.0, near["push_delay"] + a * NEIGHBOUR_STEP["push_delay"])
-                    near["land_lean"] = near["land_lean"] + b * NEIGHBOUR_STEP["land_lean"]
+                    near["landing_lean"] = near["landing_lean"] + b * NEIGHBOUR_STEP["landing_lean"]
                     jobs.append((character, strength, near))
         neighbours = sum(found(r[1]) for r in executor.map(evaluate, jobs))
         print(f"    candidate score {s:.3f}: {neighbours}/8 neighbours succeed", flush=True)

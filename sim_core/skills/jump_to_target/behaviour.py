@@ -184,10 +184,10 @@ def leap_params(settings: dict, target, windup_time: float) -> dict:
     return {"low_level": 1, "distance": 0.0 if vertical else max(float(target[0]), 0.05),
             "crouch_height": settings["crouch_height"], "crouch_pitch": settings["crouch_pitch"],
             "com_offset": settings["com_offset"], **optional_knobs(settings),
-            "liftoff_hip_angle": settings["liftoff_hip"],
-            "arm_swing": settings["arm_swing"], "thrust_damping": settings["damping"],
+            "liftoff_hip": settings["liftoff_hip"],
+            "arm_swing": settings["arm_swing"], "thrust_damping": settings["thrust_damping"],
             "foot_delta": settings["foot_delta"], "crouch_time": crouch_time(windup_time),
-            **{"landing_" + k: v for k, v in landing_settings(settings).items()}}
+            **landing_settings(settings)}
 
 
 def optional_knobs(settings: dict) -> dict:
@@ -197,9 +197,10 @@ def optional_knobs(settings: dict) -> dict:
 
 def landing_settings(settings: dict) -> dict:
     """The landing's settings among the planner's (the leap passes them to its landing)."""
-    return {"swing_arms": float(settings["swing_arms"] > 0.5), "arm_flexion": settings["arm_flexion"],
-            "foot_lead_time": settings["foot_lead_time"],
-            "place_sideways": float(abs(settings.get("com_offset_y", 0.0)) > 0.0)}
+    return {"landing_swing_arms": float(settings["landing_swing_arms"] > 0.5),
+            "landing_arm_flexion": settings["landing_arm_flexion"],
+            "landing_foot_lead_time": settings["landing_foot_lead_time"],
+            "landing_place_sideways": float(abs(settings.get("com_offset_y", 0.0)) > 0.0)}
 
 
 def crouch_time(windup_time: float) -> float:
@@ -364,7 +365,7 @@ class JumpToTarget(Leap):
 
     def settings(self, p: dict) -> dict:
         settings = {k: self.plan["settings"][k] for k in ("crouch_height", "crouch_pitch", "com_offset", "arm_swing",
-                                                          "damping", "liftoff_hip", "foot_delta")}
+                                                          "thrust_damping", "liftoff_hip", "foot_delta")}
         settings.update(optional_knobs(self.plan["settings"]))
         settings["crouch_time"] = crouch_time(self.params["windup_time"])
         settings.update(landing_settings(self.plan["settings"]))

@@ -8,7 +8,7 @@ import numpy as np
 
 from ...control.balance import Balance, standing_hip_height
 from ...control.behaviour import register
-from ...control.leap import ANKLE_GAIN_BROAD, ANKLE_GAIN_VERTICAL, BROAD_TIMING, BROAD_TRIGGER, LOW_LEVEL_SETTINGS, Landing, LeapThrust, SIDEWAYS_HEADING_KP, VERTICAL_TIMING, balance_after_landing, broad_row, commandable_heights, leap_assess, load_mapping, vertical_key, vertical_row
+from ...control.leap import CONSTANTS as LEAP, LOW_LEVEL_SETTINGS, Landing, LeapThrust, balance_after_landing, broad_row, commandable_heights, leap_assess, load_mapping, vertical_key, vertical_row
 from ...control.sequencer import Sequence, Step
 from ...errors import ParameterError
 from ...schema import Parameter
@@ -28,7 +28,7 @@ class Leap(Sequence):
                   "it if that one's measured rise is within 10 % (3 cm below 0.3 m), else interpolates"),
         Parameter("distance", "m", 0.0, 0.0, 2.5,
                   "commanded horizontal COM travel (broad jump); 0 = vertical leap"),
-        Parameter("liftoff_hip_angle", "rad", 0.0, -1.0, 1.0,
+        Parameter("liftoff_hip", "rad", 0.0, -1.0, 1.0,
                   "hip flexion (-) or extension (+) at lift-off beyond the calibrated neutral (0 = no "
                   "somersault): sends the ground force past the COM and sets the somersault rate"),
         Parameter("low_level", "bool", 0.0, 0.0, 1.0,
@@ -59,7 +59,7 @@ class Leap(Sequence):
         if p["low_level"] or p["distance"] <= 0:
             return p
         row = broad_row(load_mapping(self.ctx.character.name)["broad"], p["distance"])
-        row["liftoff_hip_angle"] = row.get("liftoff_hip_angle", 0.0) + p["liftoff_hip_angle"]
+        row["liftoff_hip"] = row.get("liftoff_hip", 0.0) + p["liftoff_hip"]
         return self.schema.validate(row)
 
     def settings(self, p: dict) -> dict:
@@ -70,11 +70,10 @@ class Leap(Sequence):
             settings = {k: p[k] for k in ("crouch_height", "crouch_pitch", "com_offset", "com_offset_y",
                                           "liftoff_roll", "arm_swing", "crouch_arms", "thrust_damping",
                                           "thrust_lean", "spin_hold")}
-            settings["damping"] = settings.pop("thrust_damping")
-            settings["liftoff_hip"] = p["liftoff_hip_angle"]
+            settings["liftoff_hip"] = p["liftoff_hip"]
             return settings
         row = vertical_row(load_mapping(self.ctx.character.name)[vertical_key(self.ctx)], p["height"])
-        return {**row, "liftoff_hip": row["liftoff_hip"] + p["liftoff_hip_angle"]}
+        return {**row, "liftoff_hip": row["liftoff_hip"] + p["liftoff_hip"]}
 
     def check_feasible(self) -> None:
         p = self.params
@@ -127,7 +126,7 @@ class Leap(Sequence):
                                                 com_offset_x=cfg["com_offset"],
                                                 com_offset_y=cfg.get("com_offset_y", 0.0),
                                                 arm_flexion=cfg.get("crouch_arms", 0.0), move_start=0.2,
-                                                heading_kp=SIDEWAYS_HEADING_KP if cfg.get("com_offset_y") else 0.0,
+                                                heading_kp=LEAP.sideways_heading_kp if cfg.get("com_offset_y") else 0.0,
                                                 spin_kp=cfg.get("spin_hold", 0.0),
                                                 move_time=cfg["crouch_time"] if "crouch_time" in cfg
                                                 else p["crouch_time"],
@@ -140,21 +139,21 @@ class Leap(Sequence):
                 sideways = cfg.get("com_offset_y", 0.0)
                 if sideways:        # a sideways jump: thrust once the COM has left the feet sideways
                     return b.posture_reached(t) or b.com_left_of_support() * math.copysign(1.0, sideways) > \
-                        BROAD_TRIGGER * abs(sideways)
-                return b.posture_reached(t) or b.com_ahead_of_support() > BROAD_TRIGGER * cfg["com_offset"]
+                        LEAP.broad_trigger * abs(sideways)
+                return b.posture_reached(t) or b.com_ahead_of_support() > LEAP.broad_trigger * cfg["com_offset"]
             return b.posture_reached(t - 0.15)
 
         def thrust(t):
-            return LeapThrust({}, ctx, cfg["crouch_height"], BROAD_TIMING if broad else VERTICAL_TIMING,
-                              ANKLE_GAIN_BROAD if broad else ANKLE_GAIN_VERTICAL, cfg["liftoff_hip"],
-                              cfg["arm_swing"], stand_height=standing_hip_height(ctx.character), damping=cfg["damping"],
-                              liftoff_roll=cfg.get("liftoff_roll", 0.0), lean=cfg.get("thrust_lean", 0.0),
+            return LeapThrust({}, ctx, cfg["crouch_height"], LEAP.broad_timing if broad else LEAP.vertical_timing,
+                              LEAP.ankle_gain_broad if broad else LEAP.ankle_gain_vertical, cfg["liftoff_hip"],
+                              cfg["arm_swing"], stand_height=standing_hip_height(ctx.character), thrust_damping=cfg["thrust_damping"],
+                              liftoff_roll=cfg.get("liftoff_roll", 0.0), thrust_lean=cfg.get("thrust_lean", 0.0),
                               spin_hold=cfg.get("spin_hold", 0.0))
 
         def land(t):
             # the calibrated leap's own correction of the landing's foot servo delta, plus the user's
             delta = min(max(p.get("foot_delta", 0.0) + cfg.get("foot_delta", 0.0), -0.3), 0.3)
-            landing = {k: cfg.get(k, p.get("landing_" + k, Landing.schema.defaults()[k]))
+            landing = {k: cfg.get("landing_" + k, p.get("landing_" + k, Landing.schema.defaults()[k]))
                        for k in ("swing_arms", "arm_flexion", "foot_lead_time", "place_sideways", "knee_flexion")}
             landing["fast_knee_flexion"] = landing["knee_flexion"]     # calibrated with one knee bend
             return Landing(Landing.schema.validate(dict(foot_delta=delta, **landing)), ctx)

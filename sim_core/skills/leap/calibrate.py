@@ -71,7 +71,7 @@ WIDE_FALLBACK_FOOT_DELTAS = (0.0, 0.04)                 # deep unlimited crouche
 
 def liftoff_state(character, crouch_height, hip, offset, damping=1.0, strength="human"):
     params = dict(low_level=1, crouch_height=crouch_height, crouch_pitch=0.0, com_offset=offset,
-                  liftoff_hip_angle=hip, arm_swing=ARM_SWING, thrust_damping=damping)
+                  liftoff_hip=hip, arm_swing=ARM_SWING, thrust_damping=damping)
     traj = run(RunRequest("leap", character, params=params, duration=THRUST_ONLY, strength=strength))
     flying = traj.arrays["support_points"][:, :, 2].min(axis=1) > AIRBORNE_HEIGHT
     if not flying.any():
@@ -114,7 +114,7 @@ def trial(args):
     character, crouch_height, damping, strength = args
     (hip, offset), residual = neutral_settings(character, crouch_height, damping, strength)
     params = dict(low_level=1, crouch_height=crouch_height, crouch_pitch=0.0, com_offset=float(offset),
-                  liftoff_hip_angle=float(hip), arm_swing=ARM_SWING, thrust_damping=damping)
+                  liftoff_hip=float(hip), arm_swing=ARM_SWING, thrust_damping=damping)
     traj = run(RunRequest("leap", character, params=params, duration=LEAP_DURATION, strength=strength))
     foot_delta = 0.0
     if traj.meta["outcome"] != "success" and damping < 1.0:
@@ -132,7 +132,7 @@ def trial(args):
         def landings(hips, offsets, deltas):
             found = []
             for h, o, d in itertools.product(hips, offsets, deltas):
-                p = dict(params, liftoff_hip_angle=h, com_offset=o, foot_delta=d)
+                p = dict(params, liftoff_hip=h, com_offset=o, foot_delta=d)
                 t = run(RunRequest("leap", character, params=p, duration=LEAP_DURATION, strength=strength))
                 if t.meta["outcome"] == "success":
                     found.append((abs(t.meta["metrics"]["com_travel"]), h, o, d, t))
@@ -144,7 +144,7 @@ def trial(args):
             _, hip, offset, foot_delta, traj = min(landed, key=lambda x: x[0])
             residual = None
     m = traj.meta["metrics"]
-    result = {"crouch_height": crouch_height, "damping": damping, "liftoff_hip": float(hip), "foot_delta": foot_delta,
+    result = {"crouch_height": crouch_height, "thrust_damping": damping, "liftoff_hip": float(hip), "foot_delta": foot_delta,
               "com_offset": float(offset), "residual": None if residual is None else [float(r) for r in residual],
               "com_rise": m["com_rise"], "com_travel": m["com_travel"], "peak_thrust_grf_body_weights": m.get("peak_thrust_grf_body_weights"),
               "outcome": traj.meta["outcome"]}
@@ -218,14 +218,14 @@ def vertical_table(results: list[dict]) -> dict:
     monotonic mapping the behaviour can interpolate): the damped thrust's leaps first, then the
     faster thrust's above the highest of those, so that neighbouring rows have like settings."""
     rows, best = [], -1.0
-    for damping in sorted({r["damping"] for r in results}, reverse=True):
-        family = sorted((r for r in results if r["outcome"] == "success" and r["damping"] == damping),
+    for damping in sorted({r["thrust_damping"] for r in results}, reverse=True):
+        family = sorted((r for r in results if r["outcome"] == "success" and r["thrust_damping"] == damping),
                         key=lambda r: r["com_rise"])
         for r in family:
             if r["com_rise"] > best + 0.01:
                 rows.append(r)
                 best = r["com_rise"]
-    table = {k: [r.get(k) for r in rows] for k in ("com_rise", "crouch_height", "damping", "com_offset",
+    table = {k: [r.get(k) for r in rows] for k in ("com_rise", "crouch_height", "thrust_damping", "com_offset",
                                                      "liftoff_hip", "peak_thrust_grf_body_weights", "com_travel",
                                                      "foot_delta")}
     table["foot_delta"] = [d or 0.0 for d in table["foot_delta"]]
@@ -245,8 +245,8 @@ def gap_crouches(results: list[dict], gaps) -> list[tuple[float, float]]:
     jobs = []
     for first, last in gaps:
         middle = 0.5 * (first + last)
-        for damping in sorted({r["damping"] for r in results}, reverse=True):
-            family = sorted((r for r in results if r["damping"] == damping), key=lambda r: -r["crouch_height"])
+        for damping in sorted({r["thrust_damping"] for r in results}, reverse=True):
+            family = sorted((r for r in results if r["thrust_damping"] == damping), key=lambda r: -r["crouch_height"])
             tried = {r["crouch_height"] for r in family}
             for a, b in zip(family, family[1:]):
                 if min(a["com_rise"], b["com_rise"]) < middle < max(a["com_rise"], b["com_rise"]):

@@ -47,6 +47,7 @@ from .path import MAX_POINTS, PathFollower, circle_path, figure_eight_path, turn
 from ...control.servo import hermite_scalar
 from ...schema import Choice, Parameter, Points, Schema
 from ...tuned import TableType, load, register as register_table, require_calibrated
+from ...tuned.constants import constant
 from ...tuned.settings import SkillSchema, with_defaults
 from ...tuned.store import check_rows
 
@@ -129,13 +130,6 @@ class SpeedTable:
 def _tuned_parameter(name, unit, minimum, maximum, help_text) -> Parameter:
     return Parameter(name, unit, TUNED, minimum, maximum, f"{help_text}; -1 = the tuned value for the speed",
                      special=TUNED)
-
-
-def constant(name: str, unit: str, minimum: float, maximum: float, help_text: str) -> Parameter:
-    """A constant of the running laws (hand-tuned or searched, e.g. the steering's): its value is
-    data, the running_any table's "constants"; the range here is a sanity bound (the value's sign,
-    about ten times it) a table row is checked against."""
-    return Parameter(name, unit, minimum, minimum, maximum, help_text)
 
 
 SETTING_RANGES = Schema(

@@ -34,20 +34,26 @@ from ...analysis import feet_above_surface
 from ...schema import Choice, Parameter, Schema
 from ...tuned import TableType, keyed, load, register as register_table
 from ...tuned.settings import SkillSchema
+from ...tuned.constants import constant, constant_rows, read_constants, with_constants
+
+# the somersault's hand-set constants: data, somersaults_any.json's "constants" (docs/tables.md)
+SOMERSAULT_CONSTANTS = Schema(
+    constant("tuck_move", "s", 0.01, 1.0, "the servo move into the tuck, where a calibrated row names no tuck_time"),
+    constant("touchdown_com", "1", 0.0, 2.0, "share of the standing COM height at which the feet reach the ground"),
+)
+CONSTANTS = read_constants("somersaults", SOMERSAULT_CONSTANTS)
 
 DIRECTIONS = ("backward", "forward")
 TUCK = 2                    # the tumble's position code
-TUCK_MOVE = 0.15            # s: the servo move into the tuck, where a calibrated row names no tuck_time
-TOUCHDOWN_COM = 0.9         # share of the standing COM height at which the feet reach the ground
 ROTATION_TOLERANCE = 0.35   # rad: a somersault turns 2 pi within this (TARGETS.md)
 SQUAT_LOWEST = Balance.schema.by_name["pelvis_height"].minimum   # m: the crouch before a take-off is a
                             # deliberate squat: the pelvis may go down to the balance's deepest crouch
 TAKEOFF_SETTINGS = ("crouch_height", "crouch_pitch", "com_offset", "thrust_lean", "liftoff_hip", "arm_swing",
                     "thrust_damping", "tuck_stiffness", "tuck_time", "tuck_damping")
 LANDING_SETTINGS = ("landing_lean", "open_time", "open_blend", "landing_knee_flexion", "foot_delta",
-                    "foot_lead_time", "spin_placement")
+                    "landing_foot_lead_time", "spin_placement")
 SETTINGS = TAKEOFF_SETTINGS + LANDING_SETTINGS + ("flight_step_division",)
-OLD_ROW = {"tuck_time": TUCK_MOVE, "tuck_damping": 0.0, "flight_step_division": 1}   # what a calibrated row
+OLD_ROW = {"tuck_time": CONSTANTS.tuck_move, "tuck_damping": 0.0, "flight_step_division": 1}   # what a calibrated row
                             # made before these settings ran with: every stored row reproduces
 
 
@@ -88,7 +94,7 @@ SOMERSAULT_SETTINGS = Schema(
               "share of the stiffened leg servos' damping kept in the thrust; less extends faster (low_level only)"),
     Parameter("tuck_stiffness", "1", 3.0, 1.0, 4.0,
               "gain factor of the hip, knee and spine servos for the snap into the tuck (low_level only)"),
-    Parameter("tuck_time", "s", TUCK_MOVE, 0.05, 0.4,
+    Parameter("tuck_time", "s", CONSTANTS.tuck_move, 0.05, 0.4,
               "duration of the servo move into the tuck; shorter closes it sooner and spins faster earlier "
               "(low_level only)"),
     Parameter("tuck_damping", "1", 0.0, 0.0, 8.0,
@@ -103,15 +109,15 @@ SOMERSAULT_SETTINGS = Schema(
               "the joints move from the tuck to the landing's targets over this time (low_level only)"),
     Parameter("landing_knee_flexion", "rad", 0.8, 0.3, 1.4, "knee bend held for touchdown (low_level only)"),
     Parameter("foot_delta", "m", -0.15, -0.3, 0.3, "landing: foot servo delta (low_level only)"),
-    Parameter("foot_lead_time", "s", 0.1, 0.0, 0.6,
+    Parameter("landing_foot_lead_time", "s", 0.1, 0.0, 0.6,
               "landing: the feet land this many seconds of horizontal COM travel ahead of the COM (low_level only)"),
     Parameter("spin_placement", "s/m", 0.25, 0.0, 0.5,
               "landing: feet placed this factor x (angular momentum / mass) against the spin (low_level only)"),
 )
 SOMERSAULTS_TABLE = register_table(TableType(
-    "somersaults", SOMERSAULT_SETTINGS,
-    lambda body: ((f"{kind} {e['direction']} {e['strength']}", e["settings"]) for kind in ("somersaults", "not_found")
-                  for e in body.get(kind, [])),
+    "somersaults", with_constants(SOMERSAULT_SETTINGS, SOMERSAULT_CONSTANTS),
+    lambda body: (*((f"{kind} {e['direction']} {e['strength']}", e["settings"]) for kind in ("somersaults", "not_found")
+                    for e in body.get(kind, [])), *constant_rows(body)),
     (somersault_row,)))
 
 
@@ -163,8 +169,8 @@ class Somersault(Sequence):
         cfg = self.cfg = self.settings()
         self.rotation = FlightRotation(ctx.model, ctx.data, ctx.actor)
         self.open_inertia = position_inertia(ctx.model, ctx.character, "layout", ctx.actor)
-        self.touchdown_com = TOUCHDOWN_COM * float(ctx.data.subtree_com[ctx.actor.root][2])
-        takeoff = dict(cfg, lean=cfg["thrust_lean"], damping=cfg["thrust_damping"])
+        self.touchdown_com = CONSTANTS.touchdown_com * float(ctx.data.subtree_com[ctx.actor.root][2])
+        takeoff = cfg
 
         def tuck(t):
             self.rotation.takeoff(t)
@@ -176,7 +182,7 @@ class Somersault(Sequence):
         def land(t):
             return Landing(Landing.schema.validate(dict(
                 knee_flexion=cfg["landing_knee_flexion"], fast_knee_flexion=cfg["landing_knee_flexion"],
-                foot_delta=cfg["foot_delta"], foot_lead_time=cfg["foot_lead_time"],
+                foot_delta=cfg["foot_delta"], foot_lead_time=cfg["landing_foot_lead_time"],
                 spin_placement=cfg["spin_placement"], blend_time=cfg["open_blend"])), ctx)
 
         return takeoff_steps(ctx, takeoff) + [

@@ -75,17 +75,17 @@ SPACE = {  # name: (low, high) per direction
     "open_blend": {"backward": (0.12, 0.3), "forward": (0.12, 0.3)},    # shorter: the drift passes 1 %
     "landing_knee_flexion": {"backward": (0.3, 1.4), "forward": (0.3, 1.4)},
     "foot_delta": {"backward": (-0.3, 0.3), "forward": (-0.3, 0.3)},
-    "foot_lead_time": {"backward": (0.0, 0.5), "forward": (0.0, 0.5)},
+    "landing_foot_lead_time": {"backward": (0.0, 0.5), "forward": (0.0, 0.5)},
     "spin_placement": {"backward": (0.0, 0.5), "forward": (0.0, 0.5)},
 }
 START = {   # where the search starts when the table has nothing: found by hand-run searches
     "backward": {"crouch_height": 0.548, "crouch_pitch": 0.966, "com_offset": -0.073, "thrust_lean": -0.037,
                  "liftoff_hip": 1.56, "arm_swing": 3.142, "thrust_damping": 0.474, "tuck_stiffness": 3.0, "tuck_time": 0.15, "landing_lean": 0.458,
-                 "open_time": 0.05, "open_blend": 0.1, "landing_knee_flexion": 0.373, "foot_delta": -0.142, "foot_lead_time": 0.18,
+                 "open_time": 0.05, "open_blend": 0.1, "landing_knee_flexion": 0.373, "foot_delta": -0.142, "landing_foot_lead_time": 0.18,
                  "spin_placement": 0.292},
     "forward": {"crouch_height": 0.5, "crouch_pitch": 1.0, "com_offset": 0.02, "thrust_lean": 0.0,
                 "liftoff_hip": -0.5, "arm_swing": 1.0, "thrust_damping": 0.3, "tuck_stiffness": 3.0, "tuck_time": 0.15, "landing_lean": 0.3,
-                "open_time": 0.1, "open_blend": 0.1, "landing_knee_flexion": 0.8, "foot_delta": 0.0, "foot_lead_time": 0.2,
+                "open_time": 0.1, "open_blend": 0.1, "landing_knee_flexion": 0.8, "foot_delta": 0.0, "landing_foot_lead_time": 0.2,
                 "spin_placement": 0.2},
 }
 KEEP = ("rotation", "somersaults", "flight_rotation", "first_flight_time", "com_rise", "com_travel",
