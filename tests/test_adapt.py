@@ -6,6 +6,8 @@ import math
 
 import pytest
 
+from sim_core.skills.running.behaviour import SpeedTable
+
 from sim_core.adapt.experiment import CONTROLLERS, controller_for, experiment, ordering_holds
 from sim_core.adapt.moved_bodies import gain_factors
 from sim_core.adapt.scaling import ScaleFactors, Units, factor
@@ -139,7 +141,8 @@ def test_the_scaled_running_table_is_passed_as_the_run_s_table(man, woman):
     assert speeds[0] == pytest.approx(2.5 * math.sqrt(CharacterPair(man, character).length), rel=1e-3)
     assert params["speed"] < 3.5 and character.dofs[0].kp != man.dofs[0].kp
     unscaled, params0, _ = controller_for("running", man, body, "unscaled")
-    assert params0 == {} and [d.kp for d in unscaled.dofs] == [d.kp for d in man.dofs]
+    assert params0 == {"table": SpeedTable.load("man").to_table()}       # the man's own table, as it is
+    assert [d.kp for d in unscaled.dofs] == [d.kp for d in man.dofs]
 
 
 def test_running_at_50_percent_keeps_the_seeds_ordering():

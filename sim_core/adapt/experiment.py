@@ -82,7 +82,10 @@ def controller_for(skill: str, man: CharacterSpec, body: dict, controller: str) 
     pair = CharacterPair(man, body_spec)
     character = CharacterSpec(controller_servos(body, man, pair.length, controller), body["name"])
     request = dict(REQUESTS[skill])
-    if controller == "unscaled":
+    if controller == "unscaled":            # the man's own settings as they are (for running: his table, given
+        if skill == "running":              # as the run's table - a body with none of its own is refused)
+            from ..skills.running.behaviour import SpeedTable
+            return character, {**request, "table": SpeedTable.load(man.name).to_table()}, []
         return character, request, []
     mode = MODE_OF[controller]
     schema = cls.schema

@@ -16,7 +16,7 @@ import math
 
 import numpy as np
 
-from .behaviour import Behaviour, ControlContext, register
+from .behaviour import Behaviour, ControlContext
 from .crouch import CrouchTable, arm_reach
 from .measure import SupportGeometry
 from .servo import hermite_scalar

@@ -28,14 +28,11 @@ from ..analysis import feet_above_surface, standard_metrics
 from ..ballistics import GRAVITY
 from .balance import Balance, LegGeometry, standing_hip_height
 from .crouch import CrouchTable
-from .behaviour import Behaviour, ControlContext, register
+from .behaviour import Behaviour, ControlContext
 from .measure import SupportGeometry, roll_of
-from .sequencer import Sequence, Step
 from .servo import hermite_scalar
-from ..errors import ParameterError
 from ..schema import Parameter, Schema
 from ..tuned import TableType, load, register as register_table
-from ..tuned.settings import SkillSchema
 from ..tuned.constants import constant, constant_rows, read_constants, with_constants
 
 # the leap's thrust and landing's hand-set constants: data, leap_any.json's "constants", shared by

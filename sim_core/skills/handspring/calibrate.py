@@ -39,7 +39,6 @@ import argparse
 import functools
 import json
 import math
-import sys
 import time
 from pathlib import Path
 

@@ -42,7 +42,6 @@ import argparse
 import functools
 import json
 import math
-import sys
 import time
 from pathlib import Path
 
