@@ -587,7 +587,7 @@ def vertical_table(strength: str) -> str:
 
 
 # the leap's low-level settings: the columns of a vertical-leap table, a broad jump's and a planned
-# jump's settings (sim_core.control.target_jump searches them); a default is what a row that does
+# jump's settings (sim_core.planning.jump searches them); a default is what a row that does
 # not name the setting runs with
 LEAP_SETTINGS = Schema(
     Parameter("crouch_height", "m", 0.65, 0.4, 0.95, "pelvis height of the crouch"),

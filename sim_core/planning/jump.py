@@ -1,6 +1,6 @@
 """Planning a jump to a target (Ooi 2015) by simulation, above the simulation loop.
 
-The jump_to_target behaviour (sim_core/control/target_jump.py) only runs a plan; this module
+The jump_to_target behaviour (sim_core/skills/jump_to_target/behaviour.py) only runs a plan; this module
 finds one: it searches the leap's settings (the wind-up pose, the lean, arm swing, lift-off hip
 angle and the landing's foot delta, foot lead and arm swing in flight) over whole simulated
 jumps, each trial a ``simulate.run`` of the leap, judged by what the simulation did (the middle of
@@ -16,7 +16,7 @@ simulation - so its outcome is the plan's.
 
 ``plan_jump`` takes ``progress`` and ``cancelled`` callables (the Blender operator's status bar
 and Esc): a cancel raises ``Cancelled`` within a trial's tick check and nothing is stored.
-``plan_and_store`` keeps the plan in the user's plan store (control.target_jump.plan_store_dir),
+``plan_and_store`` keeps the plan in the user's plan store (skills.jump_to_target.behaviour.plan_store_dir),
 where later runs find it; ``store_plan`` writes the shipped table (python -m sim_core calibrate jump_to_target).
 """
 from __future__ import annotations

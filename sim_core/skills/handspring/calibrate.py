@@ -8,7 +8,7 @@ or annealing) over the settings of every step (the sit,
 the thrust and arm swing, the arched flight, the hands' stiffness, the push's delay, moves and
 damping, the snap-down and the landing; the flights' physics step, `flight_step_division`, is not
 searched: it stays as started, 1 in rows made before it, `--start '{"flight_step_division": 8}'`) minimises, with every quantity read off the simulated handspring
-(sim_core.control.handspring.handspring_assess):
+(sim_core.skills.handspring.behaviour.handspring_assess):
 
     score = (2 pi - min(rotation before any fall, 2 pi))        how far it turned before it fell
           + 3 [no hand contact] + 2 [no second flight] + 1.5 [feet still down when the hands land]

@@ -17,7 +17,7 @@ hip angle to sim_core/tuned/tables/leap_<character>.json ("vertical": human torq
 
 Broad jump: the distance is not smooth in the leap's settings (the thrust starts on a tipping
 condition), so each distance of BROAD_DISTANCES is planned by simulation as a jump to a point on
-the ground straight ahead (sim_core/control/target_jump.py's planner: crouch, lean, thrust, arm
+the ground straight ahead (sim_core/skills/jump_to_target/behaviour.py's planner: crouch, lean, thrust, arm
 swing, lift-off hip angle and the landing's settings) with the air time of the report's targets
 (GROUND_AIR_TIME: the request python -m sim_core calibrate jump_to_target makes for a forward target, whose stored plan
 is reused when its best trial ended balanced; new plans are stored there too); the whole leap is
