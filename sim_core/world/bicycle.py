@@ -54,7 +54,8 @@ BOTTOM_BRACKET_HEIGHT = 0.28    # above the ground
 CRANK_LENGTH = 0.170            # crank arm l of eqs. 9-10
 PEDAL_HALF_SPACING = 0.09       # pedal centre from the bicycle's mid-plane (Q-factor / 2 + pedal)
 SEAT_TUBE_ANGLE = math.radians(73.0)
-SADDLE_FROM_BOTTOM_BRACKET = 0.74   # along the seat tube to the saddle's top (rider-adjusted)
+SADDLE_FROM_BOTTOM_BRACKET = 0.68   # along the seat tube to the saddle's top, set for the man (hip joint
+                                    # 0.94 m high): the pedal at the bottom is 0.91 m from the hip, knee ~30 deg
 HEAD_TUBE_TOP = 0.86            # height of the steering axis point where the stem clamps
 STEM_RISE = 0.12                # handlebar above the head tube top
 GRIP_BACK = 0.10                # grips behind the steering axis (swept city bar)
@@ -92,17 +93,28 @@ def trail(radius: float = WHEEL_RADIUS, head_angle: float = HEAD_ANGLE, offset: 
     return (radius * math.cos(head_angle) - offset) / math.sin(head_angle)
 
 
+# --- the rider's attachments (Hodgins et al. 1995 [A] 118-120) ---------------------------------
+SEAT_PIVOT_HALF_WIDTH = 0.06    # the pelvis-seat pivot: two ball joints this far either side of the
+                                # mid-plane make a hinge about the lateral axis (passive, SEEDS-WAVE2 §1.2)
+SEAT_SOLREF = (0.004, 1.0)      # s, damping ratio: stiff (the pivot drifts < 1 mm)
+LIMB_SOLREF = (0.02, 1.0)       # hands to grips, feet to pedals: two-sided soft springs ([A] 120)
+ISCHIUM_BELOW_HIP = 0.065       # the seat bones are this far below the hip joints' centre
+ISCHIUM_BEHIND_HIP = 0.03
+
+
 @dataclass(frozen=True)
 class Bicycle:
-    """What a run asks of the bicycle prop: the gear ratio (wheel turns per crank turn) and where
-    the bicycle stands (rear contact at (x, y), facing ``heading`` rad from +X)."""
+    """What a run asks of the bicycle prop: the gear ratio (wheel turns per crank turn), where
+    the bicycle stands (rear contact at (x, y), facing ``heading`` rad from +X) and the prefix of
+    the rider attached to it (None: riderless)."""
     gear: float = DEFAULT_GEAR
     x: float = 0.0
     y: float = 0.0
     heading: float = 0.0
+    rider: str | None = None
 
     def to_dict(self) -> dict:
-        return {"gear": self.gear, "x": self.x, "y": self.y, "heading": self.heading}
+        return {"gear": self.gear, "x": self.x, "y": self.y, "heading": self.heading, "rider": self.rider}
 
 
 @dataclass(frozen=True)
@@ -251,6 +263,7 @@ class BicycleView:
     crank_qpos: int
     crank_dof: int
     chain: int
+    crank_body: int
 
     @classmethod
     def of(cls, model: mujoco.MjModel) -> "BicycleView":
@@ -259,11 +272,18 @@ class BicycleView:
         return cls(model, model.body(n["frame"]).id, int(j(n["free"]).qposadr[0]), int(j(n["free"]).dofadr[0]),
                    int(j(n["steer"]).qposadr[0]), int(j(n["steer"]).dofadr[0]), int(j(n["front_spin"]).dofadr[0]),
                    int(j(n["rear_spin"]).qposadr[0]), int(j(n["rear_spin"]).dofadr[0]),
-                   int(j(n["crank_spin"]).qposadr[0]), int(j(n["crank_spin"]).dofadr[0]), model.tendon(n["chain"]).id)
+                   int(j(n["crank_spin"]).qposadr[0]), int(j(n["crank_spin"]).dofadr[0]), model.tendon(n["chain"]).id,
+                   model.body(n["crank"]).id)
 
     @property
     def gear(self) -> float:
         return float(self.model.wrap_prm[self.model.tendon_adr[self.chain]])
+
+    def set_crank(self, data: mujoco.MjData, angle: float) -> None:
+        """Turn the crank to ``angle`` (0: right pedal up) and the rear wheel with it, so that the
+        chain spring stays unstretched."""
+        data.qpos[self.crank_qpos] = angle
+        data.qpos[self.rear_qpos] = self.gear * angle
 
     def rolling_start(self, data: mujoco.MjData, speed: float) -> None:
         """The named start state of a run "rolling at ``speed``": the frame (and whatever the
@@ -298,3 +318,54 @@ def frame_state(quat, qvel6, steer: float, crank: float) -> dict:
     return {"speed": float(np.dot(qvel6[:3], heading_forward)), "roll": roll, "yaw": yaw,
             "roll_rate": float(np.dot(omega, heading_forward)), "yaw_rate": float(omega[2]),
             "steer": float(steer), "crank": float(crank)}
+
+
+ATTACHMENTS = (("seat_r", "PELVIS", "bicycle_seat_r", SEAT_SOLREF), ("seat_l", "PELVIS", "bicycle_seat_l", SEAT_SOLREF),
+               ("hand_r", "HANDR", "bicycle_grip_r", LIMB_SOLREF), ("hand_l", "HANDL", "bicycle_grip_l", LIMB_SOLREF),
+               ("foot_r", "FOOTR", "bicycle_pedal_r", LIMB_SOLREF), ("foot_l", "FOOTL", "bicycle_pedal_l", LIMB_SOLREF))
+
+
+def rider_points(character) -> dict[str, np.ndarray]:
+    """Where each attachment holds the rider, in the character's own standing frame: the seat
+    bones either side (below and behind the hip joints), the palm (the hand's centre of mass) and
+    the ball of the foot on the sole."""
+    hip_r, hip_l = (np.array(character.body(n)["joint"]["pos"]) for n in ("ULEGR", "ULEGL"))
+    hips = (hip_r + hip_l) / 2
+    ischium = hips + [-ISCHIUM_BEHIND_HIP, 0.0, -ISCHIUM_BELOW_HIP]
+    points = {"seat_r": ischium + [0, -SEAT_PIVOT_HALF_WIDTH, 0], "seat_l": ischium + [0, SEAT_PIVOT_HALF_WIDTH, 0]}
+    for side in "RL":
+        points[f"hand_{side.lower()}"] = np.array(character.body(f"HAND{side}")["com"])
+        balls = [c["pos"] for c in character.body(f"FOOT{side}")["contacts"] if c["site"].startswith("ball")]
+        sole = np.mean(balls, axis=0)
+        points[f"foot_{side.lower()}"] = sole - [0, 0, character.body(f"FOOT{side}")["contacts"][0]["radius"]]
+    return points
+
+
+def body_origin(character, name: str) -> np.ndarray:
+    """A body's frame origin in the standing frame (as sim_core.character.model builds it: the
+    root's at its COM, every other at its joint)."""
+    b = character.body(name)
+    return np.array(b["com"] if b["parent"] is None else b["joint"]["pos"])
+
+
+def attach_rider(spec: mujoco.MjSpec, bicycle: Bicycle, character) -> None:
+    """The rider's attachments, body to body (never to the world): the pelvis to the saddle by a
+    passive pivot about the lateral axis, the hands to the grips and the feet to the pedals by
+    two-sided soft connect constraints (MuJoCo equality constraints with a soft ``solref``: a
+    spring-damper that pulls as well as pushes, as toe clips do). Sites on both sides mark the
+    points; the constraint holds them together. Contacts between rider and bicycle are off (the
+    saddle and the pedals carry the rider through these attachments)."""
+    prefix = bicycle.rider
+    frame = spec.body(NAMES["frame"])
+    for side, dy in (("r", -SEAT_PIVOT_HALF_WIDTH), ("l", SEAT_PIVOT_HALF_WIDTH)):
+        frame.add_site(name=f"bicycle_seat_{side}", pos=list(LAYOUT.saddle + [0, dy, 0]))
+    points = rider_points(character)
+    for name, body, bike_site, solref in ATTACHMENTS:
+        rider_site = f"{prefix}rider_{name}"
+        spec.body(prefix + body).add_site(name=rider_site, pos=list(points[name] - body_origin(character, body)))
+        eq = spec.add_equality(name=f"{prefix}attach_{name}", type=mujoco.mjtEq.mjEQ_CONNECT,
+                               objtype=mujoco.mjtObj.mjOBJ_SITE, name1=rider_site, name2=bike_site)
+        eq.solref = list(solref)
+    for b in character.bodies:
+        for part in ("frame", "fork", "front", "rear", "crank"):
+            spec.add_exclude(bodyname1=prefix + b["name"], bodyname2=NAMES[part])

@@ -9,7 +9,7 @@ from typing import Callable
 
 import mujoco
 
-from .bicycle import add_bicycle
+from .bicycle import add_bicycle, attach_rider
 from .world import World
 
 FOOT_FRICTION = 1.0        # what a foot meets on the ground, a box or a platform
@@ -35,6 +35,13 @@ def add_world(spec: mujoco.MjSpec, world: World, character) -> None:
     (a platform's edge at its heels); the character stands at the origin facing +X."""
     for builder in PROP_BUILDERS.values():
         builder(spec, world, character)
+
+
+def add_attachments(spec: mujoco.MjSpec, world: World, character) -> None:
+    """What ties a character to a prop, added once the character's bodies exist: a bicycle's
+    rider attachments (body to body). Nothing for any other world."""
+    if world.bicycle is not None and world.bicycle.rider is not None:
+        attach_rider(spec, world.bicycle, character)
 
 
 def _felt(geom) -> None:
