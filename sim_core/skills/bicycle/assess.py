@@ -10,7 +10,28 @@ import numpy as np
 from ...world.bicycle import NAMES, WHEEL_BODIES, frame_state
 
 
+HEADING_TOLERANCE_DEG = 5.0
+FIRST_FORK_MOTION = math.radians(1.0)   # rad: the fork's first move counts from this far
+
+
+def attachment_gaps(model: mujoco.MjModel, qpos: np.ndarray) -> np.ndarray:
+    """Frames x attachments (seat r, l, hands r, l, feet r, l): the distance (m) between each
+    rider site and its bicycle site, from the recorded joint angles."""
+    from .mount import SitePairs
+    data = mujoco.MjData(model)
+    pairs = SitePairs(model)
+    out = np.zeros((len(qpos), len(pairs.names)))
+    for k, q in enumerate(qpos):
+        data.qpos[:] = q
+        mujoco.mj_kinematics(model, data)
+        out[k] = pairs.gaps(data)
+    return out
+
+
 def ride_metrics(trajectory) -> dict:
+    """Fall (anything but a tyre on the ground), speed, roll, heading (the time from which it
+    stays within 5 deg of the commanded one, the fork's first move: -1 right, +1 left) and the
+    attachments' largest stretch."""
     a, meta = trajectory.arrays, trajectory.meta
     model = mujoco.MjModel.from_xml_string(meta["model_xml"])
     body_names = [model.body(b).name for b in range(1, model.nbody)]
@@ -31,8 +52,21 @@ def ride_metrics(trajectory) -> dict:
     t = a["time"]
     end = len(t) if fall_frame is None else fall_frame
     last10 = (t >= t[end - 1] - 10.0) & (np.arange(len(t)) < end)
+    gaps = attachment_gaps(model, a["qpos"][:end])
+    desired = yaw[0] + math.radians(meta["params"]["heading"])
+    error = np.degrees(np.abs(yaw[:end] - desired))
+    outside = np.nonzero(error > HEADING_TOLERANCE_DEG)[0]
+    settled = 0.0 if len(outside) == 0 else (float(t[outside[-1] + 1]) if outside[-1] + 1 < end else None)
+    steer_path = np.array([s["steer"] for s in states[:end]])
+    moved = np.nonzero(np.abs(steer_path - steer_path[0]) > FIRST_FORK_MOTION)[0]
+    last5 = (t >= t[end - 1] - 5.0) & (np.arange(len(t)) < end)
     return {
         "fell": fall_frame is not None,
+        "mean_speed_last_5s": float(speed[last5].mean()),
+        "heading_within_5deg_from": settled,
+        "first_fork_motion": 0.0 if len(moved) == 0 else float(np.sign(steer_path[moved[0]] - steer_path[0])),
+        "max_hand_gap": float(gaps[:, 2:4].max()), "max_foot_gap": float(gaps[:, 4:6].max()),
+        "max_seat_gap": float(gaps[:, 0:2].max()),
         "fall_time": None if fall_frame is None else float(t[fall_frame]),
         "mean_speed_last_10s": float(speed[last10].mean()),
         "max_abs_roll_deg": float(np.degrees(np.abs(roll[:end]).max())),

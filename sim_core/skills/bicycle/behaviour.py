@@ -85,7 +85,9 @@ class Bicycling(Behaviour):
         data.qpos[:] = reference
         dofs = np.arange(int(root.dofadr[0]), model.nv)
         rider_dofs = dofs[model.body_rootid[model.dof_bodyid[dofs]] == model.jnt_bodyid[root.id]]
-        gaps = solve(model, data, pairs, list(range(len(pairs.names))), rider_dofs, reference, iterations=300)
+        every = list(range(len(pairs.names)))
+        solve(model, data, pairs, every, rider_dofs, reference, iterations=300)
+        gaps = solve(model, data, pairs, every, rider_dofs, data.qpos.copy(), iterations=50, posture_weight=0.0)
         bike.rolling_start(data, params["speed"])
         dof = int(root.dofadr[0])
         data.qvel[dof:dof + 3] = data.qvel[bike.free_dof:bike.free_dof + 3]

@@ -34,9 +34,10 @@ class SitePairs:
 
 
 def solve(model: mujoco.MjModel, data: mujoco.MjData, pairs: SitePairs, which: list[int], dofs: np.ndarray,
-          reference: np.ndarray, iterations: int = IK_ITERATIONS) -> np.ndarray:
+          reference: np.ndarray, iterations: int = IK_ITERATIONS, posture_weight: float = IK_POSTURE_WEIGHT) -> np.ndarray:
     """Move the dofs ``dofs`` (addresses in qvel) of ``data`` so the attachment pairs ``which``
-    meet; ``reference``: the qpos the other directions are pulled towards. Joint limits are kept.
+    meet; ``reference``: the qpos the other directions are pulled towards (by ``posture_weight``;
+    0 for an exact final pass). Joint limits are kept.
     Returns the final gaps. ``data`` must be a scratch copy."""
     nv = model.nv
     jac = np.zeros((3, nv))
@@ -61,7 +62,7 @@ def solve(model: mujoco.MjModel, data: mujoco.MjData, pairs: SitePairs, which: l
         posture = np.zeros(len(dofs))
         posture[hinge_cols] = reference[hinge_qpos] - data.qpos[hinge_qpos]
         # minimise |J dq - e|^2 + w^2 |dq - posture|^2 + lambda^2 |dq|^2
-        w2 = IK_POSTURE_WEIGHT ** 2
+        w2 = posture_weight ** 2
         A = J.T @ J + (w2 + IK_DAMPING) * np.eye(len(dofs))
         dq = np.linalg.solve(A, J.T @ e + w2 * posture)
         step = np.zeros(nv)
