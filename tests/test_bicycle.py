@@ -6,40 +6,9 @@ import mujoco
 import numpy as np
 import pytest
 
-from sim_core.character.model import new_spec
-from sim_core.world import World, add_world
+from sim_core.skills.bicycle.report import coast, riderless_model
 from sim_core.world.bicycle import (CHAIN_STIFFNESS, CRANK_ARMATURE, HEAD_ANGLE, FORK_OFFSET, ROLLING_RESISTANCE,
                                     WHEEL_RADIUS, WHEEL_RIM_SHARE, Bicycle, BicycleView, trail)
-
-
-def riderless_model(gear: float = 2.6) -> mujoco.MjModel:
-    spec = new_spec("bicycle_alone")
-    add_world(spec, World(bicycle=Bicycle(gear=gear)), None)
-    return mujoco.MjModel.from_xml_string(spec.to_xml())
-
-
-def coast(model, speed: float, seconds: float, roll_rate: float = 0.0):
-    """The riderless bicycle let go at ``speed`` (the logged rolling start) and, if asked, a roll
-    rate (rad/s, right side down): time, speed, roll, steer every 10 ms until ``seconds`` or the
-    first contact of anything but a tyre with the ground (the fall)."""
-    bike = BicycleView.of(model)
-    data = mujoco.MjData(model)
-    mujoco.mj_forward(model, data)
-    bike.rolling_start(data, speed)
-    data.qvel[bike.free_dof + 3] = roll_rate
-    tyres = {model.geom("bicycle_front_wheel_tyre").id, model.geom("bicycle_rear_wheel_tyre").id}
-    ground = model.geom("ground").id
-    rows, fell = [], None
-    for k in range(int(round(seconds / model.opt.timestep))):
-        if k % 10 == 0:
-            s = bike.state(data)
-            rows.append((data.time, s["speed"], s["roll"], s["steer"]))
-        mujoco.mj_step(model, data)
-        touching = {c.geom1 if c.geom2 == ground else c.geom2 for c in data.contact[:data.ncon]}
-        if touching - tyres:
-            fell = data.time
-            break
-    return np.array(rows), fell
 
 
 def test_geometry_has_a_realistic_trail_and_mass():
@@ -166,7 +135,7 @@ def test_replay_of_a_ride_is_bit_identical(straight_ride):
 
 def test_heading_step_counter_steers_and_settles():
     """+30 deg: the fork first turns right (counter-steer), the heading is within 5 deg in <= 3 s."""
-    m = ride(6.0, speed=4.0, heading=30.0).meta["metrics"]
+    m = ride(6.0, speed=4.0, heading=math.radians(30.0)).meta["metrics"]
     assert not m["fell"] and m["first_fork_motion"] == -1.0
     assert m["heading_within_5deg_from"] is not None and m["heading_within_5deg_from"] <= 3.0
 
@@ -178,3 +147,23 @@ def test_rides_60_s_without_a_fall(speed):
     assert not m["fell"] and m["max_abs_roll_deg"] < 20.0
     assert m["mean_speed_last_10s"] == pytest.approx(speed, rel=0.05)
     assert m["max_hand_gap"] < 0.03 and m["max_foot_gap"] < 0.03
+
+
+@pytest.mark.parametrize("gear", [2.0, 3.2])
+def test_fixed_gear_sets_the_cadence(gear):
+    """B3: the chain spring stays within 0.1 rad of its start and the cadence is v / (2 pi r g)
+    within 5 % (a lower gear pedals faster at the same speed)."""
+    m = ride(6.0, speed=4.0, gear=gear).meta["metrics"]
+    assert not m["fell"] and m["max_chain_stretch"] < 0.1
+    assert m["cadence_last_5s_hz"] == pytest.approx(m["cadence_expected_hz"], rel=0.05)
+    assert m["cadence_last_5s_hz"] == pytest.approx(m["mean_speed_last_5s"] / (2 * math.pi * WHEEL_RADIUS * gear), rel=0.05)
+
+
+def test_a_scene_with_a_rider_is_refused_in_one_line():
+    from sim_core.errors import SimAthleticsError
+    from sim_core.scene import scene_from_dict
+    from sim_core.simulate import run_scene
+    scene = scene_from_dict({"duration": 1, "actors": [{"name": "a", "character": "man", "behaviour": "bicycle"}]})
+    with pytest.raises(SimAthleticsError) as err:
+        run_scene(scene)
+    assert "scenes with a bicycle are not built yet" in str(err.value) and "\n" not in str(err.value)

@@ -72,8 +72,8 @@ WHEEL_RIM_SHARE = 0.75          # axial inertia = share * m r^2 (mass mostly at 
 
 # --- drive and resistance ----------------------------------------------------------------------
 DEFAULT_GEAR = 2.6              # wheel turns per crank turn (e.g. 42/16)
-CHAIN_STIFFNESS = 500.0         # N m / rad of rear-wheel angle: stretch < 0.05 rad at 25 N m on the wheel
-CHAIN_DAMPING = 5.0             # N m s / rad
+CHAIN_STIFFNESS = 2000.0        # N m / rad of rear-wheel angle: stretch < 0.1 rad in a ride (docs/bicycle.md)
+CHAIN_DAMPING = 20.0           # N m s / rad
 ROLLING_RESISTANCE = 1.5        # N s / m: ground force c v of both wheels (= Crr m g of a 110 kg
                                 # rider + bike at 4 m/s for Crr = 0.0055, Wilson 2004)
 CRANK_ARMATURE = 0.02           # kg m^2: drivetrain inertia (chainring, chain) about the crank axle

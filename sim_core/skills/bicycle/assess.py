@@ -7,7 +7,7 @@ import math
 import mujoco
 import numpy as np
 
-from ...world.bicycle import NAMES, WHEEL_BODIES, frame_state
+from ...world.bicycle import NAMES, WHEEL_BODIES, WHEEL_RADIUS, frame_state
 
 
 HEADING_TOLERANCE_DEG = 5.0
@@ -53,13 +53,17 @@ def ride_metrics(trajectory) -> dict:
     end = len(t) if fall_frame is None else fall_frame
     last10 = (t >= t[end - 1] - 10.0) & (np.arange(len(t)) < end)
     gaps = attachment_gaps(model, a["qpos"][:end])
-    desired = yaw[0] + math.radians(meta["params"]["heading"])
+    desired = yaw[0] + meta["params"]["heading"]
     error = np.degrees(np.abs(yaw[:end] - desired))
     outside = np.nonzero(error > HEADING_TOLERANCE_DEG)[0]
     settled = 0.0 if len(outside) == 0 else (float(t[outside[-1] + 1]) if outside[-1] + 1 < end else None)
     steer_path = np.array([s["steer"] for s in states[:end]])
     moved = np.nonzero(np.abs(steer_path - steer_path[0]) > FIRST_FORK_MOTION)[0]
     last5 = (t >= t[end - 1] - 5.0) & (np.arange(len(t)) < end)
+    gear = float(model.wrap_prm[model.tendon_adr[model.tendon(NAMES["chain"]).id]])
+    rear = model.jnt_qposadr[model.joint(NAMES["rear_spin"]).id]
+    stretch = gear * a["qpos"][:end, crank] - a["qpos"][:end, rear]
+    crank_rate = a["qvel"][:end, model.jnt_dofadr[model.joint(NAMES["crank_spin"]).id]]
     return {
         "fell": fall_frame is not None,
         "mean_speed_last_5s": float(speed[last5].mean()),
@@ -67,6 +71,9 @@ def ride_metrics(trajectory) -> dict:
         "first_fork_motion": 0.0 if len(moved) == 0 else float(np.sign(steer_path[moved[0]] - steer_path[0])),
         "max_hand_gap": float(gaps[:, 2:4].max()), "max_foot_gap": float(gaps[:, 4:6].max()),
         "max_seat_gap": float(gaps[:, 0:2].max()),
+        "max_chain_stretch": float(np.abs(stretch - stretch[0]).max()),
+        "cadence_last_5s_hz": float(crank_rate[last5[:end]].mean() / (2 * math.pi)),
+        "cadence_expected_hz": float(speed[last5].mean() / (2 * math.pi * WHEEL_RADIUS * gear)),
         "fall_time": None if fall_frame is None else float(t[fall_frame]),
         "mean_speed_last_10s": float(speed[last10].mean()),
         "max_abs_roll_deg": float(np.degrees(np.abs(roll[:end]).max())),

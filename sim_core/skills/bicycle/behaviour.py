@@ -28,35 +28,77 @@ import numpy as np
 
 from ...control.behaviour import Behaviour, register
 from ...schema import Parameter, Schema
-from ...world.bicycle import CRANK_LENGTH, DEFAULT_GEAR, Bicycle, BicycleView
+from ...tuned import TableType, load, register as register_table
+from ...tuned.settings import SkillSchema, with_defaults
+from ...errors import ParameterError
+from ...world.bicycle import CRANK_LENGTH, DEFAULT_GEAR, NAMES, Bicycle, BicycleView
 from .laws import ankle_angle, crank_torque, fork_angle, pedal_forces
-from .mount import SitePairs, match_velocities, solve
+from .mount import IK_ITERATIONS_PER_TICK, SitePairs, match_velocities, solve
 
-# the rider's reference posture for the mounting solve (rad): hips and knees bent, arms forward
-MOUNT_POSTURE = {"hip_r_y": -1.0, "hip_l_y": -1.0, "knee_r_y": 1.3, "knee_l_y": 1.3,
-                 "shoulder_r_x": 0.3, "shoulder_l_x": -0.3, "shoulder_r_y": -1.0, "shoulder_l_y": -1.0,
-                 "elbow_r_z": 0.5, "elbow_l_z": -0.5, "ankle_r_y": 0.3, "ankle_l_y": 0.3}
 MOUNT_CRANK_ANGLE = math.pi / 2      # the start's crank: right pedal forward, left back (horizontal)
 LEG_JOINTS = {"r": ("hip_r_y", "knee_r_y"), "l": ("hip_l_y", "knee_l_y")}
 ANKLE_JOINTS = {"r": "ankle_r_y", "l": "ankle_l_y"}
 ARM_JOINTS = {"r": ("shoulder_r_x", "shoulder_r_y", "shoulder_r_z", "elbow_r_y", "elbow_r_z"),
               "l": ("shoulder_l_x", "shoulder_l_y", "shoulder_l_z", "elbow_l_y", "elbow_l_z")}
-# hand-set gains (not yet calibrated; to become a tuned table): eq. 7 in N m per m/s, eq. 11's at
-# REFERENCE_SPEED (the roll terms scale with (v_ref / v)^2, as the steer needed to right a lean does)
-RIDE_GAINS = {"speed": 500.0, "roll": 2.0, "roll_rate": 0.4, "yaw": 0.6, "yaw_rate": 0.3}
-REFERENCE_SPEED = 4.0
-MAX_FORK_ANGLE = 0.5                 # rad: the commanded fork angle's limit
-IK_ITERATIONS_PER_TICK = 3
+
+
+def constant(name: str, unit: str, minimum: float, maximum: float, help_text: str) -> Parameter:
+    """A constant of the bicycling laws: its value is data (bicycle_any.json "constants"); the
+    range is a sanity bound a table row is checked against."""
+    return Parameter(name, unit, minimum, minimum, maximum, help_text)
+
+
+BICYCLE_RANGES = Schema(
+    constant("speed_gain", "N m s/m", 0.0, 5000.0, "eq. 7 k_v: crank torque per m/s of speed error"),
+    constant("roll_gain", "1", 0.0, 20.0, "eq. 11 k_alpha at reference_speed (scaled by (v_ref / v)^2)"),
+    constant("roll_rate_gain", "s", 0.0, 5.0, "eq. 11 k_alpha-dot at reference_speed (scaled likewise)"),
+    constant("yaw_gain", "1", 0.0, 10.0, "eq. 11 k_beta"),
+    constant("yaw_rate_gain", "s", 0.0, 5.0, "eq. 11 k_beta-dot"),
+    constant("reference_speed", "m/s", 0.5, 10.0, "speed at which the roll gains are the table's"),
+    constant("max_fork_angle", "rad", 0.0, 1.0, "limit of the commanded fork angle"),
+    constant("ankle_mean", "rad", -0.7, 0.87, "ankle curve: mean plantarflexion over a crank turn"),
+    constant("ankle_swing", "rad", 0.0, 0.5, "ankle curve: half its range"),
+    constant("ankle_phase", "rad", -math.pi, math.pi, "ankle curve: crank angle past the bottom of the least flexion"),
+    constant("mount_hip", "rad", -2.18, 0.52, "mounting posture: hip flexion (negative)"),
+    constant("mount_knee", "rad", 0.0, 2.62, "mounting posture: knee flexion"),
+    constant("mount_shoulder_x", "rad", -1.57, 1.75, "mounting posture: right shoulder x (left mirrored)"),
+    constant("mount_shoulder_y", "rad", -1.57, 1.57, "mounting posture: shoulder y (arms forward)"),
+    constant("mount_elbow_z", "rad", 0.0, 2.62, "mounting posture: right elbow z (left mirrored)"),
+    constant("mount_ankle", "rad", -0.7, 0.87, "mounting posture: ankle plantarflexion"),
+)
+def _bicycle_rows(body: dict):
+    yield "constants", body["constants"]
+
+
+def bicycle_constants(character: str = "any") -> dict:
+    """The constants of the bicycling laws: bicycle_any.json's for every rider (no per-character
+    table yet)."""
+    return load("bicycle", "any")["constants"]
+
+
+BICYCLE_TABLE = register_table(TableType("bicycle", BICYCLE_RANGES, _bicycle_rows, (bicycle_constants,)))
+BICYCLE_SETTINGS = with_defaults(BICYCLE_RANGES, bicycle_constants())
+
+
+def mount_posture(c: dict) -> dict[str, float]:
+    """The rider's reference posture for the mounting solve, both sides, from the constants."""
+    return {"hip_r_y": c["mount_hip"], "hip_l_y": c["mount_hip"], "knee_r_y": c["mount_knee"],
+            "knee_l_y": c["mount_knee"], "shoulder_r_x": c["mount_shoulder_x"], "shoulder_l_x": -c["mount_shoulder_x"],
+            "shoulder_r_y": c["mount_shoulder_y"], "shoulder_l_y": c["mount_shoulder_y"],
+            "elbow_r_z": c["mount_elbow_z"], "elbow_l_z": -c["mount_elbow_z"],
+            "ankle_r_y": c["mount_ankle"], "ankle_l_y": c["mount_ankle"]}
 
 
 @register
 class Bicycling(Behaviour):
     name = "bicycle"
     summary = "Ride the bicycle at a commanded speed and heading (Hodgins et al. 1995)."
-    schema = Schema(
+    settings_schema = BICYCLE_SETTINGS
+    schema = SkillSchema(
         Parameter("speed", "m/s", 4.0, 1.0, 8.0, "commanded forward speed (also the rolling start's)"),
-        Parameter("heading", "deg", 0.0, -180.0, 180.0, "commanded heading, counter-clockwise from the start's"),
+        Parameter("heading", "rad", 0.0, -math.pi, math.pi, "commanded heading, counter-clockwise from the start's"),
         Parameter("gear", "1", DEFAULT_GEAR, 0.5, 5.0, "wheel turns per crank turn (fixed gear)"),
+        settings=BICYCLE_SETTINGS,
     )
     default_duration = 10.0
 
@@ -80,7 +122,7 @@ class Bicycling(Behaviour):
         saddle = data.site_xpos[pairs.bike[:2]].mean(axis=0)
         data.qpos[adr:adr + 3] += saddle - seat_mid
         reference = data.qpos.copy()
-        for name, value in MOUNT_POSTURE.items():
+        for name, value in mount_posture(params).items():
             reference[model.joint(name).qposadr[0]] = value
         data.qpos[:] = reference
         dofs = np.arange(int(root.dofadr[0]), model.nv)
@@ -95,6 +137,13 @@ class Bicycling(Behaviour):
         return {"mounted": True, "rolling_speed": params["speed"], "crank_angle": MOUNT_CRANK_ANGLE,
                 "attachment_gaps": {n: float(g) for n, g in zip(pairs.names, gaps)}}
 
+    def check_feasible(self):
+        """A scene does not mount a rider yet (run_scene calls neither start_state nor the rider's
+        attachments): refuse rather than ride a bicycle that is not there."""
+        if mujoco.mj_name2id(self.ctx.model, mujoco.mjtObj.mjOBJ_BODY, NAMES["frame"]) < 0 or self.ctx.actor.prefix:
+            raise ParameterError("the bicycle behaviour runs only alone (python -m sim_core simulate bicycle); "
+                                 "scenes with a bicycle are not built yet")
+
     def start(self, t):
         """Look the bicycle and the limbs up; the targets start at the mounted pose."""
         ctx = self.ctx
@@ -103,7 +152,7 @@ class Bicycling(Behaviour):
         self.bike = BicycleView.of(model)
         self.pairs = SitePairs(model, ctx.actor.prefix)
         self.scratch = mujoco.MjData(model)
-        self.desired_yaw = math.radians(self.params["heading"]) + self.bike.state(ctx.data)["yaw"]
+        self.desired_yaw = self.params["heading"] + self.bike.state(ctx.data)["yaw"]
         self.leg_servos = {side: servos.indices(names) for side, names in LEG_JOINTS.items()}
         self.arm_servos = {side: servos.indices(names) for side, names in ARM_JOINTS.items()}
         self.ankle_servos = {side: servos.indices([name])[0] for side, name in ANKLE_JOINTS.items()}
@@ -122,16 +171,17 @@ class Bicycling(Behaviour):
         ctx, servos, bike = self.ctx, self.ctx.servos, self.bike
         model, data = ctx.model, ctx.data
         state = bike.state(data)
-        g = RIDE_GAINS
-        scale = (REFERENCE_SPEED / max(state["speed"], 1.0)) ** 2
+        c = self.params
+        scale = (c["reference_speed"] / max(state["speed"], 1.0)) ** 2
         fork = fork_angle(state["roll"], state["roll_rate"], state["yaw"], state["yaw_rate"], self.desired_yaw,
-                          g["roll"] * scale, g["roll_rate"] * scale, g["yaw"], g["yaw_rate"])
-        self.fork_command = min(max(fork, -MAX_FORK_ANGLE), MAX_FORK_ANGLE)
+                          c["roll_gain"] * scale, c["roll_rate_gain"] * scale, c["yaw_gain"], c["yaw_rate_gain"])
+        self.fork_command = min(max(fork, -c["max_fork_angle"]), c["max_fork_angle"])
         # where the limbs should be: the feet on the pedals as they are, the hands on a fork at its command
         scratch = self.scratch
         scratch.qpos[:] = data.qpos
         scratch.qpos[bike.steer_qpos] = self.fork_command
-        ankles = {"r": ankle_angle(state["crank"]), "l": ankle_angle(state["crank"] + math.pi)}
+        curve = (c["ankle_mean"], c["ankle_swing"], c["ankle_phase"])
+        ankles = {"r": ankle_angle(state["crank"], *curve), "l": ankle_angle(state["crank"] + math.pi, *curve)}
         for side, value in ankles.items():
             scratch.qpos[servos.qpos_adr[self.ankle_servos[side]]] = value
         solve(model, scratch, self.pairs, [2, 3, 4, 5], self.limb_dofs, data.qpos, IK_ITERATIONS_PER_TICK)
@@ -143,7 +193,7 @@ class Bicycling(Behaviour):
         for side, value in ankles.items():
             goal[self.ankle_servos[side]] = value
         # eqs. 7-10: pedal forces, through each leg's Jacobian to joint torques (servo offsets)
-        torque = crank_torque(state["speed"], self.params["speed"], g["speed"])
+        torque = crank_torque(state["speed"], c["speed"], c["speed_gain"])
         forces = dict(zip("rl", pedal_forces(torque, state["crank"], CRANK_LENGTH)))
         offset = np.zeros(len(goal))
         axle = data.xpos[bike.crank_body]

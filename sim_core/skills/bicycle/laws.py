@@ -31,15 +31,13 @@ def pedal_forces(torque: float, crank_angle: float, crank_length: float) -> tupl
     return right * torque / crank_length, left * torque / crank_length
 
 
-# the ankle over a crank turn (rad, positive = toes down): least plantarflexed near the top, most
-# near the bottom and into the upstroke, a 17 deg range - the shape of Cavanagh & Sanderson's
-# (1986) ankle curve of pursuit riders ([A] 144), whose data the seeds do not give (hand-made)
-ANKLE_MEAN, ANKLE_SWING, ANKLE_PHASE = 0.30, 0.15, 0.35
-
-
-def ankle_angle(phase: float) -> float:
-    """The ankle target of a leg whose crank arm is ``phase`` rad past top dead centre."""
-    return ANKLE_MEAN - ANKLE_SWING * math.cos(phase - ANKLE_PHASE)
+def ankle_angle(phase: float, mean: float, swing: float, shift: float) -> float:
+    """The ankle target (rad, positive = toes down) of a leg whose crank arm is ``phase`` rad past
+    top dead centre: least plantarflexed near the top, most near the bottom and into the upstroke
+    (``mean - swing cos(phase - shift)``) - the shape of Cavanagh & Sanderson's (1986) ankle
+    curve of pursuit riders ([A] 144), whose data the seeds do not give (hand-made; the values
+    are bicycle_any.json's)."""
+    return mean - swing * math.cos(phase - shift)
 
 
 def fork_angle(roll: float, roll_rate: float, yaw: float, yaw_rate: float, desired_yaw: float,

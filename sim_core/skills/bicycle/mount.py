@@ -17,6 +17,7 @@ from ...world.bicycle import ATTACHMENTS
 IK_DAMPING = 1e-3            # damped least squares: lambda^2 added to J J^T's diagonal
 IK_POSTURE_WEIGHT = 0.05     # pull of the unconstrained joints back to the reference posture
 IK_ITERATIONS = 60
+IK_ITERATIONS_PER_TICK = 3   # warm-started from the current pose each control tick
 IK_TOLERANCE = 5e-4          # m: stop when every site is this close
 
 
