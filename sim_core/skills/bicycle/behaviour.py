@@ -21,6 +21,7 @@ Control, every tick (laws.py for the equations):
 """
 from __future__ import annotations
 
+import dataclasses
 import math
 
 import mujoco
@@ -104,7 +105,7 @@ class Bicycling(Behaviour):
 
     @classmethod
     def scene(cls, params, world, character=None):
-        import dataclasses
+        """The requested world with the bicycle (at the origin facing +X, its gear, the rider attached)."""
         return dataclasses.replace(world, bicycle=Bicycle(gear=params["gear"], rider=""))
 
     @classmethod
