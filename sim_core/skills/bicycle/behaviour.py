@@ -43,30 +43,28 @@ ARM_JOINTS = {"r": ("shoulder_r_x", "shoulder_r_y", "shoulder_r_z", "elbow_r_y",
               "l": ("shoulder_l_x", "shoulder_l_y", "shoulder_l_z", "elbow_l_y", "elbow_l_z")}
 
 
-def constant(name: str, unit: str, minimum: float, maximum: float, help_text: str) -> Parameter:
-    """A constant of the bicycling laws: its value is data (bicycle_any.json "constants"); the
-    range is a sanity bound a table row is checked against."""
-    return Parameter(name, unit, minimum, minimum, maximum, help_text)
-
-
+# the constants of the bicycling laws: their values are data (bicycle_any.json "constants", the
+# defaults below are replaced by them); each range is a sanity bound a table row is checked against
 BICYCLE_RANGES = Schema(
-    constant("speed_gain", "N m s/m", 0.0, 5000.0, "eq. 7 k_v: crank torque per m/s of speed error"),
-    constant("roll_gain", "1", 0.0, 20.0, "eq. 11 k_alpha at reference_speed (scaled by (v_ref / v)^2)"),
-    constant("roll_rate_gain", "s", 0.0, 5.0, "eq. 11 k_alpha-dot at reference_speed (scaled likewise)"),
-    constant("yaw_gain", "1", 0.0, 10.0, "eq. 11 k_beta"),
-    constant("yaw_rate_gain", "s", 0.0, 5.0, "eq. 11 k_beta-dot"),
-    constant("reference_speed", "m/s", 0.5, 10.0, "speed at which the roll gains are the table's"),
-    constant("max_fork_angle", "rad", 0.0, 1.0, "limit of the commanded fork angle"),
-    constant("ankle_mean", "rad", -0.7, 0.87, "ankle curve: mean plantarflexion over a crank turn"),
-    constant("ankle_swing", "rad", 0.0, 0.5, "ankle curve: half its range"),
-    constant("ankle_phase", "rad", -math.pi, math.pi, "ankle curve: crank angle past the bottom of the least flexion"),
-    constant("mount_hip", "rad", -2.18, 0.52, "mounting posture: hip flexion (negative)"),
-    constant("mount_knee", "rad", 0.0, 2.62, "mounting posture: knee flexion"),
-    constant("mount_shoulder_x", "rad", -1.57, 1.75, "mounting posture: right shoulder x (left mirrored)"),
-    constant("mount_shoulder_y", "rad", -1.57, 1.57, "mounting posture: shoulder y (arms forward)"),
-    constant("mount_elbow_z", "rad", 0.0, 2.62, "mounting posture: right elbow z (left mirrored)"),
-    constant("mount_ankle", "rad", -0.7, 0.87, "mounting posture: ankle plantarflexion"),
+    Parameter("speed_gain", "N m s/m", 0.0, 0.0, 5000.0, "eq. 7 k_v: crank torque per m/s of speed error"),
+    Parameter("roll_gain", "1", 0.0, 0.0, 20.0, "eq. 11 k_alpha at reference_speed (scaled by (v_ref / v)^2)"),
+    Parameter("roll_rate_gain", "s", 0.0, 0.0, 5.0, "eq. 11 k_alpha-dot at reference_speed (scaled likewise)"),
+    Parameter("yaw_gain", "1", 0.0, 0.0, 10.0, "eq. 11 k_beta"),
+    Parameter("yaw_rate_gain", "s", 0.0, 0.0, 5.0, "eq. 11 k_beta-dot"),
+    Parameter("reference_speed", "m/s", 0.5, 0.5, 10.0, "speed at which the roll gains are the table's"),
+    Parameter("max_fork_angle", "rad", 0.0, 0.0, 1.0, "limit of the commanded fork angle"),
+    Parameter("ankle_mean", "rad", -0.7, -0.7, 0.87, "ankle curve: mean plantarflexion over a crank turn"),
+    Parameter("ankle_swing", "rad", 0.0, 0.0, 0.5, "ankle curve: half its range"),
+    Parameter("ankle_phase", "rad", -math.pi, -math.pi, math.pi, "ankle curve: crank angle past top dead centre of the least plantarflexion"),
+    Parameter("mount_hip", "rad", -2.18, -2.18, 0.52, "mounting posture: hip flexion (negative)"),
+    Parameter("mount_knee", "rad", 0.0, 0.0, 2.62, "mounting posture: knee flexion"),
+    Parameter("mount_shoulder_x", "rad", -1.57, -1.57, 1.75, "mounting posture: right shoulder x (left mirrored)"),
+    Parameter("mount_shoulder_y", "rad", -1.57, -1.57, 1.57, "mounting posture: shoulder y (arms forward)"),
+    Parameter("mount_elbow_z", "rad", 0.0, 0.0, 2.62, "mounting posture: right elbow z (left mirrored)"),
+    Parameter("mount_ankle", "rad", -0.7, -0.7, 0.87, "mounting posture: ankle plantarflexion"),
 )
+
+
 def _bicycle_rows(body: dict):
     yield "constants", body["constants"]
 
