@@ -234,6 +234,7 @@ def run(request: RunRequest, progress: Callable[[float], None] | None = None,
     data = mujoco.MjData(model)
     set_standing_pose(model, data, character)
     request.start.apply(data)
+    skill_start = cls.start_state(params, model, data, character)
     hold_pose(model, data)
     mujoco.mj_forward(model, data)
 
@@ -254,7 +255,8 @@ def run(request: RunRequest, progress: Callable[[float], None] | None = None,
         "duration": duration if len(control) == loop.n_ticks else float(len(control) * loop.tick_time),
         "ended_early": len(control) < loop.n_ticks, "pushes": [p.to_dict() for p in request.pushes],
         "world": world.to_dict(),
-        "start_state": {"height": request.start.height, "velocity": list(request.start.velocity)},
+        "start_state": {"height": request.start.height, "velocity": list(request.start.velocity),
+                        **({"skill": skill_start} if skill_start is not None else {})},
         "strength": request.strength, "total_mass": float(model.body_subtreemass[1]), "timestep": model.opt.timestep,
         "steps_per_tick": loop.steps_per_tick,
         "control_rate": cls.control_rate, "phase_events": behaviour.phase_events,

@@ -23,7 +23,7 @@ import mujoco
 import numpy as np
 
 from .spec import CharacterSpec
-from ..world import World, add_world
+from ..world import World, add_attachments, add_world
 from ..world.props import CONTACT_GROUP, FOOT_FRICTION
 
 TIMESTEP = 0.001
@@ -85,6 +85,7 @@ def build_mjspec(character: CharacterSpec, world: World | None = None, strength:
     spec = new_spec(f"sim_athletics_{character.name}")
     add_world(spec, world, character)
     add_character(spec, character, world.extra_mass, strength)
+    add_attachments(spec, world, character)
     return spec
 
 

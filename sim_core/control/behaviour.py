@@ -74,6 +74,15 @@ class Behaviour:
         dive adds its platform, a jump a box under its target). Default: the requested world."""
         return world
 
+    @classmethod
+    def start_state(cls, params: dict[str, float], model: mujoco.MjModel, data: mujoco.MjData,
+                    character: CharacterSpec) -> dict | None:
+        """Pose the start where the skill begins, after the standing pose and any StartState (a
+        rider mounted on a rolling bicycle): a named initial condition, recorded in the run's
+        initial state and described by the returned dict in meta["start_state"]["skill"].
+        Default: nothing (None)."""
+        return None
+
     @property
     def run_complete(self) -> bool:
         """True when the skill has ended before the requested duration (e.g. a dive at water

@@ -9,6 +9,7 @@ from typing import Callable
 
 import mujoco
 
+from .bicycle import add_bicycle, attach_rider
 from .world import World
 
 FOOT_FRICTION = 1.0        # what a foot meets on the ground, a box or a platform
@@ -34,6 +35,13 @@ def add_world(spec: mujoco.MjSpec, world: World, character) -> None:
     (a platform's edge at its heels); the character stands at the origin facing +X."""
     for builder in PROP_BUILDERS.values():
         builder(spec, world, character)
+
+
+def add_attachments(spec: mujoco.MjSpec, world: World, character) -> None:
+    """What ties a character to a prop, added once the character's bodies exist: a bicycle's
+    rider attachments (body to body). Nothing for any other world."""
+    if world.bicycle is not None and world.bicycle.rider is not None:
+        attach_rider(spec, world.bicycle, character)
 
 
 def _felt(geom) -> None:
@@ -92,3 +100,11 @@ def add_boxes(spec: mujoco.MjSpec, world: World, character) -> None:
         _felt(spec.worldbody.add_geom(name=f"box{k}", type=mujoco.mjtGeom.mjGEOM_BOX,
                                       size=[length / 2, width / 2, half], pos=[x, y, world.floor + half],
                                       rgba=[0.6, 0.5, 0.4, 1]))
+
+
+@prop_builder("bicycle")
+def add_bicycle_prop(spec: mujoco.MjSpec, world: World, character) -> None:
+    """The bicycle (sim_core.world.bicycle): an articulated prop with its own free joint, its
+    geoms colliding with the ground like the character's."""
+    if world.bicycle is not None:
+        add_bicycle(spec, world.bicycle, CONTACT_GROUP)

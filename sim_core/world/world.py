@@ -8,6 +8,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..ballistics import GRAVITY
+from .bicycle import Bicycle
 
 SLOPE_RAMP_PER_DEGREE = 0.15   # s per degree: the ground tilts at ~6.7 deg/s
 
@@ -39,6 +40,7 @@ class World:
     floor: float = 0.0                         # m: height of the ground plane. Below 0, the character starts
                                                # on a box (a box of World.boxes with its top at z = 0, so every
                                                # standing controller works unchanged) and can jump down
+    bicycle: Bicycle | None = None             # the bicycle prop (sim_core.world.bicycle), None: no bicycle
 
     @property
     def ramp_time(self) -> float:
@@ -57,7 +59,8 @@ class World:
         """The world as recorded in a trajectory's meta."""
         return {"slope": self.slope, "slope_axis": self.slope_axis, "extra_mass": self.extra_mass,
                 "platform": self.platform, "platform_edge": self.platform_edge,
-                "boxes": [list(b) for b in self.boxes], "floor": self.floor}
+                "boxes": [list(b) for b in self.boxes], "floor": self.floor,
+                **({"bicycle": self.bicycle.to_dict()} if self.bicycle else {})}
 
 
 def gravity_for_slope(slope: float, axis: str) -> np.ndarray:

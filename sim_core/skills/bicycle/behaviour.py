@@ -1,0 +1,216 @@
+"""Bicycling (Hodgins et al. 1995, "Bicycling"; SEEDS-WAVE2.md §1).
+
+The rider sits on the bicycle prop (sim_core.world.bicycle): the pelvis on the saddle by a
+passive pivot about the lateral axis, the hands on the grips and the feet on the pedals by
+two-sided soft attachments (equality constraints between rider and bicycle bodies, never to the
+world). The run starts mounted and rolling at the commanded speed (a named start state,
+``start_state``: the rider posed by inverse kinematics, everything moving at the speed, the
+wheels rolling and the crank turning at v/(r g)).
+
+Control, every tick (laws.py for the equations):
+  * speed: crank torque by eq. 7 (sign-fixed), split between the legs by crank angle (eqs.
+    8-10), each leg's tangential pedal force turned into hip, knee and ankle torques through
+    the leg's Jacobian at the foot's site (``mj_jacSite``: tau = J^T f), added to the servos as
+    offsets (tau / kp);
+  * the legs follow the pedals: inverse kinematics of each foot to where its pedal will be one
+    servo lag ahead, with the servo's damping fed the target's velocity (so the PD follows the
+    crank instead of braking it);
+  * steering: eq. 11 gives the fork angle; inverse kinematics puts the hands on the grips of a
+    fork turned to it; the arms' servos steer the bicycle through the hand springs ([A] 142);
+  * waist, neck and wrists hold their mounted angles ([A] 144).
+"""
+from __future__ import annotations
+
+import dataclasses
+import math
+
+import mujoco
+import numpy as np
+
+from ...control.behaviour import Behaviour, register
+from ...schema import Parameter, Schema
+from ...tuned import TableType, load, register as register_table
+from ...tuned.settings import SkillSchema, with_defaults
+from ...errors import ParameterError
+from ...world.bicycle import CRANK_LENGTH, DEFAULT_GEAR, NAMES, Bicycle, BicycleView
+from .laws import ankle_angle, crank_torque, fork_angle, pedal_forces
+from .mount import IK_ITERATIONS_PER_TICK, SitePairs, match_velocities, solve
+
+MOUNT_CRANK_ANGLE = math.pi / 2      # the start's crank: right pedal forward, left back (horizontal)
+LEG_JOINTS = {"r": ("hip_r_y", "knee_r_y"), "l": ("hip_l_y", "knee_l_y")}
+ANKLE_JOINTS = {"r": "ankle_r_y", "l": "ankle_l_y"}
+ARM_JOINTS = {"r": ("shoulder_r_x", "shoulder_r_y", "shoulder_r_z", "elbow_r_y", "elbow_r_z"),
+              "l": ("shoulder_l_x", "shoulder_l_y", "shoulder_l_z", "elbow_l_y", "elbow_l_z")}
+
+
+# the constants of the bicycling laws: their values are data (bicycle_any.json "constants", the
+# defaults below are replaced by them); each range is a sanity bound a table row is checked against
+BICYCLE_RANGES = Schema(
+    Parameter("speed_gain", "N m s/m", 0.0, 0.0, 5000.0, "eq. 7 k_v: crank torque per m/s of speed error"),
+    Parameter("roll_gain", "1", 0.0, 0.0, 20.0, "eq. 11 k_alpha at reference_speed (scaled by (v_ref / v)^2)"),
+    Parameter("roll_rate_gain", "s", 0.0, 0.0, 5.0, "eq. 11 k_alpha-dot at reference_speed (scaled likewise)"),
+    Parameter("yaw_gain", "1", 0.0, 0.0, 10.0, "eq. 11 k_beta"),
+    Parameter("yaw_rate_gain", "s", 0.0, 0.0, 5.0, "eq. 11 k_beta-dot"),
+    Parameter("reference_speed", "m/s", 0.5, 0.5, 10.0, "speed at which the roll gains are the table's"),
+    Parameter("max_fork_angle", "rad", 0.0, 0.0, 1.0, "limit of the commanded fork angle"),
+    Parameter("ankle_mean", "rad", -0.7, -0.7, 0.87, "ankle curve: mean plantarflexion over a crank turn"),
+    Parameter("ankle_swing", "rad", 0.0, 0.0, 0.5, "ankle curve: half its range"),
+    Parameter("ankle_phase", "rad", -math.pi, -math.pi, math.pi, "ankle curve: crank angle past top dead centre of the least plantarflexion"),
+    Parameter("mount_hip", "rad", -2.18, -2.18, 0.52, "mounting posture: hip flexion (negative)"),
+    Parameter("mount_knee", "rad", 0.0, 0.0, 2.62, "mounting posture: knee flexion"),
+    Parameter("mount_shoulder_x", "rad", -1.57, -1.57, 1.75, "mounting posture: right shoulder x (left mirrored)"),
+    Parameter("mount_shoulder_y", "rad", -1.57, -1.57, 1.57, "mounting posture: shoulder y (arms forward)"),
+    Parameter("mount_elbow_z", "rad", 0.0, 0.0, 2.62, "mounting posture: right elbow z (left mirrored)"),
+    Parameter("mount_ankle", "rad", -0.7, -0.7, 0.87, "mounting posture: ankle plantarflexion"),
+)
+
+
+def _bicycle_rows(body: dict):
+    yield "constants", body["constants"]
+
+
+def bicycle_constants(character: str = "any") -> dict:
+    """The constants of the bicycling laws: bicycle_any.json's for every rider (no per-character
+    table yet)."""
+    return load("bicycle", "any")["constants"]
+
+
+BICYCLE_TABLE = register_table(TableType("bicycle", BICYCLE_RANGES, _bicycle_rows, (bicycle_constants,)))
+BICYCLE_SETTINGS = with_defaults(BICYCLE_RANGES, bicycle_constants())
+
+
+def mount_posture(c: dict) -> dict[str, float]:
+    """The rider's reference posture for the mounting solve, both sides, from the constants."""
+    return {"hip_r_y": c["mount_hip"], "hip_l_y": c["mount_hip"], "knee_r_y": c["mount_knee"],
+            "knee_l_y": c["mount_knee"], "shoulder_r_x": c["mount_shoulder_x"], "shoulder_l_x": -c["mount_shoulder_x"],
+            "shoulder_r_y": c["mount_shoulder_y"], "shoulder_l_y": c["mount_shoulder_y"],
+            "elbow_r_z": c["mount_elbow_z"], "elbow_l_z": -c["mount_elbow_z"],
+            "ankle_r_y": c["mount_ankle"], "ankle_l_y": c["mount_ankle"]}
+
+
+@register
+class Bicycling(Behaviour):
+    name = "bicycle"
+    summary = "Ride the bicycle at a commanded speed and heading (Hodgins et al. 1995)."
+    settings_schema = BICYCLE_SETTINGS
+    schema = SkillSchema(
+        Parameter("speed", "m/s", 4.0, 1.0, 8.0, "commanded forward speed (also the rolling start's)"),
+        Parameter("heading", "rad", 0.0, -math.pi, math.pi, "commanded heading, counter-clockwise from the start's"),
+        Parameter("gear", "1", DEFAULT_GEAR, 0.5, 5.0, "wheel turns per crank turn (fixed gear)"),
+        settings=BICYCLE_SETTINGS,
+    )
+    default_duration = 10.0
+
+    @classmethod
+    def scene(cls, params, world, character=None):
+        """The requested world with the bicycle (at the origin facing +X, its gear, the rider attached)."""
+        return dataclasses.replace(world, bicycle=Bicycle(gear=params["gear"], rider=""))
+
+    @classmethod
+    def start_state(cls, params, model, data, character):
+        """Mounted and rolling: the rider's root and joints solved so that the seat bones sit on
+        the saddle and the palms and balls of the feet on the grips and pedals (crank
+        horizontal), then the rolling start at the commanded speed."""
+        bike = BicycleView.of(model)
+        bike.set_crank(data, MOUNT_CRANK_ANGLE)
+        mujoco.mj_kinematics(model, data)
+        pairs = SitePairs(model)
+        root = model.joint("root")
+        adr = int(root.qposadr[0])
+        seat_mid = data.site_xpos[pairs.rider[:2]].mean(axis=0)
+        saddle = data.site_xpos[pairs.bike[:2]].mean(axis=0)
+        data.qpos[adr:adr + 3] += saddle - seat_mid
+        reference = data.qpos.copy()
+        for name, value in mount_posture(params).items():
+            reference[model.joint(name).qposadr[0]] = value
+        data.qpos[:] = reference
+        dofs = np.arange(int(root.dofadr[0]), model.nv)
+        rider_dofs = dofs[model.body_rootid[model.dof_bodyid[dofs]] == model.jnt_bodyid[root.id]]
+        every = list(range(len(pairs.names)))
+        solve(model, data, pairs, every, rider_dofs, reference, iterations=300)
+        gaps = solve(model, data, pairs, every, rider_dofs, data.qpos.copy(), iterations=50, posture_weight=0.0)
+        bike.rolling_start(data, params["speed"])
+        dof = int(root.dofadr[0])
+        data.qvel[dof:dof + 3] = data.qvel[bike.free_dof:bike.free_dof + 3]
+        match_velocities(model, data, pairs, rider_dofs)
+        return {"mounted": True, "rolling_speed": params["speed"], "crank_angle": MOUNT_CRANK_ANGLE,
+                "attachment_gaps": {n: float(g) for n, g in zip(pairs.names, gaps)}}
+
+    def check_feasible(self):
+        """A scene does not mount a rider yet (run_scene calls neither start_state nor the rider's
+        attachments): refuse rather than ride a bicycle that is not there."""
+        if mujoco.mj_name2id(self.ctx.model, mujoco.mjtObj.mjOBJ_BODY, NAMES["frame"]) < 0 or self.ctx.actor.prefix:
+            raise ParameterError("the bicycle behaviour runs only alone (python -m sim_core simulate bicycle); "
+                                 "scenes with a bicycle are not built yet")
+
+    def start(self, t):
+        """Look the bicycle and the limbs up; the targets start at the mounted pose."""
+        ctx = self.ctx
+        model, servos = ctx.model, ctx.servos
+        self.target = servos.angles().copy()
+        self.bike = BicycleView.of(model)
+        self.pairs = SitePairs(model, ctx.actor.prefix)
+        self.scratch = mujoco.MjData(model)
+        self.desired_yaw = self.params["heading"] + self.bike.state(ctx.data)["yaw"]
+        self.leg_servos = {side: servos.indices(names) for side, names in LEG_JOINTS.items()}
+        self.arm_servos = {side: servos.indices(names) for side, names in ARM_JOINTS.items()}
+        self.ankle_servos = {side: servos.indices([name])[0] for side, name in ANKLE_JOINTS.items()}
+        self.limb_servos = np.concatenate([*self.leg_servos.values(), *self.arm_servos.values()])
+        self.limb_dofs = servos.dof_adr[self.limb_servos]
+        self.leg_dofs = {side: servos.dof_adr[i] for side, i in self.leg_servos.items()}
+        self.kp = servos.default_kp
+        self.lag = servos.default_kv / servos.default_kp          # s: a PD servo's lag behind its target
+        self.previous_ik = None
+        self.fork_command = 0.0
+        self.jac = np.zeros((3, model.nv))
+
+    def update(self, t):
+        """Eq. 11 -> fork command -> arm IK; pedal IK and ankle curve -> leg targets; eqs. 7-10
+        -> pedal forces -> leg torques (servo offsets)."""
+        ctx, servos, bike = self.ctx, self.ctx.servos, self.bike
+        model, data = ctx.model, ctx.data
+        state = bike.state(data)
+        c = self.params
+        scale = (c["reference_speed"] / max(state["speed"], 1.0)) ** 2
+        fork = fork_angle(state["roll"], state["roll_rate"], state["yaw"], state["yaw_rate"], self.desired_yaw,
+                          c["roll_gain"] * scale, c["roll_rate_gain"] * scale, c["yaw_gain"], c["yaw_rate_gain"])
+        self.fork_command = min(max(fork, -c["max_fork_angle"]), c["max_fork_angle"])
+        # where the limbs should be: the feet on the pedals as they are, the hands on a fork at its command
+        scratch = self.scratch
+        scratch.qpos[:] = data.qpos
+        scratch.qpos[bike.steer_qpos] = self.fork_command
+        curve = (c["ankle_mean"], c["ankle_swing"], c["ankle_phase"])
+        ankles = {"r": ankle_angle(state["crank"], *curve), "l": ankle_angle(state["crank"] + math.pi, *curve)}
+        for side, value in ankles.items():
+            scratch.qpos[servos.qpos_adr[self.ankle_servos[side]]] = value
+        solve(model, scratch, self.pairs, [2, 3, 4, 5], self.limb_dofs, data.qpos, IK_ITERATIONS_PER_TICK)
+        goal = self.target.copy()
+        ik = scratch.qpos[servos.qpos_adr[self.limb_servos]]
+        velocity = np.zeros_like(ik) if self.previous_ik is None else (ik - self.previous_ik) / ctx.control_dt
+        self.previous_ik = ik.copy()
+        goal[self.limb_servos] = ik + self.lag[self.limb_servos] * velocity
+        for side, value in ankles.items():
+            goal[self.ankle_servos[side]] = value
+        # eqs. 7-10: pedal forces, through each leg's Jacobian to joint torques (servo offsets)
+        torque = crank_torque(state["speed"], c["speed"], c["speed_gain"])
+        forces = dict(zip("rl", pedal_forces(torque, state["crank"], CRANK_LENGTH)))
+        offset = np.zeros(len(goal))
+        axle = data.xpos[bike.crank_body]
+        crank_axis = data.xmat[bike.crank_body].reshape(3, 3)[:, 1]
+        for k, side in ((4, "r"), (5, "l")):
+            site = self.pairs.rider[k]
+            arm = data.site_xpos[self.pairs.bike[k]] - axle
+            tangent = np.cross(crank_axis, arm)
+            tangent /= np.linalg.norm(tangent)
+            mujoco.mj_jacSite(model, data, self.jac, None, site)
+            tau = self.jac[:, self.leg_dofs[side]].T @ (forces[side] * tangent)
+            idx = self.leg_servos[side]
+            offset[idx] = tau / self.kp[idx]
+        servos.offset[:] = offset
+        servos.hold(goal, t)
+
+    @classmethod
+    def assess(cls, trajectory):
+        from .assess import ride_metrics
+        metrics = ride_metrics(trajectory)
+        return ("success" if not metrics["fell"] else "fell"), metrics

@@ -1,0 +1,49 @@
+"""The bicyclist's control laws as pure functions (Hodgins et al. 1995 eqs. 7-11, with the sign
+fix of SEEDS-WAVE2.md §1.3; eq. 11 as printed, which is right in our frame X forward, Y left,
+Z up: positive roll is right side down, positive yaw and fork angle are to the left)."""
+from __future__ import annotations
+
+import math
+
+
+def crank_torque(speed: float, desired_speed: float, gain: float) -> float:
+    """Eq. 7 with the sign fix: ``tau = k_v (v_d - v)``, k_v > 0; positive drives forward."""
+    return gain * (desired_speed - speed)
+
+
+def leg_weight(phase: float) -> float:
+    """Eq. 8 per leg: ``w = (1 + sin phi)/2`` with phi that leg's crank arm past top dead centre
+    in the forward-pedalling direction: 1 at the forward horizontal (mid-downstroke), 0 at the
+    rear horizontal; the two legs' weights (phi and phi + pi) sum to 1."""
+    return 0.5 * (1.0 + math.sin(phase))
+
+
+def pedal_forces(torque: float, crank_angle: float, crank_length: float) -> tuple[float, float]:
+    """Eqs. 9-10 (right, left): tangential pedal forces (N, positive along forward pedalling) whose
+    crank torques sum to ``torque``. ``crank_angle``: the right arm's angle past top dead centre
+    (0: right pedal up, Hodgins' theta_crank = 0), the left arm half a turn on. Propulsion goes
+    to the leg on the downstroke; braking (torque < 0, fixed gear) to the rising leg, which
+    pushes against its pedal (the roles swap, [A] 136)."""
+    right = leg_weight(crank_angle)
+    left = 1.0 - right
+    if torque < 0:
+        right, left = left, right
+    return right * torque / crank_length, left * torque / crank_length
+
+
+def ankle_angle(phase: float, mean: float, swing: float, shift: float) -> float:
+    """The ankle target (rad, positive = toes down) of a leg whose crank arm is ``phase`` rad past
+    top dead centre: least plantarflexed near the top, most near the bottom and into the upstroke
+    (``mean - swing cos(phase - shift)``) - the shape of Cavanagh & Sanderson's (1986) ankle
+    curve of pursuit riders ([A] 144), whose data the seeds do not give (hand-made; the values
+    are bicycle_any.json's)."""
+    return mean - swing * math.cos(phase - shift)
+
+
+def fork_angle(roll: float, roll_rate: float, yaw: float, yaw_rate: float, desired_yaw: float,
+               k_roll: float, k_roll_rate: float, k_yaw: float, k_yaw_rate: float) -> float:
+    """Eq. 11: ``theta_fork = -k_a (a - a_d) - k_ad a' + k_b (b - b_d) + k_bd b'`` with a_d = 0.
+    A right lean steers right (into the fall); a heading left of the desired one first steers
+    left, which leans the bicycle right, and the roll term then turns it right: counter-steer."""
+    heading_error = math.remainder(yaw - desired_yaw, 2 * math.pi)
+    return -k_roll * roll - k_roll_rate * roll_rate + k_yaw * heading_error + k_yaw_rate * yaw_rate

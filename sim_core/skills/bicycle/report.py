@@ -1,0 +1,100 @@
+"""``python -m sim_core report bicycle``: the bicycle's measured figures (docs/bicycle.md).
+
+* the riderless bicycle let go at 4 m/s: the exponential speed decay (fit of ln v) and, with a
+  small roll-rate kick, whether it stays up;
+* rides at 3, 4 and 5 m/s and a +30 deg heading step (metrics of ``assess``);
+* speed: simulated seconds per wall-clock second of a ride beside raw ``mj_step`` of the same
+  model with the controls held.
+"""
+from __future__ import annotations
+
+import argparse
+import json
+import math
+import time
+
+import mujoco
+import numpy as np
+
+from ...character.model import new_spec
+from ...simulate import RunRequest, run
+from ...world import World, add_world
+from ...world.bicycle import Bicycle, BicycleView, DEFAULT_GEAR
+
+
+def riderless_model(gear: float = DEFAULT_GEAR) -> mujoco.MjModel:
+    """The bicycle alone on the ground (no character)."""
+    spec = new_spec("bicycle_alone")
+    add_world(spec, World(bicycle=Bicycle(gear=gear)), None)
+    return mujoco.MjModel.from_xml_string(spec.to_xml())
+
+
+def coast(model: mujoco.MjModel, speed: float, seconds: float, roll_rate: float = 0.0):
+    """The riderless bicycle let go at ``speed`` (the rolling start) and, if asked, a roll rate
+    (rad/s, right side down): rows (time, speed, roll, steer) every 10 ms until ``seconds`` or
+    the first contact of anything but a tyre with the ground (the fall time, else None)."""
+    bike = BicycleView.of(model)
+    data = mujoco.MjData(model)
+    mujoco.mj_forward(model, data)
+    bike.rolling_start(data, speed)
+    data.qvel[bike.free_dof + 3] = roll_rate
+    tyres = {model.geom("bicycle_front_wheel_tyre").id, model.geom("bicycle_rear_wheel_tyre").id}
+    ground = model.geom("ground").id
+    rows, fell = [], None
+    for k in range(int(round(seconds / model.opt.timestep))):
+        if k % 10 == 0:
+            s = bike.state(data)
+            rows.append((data.time, s["speed"], s["roll"], s["steer"]))
+        mujoco.mj_step(model, data)
+        touching = {c.geom1 if c.geom2 == ground else c.geom2 for c in data.contact[:data.ncon]}
+        if touching - tyres:
+            fell = data.time
+            break
+    return np.array(rows), fell
+
+
+def decay_fit(rows: np.ndarray) -> dict:
+    """Time constant of v(t) = v0 exp(-t / T) fitted to ln v, and the fit's R^2."""
+    t, v = rows[:, 0], rows[:, 1]
+    slope, intercept = np.polyfit(t, np.log(v), 1)
+    residual = np.log(v) - (slope * t + intercept)
+    return {"time_constant_s": float(-1 / slope), "r2_of_ln_v": float(1 - residual.var() / np.log(v).var())}
+
+
+def benchmark(seconds: float) -> dict:
+    """Sim-s per wall-s of a ride (the whole loop: control at 200 Hz, recording) and of raw
+    mj_step on the ride's model with its controls held."""
+    start = time.perf_counter()
+    trajectory = run(RunRequest("bicycle", "man", params={"speed": 4.0}, duration=seconds))
+    ride_wall = trajectory.meta["wall_seconds_in_loop"]
+    model = mujoco.MjModel.from_xml_string(trajectory.meta["model_xml"])
+    data = mujoco.MjData(model)
+    mujoco.mj_setState(model, data, trajectory.arrays["initial_state"], trajectory.meta["state_spec"])
+    data.ctrl[:] = trajectory.arrays["control"][0]
+    steps = int(round(seconds / model.opt.timestep))
+    t0 = time.perf_counter()
+    mujoco.mj_step(model, data, nstep=steps)
+    raw_wall = time.perf_counter() - t0
+    return {"ride_sim_s_per_wall_s": seconds / ride_wall, "raw_mj_step_sim_s_per_wall_s": seconds / raw_wall,
+            "ride_total_wall_s": time.perf_counter() - start - raw_wall}
+
+
+def main(argv=None) -> int:
+    parser = argparse.ArgumentParser(prog="python -m sim_core report bicycle", description=__doc__.splitlines()[0])
+    parser.add_argument("--seconds", type=float, default=20.0, help="length of each ride (s)")
+    args = parser.parse_args(argv)
+    model = riderless_model()
+    rows, fell = coast(model, 4.0, 12.0)
+    out = {"riderless_coast_4ms": {**decay_fit(rows), "fell": fell}}
+    rows, fell = coast(model, 4.0, 12.0, roll_rate=0.3)
+    out["riderless_kicked_4ms"] = {"fell_at_s": fell, "max_roll_deg": float(np.degrees(np.abs(rows[:, 2]).max()))}
+    keys = ("fell", "mean_speed_last_10s", "mean_speed_last_5s", "max_abs_roll_deg", "max_hand_gap", "max_foot_gap",
+            "max_seat_gap", "heading_within_5deg_from", "first_fork_motion")
+    for speed in (3.0, 4.0, 5.0):
+        m = run(RunRequest("bicycle", "man", params={"speed": speed}, duration=args.seconds)).meta["metrics"]
+        out[f"ride_{speed:g}ms"] = {k: m[k] for k in keys}
+    m = run(RunRequest("bicycle", "man", params={"speed": 4.0, "heading": math.radians(30.0)}, duration=6.0)).meta["metrics"]
+    out["heading_step_30deg"] = {k: m[k] for k in keys}
+    out["benchmark"] = benchmark(args.seconds)
+    print(json.dumps(out, indent=1))
+    return 0
