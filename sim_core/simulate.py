@@ -63,9 +63,13 @@ class StartState:
         if len(self.velocity) != 3 or not all(math.isfinite(v) and abs(v) <= 20.0 for v in self.velocity):
             raise ParameterError(f"start velocity={self.velocity} m/s: need 3 finite numbers in [-20, 20] m/s")
 
-    def apply(self, data: mujoco.MjData) -> None:
-        data.qpos[2] += self.height
-        data.qvel[:3] = self.velocity
+    def apply(self, model: mujoco.MjModel, data: mujoco.MjData) -> None:
+        """Raise and launch every free body (the character, and a prop it rides with, e.g. a
+        bicycle) alike, so that they start together."""
+        for joint in np.flatnonzero(model.jnt_type == mujoco.mjtJoint.mjJNT_FREE):
+            data.qpos[model.jnt_qposadr[joint] + 2] += self.height
+            start = model.jnt_dofadr[joint]
+            data.qvel[start:start + 3] = self.velocity
 
 
 @dataclass
@@ -233,7 +237,7 @@ def run(request: RunRequest, progress: Callable[[float], None] | None = None,
     model, xml = compile_model(character, world, request.strength)
     data = mujoco.MjData(model)
     set_standing_pose(model, data, character)
-    request.start.apply(data)
+    request.start.apply(model, data)
     skill_start = cls.start_state(params, model, data, character)
     hold_pose(model, data)
     mujoco.mj_forward(model, data)
