@@ -335,3 +335,73 @@ def test_every_knob_has_one_name_in_its_table_and_in_the_behaviour_that_runs_it(
     composites = [set(behaviour_class(s).settings_schema.by_name) | set(behaviour_class(s).schema.by_name)
                   for s in ("leap", "somersault", "handspring")]
     assert all({"landing_knee_flexion", "landing_foot_lead_time", "thrust_damping", "liftoff_hip"} <= n for n in composites)
+
+
+# ------------------------------------------------------------------ no tuned number inline
+# The rule for a number written inside a driving module's functions (default arguments included):
+# it is structural or it says why it is there. Structural, never flagged: 0, 1, 2, -1 (identities,
+# signs, doubling, pairs); 0.5 (a mean, a half); 100 (a percent); an epsilon below 1e-6 (a guard
+# against a division by zero); an index or a slice (the literal is inside a subscript: m[3], [:3]);
+# an array's shape (the arguments of reshape, np.eye, np.zeros, np.ones) and round()'s digits.
+# Anything else is a hand-set value and belongs in the module's table constants (docs/tables.md),
+# unless its line says "# definition: ..." (a code, a unit, a solver's own precision, a structural
+# count) or "# criterion: ..." (a TARGETS.md threshold of judging, not of driving).
+STRUCTURAL = {0, 1, 2, -1, 0.5, 100}
+SHAPE_CALLS = ("reshape", "eye", "zeros", "ones", "round")
+EXPLAINED = ("# definition:", "# criterion:")
+# Driving modules whose inline numbers have not yet been moved to their tables (issue 27, work left).
+INLINE_PENDING = {
+    "control.leap", "control.crouch", "control.servo", "control.measure", "control.actor", "control.tuned",
+    "skills.dive.behaviour", "skills.handspring.behaviour", "skills.jump_to_target.behaviour",
+    "skills.leap.behaviour", "skills.running.behaviour", "skills.running.leg", "skills.running.path",
+    "skills.somersault.behaviour",
+}
+
+
+def inline_numbers(path: Path) -> list[str]:
+    """``line: value`` of each numeric literal in the module's function bodies the rule above flags."""
+    text = path.read_text()
+    lines = text.splitlines()
+    tree = ast.parse(text)
+    exempt = set()                      # literals inside a subscript or a shape call
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Subscript):
+            exempt |= {id(n) for n in ast.walk(node.slice)}
+        elif isinstance(node, ast.Call):
+            func = node.func.attr if isinstance(node.func, ast.Attribute) else getattr(node.func, "id", "")
+            if func in SHAPE_CALLS:
+                exempt |= {id(n) for a in node.args for n in ast.walk(a) if isinstance(n, ast.Constant)}
+    found = set()
+    for function in ast.walk(tree):
+        if not isinstance(function, (ast.FunctionDef, ast.AsyncFunctionDef, ast.Lambda)):
+            continue
+        for node in ast.walk(function):
+            if not (isinstance(node, ast.Constant) and type(node.value) in (int, float)) or id(node) in exempt:
+                continue
+            value = node.value
+            if value in STRUCTURAL or abs(value) < 1e-6 or any(mark in lines[node.lineno - 1] for mark in EXPLAINED):
+                continue
+            found.add(f"{node.lineno}: {value!r}")
+    return sorted(found, key=lambda s: int(s.split(":")[0]))
+
+
+def test_no_tuned_number_is_written_inline_in_a_driving_module():
+    """Every numeric literal inside a driving module's functions is structural or explained on its
+    line; a hand-set gain, time, angle or share is its controller's table constant."""
+    flagged = {}
+    for path in driving_modules():
+        module = ".".join(path.relative_to(SIM_CORE).with_suffix("").parts)
+        if module not in INLINE_PENDING and (numbers := inline_numbers(path)):
+            flagged[module] = numbers
+    assert not flagged, f"numbers inline: {flagged} - make them table constants (docs/tables.md) or explain them"
+    modules = {".".join(p.relative_to(SIM_CORE).with_suffix("").parts) for p in driving_modules()}
+    assert INLINE_PENDING <= modules, INLINE_PENDING - modules
+
+
+def test_the_inline_number_rule_flags_a_hand_set_value_and_passes_an_explained_one(tmp_path):
+    source = tmp_path / "m.py"
+    source.write_text("def f(m, t=0.25):\n    a = m[3] + 0.5 * m.reshape(3, 3)[0, 2]\n    b = 1e-9 + 100 * a\n"
+                      "    return t * 0.8 + 7  # criterion: TARGETS.md\n")
+    assert inline_numbers(source) == ["1: 0.25"]
+    source.write_text("def f(x):\n    return x * 0.8\n")
+    assert inline_numbers(source) == ["2: 0.8"]
