@@ -351,7 +351,6 @@ SHAPE_CALLS = ("reshape", "eye", "zeros", "ones", "round")
 EXPLAINED = ("# definition:", "# criterion:")
 # Driving modules whose inline numbers have not yet been moved to their tables (issue 27, work left).
 INLINE_PENDING = {
-    "control.leap", "control.crouch", "control.servo", "control.measure", "control.actor", "control.tuned",
     "skills.dive.behaviour", "skills.handspring.behaviour", "skills.jump_to_target.behaviour",
     "skills.leap.behaviour", "skills.running.behaviour", "skills.running.leg", "skills.running.path",
     "skills.somersault.behaviour",
