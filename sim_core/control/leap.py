@@ -72,6 +72,8 @@ LEAP_CONSTANTS = Schema(
     constant("settle_time", "s", 0.0, 1.0,
              "after the last touchdown the feet have settled by this time (the heels coming down after a toe-first landing)"),
     constant("arm_swing_default", "rad", 0.0, 3.2, "the arms' forward swing in a thrust whose caller names none"),
+    constant("crouch_move_start", "s", 0.0, 2.0, "a leap's crouch starts moving this long after the leap begins"),
+    constant("crouch_settle_time", "s", 0.0, 1.0, "a vertical leap's crouch posture must have been reached this long before the thrust"),
     constant("thrust_elbow", "rad", 0.0, 1.5, "elbow flexion the arms swing with in the thrust (mirrored for the left)"),
     constant("balance_handover_time", "s", 0.05, 5.0, "the balance after a landing moves from the landed height to its posture in this time"),
     constant("landing_torque_limit", "1", 0.1, 10.0,
