@@ -174,12 +174,15 @@ ALLOWED = {
                                               "LANDING_SKID_LIMIT", "UNCOVERED_STEP")} | {"UP": "definition"},
     "skills.running.behaviour": {n: "definition" for n in ("FLIGHT", "LOADING", "HEEL", "HEEL_TOE", "TOE", "UNLOADING", "START", "TUNED")}
                | {"SCHEDULED": "search"},
-    "skills.running.path": {n: "criterion" for n in ("MIN_SEGMENT", "MIN_LENGTH", "MAX_POINTS", "MIN_TURN_RADIUS")},
+    "skills.running.path": {n: "criterion" for n in ("MIN_SEGMENT", "MIN_LENGTH", "MAX_POINTS", "MIN_TURN_RADIUS")}
+               | {n: "definition" for n in ("TURN_RUN_OUT", "FIGURE_EIGHT_LAPS", "CIRCLE_LAPS")},
     "skills.somersault.behaviour": {"TUCK": "definition", "ROTATION_TOLERANCE": "criterion"},
-    "skills.jump_to_target.behaviour": {n: "search" for n in ("TAKEOFF_COM", "TOUCHDOWN_COM", "WINDUP_OVERHEAD", "KNOB_DEFAULTS")}
+    "skills.jump_to_target.behaviour": {n: "search" for n in ("TAKEOFF_COM", "TOUCHDOWN_COM", "WINDUP_OVERHEAD", "KNOB_DEFAULTS",
+                                                   "MIN_CROUCH_TIME", "MIN_BROAD_DISTANCE")}
                    | {n: "criterion" for n in ("LANDING_TOLERANCE", "AIR_TIME_TOLERANCE", "GROUND_AIR_TIME",
                                                "SIDEWAYS_AIR_TIME", "BOX_DISTANCE", "BOX_AIR_TIME", "BOX_LENGTH",
-                                               "BOX_WIDTH", "START_BOX_LENGTH", "START_BOX_EDGE", "OBSTACLE_LENGTH")},
+                                               "BOX_WIDTH", "START_BOX_LENGTH", "START_BOX_EDGE", "OBSTACLE_LENGTH",
+                                               "OBSTACLE_ROOM")},
 }
 
 
@@ -350,7 +353,7 @@ STRUCTURAL = {0, 1, 2, -1, 0.5, 100}
 SHAPE_CALLS = ("reshape", "eye", "zeros", "ones", "round")
 EXPLAINED = ("# definition:", "# criterion:")
 # Driving modules whose inline numbers have not yet been moved to their tables (issue 27, work left).
-INLINE_PENDING = {"skills.jump_to_target.behaviour", "skills.running.behaviour", "skills.running.path"}
+INLINE_PENDING = {"skills.running.behaviour"}
 
 
 def inline_numbers(path: Path) -> list[str]:

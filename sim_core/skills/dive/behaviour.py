@@ -427,6 +427,6 @@ def dive_assess(trajectory) -> tuple[str, dict]:
             or abs(metrics["twists"] - p["twists"]) > ROTATION_TOLERANCE
             or metrics["somersault_direction"] != wanted_direction):
         return "wrong_rotation", metrics
-    if entry_angle > 20.0:           # criterion: TARGETS.md, a vertical entry within 20 deg
+    if entry_angle > 20.0:           # criterion: the dive's judging, a vertical entry is within 20 deg
         return "entry_not_vertical", metrics
     return "success", metrics
