@@ -352,8 +352,6 @@ def test_every_knob_has_one_name_in_its_table_and_in_the_behaviour_that_runs_it(
 STRUCTURAL = {0, 1, 2, -1, 0.5, 100}
 SHAPE_CALLS = ("reshape", "eye", "zeros", "ones", "round")
 EXPLAINED = ("# definition:", "# criterion:")
-# Driving modules whose inline numbers have not yet been moved to their tables (issue 27, work left).
-INLINE_PENDING = {"skills.running.behaviour"}
 
 
 def inline_numbers(path: Path) -> list[str]:
@@ -389,11 +387,9 @@ def test_no_tuned_number_is_written_inline_in_a_driving_module():
     flagged = {}
     for path in driving_modules():
         module = ".".join(path.relative_to(SIM_CORE).with_suffix("").parts)
-        if module not in INLINE_PENDING and (numbers := inline_numbers(path)):
+        if numbers := inline_numbers(path):
             flagged[module] = numbers
     assert not flagged, f"numbers inline: {flagged} - make them table constants (docs/tables.md) or explain them"
-    modules = {".".join(p.relative_to(SIM_CORE).with_suffix("").parts) for p in driving_modules()}
-    assert INLINE_PENDING <= modules, INLINE_PENDING - modules
 
 
 def test_the_inline_number_rule_flags_a_hand_set_value_and_passes_an_explained_one(tmp_path):
