@@ -51,6 +51,7 @@ LEAP_CONSTANTS = Schema(
              "fast extension: high leaps use less, calibrated per row with the lift-off hip angle and COM offset "
              "that cancel the spin it brings)"),
     constant("thrust_gain", "1", 1.0, 10.0, "hip and knee servos stiffened for the thrust [W98 §4.3]"),
+    constant("ankle_push_start", "1", 0.0, 0.95, "share of the ankle's extension time after which the ankles push to the lift-off plantarflexion"),
     constant("liftoff_ankle", "rad", 0.0, 1.5, "ankle plantarflexion at the end of the thrust"),
     constant("soft_knee_kp", "1", 0.0, 1.0,
              "knee kp factor while absorbing (the thesis: kp 0; with human torque limits a little spring keeps the "
@@ -174,7 +175,8 @@ class LeapThrust(Behaviour):
         hip = self.path.at(self._height(t, t_hip))[1] + self.liftoff_hip * hermite_scalar((t - self.t0) / t_hip)
         knee = self.path.at(self._height(t, t_knee))[0]
         ankle = self.path.at(self._height(t, t_ankle))[2]
-        push = hermite_scalar((t - self.t0 - 0.5 * t_ankle) / (0.5 * t_ankle))
+        share = CONSTANTS.ankle_push_start
+        push = hermite_scalar((t - self.t0 - share * t_ankle) / ((1.0 - share) * t_ankle))
         ankle = ankle + (CONSTANTS.liftoff_ankle - ankle) * push
         for name, value in (("hip", hip), ("knee", knee), ("ankle", ankle)):
             for i in self.idx[name]:

@@ -816,7 +816,7 @@ def _first_time_on_path(a: dict, path: np.ndarray) -> float:
     """The deviation is measured once the runner is running (faster than 2 m/s), not while it
     leans and accelerates out of the stand."""
     speed = np.linalg.norm(a["com_vel"][:, :2], axis=1)
-    moving = np.nonzero(speed > 2.0)[0]
+    moving = np.nonzero(speed > 2.0)[0]       # criterion: the deviation's judging starts at 2 m/s
     return float(a["time"][moving[0]]) if len(moving) else float(a["time"][-1])
 
 
