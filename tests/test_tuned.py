@@ -4,6 +4,7 @@ the bad value, a save is whole or nothing, and no tuned number hides in a contro
 import argparse
 import ast
 import json
+import re
 import shutil
 from pathlib import Path
 
@@ -174,12 +175,15 @@ ALLOWED = {
                                               "LANDING_SKID_LIMIT", "UNCOVERED_STEP")} | {"UP": "definition"},
     "skills.running.behaviour": {n: "definition" for n in ("FLIGHT", "LOADING", "HEEL", "HEEL_TOE", "TOE", "UNLOADING", "START", "TUNED")}
                | {"SCHEDULED": "search"},
-    "skills.running.path": {n: "criterion" for n in ("MIN_SEGMENT", "MIN_LENGTH", "MAX_POINTS", "MIN_TURN_RADIUS")},
+    "skills.running.path": {n: "criterion" for n in ("MIN_SEGMENT", "MIN_LENGTH", "MAX_POINTS", "MIN_TURN_RADIUS")}
+               | {n: "definition" for n in ("TURN_RUN_OUT", "FIGURE_EIGHT_LAPS", "CIRCLE_LAPS")},
     "skills.somersault.behaviour": {"TUCK": "definition", "ROTATION_TOLERANCE": "criterion"},
-    "skills.jump_to_target.behaviour": {n: "search" for n in ("TAKEOFF_COM", "TOUCHDOWN_COM", "WINDUP_OVERHEAD", "KNOB_DEFAULTS")}
+    "skills.jump_to_target.behaviour": {n: "search" for n in ("TAKEOFF_COM", "TOUCHDOWN_COM", "WINDUP_OVERHEAD", "KNOB_DEFAULTS",
+                                                   "MIN_CROUCH_TIME", "MIN_BROAD_DISTANCE")}
                    | {n: "criterion" for n in ("LANDING_TOLERANCE", "AIR_TIME_TOLERANCE", "GROUND_AIR_TIME",
                                                "SIDEWAYS_AIR_TIME", "BOX_DISTANCE", "BOX_AIR_TIME", "BOX_LENGTH",
-                                               "BOX_WIDTH", "START_BOX_LENGTH", "START_BOX_EDGE", "OBSTACLE_LENGTH")},
+                                               "BOX_WIDTH", "START_BOX_LENGTH", "START_BOX_EDGE", "OBSTACLE_LENGTH",
+                                               "OBSTACLE_ROOM")},
     # the bicycle's inverse-kinematics solver settings (numerics, not control) and its judging threshold
     "skills.bicycle.mount": {n: "definition" for n in ("IK_DAMPING", "IK_POSTURE_WEIGHT", "IK_ITERATIONS",
                                                        "IK_ITERATIONS_PER_TICK", "IK_TOLERANCE")},
@@ -339,3 +343,64 @@ def test_every_knob_has_one_name_in_its_table_and_in_the_behaviour_that_runs_it(
     composites = [set(behaviour_class(s).settings_schema.by_name) | set(behaviour_class(s).schema.by_name)
                   for s in ("leap", "somersault", "handspring")]
     assert all({"landing_knee_flexion", "landing_foot_lead_time", "thrust_damping", "liftoff_hip"} <= n for n in composites)
+
+
+# ------------------------------------------------------------------ no tuned number inline
+# The rule for a number written inside a driving module's functions (default arguments included):
+# it is structural or it says why it is there. Structural, never flagged: 0, 1, 2, -1 (identities,
+# signs, doubling, pairs); 0.5 (a mean, a half); 100 (a percent); an epsilon up to 1e-6 (a guard
+# against a division by zero); an index or a slice (the literal is inside a subscript: m[3], [:3]);
+# an array's shape (the arguments of reshape, np.eye, np.zeros, np.ones) and round()'s digits.
+# Anything else is a hand-set value and belongs in the module's table constants (docs/tables.md),
+# unless its line says "# definition: ..." (a code, a unit, a solver's own precision, a structural
+# count) or "# criterion: ..." (a TARGETS.md threshold of judging, not of driving).
+STRUCTURAL = {0, 1, 2, -1, 0.5, 100}
+SHAPE_CALLS = ("reshape", "eye", "zeros", "ones", "round")
+EXPLAINED = re.compile(r"# (definition|criterion): \S")    # the mark and its reason
+
+
+def inline_numbers(path: Path) -> list[str]:
+    """``line: value`` of each numeric literal in the module's function bodies the rule above flags."""
+    text = path.read_text()
+    lines = text.splitlines()
+    tree = ast.parse(text)
+    exempt = set()                      # literals inside a subscript or a shape call
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Subscript):
+            exempt |= {id(n) for n in ast.walk(node.slice)}
+        elif isinstance(node, ast.Call):
+            func = node.func.attr if isinstance(node.func, ast.Attribute) else getattr(node.func, "id", "")
+            if func in SHAPE_CALLS:
+                exempt |= {id(n) for a in node.args for n in ast.walk(a) if isinstance(n, ast.Constant)}
+    found = set()
+    for function in ast.walk(tree):
+        if not isinstance(function, (ast.FunctionDef, ast.AsyncFunctionDef, ast.Lambda)):
+            continue
+        for node in ast.walk(function):
+            if not (isinstance(node, ast.Constant) and type(node.value) in (int, float)) or id(node) in exempt:
+                continue
+            value = node.value
+            if value in STRUCTURAL or abs(value) <= 1e-6 or EXPLAINED.search(lines[node.lineno - 1]):
+                continue
+            found.add(f"{node.lineno}: {value!r}")
+    return sorted(found, key=lambda s: int(s.split(":")[0]))
+
+
+def test_no_tuned_number_is_written_inline_in_a_driving_module():
+    """Every numeric literal inside a driving module's functions is structural or explained on its
+    line; a hand-set gain, time, angle or share is its controller's table constant."""
+    flagged = {}
+    for path in driving_modules():
+        module = ".".join(path.relative_to(SIM_CORE).with_suffix("").parts)
+        if numbers := inline_numbers(path):
+            flagged[module] = numbers
+    assert not flagged, f"numbers inline: {flagged} - make them table constants (docs/tables.md) or explain them"
+
+
+def test_the_inline_number_rule_flags_a_hand_set_value_and_passes_an_explained_one(tmp_path):
+    source = tmp_path / "m.py"
+    source.write_text("def f(m, t=0.25):\n    a = m[3] + 0.5 * m.reshape(3, 3)[0, 2]\n    b = 1e-9 + 100 * a\n"
+                      "    return t * 0.8 + 7  # criterion: TARGETS.md\n")
+    assert inline_numbers(source) == ["1: 0.25"]
+    source.write_text("def f(x):\n    return x * 0.8  # definition:\n")
+    assert inline_numbers(source) == ["2: 0.8"]           # a mark without its reason explains nothing

@@ -73,7 +73,7 @@ def _span(ids: np.ndarray) -> slice:
 def _width(model: mujoco.MjModel, joint: int, qpos: bool) -> int:
     kind = model.jnt_type[joint]
     if kind == mujoco.mjtJoint.mjJNT_FREE:
-        return 7 if qpos else 6
+        return 7 if qpos else 6     # definition: a free joint's position and quaternion, its 6 dofs
     if kind == mujoco.mjtJoint.mjJNT_BALL:
-        return 4 if qpos else 3
+        return 4 if qpos else 3     # definition: a ball joint's quaternion, its 3 dofs
     return 1

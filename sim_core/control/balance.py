@@ -186,15 +186,15 @@ class Balance(Behaviour):
             return
         # "stable" (TARGETS.md) keeps the pelvis above half its standing height
         pelvis = self.ctx.character.bodies[0]
-        lowest_stable = 0.5 * pelvis["com"][2] - (pelvis["com"][2] - self.legs["R"].hip_height) + 0.01
+        lowest_stable = 0.5 * pelvis["com"][2] - (pelvis["com"][2] - self.legs["R"].hip_height) + 0.01  # criterion: 1 cm inside it
 
         def balanced(height):
             return (lowest_stable <= height <= self.stand_height
                     and self._crouch_residual(height) < CONSTANTS.crouch_com_tolerance)
         if balanced(h):
             return
-        lo, hi = 0.3, self.stand_height                  # bisection for the lowest balanced height
-        for _ in range(12):
+        lo, hi = 0.3, self.stand_height     # definition: bisection (from 0.3 m) for the refusal's lowest height
+        for _ in range(12):                 # definition: 12 halvings, the message's mm
             mid = 0.5 * (lo + hi)
             lo, hi = (lo, mid) if balanced(mid) else (mid, hi)
         raise ParameterError(

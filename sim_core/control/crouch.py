@@ -107,7 +107,7 @@ class CrouchTable:
 
         def pose(ankle):
             knee = knee_for(ankle)
-            if abs(self.measure(knee, 0.0, ankle)[0] - height) > 1e-3:
+            if abs(self.measure(knee, 0.0, ankle)[0] - height) > 1e-3:   # definition: the solve's 1 mm tolerance
                 return knee, 0.0, ankle, -math.inf      # legs leaning too far to reach this height
             hip = hip_for(knee, ankle)
             return knee, hip, ankle, self.measure(knee, hip, ankle)[2]
@@ -134,10 +134,10 @@ class CrouchTable:
 
     def at(self, height: float) -> np.ndarray:
         """Interpolated (knee, hip_y, ankle_y, pelvis_pitch, leg_length) for a height in the table."""
-        return np.array([np.interp(height, self.heights, self.table[:, k]) for k in range(5)])
+        return np.array([np.interp(height, self.heights, self.table[:, k]) for k in range(5)])  # definition: the 5 columns
 
 
-def _bisect(f, lo: float, hi: float, decreasing: bool, iterations: int = 15) -> float:
+def _bisect(f, lo: float, hi: float, decreasing: bool, iterations: int = 15) -> float:  # definition: 15 halvings
     """Root of a monotonic f on [lo, hi] (the nearer end if f does not change sign there)."""
     sign = -1.0 if decreasing else 1.0
     for _ in range(iterations):

@@ -51,6 +51,7 @@ LEAP_CONSTANTS = Schema(
              "fast extension: high leaps use less, calibrated per row with the lift-off hip angle and COM offset "
              "that cancel the spin it brings)"),
     constant("thrust_gain", "1", 1.0, 10.0, "hip and knee servos stiffened for the thrust [W98 §4.3]"),
+    constant("ankle_push_start", "1", 0.0, 0.95, "share of the ankle's extension time after which the ankles push to the lift-off plantarflexion"),
     constant("liftoff_ankle", "rad", 0.0, 1.5, "ankle plantarflexion at the end of the thrust"),
     constant("soft_knee_kp", "1", 0.0, 1.0,
              "knee kp factor while absorbing (the thesis: kp 0; with human torque limits a little spring keeps the "
@@ -71,6 +72,11 @@ LEAP_CONSTANTS = Schema(
     constant("toe_fade_speed", "m/s", 0.0, 5.0, "horizontal COM speeds over which the toe-down pitch fades out"),
     constant("settle_time", "s", 0.0, 1.0,
              "after the last touchdown the feet have settled by this time (the heels coming down after a toe-first landing)"),
+    constant("arm_swing_default", "rad", 0.0, 3.2, "the arms' forward swing in a thrust whose caller names none"),
+    constant("crouch_move_start", "s", 0.0, 2.0, "a leap's crouch starts moving this long after the leap begins"),
+    constant("crouch_settle_time", "s", 0.0, 1.0, "a vertical leap's crouch posture must have been reached this long before the thrust"),
+    constant("thrust_elbow", "rad", 0.0, 1.5, "elbow flexion the arms swing with in the thrust (mirrored for the left)"),
+    constant("balance_handover_time", "s", 0.05, 5.0, "the balance after a landing moves from the landed height to its posture in this time"),
     constant("landing_torque_limit", "1", 0.1, 10.0,
              "landing joints use at most this share of the human torque limits, whatever the model's strength "
              "(stiffer legs land harder, not better)"),
@@ -119,7 +125,7 @@ class LeapThrust(Behaviour):
     the vertical while the feet are down, as the crouch's Balance ``spin_kp`` does (a sideways jump)."""
 
     def __init__(self, params, ctx: ControlContext, crouch_height: float, timing=CONSTANTS.vertical_timing,
-                 ankle_gain=CONSTANTS.ankle_gain_vertical, liftoff_hip=0.0, arm_swing=2.5, stand_height=None,
+                 ankle_gain=CONSTANTS.ankle_gain_vertical, liftoff_hip=0.0, arm_swing=CONSTANTS.arm_swing_default, stand_height=None,
                  thrust_damping=CONSTANTS.thrust_damping_default, thrust_lean=0.0, liftoff_roll=0.0, spin_hold=0.0):
         super().__init__(params, ctx)
         self.timing, self.ankle_gain = timing, ankle_gain
@@ -136,7 +142,7 @@ class LeapThrust(Behaviour):
         s = self.ctx.servos
         s.offset[:] = 0.0
         self.t0 = t
-        heights = np.linspace(self.crouch_height, self.stand_height, 8)
+        heights = np.linspace(self.crouch_height, self.stand_height, 8)   # definition: the path's 8 solved heights
         self.path = CrouchTable(self.ctx.model, self.ctx.character, heights, self.stand_height, com_offset=self.thrust_lean,
                                 actor=self.ctx.actor)
         self.idx = {name: s.indices([f"{name}_r_y", f"{name}_l_y"]) for name in ("hip", "knee", "ankle")}
@@ -147,7 +153,7 @@ class LeapThrust(Behaviour):
             s.move_to(s.indices([f"hip_{side}_x", f"hip_{side}_z", f"ankle_{side}_x"]),
                       np.array([self.liftoff_roll, 0.0, 0.0]), t_hip, t)
             s.move_to(s.indices([f"shoulder_{side}_z"]), sign * self.arm_swing, t_knee, t)
-            s.move_to(s.indices([f"elbow_{side}_z"]), sign * 0.2, t_knee, t)
+            s.move_to(s.indices([f"elbow_{side}_z"]), sign * CONSTANTS.thrust_elbow, t_knee, t)
         spine = [n for n in s.names if n.startswith("spine") and n.endswith("_y")]
         s.move_to(s.indices(spine), 0.0, t_hip, t)
         ankles = self.idx["ankle"]
@@ -169,7 +175,8 @@ class LeapThrust(Behaviour):
         hip = self.path.at(self._height(t, t_hip))[1] + self.liftoff_hip * hermite_scalar((t - self.t0) / t_hip)
         knee = self.path.at(self._height(t, t_knee))[0]
         ankle = self.path.at(self._height(t, t_ankle))[2]
-        push = hermite_scalar((t - self.t0 - 0.5 * t_ankle) / (0.5 * t_ankle))
+        share = CONSTANTS.ankle_push_start
+        push = hermite_scalar((t - self.t0 - share * t_ankle) / ((1.0 - share) * t_ankle))
         ankle = ankle + (CONSTANTS.liftoff_ankle - ankle) * push
         for name, value in (("hip", hip), ("knee", knee), ("ankle", ankle)):
             for i in self.idx[name]:
@@ -259,7 +266,7 @@ class Landing(Behaviour):
         s.offset[:] = 0.0
         s.hold(s.smoothed_target(t), t)
         stand = standing_hip_height(self.ctx.character)
-        self.crouch = CrouchTable(self.ctx.model, self.ctx.character, np.linspace(0.5 * stand, stand, 6), stand,
+        self.crouch = CrouchTable(self.ctx.model, self.ctx.character, np.linspace(0.5 * stand, stand, 6), stand,  # definition: 6 solved heights
                                   actor=self.ctx.actor)
         s.set_gains(np.arange(len(s.names)), s.default_kp, s.default_kv)     # undo the thrust gains
         # the arms swing in flight (their targets are set every tick: update() holds all targets)
@@ -299,7 +306,7 @@ class Landing(Behaviour):
         fy = lateral(foot)
         rate = 0.0 if self.last_fy[k] is None else (fy - self.last_fy[k]) / self.ctx.control_dt
         self.last_fy[k] = fy
-        length = max(float(np.linalg.norm(hip - foot)), 0.3)
+        length = max(float(np.linalg.norm(hip - foot)), 0.3)   # definition: a guard, no leg is shorter
         reach = math.asin(max(-1.0, min(1.0, (wanted - lateral(hip)) / length)))
         roll = roll_of(d.xmat[self.pelvis], UP)       # a rolled pelvis swings the legs sideways with it
         target = reach - roll + p["foot_kp"] * (wanted - fy) - p["foot_kv"] * rate
@@ -342,7 +349,7 @@ class Landing(Behaviour):
         if self.stage == "flight" and self.airborne.touching(d):
             self.stage = "absorb"
             self.ctx.step_division = 1      # a flight run at a finer physics step lands at the model's
-            self.touchdown_knee_speed = max(abs(float(velocities[self.knees].mean())), 1e-3)
+            self.touchdown_knee_speed = max(abs(float(velocities[self.knees].mean())), 1e-3)  # definition: a guard
             self.knees_touched_at = angles[self.knees].copy()
             s.set_gains(self.knees, s.default_kp[self.knees] * CONSTANTS.soft_knee_kp, s.default_kv[self.knees] * CONSTANTS.soft_knee_kv)
             self.touchdown_at = t
@@ -429,7 +436,7 @@ def balance_after_landing(ctx: ControlContext, landing: Landing) -> Balance:
     feet = 0.5 * (d.xpos[body("FOOTR")] + d.xpos[body("FOOTL")])
     leg_length = float(np.linalg.norm(hips - feet))
     height = float(np.interp(leg_length, landing.crouch.table[:, 4], landing.crouch.heights))
-    return Balance(Balance.schema.validate(dict(move_start=0.0, move_time=1.2, return_to_stand=0)), ctx,
+    return Balance(Balance.schema.validate(dict(move_start=0.0, move_time=CONSTANTS.balance_handover_time, return_to_stand=0)), ctx,
                    from_height=height)
 
 
@@ -483,7 +490,7 @@ def leap_assess(trajectory, squat_floor: float | None = None) -> tuple[str, dict
         return "stepped", metrics
     if metrics["landing_skid"] > LANDING_SKID_LIMIT:
         return "skidded", metrics
-    if metrics["final_com_speed"] >= 0.1:
+    if metrics["final_com_speed"] >= 0.1:          # criterion: TARGETS.md "still", COM below 0.1 m/s
         return "not_still", metrics
     return "success", metrics
 
@@ -530,7 +537,7 @@ def calibrated_foot_delta(character: str, horizontal_speed: float, touchdown_spe
 # ------------------------------------------------------------------------------- leap mapping
 def rise_tolerance(height: float) -> float:
     """TARGETS.md's tolerance of a vertical leap's COM rise: +-10 %, or +-3 cm below 0.3 m."""
-    return 0.03 if height < 0.3 else 0.1 * height
+    return 0.03 if height < 0.3 else 0.1 * height     # criterion: TARGETS.md's leap tolerance
 
 
 UNCOVERED_STEP = 0.005          # m: commanded heights checked for a calibrated row within the tolerance
@@ -541,7 +548,7 @@ def height_grid(rises, step: float) -> list[float]:
     calibrated rise, or 1 m."""
     if not len(rises):
         return []
-    return [float(h) for h in np.round(np.arange(0.1, min(max(rises), 1.0) + 1e-9, step), 3)]
+    return [float(h) for h in np.round(np.arange(0.1, min(max(rises), 1.0) + 1e-9, step), 3)]  # criterion: TARGETS.md
 
 
 def uncovered_gaps(rises) -> list[tuple[float, float]]:
@@ -552,7 +559,7 @@ def uncovered_gaps(rises) -> list[tuple[float, float]]:
     for h in height_grid(rises, UNCOVERED_STEP):
         if min(abs(r - h) for r in rises) <= rise_tolerance(h):
             continue
-        if gaps and h - gaps[-1][1] < 1.5 * UNCOVERED_STEP:
+        if gaps and h - gaps[-1][1] < 1.5 * UNCOVERED_STEP:    # definition: the next grid height
             gaps[-1] = (gaps[-1][0], h)
         else:
             gaps.append((h, h))
@@ -564,8 +571,8 @@ def commandable_heights(rises) -> tuple[float, float]:
     (rise_tolerance) reaches a calibrated rise - below the lowest and above the highest, the end
     leap runs while it is within the tolerance of the command."""
     bottom, top = min(rises), max(rises)
-    low = bottom - 0.03 if bottom - 0.03 < 0.3 else bottom / 1.1
-    high = top + 0.03 if top + 0.03 < 0.3 else max(top / 0.9, 0.3)
+    low = bottom - 0.03 if bottom - 0.03 < 0.3 else bottom / 1.1            # criterion: rise_tolerance's inverse
+    high = top + 0.03 if top + 0.03 < 0.3 else max(top / 0.9, 0.3)         # criterion: rise_tolerance's inverse
     return low, high
 
 

@@ -70,7 +70,7 @@ class SupportGeometry:
         self.site_ids = np.array([i for g in groups for i in g])
         self.foot_of_site = np.array([k for k, g in enumerate(groups) for _ in g])
         self.right, self.left = self.foot_of_site == 0, self.foot_of_site == 1
-        self.contact_height = 0.005
+        self.contact_height = 0.005          # definition: a site within 5 mm of the ground touches it
         self.boxes = boxes_of(model)
         self.floor = floor_of(model)
 

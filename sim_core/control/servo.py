@@ -15,13 +15,13 @@ from ..edit_log import EditLog
 def hermite_blend(s: np.ndarray) -> np.ndarray:
     """Cubic Hermite from 0 to 1 with zero slope at both ends, for s in [0, 1]."""
     s = np.clip(s, 0.0, 1.0)
-    return s * s * (3.0 - 2.0 * s)
+    return s * s * (3.0 - 2.0 * s)       # definition: the smoothstep polynomial 3s^2 - 2s^3
 
 
 def hermite_scalar(s: float) -> float:
     """hermite_blend for one number (no array overhead in per-tick code)."""
     s = 0.0 if s < 0.0 else 1.0 if s > 1.0 else s
-    return s * s * (3.0 - 2.0 * s)
+    return s * s * (3.0 - 2.0 * s)       # definition: the smoothstep polynomial 3s^2 - 2s^3
 
 
 class ServoBank:

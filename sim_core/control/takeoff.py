@@ -13,6 +13,9 @@ from ..tuned.constants import constant, read_constants, register_constants
 # the take-off's hand-set constant: data, takeoff_any.json's "constants" (docs/tables.md)
 TAKEOFF_CONSTANTS = Schema(
     constant("lean_trigger", "1", 0.0, 2.0, "share of the crouch's COM offset, reached moving, that triggers the thrust"),
+    constant("crouch_move_start", "s", 0.0, 2.0, "when the crouch starts moving after the take-off begins"),
+    constant("crouch_move_time", "s", 0.05, 3.0, "how long the crouch takes to reach its posture"),
+    constant("crouch_settle_time", "s", 0.0, 1.0, "how long before now the crouch posture must have been reached"),
 )
 register_constants("takeoff", TAKEOFF_CONSTANTS)
 CONSTANTS = read_constants("takeoff", TAKEOFF_CONSTANTS)
@@ -29,7 +32,7 @@ def takeoff_steps(ctx: ControlContext, cfg: dict) -> list[Step]:
     def crouch(t):
         return Balance(Balance.schema.validate(dict(
             pelvis_height=cfg["crouch_height"], torso_pitch=cfg["crouch_pitch"], com_offset_x=cfg["com_offset"],
-            move_start=0.2, move_time=0.8, hold_time=0.0, return_to_stand=0)), ctx)
+            move_start=CONSTANTS.crouch_move_start, move_time=CONSTANTS.crouch_move_time, hold_time=0.0, return_to_stand=0)), ctx)
 
     def crouched(b, t):
         lean = cfg["com_offset"]
@@ -37,7 +40,7 @@ def takeoff_steps(ctx: ControlContext, cfg: dict) -> list[Step]:
             return True
         if lean > 0 and b.com_ahead_of_support() > CONSTANTS.lean_trigger * lean:
             return True
-        return b.posture_reached(t - 0.15)
+        return b.posture_reached(t - CONSTANTS.crouch_settle_time)
 
     def thrust(t):
         return LeapThrust({}, ctx, cfg["crouch_height"], LEAP.vertical_timing, LEAP.ankle_gain_vertical,

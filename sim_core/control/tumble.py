@@ -48,6 +48,8 @@ TUMBLE_CONSTANTS = Schema(
              "a stiffened move is damped this much more again: fast but overdamped (with critical damping the "
              "1 ms step let the flight's angular momentum drift ~1 %)"),
     constant("pointed_toes", "rad", 0.0, 1.5, "ankle plantarflexion in flight"),
+    constant("twist_throw_time", "s", 0.01, 2.0, "how long the arm throw that starts a twist takes, unless its caller says"),
+    constant("twist_stop_time", "s", 0.01, 2.0, "how long the arms take back to the position when a twist stops, unless its caller says"),
     constant("seed_inertia", "kg m^2", 0.0, 100.0, "moment of inertia of each position per character, Wooten Fig. 5.2"),
 )
 register_constants("tumble", TUMBLE_CONSTANTS)
@@ -144,7 +146,7 @@ class FlightRotation:
         self.model, self.data = model, data
         self.actor = actor = actor or ActorView.of(model)
         self.pelvis = actor.body_id("PELVIS")
-        self.spin_dof = actor.root_dof + 5          # the free joint's local angular velocity about z
+        self.spin_dof = actor.root_dof + 5          # definition: the free joint's 6th dof, its local angular velocity about z
         self.flying = False
         self.reset(0.0)
 
@@ -236,14 +238,14 @@ class Tumble(Behaviour):
         s.move_to(s.indices(list(targets)), np.array(list(targets.values())), self.params["move_time"], t)
         self.event(t, "tumble")
 
-    def throw_twist(self, t: float, duration: float = 0.25, mirrored: bool = False) -> None:
+    def throw_twist(self, t: float, duration: float = CONSTANTS.twist_throw_time, mirrored: bool = False) -> None:
         s = self.ctx.servos
         throw = MIRRORED_THROW if mirrored else TWIST_THROW
         s.move_to(s.indices(list(throw)), np.array(list(throw.values())), duration, t)
         self.twisting = True
         self.event(t, "twist_throw")
 
-    def stop_twist(self, t: float, duration: float = 0.2) -> None:
+    def stop_twist(self, t: float, duration: float = CONSTANTS.twist_stop_time) -> None:
         s = self.ctx.servos
         thrown = set(TWIST_THROW) | set(MIRRORED_THROW)
         targets = {n: v for n, v in self._targets().items() if n.startswith(("shoulder", "elbow")) or n in thrown}

@@ -49,6 +49,7 @@ DIVE_CONSTANTS = Schema(
     constant("flight_step_division", "count", 1.0, 64.0,
              "the flight's physics step is the model's divided by this: with the 1 ms step a fast twist (10-12 rad/s) "
              "let the flight's angular momentum drift 4 % (measured: 4.4 / 2.1 / 1.0 % at 1 / 0.5 / 0.25 ms)"),
+    constant("hold_move", "s", 0.01, 1.0, "the servo move that keeps the lift-off shape until the body is clear of the platform"),
     constant("entry_reach", "1", 0.0, 3.0, "share of the standing COM height the hands reach below the COM in the line"),
 )
 CONSTANTS = read_constants("dives", DIVE_CONSTANTS)
@@ -237,7 +238,7 @@ class Dive(Sequence):
             return _Aerial(Tumble.schema.validate(dict(position=p["position"], stiffness=CONSTANTS.snap)), ctx, self.rotation, self)
 
         def entry(t):
-            return _Aerial(Tumble.schema.validate(dict(position=3, move_time=CONSTANTS.open_move, stiffness=CONSTANTS.snap)), ctx,
+            return _Aerial(Tumble.schema.validate(dict(position=3, move_time=CONSTANTS.open_move, stiffness=CONSTANTS.snap)), ctx,  # definition: 3 is the line
                            self.rotation, self)
 
         return takeoff_steps(ctx, cfg) + [
@@ -296,7 +297,7 @@ class _Aerial(Tumble):
         self.water_side = 1.0 if group_name(dive.params) in FACING_THE_WATER else -1.0
         self.edge = float(m.geom_pos[ground][0] + self.water_side * m.geom_size[ground][0])
         self.feet = [ctx.actor.body_id(n) for n in ("FOOTR", "FOOTL", "TOER", "TOEL")]
-        self.clear = self.params["position"] in (0, 3)
+        self.clear = self.params["position"] in (0, 3)       # definition: the layout and line codes
         self.moves = twist_moves(dive.twist_target / (2 * math.pi)) if dive.twist_target else []
         self.moves_made = 0                 # of self.moves
         self.radius = position_radius(m, ctx.character, position_name(self.params["position"]), ctx.actor)
@@ -309,7 +310,7 @@ class _Aerial(Tumble):
         s = self.ctx.servos                 # keep the lift-off shape until clear
         s.offset[:] = 0.0
         s.set_gains(np.arange(len(s.names)), s.default_kp, s.default_kv)
-        s.move_to(np.arange(len(s.names)), s.angles().copy(), 0.05, t)
+        s.move_to(np.arange(len(s.names)), s.angles().copy(), CONSTANTS.hold_move, t)
 
     def _clear_of_platform(self) -> bool:
         """The body can turn in its position without touching the platform: the COM is higher
@@ -328,11 +329,11 @@ class _Aerial(Tumble):
             self.clear = True
             super().start(t)
         dive = self.dive
-        if not dive.twist_target or self.params["position"] != 3:
+        if not dive.twist_target or self.params["position"] != 3:    # definition: 3 is the line
             return
         if self.moves_made == len(self.moves):
             return
-        rate = abs(float(self.ctx.data.qvel[self.ctx.actor.root_dof + 5]))
+        rate = abs(float(self.ctx.data.qvel[self.ctx.actor.root_dof + 5]))   # definition: the free joint's spin dof
         turns = (abs(self.rotation.twist) + rate * CONSTANTS.twist_stop_lead) / (2 * math.pi)
         at, move = self.moves[self.moves_made]
         if turns >= at:
@@ -426,6 +427,6 @@ def dive_assess(trajectory) -> tuple[str, dict]:
             or abs(metrics["twists"] - p["twists"]) > ROTATION_TOLERANCE
             or metrics["somersault_direction"] != wanted_direction):
         return "wrong_rotation", metrics
-    if entry_angle > 20.0:
+    if entry_angle > 20.0:           # criterion: the dive's judging, a vertical entry is within 20 deg
         return "entry_not_vertical", metrics
     return "success", metrics

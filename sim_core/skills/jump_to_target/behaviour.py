@@ -42,6 +42,8 @@ from ...tuned import TableType, load, register as register_table, require_calibr
 TAKEOFF_COM = (0.30, 1.00)          # m ahead of the feet, m above them
 TOUCHDOWN_COM = (-0.25, 0.90)       # m ahead of the feet (behind: the feet land in front), m above
 WINDUP_OVERHEAD = 0.45              # s of the wind-up that are not the crouch: standing still, thrust
+MIN_CROUCH_TIME = 0.3               # s: the shortest crouch a plan's wind-up asks of the leap
+MIN_BROAD_DISTANCE = 0.05           # m: a plan with the broad jump's thrust asks at least this distance (> 0: broad)
 LANDING_TOLERANCE = 0.05            # m: landing point within this of the target
 AIR_TIME_TOLERANCE = 0.05           # s
 
@@ -89,12 +91,13 @@ BOX_LENGTH, BOX_WIDTH = 0.6, 1.0    # m: a box under a raised target, centred on
 START_BOX_LENGTH = 0.6              # m: the box a jump down starts on, its front edge just ahead of the toes
 START_BOX_EDGE = 0.02               # m ahead of the toes
 OBSTACLE_LENGTH = 0.3               # m: a box to jump over, centred between the start and the target
+OBSTACLE_ROOM = OBSTACLE_LENGTH + 0.4   # m: a jump over a box lands at least this far ahead of the toes
 
 
 def obstacle_of(target) -> float:
     """The height of the box to jump over (m above the surface landed on) of a target (x, y, z[,
     obstacle height])."""
-    return float(target[3]) if len(target) > 3 else 0.0
+    return float(target[3]) if len(target) > 3 else 0.0     # definition: the 4th entry is optional
 
 
 def scene_for(character, target, world=None):
@@ -172,7 +175,7 @@ def landing_measures(trajectory) -> dict:
         result["air_time"] = float(a["time"][touchdown] - a["time"][first])
         middle = feet[touchdown].mean(axis=0)
         com, velocity = a["com"][touchdown], a["com_vel"][touchdown]
-        capture = com[:2] + velocity[:2] * math.sqrt(max(com[2] - middle[2], 0.1) / GRAVITY)
+        capture = com[:2] + velocity[:2] * math.sqrt(max(com[2] - middle[2], 0.1) / GRAVITY)  # definition: a guard
         result["capture_error"] = float(np.linalg.norm(capture - middle[:2]))
     return result
 
@@ -181,7 +184,7 @@ def leap_params(settings: dict, target, windup_time: float) -> dict:
     """The leap's low-level parameters for these settings (the planner's trials run the leap; a
     vertical-leap thrust when ``vertical_thrust``, else the broad jump's)."""
     vertical = settings["vertical_thrust"] > 0.5
-    return {"low_level": 1, "distance": 0.0 if vertical else max(float(target[0]), 0.05),
+    return {"low_level": 1, "distance": 0.0 if vertical else max(float(target[0]), MIN_BROAD_DISTANCE),
             "crouch_height": settings["crouch_height"], "crouch_pitch": settings["crouch_pitch"],
             "com_offset": settings["com_offset"], **optional_knobs(settings),
             "liftoff_hip": settings["liftoff_hip"],
@@ -204,7 +207,7 @@ def landing_settings(settings: dict) -> dict:
 
 
 def crouch_time(windup_time: float) -> float:
-    return max(windup_time - WINDUP_OVERHEAD, 0.3)
+    return max(windup_time - WINDUP_OVERHEAD, MIN_CROUCH_TIME)
 
 
 def check_request(character, p: dict, strength: str) -> None:
@@ -215,11 +218,11 @@ def check_request(character, p: dict, strength: str) -> None:
     target = np.array([p["target_x"], p["target_y"], p["target_z"], p["obstacle_height"]])
     if p["obstacle_height"] > 0.0:
         gap = p["target_x"] - (toe_tip(character) - start_feet_centre(character)[0])
-        if p["target_z"] > 0.0 or gap < OBSTACLE_LENGTH + 0.4:
+        if p["target_z"] > 0.0 or gap < OBSTACLE_ROOM:
             raise ParameterError(
                 f"parameter obstacle_height={p['obstacle_height']:g} m: a box to jump over needs a target on "
                 f"the ground or below (target_z <= 0, is {p['target_z']:g}) at least "
-                f"{OBSTACLE_LENGTH + 0.4:.1f} m ahead of the toes (is {gap:.2f} m); allowed range of "
+                f"{OBSTACLE_ROOM:.1f} m ahead of the toes (is {gap:.2f} m); allowed range of "
                 f"obstacle_height is [0, 1] m, 0 = none")
     if p["target_x"] < 0.0 or (p["target_x"] == 0.0 and p["target_y"] == 0.0):
         raise ParameterError(f"parameter target_x={p['target_x']:g} m: the jump goes forward or sideways, "

@@ -87,7 +87,7 @@ class Leap(Sequence):
                 raise ParameterError(f"the broad jump of {self.ctx.character.name} is not calibrated (distance "
                                      f"must be 0): run python -m sim_core calibrate leap --only broad (or use low_level=1)")
             nearest = travels[int(np.argmin(np.abs(travels - p["distance"])))]
-            if abs(nearest - p["distance"]) > 0.1 * p["distance"]:
+            if abs(nearest - p["distance"]) > 0.1 * p["distance"]:   # criterion: TARGETS.md, within 10 %
                 calibrated = ", ".join(f"{t:.2f}" for t in sorted(travels))
                 raise ParameterError(
                     f"parameter distance={p['distance']:g} m has no calibrated broad jump within 10 % for "
@@ -125,7 +125,7 @@ class Leap(Sequence):
             return Balance(schema.validate(dict(pelvis_height=cfg["crouch_height"], torso_pitch=cfg["crouch_pitch"],
                                                 com_offset_x=cfg["com_offset"],
                                                 com_offset_y=cfg.get("com_offset_y", 0.0),
-                                                arm_flexion=cfg.get("crouch_arms", 0.0), move_start=0.2,
+                                                arm_flexion=cfg.get("crouch_arms", 0.0), move_start=LEAP.crouch_move_start,
                                                 heading_kp=LEAP.sideways_heading_kp if cfg.get("com_offset_y") else 0.0,
                                                 spin_kp=cfg.get("spin_hold", 0.0),
                                                 move_time=cfg["crouch_time"] if "crouch_time" in cfg
@@ -141,7 +141,7 @@ class Leap(Sequence):
                     return b.posture_reached(t) or b.com_left_of_support() * math.copysign(1.0, sideways) > \
                         LEAP.broad_trigger * abs(sideways)
                 return b.posture_reached(t) or b.com_ahead_of_support() > LEAP.broad_trigger * cfg["com_offset"]
-            return b.posture_reached(t - 0.15)
+            return b.posture_reached(t - LEAP.crouch_settle_time)
 
         def thrust(t):
             return LeapThrust({}, ctx, cfg["crouch_height"], LEAP.broad_timing if broad else LEAP.vertical_timing,
@@ -152,7 +152,7 @@ class Leap(Sequence):
 
         def land(t):
             # the calibrated leap's own correction of the landing's foot servo delta, plus the user's
-            delta = min(max(p.get("foot_delta", 0.0) + cfg.get("foot_delta", 0.0), -0.3), 0.3)
+            delta = min(max(p.get("foot_delta", 0.0) + cfg.get("foot_delta", 0.0), -0.3), 0.3)  # definition: the foot_delta range
             landing = {k: cfg.get("landing_" + k, p.get("landing_" + k, Landing.schema.defaults()[k]))
                        for k in ("swing_arms", "arm_flexion", "foot_lead_time", "place_sideways", "knee_flexion")}
             landing["fast_knee_flexion"] = landing["knee_flexion"]     # calibrated with one knee bend

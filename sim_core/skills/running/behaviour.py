@@ -207,6 +207,17 @@ SETTING_RANGES = Schema(
     constant("arm_offset", "rad", 0.0, 1.0, "gamma_0 of eq. 5: the arms swing about this forward angle"),
     constant("elbow_base", "rad", 0.0, 3.14, "running elbow flexion"),
     constant("elbow_swing", "1", 0.0, 5.0, "extra elbow flexion per radian of forward arm swing"),
+    constant("initial_stance_time", "s", 0.05, 1.0, "the expected stance duration t_s before a stance has been measured"),
+    constant("initial_flight_time", "s", 0.0, 1.0, "the expected flight duration before a flight has been measured"),
+    constant("initial_touchdown_knee", "rad", 0.0, 2.0, "the knee angle at touchdown assumed before the first touchdown"),
+    constant("stance_time_min", "s", 0.01, 1.0, "the expected stance duration (the last stance's, averaged) is at least this"),
+    constant("stance_time_max", "s", 0.05, 2.0, "the expected stance duration is at most this"),
+    constant("flight_toe_gain", "1", 0.0, 10.0, "share of the default gains of the active leg's toe servos in flight"),
+    constant("idle_ankle_gain", "1", 0.0, 10.0, "share of the default gains of the idle leg's ankle servos (pitch and roll)"),
+    constant("idle_toe_gain", "1", 0.0, 10.0, "share of the default gains of the idle leg's toe servos"),
+    constant("start_idle_knee_gain", "1", 0.0, 10.0, "share of the default gains of the idle knee's servo at the first push-off"),
+    constant("idle_hip_flexion_max", "rad", 0.0, 3.0, "the idle hip's target flexes at most this much"),
+    constant("idle_hip_extension_max", "rad", 0.0, 2.0, "the idle hip's target extends at most this much"),
 )
 
 
@@ -341,9 +352,9 @@ class Running(Behaviour):
         metrics["gait"] = gait
         speed = np.linalg.norm(a["com_vel"][:, :2], axis=1)
         upright = a["time"] < (metrics["fall_time"] if metrics["fell"] else np.inf)
-        reached = np.nonzero((speed >= 0.9 * params["speed"]) & upright)[0]
+        reached = np.nonzero((speed >= 0.9 * params["speed"]) & upright)[0]    # definition: the metric's 90 %
         metrics["time_to_90pct_speed"] = float(a["time"][reached[0]]) if len(reached) else None
-        metrics["stride_attitude_variation"] = stride_attitude_variation(trajectory, t_from=max(0.0, a["time"][-1] - 10.0))
+        metrics["stride_attitude_variation"] = stride_attitude_variation(trajectory, t_from=max(0.0, a["time"][-1] - 10.0))  # definition: the last 10 s
         placement = trajectory.meta.get("placement")
         path = path_for(params, Placement(**placement) if placement else None)
         if path is not None:
@@ -367,12 +378,12 @@ class Running(Behaviour):
         self.t_touchdown = t
         self.t_liftoff = t
         self.t_thrust = t
-        self.stance_time = 0.30              # expected stance duration t_s (the last stance's)
-        self.flight_time = 0.10
+        self.stance_time = c.initial_stance_time     # expected stance duration t_s (the last stance's)
+        self.flight_time = c.initial_flight_time
         self.idle_lo = [0.0, 0.0]            # idle hip (y, x) at the last lift-off
         self.active_lo = [0.0, 0.0]          # active hip (y, x) at the last lift-off
         self.blend_from = None
-        self.knee_touchdown = 0.3
+        self.knee_touchdown = c.initial_touchdown_knee
         self.ankle_touchdown = 0.0
         self.ankle_flat = 0.0
         m_ = self.ctx.data.xmat[self.pelvis]
@@ -426,10 +437,11 @@ class Running(Behaviour):
         self.event(t, f"{STATE_NAMES[state]}_{'R' if a == 0 else 'L'}")
         if state == FLIGHT:
             g, gi, gk = c.flight_hip_gain, c.idle_hip_gain, c.idle_knee_gain
+            toe, ankle, idle_toe = c.flight_toe_gain, c.idle_ankle_gain, c.idle_toe_gain
             self._set_gains(a, {"hy": (g, g), "hx": (g, g), "hz": (g, g), "knee": (1.0, 1.0), "ay": (1.0, 1.0),
-                                "ax": (1.0, 1.0), "mt": (0.5, 0.5)})
-            self._set_gains(1 - a, {"hy": (gi, gi), "hx": (gi, gi), "hz": (gi, gi), "knee": (gk, gk), "ay": (0.5, 0.5),
-                                    "ax": (0.5, 0.5), "mt": (0.3, 0.3)})
+                                "ax": (1.0, 1.0), "mt": (toe, toe)})
+            self._set_gains(1 - a, {"hy": (gi, gi), "hx": (gi, gi), "hz": (gi, gi), "knee": (gk, gk), "ay": (ankle, ankle),
+                                    "ax": (ankle, ankle), "mt": (idle_toe, idle_toe)})
         elif state == LOADING:
             self._set_gains(a, self.stance_hip_gains)
         elif state == HEEL:
@@ -446,7 +458,8 @@ class Running(Behaviour):
         """The active leg has left the ground: it becomes the idle leg, the other the active one."""
         a, i = self.active, 1 - self.active
         ja, ji = self.j[a], self.j[i]
-        self.stance_time = min(0.45, max(0.12, 0.5 * self.stance_time + 0.5 * (t - self.t_touchdown)))
+        c = self.constants
+        self.stance_time = min(c.stance_time_max, max(c.stance_time_min, 0.5 * self.stance_time + 0.5 * (t - self.t_touchdown)))
         self.t_liftoff = t
         self.active_lo = [q[ji["hy"]], q[ji["hx"]]]      # the new active leg's hip now
         self.idle_lo = [q[ja["hy"]], q[ja["hx"]]]        # the new idle leg's hip now
@@ -521,8 +534,9 @@ class Running(Behaviour):
                 self.ankle_flat = q[ja["ay"]]
                 self.knee_touchdown = q[ja["knee"]]
                 self._set_gains(a, self.stance_hip_gains)
-                self._set_gains(1 - a, {"hy": (1.0, 1.0), "hx": (1.0, 1.0), "hz": (1.0, 1.0), "knee": (0.6, 0.6),
-                                        "ay": (0.5, 0.5), "ax": (0.5, 0.5), "mt": (0.3, 0.3)})
+                knee, ankle, idle_toe = c.start_idle_knee_gain, c.idle_ankle_gain, c.idle_toe_gain
+                self._set_gains(1 - a, {"hy": (1.0, 1.0), "hx": (1.0, 1.0), "hz": (1.0, 1.0), "knee": (knee, knee),
+                                        "ay": (ankle, ankle), "ax": (ankle, ankle), "mt": (idle_toe, idle_toe)})
                 self._enter(t, HEEL_TOE)
         elif state == FLIGHT:
             if touch[a] and t - self.t_liftoff >= c.min_flight:
@@ -712,7 +726,7 @@ class Running(Behaviour):
         if reach > limit:
             x_hh *= limit / reach
             y_hh *= limit / reach
-        z_hh = math.sqrt(max(p["touchdown_leg"] ** 2 - x_hh * x_hh - y_hh * y_hh, 0.01))
+        z_hh = math.sqrt(max(p["touchdown_leg"] ** 2 - x_hh * x_hh - y_hh * y_hh, 0.01))   # definition: a guard
         # ground speed matching: swung further forward during flight, brought back over the last
         # gsm_retract s before the predicted touchdown (ballistic hip height reaching z_hh)
         to_touchdown = time_to_fall_to(hip[2], vz, z_hh)
@@ -754,7 +768,7 @@ class Running(Behaviour):
         hy_idle = self.idle_lo[0] - (hy_goal - self.active_lo[0])
         hx_idle = self.idle_lo[1] - (hx_goal - self.active_lo[1])
         if state not in (FLIGHT, START):
-            s_ = hermite_scalar((t - self.t_touchdown) / max(self.stance_time, 0.05))
+            s_ = hermite_scalar((t - self.t_touchdown) / max(self.stance_time, 0.05))   # definition: a guard
             schedule = self.idle_lo[0] + (c.idle_forward_thigh - pitch - self.idle_lo[0]) * s_
             hy_idle = min(hy_idle, schedule)
         side = 1.0 if i == 0 else -1.0                  # +x adducts the right hip, abducts the left
@@ -763,13 +777,13 @@ class Running(Behaviour):
             # in the air the body's angular momentum is fixed: swinging the idle leg back
             # pitches the trunk back (and forward, forward) - the only pitch control there is
             hy_idle += c.idle_pitch_gain * (pitch - p["stance_pitch"]) + c.idle_pitch_damp * pitch_rate
-        targets[ji["hy"]] = max(-1.3, min(0.5, hy_idle))
+        targets[ji["hy"]] = max(-c.idle_hip_flexion_max, min(c.idle_hip_extension_max, hy_idle))
         # a slow runner folds the idle leg less (people jog with the foot low)
         idle_knee = min(p["idle_knee"], max(c.idle_knee_min, c.idle_knee_per_speed * speed_now))
         targets[ji["hx"]] = hx_idle
         targets[ji["hz"]] = 0.0
         if state in (TOE, UNLOADING) and c.idle_unfold > 0:
-            s_ = hermite_scalar((t - self.t_thrust) / max(c.idle_unfold * self.stance_time, 0.02))
+            s_ = hermite_scalar((t - self.t_thrust) / max(c.idle_unfold * self.stance_time, 0.02))   # definition: a guard
             targets[ji["knee"]] = idle_knee + (c.idle_unfold_knee - idle_knee) * s_
         else:
             targets[ji["knee"]] = idle_knee
@@ -802,7 +816,7 @@ def _first_time_on_path(a: dict, path: np.ndarray) -> float:
     """The deviation is measured once the runner is running (faster than 2 m/s), not while it
     leans and accelerates out of the stand."""
     speed = np.linalg.norm(a["com_vel"][:, :2], axis=1)
-    moving = np.nonzero(speed > 2.0)[0]
+    moving = np.nonzero(speed > 2.0)[0]       # criterion: the deviation's judging starts at 2 m/s
     return float(a["time"][moving[0]]) if len(moving) else float(a["time"][-1])
 
 

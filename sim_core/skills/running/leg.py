@@ -36,12 +36,12 @@ class RunnerLeg:
         self.foot_length = self.ball_x - self.heel_x            # l_f of eqs. 1-2: heel to ball
         self.ankle_height = float(ankle[2])
         self.hip_height = float(hip[2])
-        self.max_reach = self.upper + self.lower - 1e-3
+        self.max_reach = self.upper + self.lower - 1e-3   # definition: 1 mm short of straight (acos stays finite)
 
     def knee_for(self, distance: float) -> float:
         """Knee joint angle that puts hip and ankle ``distance`` apart (law of cosines)."""
         u, l = self.upper, self.lower
-        d = min(max(distance, abs(u - l) + 1e-3), self.max_reach)
+        d = min(max(distance, abs(u - l) + 1e-3), self.max_reach)   # definition: 1 mm off folded
         c = (u * u + l * l - d * d) / (2.0 * u * l)
         flex = math.pi - math.acos(max(-1.0, min(1.0, c)))
         return flex - self.rest_flex
@@ -53,7 +53,7 @@ class RunnerLeg:
         by the triangle's angle at the hip."""
         u, l = self.upper, self.lower
         d = math.sqrt(ax * ax + ay * ay + az * az)
-        d = min(max(d, abs(u - l) + 1e-3), self.max_reach)
+        d = min(max(d, abs(u - l) + 1e-3), self.max_reach)   # definition: 1 mm off folded
         knee = self.knee_for(d)
         cos_delta = max(-1.0, min(1.0, (u * u + d * d - l * l) / (2.0 * u * d)))
         delta = math.acos(cos_delta)

@@ -17,6 +17,10 @@ MIN_SEGMENT = 0.05          # m: consecutive points closer than this are merged
 MIN_LENGTH = 2.0            # m: a path shorter than this cannot be run along
 MAX_POINTS = 10000
 MIN_TURN_RADIUS = 1.5       # m: a corner tighter than this is rounded to it (a runner cannot turn on a spot)
+# the request's path shapes (turn, figure_eight, circle): what each one means
+TURN_RUN_OUT = 60.0         # m straight on after a turn: longer than any run goes
+FIGURE_EIGHT_LAPS = 3
+CIRCLE_LAPS = 5
 
 
 def validate_path(points) -> np.ndarray:
@@ -36,12 +40,12 @@ def validate_path(points) -> np.ndarray:
     return kept
 
 
-def turn_path(angle: float, straight: float, radius: float, after: float = 60.0) -> np.ndarray:
+def turn_path(angle: float, straight: float, radius: float, after: float = TURN_RUN_OUT) -> np.ndarray:
     """Straight ahead (+X) for ``straight`` m, an arc of ``radius`` turning by ``angle`` (left
     positive), then straight on for ``after`` m."""
     pts = [[0.0, 0.0], [straight, 0.0]]
     sign = 1.0 if angle >= 0 else -1.0
-    n = max(2, int(abs(angle) * radius / 0.2))
+    n = max(2, int(abs(angle) * radius / 0.2))          # definition: arc points 0.2 m apart
     cx, cy = straight, sign * radius
     for k in range(1, n + 1):
         a = abs(angle) * k / n
@@ -52,11 +56,11 @@ def turn_path(angle: float, straight: float, radius: float, after: float = 60.0)
     return np.array(pts)
 
 
-def figure_eight_path(radius: float, start: float = 8.0, laps: int = 3) -> np.ndarray:
+def figure_eight_path(radius: float, start: float, laps: int = FIGURE_EIGHT_LAPS) -> np.ndarray:
     """A run-up of ``start`` m along +X, then ``laps`` figure eights of two circles of ``radius``
     touching at the crossing point, entered tangentially (left loop first)."""
     pts = [[0.0, 0.0]]
-    n = max(24, int(2 * math.pi * radius / 0.25))
+    n = max(24, int(2 * math.pi * radius / 0.25))       # definition: circle points 0.25 m apart, 24 at least
     cx = start
     for _ in range(laps):
         for k in range(n + 1):                         # left loop, counter-clockwise
@@ -68,9 +72,9 @@ def figure_eight_path(radius: float, start: float = 8.0, laps: int = 3) -> np.nd
     return validate_path(pts)
 
 
-def circle_path(radius: float, start: float = 8.0, laps: int = 5) -> np.ndarray:
+def circle_path(radius: float, start: float, laps: int = CIRCLE_LAPS) -> np.ndarray:
     pts = [[0.0, 0.0]]
-    n = max(24, int(2 * math.pi * radius / 0.25))
+    n = max(24, int(2 * math.pi * radius / 0.25))       # definition: circle points 0.25 m apart, 24 at least
     for k in range(laps * n + 1):
         a = 2 * math.pi * k / n
         pts.append([start + radius * math.sin(a), radius - radius * math.cos(a)])
@@ -105,7 +109,7 @@ class PathFollower:
         last = len(self.points) - 2
         best_k, (best_d, best_s) = self.segment, self._closest_on(self.segment, x, y)
         k, travelled = self.segment, 0.0
-        while k < last and travelled < 3.0 * self.lookahead:
+        while k < last and travelled < 3.0 * self.lookahead:   # definition: the closest segment is within 3 lookaheads
             travelled += self.lengths[k]
             k += 1
             d, s = self._closest_on(k, x, y)
