@@ -51,7 +51,7 @@ def ride_metrics(trajectory) -> dict:
     yaw = np.unwrap([s["yaw"] for s in states])
     t = a["time"]
     end = len(t) if fall_frame is None else fall_frame
-    last10 = (t >= t[end - 1] - 10.0) & (np.arange(len(t)) < end)
+    last10 = (t >= t[end - 1] - 10.0) & (np.arange(len(t)) < end)     # criterion: TARGETS.md's mean speed of the last 10 s
     gaps = attachment_gaps(model, a["qpos"][:end])
     desired = yaw[0] + meta["params"]["heading"]
     error = np.degrees(np.abs(yaw[:end] - desired))
@@ -59,7 +59,7 @@ def ride_metrics(trajectory) -> dict:
     settled = 0.0 if len(outside) == 0 else (float(t[outside[-1] + 1]) if outside[-1] + 1 < end else None)
     steer_path = np.array([s["steer"] for s in states[:end]])
     moved = np.nonzero(np.abs(steer_path - steer_path[0]) > FIRST_FORK_MOTION)[0]
-    last5 = (t >= t[end - 1] - 5.0) & (np.arange(len(t)) < end)
+    last5 = (t >= t[end - 1] - 5.0) & (np.arange(len(t)) < end)     # criterion: the mean speed and cadence reported over the last 5 s
     gear = float(model.wrap_prm[model.tendon_adr[model.tendon(NAMES["chain"]).id]])
     rear = model.jnt_qposadr[model.joint(NAMES["rear_spin"]).id]
     stretch = gear * a["qpos"][:end, crank] - a["qpos"][:end, rear]

@@ -127,8 +127,8 @@ class Bicycling(Behaviour):
         dofs = np.arange(int(root.dofadr[0]), model.nv)
         rider_dofs = dofs[model.body_rootid[model.dof_bodyid[dofs]] == model.jnt_bodyid[root.id]]
         every = list(range(len(pairs.names)))
-        solve(model, data, pairs, every, rider_dofs, reference, iterations=300)
-        gaps = solve(model, data, pairs, every, rider_dofs, data.qpos.copy(), iterations=50, posture_weight=0.0)
+        solve(model, data, pairs, every, rider_dofs, reference, iterations=300)   # definition: IK solver iterations to mount
+        gaps = solve(model, data, pairs, every, rider_dofs, data.qpos.copy(), iterations=50, posture_weight=0.0)  # definition: IK iterations
         bike.rolling_start(data, params["speed"])
         dof = int(root.dofadr[0])
         data.qvel[dof:dof + 3] = data.qvel[bike.free_dof:bike.free_dof + 3]
@@ -183,7 +183,7 @@ class Bicycling(Behaviour):
         ankles = {"r": ankle_angle(state["crank"], *curve), "l": ankle_angle(state["crank"] + math.pi, *curve)}
         for side, value in ankles.items():
             scratch.qpos[servos.qpos_adr[self.ankle_servos[side]]] = value
-        solve(model, scratch, self.pairs, [2, 3, 4, 5], self.limb_dofs, data.qpos, IK_ITERATIONS_PER_TICK)
+        solve(model, scratch, self.pairs, [2, 3, 4, 5], self.limb_dofs, data.qpos, IK_ITERATIONS_PER_TICK)  # definition: the hand and foot attachments
         goal = self.target.copy()
         ik = scratch.qpos[servos.qpos_adr[self.limb_servos]]
         velocity = np.zeros_like(ik) if self.previous_ik is None else (ik - self.previous_ik) / ctx.control_dt
@@ -197,7 +197,7 @@ class Bicycling(Behaviour):
         offset = np.zeros(len(goal))
         axle = data.xpos[bike.crank_body]
         crank_axis = data.xmat[bike.crank_body].reshape(3, 3)[:, 1]
-        for k, side in ((4, "r"), (5, "l")):
+        for k, side in ((4, "r"), (5, "l")):          # definition: the foot attachments
             site = self.pairs.rider[k]
             arm = data.site_xpos[self.pairs.bike[k]] - axle
             tangent = np.cross(crank_axis, arm)
