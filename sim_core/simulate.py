@@ -35,7 +35,7 @@ from .errors import Cancelled, ParameterError, SimAthleticsError
 from .perturbation import Push, PushSchedule
 from .scene import Scene, compile_scene, control_tick
 from .trajectory import PER_ACTOR_FIELDS, Trajectory
-from .world import World
+from .world import World, world_geom_mask
 
 STATE_SPEC = mujoco.mjtState.mjSTATE_INTEGRATION
 THREE = np.arange(3)        # a contact's force components (normal, two tangents) in its efc rows
@@ -64,8 +64,9 @@ class StartState:
             raise ParameterError(f"start velocity={self.velocity} m/s: need 3 finite numbers in [-20, 20] m/s")
 
     def apply(self, data: mujoco.MjData) -> None:
-        data.qpos[2] += self.height
-        data.qvel[:3] = self.velocity
+        root = ActorView.of(data.model)        # a prop's joint (a springboard's) may come first
+        data.qpos[root.root_qpos + 2] += self.height
+        data.qvel[root.qvel.start:root.qvel.start + 3] = self.velocity
 
 
 @dataclass
@@ -113,7 +114,7 @@ class Recorder:
         self.site_ids = site_ids
         contiguous = len(site_ids) and np.all(np.diff(site_ids) == 1)
         self.sites = slice(int(site_ids[0]), int(site_ids[-1]) + 1) if contiguous else site_ids
-        self.world_geom = model.geom_bodyid == 0           # the ground, boxes (what the body stands on)
+        self.world_geom = world_geom_mask(model)           # the ground, boxes, props (what the body stands on)
         self.geom_body = model.geom_bodyid - 1
         self.world_geom_ids = named_world_geoms(model)
         self.world_column = np.full(model.ngeom, -1)       # geom id -> its column of contact_force
@@ -195,7 +196,8 @@ class Recorder:
 def named_world_geoms(model: mujoco.MjModel) -> np.ndarray:
     """Ids of the world's named geoms (the ground, boxes, a platform, water), in model order:
     the columns of a trajectory's contact_force."""
-    return np.array([g for g in range(model.ngeom) if model.geom_bodyid[g] == 0 and model.geom(g).name], dtype=int)
+    world = world_geom_mask(model)
+    return np.array([g for g in range(model.ngeom) if world[g] and model.geom(g).name], dtype=int)
 
 
 def hold_pose(model: mujoco.MjModel, data: mujoco.MjData) -> None:
