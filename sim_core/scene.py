@@ -301,11 +301,12 @@ def control_tick(scene: Scene) -> tuple[float, dict[str, int]]:
 
 # --------------------------------------------------------------------------------- the model
 def build_scene_spec(scene: Scene) -> mujoco.MjSpec:
-    """One MjSpec: the world's props, then every actor's character, prefixed and placed."""
+    """One MjSpec: every actor's character, prefixed and placed, then the world's props (the world's
+    geoms still come first in the model; a moving prop's body comes after the characters')."""
     spec = new_spec("sim_athletics_scene")
-    add_world(spec, scene.world, scene.prop_character or scene.actors[0].character)
     for a in scene.actors:
         add_character(spec, a.character, {}, a.strength, prefix=a.prefix, placement=a.placement)
+    add_world(spec, scene.world, scene.prop_character or scene.actors[0].character)   # a moving prop's body last
     return spec
 
 
