@@ -38,14 +38,12 @@ from .control.behaviour import Behaviour
 from .skills import behaviour_class
 from .errors import SimAthleticsError
 from .world import World, add_world
-from .world.apparatus import check_landing_mat, check_springboard, check_vault_table
+from .world.apparatus import APPARATUS_LAYOUT, check_apparatus
 
 TOP_KEYS = ("duration", "world", "actors")
-WORLD_KEYS = ("slope", "slope_axis", "floor", "boxes", "springboard", "vault_table", "landing_mat")
+WORLD_KEYS = ("slope", "slope_axis", "floor", "boxes", *APPARATUS_LAYOUT)
 ACTOR_KEYS = ("name", "character", "behaviour", "params", "position", "heading", "strength")
 NAME_PATTERN = re.compile(r"[A-Za-z0-9_-]{1,32}")
-APPARATUS_CHECKS = {"springboard": check_springboard, "vault_table": check_vault_table,
-                    "landing_mat": check_landing_mat}
 START_CLEARANCE = 0.10        # m: free ground between two actors' standing footprints at the start
 MAX_POSITION = 1000.0         # m from the origin
 # World fields a behaviour's scene() may set; any change is a prop it asks for
@@ -168,10 +166,10 @@ def _world(raw) -> World:
         length, width = (_number(v, f"world boxes[{k}] length/width", 0.01, 100, "m") for v in box[3:])
         checked.append((x, y, height, length, width))
     apparatus = {}
-    for name, check in APPARATUS_CHECKS.items():
+    for name in APPARATUS_LAYOUT:
         if name in raw:
             try:
-                apparatus[name] = check(raw[name])
+                apparatus[name] = check_apparatus(name, raw[name])
             except SimAthleticsError as exc:
                 raise SceneError(f"world {exc}") from None
     return World(slope=slope, slope_axis=axis, floor=floor, boxes=tuple(checked), **apparatus)

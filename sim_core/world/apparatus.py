@@ -48,44 +48,27 @@ MAT_THICKNESS_RANGE, MAT_SIZE_RANGE = (0.05, 0.5), (0.5, 20.0)
 MAX_POSITION = 1000.0
 
 
-def _within(value, what: str, lo: float, hi: float) -> float:
-    if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value) \
-            or not lo <= value <= hi:
-        raise ParameterError(f"{what}={value!r} is out of range; allowed range is [{lo:g}, {hi:g}] m")
-    return float(value)
+POSITION = (-MAX_POSITION, MAX_POSITION)
+# each apparatus field: its values in order, each with its allowed range (m)
+APPARATUS_LAYOUT = {
+    "springboard": {"x": POSITION, "y": POSITION},
+    "vault_table": {"x": POSITION, "y": POSITION, "height": VAULT_HEIGHT_RANGE, "length": VAULT_SIZE_RANGE,
+                    "width": VAULT_SIZE_RANGE},
+    "landing_mat": {"x": POSITION, "y": POSITION, "length": MAT_SIZE_RANGE, "width": MAT_SIZE_RANGE,
+                    "thickness": MAT_THICKNESS_RANGE},
+}
 
 
-def _fields(value, names: tuple, what: str) -> list:
-    if not (isinstance(value, (tuple, list)) and len(value) == len(names)):
-        raise ParameterError(f"{what}={value!r} must be ({', '.join(names)}) in m")
-    return list(value)
-
-
-def check_springboard(value) -> tuple:
-    """(x, y): the board's centre. One-line refusal of anything else."""
-    x, y = _fields(value, ("x", "y"), "springboard")
-    return (_within(x, "springboard x", -MAX_POSITION, MAX_POSITION),
-            _within(y, "springboard y", -MAX_POSITION, MAX_POSITION))
-
-
-def check_vault_table(value) -> tuple:
-    """(x, y, height, length, width): centre, top height above the floor, size along X and Y."""
-    x, y, height, length, width = _fields(value, ("x", "y", "height", "length", "width"), "vault_table")
-    return (_within(x, "vault_table x", -MAX_POSITION, MAX_POSITION),
-            _within(y, "vault_table y", -MAX_POSITION, MAX_POSITION),
-            _within(height, "vault_table height", *VAULT_HEIGHT_RANGE),
-            _within(length, "vault_table length", *VAULT_SIZE_RANGE),
-            _within(width, "vault_table width", *VAULT_SIZE_RANGE))
-
-
-def check_landing_mat(value) -> tuple:
-    """(x, y, length, width, thickness): centre, size along X and Y, thickness (its top's height)."""
-    x, y, length, width, thickness = _fields(value, ("x", "y", "length", "width", "thickness"), "landing_mat")
-    return (_within(x, "landing_mat x", -MAX_POSITION, MAX_POSITION),
-            _within(y, "landing_mat y", -MAX_POSITION, MAX_POSITION),
-            _within(length, "landing_mat length", *MAT_SIZE_RANGE),
-            _within(width, "landing_mat width", *MAT_SIZE_RANGE),
-            _within(thickness, "landing_mat thickness", *MAT_THICKNESS_RANGE))
+def check_apparatus(field: str, value) -> tuple:
+    """``value`` of the World field ``field`` (see APPARATUS_LAYOUT) as a tuple of floats, or a
+    one-line refusal naming the bad value and its allowed range."""
+    layout = APPARATUS_LAYOUT[field]
+    if not (isinstance(value, (tuple, list)) and len(value) == len(layout)):
+        raise ParameterError(f"{field}={value!r} must be ({', '.join(layout)}) in m")
+    for (name, (lo, hi)), v in zip(layout.items(), value):
+        if isinstance(v, bool) or not isinstance(v, (int, float)) or not math.isfinite(v) or not lo <= v <= hi:
+            raise ParameterError(f"{field} {name}={v!r} is out of range; allowed range is [{lo:g}, {hi:g}] m")
+    return tuple(float(v) for v in value)
 
 
 @prop_builder("springboard")
@@ -95,7 +78,7 @@ def add_springboard(spec: mujoco.MjSpec, world: World, character) -> None:
     qpos = 0 (top at BOARD_TOP) under its own weight; a limit at BOARD_TRAVEL is its bottoming out."""
     if not world.springboard:
         return
-    x, y = check_springboard(world.springboard)
+    x, y = check_apparatus("springboard", world.springboard)
     size = np.array([BOARD_LENGTH, BOARD_WIDTH, BOARD_THICKNESS])
     body = spec.worldbody.add_body(name=PROP_BODY_PREFIX + "springboard",
                                    pos=[x, y, world.floor + BOARD_TOP - BOARD_THICKNESS / 2])
@@ -116,7 +99,7 @@ def add_vault_table(spec: mujoco.MjSpec, world: World, character) -> None:
     """The vaulting table (or horse) "vault_table": a block from the floor up to its top."""
     if not world.vault_table:
         return
-    x, y, height, length, width = check_vault_table(world.vault_table)
+    x, y, height, length, width = check_apparatus("vault_table", world.vault_table)
     _felt(spec.worldbody.add_geom(name="vault_table", type=mujoco.mjtGeom.mjGEOM_BOX,
                                   size=[length / 2, width / 2, height / 2], pos=[x, y, world.floor + height / 2],
                                   rgba=[0.55, 0.35, 0.25, 1]))
@@ -128,7 +111,7 @@ def add_landing_mat(spec: mujoco.MjSpec, world: World, character) -> None:
     (LANDING_MAT_SOLREF/SOLIMP, used for its contacts by priority)."""
     if not world.landing_mat:
         return
-    x, y, length, width, thickness = check_landing_mat(world.landing_mat)
+    x, y, length, width, thickness = check_apparatus("landing_mat", world.landing_mat)
     mat = spec.worldbody.add_geom(name="landing_mat", type=mujoco.mjtGeom.mjGEOM_BOX,
                                   size=[length / 2, width / 2, thickness / 2],
                                   pos=[x, y, world.floor + thickness / 2], rgba=[0.2, 0.35, 0.7, 1])
