@@ -12,7 +12,7 @@ from sim_core.ballistics import GRAVITY
 from sim_core.character.model import new_spec
 from sim_core.errors import ParameterError
 from sim_core.scene import SceneError, build_scene_spec, scene_from_dict
-from sim_core.simulate import RunRequest, StartState, run
+from sim_core.simulate import RunRequest, StartState, largest_difference, replay, run
 from sim_core.world import World, add_world
 from sim_core.world import apparatus as A
 from sim_core.world.props import CONTACT_GROUP
@@ -72,6 +72,8 @@ def test_the_man_standing_on_the_springboard_deflects_it_by_his_weight():
     deck = arrays["qpos"][-20:, -1].mean()           # the deck's slide: the last joint (props come last)
     assert force > 900, force                        # he stands on the deck (the man weighs ~960 N)
     assert -deck == pytest.approx(force / A.BOARD_STIFFNESS, rel=0.05), (deck, force)
+    assert "prop:springboard" not in trajectory.body_names        # the deck is the world's
+    assert largest_difference(trajectory, replay(trajectory)) == 0.0
 
 
 def _foot_sink(world: World, start: float) -> float:
