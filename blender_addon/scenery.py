@@ -1,6 +1,6 @@
 """The simulated world's fixed objects in the Blender scene, so a baked skill is seen where it
 happened: a dive's platform and water surface, the boxes a jump lands on, starts from or clears,
-and the ground below when a jump starts on a box. Objects are made once per scene and named
+the ground below when a jump starts on a box, and a vault's springboard, table and landing mat. Objects are made once per scene and named
 ``SimAthletics platform`` / ``SimAthletics water`` / ``SimAthletics ground`` / ``SimAthletics box 0``...;
 an existing object of that name is reused, never replaced (the user may have moved or restyled
 it)."""
@@ -14,6 +14,8 @@ from .core.axes import SIM_TO_BLENDER
 
 PLATFORM_NAME, WATER_NAME, GROUND_NAME = "SimAthletics platform", "SimAthletics water", "SimAthletics ground"
 BOX_NAME = "SimAthletics box {}"
+APPARATUS_NAMES = {"springboard": "SimAthletics springboard", "vault_table": "SimAthletics vault table",
+                   "landing_mat": "SimAthletics landing mat"}     # geom -> object (sim_core.world.apparatus)
 
 
 def add_scenery(context, armature, trajectory) -> list:
@@ -30,15 +32,32 @@ def add_scenery(context, armature, trajectory) -> list:
         made.append(_box(context, GROUND_NAME, np.array([0.0, 0.0, floor - 0.005]),
                          np.array([20.0, 20.0, 0.005]), armature))
     platform = float(world.get("platform", 0.0) or 0.0)
-    if platform <= 0:
+    if platform <= 0 and not any(name in world for name in APPARATUS_NAMES):
         return made
     model = mujoco.MjModel.from_xml_string(trajectory.meta["model_xml"])
+    made += _apparatus(context, armature, model)
+    if platform <= 0:
+        return made
     ground = model.geom("ground").id
     if PLATFORM_NAME not in bpy.data.objects:
         made.append(_box(context, PLATFORM_NAME, model.geom_pos[ground], model.geom_size[ground], armature))
     if WATER_NAME not in bpy.data.objects:
         made.append(_box(context, WATER_NAME, np.array([0.0, 0.0, -platform - 0.005]),
                          np.array([20.0, 20.0, 0.005]), armature))
+    return made
+
+
+def _apparatus(context, armature, model: mujoco.MjModel) -> list:
+    """The springboard, vaulting table and landing mat as boxes where the model puts them at
+    rest (the springboard's deck is shown still; its deflection is in the trajectory's qpos)."""
+    data = mujoco.MjData(model)
+    mujoco.mj_kinematics(model, data)
+    made = []
+    for geom, name in APPARATUS_NAMES.items():
+        if mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_GEOM, geom) < 0 or name in bpy.data.objects:
+            continue
+        g = model.geom(geom).id
+        made.append(_box(context, name, data.geom_xpos[g], model.geom_size[g], armature))
     return made
 
 

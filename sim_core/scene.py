@@ -5,7 +5,9 @@ scene's MjSpec; sim_core.simulate runs it (``run_scene``).
 File (JSON, or TOML with the same keys)::
 
     {"duration": 6,
-     "world": {"slope": 0, "slope_axis": "x+", "floor": 0, "boxes": [[x, y, height, length, width]]},
+     "world": {"slope": 0, "slope_axis": "x+", "floor": 0, "boxes": [[x, y, height, length, width]],
+               "springboard": [x, y], "vault_table": [x, y, height, length, width],
+               "landing_mat": [x, y, length, width, thickness]},
      "actors": [{"name": "a", "character": "man", "behaviour": "running", "params": {"speed": 3},
                  "position": [0, 0], "heading": 0, "strength": "human"}, ...]}
 
@@ -36,15 +38,17 @@ from .control.behaviour import Behaviour
 from .skills import behaviour_class
 from .errors import SimAthleticsError
 from .world import World, add_world
+from .world.apparatus import APPARATUS_LAYOUT, check_apparatus
 
 TOP_KEYS = ("duration", "world", "actors")
-WORLD_KEYS = ("slope", "slope_axis", "floor", "boxes")
+WORLD_KEYS = ("slope", "slope_axis", "floor", "boxes", *APPARATUS_LAYOUT)
 ACTOR_KEYS = ("name", "character", "behaviour", "params", "position", "heading", "strength")
 NAME_PATTERN = re.compile(r"[A-Za-z0-9_-]{1,32}")
 START_CLEARANCE = 0.10        # m: free ground between two actors' standing footprints at the start
 MAX_POSITION = 1000.0         # m from the origin
 # World fields a behaviour's scene() may set; any change is a prop it asks for
-PROP_FIELDS = ("platform", "platform_edge", "boxes", "floor", "slope", "slope_axis")
+PROP_FIELDS = ("platform", "platform_edge", "boxes", "floor", "slope", "slope_axis", "springboard", "vault_table",
+               "landing_mat")
 
 
 class SceneError(SimAthleticsError):
@@ -161,7 +165,14 @@ def _world(raw) -> World:
         height = _number(box[2], f"world boxes[{k}] height", floor, 5, "m")
         length, width = (_number(v, f"world boxes[{k}] length/width", 0.01, 100, "m") for v in box[3:])
         checked.append((x, y, height, length, width))
-    return World(slope=slope, slope_axis=axis, floor=floor, boxes=tuple(checked))
+    apparatus = {}
+    for name in APPARATUS_LAYOUT:
+        if name in raw:
+            try:
+                apparatus[name] = check_apparatus(name, raw[name])
+            except SimAthleticsError as exc:
+                raise SceneError(f"world {exc}") from None
+    return World(slope=slope, slope_axis=axis, floor=floor, boxes=tuple(checked), **apparatus)
 
 
 def _actor(raw, k: int) -> Actor:
@@ -288,11 +299,12 @@ def control_tick(scene: Scene) -> tuple[float, dict[str, int]]:
 
 # --------------------------------------------------------------------------------- the model
 def build_scene_spec(scene: Scene) -> mujoco.MjSpec:
-    """One MjSpec: the world's props, then every actor's character, prefixed and placed."""
+    """One MjSpec: every actor's character, prefixed and placed, then the world's props (the world's
+    geoms still come first in the model; a moving prop's body comes after the characters')."""
     spec = new_spec("sim_athletics_scene")
-    add_world(spec, scene.world, scene.prop_character or scene.actors[0].character)
     for a in scene.actors:
         add_character(spec, a.character, {}, a.strength, prefix=a.prefix, placement=a.placement)
+    add_world(spec, scene.world, scene.prop_character or scene.actors[0].character)   # a moving prop's body last
     return spec
 
 

@@ -35,7 +35,7 @@ from .errors import Cancelled, ParameterError, SimAthleticsError
 from .perturbation import Push, PushSchedule
 from .scene import Scene, compile_scene, control_tick
 from .trajectory import PER_ACTOR_FIELDS, Trajectory
-from .world import World
+from .world import World, world_geom_mask
 
 STATE_SPEC = mujoco.mjtState.mjSTATE_INTEGRATION
 THREE = np.arange(3)        # a contact's force components (normal, two tangents) in its efc rows
@@ -109,7 +109,10 @@ class Recorder:
         self.model = model
         actors = actors or [ActorView.of(model)]
         self.per_actor = per_actor
-        self.bodies = np.arange(1, model.nbody)        # every body but the world, in model order
+        world_geom = world_geom_mask(model)             # the ground, boxes, props (what the body stands on)
+        # every body but the world and a moving prop's (which come after the characters), in model order
+        self.bodies = np.arange(1, model.nbody - len(set(model.geom_bodyid[world_geom]) - {0}))
+        self.body_rows = slice(1, 1 + len(self.bodies))
         self.roots = np.array([a.root for a in actors])
         self.actor_bodies = [a.bodies for a in actors]
         # a single character's push is summed over every row of xfrc_applied (the world's is 0)
@@ -117,7 +120,7 @@ class Recorder:
         self.site_ids = site_ids
         contiguous = len(site_ids) and np.all(np.diff(site_ids) == 1)
         self.sites = slice(int(site_ids[0]), int(site_ids[-1]) + 1) if contiguous else site_ids
-        self.world_geom = model.geom_bodyid == 0           # the ground, boxes (what the body stands on)
+        self.world_geom = world_geom
         self.geom_body = model.geom_bodyid - 1
         self.world_geom_ids = named_world_geoms(model)
         self.world_column = np.full(model.ngeom, -1)       # geom id -> its column of contact_force
@@ -140,8 +143,8 @@ class Recorder:
         b["time"][k] = data.time
         b["qpos"][k] = data.qpos
         b["qvel"][k] = data.qvel
-        b["body_pos"][k] = data.xpos[1:]
-        b["body_quat"][k] = data.xquat[1:]
+        b["body_pos"][k] = data.xpos[self.body_rows]
+        b["body_quat"][k] = data.xquat[self.body_rows]
         b["com"][k] = data.subtree_com[self.roots]
         b["com_vel"][k] = data.subtree_linvel[self.roots]
         b["angmom"][k] = data.subtree_angmom[self.roots]
@@ -156,6 +159,7 @@ class Recorder:
             world = self.world_geom
             touched = np.where(world[first], second, np.where(world[second], first, -1))
             touched = touched[touched >= 0]
+            touched = touched[~world[touched]]       # a prop touching the ground is not a body's contact
             b["ground_contact"][k, self.geom_body[touched]] = True
             if k and data.nefc:             # the contacts' forces, assembled in contact_forces()
                 contact = data.contact
@@ -197,9 +201,10 @@ class Recorder:
 
 
 def named_world_geoms(model: mujoco.MjModel) -> np.ndarray:
-    """Ids of the world's named geoms (the ground, boxes, a platform, water), in model order:
+    """Ids of the world's named geoms (the ground, boxes, a platform, water, apparatus), in model order:
     the columns of a trajectory's contact_force."""
-    return np.array([g for g in range(model.ngeom) if model.geom_bodyid[g] == 0 and model.geom(g).name], dtype=int)
+    world = world_geom_mask(model)
+    return np.array([g for g in range(model.ngeom) if world[g] and model.geom(g).name], dtype=int)
 
 
 def hold_pose(model: mujoco.MjModel, data: mujoco.MjData) -> None:

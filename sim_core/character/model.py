@@ -83,8 +83,8 @@ def build_mjspec(character: CharacterSpec, world: World | None = None, strength:
     """One character, unprefixed, standing at the origin facing +X, in ``world``."""
     world = world or World()
     spec = new_spec(f"sim_athletics_{character.name}")
-    add_world(spec, world, character)
     add_character(spec, character, world.extra_mass, strength)
+    add_world(spec, world, character)      # after the character: a moving prop's body comes last
     add_attachments(spec, world, character)
     return spec
 

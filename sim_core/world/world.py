@@ -10,6 +10,7 @@ import numpy as np
 from ..ballistics import GRAVITY
 from .bicycle import Bicycle
 
+APPARATUS_FIELDS = ("springboard", "vault_table", "landing_mat")   # recorded only when asked for
 SLOPE_RAMP_PER_DEGREE = 0.15   # s per degree: the ground tilts at ~6.7 deg/s
 
 
@@ -41,6 +42,10 @@ class World:
                                                # on a box (a box of World.boxes with its top at z = 0, so every
                                                # standing controller works unchanged) and can jump down
     bicycle: Bicycle | None = None             # the bicycle prop (sim_core.world.bicycle), None: no bicycle
+    springboard: tuple = ()                    # (x, y) m: a springboard's centre (geom "springboard"), () = none
+    vault_table: tuple = ()                    # (x, y, height, length, width) m: a vaulting table or horse
+    landing_mat: tuple = ()                    # (x, y, length, width, thickness) m: a mat softer than the floor
+                                               # (sim_core.world.apparatus: figures, checks and builders)
 
     @property
     def ramp_time(self) -> float:
@@ -60,7 +65,8 @@ class World:
         return {"slope": self.slope, "slope_axis": self.slope_axis, "extra_mass": self.extra_mass,
                 "platform": self.platform, "platform_edge": self.platform_edge,
                 "boxes": [list(b) for b in self.boxes], "floor": self.floor,
-                **({"bicycle": self.bicycle.to_dict()} if self.bicycle else {})}
+                **({"bicycle": self.bicycle.to_dict()} if self.bicycle else {}),
+                **{name: list(getattr(self, name)) for name in APPARATUS_FIELDS if getattr(self, name)}}
 
 
 def gravity_for_slope(slope: float, axis: str) -> np.ndarray:
