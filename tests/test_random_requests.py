@@ -48,3 +48,17 @@ def test_bad_budget_is_refused(capsys):
     with pytest.raises(SystemExit):
         random_requests.main(["--seed", "1", "--budget", "0"])
     assert "--budget=0: must be at least 1" in capsys.readouterr().err
+
+
+def test_the_cli_runs_it_as_report_random(tmp_path):
+    import subprocess
+    import sys
+    from pathlib import Path
+    out = tmp_path / "random.md"
+    done = subprocess.run([sys.executable, "-m", "sim_core", "report", "random", "--seed", "3", "--jumps", "0",
+                           "--leaps", "1", "--broad", "0", "--characters", "woman", "--workers", "1",
+                           "--out", str(out)], capture_output=True, text=True,
+                          cwd=Path(random_requests.__file__).parents[1], timeout=120)
+    assert done.returncode == 0, done.stderr
+    assert re.search(r"woman leap \d\.\d{3} m +(PASS|MISS) +rose \d\.\d{3} m", done.stdout)
+    assert out.exists()
