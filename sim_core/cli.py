@@ -6,6 +6,7 @@ Errors a user can cause print one line ('error: ...') and exit with status 2; no
 from __future__ import annotations
 
 import argparse
+import importlib
 import json
 import math
 import sys
@@ -199,11 +200,18 @@ def cmd_bench(args) -> int:
     return 0
 
 
+CROSS_SKILL_REPORTS = {"random": "random_requests"}     # ``report NAME``: reports that span several skills
+
+
 def cmd_skill_part(args) -> int:
     """``calibrate SKILL ...`` / ``report SKILL ...``: the skill room's calibrate.py or report.py,
-    with the rest of the command line as its own options (``--help`` lists them)."""
+    with the rest of the command line as its own options (``--help`` lists them); ``report random``
+    is sim_core/random_requests.py, which spans several skills and so lives in no skill's room."""
     from .skills import skill_module
-    module = skill_module(args.skill, args.part)
+    if args.part == "report" and args.skill in CROSS_SKILL_REPORTS:
+        module = importlib.import_module(f".{CROSS_SKILL_REPORTS[args.skill]}", __package__)
+    else:
+        module = skill_module(args.skill, args.part)
     sys.argv = [f"python -m sim_core {args.part} {args.skill}", *args.options]     # its usage line names it so
     return module.main(args.options) or 0
 
@@ -307,7 +315,7 @@ def parser() -> argparse.ArgumentParser:
     b.add_argument("--scene-duration", default="5", help="seconds simulated in the scene benchmark")
     b.set_defaults(func=cmd_bench)
     for part, text in (("calibrate", "run a skill's calibration: it searches by simulation and writes the skill's table"),
-                       ("report", "run a skill's report: it simulates and writes its figures and plots under docs/")):
+                       ("report", "run a skill's report (or 'report random': random requests across skills): it simulates and writes under docs/")):
         sp = sub.add_parser(part, help=text, add_help=False)
         sp.add_argument("skill", help="skill name (see list)")
         sp.add_argument("options", nargs=argparse.REMAINDER, help="the skill's own options (SKILL --help)")

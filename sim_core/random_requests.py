@@ -1,0 +1,238 @@
+"""Random requests (issue 29, "What it must show, measured"): draw jump targets, leap heights and
+broad-jump distances at random inside the ranges the skills offer, run each the way a new user's
+request runs (an unplanned jump target is planned first, above the loop, through
+sim_core.planning, into a temporary plan store), and print for each one line with what the
+simulation did and whether it passed TARGETS.md's check, then the pass rate and the time to a
+result per skill and character. Writes docs/random_requests.md:
+
+    python -m sim_core report random --seed 1 [--jumps 30 --leaps 20 --broad 20
+                                      --characters man,woman --budget 24 --workers 2]
+
+It is its own module, not a skill room's report.py, because it spans the jump_to_target and leap
+skills. The same seed draws the same requests; different seeds draw different ones. Nothing is
+written to the shipped tables or to the user's plan store (the plans go to a temporary store
+unless --store names one). Times are wall seconds of one request in one worker (plan + simulate),
+with ``--workers`` of them running at once on this machine.
+"""
+from __future__ import annotations
+
+import argparse
+import os
+import statistics
+import tempfile
+import time
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+from .control.leap import commandable_heights, load_mapping, rise_tolerance
+from .errors import ParameterError
+from .tuning import executor_for
+
+# the ranges issue 29 names for a jump to a target on the ground
+JUMP_FORWARD = {"man": (0.5, 1.9), "woman": (0.5, 1.6)}     # m forward of the start
+JUMP_LATERAL = 0.6                                          # m: lateral offset within +-this
+JUMP_AIR_TIME = (0.4, 0.7)                                  # s
+BROAD_TOLERANCE = 0.1                                       # TARGETS.md: broad jump travel within 10 %
+DRAW_DECIMALS = 3                                           # requests are drawn to the millimetre / millisecond
+DEFAULT_BUDGET = 24                                         # trials of a plan: two of the planner's batches
+SKILLS = ("jump", "leap", "broad")
+
+
+@dataclass(frozen=True)
+class Draw:
+    """One random request: ``skill`` "jump" (target_x, target_y, air_time), "leap" (height) or
+    "broad" (distance), with its numbers in ``values``."""
+    skill: str
+    character: str
+    values: tuple
+
+    def describe(self) -> str:
+        if self.skill == "jump":
+            x, y, t = self.values
+            return f"jump to ({x:.3f}, {y:+.3f}) m in {t:.3f} s"
+        if self.skill == "leap":
+            return f"leap {self.values[0]:.3f} m"
+        return f"broad jump {self.values[0]:.3f} m"
+
+
+def leap_height_range(character: str) -> tuple[float, float]:
+    """The heights the character's vertical leap (human torque limits) accepts: commandable_heights
+    of its calibrated rises."""
+    return commandable_heights(load_mapping(character)["vertical"]["com_rise"])
+
+
+def broad_range(character: str) -> tuple[float, float]:
+    """The calibrated broad-jump distances' range (the COM travel the calibrated rows measured)."""
+    travels = load_mapping(character).get("broad", {}).get("com_travel", [])
+    if not len(travels):
+        raise ParameterError(f"the broad jump of {character} is not calibrated: run python -m sim_core calibrate "
+                             f"leap --only broad")
+    return float(min(travels)), float(max(travels))
+
+
+def draw_requests(seed: int, characters, jumps: int, leaps: int, broads: int) -> list[Draw]:
+    """The random requests of ``seed`` (NumPy's default generator), per character: ``jumps`` jump
+    targets, ``leaps`` leap heights and ``broads`` broad-jump distances, uniform in their ranges."""
+    rng = np.random.default_rng(seed)
+    drawn = []
+    for character in characters:
+        if character not in JUMP_FORWARD:
+            raise ParameterError(f"character {character!r}: the random requests' ranges are known for "
+                                 f"{', '.join(JUMP_FORWARD)}")
+        forward, heights, distances = JUMP_FORWARD[character], leap_height_range(character), broad_range(character)
+        for _ in range(jumps):
+            values = (rng.uniform(*forward), rng.uniform(-JUMP_LATERAL, JUMP_LATERAL), rng.uniform(*JUMP_AIR_TIME))
+            drawn.append(Draw("jump", character, tuple(round(float(v), DRAW_DECIMALS) for v in values)))
+        for _ in range(leaps):
+            drawn.append(Draw("leap", character, (round(float(rng.uniform(*heights)), DRAW_DECIMALS),)))
+        for _ in range(broads):
+            drawn.append(Draw("broad", character, (round(float(rng.uniform(*distances)), DRAW_DECIMALS),)))
+    return drawn
+
+
+def evaluate(draw: Draw, budget: int, store: str) -> dict:
+    """Run one request as a user's would and judge it by TARGETS.md; a module-level function so a
+    process pool can run it. ``store``: the plan store a jump is planned into."""
+    from .skills.jump_to_target.behaviour import PLAN_STORE_VARIABLE
+    before = os.environ.get(PLAN_STORE_VARIABLE)
+    os.environ[PLAN_STORE_VARIABLE] = store           # the plans go to the report's store, not the user's
+    began = time.perf_counter()
+    result = {"draw": draw}
+    try:
+        result.update(_jump(draw, budget) if draw.skill == "jump" else _leap(draw))
+    except ParameterError as exc:
+        result.update(refused=str(exc), passed=False)
+    finally:
+        if before is None:
+            os.environ.pop(PLAN_STORE_VARIABLE)
+        else:
+            os.environ[PLAN_STORE_VARIABLE] = before
+    result["seconds"] = time.perf_counter() - began
+    return result
+
+
+def _jump(draw: Draw, budget: int) -> dict:
+    from .planning import plan_and_store, planned
+    from .planning.jump import within_tolerance
+    from .simulate import RunRequest, run
+    from .skills.jump_to_target.behaviour import landing_measures
+    x, y, air_time = draw.values
+    params = {"target_x": x, "target_y": y, "air_time": air_time}
+    out = {"plan_seconds": 0.0, "planned_trials": 0}
+    if planned(draw.character, params) is None:
+        began = time.perf_counter()
+        plan = plan_and_store(draw.character, params, budget=budget)
+        out.update(plan_seconds=time.perf_counter() - began, planned_trials=plan["trials"], plan_found=plan["found"])
+        if not plan["found"]:                 # the run would be refused; the nearest trial is what happened
+            return {**out, "measured": plan["measured"], "passed": False,
+                    "refused": f"no plan found in {plan['trials']} trials (nearest trial shown)"}
+    measured = landing_measures(run(RunRequest("jump_to_target", draw.character, params=params)))
+    return {**out, "measured": measured, "passed": bool(within_tolerance(measured, (x, y, 0.0), air_time))}
+
+
+def _leap(draw: Draw) -> dict:
+    from .simulate import RunRequest, run
+    commanded = draw.values[0]
+    params = {"height": commanded} if draw.skill == "leap" else {"distance": commanded}
+    trajectory = run(RunRequest("leap", draw.character, params=params, duration=5.0))
+    metrics, outcome = trajectory.meta["metrics"], trajectory.meta["outcome"]
+    achieved = metrics["com_rise"] if draw.skill == "leap" else metrics["com_travel"]
+    tolerance = rise_tolerance(commanded) if draw.skill == "leap" else BROAD_TOLERANCE * commanded
+    return {"achieved": float(achieved), "tolerance": float(tolerance), "outcome": outcome,
+            "passed": bool(abs(achieved - commanded) <= tolerance and outcome == "success")}
+
+
+def result_line(r: dict) -> str:
+    """One request's line: the request, what happened (measured), PASS or MISS, and the time."""
+    draw = r["draw"]
+    head = f"{draw.character:5s} {draw.describe():38s}"
+    plan = (f"; planned {r['planned_trials']} trials in {r['plan_seconds']:.1f} s" if r.get("planned_trials") else "")
+    verdict = "PASS" if r["passed"] else "MISS"
+    if "measured" in r:
+        m = r["measured"]
+        x, y, _ = draw.values
+        error = float(np.hypot(m["landing"][0] - x, m["landing"][1] - y))
+        what = (f"landed at ({m['landing'][0]:.3f}, {m['landing'][1]:+.3f}) m, {error * 100:.1f} cm off, air "
+                f"{m['air_time']:.3f} s ({m['air_time'] - draw.values[2]:+.3f}), {m['outcome']}")
+        if "refused" in r:
+            what = f"refused: {r['refused']}: {what}"
+    elif "refused" in r:
+        what = f"refused: {r['refused']}"
+    else:
+        verb = "rose" if draw.skill == "leap" else "travelled"
+        what = (f"{verb} {r['achieved']:.3f} m vs {draw.values[0]:.3f} (+-{r['tolerance']:.3f}), {r['outcome']}")
+    return f"{head} {verdict}  {what}{plan}; {r['seconds']:.1f} s"
+
+
+def summary_lines(results: list[dict]) -> list[str]:
+    """Per skill and character: passed / drawn, and the time to a result (median, worst)."""
+    lines = ["| skill | character | passed / drawn | time to a result, median (s) | worst (s) |",
+             "| --- | --- | --- | --- | --- |"]
+    for skill in SKILLS:
+        for character in dict.fromkeys(r["draw"].character for r in results):
+            mine = [r for r in results if r["draw"].skill == skill and r["draw"].character == character]
+            if not mine:
+                continue
+            seconds = [r["seconds"] for r in mine]
+            passed = sum(r["passed"] for r in mine)
+            lines.append(f"| {skill} | {character} | {passed} / {len(mine)} ({100 * passed / len(mine):.0f} %) | "
+                         f"{statistics.median(seconds):.1f} | {max(seconds):.1f} |")
+    return lines
+
+
+def main(argv=None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--seed", type=int, required=True, help="draws the requests (different seeds, different draws)")
+    parser.add_argument("--jumps", type=int, default=30, help="jump targets per character")
+    parser.add_argument("--leaps", type=int, default=20, help="leap heights per character")
+    parser.add_argument("--broad", type=int, default=20, help="broad-jump distances per character")
+    parser.add_argument("--characters", default="man,woman")
+    parser.add_argument("--budget", type=int, default=DEFAULT_BUDGET, help="trials of each unplanned jump's plan")
+    parser.add_argument("--workers", type=int, default=2, help="requests run at once, one process each")
+    parser.add_argument("--store", help="plan store for the jumps' plans (default: a temporary one, removed after)")
+    parser.add_argument("--out", default="docs/random_requests.md")
+    args = parser.parse_args(argv)
+    for name in ("jumps", "leaps", "broad"):
+        if getattr(args, name) < 0:
+            parser.error(f"--{name}={getattr(args, name)}: must be 0 or more")
+    if args.budget < 1:
+        parser.error(f"--budget={args.budget}: must be at least 1 trial")
+    characters = [c.strip() for c in args.characters.split(",") if c.strip()]
+    draws = draw_requests(args.seed, characters, args.jumps, args.leaps, args.broad)
+    command = (f"python -m sim_core report random --seed {args.seed} --jumps {args.jumps} --leaps {args.leaps} "
+               f"--broad {args.broad} --characters {','.join(characters)} --budget {args.budget} "
+               f"--workers {args.workers}")
+    print(command, flush=True)
+    began = time.perf_counter()
+    with tempfile.TemporaryDirectory(prefix="random_requests_plans_") as temporary:
+        store = str(Path(args.store).expanduser().resolve()) if args.store else temporary
+        with executor_for(args.workers) as executor:
+            futures = [executor.submit(evaluate, draw, args.budget, store) for draw in draws]
+            results = []
+            for future in futures:
+                results.append(future.result())
+                print(result_line(results[-1]), flush=True)
+    total = time.perf_counter() - began
+    summary = summary_lines(results)
+    print("\n".join(summary))
+    print(f"{len(results)} requests in {total:.0f} s")
+    text = ["# Random requests (issue 29)", "",
+            "Generated by", "", "```", command, "```", "",
+            f"Seed {args.seed}. Every figure is measured off the simulation. Checks (TARGETS.md): a jump lands the "
+            "middle of the feet within 5 cm of the target with the air time within 0.05 s and ends balanced "
+            "(sim_core.planning.jump.within_tolerance); a leap rises within sim_core.control.leap.rise_tolerance "
+            "(+-10 %, +-3 cm below 0.3 m) and lands balanced; a broad jump's COM travels within 10 % and it lands "
+            "balanced. A jump target without a stored plan is planned first with the given budget (into a "
+            "temporary plan store) and then simulated; a plan that found nothing within the tolerances is a "
+            "miss, shown with its nearest trial. Ranges: jump targets forward 0.5-1.9 m (man) / 0.5-1.6 m "
+            "(woman), lateral within +-0.6 m, air time 0.4-0.7 s; leap heights within each character's "
+            "commandable range (human torque limits); broad jumps within the calibrated distances. Times are "
+            f"wall seconds of one request (plan + simulate) in one of {args.workers} worker processes running at "
+            f"once; {len(results)} requests took {total:.0f} s.", "",
+            *summary, "", "## Every request", "", "```", *(result_line(r) for r in results), "```", ""]
+    Path(args.out).parent.mkdir(parents=True, exist_ok=True)
+    Path(args.out).write_text("\n".join(text))
+    print(f"wrote {args.out}")
+    return 0

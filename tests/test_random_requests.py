@@ -1,0 +1,64 @@
+"""The random-requests report (issue 29): a tiny draw with a fixed seed runs through the CLI's
+module and prints one line per request with measured figures; seeds draw different requests."""
+import re
+
+import pytest
+
+from sim_core import random_requests
+from sim_core.random_requests import JUMP_AIR_TIME, JUMP_FORWARD, JUMP_LATERAL, broad_range, draw_requests, leap_height_range
+
+
+def test_different_seeds_draw_different_requests_inside_the_ranges():
+    first = draw_requests(1, ["man", "woman"], 3, 2, 2)
+    assert first == draw_requests(1, ["man", "woman"], 3, 2, 2)          # the same seed, the same draw
+    assert first != draw_requests(2, ["man", "woman"], 3, 2, 2)
+    for draw in first:
+        if draw.skill == "jump":
+            x, y, t = draw.values
+            lo, hi = JUMP_FORWARD[draw.character]
+            assert lo <= x <= hi and abs(y) <= JUMP_LATERAL and JUMP_AIR_TIME[0] <= t <= JUMP_AIR_TIME[1]
+        else:
+            lo, hi = leap_height_range(draw.character) if draw.skill == "leap" else broad_range(draw.character)
+            assert lo <= draw.values[0] <= hi
+
+
+def test_unknown_character_is_refused_in_one_line():
+    with pytest.raises(Exception, match="character 'child'"):
+        draw_requests(1, ["child"], 1, 0, 0)
+
+
+def test_report_prints_measured_lines(tmp_path, capsys):
+    out = tmp_path / "random.md"
+    assert random_requests.main(["--seed", "5", "--jumps", "1", "--leaps", "2", "--broad", "1",
+                                 "--characters", "man", "--budget", "2", "--workers", "1",
+                                 "--out", str(out)]) == 0
+    printed = capsys.readouterr().out
+    lines = [line for line in printed.splitlines() if line.startswith("man ")]
+    assert len(lines) == 4
+    assert sum("rose " in line for line in lines) == 2 and sum("travelled " in line for line in lines) == 1
+    jump = next(line for line in lines if "jump to" in line)
+    assert re.search(r"landed at \(-?\d+\.\d{3}, [+-]\d+\.\d{3}\) m, \d+\.\d cm off, air \d\.\d{3} s", jump)
+    assert "planned 2 trials" in jump                     # unplanned: planned into the temporary store first
+    assert all(re.search(r"(PASS|MISS) ", line) for line in lines)
+    assert "| leap | man | " in printed and "| broad | man | " in printed
+    assert "--seed 5" in out.read_text()
+
+
+def test_bad_budget_is_refused(capsys):
+    with pytest.raises(SystemExit):
+        random_requests.main(["--seed", "1", "--budget", "0"])
+    assert "--budget=0: must be at least 1" in capsys.readouterr().err
+
+
+def test_the_cli_runs_it_as_report_random(tmp_path):
+    import subprocess
+    import sys
+    from pathlib import Path
+    out = tmp_path / "random.md"
+    done = subprocess.run([sys.executable, "-m", "sim_core", "report", "random", "--seed", "3", "--jumps", "0",
+                           "--leaps", "1", "--broad", "0", "--characters", "woman", "--workers", "1",
+                           "--out", str(out)], capture_output=True, text=True,
+                          cwd=Path(random_requests.__file__).parents[1], timeout=120)
+    assert done.returncode == 0, done.stderr
+    assert re.search(r"woman leap \d\.\d{3} m +(PASS|MISS) +rose \d\.\d{3} m", done.stdout)
+    assert out.exists()
