@@ -51,7 +51,7 @@ class EditLog:
 def applied_forces(data) -> np.ndarray:
     """The one array through which a push acts (world-frame force and torque at each body's COM;
     sim_core.perturbation's pushes write it through the log)."""
-    return data.xfrc_applied
+    return data.xfrc_applied          # written only by the logged pushes (sim_core.perturbation)
 
 
 def resolve_field(model, data, field: str) -> np.ndarray:
