@@ -210,22 +210,32 @@ def channels(frames: np.ndarray, basis: np.ndarray, names: list[str], parents: l
     return BoneChannels(frames, list(names), basis[:, 0, :3, 3].copy(), rotations, slip)
 
 
-def bake_channels(trajectory_arrays: dict, rest: np.ndarray, names: list[str], parents: list[int],
-                  fps: float, start_frame: int = 1, duration: float | None = None) -> BoneChannels:
-    """The whole pipeline: trajectory arrays + the armature's rest matrices -> F-curve channels.
-
-    ``names``/``parents``/``rest`` describe the armature's bones; every bone must be a body of
-    the trajectory (matched by name, so the order of bones and bodies need not agree)."""
+def frame_poses(trajectory_arrays: dict, names: list[str], fps: float, start_frame: int = 1,
+                duration: float | None = None, missing: str = "bodies not in the trajectory"):
+    """(frames, positions (F, B, 3), quats (F, B, 4)): the named bodies' recorded world poses
+    resampled at the scene's frames. A name the trajectory lacks is a one-line error that
+    starts with ``missing``."""
     body_names = [str(n) for n in trajectory_arrays["body_names"]]
-    missing = [n for n in names if n not in body_names]
-    if missing:
-        raise ValueError(f"bones without a simulated body: {', '.join(missing)}")
+    absent = [n for n in names if n not in body_names]
+    if absent:
+        raise ValueError(f"{missing}: {', '.join(absent)}")
     order = [body_names.index(n) for n in names]
     times = np.asarray(trajectory_arrays["time"], float)
     times = times - times[0]
     span = float(times[-1]) if duration is None else min(float(duration), float(times[-1]))
     frames, at = frame_times(span, fps, start_frame)
     pos, quat = resample(times, trajectory_arrays["body_pos"][:, order], trajectory_arrays["body_quat"][:, order], at)
+    return frames, pos, quat
+
+
+def bake_channels(trajectory_arrays: dict, rest: np.ndarray, names: list[str], parents: list[int],
+                  fps: float, start_frame: int = 1, duration: float | None = None) -> BoneChannels:
+    """The whole pipeline: trajectory arrays + the armature's rest matrices -> F-curve channels.
+
+    ``names``/``parents``/``rest`` describe the armature's bones; every bone must be a body of
+    the trajectory (matched by name, so the order of bones and bodies need not agree)."""
+    frames, pos, quat = frame_poses(trajectory_arrays, names, fps, start_frame, duration,
+                                    missing="bones without a simulated body")
     pose = bone_pose_matrices(pos, quat, rest)
     return channels(frames, basis_from_pose(pose, rest, parents), names, parents)
 
