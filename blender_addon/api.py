@@ -120,6 +120,7 @@ def bake_result(context, obj, trajectory, start_frame: int | None = None, fit_sc
     start = scene.frame_start if start_frame is None else int(start_frame)
     action = bake.bake_trajectory(obj, trajectory, fps=fps, start_frame=start)
     scenery.add_scenery(context, obj, trajectory)
+    bake.bake_moving_props(context, obj, trajectory, fps=fps, start_frame=start)
     if fit_scene_range:
         scene.frame_start = start
         scene.frame_end = int(round(action.frame_range[1]))

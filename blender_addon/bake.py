@@ -10,9 +10,11 @@ from __future__ import annotations
 import json
 
 import bpy
+import mujoco
 import numpy as np
 
 from . import compat
+from .core import prop_motion
 from .core.bake_math import BoneChannels, bake_channels
 from .core.simcore import sim
 from .rig import RESULT_KEY, RigError, bone_parents, rest_matrices
@@ -39,7 +41,8 @@ def action_name(behaviour: str, params: dict, schema) -> str:
 
 def channels_for(obj: bpy.types.Object, trajectory, fps: float, start_frame: int,
                  duration: float | None = None) -> BoneChannels:
-    names = [str(n) for n in trajectory.arrays["body_names"]]
+    props = set(moving_prop_bodies(trajectory))           # baked as their own objects
+    names = [str(n) for n in trajectory.arrays["body_names"] if str(n) not in props]
     bones = obj.data.bones
     for n in names:
         parent = bones[n].parent
@@ -49,22 +52,28 @@ def channels_for(obj: bpy.types.Object, trajectory, fps: float, start_frame: int
                          fps=fps, start_frame=start_frame, duration=duration)
 
 
+def fill_fcurves(fcurves: list, frames: np.ndarray, values: list[np.ndarray]) -> None:
+    """One linear key per frame on each (empty) F-curve, in bulk: one ``keyframe_points.add`` and
+    ``foreach_set`` per curve (a ``keyframe_insert`` loop is 36-58x slower, docs/blender.md)."""
+    n = len(frames)
+    co = np.empty(2 * n, dtype=np.float32)
+    co[0::2] = frames
+    linear = np.full(n, compat.LINEAR, dtype=np.int32)
+    for fc, v in zip(fcurves, values):
+        co[1::2] = v
+        points = fc.keyframe_points
+        points.add(n)
+        points.foreach_set("co", co)
+        points.foreach_set("interpolation", linear)
+        fc.update()
+
+
 def write_action(obj: bpy.types.Object, ch: BoneChannels, name: str, meta: dict) -> bpy.types.Action:
     """Create the action, fill every F-curve in bulk, then stash the old action and assign."""
     curves = list(ch.fcurve_values())
     action, fcurves, slot = compat.new_action(obj, name, [(path, i, bone) for path, i, bone, _ in curves])
     try:
-        n = len(ch.frames)
-        co = np.empty(2 * n, dtype=np.float32)
-        co[0::2] = ch.frames
-        linear = np.full(n, compat.LINEAR, dtype=np.int32)
-        for fc, (_, _, _, values) in zip(fcurves, curves):
-            co[1::2] = values
-            points = fc.keyframe_points
-            points.add(n)
-            points.foreach_set("co", co)
-            points.foreach_set("interpolation", linear)
-            fc.update()
+        fill_fcurves(fcurves, ch.frames, [values for _, _, _, values in curves])
         action[ACTION_KEY] = json.dumps(meta)
         action.use_fake_user = False
         for pb in obj.pose.bones:
@@ -95,3 +104,52 @@ def bake_trajectory(obj: bpy.types.Object, trajectory, fps: float, start_frame: 
 
 def scene_fps(scene) -> float:
     return scene.render.fps / scene.render.fps_base
+
+
+PROP_OBJECT = "SimAthletics {}"         # a moving prop body's object, e.g. "SimAthletics bicycle_frame"
+
+
+def moving_prop_bodies(trajectory) -> list[str]:
+    """The bodies of the run's moving props that bake as objects: the bicycle's five, if it rode."""
+    if not trajectory.meta.get("world", {}).get("bicycle"):
+        return []
+    n = sim("world.bicycle").NAMES
+    return [n[k] for k in ("frame", "fork", "front", "rear", "crank")]
+
+
+def bake_moving_props(context, armature: bpy.types.Object, trajectory, fps: float, start_frame: int = 1) -> list:
+    """Each moving prop body as its own object (a simple mesh from its geoms), parented to the
+    armature object (so it moves with the rider's placement) and keyed on every frame from the
+    trajectory's recorded body poses (``core.prop_motion``). An existing object of that name is reused (the user
+    may have restyled it) and gets the new action. Returns the objects."""
+    names = moving_prop_bodies(trajectory)
+    if not names:
+        return []
+    model = mujoco.MjModel.from_xml_string(trajectory.meta["model_xml"])
+    keys = prop_motion.prop_keys(trajectory.arrays, names, fps, start_frame)
+    objects = []
+    for b, name in enumerate(keys.names):
+        label = PROP_OBJECT.format(name)
+        obj = bpy.data.objects.get(label)
+        if obj is None:
+            verts, faces = prop_motion.body_mesh(model, model.body(name).id)
+            mesh = bpy.data.meshes.new(label)
+            mesh.from_pydata([tuple(v) for v in verts], [], faces)
+            mesh.update()
+            obj = bpy.data.objects.new(label, mesh)
+            context.scene.collection.objects.link(obj)
+        obj.parent = armature
+        obj.matrix_parent_inverse.identity()
+        obj.rotation_mode = "QUATERNION"
+        channels = [("location", i, name) for i in range(3)] + [("rotation_quaternion", i, name) for i in range(4)]
+        action, fcurves, slot = compat.new_action(obj, f"{label} {trajectory.meta.get('behaviour', '')}".strip(),
+                                                  channels)
+        try:
+            fill_fcurves(fcurves, keys.frames, [keys.location[:, b, i] for i in range(3)]
+                         + [keys.rotation[:, b, i] for i in range(4)])
+            compat.assign_action(obj, action, slot)
+        except BaseException:
+            bpy.data.actions.remove(action)
+            raise
+        objects.append(obj)
+    return objects
