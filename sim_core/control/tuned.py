@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import argparse
 
+from .. import tuned
 from ..errors import ParameterError
 
 
@@ -73,3 +74,13 @@ def kept_message(found: bool, succeeded: bool, drift_goal: float, had_row: bool)
         return "written to the table"
     why = (f"a found one needs a flight drift below {100 * drift_goal:.1f} %" if succeeded else "none succeeded")
     return f"not kept ({why}); " + ("the old row stays" if had_row else "recorded as not found")
+
+
+def keep_search(table: str, character: str, section: str, stored: dict, key: dict, found: bool, row: dict,
+                best: str, header: dict, directory=None) -> None:
+    """A calibration's last step: the search's ``row`` merged into ``stored[section]`` and its
+    not-found records for the entry ``key`` (merge_search), and the table written whole through
+    the store, with ``header`` (script, duration) first, into ``directory`` (None: the shipped one)."""
+    rows, missing = merge_search(stored[section], stored.get("not_found", []), key, found, row, best)
+    tuned.save(table, character, {**header, section: rows, "not_found": missing},
+               strengths=sorted({e["strength"] for e in rows + missing}), directory=directory)

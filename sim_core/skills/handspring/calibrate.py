@@ -45,8 +45,7 @@ from pathlib import Path
 ROOT = Path.cwd()                   # docs are written under the folder it runs in (the checkout)
 
 from .behaviour import HAND_SETTINGS, OLD_ROW, SETTINGS, Handspring, load_table
-from ...control.tuned import kept_message, merge_search, names_option, searched_and_fixed
-from ... import tuned
+from ...control.tuned import keep_search, kept_message, names_option, searched_and_fixed
 from ...simulate import RunRequest, run
 from ...tuning import Space, StopAfterFound, executor_for, minimize
 
@@ -186,14 +185,11 @@ def main(argv=None) -> None:
     with executor_for(args.workers) as executor:
         s, settings, m = search(args.character, args.strength, budget, args.population, args.seed, start,
                                 executor, args.verbose, args.spread, args.names, args.method, args.refine)
-    rows, missing = merge_search(
-        table["handsprings"], table.get("not_found", []), {"strength": args.strength}, found(m),
-        {"settings": settings, "score": round(s, 4), "measured": m},
-        f"{m['outcome']}, rotation {m['rotation']:.2f} rad ({m['rotation_before_fall']:.2f} before falling), "
-        f"angular momentum drift in flight {100 * (m['angular_momentum_drift'] or 0):.2f} %")
-    tuned.save("handspring", args.character, {"script": "python -m sim_core calibrate handspring", "duration": DURATION,
-                                              "handsprings": rows, "not_found": missing},
-               strengths=sorted({e["strength"] for e in rows + missing}), directory=args.tables)
+    keep_search("handspring", args.character, "handsprings", table, {"strength": args.strength}, found(m),
+                {"settings": settings, "score": round(s, 4), "measured": m},
+                f"{m['outcome']}, rotation {m['rotation']:.2f} rad ({m['rotation_before_fall']:.2f} before falling), "
+                f"angular momentum drift in flight {100 * (m['angular_momentum_drift'] or 0):.2f} %",
+                {"script": "python -m sim_core calibrate handspring", "duration": DURATION}, args.tables)
     kept = kept_message(found(m), m["outcome"] == "success", DRIFT_GOAL, bool(old))
     print(f"{args.character} ({args.strength}): {m['outcome']}, drift {100 * (m['angular_momentum_drift'] or 0):.2f} % "
           f"after {time.time() - started:.0f} s - {kept}")

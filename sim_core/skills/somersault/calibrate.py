@@ -50,8 +50,7 @@ ROOT = Path.cwd()                   # docs are written under the folder it runs 
 from ...control.leap import LANDING_SLIDE_LIMIT
 from .behaviour import DIRECTIONS, LANDING_SETTINGS, OLD_ROW, SETTINGS, load_table
 from ...control.tumble import snap_damping
-from ...control.tuned import kept_message, merge_search, names_option, searched_and_fixed
-from ... import tuned
+from ...control.tuned import keep_search, kept_message, names_option, searched_and_fixed
 from ...simulate import RunRequest, run
 from ...tuning import Space, SerialExecutor, StopAfterFound, executor_for, minimize
 
@@ -218,15 +217,13 @@ def calibrate(args, budget: int, executor) -> None:
                 score, settings, m = search(character, direction, strength, budget, args.population,
                                             args.seed, start, args.verbose, executor, args.names, args.method,
                                             args.refine)
-                rows, missing = merge_search(
-                    table["somersaults"], table.get("not_found", []), {"direction": direction, "strength": strength},
+                keep_search(
+                    "somersaults", character, "somersaults", table, {"direction": direction, "strength": strength},
                     found(m), {"settings": settings, "score": round(score, 4), "measured": m},
                     f"{m['outcome']}, angular momentum drift in flight {100 * (m['angular_momentum_drift'] or 0):.2f} %, "
                     f"rotation {m['rotation']:.2f} rad, flight rotation {m['flight_rotation'] or 0:.2f} rad, take-off "
-                    f"angular momentum {m['liftoff_angular_momentum'] or 0:.1f} kg m^2/s")
-                tuned.save("somersaults", character, {"script": "python -m sim_core calibrate somersault", "duration": DURATION,
-                                                      "somersaults": rows, "not_found": missing},
-                           strengths=sorted({e["strength"] for e in rows + missing}), directory=args.tables)
+                    f"angular momentum {m['liftoff_angular_momentum'] or 0:.1f} kg m^2/s",
+                    {"script": "python -m sim_core calibrate somersault", "duration": DURATION}, args.tables)
                 kept = kept_message(found(m), m["outcome"] == "success", DRIFT_GOAL, bool(old))
                 print(f"{character} {direction} ({strength}): {m['outcome']}, drift {100 * (m['angular_momentum_drift'] or 0):.2f} % "
                       f"after {time.time() - started:.0f} s - {kept}")
