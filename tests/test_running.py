@@ -14,7 +14,7 @@ from sim_core.character.model import compile_model, set_standing_pose
 from sim_core.character.spec import load_character
 from sim_core.skills.running.behaviour import Running, SpeedTable
 from sim_core.skills.running.leg import RunnerLeg
-from sim_core.skills.running.path import PathFollower, path_deviation, turn_path
+from sim_core.control.path import PathFollower, path_deviation, turn_path
 from sim_core.errors import ParameterError
 from sim_core.gait import HUMAN_FIG12, STEADY_RUN, compare_with_human
 from sim_core.simulate import RunRequest, largest_difference, replay, run

@@ -175,7 +175,7 @@ ALLOWED = {
                                               "LANDING_SKID_LIMIT", "UNCOVERED_STEP")} | {"UP": "definition"},
     "skills.running.behaviour": {n: "definition" for n in ("FLIGHT", "LOADING", "HEEL", "HEEL_TOE", "TOE", "UNLOADING", "START", "TUNED")}
                | {"SCHEDULED": "search"},
-    "skills.running.path": {n: "criterion" for n in ("MIN_SEGMENT", "MIN_LENGTH", "MAX_POINTS", "MIN_TURN_RADIUS")}
+    "control.path": {n: "criterion" for n in ("MIN_SEGMENT", "MIN_LENGTH", "MAX_POINTS", "MIN_TURN_RADIUS")}
                | {n: "definition" for n in ("TURN_RUN_OUT", "FIGURE_EIGHT_LAPS", "CIRCLE_LAPS")},
     "skills.somersault.behaviour": {"TUCK": "definition", "ROTATION_TOLERANCE": "criterion"},
     "skills.jump_to_target.behaviour": {n: "search" for n in ("TAKEOFF_COM", "TOUCHDOWN_COM", "WINDUP_OVERHEAD", "KNOB_DEFAULTS",
@@ -187,7 +187,9 @@ ALLOWED = {
     # the bicycle's inverse-kinematics solver settings (numerics, not control) and its judging threshold
     "skills.bicycle.mount": {n: "definition" for n in ("IK_DAMPING", "IK_POSTURE_WEIGHT", "IK_ITERATIONS",
                                                        "IK_ITERATIONS_PER_TICK", "IK_TOLERANCE")},
-    "skills.bicycle.assess": {"HEADING_TOLERANCE_DEG": "criterion"},
+    "skills.bicycle.assess": {n: "criterion" for n in ("HEADING_TOLERANCE_DEG", "SEGMENT_TAIL", "COAST_SETTLE", "HILL_SETTLE")},
+    "skills.bicycle.behaviour": {"MIN_LOOKAHEAD_SPEED": "definition"},
+    "skills.bicycle.course": {"SLALOM_POINT_SPACING": "definition", "RUN_OUT": "definition"},
 }
 
 

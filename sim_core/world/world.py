@@ -46,6 +46,8 @@ class World:
     vault_table: tuple = ()                    # (x, y, height, length, width) m: a vaulting table or horse
     landing_mat: tuple = ()                    # (x, y, length, width, thickness) m: a mat softer than the floor
                                                # (sim_core.world.apparatus: figures, checks and builders)
+    hill: tuple = ()                           # (start x, grade, climb, top, descent) m: a hill across +X
+                                               # (sim_core.world.hill), () = none
 
     @property
     def ramp_time(self) -> float:
@@ -66,7 +68,8 @@ class World:
                 "platform": self.platform, "platform_edge": self.platform_edge,
                 "boxes": [list(b) for b in self.boxes], "floor": self.floor,
                 **({"bicycle": self.bicycle.to_dict()} if self.bicycle else {}),
-                **{name: list(getattr(self, name)) for name in APPARATUS_FIELDS if getattr(self, name)}}
+                **{name: list(getattr(self, name)) for name in APPARATUS_FIELDS if getattr(self, name)},
+                **({"hill": list(self.hill)} if self.hill else {})}
 
 
 def gravity_for_slope(slope: float, axis: str) -> np.ndarray:

@@ -7,11 +7,16 @@ import math
 import mujoco
 import numpy as np
 
+from ...control.path import path_deviation
 from ...world.bicycle import NAMES, WHEEL_BODIES, WHEEL_RADIUS, frame_state
+from ...world.hill import hill_height
 
 
 HEADING_TOLERANCE_DEG = 5.0
 FIRST_FORK_MOTION = math.radians(1.0)   # rad: the fork's first move counts from this far
+SEGMENT_TAIL = 5.0          # criterion: s, the end of each speed step over which its mean error is judged
+COAST_SETTLE = 1.0          # criterion: s after the crank stops being driven before the decay is fitted
+HILL_SETTLE = 5.0           # criterion: m into the climb or the descent before its speed is judged
 
 
 def attachment_gaps(model: mujoco.MjModel, qpos: np.ndarray) -> np.ndarray:
@@ -64,7 +69,7 @@ def ride_metrics(trajectory) -> dict:
     rear = model.jnt_qposadr[model.joint(NAMES["rear_spin"]).id]
     stretch = gear * a["qpos"][:end, crank] - a["qpos"][:end, rear]
     crank_rate = a["qvel"][:end, model.jnt_dofadr[model.joint(NAMES["crank_spin"]).id]]
-    return {
+    metrics = {
         "fell": fall_frame is not None,
         "mean_speed_last_5s": float(speed[last5].mean()),
         "heading_within_5deg_from": settled,
@@ -80,3 +85,86 @@ def ride_metrics(trajectory) -> dict:
         "final_heading_deg": float(np.degrees(yaw[end - 1])),
         "distance": float(np.linalg.norm(a["qpos"][end - 1, q:q + 2] - a["qpos"][0, q:q + 2])),
     }
+    from .course import course_for
+    course = course_for(meta["params"])
+    xy = a["qpos"][:end, q:q + 2] - a["qpos"][0, q:q + 2]          # from the start, as the course is given
+    metrics.update(course_metrics(course, t[:end], xy, speed[:end]))
+    metrics.update(pedal_force_range(model, trajectory, end))
+    return metrics
+
+
+def course_metrics(course, t: np.ndarray, xy: np.ndarray, speed: np.ndarray) -> dict:
+    """What each course is judged by: the path deviation and the gates passed, each speed step's
+    mean error over its last SEGMENT_TAIL s, the speeds on the hill's climb and descent, the
+    coasting decay's time constant and the straightness of ln v."""
+    out = {"course": course.name}
+    if course.path is not None:
+        deviation = path_deviation(course.path, xy)
+        out.update(path_deviation_mean=float(deviation.mean()), path_deviation_max=float(deviation.max()))
+    if len(course.gates):
+        from .course import gate_passes
+        passes = gate_passes(course.gates, course.gate_width, xy)
+        out.update(gates_passed=sum(p["passed"] for p in passes), gate_count=len(passes),
+                   gate_misses=[p["miss"] for p in passes])
+    steps = []
+    for k, (start, wanted) in enumerate(course.speeds):
+        stop = course.speeds[k + 1][0] if k + 1 < len(course.speeds) else float(t[-1])
+        tail = (t >= stop - SEGMENT_TAIL) & (t < stop)
+        if stop > start and tail.any():
+            error = float(np.abs(speed[tail] - wanted).mean() / wanted)
+            steps.append({"from": start, "speed": wanted, "mean": float(speed[tail].mean()), "mean_abs_error": error})
+    out["speed_steps"] = steps
+    if course.hill:
+        start, grade, climb, top, descent = course.hill
+        for name, low, high in (("climb", start, start + climb), ("descent", start + climb + top, start + climb + top + descent)):
+            on = (xy[:, 0] >= low + HILL_SETTLE) & (xy[:, 0] <= high)
+            if on.any():
+                wanted = course.speed_at(float(t[on][0]))
+                out[f"hill_{name}_mean_speed"] = float(speed[on].mean())
+                out[f"hill_{name}_worst_error"] = float(np.abs(speed[on] - wanted).max() / wanted)
+        out["hill_top_height"] = float(hill_height(course.hill, start + climb))
+    if course.coast_from is not None:
+        coasting = t >= course.coast_from + COAST_SETTLE
+        if coasting.sum() > 10 and (speed[coasting] > 0).all():      # criterion: enough samples to fit
+            slope, intercept = np.polyfit(t[coasting], np.log(speed[coasting]), 1)
+            residual = np.log(speed[coasting]) - (slope * t[coasting] + intercept)
+            total = np.log(speed[coasting]) - np.log(speed[coasting]).mean()
+            out.update(coast_time_constant=float(-1.0 / slope),
+                       coast_log_fit_r2=float(1.0 - residual @ residual / (total @ total)))
+    return out
+
+
+def pedal_force_range(model: mujoco.MjModel, trajectory, end: int) -> dict:
+    """The feet's attachment forces, recomputed from the recorded state and controls by
+    ``mj_forward`` (the soft constraint's force at that state): along each pedal's direction of
+    travel (N, the foot on the pedal; positive drives it forward) and vertically (the pedal on
+    the foot; negative: the pedal pulls the foot down, the attachment in tension, as a toe clip
+    holds a foot). A pull shows the attachment is two-sided (SEEDS-WAVE2 B2)."""
+    a = trajectory.arrays
+    control = a["control"]
+    data = mujoco.MjData(model)
+    crank_body = model.body(NAMES["crank"]).id
+    feet = {side: model.equality(f"attach_foot_{side}").id for side in "rl"}
+    tangential = {side: [] for side in feet}
+    vertical = {side: [] for side in feet}
+    for k in range(0, end, 2):                        # definition: every other frame (100 Hz) is enough
+        data.qpos[:], data.qvel[:] = a["qpos"][k], a["qvel"][k]
+        data.ctrl[:] = control[min(k, len(control) - 1)]
+        mujoco.mj_forward(model, data)
+        axle = data.xpos[crank_body]
+        axis = data.xmat[crank_body].reshape(3, 3)[:, 1]
+        for side, eq in feet.items():
+            rows = np.nonzero((data.efc_type == mujoco.mjtConstraint.mjCNSTR_EQUALITY) & (data.efc_id == eq))[0]
+            on_foot = data.efc_force[rows]                # the connect constraint's world-frame force on the rider's site
+            pedal = data.site_xpos[model.site(f"bicycle_pedal_{side}").id]
+            tangent = np.cross(axis, pedal - axle)
+            tangent /= np.linalg.norm(tangent)
+            tangential[side].append(float(-on_foot @ tangent))
+            vertical[side].append(float(on_foot[2]))
+    out = {}
+    for side in feet:
+        along, up = np.array(tangential[side]), np.array(vertical[side])
+        out[f"pedal_force_{side}_min"], out[f"pedal_force_{side}_max"] = float(along.min()), float(along.max())
+        out[f"pedal_pull_{side}_max"] = float(max(0.0, -up.min()))
+        out[f"pedal_pull_{side}_share"] = float((up < 0).mean())
+    return out

@@ -28,14 +28,17 @@ import mujoco
 import numpy as np
 
 from ...control.behaviour import Behaviour, register
-from ...schema import Parameter, Schema
+from ...control.path import MAX_POINTS, PathFollower, validate_path
+from ...schema import Parameter, Points, Schema
 from ...tuned import TableType, load, register as register_table
 from ...tuned.settings import SkillSchema, with_defaults
 from ...errors import ParameterError
 from ...world.bicycle import CRANK_LENGTH, DEFAULT_GEAR, NAMES, Bicycle, BicycleView
+from .course import COURSE, course_for
 from .laws import ankle_angle, crank_torque, fork_angle, pedal_forces
 from .mount import IK_ITERATIONS_PER_TICK, SitePairs, match_velocities, solve
 
+MIN_LOOKAHEAD_SPEED = 1.0           # definition: m/s, the speed below which the look-ahead distance stops shrinking
 MOUNT_CRANK_ANGLE = math.pi / 2      # the start's crank: right pedal forward, left back (horizontal)
 LEG_JOINTS = {"r": ("hip_r_y", "knee_r_y"), "l": ("hip_l_y", "knee_l_y")}
 ANKLE_JOINTS = {"r": "ankle_r_y", "l": "ankle_l_y"}
@@ -97,14 +100,37 @@ class Bicycling(Behaviour):
         Parameter("speed", "m/s", 4.0, 1.0, 8.0, "commanded forward speed (also the rolling start's)"),
         Parameter("heading", "rad", 0.0, -math.pi, math.pi, "commanded heading, counter-clockwise from the start's"),
         Parameter("gear", "1", DEFAULT_GEAR, 0.5, 5.0, "wheel turns per crank turn (fixed gear)"),
+        COURSE,
+        Parameter("turn_angle", "rad", math.pi / 2, -math.pi, math.pi, "turn: angle of the turn (left positive)"),
+        Parameter("turn_radius", "m", 15.0, 3.0, 100.0, "turn: radius of the turn"),
+        Parameter("turn_after", "m", 10.0, 2.0, 200.0, "turn, slalom: distance ridden straight before the turn or the gates"),
+        Parameter("gate_count", "count", 8, 1, 30, "slalom: number of gates"),
+        Parameter("gate_spacing", "m", 10.0, 4.0, 40.0, "slalom: distance along the course from one gate to the next"),
+        Parameter("gate_offset", "m", 1.0, 0.2, 3.0, "slalom: each gate's centre this far left, then right, of the start line"),
+        Parameter("gate_width", "m", 1.5, 0.5, 5.0, "slalom: distance between a gate's two poles"),
+        Parameter("step_time", "s", 15.0, 2.0, 100.0, "speed_steps: time of each step (speed, then second_speed, then third_speed)"),
+        Parameter("second_speed", "m/s", 5.0, 1.0, 8.0, "speed_steps: the speed commanded from step_time"),
+        Parameter("third_speed", "m/s", 4.0, 1.0, 8.0, "speed_steps: the speed commanded from twice step_time"),
+        Parameter("hill_grade", "1", 0.05, 0.0, 0.12, "hill: rise over run of the climb and the descent (0.05 = 5 %)"),
+        Parameter("hill_after", "m", 10.0, 0.0, 200.0, "hill: flat ground before the climb"),
+        Parameter("hill_length", "m", 40.0, 5.0, 300.0, "hill: length (along the ground) of the climb and of the descent"),
+        Parameter("hill_top", "m", 10.0, 1.0, 100.0, "hill: length of its flat top"),
+        Parameter("start_speed", "m/s", 1.5, 1.0, 8.0, "start: the rolling start's speed, from which the rider pedals up to speed"),
+        Parameter("coast_after", "s", 2.0, 0.0, 100.0, "coast: the time from which the rider stops driving the crank"),
+        Points("path", "the path to ride along, [x, y] points in metres from the start (in Blender: a curve "
+               "object); given, it replaces the course's path", clean=lambda points: validate_path(points).tolist(),
+               max_points=MAX_POINTS),
+        Parameter("lookahead_time", "s", 0.875, 0.25, 3.0,
+                  "path following: the rider heads for the point this many seconds ahead along the path at his speed"),
         settings=BICYCLE_SETTINGS,
     )
     default_duration = 10.0
 
     @classmethod
     def scene(cls, params, world, character=None):
-        """The requested world with the bicycle (at the origin facing +X, its gear, the rider attached)."""
-        return dataclasses.replace(world, bicycle=Bicycle(gear=params["gear"], rider=""))
+        """The requested world with the bicycle (at the origin facing +X, its gear, the rider
+        attached) and the course's hill, if it has one."""
+        return dataclasses.replace(world, bicycle=Bicycle(gear=params["gear"], rider=""), hill=course_for(params).hill)
 
     @classmethod
     def start_state(cls, params, model, data, character):
@@ -129,11 +155,12 @@ class Bicycling(Behaviour):
         every = list(range(len(pairs.names)))
         solve(model, data, pairs, every, rider_dofs, reference, iterations=300)   # definition: IK solver iterations to mount
         gaps = solve(model, data, pairs, every, rider_dofs, data.qpos.copy(), iterations=50, posture_weight=0.0)  # definition: IK iterations
-        bike.rolling_start(data, params["speed"])
+        course = course_for(params)
+        bike.rolling_start(data, course.start_speed)
         dof = int(root.dofadr[0])
         data.qvel[dof:dof + 3] = data.qvel[bike.free_dof:bike.free_dof + 3]
         match_velocities(model, data, pairs, rider_dofs)
-        return {"mounted": True, "rolling_speed": params["speed"], "crank_angle": MOUNT_CRANK_ANGLE,
+        return {"mounted": True, "rolling_speed": course.start_speed, "crank_angle": MOUNT_CRANK_ANGLE,
                 "attachment_gaps": {n: float(g) for n, g in zip(pairs.names, gaps)}}
 
     def check_feasible(self):
@@ -152,6 +179,11 @@ class Bicycling(Behaviour):
         self.pairs = SitePairs(model, ctx.actor.prefix)
         self.scratch = mujoco.MjData(model)
         self.desired_yaw = self.params["heading"] + self.bike.state(ctx.data)["yaw"]
+        self.course = course_for(self.params)
+        self.follower = None
+        if self.course.path is not None:      # the path is from where the bicycle starts
+            start = ctx.data.qpos[self.bike.free_qpos:self.bike.free_qpos + 2]
+            self.follower = PathFollower(self.course.path + start, self.params["lookahead_time"] * self.params["speed"])
         self.leg_servos = {side: servos.indices(names) for side, names in LEG_JOINTS.items()}
         self.arm_servos = {side: servos.indices(names) for side, names in ARM_JOINTS.items()}
         self.ankle_servos = {side: servos.indices([name])[0] for side, name in ANKLE_JOINTS.items()}
@@ -171,9 +203,13 @@ class Bicycling(Behaviour):
         model, data = ctx.model, ctx.data
         state = bike.state(data)
         c = self.params
+        if self.follower is not None:      # pure pursuit: head for the point lookahead_time ahead
+            self.follower.lookahead = c["lookahead_time"] * max(state["speed"], MIN_LOOKAHEAD_SPEED)
+            self.desired_yaw = self.follower.heading(data.qpos[bike.free_qpos], data.qpos[bike.free_qpos + 1])
         scale = (c["reference_speed"] / max(state["speed"], 1.0)) ** 2
         fork = fork_angle(state["roll"], state["roll_rate"], state["yaw"], state["yaw_rate"], self.desired_yaw,
-                          c["roll_gain"] * scale, c["roll_rate_gain"] * scale, c["yaw_gain"], c["yaw_rate_gain"])
+                          c["roll_gain"] * scale, c["roll_rate_gain"] * scale, c["yaw_gain"] * min(scale, 1.0),
+                          c["yaw_rate_gain"] * min(scale, 1.0))
         self.fork_command = min(max(fork, -c["max_fork_angle"]), c["max_fork_angle"])
         # where the limbs should be: the feet on the pedals as they are, the hands on a fork at its command
         scratch = self.scratch
@@ -192,7 +228,8 @@ class Bicycling(Behaviour):
         for side, value in ankles.items():
             goal[self.ankle_servos[side]] = value
         # eqs. 7-10: pedal forces, through each leg's Jacobian to joint torques (servo offsets)
-        torque = crank_torque(state["speed"], c["speed"], c["speed_gain"])
+        course = self.course
+        torque = crank_torque(state["speed"], course.speed_at(t), c["speed_gain"]) if course.driving(t) else 0.0
         forces = dict(zip("rl", pedal_forces(torque, state["crank"], CRANK_LENGTH)))
         offset = np.zeros(len(goal))
         axle = data.xpos[bike.crank_body]

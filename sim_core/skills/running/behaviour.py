@@ -43,7 +43,7 @@ from ...ballistics import GRAVITY, time_to_fall_to
 from ...character.model import Placement
 from ...control.behaviour import Behaviour, ControlContext, register
 from .leg import RunnerLeg
-from .path import MAX_POINTS, PathFollower, circle_path, figure_eight_path, turn_path, validate_path
+from ...control.path import MAX_POINTS, PathFollower, circle_path, figure_eight_path, turn_path, validate_path
 from ...control.servo import hermite_scalar
 from ...schema import Choice, Parameter, Points, Schema
 from ...tuned import TableType, load, register as register_table, require_calibrated
@@ -341,7 +341,7 @@ class Running(Behaviour):
         commanded speed from the stand, and for a path the lateral deviation from it."""
         from ...analysis import standard_metrics
         from ...gait import gait_metrics, stride_attitude_variation
-        from .path import path_deviation
+        from ...control.path import path_deviation
         metrics = standard_metrics(trajectory)
         for key in ("stepped", "max_foot_slide", "com_outside_support_max", "com_inside_support_throughout",
                     "final_com_speed", "max_hand_below_knee"):

@@ -1,6 +1,6 @@
-"""Paths for the runner to follow: a polyline of points on the ground plane, steered along by
-pure pursuit (the facing direction points at a point a look-ahead distance further along the
-path), and the lean into the turn that its curvature asks for.
+"""Paths on the ground plane for a runner or a rider to follow: a polyline of points, steered
+along by pure pursuit (the heading points at a point a look-ahead distance further along the
+path).
 
 Built-in shapes (a 90-degree turn, a figure eight, a circle) are polylines too, so a path from
 a Blender curve object (its evaluated points) and a built-in one are followed by the same code.
@@ -11,7 +11,7 @@ import math
 
 import numpy as np
 
-from ...errors import ParameterError
+from ..errors import ParameterError
 
 MIN_SEGMENT = 0.05          # m: consecutive points closer than this are merged
 MIN_LENGTH = 2.0            # m: a path shorter than this cannot be run along

@@ -1,0 +1,129 @@
+"""A ride's course: where the bicycle is steered (a path, or a fixed heading), what speed is
+commanded when, whether the rider stops pedalling, and what the ground holds (a hill).
+
+Courses (the ``course`` parameter; a ``path`` given replaces the course's path):
+  * straight: hold ``heading`` at ``speed``;
+  * turn: straight for ``turn_after`` m, an arc of ``turn_radius`` turning by ``turn_angle``;
+  * slalom: ``gate_count`` gates ``gate_spacing`` m apart, alternately ``gate_offset`` m left and
+    right of the start line (the first to the left), ridden along a sine through their centres;
+  * speed_steps: ``speed`` until ``step_time``, ``second_speed`` until twice it, then ``third_speed``;
+  * hill: ``hill_after`` m of flat, a climb of ``hill_length`` m at ``hill_grade``, ``hill_top`` m
+    of flat top and a descent like the climb (the hill is a world prop, sim_core.world.hill);
+  * start: the rolling start is at ``start_speed``; the rider pedals up to ``speed``;
+  * coast: from ``coast_after`` s the rider stops driving the crank (the legs follow the
+    pedals, the steering goes on): the bicycle slows by its rolling resistance.
+
+A course that asks the bicycle to turn harder than ``MAX_LEAN`` of lean at its speed is refused
+before anything runs, naming the limit.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from ...ballistics import GRAVITY
+from ...control.path import turn_path, validate_path
+from ...errors import ParameterError
+from ...schema import Choice
+
+COURSES = ("straight", "turn", "slalom", "speed_steps", "hill", "start", "coast")
+COURSE = Choice("course", COURSES, "straight",
+                "what the ride does (docs/bicycle.md, courses): hold the heading; a turn; a slalom of gates; "
+                "speed steps; over a hill; a start from a slow roll; coasting")
+MAX_LEAN = math.radians(25.0)      # criterion: the steepest steady lean a course may ask for (v^2 / (g r) = tan)
+SLALOM_POINT_SPACING = 0.25        # definition: m between the points of the slalom's sine
+RUN_OUT = 60.0                     # definition: m of straight after a course's last feature (longer than a ride goes)
+
+
+@dataclass(frozen=True)
+class Course:
+    """What the controller asks for, from the request: ``path`` (N x 2, m from the start, or None
+    for a fixed heading), the commanded speed as steps ``speeds`` ((from time s, m/s), ...), the
+    time from which the crank is not driven (None: never), the start's rolling speed, the gates
+    ((x, y) centres, m) and ``hill`` (the World field, () for none)."""
+    name: str
+    path: np.ndarray | None
+    speeds: tuple
+    coast_from: float | None
+    start_speed: float
+    gates: np.ndarray
+    gate_width: float
+    hill: tuple
+
+    def speed_at(self, t: float) -> float:
+        speed = self.speeds[0][1]
+        for start, value in self.speeds:
+            if t >= start:
+                speed = value
+        return speed
+
+    def driving(self, t: float) -> bool:
+        return self.coast_from is None or t < self.coast_from
+
+
+def course_for(p: dict) -> Course:
+    """The course a request asks for (``p``: the validated parameters), refused if it turns
+    harder than MAX_LEAN allows at its fastest commanded speed."""
+    name = COURSE.option(p["course"])
+    speeds = ((0.0, p["speed"]),)
+    path, gates, hill, coast_from, start_speed = None, np.zeros((0, 2)), (), None, p["speed"]
+    if name == "turn":
+        path = turn_path(p["turn_angle"], p["turn_after"], p["turn_radius"], RUN_OUT)
+        _check_turn(p["speed"], p["turn_radius"], "turn_radius")
+    elif name == "slalom":
+        path, gates = slalom(p["gate_count"], p["gate_spacing"], p["gate_offset"], p["turn_after"])
+        radius = (p["gate_spacing"] / math.pi) ** 2 / p["gate_offset"]      # the sine's tightest radius
+        _check_turn(p["speed"], radius, "gate_spacing and gate_offset")
+    elif name == "speed_steps":
+        speeds = ((0.0, p["speed"]), (p["step_time"], p["second_speed"]), (2 * p["step_time"], p["third_speed"]))
+    elif name == "hill":
+        hill = (p["hill_after"], p["hill_grade"], p["hill_length"], p["hill_top"], p["hill_length"])
+    elif name == "start":
+        start_speed = p["start_speed"]
+    elif name == "coast":
+        coast_from = p["coast_after"]
+    if "path" in p:
+        path = np.asarray(p["path"], dtype=float)
+    return Course(name, path, speeds, coast_from, start_speed, gates, p["gate_width"], hill)
+
+
+def slalom(count: int, spacing: float, offset: float, lead: float) -> tuple[np.ndarray, np.ndarray]:
+    """The slalom's path and gate centres: straight along +X for ``lead`` m, then a sine of
+    half-period ``spacing`` and amplitude ``offset`` whose crests are the gates (the first to the
+    left), back to the start line half a spacing after the last gate, then straight on."""
+    count = int(count)
+    gates = np.array([[lead + spacing * (k + 0.5), offset * (1 if k % 2 == 0 else -1)] for k in range(count)])
+    end = lead + spacing * count
+    x = np.arange(lead, end, SLALOM_POINT_SPACING)
+    points = [[0.0, 0.0]] + [[xi, offset * math.sin(math.pi * (xi - lead) / spacing)] for xi in x]
+    points += [[end, 0.0], [end + RUN_OUT, 0.0]]
+    return validate_path(points), gates
+
+
+def _check_turn(speed: float, radius: float, names: str) -> None:
+    lean = math.atan(speed * speed / (GRAVITY * radius))
+    if lean > MAX_LEAN:
+        slowest = math.sqrt(GRAVITY * radius * math.tan(MAX_LEAN))
+        raise ParameterError(f"the course turns on a radius of {radius:.2f} m (from {names}), which at "
+                             f"speed {speed:g} m/s needs a lean of {math.degrees(lean):.1f} deg; at most "
+                             f"{math.degrees(MAX_LEAN):g} deg is ridden: slow to <= {slowest:.2f} m/s or "
+                             f"widen the turn to >= {speed * speed / (GRAVITY * math.tan(MAX_LEAN)):.2f} m")
+
+
+def gate_passes(gates: np.ndarray, width: float, xy: np.ndarray) -> list[dict]:
+    """Per gate: where the ride crossed the gate's line (x = the gate's x, the course runs along
+    +X) and whether that was between its poles (``width`` apart); a gate never reached is missed."""
+    out = []
+    for gx, gy in gates:
+        after = np.nonzero(xy[:, 0] >= gx)[0]
+        if len(after) == 0 or after[0] == 0:
+            out.append({"gate": [float(gx), float(gy)], "passed": False, "miss": None})
+            continue
+        k = after[0]
+        f = (gx - xy[k - 1, 0]) / (xy[k, 0] - xy[k - 1, 0])
+        y = xy[k - 1, 1] + f * (xy[k, 1] - xy[k - 1, 1])
+        out.append({"gate": [float(gx), float(gy)], "passed": bool(abs(y - gy) <= width / 2),
+                    "miss": float(y - gy)})
+    return out
