@@ -1,6 +1,7 @@
 """The simulated world's fixed objects in the Blender scene, so a baked skill is seen where it
 happened: a dive's platform and water surface, the boxes a jump lands on, starts from or clears,
-the ground below when a jump starts on a box, and a vault's springboard, table and landing mat. Objects are made once per scene and named
+the ground below when a jump starts on a box, a vault's springboard, table and landing mat, and a
+bicycle course's hill (its climb, top and descent). Objects are made once per scene and named
 ``SimAthletics platform`` / ``SimAthletics water`` / ``SimAthletics ground`` / ``SimAthletics box 0``...;
 an existing object of that name is reused, never replaced (the user may have moved or restyled
 it)."""
@@ -16,6 +17,8 @@ PLATFORM_NAME, WATER_NAME, GROUND_NAME = "SimAthletics platform", "SimAthletics 
 BOX_NAME = "SimAthletics box {}"
 APPARATUS_NAMES = {"springboard": "SimAthletics springboard", "vault_table": "SimAthletics vault table",
                    "landing_mat": "SimAthletics landing mat"}     # geom -> object (sim_core.world.apparatus)
+HILL_NAMES = {"hill_up": "SimAthletics hill climb", "hill_top": "SimAthletics hill top",
+              "hill_down": "SimAthletics hill descent"}              # geom -> object (sim_core.world.hill)
 
 
 def add_scenery(context, armature, trajectory) -> list:
@@ -32,10 +35,10 @@ def add_scenery(context, armature, trajectory) -> list:
         made.append(_box(context, GROUND_NAME, np.array([0.0, 0.0, floor - 0.005]),
                          np.array([20.0, 20.0, 0.005]), armature))
     platform = float(world.get("platform", 0.0) or 0.0)
-    if platform <= 0 and not any(name in world for name in APPARATUS_NAMES):
+    if platform <= 0 and not any(name in world for name in (*APPARATUS_NAMES, "hill")):
         return made
     model = mujoco.MjModel.from_xml_string(trajectory.meta["model_xml"])
-    made += _apparatus(context, armature, model)
+    made += _world_boxes(context, armature, model, {**APPARATUS_NAMES, **HILL_NAMES})
     if platform <= 0:
         return made
     ground = model.geom("ground").id
@@ -47,25 +50,29 @@ def add_scenery(context, armature, trajectory) -> list:
     return made
 
 
-def _apparatus(context, armature, model: mujoco.MjModel) -> list:
-    """The springboard, vaulting table and landing mat as boxes where the model puts them at
-    rest (the springboard's deck is shown still; its deflection is in the trajectory's qpos)."""
+def _world_boxes(context, armature, model: mujoco.MjModel, names: dict) -> list:
+    """The model's box geoms named in ``names`` (geom -> object) as boxes where the model puts
+    them at rest, turned as they are (a hill's ramps); the springboard's deck is shown still,
+    its deflection is in the trajectory's qpos."""
     data = mujoco.MjData(model)
     mujoco.mj_kinematics(model, data)
     made = []
-    for geom, name in APPARATUS_NAMES.items():
+    for geom, name in names.items():
         if mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_GEOM, geom) < 0 or name in bpy.data.objects:
             continue
         g = model.geom(geom).id
-        made.append(_box(context, name, data.geom_xpos[g], model.geom_size[g], armature))
+        made.append(_box(context, name, data.geom_xpos[g], model.geom_size[g], armature,
+                         data.geom_xmat[g].reshape(3, 3)))
     return made
 
 
-def _box(context, name: str, centre_sim: np.ndarray, half_size_sim: np.ndarray, armature):
-    """An axis-aligned box given in the simulation frame, placed in the armature's frame."""
+def _box(context, name: str, centre_sim: np.ndarray, half_size_sim: np.ndarray, armature, axes_sim=None):
+    """A box given in the simulation frame (its axes the columns of ``axes_sim``, default the
+    world's), placed in the armature's frame."""
     mesh = bpy.data.meshes.new(name)
     corners = np.array([[sx, sy, sz] for sx in (-1, 1) for sy in (-1, 1) for sz in (-1, 1)], dtype=float)
-    points = (centre_sim + corners * half_size_sim) @ SIM_TO_BLENDER.T
+    axes = np.eye(3) if axes_sim is None else np.asarray(axes_sim)
+    points = (centre_sim + (corners * half_size_sim) @ axes.T) @ SIM_TO_BLENDER.T
     faces = [(0, 1, 3, 2), (4, 6, 7, 5), (0, 4, 5, 1), (2, 3, 7, 6), (0, 2, 6, 4), (1, 5, 7, 3)]
     mesh.from_pydata([tuple(p) for p in points], [], faces)
     mesh.update()

@@ -187,8 +187,9 @@ ALLOWED = {
     # the bicycle's inverse-kinematics solver settings (numerics, not control) and its judging threshold
     "skills.bicycle.mount": {n: "definition" for n in ("IK_DAMPING", "IK_POSTURE_WEIGHT", "IK_ITERATIONS",
                                                        "IK_ITERATIONS_PER_TICK", "IK_TOLERANCE")},
-    "skills.bicycle.assess": {n: "criterion" for n in ("HEADING_TOLERANCE_DEG", "SEGMENT_TAIL", "COAST_SETTLE", "HILL_SETTLE")},
+    "skills.bicycle.assess": {n: "criterion" for n in ("HEADING_TOLERANCE_DEG", "SEGMENT_TAIL", "HILL_SETTLE")},
     "skills.bicycle.behaviour": {"MIN_LOOKAHEAD_SPEED": "definition"},
+    "skills.bicycle.steering": {"MIN_SCHEDULED_SPEED": "definition"},
     "skills.bicycle.course": {"SLALOM_POINT_SPACING": "definition", "RUN_OUT": "definition"},
 }
 

@@ -114,6 +114,30 @@ def test_a_curve_object_is_the_running_path(empty_scene):
     assert json.loads(arm[rig.RESULT_KEY])["params"]["path"] == params["path"]
 
 
+def test_a_curve_object_is_the_bicycle_path(empty_scene):
+    """The bicycle's path comes from a curve as the runner's does (the schema's Points kind), in
+    the rider's frame; the bake has the rider and the bicycle."""
+    context = empty_scene
+    bpy.ops.sim_athletics.add_character(character="man")
+    arm = context.view_layer.objects.active
+    data = bpy.data.curves.new("road", type="CURVE")
+    spline = data.splines.new("POLY")
+    points = [(0.0, 0.0, 0.0), (0.0, -20.0, 0.0), (10.0, -30.0, 0.0)]    # 20 m ahead (-Y), then ahead-left
+    spline.points.add(len(points) - 1)
+    for point, co in zip(spline.points, points):
+        point.co = (*co, 1.0)
+    curve = bpy.data.objects.new("road", data)
+    context.scene.collection.objects.link(curve)
+    context.view_layer.update()
+    context.scene.sim_athletics.params_bicycle.path = curve
+    s = operators.run_settings(context, behaviour="bicycle")
+    params = operators.with_scene_inputs(context, arm, s)
+    assert np.allclose(params["path"], [[0.0, 0.0], [20.0, 0.0], [30.0, 10.0]], atol=1e-6)
+    assert bpy.ops.sim_athletics.simulate_bake(behaviour="bicycle", duration=0.2) == {"FINISHED"}
+    assert json.loads(arm[rig.RESULT_KEY])["params"]["path"] == params["path"]
+    assert "SimAthletics bicycle_frame" in bpy.data.objects
+
+
 def test_plan_jump_cancelled_like_esc_ends_within_a_second_and_writes_nothing(empty_scene, tmp_path, monkeypatch):
     """The planning operator's job (what invoke starts), cancelled as its modal Esc does: the
     worker ends within 1 s, no plan is stored (user store or shipped table), no action is made."""

@@ -15,7 +15,6 @@ from ...world.hill import hill_height
 HEADING_TOLERANCE_DEG = 5.0
 FIRST_FORK_MOTION = math.radians(1.0)   # rad: the fork's first move counts from this far
 SEGMENT_TAIL = 5.0          # criterion: s, the end of each speed step over which its mean error is judged
-COAST_SETTLE = 1.0          # criterion: s after the crank stops being driven before the decay is fitted
 HILL_SETTLE = 5.0           # criterion: m into the climb or the descent before its speed is judged
 
 
@@ -43,6 +42,7 @@ def ride_metrics(trajectory) -> dict:
     wheels = [body_names.index(n) for n in WHEEL_BODIES]
     others = np.ones(len(body_names), dtype=bool)
     others[wheels] = False
+
     touching = a["ground_contact"][:, others].any(axis=1)
     fall_frame = int(np.argmax(touching)) if touching.any() else None
     free = model.joint(NAMES["free"])
@@ -88,15 +88,16 @@ def ride_metrics(trajectory) -> dict:
     from .course import course_for
     course = course_for(meta["params"])
     xy = a["qpos"][:end, q:q + 2] - a["qpos"][0, q:q + 2]          # from the start, as the course is given
-    metrics.update(course_metrics(course, t[:end], xy, speed[:end]))
+    metrics.update(course_metrics(course, t[:end], xy, speed[:end], crank_rate, gear))
     metrics.update(pedal_force_range(model, trajectory, end))
     return metrics
 
 
-def course_metrics(course, t: np.ndarray, xy: np.ndarray, speed: np.ndarray) -> dict:
+def course_metrics(course, t: np.ndarray, xy: np.ndarray, speed: np.ndarray, crank_rate: np.ndarray,
+                   gear: float) -> dict:
     """What each course is judged by: the path deviation and the gates passed, each speed step's
-    mean error over its last SEGMENT_TAIL s, the speeds on the hill's climb and descent, the
-    coasting decay's time constant and the straightness of ln v."""
+    mean error over its last SEGMENT_TAIL s, the speeds (and the cadence against v / (2 pi r g))
+    on the hill's climb and descent."""
     out = {"course": course.name}
     if course.path is not None:
         deviation = path_deviation(course.path, xy)
@@ -114,6 +115,7 @@ def course_metrics(course, t: np.ndarray, xy: np.ndarray, speed: np.ndarray) -> 
             error = float(np.abs(speed[tail] - wanted).mean() / wanted)
             steps.append({"from": start, "speed": wanted, "mean": float(speed[tail].mean()), "mean_abs_error": error})
     out["speed_steps"] = steps
+
     if course.hill:
         start, grade, climb, top, descent = course.hill
         for name, low, high in (("climb", start, start + climb), ("descent", start + climb + top, start + climb + top + descent)):
@@ -122,15 +124,9 @@ def course_metrics(course, t: np.ndarray, xy: np.ndarray, speed: np.ndarray) -> 
                 wanted = course.speed_at(float(t[on][0]))
                 out[f"hill_{name}_mean_speed"] = float(speed[on].mean())
                 out[f"hill_{name}_worst_error"] = float(np.abs(speed[on] - wanted).max() / wanted)
+                out[f"hill_{name}_cadence_hz"] = float(crank_rate[on].mean() / (2 * math.pi))
+                out[f"hill_{name}_cadence_expected_hz"] = float(speed[on].mean() / (2 * math.pi * WHEEL_RADIUS * gear))
         out["hill_top_height"] = float(hill_height(course.hill, start + climb))
-    if course.coast_from is not None:
-        coasting = t >= course.coast_from + COAST_SETTLE
-        if coasting.sum() > 10 and (speed[coasting] > 0).all():      # criterion: enough samples to fit
-            slope, intercept = np.polyfit(t[coasting], np.log(speed[coasting]), 1)
-            residual = np.log(speed[coasting]) - (slope * t[coasting] + intercept)
-            total = np.log(speed[coasting]) - np.log(speed[coasting]).mean()
-            out.update(coast_time_constant=float(-1.0 / slope),
-                       coast_log_fit_r2=float(1.0 - residual @ residual / (total @ total)))
     return out
 
 

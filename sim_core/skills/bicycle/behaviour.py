@@ -35,6 +35,7 @@ from ...tuned.settings import SkillSchema, with_defaults
 from ...errors import ParameterError
 from ...world.bicycle import CRANK_LENGTH, DEFAULT_GEAR, NAMES, Bicycle, BicycleView
 from .course import COURSE, course_for
+from .steering import steering_gains
 from .laws import ankle_angle, crank_torque, fork_angle, pedal_forces
 from .mount import IK_ITERATIONS_PER_TICK, SitePairs, match_velocities, solve
 
@@ -50,11 +51,11 @@ ARM_JOINTS = {"r": ("shoulder_r_x", "shoulder_r_y", "shoulder_r_z", "elbow_r_y",
 # defaults below are replaced by them); each range is a sanity bound a table row is checked against
 BICYCLE_RANGES = Schema(
     Parameter("speed_gain", "N m s/m", 0.0, 0.0, 5000.0, "eq. 7 k_v: crank torque per m/s of speed error"),
-    Parameter("roll_gain", "1", 0.0, 0.0, 20.0, "eq. 11 k_alpha at reference_speed (scaled by (v_ref / v)^2)"),
-    Parameter("roll_rate_gain", "s", 0.0, 0.0, 5.0, "eq. 11 k_alpha-dot at reference_speed (scaled likewise)"),
-    Parameter("yaw_gain", "1", 0.0, 0.0, 10.0, "eq. 11 k_beta"),
-    Parameter("yaw_rate_gain", "s", 0.0, 0.0, 5.0, "eq. 11 k_beta-dot"),
-    Parameter("reference_speed", "m/s", 0.5, 0.5, 10.0, "speed at which the roll gains are the table's"),
+    Parameter("roll_gain", "1", 0.0, 0.0, 20.0, "eq. 11 k_alpha at reference_speed"),
+    Parameter("roll_rate_gain", "s", 0.0, 0.0, 5.0, "eq. 11 k_alpha-dot at reference_speed"),
+    Parameter("yaw_gain", "1", 0.0, 0.0, 10.0, "eq. 11 k_beta at reference_speed"),
+    Parameter("yaw_rate_gain", "s", 0.0, 0.0, 5.0, "eq. 11 k_beta-dot at reference_speed"),
+    Parameter("reference_speed", "m/s", 0.5, 0.5, 10.0, "speed at which the four steering gains are these (steering.py)"),
     Parameter("max_fork_angle", "rad", 0.0, 0.0, 1.0, "limit of the commanded fork angle"),
     Parameter("ankle_mean", "rad", -0.7, -0.7, 0.87, "ankle curve: mean plantarflexion over a crank turn"),
     Parameter("ankle_swing", "rad", 0.0, 0.0, 0.5, "ankle curve: half its range"),
@@ -70,12 +71,21 @@ BICYCLE_RANGES = Schema(
 
 def _bicycle_rows(body: dict):
     yield "constants", body["constants"]
+    for k, row in enumerate(body.get("steering_schedule", [])):
+        yield f"steering_schedule row {k}", row
 
 
 def bicycle_constants(character: str = "any") -> dict:
     """The constants of the bicycling laws: bicycle_any.json's for every rider (no per-character
     table yet)."""
     return load("bicycle", "any")["constants"]
+
+
+def steering_schedule() -> list[dict] | None:
+    """Eq. 11's gains searched at speeds (rows with reference_speed and the four gains, by
+    speed), or None before ``calibrate bicycle`` has written them (steering.py)."""
+    rows = load("bicycle", "any").get("steering_schedule")
+    return sorted(rows, key=lambda row: row["reference_speed"]) if rows else None
 
 
 BICYCLE_TABLE = register_table(TableType("bicycle", BICYCLE_RANGES, _bicycle_rows, (bicycle_constants,)))
@@ -116,12 +126,13 @@ class Bicycling(Behaviour):
         Parameter("hill_length", "m", 40.0, 5.0, 300.0, "hill: length (along the ground) of the climb and of the descent"),
         Parameter("hill_top", "m", 10.0, 1.0, 100.0, "hill: length of its flat top"),
         Parameter("start_speed", "m/s", 1.5, 1.0, 8.0, "start: the rolling start's speed, from which the rider pedals up to speed"),
-        Parameter("coast_after", "s", 2.0, 0.0, 100.0, "coast: the time from which the rider stops driving the crank"),
         Points("path", "the path to ride along, [x, y] points in metres from the start (in Blender: a curve "
                "object); given, it replaces the course's path", clean=lambda points: validate_path(points).tolist(),
                max_points=MAX_POINTS),
-        Parameter("lookahead_time", "s", 0.875, 0.25, 3.0,
-                  "path following: the rider heads for the point this many seconds ahead along the path at his speed"),
+        Parameter("preview_time", "s", 0.5, 0.0, 3.0,
+                  "path following: the rider steers for the path's direction this many seconds ahead at his speed"),
+        Parameter("closing_time", "s", 1.0, 0.2, 5.0,
+                  "path following: a sideways offset from the path is closed at about the offset per this time"),
         settings=BICYCLE_SETTINGS,
     )
     default_duration = 10.0
@@ -180,10 +191,11 @@ class Bicycling(Behaviour):
         self.scratch = mujoco.MjData(model)
         self.desired_yaw = self.params["heading"] + self.bike.state(ctx.data)["yaw"]
         self.course = course_for(self.params)
+        self.schedule = steering_schedule()
         self.follower = None
         if self.course.path is not None:      # the path is from where the bicycle starts
             start = ctx.data.qpos[self.bike.free_qpos:self.bike.free_qpos + 2]
-            self.follower = PathFollower(self.course.path + start, self.params["lookahead_time"] * self.params["speed"])
+            self.follower = PathFollower(self.course.path + start, self.params["preview_time"] * self.params["speed"])
         self.leg_servos = {side: servos.indices(names) for side, names in LEG_JOINTS.items()}
         self.arm_servos = {side: servos.indices(names) for side, names in ARM_JOINTS.items()}
         self.ankle_servos = {side: servos.indices([name])[0] for side, name in ANKLE_JOINTS.items()}
@@ -203,33 +215,46 @@ class Bicycling(Behaviour):
         model, data = ctx.model, ctx.data
         state = bike.state(data)
         c = self.params
-        if self.follower is not None:      # pure pursuit: head for the point lookahead_time ahead
-            self.follower.lookahead = c["lookahead_time"] * max(state["speed"], MIN_LOOKAHEAD_SPEED)
-            self.desired_yaw = self.follower.heading(data.qpos[bike.free_qpos], data.qpos[bike.free_qpos + 1])
-        scale = (c["reference_speed"] / max(state["speed"], 1.0)) ** 2
+        if self.follower is not None:      # the path's direction a preview ahead, turned back towards the path
+            moving = max(state["speed"], MIN_LOOKAHEAD_SPEED)
+            self.desired_yaw = self.follower.tracking_heading(data.qpos[bike.free_qpos], data.qpos[bike.free_qpos + 1],
+                                                              c["preview_time"] * moving, c["closing_time"] * moving)
         fork = fork_angle(state["roll"], state["roll_rate"], state["yaw"], state["yaw_rate"], self.desired_yaw,
-                          c["roll_gain"] * scale, c["roll_rate_gain"] * scale, c["yaw_gain"] * min(scale, 1.0),
-                          c["yaw_rate_gain"] * min(scale, 1.0))
+                          *steering_gains(state["speed"], c, self.schedule))
         self.fork_command = min(max(fork, -c["max_fork_angle"]), c["max_fork_angle"])
-        # where the limbs should be: the feet on the pedals as they are, the hands on a fork at its command
+        self._pedal(t, state)
+
+    def _limb_goal(self, state, which, servo_rows, ankles=None) -> np.ndarray:
+        """Servo targets: the limbs ``servo_rows`` by inverse kinematics of the attachments
+        ``which`` (hands on a fork turned to its command, feet on the pedals as they are), led
+        by the servo's lag; the ankles on their curve when given; the rest at the mounted pose."""
+        ctx, servos, bike = self.ctx, self.ctx.servos, self.bike
         scratch = self.scratch
-        scratch.qpos[:] = data.qpos
+        scratch.qpos[:] = ctx.data.qpos
         scratch.qpos[bike.steer_qpos] = self.fork_command
-        curve = (c["ankle_mean"], c["ankle_swing"], c["ankle_phase"])
-        ankles = {"r": ankle_angle(state["crank"], *curve), "l": ankle_angle(state["crank"] + math.pi, *curve)}
-        for side, value in ankles.items():
+        for side, value in (ankles or {}).items():
             scratch.qpos[servos.qpos_adr[self.ankle_servos[side]]] = value
-        solve(model, scratch, self.pairs, [2, 3, 4, 5], self.limb_dofs, data.qpos, IK_ITERATIONS_PER_TICK)  # definition: the hand and foot attachments
+        solve(ctx.model, scratch, self.pairs, which, servos.dof_adr[servo_rows], ctx.data.qpos, IK_ITERATIONS_PER_TICK)
         goal = self.target.copy()
-        ik = scratch.qpos[servos.qpos_adr[self.limb_servos]]
+        ik = scratch.qpos[servos.qpos_adr[servo_rows]]
         velocity = np.zeros_like(ik) if self.previous_ik is None else (ik - self.previous_ik) / ctx.control_dt
         self.previous_ik = ik.copy()
-        goal[self.limb_servos] = ik + self.lag[self.limb_servos] * velocity
-        for side, value in ankles.items():
+        goal[servo_rows] = ik + self.lag[servo_rows] * velocity
+        for side, value in (ankles or {}).items():
             goal[self.ankle_servos[side]] = value
+        return goal
+
+    def _pedal(self, t, state) -> None:
+        """Feet on the pedals: pedal IK and the ankle curve -> leg targets; eqs. 7-10 -> pedal
+        forces -> leg torques (servo offsets)."""
+        ctx, servos, bike = self.ctx, self.ctx.servos, self.bike
+        model, data = ctx.model, ctx.data
+        c = self.params
+        curve = (c["ankle_mean"], c["ankle_swing"], c["ankle_phase"])
+        ankles = {"r": ankle_angle(state["crank"], *curve), "l": ankle_angle(state["crank"] + math.pi, *curve)}
+        goal = self._limb_goal(state, [2, 3, 4, 5], self.limb_servos, ankles)  # definition: the hand and foot attachments
         # eqs. 7-10: pedal forces, through each leg's Jacobian to joint torques (servo offsets)
-        course = self.course
-        torque = crank_torque(state["speed"], course.speed_at(t), c["speed_gain"]) if course.driving(t) else 0.0
+        torque = crank_torque(state["speed"], self.course.speed_at(t), c["speed_gain"])
         forces = dict(zip("rl", pedal_forces(torque, state["crank"], CRANK_LENGTH)))
         offset = np.zeros(len(goal))
         axle = data.xpos[bike.crank_body]

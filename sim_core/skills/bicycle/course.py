@@ -1,5 +1,5 @@
 """A ride's course: where the bicycle is steered (a path, or a fixed heading), what speed is
-commanded when, whether the rider stops pedalling, and what the ground holds (a hill).
+commanded when, and what the ground holds (a hill).
 
 Courses (the ``course`` parameter; a ``path`` given replaces the course's path):
   * straight: hold ``heading`` at ``speed``;
@@ -9,9 +9,7 @@ Courses (the ``course`` parameter; a ``path`` given replaces the course's path):
   * speed_steps: ``speed`` until ``step_time``, ``second_speed`` until twice it, then ``third_speed``;
   * hill: ``hill_after`` m of flat, a climb of ``hill_length`` m at ``hill_grade``, ``hill_top`` m
     of flat top and a descent like the climb (the hill is a world prop, sim_core.world.hill);
-  * start: the rolling start is at ``start_speed``; the rider pedals up to ``speed``;
-  * coast: from ``coast_after`` s the rider stops driving the crank (the legs follow the
-    pedals, the steering goes on): the bicycle slows by its rolling resistance.
+  * start: the rolling start is at ``start_speed``; the rider pedals up to ``speed``.
 
 A course that asks the bicycle to turn harder than ``MAX_LEAN`` of lean at its speed is refused
 before anything runs, naming the limit.
@@ -28,10 +26,10 @@ from ...control.path import turn_path, validate_path
 from ...errors import ParameterError
 from ...schema import Choice
 
-COURSES = ("straight", "turn", "slalom", "speed_steps", "hill", "start", "coast")
+COURSES = ("straight", "turn", "slalom", "speed_steps", "hill", "start")
 COURSE = Choice("course", COURSES, "straight",
                 "what the ride does (docs/bicycle.md, courses): hold the heading; a turn; a slalom of gates; "
-                "speed steps; over a hill; a start from a slow roll; coasting")
+                "speed steps; over a hill; a start from a slow roll")
 MAX_LEAN = math.radians(25.0)      # criterion: the steepest steady lean a course may ask for (v^2 / (g r) = tan)
 SLALOM_POINT_SPACING = 0.25        # definition: m between the points of the slalom's sine
 RUN_OUT = 60.0                     # definition: m of straight after a course's last feature (longer than a ride goes)
@@ -46,7 +44,6 @@ class Course:
     name: str
     path: np.ndarray | None
     speeds: tuple
-    coast_from: float | None
     start_speed: float
     gates: np.ndarray
     gate_width: float
@@ -59,16 +56,13 @@ class Course:
                 speed = value
         return speed
 
-    def driving(self, t: float) -> bool:
-        return self.coast_from is None or t < self.coast_from
-
 
 def course_for(p: dict) -> Course:
     """The course a request asks for (``p``: the validated parameters), refused if it turns
     harder than MAX_LEAN allows at its fastest commanded speed."""
     name = COURSE.option(p["course"])
     speeds = ((0.0, p["speed"]),)
-    path, gates, hill, coast_from, start_speed = None, np.zeros((0, 2)), (), None, p["speed"]
+    path, gates, hill, start_speed = None, np.zeros((0, 2)), (), p["speed"]
     if name == "turn":
         path = turn_path(p["turn_angle"], p["turn_after"], p["turn_radius"], RUN_OUT)
         _check_turn(p["speed"], p["turn_radius"], "turn_radius")
@@ -82,11 +76,9 @@ def course_for(p: dict) -> Course:
         hill = (p["hill_after"], p["hill_grade"], p["hill_length"], p["hill_top"], p["hill_length"])
     elif name == "start":
         start_speed = p["start_speed"]
-    elif name == "coast":
-        coast_from = p["coast_after"]
     if "path" in p:
         path = np.asarray(p["path"], dtype=float)
-    return Course(name, path, speeds, coast_from, start_speed, gates, p["gate_width"], hill)
+    return Course(name, path, speeds, start_speed, gates, p["gate_width"], hill)
 
 
 def slalom(count: int, spacing: float, offset: float, lead: float) -> tuple[np.ndarray, np.ndarray]:

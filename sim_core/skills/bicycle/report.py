@@ -3,6 +3,9 @@
 * the riderless bicycle let go at 4 m/s: the exponential speed decay (fit of ln v) and, with a
   small roll-rate kick, whether it stays up;
 * rides at 3, 4 and 5 m/s and a +30 deg heading step (metrics of ``assess``);
+* the courses (``--courses``): a turn, the slalom at speeds drawn at random (``--seed``) with the
+  gates spaced for the same time between gates, speed steps 3 -> 5 -> 4 m/s, the hill at 5 %
+  (gears 2.6 and 2.0) and 10 %, and a start from a slow roll, run in ``--workers`` processes;
 * speed: simulated seconds per wall-clock second of a ride beside raw ``mj_step`` of the same
   model with the controls held.
 """
@@ -18,6 +21,7 @@ import numpy as np
 
 from ...character.model import new_spec
 from ...simulate import RunRequest, run
+from ...tuning import executor_for
 from ...world import World, add_world
 from ...world.bicycle import Bicycle, BicycleView, DEFAULT_GEAR
 
@@ -79,9 +83,47 @@ def benchmark(seconds: float) -> dict:
             "ride_total_wall_s": time.perf_counter() - start - raw_wall}
 
 
+COURSE_RIDES = {      # name: (parameters, seconds)
+    "turn_90deg_r15m": ({"course": "turn"}, 15.0),
+    "speed_steps_3_5_4": ({"course": "speed_steps", "speed": 3.0, "second_speed": 5.0, "third_speed": 4.0}, 45.0),
+    "hill_5pct_gear_2.6": ({"course": "hill", "hill_grade": 0.05}, 28.0),
+    "hill_5pct_gear_2.0": ({"course": "hill", "hill_grade": 0.05, "gear": 2.0}, 28.0),
+    "hill_10pct": ({"course": "hill", "hill_grade": 0.10}, 28.0),
+    "start_from_1.5ms": ({"course": "start", "start_speed": 1.5}, 12.0),
+}
+COURSE_KEYS = ("fell", "fall_time", "max_abs_roll_deg", "mean_speed_last_5s", "path_deviation_mean", "path_deviation_max",
+               "gates_passed", "gate_count", "gate_misses", "speed_steps", "hill_climb_mean_speed", "hill_climb_worst_error",
+               "hill_descent_mean_speed", "hill_descent_worst_error", "hill_climb_cadence_hz",
+               "hill_climb_cadence_expected_hz", "max_hand_gap", "max_foot_gap", "max_seat_gap", "pedal_pull_r_max",
+               "pedal_pull_r_share", "pedal_force_r_min", "pedal_force_r_max")
+SLALOM_GATE_TIME = 2.5        # s between gates at the drawn speed (the default slalom: 10 m at 4 m/s)
+
+
+def course_ride(item) -> tuple[str, dict]:
+    name, (params, seconds) = item
+    m = run(RunRequest("bicycle", "man", params=params, duration=seconds)).meta["metrics"]
+    return name, {k: m[k] for k in COURSE_KEYS if k in m}
+
+
+def course_rides(seed: int, slaloms: int) -> dict:
+    """The course rides above, and ``slaloms`` slaloms at speeds drawn from 2-7 m/s."""
+    rng = np.random.default_rng(seed)
+    rides = dict(COURSE_RIDES)
+    for _ in range(slaloms):
+        speed = round(float(rng.uniform(2.0, 7.0)), 2)
+        spacing = round(SLALOM_GATE_TIME * speed, 2)
+        rides[f"slalom_{speed:g}ms_{spacing:g}m"] = ({"course": "slalom", "speed": speed, "gate_spacing": spacing},
+                                                     (10.0 + 8.5 * spacing) / speed + 2.0)
+    return rides
+
+
 def main(argv=None) -> int:
     parser = argparse.ArgumentParser(prog="python -m sim_core report bicycle", description=__doc__.splitlines()[0])
     parser.add_argument("--seconds", type=float, default=20.0, help="length of each ride (s)")
+    parser.add_argument("--courses", action="store_true", help="also ride the courses (several minutes)")
+    parser.add_argument("--slaloms", type=int, default=4, help="slaloms at random speeds with --courses")
+    parser.add_argument("--seed", type=int, default=30, help="draws the slaloms' speeds")
+    parser.add_argument("--workers", type=int, default=None, help="processes for the course rides (default: one per CPU)")
     args = parser.parse_args(argv)
     model = riderless_model()
     rows, fell = coast(model, 4.0, 12.0)
@@ -95,6 +137,9 @@ def main(argv=None) -> int:
         out[f"ride_{speed:g}ms"] = {k: m[k] for k in keys}
     m = run(RunRequest("bicycle", "man", params={"speed": 4.0, "heading": math.radians(30.0)}, duration=6.0)).meta["metrics"]
     out["heading_step_30deg"] = {k: m[k] for k in keys}
+    if args.courses:
+        with executor_for(args.workers) as executor:
+            out["courses"] = dict(executor.map(course_ride, list(course_rides(args.seed, args.slaloms).items())))
     out["benchmark"] = benchmark(args.seconds)
     print(json.dumps(out, indent=1))
     return 0

@@ -1,0 +1,24 @@
+"""A bicycle course's hill in a bake (issue 30): its climb, top and descent appear as scenery
+objects, turned as in the simulation, their road surfaces where the simulation had them."""
+import pytest
+
+bpy = pytest.importorskip("bpy")
+
+from sim_core.simulate import RunRequest, run  # noqa: E402
+from sim_core.world import World  # noqa: E402
+from sim_core.world.hill import hill_height  # noqa: E402
+
+HILL = (3.0, 0.1, 6.0, 2.0, 6.0)
+
+
+def test_a_bake_in_a_world_with_a_hill_shows_its_road(empty_scene):
+    from blender_addon import api, scenery
+    context = empty_scene
+    assert bpy.ops.sim_athletics.add_character(character="man") == {"FINISHED"}
+    arm = context.view_layer.objects.active
+    trajectory = run(RunRequest("balance", "man", duration=0.2, world=World(hill=HILL)))
+    assert api.bake_result(context, arm, trajectory, start_frame=1) is not None
+    top = lambda name: max((bpy.data.objects[name].matrix_world @ v.co).z for v in bpy.data.objects[name].data.vertices)
+    assert top(scenery.HILL_NAMES["hill_top"]) == pytest.approx(float(hill_height(HILL, 10.0)), abs=1e-6)
+    assert top(scenery.HILL_NAMES["hill_up"]) == pytest.approx(float(hill_height(HILL, 9.0)), abs=1e-6)
+    assert top(scenery.HILL_NAMES["hill_down"]) == pytest.approx(float(hill_height(HILL, 11.0)), abs=1e-6)

@@ -1,0 +1,131 @@
+"""The bicycle's courses (sim_core.skills.bicycle.course) and the hill prop (sim_core.world.hill):
+geometry and refusals without simulating, then rides read off simulations and compared with
+SEEDS-WAVE2.md §8.1 (B2, B3, B6, B8, B9) and issue 30. Speeds are drawn at random (a fixed seed
+for CI) inside the range the panel offers."""
+import math
+
+import mujoco
+import numpy as np
+import pytest
+
+from sim_core.errors import ParameterError
+from sim_core.simulate import RunRequest, run
+from sim_core.skills.bicycle.behaviour import Bicycling
+from sim_core.skills.bicycle.course import MAX_LEAN, course_for, gate_passes, slalom
+from sim_core.world import World, add_world
+from sim_core.world.hill import check_hill, hill_height
+from sim_core.character.model import new_spec
+
+RANDOM = np.random.default_rng(30)
+
+
+def params(**values):
+    return Bicycling.schema.validate(values)
+
+
+def ride(duration, **values):
+    return run(RunRequest("bicycle", "man", params=values, duration=duration))
+
+
+# --- geometry and refusals (no simulation) ---------------------------------------------------------
+def test_slalom_gates_alternate_on_the_sine_through_them():
+    path, gates = slalom(8, 10.0, 1.0, 10.0)
+    assert len(gates) == 8 and np.allclose(gates[:, 1], [1, -1] * 4)
+    assert np.allclose(np.diff(gates[:, 0]), 10.0)
+    for gx, gy in gates:                                  # the path passes through every gate's centre
+        k = np.argmin(np.abs(path[:, 0] - gx))
+        assert path[k, 1] == pytest.approx(gy, abs=0.01)
+    passes = gate_passes(gates, 1.5, path)
+    assert all(p["passed"] for p in passes)
+    assert not gate_passes(gates, 1.5, np.column_stack([path[:, 0], np.zeros(len(path))]))[0]["passed"]
+
+
+def test_speed_steps_and_slow_start():
+    c = course_for(params(course="speed_steps", speed=3.0, second_speed=5.0, third_speed=4.0, step_time=15.0))
+    assert [c.speed_at(t) for t in (0.0, 14.9, 15.0, 29.9, 30.0, 100.0)] == [3, 3, 5, 5, 4, 4]
+    c = course_for(params(course="start", speed=4.0, start_speed=1.5))
+    assert c.start_speed == 1.5 and c.speed_at(0.0) == 4.0
+
+
+@pytest.mark.parametrize("values, words", [
+    ({"course": "turn", "speed": 8.0, "turn_radius": 5.0}, "lean of"),
+    ({"course": "slalom", "speed": 8.0, "gate_spacing": 4.0, "gate_offset": 3.0}, "gate_spacing and gate_offset"),
+    ({"course": "hill", "hill_grade": 0.5}, "hill_grade=0.5"),
+    ({"course": "roundabout"}, "course"),
+    ({"path": [[0, 0], [0.01, 0]]}, "degenerate"),
+])
+def test_bad_courses_are_refused_in_one_line(values, words):
+    with pytest.raises(ParameterError) as err:
+        course_for(params(**values))
+    assert words in str(err.value) and "\n" not in str(err.value)
+
+
+def test_a_turn_within_the_lean_limit_is_accepted():
+    speed = float(RANDOM.uniform(1.0, 8.0))
+    radius = speed ** 2 / (9.81 * math.tan(MAX_LEAN)) * 1.01
+    assert course_for(params(course="turn", speed=speed, turn_radius=max(radius, 3.0))).path is not None
+
+
+def test_hill_road_is_continuous_and_at_its_grade():
+    hill = (10.0, 0.05, 40.0, 10.0, 40.0)
+    spec = new_spec("hill")
+    add_world(spec, World(hill=hill), None)
+    model = mujoco.MjModel.from_xml_string(spec.to_xml())
+    data = mujoco.MjData(model)
+    mujoco.mj_forward(model, data)
+    assert hill_height(hill, [0.0, 10.0, 30.0, 50.0, 55.0, 80.0, 100.0, 120.0]) == pytest.approx(
+        [0.0, 0.0, 1.0, 2.0, 2.0, 1.0, 0.0, 0.0])
+    # the road surface: a ray cast down onto the boxes meets hill_height everywhere along the hill
+    geomid = np.zeros(1, dtype=np.int32)
+    for x in np.linspace(10.5, 99.5, 40):
+        distance = mujoco.mj_ray(model, data, np.array([x, 0.0, 10.0]), np.array([0.0, 0.0, -1.0]), None, 1, -1, geomid)
+        assert 10.0 - distance == pytest.approx(float(hill_height(hill, x)), abs=1e-6)
+    with pytest.raises(ParameterError, match="hill grade = 0.3"):
+        check_hill((0.0, 0.3, 10.0, 1.0, 10.0))
+
+
+# --- rides ---------------------------------------------------------------------------------------
+@pytest.mark.slow
+def test_a_random_speed_rides_straight_without_a_fall():
+    """Any speed the panel offers (1-8 m/s): 20 s straight, no fall, speed within 5 %, roll < 20 deg."""
+    speed = round(float(RANDOM.uniform(1.0, 8.0)), 2)
+    m = ride(20.0, speed=speed).meta["metrics"]
+    assert not m["fell"], f"speed {speed}: fell at {m['fall_time']}"
+    assert m["mean_speed_last_10s"] == pytest.approx(speed, rel=0.05) and m["max_abs_roll_deg"] < 20.0
+
+
+@pytest.mark.slow
+def test_speed_steps_3_5_4_are_tracked():
+    """B6: mean |v - v_d| over the last 5 s of each step < 10 % of v_d."""
+    m = ride(45.0, course="speed_steps", speed=3.0, second_speed=5.0, third_speed=4.0, step_time=15.0).meta["metrics"]
+    assert not m["fell"] and len(m["speed_steps"]) == 3
+    assert all(s["mean_abs_error"] < 0.10 for s in m["speed_steps"]), m["speed_steps"]
+
+
+@pytest.mark.slow
+def test_hill_5_percent_up_and_down_at_4_m_s_and_a_lower_gear_pedals_faster():
+    """B8: speed within 15 % on the climb and the descent, no fall; cadence v / (2 pi r g)."""
+    rides = {gear: ride(28.0, course="hill", hill_grade=0.05, gear=gear).meta["metrics"] for gear in (2.0, 2.6)}
+    for gear, m in rides.items():
+        assert not m["fell"]
+        assert m["hill_climb_worst_error"] < 0.15 and m["hill_descent_worst_error"] < 0.15
+        assert m["hill_climb_cadence_hz"] == pytest.approx(m["hill_climb_cadence_expected_hz"], rel=0.05)
+    assert rides[2.0]["hill_climb_cadence_hz"] > rides[2.6]["hill_climb_cadence_hz"]
+
+
+@pytest.mark.slow
+def test_slalom_of_8_gates_and_a_two_sided_pedal():
+    """B9: every gate passed, no fall; B2: the pedal pulls the foot at some point (tension)."""
+    m = ride(26.0, course="slalom").meta["metrics"]
+    assert not m["fell"] and m["gates_passed"] == m["gate_count"] == 8, m["gate_misses"]
+    assert m["pedal_pull_r_max"] > 0.0 and m["pedal_pull_l_max"] > 0.0
+    assert m["max_hand_gap"] < 0.03 and m["max_foot_gap"] < 0.03 and m["max_seat_gap"] < 0.001
+
+
+@pytest.mark.slow
+def test_turn_and_a_start_from_a_slow_roll():
+    m = ride(15.0, course="turn").meta["metrics"]
+    assert not m["fell"] and m["path_deviation_max"] < 1.5
+    start = round(float(RANDOM.uniform(1.5, 3.0)), 2)
+    m = ride(12.0, course="start", start_speed=start, speed=4.0).meta["metrics"]
+    assert not m["fell"] and m["mean_speed_last_5s"] == pytest.approx(4.0, rel=0.05), start
