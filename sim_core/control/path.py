@@ -140,20 +140,6 @@ class PathFollower:
         f = remaining / self.lengths[k]
         return ax + f * (bx - ax), ay + f * (by - ay)
 
-    def tracking_heading(self, x: float, y: float, preview: float, closing_distance: float) -> float:
-        """Heading for tracking the path without cutting its corners (a Stanley-style law with
-        preview): the path's direction ``preview`` m ahead of the closest point, turned back
-        towards the path by ``atan(offset / closing_distance)`` (the offset closes at the rate
-        it would along a straight line aimed ``closing_distance`` m ahead)."""
-        k, s, _ = self.advance(x, y)
-        remaining = preview + s * self.lengths[k]
-        last = len(self.points) - 2
-        while k < last and remaining > self.lengths[k]:
-            remaining -= self.lengths[k]
-            k += 1
-        (ax, ay), (bx, by) = self.points[k], self.points[k + 1]
-        return math.atan2(by - ay, bx - ax) - math.atan(self.signed_offset(x, y) / closing_distance)
-
     def heading(self, x: float, y: float) -> float:
         tx, ty = self.target(x, y)
         return math.atan2(ty - y, tx - x)

@@ -55,7 +55,7 @@ BICYCLE_RANGES = Schema(
     Parameter("roll_rate_gain", "s", 0.0, 0.0, 5.0, "eq. 11 k_alpha-dot at reference_speed"),
     Parameter("yaw_gain", "1", 0.0, 0.0, 10.0, "eq. 11 k_beta at reference_speed"),
     Parameter("yaw_rate_gain", "s", 0.0, 0.0, 5.0, "eq. 11 k_beta-dot at reference_speed"),
-    Parameter("reference_speed", "m/s", 0.5, 0.5, 10.0, "speed at which the four steering gains are these (steering.py)"),
+    Parameter("reference_speed", "m/s", 0.5, 0.5, 10.0, "speed at which the four steering gains are these (steering.py scales them with speed)"),
     Parameter("max_fork_angle", "rad", 0.0, 0.0, 1.0, "limit of the commanded fork angle"),
     Parameter("ankle_mean", "rad", -0.7, -0.7, 0.87, "ankle curve: mean plantarflexion over a crank turn"),
     Parameter("ankle_swing", "rad", 0.0, 0.0, 0.5, "ankle curve: half its range"),
@@ -71,8 +71,6 @@ BICYCLE_RANGES = Schema(
 
 def _bicycle_rows(body: dict):
     yield "constants", body["constants"]
-    for k, row in enumerate(body.get("steering_schedule", [])):
-        yield f"steering_schedule row {k}", row
 
 
 def bicycle_constants(character: str = "any") -> dict:
@@ -80,12 +78,6 @@ def bicycle_constants(character: str = "any") -> dict:
     table yet)."""
     return load("bicycle", "any")["constants"]
 
-
-def steering_schedule() -> list[dict] | None:
-    """Eq. 11's gains searched at speeds (rows with reference_speed and the four gains, by
-    speed), or None before ``calibrate bicycle`` has written them (steering.py)."""
-    rows = load("bicycle", "any").get("steering_schedule")
-    return sorted(rows, key=lambda row: row["reference_speed"]) if rows else None
 
 
 BICYCLE_TABLE = register_table(TableType("bicycle", BICYCLE_RANGES, _bicycle_rows, (bicycle_constants,)))
@@ -129,10 +121,8 @@ class Bicycling(Behaviour):
         Points("path", "the path to ride along, [x, y] points in metres from the start (in Blender: a curve "
                "object); given, it replaces the course's path", clean=lambda points: validate_path(points).tolist(),
                max_points=MAX_POINTS),
-        Parameter("preview_time", "s", 0.5, 0.0, 3.0,
-                  "path following: the rider steers for the path's direction this many seconds ahead at his speed"),
-        Parameter("closing_time", "s", 1.0, 0.2, 5.0,
-                  "path following: a sideways offset from the path is closed at about the offset per this time"),
+        Parameter("lookahead_time", "s", 0.875, 0.25, 3.0,
+                  "path following: the rider heads for the point this many seconds ahead along the path at his speed"),
         settings=BICYCLE_SETTINGS,
     )
     default_duration = 10.0
@@ -191,11 +181,10 @@ class Bicycling(Behaviour):
         self.scratch = mujoco.MjData(model)
         self.desired_yaw = self.params["heading"] + self.bike.state(ctx.data)["yaw"]
         self.course = course_for(self.params)
-        self.schedule = steering_schedule()
         self.follower = None
         if self.course.path is not None:      # the path is from where the bicycle starts
             start = ctx.data.qpos[self.bike.free_qpos:self.bike.free_qpos + 2]
-            self.follower = PathFollower(self.course.path + start, self.params["preview_time"] * self.params["speed"])
+            self.follower = PathFollower(self.course.path + start, self.params["lookahead_time"] * self.params["speed"])
         self.leg_servos = {side: servos.indices(names) for side, names in LEG_JOINTS.items()}
         self.arm_servos = {side: servos.indices(names) for side, names in ARM_JOINTS.items()}
         self.ankle_servos = {side: servos.indices([name])[0] for side, name in ANKLE_JOINTS.items()}
@@ -215,12 +204,11 @@ class Bicycling(Behaviour):
         model, data = ctx.model, ctx.data
         state = bike.state(data)
         c = self.params
-        if self.follower is not None:      # the path's direction a preview ahead, turned back towards the path
-            moving = max(state["speed"], MIN_LOOKAHEAD_SPEED)
-            self.desired_yaw = self.follower.tracking_heading(data.qpos[bike.free_qpos], data.qpos[bike.free_qpos + 1],
-                                                              c["preview_time"] * moving, c["closing_time"] * moving)
+        if self.follower is not None:      # pure pursuit: head for the point lookahead_time ahead
+            self.follower.lookahead = c["lookahead_time"] * max(state["speed"], MIN_LOOKAHEAD_SPEED)
+            self.desired_yaw = self.follower.heading(data.qpos[bike.free_qpos], data.qpos[bike.free_qpos + 1])
         fork = fork_angle(state["roll"], state["roll_rate"], state["yaw"], state["yaw_rate"], self.desired_yaw,
-                          *steering_gains(state["speed"], c, self.schedule))
+                          *steering_gains(state["speed"], c))
         self.fork_command = min(max(fork, -c["max_fork_angle"]), c["max_fork_angle"])
         self._pedal(t, state)
 
