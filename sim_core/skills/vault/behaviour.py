@@ -1,0 +1,417 @@
+"""The handspring vault (Hodgins et al. 1995, [A] 146-164): six states after the seed, then balance
+and a bow.
+
+1. hurdle     - the run starts in the flight before the board (the seed's initial state: forward
+                6.75 m/s, the COM 0.9 m above the board's top, set as the initial qpos/qvel and
+                logged in meta["start_state"]["skill"]); the hips block: the legs are held ahead of
+                the body, so the board stops the feet ahead of the COM and the horizontal speed
+                turns into rotation and rise.
+2. board      - the feet on the springboard; the legs are held stiff while the board deflects, and
+                at its maximum deflection (the deck's velocity reverses) the knees and ankles extend,
+                pushing on the board as it rebounds.
+3. first flight - eq. 12: each shoulder is servoed to gamma = lambda + phi, lambda the angle from the
+                downward vertical of the line from the shoulder to the desired hand position on the
+                horse and phi the body's forward pitch (the seed's gamma = lambda - phi with its
+                pitch counted the other way), so the arms point at the hand position whatever the
+                body's pitch and the hands are ground-speed matched to the horse; the wrists are
+                set so that the palms strike the horse flat.
+4. horse      - the hands on the horse: arms straight (stiff elbows), no torque at the shoulders or
+                wrists (their servos' gains are zero); the angular and forward velocity carry the
+                body over the hands.
+5. second flight - a layout (straight body, arms overhead), the feet a little apart, and when the
+                body has nearly turned upright the landing's leg placement (control/leap.py Landing).
+6. landing    - on the mat: knees and waist absorb (Landing); when the COM passes over the centre
+                of the feet the balance controller takes over; then she stands, raises the arms in
+                a gesture and bows.
+
+Nothing but gravity, the contacts (board, horse, mat) and the joint servos moves her. The settings
+per character come from ``sim_core/tuned/tables/vault_<character>.json`` and the shared design values
+(apparatus layout, the seed's start, the gesture and the bow) from ``vault_any.json``'s constants.
+"""
+from __future__ import annotations
+
+import dataclasses
+import math
+
+import mujoco
+import numpy as np
+
+from ...ballistics import GRAVITY
+from ...control.balance import Balance
+from ...control.behaviour import Behaviour, ControlContext, register
+from ...control.leap import Landing, balance_after_landing, run_strength
+from ...control.measure import pitch_of
+from ...control.sequencer import Sequence, Step
+from ...control.tumble import FlightRotation, both_sides
+from ...control.tuned import uncalibrated
+from ...errors import ParameterError
+from ...schema import Choice, Parameter, Schema
+from ...tuned import TableType, keyed, load, register as register_table
+from ...tuned.constants import constant, constant_rows, read_constants, with_constants
+from ...tuned.settings import SkillSchema, ranged as setting
+from ...world.apparatus import (BOARD_LENGTH, BOARD_TOP, HORSE_1987_HEIGHT, HORSE_1987_LENGTH, HORSE_1987_WIDTH,
+                                LANDING_MAT_THICKNESS, PROP_BODY_PREFIX, VAULT_TABLE_HEIGHT_MEN,
+                                VAULT_TABLE_HEIGHT_WOMEN, VAULT_TABLE_LENGTH, VAULT_TABLE_WIDTH)
+
+# the vault's hand-set design values: data, vault_any.json's "constants" (docs/tables.md)
+VAULT_CONSTANTS = Schema(
+    constant("start_com_height", "m", 0.5, 1.5,
+             "the seed's start: the COM this high above the board's top at rest ([A] 150: 0.9 m)"),
+    constant("board_ahead", "m", 0.2, 3.0, "the board's centre this far ahead of the world's origin"),
+    constant("touchdown_on_board", "m", -0.6, 0.6,
+             "the start is placed so that the feet touch down this far ahead of the board's centre"),
+    constant("horse_gap", "m", 0.0, 3.0, "the horse's near edge this far ahead of the board's front edge"),
+    constant("mat_gap", "m", 0.0, 3.0, "the landing mat's near edge this far beyond the horse's far edge"),
+    constant("mat_size", "m", 0.5, 20.0, "the landing mat's length and width"),
+    constant("handled_speed", "m/s", 0.0, 12.0, "the run-up speeds (board touchdown) the controller handles: [low, high]"),
+    constant("servo_move", "s", 0.005, 1.0, "the servo move of a step's posture change where no setting names one"),
+    constant("gesture", "rad", -3.2, 3.2, "the gesture of success: shoulder flexion of both arms (raised up and back)"),
+    constant("gesture_time", "s", 0.1, 5.0, "the arms' move into the gesture and back"),
+    constant("gesture_hold", "s", 0.0, 5.0, "the gesture is held this long"),
+    constant("bow_pitch", "rad", 0.0, 1.5, "the bow: the torso's forward pitch"),
+    constant("bow_time", "s", 0.1, 5.0, "the move into the bow and back up"),
+    constant("bow_hold", "s", 0.0, 5.0, "the bow is held this long"),
+    constant("stand_settle", "s", 0.0, 5.0, "standing this long after the balance takes over before the gesture"),
+    constant("contact_force", "N", 0.0, 200.0, "a contact with an apparatus pushing this hard counts as touching"),
+)
+CONSTANTS = read_constants("vault", VAULT_CONSTANTS)
+
+APPARATUS = ("horse_1987", "table")
+HAND_BODIES = ("HANDR", "HANDL")
+FOOT_BODIES = ("FOOTR", "FOOTL", "TOER", "TOEL")
+DEFLECTION_JOINT = PROP_BODY_PREFIX + "springboard/deflection"
+
+VAULT_SETTINGS = Schema(
+    setting("hurdle_vz", "m/s", -2.0, 0.5, "vertical COM velocity at the start (the hurdle flight's descent)"),
+    setting("hurdle_lean", "rad", -0.8, 0.5, "the body's forward pitch at the start (- leans back: the hips block)"),
+    setting("hurdle_spin", "rad/s", -5.0, 5.0, "the body's forward rotation rate at the start"),
+    setting("hurdle_arm", "rad", -1.0, 3.14, "shoulder flexion of both arms at the start"),
+    setting("block_hip", "rad", -1.5, 0.5, "hip flexion (-) of the block: the legs held ahead of the body"),
+    setting("board_knee", "rad", 0.0, 1.2, "knee bend at board touchdown, held while the board deflects"),
+    setting("board_gain", "1", 1.0, 10.0, "gain factor of the leg servos on the board"),
+    setting("board_arm", "rad", -1.0, 3.14, "the arms swing to this shoulder flexion on the board"),
+    setting("board_arm_time", "s", 0.02, 0.5, "the board's arm swing takes this long"),
+    setting("push_time", "s", 0.01, 0.3, "at maximum deflection the knees, hips and ankles extend in this time"),
+    setting("push_ankle", "rad", -0.7, 0.9, "ankle angle the push extends to (- plantarflexion)"),
+    setting("push_hip", "rad", -1.5, 0.5, "hip angle the push extends to"),
+    setting("hand_ahead", "m", -0.5, 1.2, "the desired hand position: this far beyond the horse's near edge"),
+    setting("flight_hip", "rad", -2.0, 0.5, "hip flexion (-) held in the first flight"),
+    setting("arm_gain", "1", 1.0, 10.0, "gain factor of the shoulder servos in the first flight (eq. 12)"),
+    setting("wrist_extension", "rad", -1.2, 1.2, "wrist extension of the palms-down hands"),
+    setting("elbow_gain", "1", 1.0, 20.0, "gain factor of the elbow servos on the horse (arms straight)"),
+    setting("horse_hip", "rad", -1.0, 0.5, "hip angle on the horse (0: the layout)"),
+    setting("layout_arm", "rad", 0.0, 3.14, "shoulder flexion in the second flight's layout"),
+    setting("feet_apart", "rad", 0.0, 0.3, "hip abduction of each leg in the second flight (the feet a little apart)"),
+    setting("landing_lean", "rad", 0.0, 2.0, "the landing's leg placement starts this far short of the upright"),
+    setting("open_height", "m", 0.5, 2.0, "... or once the COM is this high above the mat, whichever is first"),
+    setting("landing_knee_flexion", "rad", 0.0, 1.5, "knee bend held for the touchdown on the mat"),
+    setting("foot_delta", "m", -0.3, 0.3, "landing: foot servo delta (the landing's placement ahead of the capture point)"),
+    setting("landing_foot_lead_time", "s", 0.0, 0.6, "landing: the feet land this many seconds of COM travel ahead"),
+    setting("spin_placement", "s/m", 0.0, 0.5, "landing: feet placed this factor x (angular momentum / mass) against the spin"),
+    setting("landing_blend", "s", 0.0, 0.3, "landing: the joint targets blend in from the layout over this time"),
+)
+
+
+def load_table(character: str) -> dict:
+    """The character's vault table (no rows if there is none)."""
+    return load("vault", character) or {"vaults": []}
+
+
+def vault_row(table: dict, strength: str) -> dict | None:
+    """The row of the strength (keyed), or None."""
+    return keyed(table["vaults"], strength=strength)
+
+
+def calibrated(character: str, strength: str) -> dict | None:
+    """The vault settings of this character and strength, or None."""
+    return vault_row(load_table(character), strength)
+
+
+VAULT_TABLE = register_table(TableType(
+    "vault", with_constants(VAULT_SETTINGS, VAULT_CONSTANTS),
+    lambda body: (*((f"vaults {e['strength']}", e["settings"]) for e in body.get("vaults", [])), *constant_rows(body)),
+    (vault_row,)))
+
+
+def apparatus_layout(params: dict, character) -> dict:
+    """Where the board, the horse (or table) and the mat stand: (x, y, ...) tuples for World, along
+    +X from the start's COM at x = 0. The women's horse of Takei's 1987 data (sideways) or the FIG
+    table at the character's height (women's for the woman, men's for the man)."""
+    board_x = CONSTANTS.board_ahead
+    near = board_x + BOARD_LENGTH / 2 + CONSTANTS.horse_gap
+    if APPARATUS[int(round(params["apparatus"]))] == "horse_1987":
+        height, length, width = HORSE_1987_HEIGHT, HORSE_1987_LENGTH, HORSE_1987_WIDTH
+        length, width = width, length                  # sideways: its 0.35 m across the run
+    else:
+        height = VAULT_TABLE_HEIGHT_MEN if character is not None and character.name == "man" else VAULT_TABLE_HEIGHT_WOMEN
+        length, width = VAULT_TABLE_LENGTH, VAULT_TABLE_WIDTH
+    far = near + length
+    mat_length, mat_width = CONSTANTS.mat_size
+    return {"springboard": (board_x, 0.0), "vault_table": (near + length / 2, 0.0, height, length, width),
+            "landing_mat": (far + CONSTANTS.mat_gap + mat_length / 2, 0.0, mat_length, mat_width,
+                            LANDING_MAT_THICKNESS),
+            "near_edge": near, "far_edge": far, "height": height}
+
+
+class ApparatusTouch:
+    """Whether some of the actor's bodies push on one named world geom (an apparatus), from
+    MuJoCo's contact list and the contacts' normal forces of the last step."""
+
+    def __init__(self, model, geom: str, bodies, prefix: str = ""):
+        self.model = model
+        self.geom = model.geom(geom).id
+        self.bodies = np.array([model.body(prefix + b).id for b in bodies])
+        self.force = np.zeros(6)
+
+    def touching(self, data) -> bool:
+        n = data.ncon
+        if not n:
+            return False
+        contact = data.contact
+        geoms = contact.geom[:n]
+        body = self.model.geom_bodyid
+        for k in range(n):
+            g1, g2 = int(geoms[k, 0]), int(geoms[k, 1])
+            other = g2 if g1 == self.geom else g1 if g2 == self.geom else -1
+            if other < 0 or body[other] not in self.bodies:
+                continue
+            mujoco.mj_contactForce(self.model, data, k, self.force)
+            if self.force[0] > CONSTANTS.contact_force:
+                return True
+        return False
+
+
+class PoseHold(Behaviour):
+    """A step's posture: Hermite moves of some joints to named angles over ``move_time`` with some
+    servos' gains scaled (and some set to zero: ``limp``); every other target is held where it is.
+    ``law`` (optional): called every tick with t, for targets that follow the measured state."""
+
+    schema = Schema()
+
+    def __init__(self, ctx: ControlContext, goals: dict[str, float], move_time: float, gains: dict[str, float] | None = None,
+                 law=None):
+        super().__init__({}, ctx)
+        self.goals, self.move_time, self.gains, self.law = goals, move_time, gains or {}, law
+
+    def start(self, t: float) -> None:
+        s = self.ctx.servos
+        s.offset[:] = 0.0
+        s.hold(s.smoothed_target(t), t)
+        if self.goals:
+            s.move_to(s.indices(list(self.goals)), np.array(list(self.goals.values())), self.move_time, t)
+        for name, factor in self.gains.items():
+            i = s.indices([name])
+            s.set_gains(i, s.default_kp[i] * factor, s.default_kv[i] * factor)
+
+    def update(self, t: float) -> None:
+        if self.law is not None:
+            self.law(t)
+
+
+@register
+class Vault(Sequence):
+    name = "vault"
+    world_frame = True             # the apparatus stands along +X from the origin
+    summary = ("Handspring vault (Hodgins et al. 1995): hurdle, springboard, first flight (eq. 12), hands on the "
+               "horse, layout second flight, landing on the mat, balance, gesture and bow.")
+    default_duration = 6.0
+    settings_schema = VAULT_SETTINGS
+    schema = SkillSchema(
+        Parameter("runup_speed", "m/s", 6.75, 0.0, 12.0,
+                  "horizontal COM speed of the hurdle flight (the seed's start: 6.75 m/s, Takei's mean); the "
+                  "controller handles the range of vault_any.json's handled_speed"),
+        Choice("apparatus", APPARATUS, "horse_1987",
+               "what she vaults: the 1987 women's horse of Takei's data (sideways, 1.20 m) or the FIG table"),
+        Parameter("low_level", "bool", 0.0, 0.0, 1.0,
+                  "1 = run the tuned settings as set (--set block_hip=...) instead of the character's table"),
+        settings=VAULT_SETTINGS,
+    )
+
+    # ------------------------------------------------------------------ the world and the start
+    @classmethod
+    def scene(cls, params, world, character=None):
+        """The requested world with the springboard, the horse (or table) and the landing mat."""
+        layout = apparatus_layout(params, character)
+        return dataclasses.replace(world, springboard=layout["springboard"], vault_table=layout["vault_table"],
+                                   landing_mat=layout["landing_mat"])
+
+    @classmethod
+    def settings_for(cls, params: dict, character_name: str, strength: str) -> dict:
+        if params["low_level"]:
+            return {k: params[k] for k in VAULT_SETTINGS.by_name}
+        row = calibrated(character_name, strength)
+        return dict(row["settings"]) if row else {k: params[k] for k in VAULT_SETTINGS.by_name}
+
+    @classmethod
+    def start_state(cls, params, model, data, character):
+        """The seed's hurdle flight: the standing pose with the block (hips flexed, knees bent, arms
+        raised), the body pitched by hurdle_lean, the COM start_com_height above the board's top at
+        x = 0, every body moving at (runup_speed, 0, hurdle_vz) plus the hurdle's forward spin."""
+        strength = "human" if model.actuator_forcelimited[model.actuator("knee_r_y").id] else "unlimited"
+        c = cls.settings_for(params, character.name, strength)
+        pose = both_sides({"hip_*_y": c["block_hip"], "knee_*_y": c["board_knee"], "shoulder_*_z": c["hurdle_arm"],
+                           "elbow_*_z": 0.0})
+        for name, value in pose.items():
+            data.qpos[model.joint(name).qposadr[0]] = value
+        root = model.joint("root")
+        q, v = int(root.qposadr[0]), int(root.dofadr[0])
+        lean = c["hurdle_lean"]
+        data.qpos[q + 3:q + 7] = [math.cos(lean / 2), 0.0, math.sin(lean / 2), 0.0]
+        mujoco.mj_kinematics(model, data)
+        mujoco.mj_comPos(model, data)
+        com = data.subtree_com[root.bodyid[0]].copy()
+        data.qpos[q:q + 3] += np.array([0.0, 0.0, BOARD_TOP + CONSTANTS.start_com_height]) - com
+        data.qvel[:] = 0.0
+        mujoco.mj_kinematics(model, data)
+        # the feet touch the board (ballistically, the hurdle's rotation aside) at touchdown_on_board
+        # from its centre: the whole body is shifted along +X for that
+        feet = data.site_xpos[[i for i in range(model.nsite) if model.body(model.site_bodyid[i]).name in FOOT_BODIES]]
+        lowest = feet[int(np.argmin(feet[:, 2]))]
+        fall = lowest[2] - BOARD_TOP
+        vz = c["hurdle_vz"]
+        fall_time = (vz + math.sqrt(vz * vz + 2 * GRAVITY * max(fall, 0.0))) / GRAVITY
+        data.qpos[q] += CONSTANTS.board_ahead + CONSTANTS.touchdown_on_board - (lowest[0] + params["runup_speed"] * fall_time)
+        mujoco.mj_kinematics(model, data)
+        mujoco.mj_comPos(model, data)
+        com = data.subtree_com[root.bodyid[0]].copy()
+        # a rigid motion: the COM at (speed, 0, vz), the whole body turning at hurdle_spin about the
+        # COM (the free joint's linear velocity is the root body's origin's)
+        origin = data.qpos[q:q + 3]
+        spin = c["hurdle_spin"]
+        data.qvel[v:v + 3] = [params["runup_speed"] + spin * (origin[2] - com[2]), 0.0,
+                              c["hurdle_vz"] - spin * (origin[0] - com[0])]
+        data.qvel[v + 3:v + 6] = np.array([0.0, spin, 0.0]) @ data.xmat[root.bodyid[0]].reshape(3, 3)
+        return {"state": "hurdle", "com": com.tolist(), "com_velocity": [params["runup_speed"], 0.0, c["hurdle_vz"]],
+                "pitch": lean, "spin": spin, "com_above_board": CONSTANTS.start_com_height}
+
+    def check_feasible(self) -> None:
+        speed = self.params["runup_speed"]
+        low, high = CONSTANTS.handled_speed
+        if not low <= speed <= high:
+            raise ParameterError(f"parameter runup_speed={speed:g} m/s is outside what the vault controller handles; "
+                                 f"allowed range is [{low:g}, {high:g}] m/s")
+        if self.params["low_level"]:
+            return
+        name, strength = self.ctx.character.name, run_strength(self.ctx)
+        if calibrated(name, strength) is None:
+            raise uncalibrated(name, "handspring vault", strength,
+                               [f"{e['strength']} strength" for e in load_table(name)["vaults"]], None,
+                               "sim_core/tuned/tables/vault_<character>.json")
+
+    # ------------------------------------------------------------------ measurements
+    def body_pitch(self) -> float:
+        """phi: the trunk's forward pitch from vertical (pelvis to the upper chest), unwrapped."""
+        d = self.ctx.data
+        axis = d.xpos[self.chest] - d.xpos[self.pelvis]
+        raw = math.atan2(float(axis[0]), float(axis[2]))
+        self._pitch += (raw - self._last_raw + math.pi) % (2 * math.pi) - math.pi
+        self._last_raw = raw
+        return self._pitch
+
+    def deck_velocity(self) -> float:
+        return float(self.ctx.data.qvel[self.deck_dof])
+
+    # ------------------------------------------------------------------ the script
+    def steps(self) -> list[Step]:
+        ctx = self.ctx
+        m, d, s = ctx.model, ctx.data, ctx.servos
+        c = self.cfg = self.settings_for(self.params, ctx.character.name, run_strength(ctx))
+        layout = apparatus_layout(self.params, ctx.character)
+        self.hand_goal = np.array([layout["near_edge"] + c["hand_ahead"], 0.0, layout["height"]])
+        self.mat_top = LANDING_MAT_THICKNESS
+        body = ctx.actor.body_id
+        self.pelvis, self.chest = body("PELVIS"), body("CHEST1")
+        self.shoulders = [body("UARMR"), body("UARML")]
+        self._last_raw = 0.0
+        self._pitch = 0.0
+        self._pitch = self._last_raw = math.atan2(*(d.xpos[self.chest] - d.xpos[self.pelvis])[[0, 2]])
+        self.deck_dof = int(m.jnt_dofadr[m.joint(DEFLECTION_JOINT).id])
+        p = ctx.actor.prefix
+        self.on_board = ApparatusTouch(m, "springboard", FOOT_BODIES, p)
+        self.on_horse = ApparatusTouch(m, "vault_table", HAND_BODIES, p)
+        self.on_mat = ApparatusTouch(m, "landing_mat", FOOT_BODIES, p)
+        self.rotation = FlightRotation(m, d, ctx.actor)
+        legs = both_sides({"hip_*_y": 1, "knee_*_y": 1, "ankle_*_y": 1})
+        arms_z = ["shoulder_r_z", "shoulder_l_z"]
+        limp = {n: 0.0 for n in ("shoulder_r_z", "shoulder_l_z", "shoulder_r_x", "shoulder_l_x", "shoulder_r_y",
+                                 "shoulder_l_y", "wrist_r_x", "wrist_l_x", "wrist_r_y", "wrist_l_y")}
+        self.pushed = self.deck_going_down = False
+
+        def board(t):
+            b = PoseHold(ctx, both_sides({"shoulder_*_z": c["board_arm"]}), c["board_arm_time"],
+                         {n: c["board_gain"] for n in legs}, law=lambda t: self.board_law(t))
+            return b
+
+        def first_flight(t):
+            s.set_gains(s.indices(list(legs)), s.default_kp[s.indices(list(legs))], s.default_kv[s.indices(list(legs))])
+            return PoseHold(ctx, both_sides({"hip_*_y": c["flight_hip"], "knee_*_y": 0.0, "ankle_*_y": 0.5,
+                                             "elbow_*_z": 0.0, "wrist_*_x": c["wrist_extension"]}), CONSTANTS.servo_move,
+                            {n: c["arm_gain"] for n in arms_z}, law=lambda t: self.reach_law(t))
+
+        def horse(t):
+            return PoseHold(ctx, both_sides({"hip_*_y": c["horse_hip"], "elbow_*_z": 0.0}), CONSTANTS.servo_move,
+                            {**limp, "elbow_r_z": c["elbow_gain"], "elbow_l_z": c["elbow_gain"]})
+
+        def second_flight(t):
+            s.set_gains(np.arange(len(s.names)), s.default_kp, s.default_kv)
+            return PoseHold(ctx, both_sides({"hip_*_y": 0.0, "knee_*_y": 0.0, "shoulder_*_z": c["layout_arm"],
+                                             "hip_*_x": c["feet_apart"], "wrist_*_x": 0.0}), CONSTANTS.servo_move)
+
+        def ready_to_land(b, t):
+            turned = self.body_pitch()
+            com_z = float(d.subtree_com[ctx.actor.root][2])
+            return (turned >= 2 * math.pi - c["landing_lean"] or com_z - self.mat_top < c["open_height"]
+                    ) and float(d.subtree_linvel[ctx.actor.root][2]) < 0
+
+        def land(t):
+            return Landing(Landing.schema.validate(dict(
+                knee_flexion=c["landing_knee_flexion"], fast_knee_flexion=c["landing_knee_flexion"],
+                foot_delta=c["foot_delta"], foot_lead_time=c["landing_foot_lead_time"],
+                spin_placement=c["spin_placement"], blend_time=c["landing_blend"])), ctx)
+
+        return [
+            Step("hurdle", lambda t: PoseHold(ctx, {}, CONSTANTS.servo_move, {n: c["board_gain"] for n in legs}),
+                 lambda b, t: self.on_board.touching(d)),
+            Step("board", board, lambda b, t: self.pushed and not self.on_board.touching(d)),
+            Step("first_flight", first_flight, lambda b, t: self.on_horse.touching(d)),
+            Step("horse", horse, lambda b, t: not self.on_horse.touching(d)),
+            Step("second_flight", second_flight, ready_to_land),
+            Step("landing", land, lambda b, t: b.finished),
+            Step("balance", lambda t: balance_after_landing(ctx, self.previous)),
+        ]
+
+    def board_law(self, t: float) -> None:
+        """At the board's maximum deflection (its deck stops going down) the legs extend."""
+        if self.deck_velocity() < 0.0:
+            self.deck_going_down = True
+        if self.pushed or not self.deck_going_down or self.deck_velocity() < 0.0:
+            return
+        self.pushed = True
+        self.event(t, "max_deflection")
+        c, s = self.cfg, self.ctx.servos
+        goals = both_sides({"knee_*_y": 0.0, "hip_*_y": c["push_hip"], "ankle_*_y": c["push_ankle"]})
+        s.move_to(s.indices(list(goals)), np.array(list(goals.values())), c["push_time"], t)
+
+    def reach_law(self, t: float) -> None:
+        """Eq. 12: each shoulder at gamma = lambda + phi (the arm along the line to the hand goal)."""
+        d, s = self.ctx.data, self.ctx.servos
+        phi = self.body_pitch()
+        goals = []
+        for k, side in enumerate("rl"):
+            to_hand = self.hand_goal - d.xpos[self.shoulders[k]]
+            lam = math.atan2(float(to_hand[0]), float(-to_hand[2]))       # from the downward vertical, + forward
+            gamma = lam + phi
+            goals.append(gamma if side == "r" else -gamma)
+        i = s.indices(["shoulder_r_z", "shoulder_l_z"])
+        s.start[i] = s.goal[i] = np.clip(goals, [-1.0, -3.14159], [3.14159, 1.0])
+        s.t0[i] = t
+
+    def update(self, t: float) -> None:
+        self.rotation.update(t)
+        self.body_pitch()
+        super().update(t)
+
+    @classmethod
+    def assess(cls, trajectory):
+        from .report import vault_assess
+        return vault_assess(trajectory)
