@@ -96,6 +96,8 @@ VAULT_SETTINGS = Schema(
     setting("push_hip", "rad", -1.5, 0.5, "hip angle the push extends to"),
     setting("hand_ahead", "m", -0.5, 1.2, "the desired hand position: this far beyond the horse's near edge"),
     setting("flight_hip", "rad", -2.0, 0.5, "hip flexion (-) held in the first flight"),
+    setting("open_pitch", "rad", 0.0, 4.0, "the first flight's pike opens once the body has pitched this far forward"),
+    setting("open_time", "s", 0.01, 0.5, "the pike opens in this time"),
     setting("arm_gain", "1", 1.0, 10.0, "gain factor of the shoulder servos in the first flight (eq. 12)"),
     setting("wrist_extension", "rad", -1.2, 1.2, "wrist extension of the palms-down hands"),
     setting("elbow_gain", "1", 1.0, 20.0, "gain factor of the elbow servos on the horse (arms straight)"),
@@ -335,7 +337,7 @@ class Vault(Sequence):
         arms_z = ["shoulder_r_z", "shoulder_l_z"]
         limp = {n: 0.0 for n in ("shoulder_r_z", "shoulder_l_z", "shoulder_r_x", "shoulder_l_x", "shoulder_r_y",
                                  "shoulder_l_y", "wrist_r_x", "wrist_l_x", "wrist_r_y", "wrist_l_y")}
-        self.pushed = self.deck_going_down = False
+        self.pushed = self.deck_going_down = self.opened = False
 
         def board(t):
             b = PoseHold(ctx, both_sides({"shoulder_*_z": c["board_arm"]}), c["board_arm_time"],
@@ -396,6 +398,13 @@ class Vault(Sequence):
         """Eq. 12: each shoulder at gamma = lambda + phi (the arm along the line to the hand goal)."""
         d, s = self.ctx.data, self.ctx.servos
         phi = self.body_pitch()
+        if not self.opened and phi > self.cfg["open_pitch"]:
+            # the pike that sped the rotation opens before the hands land: the straight body and
+            # the arms in line carry the horse's push through the COM
+            self.opened = True
+            self.event(t, "open")
+            hips = s.indices(["hip_r_y", "hip_l_y"])
+            s.move_to(hips, np.array([self.cfg["horse_hip"]] * 2), self.cfg["open_time"], t)
         goals = []
         for k, side in enumerate("rl"):
             to_hand = self.hand_goal - d.xpos[self.shoulders[k]]

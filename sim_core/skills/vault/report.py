@@ -67,17 +67,21 @@ def contact_runs(force_z: np.ndarray, gap: int) -> list[tuple[int, int]]:
 
 
 def vault_phases(trajectory) -> dict:
-    """The contact phases as frame ranges [first, last + 1): the first board contact, the first
-    horse contact after it, the first mat contact after that; and the flights between them."""
+    """The contact phases as frame ranges [first, last + 1): the first board contact; the horse
+    contact from the first touch after it to the last release before the mat; the first mat
+    contact after that (to the end). The flights are between them."""
     gap = int(round(CONTACT_GAP * float(trajectory.meta["control_rate"])))
     board, horse, mat = (contact_runs(_column(trajectory, g)[:, 2], gap) for g in ("springboard", "vault_table", "landing_mat"))
     phases = {}
     if board:
         phases["board"] = board[0]
         horse = [h for h in horse if h[0] >= board[0][1]]
+        mat = [r for r in mat if horse and r[0] >= horse[0][1]]
         if horse:
-            phases["horse"] = horse[0]
-            mat = [r for r in mat if r[0] >= horse[0][1]]
+            # the horse contact: from the first touch to the last release before the mat (the hands
+            # bounce and land again: one support phase, as Takei's contact time counts it)
+            end = mat[0][0] if mat else len(trajectory.arrays["time"])
+            phases["horse"] = (horse[0][0], max(h[1] for h in horse if h[0] < end))
             if mat:
                 phases["mat"] = (mat[0][0], len(trajectory.arrays["time"]))
     return phases
@@ -150,6 +154,7 @@ def vault_assess(trajectory) -> tuple[str, dict]:
     if "mat" not in ph:
         return ("no_board" if "board" not in ph else "no_horse" if "horse" not in ph else "no_landing"), metrics
     first = ph["mat"][0]
+    metrics["rotation_at_touchdown"] = float(pitch[first])
     mat_force = a["contact_force"][:, :, meta["world_geoms"].index("landing_mat")]
     touching = np.flatnonzero(np.linalg.norm(mat_force[first], axis=1) > 0)
     metrics["first_on_mat"] = [names[b] for b in touching]
@@ -186,3 +191,46 @@ def vault_assess(trajectory) -> tuple[str, dict]:
     if metrics["balanced_time_at_end"] < BALANCED_TIME or metrics["final_com_speed"] >= STILL_SPEED:
         return "not_balanced", metrics
     return "success", metrics
+
+
+def format_table_1(trajectory) -> str:
+    """Table 1 as text: per row our value, Takei's mean [min, max], the 1995 simulation, whether
+    ours is inside the human range; and per contact the impulse-momentum check."""
+    measured = table_1(trajectory)
+    rows = measured["rows"]
+    meta = trajectory.meta
+    apparatus = ("the 1987 women's horse", "the FIG table")[int(round(meta["params"]["apparatus"]))]
+    lines = [f"Table 1 (Hodgins et al. 1995): the {meta['character']} vaulting {apparatus}",
+             f"{'variable':28s} {'ours':>9s} {'Takei mean':>10s} {'[min, max]':>16s} {'1995 sim':>9s}  in range"]
+    mass = measured["mass"]
+    m0, lo, hi, sim = TAKEI_MASS
+    lines.append(f"{'mass (kg)':28s} {mass:9.2f} {m0:10.2f} {f'[{lo:g}, {hi:g}]':>16s} {sim:9.2f}  {lo <= mass <= hi}")
+    for name, unit, mean, lo, hi, sim in TABLE_1:
+        ours = rows[name]
+        value = "   (none)" if ours is None else f"{ours:9.3f}"
+        inside = "-" if ours is None else str(lo <= ours <= hi)
+        lines.append(f"{f'{name} ({unit})':28s} {value} {mean:10.3f} {f'[{lo:g}, {hi:g}]':>16s} {sim:9.3f}  {inside}")
+    lines.append("impulse-momentum (mean vertical force against m (dv_z / T + g)):")
+    for name, check in measured["impulse_momentum"].items():
+        lines.append(f"  {name}: integral F_z dt / T = {check['mean_force']:.0f} N, m (dv_z / T + g) = "
+                     f"{check['momentum_force']:.0f} N, difference {100 * check['relative_difference']:.1f} %")
+    return "\n".join(lines)
+
+
+def main(argv=None) -> int:
+    from ...simulate import RunRequest, run
+    parser = argparse.ArgumentParser(prog="python -m sim_core report vault", description=__doc__.split("\n\n")[0])
+    parser.add_argument("--character", default="woman")
+    parser.add_argument("--apparatus", default="horse_1987", choices=("horse_1987", "table"))
+    parser.add_argument("--out", default=None, help="also write the trajectory (.npz)")
+    args = parser.parse_args(argv)
+    trajectory = run(RunRequest("vault", args.character, params={"apparatus": args.apparatus}))
+    if args.out:
+        trajectory.save(args.out)
+    print(format_table_1(trajectory))
+    metrics = trajectory.meta["metrics"]
+    print(f"outcome: {trajectory.meta['outcome']}; rotation {metrics['rotation']:.2f} rad "
+          f"({metrics['somersaults']:.2f} somersaults); feet first: {metrics.get('feet_first')}; "
+          f"peak landing force {metrics.get('peak_landing_body_weights', float('nan')):.1f} body weights; "
+          f"fell at {metrics.get('fall_time')} s")
+    return 0
