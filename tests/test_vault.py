@@ -1,0 +1,133 @@
+"""The handspring vault (issue 31; Hodgins et al. 1995), measured off the simulation: the seed's start,
+the six states in order, contact forces with the board, the horse and the mat in the trajectory,
+Table 1's rows with their impulse-momentum check, feet first on the mat, no force but gravity,
+contacts and servos, replay bit for bit, and the refusal of a run-up speed it does not handle.
+
+What it does not do yet (docs/vault.md): she falls on the landing, so the balance, the gesture and
+the bow are not reached (the xfail below records it)."""
+import math
+
+import numpy as np
+import pytest
+
+from sim_core.errors import ParameterError
+from sim_core.simulate import RunRequest, largest_difference, replay, run
+from sim_core.skills.vault.behaviour import CONSTANTS
+from sim_core.skills.vault.report import PEAK_LANDING_LIMIT, TABLE_1, format_table_1, table_1
+from sim_core.world.apparatus import BOARD_TOP
+
+STATES = ["hurdle", "board", "first_flight", "horse", "second_flight", "landing"]
+
+
+@pytest.fixture(scope="module")
+def vault():
+    return run(RunRequest("vault", "woman"))
+
+
+def test_the_vault_starts_in_the_seeds_hurdle_flight(vault):
+    """Frame 0: the COM moving 6.75 m/s forward, 0.9 m above the board's top; logged as the start
+    state; no contact yet."""
+    a, meta = vault.arrays, vault.meta
+    assert a["com_vel"][0, 0] == pytest.approx(6.75, abs=1e-6)
+    assert a["com"][0, 2] - BOARD_TOP == pytest.approx(CONSTANTS.start_com_height, abs=1e-6)
+    skill = meta["start_state"]["skill"]
+    assert skill["state"] == "hurdle" and skill["com_velocity"][0] == 6.75 and skill["com_above_board"] == 0.9
+    assert not a["ground_contact"][0].any()
+
+
+def test_the_six_states_run_once_each_in_order(vault):
+    names = [name for _, name in vault.meta["phase_events"]]
+    order = [names.index(s) for s in STATES]
+    assert order == sorted(order)
+    assert all(names.count(s) == 1 for s in STATES)
+    assert "max_deflection" in names          # the knees extend at the board's maximum deflection
+
+
+def test_the_trajectory_records_the_board_horse_and_mat_forces(vault):
+    """contact_force has a column per apparatus; the board, the horse and the mat each push on her
+    in their phase (so Table 1 can be recomputed from the file)."""
+    geoms = vault.meta["world_geoms"]
+    force = vault.arrays["contact_force"].sum(axis=1)
+    for name in ("springboard", "vault_table", "landing_mat"):
+        assert force[:, geoms.index(name), 2].max() > 100.0, name
+    phases = vault.meta["metrics"]["phases"]
+    assert phases["board"][1] <= phases["horse"][0] < phases["horse"][1] <= phases["mat"][0]
+
+
+def test_table_1_rows_and_their_impulse_momentum_consistency(vault):
+    """Every row is measured; the board contact, first flight, horse contact, the board's and the
+    horse's mean vertical force and the vertical velocities are inside Takei's range, and each
+    contact's mean vertical force (integral F_z dt / T) agrees with m (dv_z / T + g) within 5 %
+    (TARGETS.md V4). Rows outside the range are listed in docs/vault.md."""
+    measured = table_1(vault)
+    rows = measured["rows"]
+    print(format_table_1(vault))
+    assert all(rows[name] is not None for name, *_ in TABLE_1)
+    ranges = {name: (lo, hi) for name, _, _, lo, hi, _ in TABLE_1}
+    for name in ("board contact", "first flight", "horse contact", "vz board touchdown", "vz board liftoff",
+                 "vz horse touchdown", "vz horse liftoff", "mean vertical force board", "mean vertical force horse"):
+        lo, hi = ranges[name]
+        assert lo <= rows[name] <= hi, (name, rows[name])
+    for contact in ("board", "horse"):
+        assert measured["impulse_momentum"][contact]["relative_difference"] < 0.05, contact
+    assert rows["vx board liftoff"] == pytest.approx(rows["vx horse touchdown"], abs=0.3)   # flight: no horizontal force
+
+
+def test_she_turns_over_the_horse_and_lands_feet_first_softly(vault):
+    """At the mat touchdown the body has turned most of a forward somersault; the first bodies on
+    the mat are feet; the peak landing force is inside the dismount band (<= 11.6 body weights)."""
+    m = vault.meta["metrics"]
+    assert m["feet_first"], m["first_on_mat"]
+    assert 1.5 * math.pi < m["rotation_at_touchdown"] < 2 * math.pi + 0.5
+    assert m["peak_landing_body_weights"] <= PEAK_LANDING_LIMIT
+
+
+def test_only_gravity_contacts_and_servos_move_her(vault):
+    """No push (xfrc_applied) at any frame, and the trajectory's logged edits are only servo gains."""
+    assert not np.any(vault.arrays["push_force"])
+    fields = vault.meta["edit_fields"]
+    edited = {fields[int(f)] for f in vault.arrays["edit_field"]}
+    assert edited <= {"actuator_gainprm", "actuator_biasprm"}, edited
+
+
+def test_shoulders_and_wrists_have_no_torque_on_the_horse(vault):
+    """From the horse touchdown to the second flight the shoulder and wrist servos' gains (kp and
+    kv) are zero in the edit log, so their actuator force is 0; the elbows are stiffened (straight)."""
+    import mujoco
+    model = mujoco.MjModel.from_xml_string(vault.meta["model_xml"])
+    a, meta = vault.arrays, vault.meta
+    rate = meta["control_rate"]
+    start = next(t for t, name in meta["phase_events"] if name == "horse")
+    end = next(t for t, name in meta["phase_events"] if name == "second_flight")
+    gain = {k: model.actuator_gainprm[:, 0].copy() for k in ("kp",)}["kp"]
+    ncol = model.actuator_gainprm.shape[1]
+    field = meta["edit_fields"].index("actuator_gainprm")
+    for tick, f, index, value in zip(a["edit_tick"], a["edit_field"], a["edit_index"], a["edit_value"]):
+        if f == field and tick <= round(start * rate) and int(index) % ncol == 0:
+            gain[int(index) // ncol] = value
+    names = meta["dof_names"]
+    limp = [i for i, n in enumerate(names) if n.startswith(("shoulder", "wrist"))]
+    elbows = [names.index("elbow_r_z"), names.index("elbow_l_z")]
+    assert end > start and len(limp) == 10
+    assert np.all(gain[limp] == 0.0)
+    assert np.all(gain[elbows] > model.actuator_gainprm[elbows, 0])
+    later = [t for t, f, i in zip(a["edit_tick"], a["edit_field"], a["edit_index"])
+             if f == field and round(start * rate) < t < round(end * rate) and int(i) // ncol in limp]
+    assert not later
+
+
+def test_the_vault_replays_bit_for_bit(vault):
+    assert largest_difference(vault, replay(vault)) == 0.0
+
+
+@pytest.mark.parametrize("speed", [5.0, 8.0])
+def test_a_run_up_speed_outside_the_handled_range_is_refused(speed):
+    low, high = CONSTANTS.handled_speed
+    with pytest.raises(ParameterError, match=rf"runup_speed={speed:g} m/s is outside .* allowed range is \[{low:g}, {high:g}\]"):
+        run(RunRequest("vault", "woman", params={"runup_speed": speed}, duration=0.1))
+
+
+@pytest.mark.xfail(strict=True, reason="the landing falls: the soft mat bottoms out and the forward spin tips her "
+                                        "(docs/vault.md, what is left)")
+def test_she_ends_standing_balanced(vault):
+    assert vault.meta["outcome"] == "success", (vault.meta["outcome"], vault.meta["metrics"].get("fall_time"))
