@@ -324,6 +324,7 @@ class Vault(Sequence):
         body = ctx.actor.body_id
         self.pelvis, self.chest = body("PELVIS"), body("CHEST1")
         self.shoulders = [body("UARMR"), body("UARML")]
+        self.shoulder_range = m.jnt_range[[ctx.actor.joint_id("shoulder_r_z"), ctx.actor.joint_id("shoulder_l_z")]]
         self._last_raw = 0.0
         self._pitch = 0.0
         self._pitch = self._last_raw = math.atan2(*(d.xpos[self.chest] - d.xpos[self.pelvis])[[0, 2]])
@@ -412,7 +413,7 @@ class Vault(Sequence):
             gamma = lam + phi
             goals.append(gamma if side == "r" else -gamma)
         i = s.indices(["shoulder_r_z", "shoulder_l_z"])
-        s.start[i] = s.goal[i] = np.clip(goals, [-1.0, -3.14159], [3.14159, 1.0])
+        s.start[i] = s.goal[i] = np.clip(goals, self.shoulder_range[:, 0], self.shoulder_range[:, 1])
         s.t0[i] = t
 
     def update(self, t: float) -> None:
