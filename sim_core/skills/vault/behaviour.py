@@ -1,5 +1,4 @@
-"""The handspring vault (Hodgins et al. 1995, [A] 146-164): six states after the seed, then balance
-and a bow.
+"""The handspring vault (Hodgins et al. 1995, [A] 146-164): the seed's six states, then balance.
 
 1. hurdle     - the run starts in the flight before the board (the seed's initial state: forward
                 6.75 m/s, the COM 0.9 m above the board's top, set as the initial qpos/qvel and
@@ -20,13 +19,13 @@ and a bow.
                 body over the hands.
 5. second flight - a layout (straight body, arms overhead), the feet a little apart, and when the
                 body has nearly turned upright the landing's leg placement (control/leap.py Landing).
-6. landing    - on the mat: knees and waist absorb (Landing); when the COM passes over the centre
-                of the feet the balance controller takes over; then she stands, raises the arms in
-                a gesture and bows.
+6. landing    - on the mat: knees and waist absorb (Landing), then the balance controller. (The
+                seed's switch when the COM passes over the feet's centre, the gesture and the bow
+                are not built: she falls in the landing, docs/vault.md.)
 
 Nothing but gravity, the contacts (board, horse, mat) and the joint servos moves her. The settings
 per character come from ``sim_core/tuned/tables/vault_<character>.json`` and the shared design values
-(apparatus layout, the seed's start, the gesture and the bow) from ``vault_any.json``'s constants.
+(apparatus layout, the seed's start) from ``vault_any.json``'s constants.
 """
 from __future__ import annotations
 
@@ -37,10 +36,8 @@ import mujoco
 import numpy as np
 
 from ...ballistics import GRAVITY
-from ...control.balance import Balance
 from ...control.behaviour import Behaviour, ControlContext, register
 from ...control.leap import Landing, balance_after_landing, run_strength
-from ...control.measure import pitch_of
 from ...control.sequencer import Sequence, Step
 from ...control.tumble import FlightRotation, both_sides
 from ...control.tuned import uncalibrated
@@ -65,13 +62,6 @@ VAULT_CONSTANTS = Schema(
     constant("mat_size", "m", 0.5, 20.0, "the landing mat's length and width"),
     constant("handled_speed", "m/s", 0.0, 12.0, "the run-up speeds (board touchdown) the controller handles: [low, high]"),
     constant("servo_move", "s", 0.005, 1.0, "the servo move of a step's posture change where no setting names one"),
-    constant("gesture", "rad", -3.2, 3.2, "the gesture of success: shoulder flexion of both arms (raised up and back)"),
-    constant("gesture_time", "s", 0.1, 5.0, "the arms' move into the gesture and back"),
-    constant("gesture_hold", "s", 0.0, 5.0, "the gesture is held this long"),
-    constant("bow_pitch", "rad", 0.0, 1.5, "the bow: the torso's forward pitch"),
-    constant("bow_time", "s", 0.1, 5.0, "the move into the bow and back up"),
-    constant("bow_hold", "s", 0.0, 5.0, "the bow is held this long"),
-    constant("stand_settle", "s", 0.0, 5.0, "standing this long after the balance takes over before the gesture"),
     constant("contact_force", "N", 0.0, 200.0, "a contact with an apparatus pushing this hard counts as touching"),
 )
 CONSTANTS = read_constants("vault", VAULT_CONSTANTS)
@@ -215,7 +205,7 @@ class Vault(Sequence):
     name = "vault"
     world_frame = True             # the apparatus stands along +X from the origin
     summary = ("Handspring vault (Hodgins et al. 1995): hurdle, springboard, first flight (eq. 12), hands on the "
-               "horse, layout second flight, landing on the mat, balance, gesture and bow.")
+               "horse, layout second flight, landing on the mat, balance.")
     default_duration = 6.0
     settings_schema = VAULT_SETTINGS
     schema = SkillSchema(
