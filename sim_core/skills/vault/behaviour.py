@@ -47,7 +47,7 @@ from ...tuned import TableType, keyed, load, register as register_table
 from ...tuned.constants import constant, constant_rows, read_constants, with_constants
 from ...tuned.settings import SkillSchema, ranged as setting
 from ...world.apparatus import (BOARD_LENGTH, BOARD_TOP, HORSE_1987_HEIGHT, HORSE_1987_LENGTH, HORSE_1987_WIDTH,
-                                LANDING_MAT_THICKNESS, PROP_BODY_PREFIX, VAULT_TABLE_HEIGHT_MEN,
+                                PROP_BODY_PREFIX, VAULT_TABLE_HEIGHT_MEN,
                                 VAULT_TABLE_HEIGHT_WOMEN, VAULT_TABLE_LENGTH, VAULT_TABLE_WIDTH)
 
 # the vault's hand-set design values: data, vault_any.json's "constants" (docs/tables.md)
@@ -60,6 +60,7 @@ VAULT_CONSTANTS = Schema(
     constant("horse_gap", "m", 0.0, 3.0, "the horse's near edge this far ahead of the board's front edge"),
     constant("mat_gap", "m", 0.0, 3.0, "the landing mat's near edge this far beyond the horse's far edge"),
     constant("mat_size", "m", 0.5, 20.0, "the landing mat's length and width"),
+    constant("mat_thickness", "m", 0.05, 0.5, "the landing mat's thickness"),
     constant("handled_speed", "m/s", 0.0, 12.0, "the run-up speeds (board touchdown) the controller handles: [low, high]"),
     constant("servo_move", "s", 0.005, 1.0, "the servo move of a step's posture change where no setting names one"),
     constant("contact_force", "N", 0.0, 200.0, "a contact with an apparatus pushing this hard counts as touching"),
@@ -100,6 +101,15 @@ VAULT_SETTINGS = Schema(
     setting("foot_delta", "m", -0.3, 0.3, "landing: foot servo delta (the landing's placement ahead of the capture point)"),
     setting("landing_foot_lead_time", "s", 0.0, 0.6, "landing: the feet land this many seconds of COM travel ahead"),
     setting("spin_placement", "s/m", 0.0, 0.5, "landing: feet placed this factor x (angular momentum / mass) against the spin"),
+    setting("absorb_kp", "1", 0.0, 2.0, "after the touchdown: gain factor of the knee and hip servos (they give)"),
+    setting("absorb_kv", "1", 0.0, 10.0, "after the touchdown: damping factor of the knee and hip servos"),
+    setting("absorb_knee", "rad", 0.0, 1.5, "the knees' targets this much deeper than at the touchdown"),
+    setting("absorb_hip", "rad", 0.0, 1.5, "the hips' targets this much more flexed than at the touchdown (the waist gives)"),
+    setting("absorb_com_kp", "rad/m", 0.0, 20.0, "ankle offset per metre of the COM ahead of the feet's middle while absorbing"),
+    setting("absorb_com_kv", "rad s/m", 0.0, 10.0, "ankle offset per m/s of the COM's forward speed while absorbing"),
+    setting("over_feet", "m", 0.0, 0.3, "the balance takes over once the COM is at most this far behind the feet's middle ..."),
+    setting("settled_speed", "m/s", 0.0, 2.0, "... and moves slower than this"),
+    setting("absorb_max", "s", 0.05, 3.0, "... or this long after the touchdown"),
     setting("landing_blend", "s", 0.0, 0.3, "landing: the joint targets blend in from the layout over this time"),
 )
 
@@ -141,7 +151,7 @@ def apparatus_layout(params: dict, character) -> dict:
     mat_length, mat_width = CONSTANTS.mat_size
     return {"springboard": (board_x, 0.0), "vault_table": (near + length / 2, 0.0, height, length, width),
             "landing_mat": (far + CONSTANTS.mat_gap + mat_length / 2, 0.0, mat_length, mat_width,
-                            LANDING_MAT_THICKNESS),
+                            CONSTANTS.mat_thickness),
             "near_edge": near, "far_edge": far, "height": height}
 
 
@@ -198,6 +208,68 @@ class PoseHold(Behaviour):
     def update(self, t: float) -> None:
         if self.law is not None:
             self.law(t)
+
+
+class MatAbsorb(Behaviour):
+    """The landing on the mat after the touchdown ([A] 162): the knees and the waist (hips) give
+    as dampers - their servos softened (``absorb_kp``) and damped (``absorb_kv``), their targets a
+    little deeper than where they touched down - while the ankles servo the COM over the middle of
+    the feet (eq. 7.1's law, within what the feet can take) and keep the feet flat. It hands over
+    to the balance controller once the COM passes over the middle of the feet (the seed's switch)
+    and has slowed, or after ``absorb_max``."""
+
+    schema = Schema()
+
+    def __init__(self, ctx: ControlContext, cfg: dict, landing: Landing):
+        super().__init__({}, ctx)
+        self.cfg, self.landing = cfg, landing
+        body = ctx.actor.body_id
+        self.pelvis, self.feet = body("PELVIS"), [body("FOOTR"), body("FOOTL")]
+        s = ctx.servos
+        self.joints = {side: {k: s.index[f"{j}_{side}_{a}"] for k, (j, a) in
+                              {"hip": ("hip", "y"), "knee": ("knee", "y"), "ankle": ("ankle", "y")}.items()}
+                       for side in "rl"}
+        self.give = s.indices([f"{j}_{side}_y" for j in ("hip", "knee") for side in "rl"])
+        self.ankle_front, self.ankle_back = landing.ankle_front, landing.ankle_back
+        self.over_feet = False
+
+    def start(self, t: float) -> None:
+        s, c = self.ctx.servos, self.cfg
+        s.offset[:] = 0.0
+        self.t0 = t
+        targets = s.angles().copy()
+        for side in "rl":
+            j = self.joints[side]
+            targets[j["knee"]] += c["absorb_knee"]
+            targets[j["hip"]] -= c["absorb_hip"]
+        self.base = targets
+        s.hold(targets, t)
+        s.set_gains(self.give, s.default_kp[self.give] * c["absorb_kp"], s.default_kv[self.give] * c["absorb_kv"])
+
+    def com_from_feet(self) -> tuple[float, float]:
+        """The COM's distance ahead of the middle of the supporting feet (m) and its forward speed."""
+        d = self.ctx.data
+        points = self.landing.airborne.support.supporting_points(d)
+        com = d.subtree_com[self.pelvis]
+        return float(com[0] - 0.5 * (points[:, 0].min() + points[:, 0].max())), float(d.subtree_linvel[self.pelvis][0])
+
+    def update(self, t: float) -> None:
+        d, s, c = self.ctx.data, self.ctx.servos, self.cfg
+        ahead, speed = self.com_from_feet()
+        ankle = min(max(c["absorb_com_kp"] * ahead + c["absorb_com_kv"] * speed, -self.ankle_back), self.ankle_front)
+        targets = self.base.copy()
+        angles = s.angles()
+        for k, side in enumerate("rl"):
+            f = d.xmat[self.feet[k]]
+            foot_pitch = math.atan2(-float(f[6]), float(f[8]))
+            targets[self.joints[side]["ankle"]] = angles[self.joints[side]["ankle"]] - foot_pitch + ankle
+        s.hold(targets, t)
+        if ahead >= -self.cfg["over_feet"] and abs(speed) < self.cfg["settled_speed"]:
+            self.over_feet = True
+
+    @property
+    def finished(self) -> bool:
+        return self.over_feet
 
 
 @register
@@ -310,7 +382,7 @@ class Vault(Sequence):
         c = self.cfg = self.settings_for(self.params, ctx.character.name, run_strength(ctx))
         layout = apparatus_layout(self.params, ctx.character)
         self.hand_goal = np.array([layout["near_edge"] + c["hand_ahead"], 0.0, layout["height"]])
-        self.mat_top = LANDING_MAT_THICKNESS
+        self.mat_top = CONSTANTS.mat_thickness
         body = ctx.actor.body_id
         self.pelvis, self.chest = body("PELVIS"), body("CHEST1")
         self.shoulders = [body("UARMR"), body("UARML")]
@@ -369,8 +441,10 @@ class Vault(Sequence):
             Step("first_flight", first_flight, lambda b, t: self.on_horse.touching(d)),
             Step("horse", horse, lambda b, t: not self.on_horse.touching(d)),
             Step("second_flight", second_flight, ready_to_land),
-            Step("landing", land, lambda b, t: b.finished),
-            Step("balance", lambda t: balance_after_landing(ctx, self.previous)),
+            Step("landing", land, lambda b, t: b.stage != "flight"),
+            Step("absorb", lambda t: MatAbsorb(ctx, c, self.previous),
+                 lambda b, t: b.finished or t - b.t0 > c["absorb_max"]),
+            Step("balance", lambda t: balance_after_landing(ctx, self.previous.landing)),
         ]
 
     def board_law(self, t: float) -> None:

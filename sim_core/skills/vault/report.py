@@ -22,6 +22,8 @@ STILL_SPEED = 0.1                 # m/s: TARGETS.md "still"
 ROTATION_TOLERANCE = 0.5          # rad: one somersault is 2 pi within this (issue 31)
 PEAK_LANDING_LIMIT = 11.6         # body weights: the dismount band's top ([T] 481, Ozguven & Berme)
 CONTACT_GAP = 0.015               # s: a contact broken for at most this long is one contact (a bounce)
+SHIN_BODIES = ("LLEGR", "LLEGL")  # the lower legs (their body origin is the knee)
+KNEELING_HEIGHT = 0.15            # m: a knee this low above the mat is a kneel
 FALLEN_PELVIS = 0.35              # m: the pelvis this low above the mat after the landing is a fall
 BALANCED_TIME = 2.0               # s: standing balanced at least this long at the end (TARGETS.md V7, ours)
 
@@ -160,14 +162,25 @@ def vault_assess(trajectory) -> tuple[str, dict]:
     metrics["first_on_mat"] = [names[b] for b in touching]
     metrics["feet_first"] = bool(len(touching)) and all(names[b] in FOOT_BODIES for b in touching)
     metrics["peak_landing_body_weights"] = float(mat_force[first:, :, 2].sum(axis=1).max() / weight)
+    # a fall after the landing: a body but the feet on the mat or the floor - except the shins while
+    # the knees are well above the mat (the feet sink into the mat and its top closes round the
+    # ankles, where the shin's capsule ends; a shin on the mat with the knee low is a kneel) - or
+    # the pelvis low
+    mat_top = meta["world"]["landing_mat"][4]
+    shins = [names.index(n) for n in SHIN_BODIES]
+    knee_low = a["body_pos"][first:, shins, 2] - mat_top < KNEELING_HEIGHT
+    after = a["ground_contact"][first:].copy()
+    after[:, shins] &= knee_low
     allowed = np.array([n in FOOT_BODIES for n in names])
-    after = a["ground_contact"][first:]
     bad = np.flatnonzero((after & ~allowed).any(axis=1))
     pelvis_z = a["body_pos"][first:, names.index("PELVIS"), 2]
-    mat_top = meta["world"]["landing_mat"][4]
     low = np.flatnonzero(pelvis_z - mat_top < FALLEN_PELVIS)
     metrics["fell"] = bool(len(bad) or len(low))
     metrics["fall_time"] = float(t[first + min([*bad[:1], *low[:1]])]) if metrics["fell"] else None
+    # the feet through the mat onto the floor under it: what she then stands on is not the mat
+    floor = a["contact_force"][first:, :, meta["world_geoms"].index("ground"), 2].sum(axis=1)
+    metrics["floor_under_mat_peak"] = float(floor.max())
+    metrics["through_the_mat"] = bool(floor.max() > 0.0)
     metrics["final_com_speed"] = float(np.linalg.norm(a["com_vel"][-1]))
     feet = a["support_points"]
     com = a["com"]
@@ -186,6 +199,8 @@ def vault_assess(trajectory) -> tuple[str, dict]:
         return "not_feet_first", metrics
     if abs(metrics["rotation"] - 2 * math.pi) > ROTATION_TOLERANCE:
         return "wrong_rotation", metrics
+    if metrics["through_the_mat"]:
+        return "through_the_mat", metrics
     if metrics["peak_landing_body_weights"] > PEAK_LANDING_LIMIT:
         return "hard_landing", metrics
     if metrics["balanced_time_at_end"] < BALANCED_TIME or metrics["final_com_speed"] >= STILL_SPEED:
@@ -232,5 +247,7 @@ def main(argv=None) -> int:
     print(f"outcome: {trajectory.meta['outcome']}; rotation {metrics['rotation']:.2f} rad "
           f"({metrics['somersaults']:.2f} somersaults); feet first: {metrics.get('feet_first')}; "
           f"peak landing force {metrics.get('peak_landing_body_weights', float('nan')):.1f} body weights; "
-          f"fell at {metrics.get('fall_time')} s")
+          f"fell at {metrics.get('fall_time')} s; feet through the mat onto the floor: {metrics.get('through_the_mat')} "
+          f"(floor force up to {metrics.get('floor_under_mat_peak', 0.0):.0f} N); balanced at the end for "
+          f"{metrics.get('balanced_time_at_end', 0.0):.2f} s")
     return 0
