@@ -104,9 +104,16 @@ VAULT_SETTINGS = Schema(
     setting("absorb_kp", "1", 0.0, 2.0, "after the touchdown: gain factor of the knee and hip servos (they give)"),
     setting("absorb_kv", "1", 0.0, 10.0, "after the touchdown: damping factor of the knee and hip servos"),
     setting("absorb_knee", "rad", 0.0, 1.5, "the knees' targets this much deeper than at the touchdown"),
-    setting("absorb_hip", "rad", 0.0, 1.5, "the hips' targets this much more flexed than at the touchdown (the waist gives)"),
-    setting("absorb_com_kp", "rad/m", 0.0, 20.0, "ankle offset per metre of the COM ahead of the feet's middle while absorbing"),
-    setting("absorb_com_kv", "rad s/m", 0.0, 10.0, "ankle offset per m/s of the COM's forward speed while absorbing"),
+    setting("absorb_hip_gain", "1", 0.0, 5.0, "after the touchdown: gain factor of the hip servos (the waist)"),
+    setting("absorb_trunk", "rad", -0.5, 1.5, "after the touchdown the hips servo the pelvis to lean this far forward"),
+    setting("absorb_trunk_kp", "rad/m", -10.0, 10.0,
+            "... less this much per metre of the capture point ahead of the feet's middle"),
+    setting("absorb_min_height", "m", 0.05, 1.0, "the capture point's COM height is at least this (a guard)"),
+    setting("settled_spin", "kg m²/s", 0.0, 50.0, "... and its angular momentum about the lateral axis is below this"),
+    setting("absorb_com_kp", "rad/m", -20.0, 20.0, "ankle offset per metre of the COM ahead of the feet's middle while absorbing"),
+    setting("absorb_com_kv", "rad s/m", -10.0, 10.0, "ankle offset per m/s of the COM's forward speed while absorbing"),
+    setting("absorb_side_kp", "rad/m", -20.0, 20.0, "ankle roll per metre of the COM left of the feet's middle while absorbing"),
+    setting("absorb_side_kv", "rad s/m", -10.0, 10.0, "ankle roll per m/s of the COM's leftward speed while absorbing"),
     setting("over_feet", "m", 0.0, 0.3, "the balance takes over once the COM is at most this far behind the feet's middle ..."),
     setting("settled_speed", "m/s", 0.0, 2.0, "... and moves slower than this"),
     setting("absorb_max", "s", 0.05, 3.0, "... or this long after the touchdown"),
@@ -227,9 +234,11 @@ class MatAbsorb(Behaviour):
         self.pelvis, self.feet = body("PELVIS"), [body("FOOTR"), body("FOOTL")]
         s = ctx.servos
         self.joints = {side: {k: s.index[f"{j}_{side}_{a}"] for k, (j, a) in
-                              {"hip": ("hip", "y"), "knee": ("knee", "y"), "ankle": ("ankle", "y")}.items()}
+                              {"hip": ("hip", "y"), "knee": ("knee", "y"), "ankle": ("ankle", "y"),
+                               "ankle_x": ("ankle", "x")}.items()}
                        for side in "rl"}
-        self.give = s.indices([f"{j}_{side}_y" for j in ("hip", "knee") for side in "rl"])
+        self.knees = s.indices(["knee_r_y", "knee_l_y"])
+        self.hips = s.indices(["hip_r_y", "hip_l_y"])
         self.ankle_front, self.ankle_back = landing.ankle_front, landing.ankle_back
         self.over_feet = False
 
@@ -239,19 +248,20 @@ class MatAbsorb(Behaviour):
         self.t0 = t
         targets = s.angles().copy()
         for side in "rl":
-            j = self.joints[side]
-            targets[j["knee"]] += c["absorb_knee"]
-            targets[j["hip"]] -= c["absorb_hip"]
+            targets[self.joints[side]["knee"]] += c["absorb_knee"]
         self.base = targets
         s.hold(targets, t)
-        s.set_gains(self.give, s.default_kp[self.give] * c["absorb_kp"], s.default_kv[self.give] * c["absorb_kv"])
+        s.set_gains(self.knees, s.default_kp[self.knees] * c["absorb_kp"], s.default_kv[self.knees] * c["absorb_kv"])
+        s.set_gains(self.hips, s.default_kp[self.hips] * c["absorb_hip_gain"], s.default_kv[self.hips] * c["absorb_hip_gain"])
 
-    def com_from_feet(self) -> tuple[float, float]:
-        """The COM's distance ahead of the middle of the supporting feet (m) and its forward speed."""
+    def com_from_feet(self, axis: int = 0) -> tuple[float, float]:
+        """The COM's distance ahead of (axis 0; axis 1: left of) the middle of the supporting feet
+        (m) and its speed that way (the vault runs along +X)."""
         d = self.ctx.data
         points = self.landing.airborne.support.supporting_points(d)
         com = d.subtree_com[self.pelvis]
-        return float(com[0] - 0.5 * (points[:, 0].min() + points[:, 0].max())), float(d.subtree_linvel[self.pelvis][0])
+        middle = 0.5 * (points[:, axis].min() + points[:, axis].max())
+        return float(com[axis] - middle), float(d.subtree_linvel[self.pelvis][axis])
 
     def update(self, t: float) -> None:
         d, s, c = self.ctx.data, self.ctx.servos, self.cfg
@@ -259,12 +269,28 @@ class MatAbsorb(Behaviour):
         ankle = min(max(c["absorb_com_kp"] * ahead + c["absorb_com_kv"] * speed, -self.ankle_back), self.ankle_front)
         targets = self.base.copy()
         angles = s.angles()
+        p = d.xmat[self.pelvis]
+        # the capture point (the COM's place plus its speed times sqrt(h / g)) ahead of the feet's
+        # middle leans the trunk back, behind it forward
+        height = float(d.subtree_com[self.pelvis][2]) - float(self.landing.airborne.support.points(d)[:, 2].min())
+        capture = ahead + speed * math.sqrt(max(height, self.cfg["absorb_min_height"]) / GRAVITY)
+        trunk_error = (math.atan2(-float(p[6]), float(p[8]))                        # the pelvis's forward pitch
+                       - (c["absorb_trunk"] - c["absorb_trunk_kp"] * capture))
+        left, left_speed = self.com_from_feet(1)
+        sideways = c["absorb_side_kp"] * left + c["absorb_side_kv"] * left_speed
         for k, side in enumerate("rl"):
             f = d.xmat[self.feet[k]]
             foot_pitch = math.atan2(-float(f[6]), float(f[8]))
             targets[self.joints[side]["ankle"]] = angles[self.joints[side]["ankle"]] - foot_pitch + ankle
+            # sideways the ankles roll the feet flat and servo the COM between them the same way
+            foot_roll = math.atan2(float(f[7]), float(f[8]))
+            targets[self.joints[side]["ankle_x"]] = angles[self.joints[side]["ankle_x"]] - foot_roll - sideways
+            # the waist gives: the hips servo the trunk to lean absorb_trunk forward, whatever the legs do
+            targets[self.joints[side]["hip"]] = angles[self.joints[side]["hip"]] + trunk_error
         s.hold(targets, t)
-        if ahead >= -self.cfg["over_feet"] and abs(speed) < self.cfg["settled_speed"]:
+        spin = float(d.subtree_angmom[self.pelvis][1])
+        if (ahead >= -self.cfg["over_feet"] and abs(speed) < self.cfg["settled_speed"]
+                and abs(spin) < self.cfg["settled_spin"]):
             self.over_feet = True
 
     @property

@@ -177,9 +177,13 @@ def vault_assess(trajectory) -> tuple[str, dict]:
     low = np.flatnonzero(pelvis_z - mat_top < FALLEN_PELVIS)
     metrics["fell"] = bool(len(bad) or len(low))
     metrics["fall_time"] = float(t[first + min([*bad[:1], *low[:1]])]) if metrics["fell"] else None
-    # the feet through the mat onto the floor under it: what she then stands on is not the mat
-    floor = a["contact_force"][first:, :, meta["world_geoms"].index("ground"), 2].sum(axis=1)
+    # the feet through the mat onto the floor under it (until a fall, after which she may roll off
+    # the mat): what she then stands on is not the mat
+    feet = [names.index(n) for n in FOOT_BODIES]
+    until = first + min([*bad[:1], *low[:1]]) if metrics["fell"] else len(t)
+    floor = a["contact_force"][first:until + 1, feet, meta["world_geoms"].index("ground"), 2].sum(axis=1)
     metrics["floor_under_mat_peak"] = float(floor.max())
+    metrics["landing_sink"] = float(mat_top - a["support_points"][first:until + 1, :, 2].min())
     metrics["through_the_mat"] = bool(floor.max() > 0.0)
     metrics["final_com_speed"] = float(np.linalg.norm(a["com_vel"][-1]))
     feet = a["support_points"]
