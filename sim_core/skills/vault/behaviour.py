@@ -90,6 +90,9 @@ VAULT_SETTINGS = Schema(
     setting("open_pitch", "rad", 0.0, 4.0, "the first flight's pike opens once the body has pitched this far forward"),
     setting("open_time", "s", 0.01, 0.5, "the pike opens in this time"),
     setting("arm_gain", "1", 1.0, 10.0, "gain factor of the shoulder servos in the first flight (eq. 12)"),
+    setting("reach_shoulder_x", "rad", 1.0, 1.75,
+            "shoulder angle about the arm's forward axis in the first flight: the raised arms parallel, the hands "
+            "shoulder-width apart (the standing pose's 1.43 brings them together overhead)"),
     setting("wrist_extension", "rad", -1.2, 1.2, "wrist extension of the palms-down hands"),
     setting("elbow_gain", "1", 1.0, 20.0, "gain factor of the elbow servos on the horse (arms straight)"),
     setting("horse_hip", "rad", -1.0, 0.5, "hip angle on the horse (0: the layout)"),
@@ -436,7 +439,8 @@ class Vault(Sequence):
         def first_flight(t):
             s.set_gains(s.indices(list(legs)), s.default_kp[s.indices(list(legs))], s.default_kv[s.indices(list(legs))])
             return PoseHold(ctx, both_sides({"hip_*_y": c["flight_hip"], "knee_*_y": 0.0, "ankle_*_y": 0.5,
-                                             "elbow_*_z": 0.0, "wrist_*_x": c["wrist_extension"]}), CONSTANTS.servo_move,
+                                             "elbow_*_z": 0.0, "wrist_*_x": c["wrist_extension"],
+                                             "shoulder_*_x": c["reach_shoulder_x"]}), CONSTANTS.servo_move,
                             {n: c["arm_gain"] for n in arms_z}, law=lambda t: self.reach_law(t))
 
         def horse(t):
@@ -498,6 +502,8 @@ class Vault(Sequence):
             s.move_to(hips, np.array([self.cfg["horse_hip"]] * 2), self.cfg["open_time"], t)
         goals = []
         for k, side in enumerate("rl"):
+            # each hand's goal is on the horse straight ahead of its own shoulder (the hands land
+            # shoulder-width apart); lambda is in the shoulder's sagittal plane
             to_hand = self.hand_goal - d.xpos[self.shoulders[k]]
             lam = math.atan2(float(to_hand[0]), float(-to_hand[2]))       # from the downward vertical, + forward
             gamma = lam + phi
