@@ -117,6 +117,8 @@ VAULT_SETTINGS = Schema(
     setting("absorb_com_kv", "rad s/m", -10.0, 10.0, "ankle offset per m/s of the COM's forward speed while absorbing"),
     setting("absorb_side_kp", "rad/m", -20.0, 20.0, "ankle roll per metre of the COM left of the feet's middle while absorbing"),
     setting("absorb_side_kv", "rad s/m", -10.0, 10.0, "ankle roll per m/s of the COM's leftward speed while absorbing"),
+    setting("capture_after", "s", 0.0, 3.0, "... or, this long after the touchdown, once the capture point is ..."),
+    setting("capture_within", "m", 0.0, 0.3, "... within this of the feet's middle"),
     setting("over_feet", "m", 0.0, 0.3, "the balance takes over once the COM is at most this far behind the feet's middle ..."),
     setting("settled_speed", "m/s", 0.0, 2.0, "... and moves slower than this"),
     setting("absorb_max", "s", 0.05, 3.0, "... or this long after the touchdown"),
@@ -293,7 +295,8 @@ class MatAbsorb(Behaviour):
         s.hold(targets, t)
         spin = float(d.subtree_angmom[self.pelvis][1])
         if (ahead >= -self.cfg["over_feet"] and abs(speed) < self.cfg["settled_speed"]
-                and abs(spin) < self.cfg["settled_spin"]):
+                and abs(spin) < self.cfg["settled_spin"]) or (
+                t - self.t0 > self.cfg["capture_after"] and abs(capture) < self.cfg["capture_within"]):
             self.over_feet = True
 
     @property
