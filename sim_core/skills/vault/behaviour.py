@@ -39,6 +39,8 @@ from ...ballistics import GRAVITY
 from ...control.behaviour import Behaviour, ControlContext, register
 from ...control.leap import Landing, balance_after_landing, run_strength
 from ...control.sequencer import Sequence, Step
+from ...analysis import FOOT_BODIES
+from ..handspring.behaviour import HAND_BODIES, PoseMove
 from ...control.tumble import FlightRotation, both_sides
 from ...control.tuned import uncalibrated
 from ...errors import ParameterError
@@ -68,8 +70,6 @@ VAULT_CONSTANTS = Schema(
 CONSTANTS = read_constants("vault", VAULT_CONSTANTS)
 
 APPARATUS = ("horse_1987", "table")
-HAND_BODIES = ("HANDR", "HANDL")
-FOOT_BODIES = ("FOOTR", "FOOTL", "TOER", "TOEL")
 DEFLECTION_JOINT = PROP_BODY_PREFIX + "springboard/deflection"
 
 VAULT_SETTINGS = Schema(
@@ -97,7 +97,8 @@ VAULT_SETTINGS = Schema(
     setting("elbow_gain", "1", 1.0, 20.0, "gain factor of the elbow servos on the horse (arms straight)"),
     setting("horse_hip", "rad", -1.0, 0.5, "hip angle on the horse (0: the layout)"),
     setting("layout_arm", "rad", 0.0, 3.14, "shoulder flexion in the second flight's layout"),
-    setting("feet_apart", "rad", 0.0, 0.3, "hip abduction of each leg in the second flight (the feet a little apart)"),
+    setting("feet_apart", "rad", 0.0, 0.3,
+            "hip abduction of each leg in the second flight, until the landing places the legs (the feet a little apart)"),
     setting("landing_lean", "rad", 0.0, 2.0, "the landing's leg placement starts this far short of the upright"),
     setting("open_height", "m", 0.5, 2.0, "... or once the COM is this high above the mat, whichever is first"),
     setting("landing_knee_flexion", "rad", 0.0, 1.5, "knee bend held for the touchdown on the mat"),
@@ -195,27 +196,22 @@ class ApparatusTouch:
         return False
 
 
-class PoseHold(Behaviour):
-    """A step's posture: Hermite moves of some joints to named angles over ``move_time`` with some
-    servos' gains scaled (and some set to zero: ``limp``); every other target is held where it is.
-    ``law`` (optional): called every tick with t, for targets that follow the measured state."""
+class PoseLaw(PoseMove):
+    """The handspring's PoseMove (Hermite moves of some joints to named angles, some servos' gains
+    scaled, every other target held) with some servos limp (gain zero: no torque) and a ``law``
+    called every tick with t, for targets that follow the measured state (eq. 12, the board's push)."""
 
-    schema = Schema()
-
-    def __init__(self, ctx: ControlContext, goals: dict[str, float], move_time: float, gains: dict[str, float] | None = None,
-                 law=None):
-        super().__init__({}, ctx)
-        self.goals, self.move_time, self.gains, self.law = goals, move_time, gains or {}, law
+    def __init__(self, ctx: ControlContext, goals: dict[str, float], move_time: float, gain: float = 1.0,
+                 gain_joints: list[str] | None = None, limp: tuple[str, ...] = (), law=None):
+        super().__init__(ctx, goals, move_time, gain, gain_joints=[] if gain_joints is None else gain_joints)
+        self.limp, self.law = limp, law
 
     def start(self, t: float) -> None:
+        super().start(t)
         s = self.ctx.servos
-        s.offset[:] = 0.0
-        s.hold(s.smoothed_target(t), t)
-        if self.goals:
-            s.move_to(s.indices(list(self.goals)), np.array(list(self.goals.values())), self.move_time, t)
-        for name, factor in self.gains.items():
+        for name in self.limp:
             i = s.indices([name])
-            s.set_gains(i, s.default_kp[i] * factor, s.default_kv[i] * factor)
+            s.set_gains(i, 0.0, 0.0)
 
     def update(self, t: float) -> None:
         if self.law is not None:
@@ -426,34 +422,32 @@ class Vault(Sequence):
         p = ctx.actor.prefix
         self.on_board = ApparatusTouch(m, "springboard", FOOT_BODIES, p)
         self.on_horse = ApparatusTouch(m, "vault_table", HAND_BODIES, p)
-        self.on_mat = ApparatusTouch(m, "landing_mat", FOOT_BODIES, p)
         self.rotation = FlightRotation(m, d, ctx.actor)
         legs = both_sides({"hip_*_y": 1, "knee_*_y": 1, "ankle_*_y": 1})
         arms_z = ["shoulder_r_z", "shoulder_l_z"]
-        limp = {n: 0.0 for n in ("shoulder_r_z", "shoulder_l_z", "shoulder_r_x", "shoulder_l_x", "shoulder_r_y",
-                                 "shoulder_l_y", "wrist_r_x", "wrist_l_x", "wrist_r_y", "wrist_l_y")}
+        limp = ("shoulder_r_z", "shoulder_l_z", "shoulder_r_x", "shoulder_l_x", "shoulder_r_y", "shoulder_l_y",
+                "wrist_r_x", "wrist_l_x", "wrist_r_y", "wrist_l_y")
         self.pushed = self.deck_going_down = self.opened = False
 
         def board(t):
-            b = PoseHold(ctx, both_sides({"shoulder_*_z": c["board_arm"]}), c["board_arm_time"],
-                         {n: c["board_gain"] for n in legs}, law=lambda t: self.board_law(t))
-            return b
+            return PoseLaw(ctx, both_sides({"shoulder_*_z": c["board_arm"]}), c["board_arm_time"], c["board_gain"],
+                           list(legs), law=lambda t: self.board_law(t))
 
         def first_flight(t):
             s.set_gains(s.indices(list(legs)), s.default_kp[s.indices(list(legs))], s.default_kv[s.indices(list(legs))])
-            return PoseHold(ctx, both_sides({"hip_*_y": c["flight_hip"], "knee_*_y": 0.0, "ankle_*_y": 0.5,
-                                             "elbow_*_z": 0.0, "wrist_*_x": c["wrist_extension"],
-                                             "shoulder_*_x": c["reach_shoulder_x"]}), CONSTANTS.servo_move,
-                            {n: c["arm_gain"] for n in arms_z}, law=lambda t: self.reach_law(t))
+            return PoseLaw(ctx, both_sides({"hip_*_y": c["flight_hip"], "knee_*_y": 0.0, "ankle_*_y": 0.5,
+                                            "elbow_*_z": 0.0, "wrist_*_x": c["wrist_extension"],
+                                            "shoulder_*_x": c["reach_shoulder_x"]}), CONSTANTS.servo_move,
+                           c["arm_gain"], arms_z, law=lambda t: self.reach_law(t))
 
         def horse(t):
-            return PoseHold(ctx, both_sides({"hip_*_y": c["horse_hip"], "elbow_*_z": 0.0}), CONSTANTS.servo_move,
-                            {**limp, "elbow_r_z": c["elbow_gain"], "elbow_l_z": c["elbow_gain"]})
+            return PoseLaw(ctx, both_sides({"hip_*_y": c["horse_hip"], "elbow_*_z": 0.0}), CONSTANTS.servo_move,
+                           c["elbow_gain"], ["elbow_r_z", "elbow_l_z"], limp=limp)
 
         def second_flight(t):
             s.set_gains(np.arange(len(s.names)), s.default_kp, s.default_kv)
-            return PoseHold(ctx, both_sides({"hip_*_y": 0.0, "knee_*_y": 0.0, "shoulder_*_z": c["layout_arm"],
-                                             "hip_*_x": c["feet_apart"], "wrist_*_x": 0.0}), CONSTANTS.servo_move)
+            return PoseLaw(ctx, both_sides({"hip_*_y": 0.0, "knee_*_y": 0.0, "shoulder_*_z": c["layout_arm"],
+                                            "hip_*_x": c["feet_apart"], "wrist_*_x": 0.0}), CONSTANTS.servo_move)
 
         def ready_to_land(b, t):
             turned = self.body_pitch()
@@ -468,7 +462,7 @@ class Vault(Sequence):
                 spin_placement=c["spin_placement"], blend_time=c["landing_blend"])), ctx)
 
         return [
-            Step("hurdle", lambda t: PoseHold(ctx, {}, CONSTANTS.servo_move, {n: c["board_gain"] for n in legs}),
+            Step("hurdle", lambda t: PoseLaw(ctx, {}, CONSTANTS.servo_move, c["board_gain"], list(legs)),
                  lambda b, t: self.on_board.touching(d)),
             Step("board", board, lambda b, t: self.pushed and not self.on_board.touching(d)),
             Step("first_flight", first_flight, lambda b, t: self.on_horse.touching(d)),

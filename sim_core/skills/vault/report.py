@@ -13,11 +13,10 @@ import math
 
 import numpy as np
 
-from ...analysis import true_runs
+from ...analysis import FOOT_BODIES, true_runs
 from ...ballistics import GRAVITY
+from ..somersault.behaviour import pelvis_pitch
 
-FOOT_BODIES = ("FOOTR", "FOOTL", "TOER", "TOEL")
-HAND_BODIES = ("HANDR", "HANDL")
 STILL_SPEED = 0.1                 # m/s: TARGETS.md "still"
 ROTATION_TOLERANCE = 0.5          # rad: one somersault is 2 pi within this (issue 31)
 PEAK_LANDING_LIMIT = 11.6         # body weights: the dismount band's top ([T] 481, Ozguven & Berme)
@@ -127,13 +126,6 @@ def table_1(trajectory) -> dict:
     if "mat" in ph:
         rows["second flight"] = float(t[ph["mat"][0]] - t[ph["horse"][1]])
     return {"rows": rows, "impulse_momentum": checks, "mass": mass}
-
-
-def pelvis_pitch(trajectory) -> np.ndarray:
-    """Unwrapped forward pitch (rad) of the pelvis's long axis from vertical, per frame."""
-    a = trajectory.arrays
-    w, x, y, z = a["body_quat"][:, list(a["body_names"]).index("PELVIS")].T
-    return np.unwrap(np.arctan2(2 * (x * z + w * y), 1 - 2 * (x * x + y * y)))
 
 
 def vault_assess(trajectory) -> tuple[str, dict]:
