@@ -123,11 +123,25 @@ def test_shoulders_and_wrists_have_no_torque_on_the_horse(vault):
     assert not later
 
 
+def test_the_man_is_refused_in_one_line():
+    with pytest.raises(ParameterError, match=r"^the man has no vault settings with human torque limits"):
+        run(RunRequest("vault", "man", duration=0.1))
+
+
 def test_the_vault_replays_bit_for_bit(vault):
     assert largest_difference(vault, replay(vault)) == 0.0
 
 
-@pytest.mark.parametrize("speed", [5.0, 8.0])
+@pytest.mark.parametrize("speed", [6.6, 6.9])
+def test_inside_the_handled_speeds_she_gets_over_and_lands_feet_first(speed):
+    """The handled run-up speeds (vault_any.json's handled_speed) each get her over the horse onto
+    her feet, turned to within 1 rad of upright (she falls after, as at 6.75 m/s)."""
+    m = run(RunRequest("vault", "woman", params={"runup_speed": speed}, duration=2.0)).meta["metrics"]
+    assert set(m["phases"]) == {"board", "horse", "mat"} and m["feet_first"]
+    assert 2 * math.pi - 1.0 < m["rotation_at_touchdown"] < 2 * math.pi + 0.5
+
+
+@pytest.mark.parametrize("speed", [5.0, 7.2])
 def test_a_run_up_speed_outside_the_handled_range_is_refused(speed):
     low, high = CONSTANTS.handled_speed
     with pytest.raises(ParameterError, match=rf"runup_speed={speed:g} m/s is outside .* allowed range is \[{low:g}, {high:g}\]"):

@@ -42,7 +42,6 @@ from ...control.sequencer import Sequence, Step
 from ...analysis import FOOT_BODIES
 from ..handspring.behaviour import HAND_BODIES, PoseMove
 from ...control.tumble import FlightRotation, both_sides
-from ...control.tuned import uncalibrated
 from ...errors import ParameterError
 from ...schema import Choice, Parameter, Schema
 from ...tuned import TableType, keyed, load, register as register_table
@@ -386,9 +385,10 @@ class Vault(Sequence):
             return
         name, strength = self.ctx.character.name, run_strength(self.ctx)
         if calibrated(name, strength) is None:
-            raise uncalibrated(name, "handspring vault", strength,
-                               [f"{e['strength']} strength" for e in load_table(name)["vaults"]], None,
-                               "sim_core/tuned/tables/vault_<character>.json")
+            limits = "unlimited strength" if strength == "unlimited" else "human torque limits"
+            rows = [f"{e['strength']} strength" for e in load_table(name)["vaults"]]
+            raise ParameterError(f"the {name} has no vault settings with {limits} (sim_core/tuned/tables/vault_{name}.json: "
+                                 f"{', '.join(rows) or 'none'}); the vault is set for the woman with human torque limits")
 
     # ------------------------------------------------------------------ measurements
     def body_pitch(self) -> float:
