@@ -47,7 +47,7 @@ VAULT_HEIGHT_RANGE, VAULT_SIZE_RANGE = (0.8, 1.6), (0.2, 2.0)    # m: what is re
 # constant in acceleration space, and one of 0.16 s let a landing sink v * tau ~ 0.6 m, through the mat.
 LANDING_MAT_THICKNESS = 0.20
 LANDING_MAT_SOLREF = (0.02, 1.0)                  # time constant (s), critically damped (the floor's)
-LANDING_MAT_SOLIMP = (0.3, 0.95, 0.15, 0.5, 2.0)  # impedance 0.3 at the surface -> 0.95 at 15 cm deep
+LANDING_MAT_SOLIMP = (0.3, 0.95, 0.10, 0.5, 2.0)  # impedance 0.3 at the surface -> 0.95 at 10 cm deep
 MAT_THICKNESS_RANGE, MAT_SIZE_RANGE = (0.05, 0.5), (0.5, 20.0)
 MAX_POSITION = 1000.0
 

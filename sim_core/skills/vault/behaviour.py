@@ -122,6 +122,8 @@ VAULT_SETTINGS = Schema(
     setting("over_feet", "m", 0.0, 0.3, "the balance takes over once the COM is at most this far behind the feet's middle ..."),
     setting("settled_speed", "m/s", 0.0, 2.0, "... and moves slower than this"),
     setting("absorb_max", "s", 0.05, 3.0, "... or this long after the touchdown"),
+    setting("stand_time", "s", 0.2, 5.0, "the balance stands up from the landed crouch in this time"),
+    setting("stand_com_offset", "m", -0.25, 0.25, "... with the COM this far ahead (+) of the feet's middle"),
     setting("landing_blend", "s", 0.0, 0.3, "landing: the joint targets blend in from the layout over this time"),
 )
 
@@ -471,8 +473,19 @@ class Vault(Sequence):
             Step("landing", land, lambda b, t: b.stage != "flight"),
             Step("absorb", lambda t: MatAbsorb(ctx, c, self.previous),
                  lambda b, t: b.finished or t - b.t0 > c["absorb_max"]),
-            Step("balance", lambda t: balance_after_landing(ctx, self.previous.landing)),
+            Step("balance", lambda t: self.stand_up()),
         ]
+
+    def stand_up(self) -> Behaviour:
+        """The balance from the landed crouch (balance_after_landing), starting from the trunk's
+        pitch as it is - the waist gave in the landing, the trunk leans forward - and standing up
+        over ``stand_time``: a balance that started from an upright trunk snapped it up and threw
+        the COM."""
+        balance = balance_after_landing(self.ctx, self.previous.landing)
+        m = self.ctx.data.xmat[self.pelvis]
+        balance.from_pitch = math.atan2(-float(m[6]), float(m[8]))
+        balance.params = dict(balance.params, move_time=self.cfg["stand_time"], com_offset_x=self.cfg["stand_com_offset"])
+        return balance
 
     def board_law(self, t: float) -> None:
         """At the board's maximum deflection (its deck stops going down) the legs extend."""
