@@ -3,9 +3,7 @@ the six states in order, contact forces with the board, the horse and the mat in
 Table 1's rows with their impulse-momentum check, feet first on the mat, no force but gravity,
 contacts and servos, replay bit for bit, and the refusal of a run-up speed it does not handle.
 
-What it does not do yet (docs/vault.md): she lands and comes to rest over her feet, but falls back
-standing up from the crouch, 1.7 s after the touchdown (the xfail below records it), so the
-gesture and the bow are not reached."""
+She ends standing balanced (the outcome "success")."""
 import math
 
 import numpy as np
@@ -165,8 +163,6 @@ def test_the_landing_brings_the_com_to_rest_over_the_feet(vault):
     assert np.linalg.norm(a["com_vel"][k]) < 0.3 and abs(a["angmom"][k, 1]) < 3.0
 
 
-@pytest.mark.xfail(strict=True, reason="standing up from the landed crouch the balance lets her drift back: she falls "
-                                        "1.7 s after the touchdown (docs/vault.md, what is left)")
 def test_one_somersault_and_she_ends_standing_balanced(vault):
     """From the hurdle to the end the pelvis turns one forward somersault (2 pi within 0.5 rad); after
     the landing no body but the feet (and the shins while the feet are sunk into the mat, the knees

@@ -37,6 +37,7 @@ import numpy as np
 
 from ...ballistics import GRAVITY
 from ...control.behaviour import Behaviour, ControlContext, register
+from ...control.servo import hermite_scalar
 from ...control.leap import Landing, balance_after_landing, run_strength
 from ...control.sequencer import Sequence, Step
 from ...analysis import FOOT_BODIES
@@ -122,6 +123,8 @@ VAULT_SETTINGS = Schema(
     setting("over_feet", "m", 0.0, 0.3, "the balance takes over once the COM is at most this far behind the feet's middle ..."),
     setting("settled_speed", "m/s", 0.0, 2.0, "... and moves slower than this"),
     setting("absorb_max", "s", 0.05, 3.0, "... or this long after the touchdown"),
+    setting("rise_time", "s", 0.1, 5.0, "after the landing the knees straighten in this time before the balance"),
+    setting("rise_knee", "rad", 0.0, 1.5, "... to this knee bend"),
     setting("stand_time", "s", 0.2, 5.0, "the balance stands up from the landed crouch in this time"),
     setting("stand_com_offset", "m", -0.25, 0.25, "... with the COM this far ahead (+) of the feet's middle"),
     setting("landing_blend", "s", 0.0, 0.3, "landing: the joint targets blend in from the layout over this time"),
@@ -277,7 +280,8 @@ class MatAbsorb(Behaviour):
         height = float(d.subtree_com[self.pelvis][2]) - float(self.landing.airborne.support.points(d)[:, 2].min())
         capture = ahead + speed * math.sqrt(max(height, self.cfg["absorb_min_height"]) / GRAVITY)
         trunk_error = (math.atan2(-float(p[6]), float(p[8]))                        # the pelvis's forward pitch
-                       - (c["absorb_trunk"] - c["absorb_trunk_kp"] * capture))
+                       - (self.trunk_lean(t) - c["absorb_trunk_kp"] * capture))
+        self.knee_base(t, targets)
         left, left_speed = self.com_from_feet(1)
         sideways = c["absorb_side_kp"] * left + c["absorb_side_kv"] * left_speed
         for k, side in enumerate("rl"):
@@ -296,9 +300,42 @@ class MatAbsorb(Behaviour):
                 t - self.t0 > self.cfg["capture_after"] and abs(capture) < self.cfg["capture_within"]):
             self.over_feet = True
 
+    def trunk_lean(self, t: float) -> float:
+        """The pelvis's forward pitch the hips servo (the waist gives this far)."""
+        return self.cfg["absorb_trunk"]
+
+    def knee_base(self, t: float, targets: np.ndarray) -> None:
+        """The knees' targets: where they touched down, a little deeper (set in start)."""
+
     @property
     def finished(self) -> bool:
         return self.over_feet
+
+
+class MatRise(MatAbsorb):
+    """After the landing has brought the COM to rest over the feet: the same ankle and trunk servo
+    while the knees straighten over ``rise_time`` (Hermite) and the trunk's lean goes to upright;
+    then the balance controller takes over near its standing height. (The balance standing up from
+    the deep landed crouch itself, with the ankles at their dorsiflexion limit, let the COM drift.)"""
+
+    def start(self, t: float) -> None:
+        super().start(t)
+        s = self.ctx.servos
+        self.knees_from = s.angles()[self.knees].copy()
+        self.lean_from = float(math.atan2(-float(self.ctx.data.xmat[self.pelvis][6]), float(self.ctx.data.xmat[self.pelvis][8])))
+
+    def share(self, t: float) -> float:
+        return hermite_scalar((t - self.t0) / self.cfg["rise_time"])
+
+    def trunk_lean(self, t: float) -> float:
+        return self.lean_from * (1.0 - self.share(t))
+
+    def knee_base(self, t: float, targets: np.ndarray) -> None:
+        targets[self.knees] = self.knees_from + (self.cfg["rise_knee"] - self.knees_from) * self.share(t)
+
+    @property
+    def finished(self) -> bool:
+        return self.share(self.ctx.data.time) >= 1.0
 
 
 @register
@@ -473,6 +510,7 @@ class Vault(Sequence):
             Step("landing", land, lambda b, t: b.stage != "flight"),
             Step("absorb", lambda t: MatAbsorb(ctx, c, self.previous),
                  lambda b, t: b.finished or t - b.t0 > c["absorb_max"]),
+            Step("rise", lambda t: MatRise(ctx, c, self.previous.landing), lambda b, t: b.finished),
             Step("balance", lambda t: self.stand_up()),
         ]
 
@@ -481,7 +519,7 @@ class Vault(Sequence):
         pitch as it is - the waist gave in the landing, the trunk leans forward - and standing up
         over ``stand_time``: a balance that started from an upright trunk snapped it up and threw
         the COM."""
-        balance = balance_after_landing(self.ctx, self.previous.landing)
+        balance = balance_after_landing(self.ctx, self.previous.landing)     # the rise's landing
         m = self.ctx.data.xmat[self.pelvis]
         balance.from_pitch = math.atan2(-float(m[6]), float(m[8]))
         balance.params = dict(balance.params, move_time=self.cfg["stand_time"], com_offset_x=self.cfg["stand_com_offset"])
