@@ -16,11 +16,20 @@ from sim_core.skills.vault.report import (BALANCED_TIME, PEAK_LANDING_LIMIT, ROT
                                           format_table_1, table_1)
 from sim_core.world.apparatus import BOARD_TOP
 
-STATES = ["hurdle", "board", "first_flight", "horse", "second_flight", "landing"]
+STATES = ["hurdle", "board", "first_flight", "horse", "second_flight", "landing", "absorb", "rise", "balance",
+          "gesture"]
+GESTURE_END = 6.0            # s: the gesture is over (4.43-5.93 s)
 
 
 @pytest.fixture(scope="module")
 def vault():
+    """The vault to the gesture: 6 s (the default runs on into the bow, where she falls)."""
+    return run(RunRequest("vault", "woman", duration=GESTURE_END))
+
+
+@pytest.fixture(scope="module")
+def whole():
+    """The whole script, the bow included (the default duration)."""
     return run(RunRequest("vault", "woman"))
 
 
@@ -36,10 +45,12 @@ def test_the_vault_starts_in_the_seeds_hurdle_flight(vault):
 
 
 def test_the_six_states_run_once_each_in_order(vault):
+    """The seed's six states once each, in order, then the landing's absorb, the rise, the balance
+    and the gesture (TARGETS.md V2)."""
     names = [name for _, name in vault.meta["phase_events"]]
     order = [names.index(s) for s in STATES]
     assert order == sorted(order)
-    assert all(names.count(s) == 1 for s in STATES)
+    assert all(names.count(s) == 1 for s in STATES[:6])
     assert "max_deflection" in names          # the knees extend at the board's maximum deflection
 
 
@@ -161,6 +172,26 @@ def test_the_landing_brings_the_com_to_rest_over_the_feet(vault):
     ahead = a["com"][k, 0] - 0.5 * (feet.min() + feet.max())
     assert -0.05 <= ahead < 0.05, ahead
     assert np.linalg.norm(a["com_vel"][k]) < 0.3 and abs(a["angmom"][k, 1]) < 3.0
+
+
+def test_the_gesture_is_made_standing(vault):
+    """Both arms thrown up and back (shoulder flexion past 2 rad) while she stands."""
+    a, meta = vault.arrays, vault.meta
+    import mujoco
+    model = mujoco.MjModel.from_xml_string(meta["model_xml"])
+    start = next(t for t, name in meta["phase_events"] if name == "gesture")
+    right = a["qpos"][:, model.jnt_qposadr[model.joint("shoulder_r_z").id]]
+    left = a["qpos"][:, model.jnt_qposadr[model.joint("shoulder_l_z").id]]
+    during = a["time"] >= start
+    assert right[during].max() > 2.0 and -left[during].min() > 2.0
+
+
+@pytest.mark.xfail(strict=True, reason="the bow: ~4 s after she stood up the balance on the mat tips her forward (the "
+                                        "right ankle plantarflexes, the heel lifts); she falls at 7.4 s, in the bow "
+                                        "(docs/vault.md, what is left)")
+def test_the_bow_and_she_still_stands(whole):
+    assert "bow_up" in [name for _, name in whole.meta["phase_events"]]
+    assert whole.meta["outcome"] == "success", (whole.meta["outcome"], whole.meta["metrics"]["fall_time"])
 
 
 def test_one_somersault_and_she_ends_standing_balanced(vault):

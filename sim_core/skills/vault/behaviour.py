@@ -38,6 +38,7 @@ import numpy as np
 from ...ballistics import GRAVITY
 from ...control.behaviour import Behaviour, ControlContext, register
 from ...control.servo import hermite_scalar
+from ...control.balance import Balance
 from ...control.leap import Landing, balance_after_landing, run_strength
 from ...control.sequencer import Sequence, Step
 from ...analysis import FOOT_BODIES
@@ -66,6 +67,13 @@ VAULT_CONSTANTS = Schema(
     constant("handled_speed", "m/s", 0.0, 12.0, "the run-up speeds (board touchdown) the controller handles: [low, high]"),
     constant("servo_move", "s", 0.005, 1.0, "the servo move of a step's posture change where no setting names one"),
     constant("contact_force", "N", 0.0, 200.0, "a contact with an apparatus pushing this hard counts as touching"),
+    constant("stand_settle", "s", 0.0, 5.0, "standing this long after the balance has stood her up, before the gesture"),
+    constant("gesture", "rad", 0.0, 3.2, "the gesture of success: both arms thrown up and back by this much shoulder flexion"),
+    constant("gesture_time", "s", 0.1, 5.0, "the arms' move into the gesture, and back"),
+    constant("gesture_hold", "s", 0.0, 5.0, "the gesture is held this long"),
+    constant("bow_pitch", "rad", 0.0, 1.5, "the bow: the torso's forward pitch"),
+    constant("bow_time", "s", 0.2, 5.0, "the move into the bow, and back up"),
+    constant("bow_hold", "s", 0.0, 5.0, "the bow is held this long"),
 )
 CONSTANTS = read_constants("vault", VAULT_CONSTANTS)
 
@@ -338,13 +346,67 @@ class MatRise(MatAbsorb):
         return self.share(self.ctx.data.time) >= 1.0
 
 
+class ArmGesture(Behaviour):
+    """The gesture of success ([A] 164): the balance that stands her goes on, and both arms are
+    thrown up and back - a Hermite rise of the shoulders' flexion by CONSTANTS.gesture over
+    gesture_time, held, and back - on top of the balance's arm targets (a servo offset, which the
+    balance leaves alone on the arms); the balance's ankles keep the COM over the feet."""
+
+    schema = Schema()
+
+    def __init__(self, ctx: ControlContext, balance: Behaviour):
+        super().__init__({}, ctx)
+        self.balance = balance
+        self.shoulders = ctx.servos.indices(["shoulder_r_z", "shoulder_l_z"])
+        self.sign = np.array([1.0, -1.0])            # the left arm's axis is mirrored
+
+    def start(self, t: float) -> None:
+        self.t0 = t
+
+    def lift(self, t: float) -> float:
+        up, hold = CONSTANTS.gesture_time, CONSTANTS.gesture_hold
+        u = t - self.t0
+        share = hermite_scalar(u / up) if u < up + hold else 1.0 - hermite_scalar((u - up - hold) / up)
+        return CONSTANTS.gesture * share
+
+    @property
+    def finished(self) -> bool:
+        return self.ctx.data.time - self.t0 >= 2 * CONSTANTS.gesture_time + CONSTANTS.gesture_hold
+
+    def update(self, t: float) -> None:
+        self.balance.update(t)
+        self.ctx.servos.offset[self.shoulders] = self.sign * self.lift(t)
+
+
+class Bow(Behaviour):
+    """The bow ([A] 164): the balance that stands her moves on (Balance.replan) to the torso pitched
+    forward by CONSTANTS.bow_pitch over bow_time, holds it, and comes back up; its ankles keep the
+    COM over the feet (the seed: "if she bends forward, the ankles are servoed to move the COM
+    backwards")."""
+
+    schema = Schema()
+
+    def __init__(self, ctx: ControlContext, balance: Balance):
+        super().__init__({}, ctx)
+        self.balance = balance
+
+    def start(self, t: float) -> None:
+        self.balance.replan(t, torso_pitch=CONSTANTS.bow_pitch, move_time=CONSTANTS.bow_time,
+                            hold_time=CONSTANTS.bow_hold, return_to_stand=1)
+        self.event(t, "bow_down")
+        self.event(t + CONSTANTS.bow_time + CONSTANTS.bow_hold, "bow_up")
+
+    def update(self, t: float) -> None:
+        self.balance.update(t)
+
+
 @register
 class Vault(Sequence):
     name = "vault"
     world_frame = True             # the apparatus stands along +X from the origin
     summary = ("Handspring vault (Hodgins et al. 1995): hurdle, springboard, first flight (eq. 12), hands on the "
                "horse, layout second flight, landing on the mat, balance.")
-    default_duration = 6.0
+    default_duration = 9.0             # the whole script: the vault, the stand, the gesture and the bow
     settings_schema = VAULT_SETTINGS
     schema = SkillSchema(
         Parameter("runup_speed", "m/s", 6.75, 0.0, 12.0,
@@ -511,18 +573,26 @@ class Vault(Sequence):
             Step("absorb", lambda t: MatAbsorb(ctx, c, self.previous),
                  lambda b, t: b.finished or t - b.t0 > c["absorb_max"]),
             Step("rise", lambda t: MatRise(ctx, c, self.previous.landing), lambda b, t: b.finished),
-            Step("balance", lambda t: self.stand_up()),
+            Step("balance", lambda t: self.stand_up(),
+                 lambda b, t: b.posture_reached(t) and t - b.t0 >= c["stand_time"] + CONSTANTS.stand_settle),
+            Step("gesture", lambda t: ArmGesture(ctx, self.previous), lambda b, t: b.finished),
+            Step("bow", lambda t: Bow(ctx, self.previous.balance)),
         ]
 
     def stand_up(self) -> Behaviour:
-        """The balance from the landed crouch (balance_after_landing), starting from the trunk's
-        pitch as it is - the waist gave in the landing, the trunk leans forward - and standing up
-        over ``stand_time``: a balance that started from an upright trunk snapped it up and threw
-        the COM."""
-        balance = balance_after_landing(self.ctx, self.previous.landing)     # the rise's landing
+        """The balance from the landed crouch, standing up over ``stand_time`` (rebalance)."""
+        self.landing = self.previous.landing                  # the rise's landing
+        return self.rebalance(move_time=self.cfg["stand_time"], com_offset_x=self.cfg["stand_com_offset"])
+
+    def rebalance(self, **params) -> Balance:
+        """A balance (balance_after_landing: from the height the legs' length names) that starts
+        from the trunk's pitch as it is and moves to ``params``' posture: a balance started from an
+        upright trunk snapped the leaning one up and threw the COM, and one started from the
+        standing pose lost her within a second."""
+        balance = balance_after_landing(self.ctx, self.landing)
         m = self.ctx.data.xmat[self.pelvis]
         balance.from_pitch = math.atan2(-float(m[6]), float(m[8]))
-        balance.params = dict(balance.params, move_time=self.cfg["stand_time"], com_offset_x=self.cfg["stand_com_offset"])
+        balance.params = dict(balance.params, **params)
         return balance
 
     def board_law(self, t: float) -> None:
