@@ -14,6 +14,7 @@ import math
 import numpy as np
 
 from ...analysis import FOOT_BODIES, true_runs
+from ..handspring.behaviour import HAND_BODIES
 from ...ballistics import GRAVITY
 from ..somersault.behaviour import pelvis_pitch
 
@@ -144,6 +145,11 @@ def vault_assess(trajectory) -> tuple[str, dict]:
     pitch = pelvis_pitch(trajectory)
     metrics["rotation"] = float(pitch[-1])
     metrics["somersaults"] = metrics["rotation"] / (2 * math.pi)
+    if "horse" in ph:
+        # the palms at the horse touchdown: the angle (deg) between each palm's normal (the hand
+        # box's thin axis, inward: medial in the standing pose) and straight down (palm down flat)
+        w, x, y, _ = a["body_quat"][ph["horse"][0], [names.index(n) for n in HAND_BODIES]].T
+        metrics["palm_angle_at_horse_deg"] = np.degrees(np.arccos(np.clip(1 - 2 * (x * x + y * y), -1, 1))).tolist()
     weight = GRAVITY * float(meta["total_mass"])
     if "mat" not in ph:
         return ("no_board" if "board" not in ph else "no_horse" if "horse" not in ph else "no_landing"), metrics
@@ -245,5 +251,6 @@ def main(argv=None) -> int:
           f"peak landing force {metrics.get('peak_landing_body_weights', float('nan')):.1f} body weights; "
           f"fell at {metrics.get('fall_time')} s; feet through the mat onto the floor: {metrics.get('through_the_mat')} "
           f"(floor force up to {metrics.get('floor_under_mat_peak', 0.0):.0f} N); balanced at the end for "
-          f"{metrics.get('balanced_time_at_end', 0.0):.2f} s")
+          f"{metrics.get('balanced_time_at_end', 0.0):.2f} s; the palms at the horse touchdown "
+          f"{', '.join(f'{x:.0f}' for x in metrics.get('palm_angle_at_horse_deg', []))} deg from palm-down")
     return 0
