@@ -150,6 +150,15 @@ def vault_assess(trajectory) -> tuple[str, dict]:
         # box's thin axis, inward: medial in the standing pose) and straight down (palm down flat)
         w, x, y, _ = a["body_quat"][ph["horse"][0], [names.index(n) for n in HAND_BODIES]].T
         metrics["palm_angle_at_horse_deg"] = np.degrees(np.arccos(np.clip(1 - 2 * (x * x + y * y), -1, 1))).tolist()
+        # the elbows on the horse: the largest angle (deg) between upper arm and forearm, each side
+        i, j = ph["horse"]
+        bends = []
+        for side in "RL":
+            shoulder, elbow, wrist = (a["body_pos"][i:j, names.index(n + side)] for n in ("UARM", "LARM", "HAND"))
+            upper, fore = elbow - shoulder, wrist - elbow
+            cos = (upper * fore).sum(axis=1) / np.linalg.norm(upper, axis=1) / np.linalg.norm(fore, axis=1)
+            bends.append(float(np.degrees(np.arccos(np.clip(cos, -1, 1))).max()))
+        metrics["elbow_bend_on_horse_deg"] = bends
     weight = GRAVITY * float(meta["total_mass"])
     if "mat" not in ph:
         return ("no_board" if "board" not in ph else "no_horse" if "horse" not in ph else "no_landing"), metrics
@@ -252,5 +261,6 @@ def main(argv=None) -> int:
           f"fell at {metrics.get('fall_time')} s; feet through the mat onto the floor: {metrics.get('through_the_mat')} "
           f"(floor force up to {metrics.get('floor_under_mat_peak', 0.0):.0f} N); balanced at the end for "
           f"{metrics.get('balanced_time_at_end', 0.0):.2f} s; the palms at the horse touchdown "
-          f"{', '.join(f'{x:.0f}' for x in metrics.get('palm_angle_at_horse_deg', []))} deg from palm-down")
+          f"{', '.join(f'{x:.0f}' for x in metrics.get('palm_angle_at_horse_deg', []))} deg from palm-down; the elbows "
+          f"bent at most {', '.join(f'{x:.0f}' for x in metrics.get('elbow_bend_on_horse_deg', []))} deg on the horse")
     return 0
