@@ -28,7 +28,15 @@ def surface_under_points(trajectory, points: np.ndarray) -> np.ndarray:
     """Height of what is under each point (..., 2 or 3) in the trajectory's world: a box's top, or
     the ground (World.floor)."""
     world = trajectory.meta.get("world", {})
-    return surface_under(points, world.get("boxes", ()), world.get("floor", 0.0))
+    floor = world.get("floor", 0.0)
+    standing = []                 # the fixed apparatus one stands on, as boxes (x, y, top, length, width)
+    if world.get("vault_table"):
+        x, y, height, length, width = world["vault_table"]
+        standing.append((x, y, floor + height, length, width))
+    if world.get("landing_mat"):
+        x, y, length, width, thickness = world["landing_mat"]
+        standing.append((x, y, floor + thickness, length, width))
+    return surface_under(points, tuple(world.get("boxes", ())) + tuple(standing), floor)
 
 
 def feet_above_surface(trajectory) -> np.ndarray:

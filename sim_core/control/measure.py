@@ -43,17 +43,23 @@ def floor_of(model: mujoco.MjModel) -> float:
     return float(model.geom_pos[ground][2]) if model.geom_type[ground] == mujoco.mjtGeom.mjGEOM_PLANE else 0.0
 
 
+STANDING_APPARATUS = ("vault_table", "landing_mat")   # fixed apparatus a foot stands on, like a box
+
+
 def boxes_of(model: mujoco.MjModel) -> tuple:
-    """World.boxes read back off a compiled model (geoms named box0, box1, ...): (x, y, top height,
-    length, width)."""
+    """World.boxes read back off a compiled model (geoms named box0, box1, ...), then the fixed
+    apparatus one stands on (the vaulting table, the landing mat): (x, y, top height, length, width)."""
     boxes = []
-    while True:
-        try:
-            geom = model.geom(f"box{len(boxes)}")
-        except KeyError:
-            return tuple(boxes)
-        (x, y, z), (hx, hy, hz) = model.geom_pos[geom.id], model.geom_size[geom.id]
-        boxes.append((float(x), float(y), float(z + hz), float(2 * hx), float(2 * hy)))
+    while mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_GEOM, f"box{len(boxes)}") >= 0:
+        boxes.append(_box(model, f"box{len(boxes)}"))
+    return tuple(boxes) + tuple(_box(model, name) for name in STANDING_APPARATUS
+                                if mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_GEOM, name) >= 0)
+
+
+def _box(model: mujoco.MjModel, name: str) -> tuple:
+    geom = model.geom(name)
+    (x, y, z), (hx, hy, hz) = model.geom_pos[geom.id], model.geom_size[geom.id]
+    return (float(x), float(y), float(z + hz), float(2 * hx), float(2 * hy))
 
 
 class SupportGeometry:

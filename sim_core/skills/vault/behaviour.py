@@ -1,0 +1,641 @@
+"""The handspring vault (Hodgins et al. 1995, [A] 146-164): the seed's six states, then balance.
+
+1. hurdle     - the run starts in the flight before the board (the seed's initial state: forward
+                6.75 m/s, the COM 0.9 m above the board's top, set as the initial qpos/qvel and
+                logged in meta["start_state"]["skill"]); the hips block: the legs are held ahead of
+                the body, so the board stops the feet ahead of the COM and the horizontal speed
+                turns into rotation and rise.
+2. board      - the feet on the springboard; the legs are held stiff while the board deflects, and
+                at its maximum deflection (the deck's velocity reverses) the knees and ankles extend,
+                pushing on the board as it rebounds.
+3. first flight - eq. 12: each shoulder is servoed to gamma = lambda + phi, lambda the angle from the
+                downward vertical of the line from the shoulder to the desired hand position on the
+                horse and phi the body's forward pitch (the seed's gamma = lambda - phi with its
+                pitch counted the other way), so the arms point at the hand position whatever the
+                body's pitch and the hands are ground-speed matched to the horse; the wrists are
+                set so that the palms strike the horse flat.
+4. horse      - the hands on the horse: arms straight (stiff elbows), no torque at the shoulders or
+                wrists (their servos' gains are zero); the angular and forward velocity carry the
+                body over the hands.
+5. second flight - a layout (straight body, arms overhead), the feet a little apart, and when the
+                body has nearly turned upright the landing's leg placement (control/leap.py Landing).
+6. landing    - on the mat: knees and waist absorb (Landing), then the balance controller. (The
+                seed's switch when the COM passes over the feet's centre, the gesture and the bow
+                are not built: she falls in the landing, docs/vault.md.)
+
+Nothing but gravity, the contacts (board, horse, mat) and the joint servos moves her. The settings
+per character come from ``sim_core/tuned/tables/vault_<character>.json`` and the shared design values
+(apparatus layout, the seed's start) from ``vault_any.json``'s constants.
+"""
+from __future__ import annotations
+
+import dataclasses
+import math
+
+import mujoco
+import numpy as np
+
+from ...ballistics import GRAVITY
+from ...control.behaviour import Behaviour, ControlContext, register
+from ...control.servo import hermite_scalar
+from ...control.balance import Balance
+from ...control.leap import Landing, balance_after_landing, run_strength
+from ...control.sequencer import Sequence, Step
+from ...analysis import FOOT_BODIES
+from ..handspring.behaviour import HAND_BODIES, PoseMove
+from ...control.tumble import FlightRotation, both_sides
+from ...errors import ParameterError
+from ...schema import Choice, Parameter, Schema
+from ...tuned import TableType, keyed, load, register as register_table
+from ...tuned.constants import constant, constant_rows, read_constants, with_constants
+from ...tuned.settings import SkillSchema, ranged as setting
+from ...world.apparatus import (BOARD_LENGTH, BOARD_TOP, HORSE_1987_HEIGHT, HORSE_1987_LENGTH, HORSE_1987_WIDTH,
+                                PROP_BODY_PREFIX, VAULT_TABLE_HEIGHT_MEN,
+                                VAULT_TABLE_HEIGHT_WOMEN, VAULT_TABLE_LENGTH, VAULT_TABLE_WIDTH)
+
+# the vault's hand-set design values: data, vault_any.json's "constants" (docs/tables.md)
+VAULT_CONSTANTS = Schema(
+    constant("start_com_height", "m", 0.5, 1.5,
+             "the seed's start: the COM this high above the board's top at rest ([A] 150: 0.9 m)"),
+    constant("board_ahead", "m", 0.2, 3.0, "the board's centre this far ahead of the world's origin"),
+    constant("touchdown_on_board", "m", -0.6, 0.6,
+             "the start is placed so that the feet touch down this far ahead of the board's centre"),
+    constant("horse_gap", "m", 0.0, 3.0, "the horse's near edge this far ahead of the board's front edge"),
+    constant("mat_gap", "m", 0.0, 3.0, "the landing mat's near edge this far beyond the horse's far edge"),
+    constant("mat_size", "m", 0.5, 20.0, "the landing mat's length and width"),
+    constant("mat_thickness", "m", 0.05, 0.5, "the landing mat's thickness"),
+    constant("handled_speed", "m/s", 0.0, 12.0, "the run-up speeds (board touchdown) the controller handles: [low, high]"),
+    constant("servo_move", "s", 0.005, 1.0, "the servo move of a step's posture change where no setting names one"),
+    constant("contact_force", "N", 0.0, 200.0, "a contact with an apparatus pushing this hard counts as touching"),
+    constant("stand_settle", "s", 0.0, 5.0, "standing this long after the balance has stood her up, before the gesture"),
+    constant("gesture", "rad", 0.0, 3.2, "the gesture of success: both arms thrown up and back by this much shoulder flexion"),
+    constant("gesture_time", "s", 0.1, 5.0, "the arms' move into the gesture, and back"),
+    constant("gesture_hold", "s", 0.0, 5.0, "the gesture is held this long"),
+    constant("bow_pitch", "rad", 0.0, 1.5, "the bow: the torso's forward pitch"),
+    constant("bow_time", "s", 0.2, 5.0, "the move into the bow, and back up"),
+    constant("bow_hold", "s", 0.0, 5.0, "the bow is held this long"),
+)
+CONSTANTS = read_constants("vault", VAULT_CONSTANTS)
+
+APPARATUS = ("horse_1987", "table")
+DEFLECTION_JOINT = PROP_BODY_PREFIX + "springboard/deflection"
+
+VAULT_SETTINGS = Schema(
+    setting("hurdle_vz", "m/s", -2.0, 0.5, "vertical COM velocity at the start (the hurdle flight's descent)"),
+    setting("hurdle_lean", "rad", -0.8, 0.5, "the body's forward pitch at the start (- leans back: the hips block)"),
+    setting("hurdle_spin", "rad/s", -5.0, 5.0, "the body's forward rotation rate at the start"),
+    setting("hurdle_arm", "rad", -1.0, 3.14, "shoulder flexion of both arms at the start"),
+    setting("block_hip", "rad", -1.5, 0.5, "hip flexion (-) of the block: the legs held ahead of the body"),
+    setting("board_knee", "rad", 0.0, 1.2, "knee bend at board touchdown, held while the board deflects"),
+    setting("board_gain", "1", 1.0, 10.0, "gain factor of the leg servos on the board"),
+    setting("board_arm", "rad", -1.0, 3.14, "the arms swing to this shoulder flexion on the board"),
+    setting("board_arm_time", "s", 0.02, 0.5, "the board's arm swing takes this long"),
+    setting("push_time", "s", 0.01, 0.3, "at maximum deflection the knees, hips and ankles extend in this time"),
+    setting("push_ankle", "rad", -0.7, 0.9, "ankle angle the push extends to (- plantarflexion)"),
+    setting("push_hip", "rad", -1.5, 0.5, "hip angle the push extends to"),
+    setting("hand_ahead", "m", -0.5, 1.2, "the desired hand position: this far beyond the horse's near edge"),
+    setting("flight_hip", "rad", -2.0, 0.5, "hip flexion (-) held in the first flight"),
+    setting("open_pitch", "rad", 0.0, 4.0, "the first flight's pike opens once the body has pitched this far forward"),
+    setting("open_time", "s", 0.01, 0.5, "the pike opens in this time"),
+    setting("arm_gain", "1", 1.0, 10.0, "gain factor of the shoulder servos in the first flight (eq. 12)"),
+    setting("reach_shoulder_x", "rad", 1.0, 1.75,
+            "shoulder angle about the arm's forward axis in the first flight: the raised arms parallel, the hands "
+            "shoulder-width apart (the standing pose's 1.43 brings them together overhead)"),
+    setting("wrist_extension", "rad", -1.2, 1.2, "wrist extension of the palms-down hands"),
+    setting("elbow_gain", "1", 1.0, 20.0, "gain factor of the elbow servos on the horse (arms straight)"),
+    setting("horse_hip", "rad", -1.0, 0.5, "hip angle on the horse (0: the layout)"),
+    setting("layout_arm", "rad", 0.0, 3.14, "shoulder flexion in the second flight's layout"),
+    setting("feet_apart", "rad", 0.0, 0.3,
+            "hip abduction of each leg in the second flight, until the landing places the legs (the feet a little apart)"),
+    setting("landing_lean", "rad", 0.0, 2.0, "the landing's leg placement starts this far short of the upright"),
+    setting("open_height", "m", 0.5, 2.0, "... or once the COM is this high above the mat, whichever is first"),
+    setting("landing_knee_flexion", "rad", 0.0, 1.5, "knee bend held for the touchdown on the mat"),
+    setting("foot_delta", "m", -0.3, 0.3, "landing: foot servo delta (the landing's placement ahead of the capture point)"),
+    setting("landing_foot_lead_time", "s", 0.0, 0.6, "landing: the feet land this many seconds of COM travel ahead"),
+    setting("spin_placement", "s/m", 0.0, 0.5, "landing: feet placed this factor x (angular momentum / mass) against the spin"),
+    setting("absorb_kp", "1", 0.0, 2.0, "after the touchdown: gain factor of the knee and hip servos (they give)"),
+    setting("absorb_kv", "1", 0.0, 10.0, "after the touchdown: damping factor of the knee and hip servos"),
+    setting("absorb_knee", "rad", 0.0, 1.5, "the knees' targets this much deeper than at the touchdown"),
+    setting("absorb_hip_gain", "1", 0.0, 5.0, "after the touchdown: gain factor of the hip servos (the waist)"),
+    setting("absorb_trunk", "rad", -0.5, 1.5, "after the touchdown the hips servo the pelvis to lean this far forward"),
+    setting("absorb_trunk_kp", "rad/m", -10.0, 10.0,
+            "... less this much per metre of the capture point ahead of the feet's middle"),
+    setting("absorb_min_height", "m", 0.05, 1.0, "the capture point's COM height is at least this (a guard)"),
+    setting("settled_spin", "kg m²/s", 0.0, 50.0, "... and its angular momentum about the lateral axis is below this"),
+    setting("absorb_com_kp", "rad/m", -20.0, 20.0, "ankle offset per metre of the COM ahead of the feet's middle while absorbing"),
+    setting("absorb_com_kv", "rad s/m", -10.0, 10.0, "ankle offset per m/s of the COM's forward speed while absorbing"),
+    setting("absorb_side_kp", "rad/m", -20.0, 20.0, "ankle roll per metre of the COM left of the feet's middle while absorbing"),
+    setting("absorb_side_kv", "rad s/m", -10.0, 10.0, "ankle roll per m/s of the COM's leftward speed while absorbing"),
+    setting("capture_after", "s", 0.0, 3.0, "... or, this long after the touchdown, once the capture point is ..."),
+    setting("capture_within", "m", 0.0, 0.3, "... within this of the feet's middle"),
+    setting("over_feet", "m", 0.0, 0.3, "the balance takes over once the COM is at most this far behind the feet's middle ..."),
+    setting("settled_speed", "m/s", 0.0, 2.0, "... and moves slower than this"),
+    setting("absorb_max", "s", 0.05, 3.0, "... or this long after the touchdown"),
+    setting("rise_time", "s", 0.1, 5.0, "after the landing the knees straighten in this time before the balance"),
+    setting("rise_knee", "rad", 0.0, 1.5, "... to this knee bend"),
+    setting("stand_time", "s", 0.2, 5.0, "the balance stands up from the landed crouch in this time"),
+    setting("stand_com_offset", "m", -0.25, 0.25, "... with the COM this far ahead (+) of the feet's middle"),
+    setting("landing_blend", "s", 0.0, 0.3, "landing: the joint targets blend in from the layout over this time"),
+)
+
+
+def load_table(character: str) -> dict:
+    """The character's vault table (no rows if there is none)."""
+    return load("vault", character) or {"vaults": []}
+
+
+def vault_row(table: dict, strength: str) -> dict | None:
+    """The row of the strength (keyed), or None."""
+    return keyed(table["vaults"], strength=strength)
+
+
+def calibrated(character: str, strength: str) -> dict | None:
+    """The vault settings of this character and strength, or None."""
+    return vault_row(load_table(character), strength)
+
+
+VAULT_TABLE = register_table(TableType(
+    "vault", with_constants(VAULT_SETTINGS, VAULT_CONSTANTS),
+    lambda body: (*((f"vaults {e['strength']}", e["settings"]) for e in body.get("vaults", [])), *constant_rows(body)),
+    (vault_row,)))
+
+
+def apparatus_layout(params: dict, character) -> dict:
+    """Where the board, the horse (or table) and the mat stand: (x, y, ...) tuples for World, along
+    +X from the start's COM at x = 0. The women's horse of Takei's 1987 data (sideways) or the FIG
+    table at the character's height (women's for the woman, men's for the man)."""
+    board_x = CONSTANTS.board_ahead
+    near = board_x + BOARD_LENGTH / 2 + CONSTANTS.horse_gap
+    if APPARATUS[int(round(params["apparatus"]))] == "horse_1987":
+        height, length, width = HORSE_1987_HEIGHT, HORSE_1987_LENGTH, HORSE_1987_WIDTH
+        length, width = width, length                  # sideways: its 0.35 m across the run
+    else:
+        height = VAULT_TABLE_HEIGHT_MEN if character is not None and character.name == "man" else VAULT_TABLE_HEIGHT_WOMEN
+        length, width = VAULT_TABLE_LENGTH, VAULT_TABLE_WIDTH
+    far = near + length
+    mat_length, mat_width = CONSTANTS.mat_size
+    return {"springboard": (board_x, 0.0), "vault_table": (near + length / 2, 0.0, height, length, width),
+            "landing_mat": (far + CONSTANTS.mat_gap + mat_length / 2, 0.0, mat_length, mat_width,
+                            CONSTANTS.mat_thickness),
+            "near_edge": near, "far_edge": far, "height": height}
+
+
+class ApparatusTouch:
+    """Whether some of the actor's bodies push on one named world geom (an apparatus), from
+    MuJoCo's contact list and the contacts' normal forces of the last step."""
+
+    def __init__(self, model, geom: str, bodies, prefix: str = ""):
+        self.model = model
+        self.geom = model.geom(geom).id
+        self.bodies = np.array([model.body(prefix + b).id for b in bodies])
+        self.force = np.zeros(6)
+
+    def touching(self, data) -> bool:
+        n = data.ncon
+        if not n:
+            return False
+        contact = data.contact
+        geoms = contact.geom[:n]
+        body = self.model.geom_bodyid
+        for k in range(n):
+            g1, g2 = int(geoms[k, 0]), int(geoms[k, 1])
+            other = g2 if g1 == self.geom else g1 if g2 == self.geom else -1
+            if other < 0 or body[other] not in self.bodies:
+                continue
+            mujoco.mj_contactForce(self.model, data, k, self.force)
+            if self.force[0] > CONSTANTS.contact_force:
+                return True
+        return False
+
+
+class PoseLaw(PoseMove):
+    """The handspring's PoseMove (Hermite moves of some joints to named angles, some servos' gains
+    scaled, every other target held) with some servos limp (gain zero: no torque) and a ``law``
+    called every tick with t, for targets that follow the measured state (eq. 12, the board's push)."""
+
+    def __init__(self, ctx: ControlContext, goals: dict[str, float], move_time: float, gain: float = 1.0,
+                 gain_joints: list[str] | None = None, limp: tuple[str, ...] = (), law=None):
+        super().__init__(ctx, goals, move_time, gain, gain_joints=[] if gain_joints is None else gain_joints)
+        self.limp, self.law = limp, law
+
+    def start(self, t: float) -> None:
+        super().start(t)
+        s = self.ctx.servos
+        for name in self.limp:
+            i = s.indices([name])
+            s.set_gains(i, 0.0, 0.0)
+
+    def update(self, t: float) -> None:
+        if self.law is not None:
+            self.law(t)
+
+
+class MatAbsorb(Behaviour):
+    """The landing on the mat after the touchdown ([A] 162): the knees and the waist (hips) give
+    as dampers - their servos softened (``absorb_kp``) and damped (``absorb_kv``), their targets a
+    little deeper than where they touched down - while the ankles servo the COM over the middle of
+    the feet (eq. 7.1's law, within what the feet can take) and keep the feet flat. It hands over
+    to the balance controller once the COM passes over the middle of the feet (the seed's switch)
+    and has slowed, or after ``absorb_max``."""
+
+    schema = Schema()
+
+    def __init__(self, ctx: ControlContext, cfg: dict, landing: Landing):
+        super().__init__({}, ctx)
+        self.cfg, self.landing = cfg, landing
+        body = ctx.actor.body_id
+        self.pelvis, self.feet = body("PELVIS"), [body("FOOTR"), body("FOOTL")]
+        s = ctx.servos
+        self.joints = {side: {k: s.index[f"{j}_{side}_{a}"] for k, (j, a) in
+                              {"hip": ("hip", "y"), "knee": ("knee", "y"), "ankle": ("ankle", "y"),
+                               "ankle_x": ("ankle", "x")}.items()}
+                       for side in "rl"}
+        self.knees = s.indices(["knee_r_y", "knee_l_y"])
+        self.hips = s.indices(["hip_r_y", "hip_l_y"])
+        self.ankle_front, self.ankle_back = landing.ankle_front, landing.ankle_back
+        self.over_feet = False
+
+    def start(self, t: float) -> None:
+        s, c = self.ctx.servos, self.cfg
+        s.offset[:] = 0.0
+        self.t0 = t
+        targets = s.angles().copy()
+        for side in "rl":
+            targets[self.joints[side]["knee"]] += c["absorb_knee"]
+        self.base = targets
+        s.hold(targets, t)
+        s.set_gains(self.knees, s.default_kp[self.knees] * c["absorb_kp"], s.default_kv[self.knees] * c["absorb_kv"])
+        s.set_gains(self.hips, s.default_kp[self.hips] * c["absorb_hip_gain"], s.default_kv[self.hips] * c["absorb_hip_gain"])
+
+    def com_from_feet(self, axis: int = 0) -> tuple[float, float]:
+        """The COM's distance ahead of (axis 0; axis 1: left of) the middle of the supporting feet
+        (m) and its speed that way (the vault runs along +X)."""
+        d = self.ctx.data
+        points = self.landing.airborne.support.supporting_points(d)
+        com = d.subtree_com[self.pelvis]
+        middle = 0.5 * (points[:, axis].min() + points[:, axis].max())
+        return float(com[axis] - middle), float(d.subtree_linvel[self.pelvis][axis])
+
+    def update(self, t: float) -> None:
+        d, s, c = self.ctx.data, self.ctx.servos, self.cfg
+        ahead, speed = self.com_from_feet()
+        ankle = min(max(c["absorb_com_kp"] * ahead + c["absorb_com_kv"] * speed, -self.ankle_back), self.ankle_front)
+        targets = self.base.copy()
+        angles = s.angles()
+        p = d.xmat[self.pelvis]
+        # the capture point (the COM's place plus its speed times sqrt(h / g)) ahead of the feet's
+        # middle leans the trunk back, behind it forward
+        height = float(d.subtree_com[self.pelvis][2]) - float(self.landing.airborne.support.points(d)[:, 2].min())
+        capture = ahead + speed * math.sqrt(max(height, self.cfg["absorb_min_height"]) / GRAVITY)
+        trunk_error = (math.atan2(-float(p[6]), float(p[8]))                        # the pelvis's forward pitch
+                       - (self.trunk_lean(t) - c["absorb_trunk_kp"] * capture))
+        self.knee_base(t, targets)
+        left, left_speed = self.com_from_feet(1)
+        sideways = c["absorb_side_kp"] * left + c["absorb_side_kv"] * left_speed
+        for k, side in enumerate("rl"):
+            f = d.xmat[self.feet[k]]
+            foot_pitch = math.atan2(-float(f[6]), float(f[8]))
+            targets[self.joints[side]["ankle"]] = angles[self.joints[side]["ankle"]] - foot_pitch + ankle
+            # sideways the ankles roll the feet flat and servo the COM between them the same way
+            foot_roll = math.atan2(float(f[7]), float(f[8]))
+            targets[self.joints[side]["ankle_x"]] = angles[self.joints[side]["ankle_x"]] - foot_roll - sideways
+            # the waist gives: the hips servo the trunk to lean absorb_trunk forward, whatever the legs do
+            targets[self.joints[side]["hip"]] = angles[self.joints[side]["hip"]] + trunk_error
+        s.hold(targets, t)
+        spin = float(d.subtree_angmom[self.pelvis][1])
+        if (ahead >= -self.cfg["over_feet"] and abs(speed) < self.cfg["settled_speed"]
+                and abs(spin) < self.cfg["settled_spin"]) or (
+                t - self.t0 > self.cfg["capture_after"] and abs(capture) < self.cfg["capture_within"]):
+            self.over_feet = True
+
+    def trunk_lean(self, t: float) -> float:
+        """The pelvis's forward pitch the hips servo (the waist gives this far)."""
+        return self.cfg["absorb_trunk"]
+
+    def knee_base(self, t: float, targets: np.ndarray) -> None:
+        """The knees' targets: where they touched down, a little deeper (set in start)."""
+
+    @property
+    def finished(self) -> bool:
+        return self.over_feet
+
+
+class MatRise(MatAbsorb):
+    """After the landing has brought the COM to rest over the feet: the same ankle and trunk servo
+    while the knees straighten over ``rise_time`` (Hermite) and the trunk's lean goes to upright;
+    then the balance controller takes over near its standing height. (The balance standing up from
+    the deep landed crouch itself, with the ankles at their dorsiflexion limit, let the COM drift.)"""
+
+    def start(self, t: float) -> None:
+        super().start(t)
+        s = self.ctx.servos
+        self.knees_from = s.angles()[self.knees].copy()
+        self.lean_from = float(math.atan2(-float(self.ctx.data.xmat[self.pelvis][6]), float(self.ctx.data.xmat[self.pelvis][8])))
+
+    def share(self, t: float) -> float:
+        return hermite_scalar((t - self.t0) / self.cfg["rise_time"])
+
+    def trunk_lean(self, t: float) -> float:
+        return self.lean_from * (1.0 - self.share(t))
+
+    def knee_base(self, t: float, targets: np.ndarray) -> None:
+        targets[self.knees] = self.knees_from + (self.cfg["rise_knee"] - self.knees_from) * self.share(t)
+
+    @property
+    def finished(self) -> bool:
+        return self.share(self.ctx.data.time) >= 1.0
+
+
+class ArmGesture(Behaviour):
+    """The gesture of success ([A] 164): the balance that stands her goes on, and both arms are
+    thrown up and back - a Hermite rise of the shoulders' flexion by CONSTANTS.gesture over
+    gesture_time, held, and back - on top of the balance's arm targets (a servo offset, which the
+    balance leaves alone on the arms); the balance's ankles keep the COM over the feet."""
+
+    schema = Schema()
+
+    def __init__(self, ctx: ControlContext, balance: Behaviour):
+        super().__init__({}, ctx)
+        self.balance = balance
+        self.shoulders = ctx.servos.indices(["shoulder_r_z", "shoulder_l_z"])
+        self.sign = np.array([1.0, -1.0])            # the left arm's axis is mirrored
+
+    def start(self, t: float) -> None:
+        self.t0 = t
+
+    def lift(self, t: float) -> float:
+        up, hold = CONSTANTS.gesture_time, CONSTANTS.gesture_hold
+        u = t - self.t0
+        share = hermite_scalar(u / up) if u < up + hold else 1.0 - hermite_scalar((u - up - hold) / up)
+        return CONSTANTS.gesture * share
+
+    @property
+    def finished(self) -> bool:
+        return self.ctx.data.time - self.t0 >= 2 * CONSTANTS.gesture_time + CONSTANTS.gesture_hold
+
+    def update(self, t: float) -> None:
+        self.balance.update(t)
+        self.ctx.servos.offset[self.shoulders] = self.sign * self.lift(t)
+
+
+class Bow(Behaviour):
+    """The bow ([A] 164): the balance that stands her moves on (Balance.replan) to the torso pitched
+    forward by CONSTANTS.bow_pitch over bow_time, holds it, and comes back up; its ankles keep the
+    COM over the feet (the seed: "if she bends forward, the ankles are servoed to move the COM
+    backwards")."""
+
+    schema = Schema()
+
+    def __init__(self, ctx: ControlContext, balance: Balance):
+        super().__init__({}, ctx)
+        self.balance = balance
+
+    def start(self, t: float) -> None:
+        self.balance.replan(t, torso_pitch=CONSTANTS.bow_pitch, move_time=CONSTANTS.bow_time,
+                            hold_time=CONSTANTS.bow_hold, return_to_stand=1)
+        self.event(t, "bow_down")
+        self.event(t + CONSTANTS.bow_time + CONSTANTS.bow_hold, "bow_up")
+
+    def update(self, t: float) -> None:
+        self.balance.update(t)
+
+
+@register
+class Vault(Sequence):
+    name = "vault"
+    world_frame = True             # the apparatus stands along +X from the origin
+    summary = ("Handspring vault (Hodgins et al. 1995): hurdle, springboard, first flight (eq. 12), hands on the "
+               "horse, layout second flight, landing on the mat, balance.")
+    default_duration = 9.0             # the whole script: the vault, the stand, the gesture and the bow
+    settings_schema = VAULT_SETTINGS
+    schema = SkillSchema(
+        Parameter("runup_speed", "m/s", 6.75, 0.0, 12.0,
+                  "horizontal COM speed of the hurdle flight (the seed's start: 6.75 m/s, Takei's mean); the "
+                  "controller handles the range of vault_any.json's handled_speed"),
+        Choice("apparatus", APPARATUS, "horse_1987",
+               "what she vaults: the 1987 women's horse of Takei's data (sideways, 1.20 m) or the FIG table"),
+        Parameter("low_level", "bool", 0.0, 0.0, 1.0,
+                  "1 = run the tuned settings as set (--set block_hip=...) instead of the character's table"),
+        settings=VAULT_SETTINGS,
+    )
+
+    # ------------------------------------------------------------------ the world and the start
+    @classmethod
+    def scene(cls, params, world, character=None):
+        """The requested world with the springboard, the horse (or table) and the landing mat."""
+        layout = apparatus_layout(params, character)
+        return dataclasses.replace(world, springboard=layout["springboard"], vault_table=layout["vault_table"],
+                                   landing_mat=layout["landing_mat"])
+
+    @classmethod
+    def settings_for(cls, params: dict, character_name: str, strength: str) -> dict:
+        if params["low_level"]:
+            return {k: params[k] for k in VAULT_SETTINGS.by_name}
+        row = calibrated(character_name, strength)
+        return dict(row["settings"]) if row else {k: params[k] for k in VAULT_SETTINGS.by_name}
+
+    @classmethod
+    def start_state(cls, params, model, data, character):
+        """The seed's hurdle flight: the standing pose with the block (hips flexed, knees bent, arms
+        raised), the body pitched by hurdle_lean, the COM start_com_height above the board's top at
+        x = 0, every body moving at (runup_speed, 0, hurdle_vz) plus the hurdle's forward spin."""
+        strength = "human" if model.actuator_forcelimited[model.actuator("knee_r_y").id] else "unlimited"
+        c = cls.settings_for(params, character.name, strength)
+        pose = both_sides({"hip_*_y": c["block_hip"], "knee_*_y": c["board_knee"], "shoulder_*_z": c["hurdle_arm"],
+                           "elbow_*_z": 0.0})
+        for name, value in pose.items():
+            data.qpos[model.joint(name).qposadr[0]] = value
+        root = model.joint("root")
+        q, v = int(root.qposadr[0]), int(root.dofadr[0])
+        lean = c["hurdle_lean"]
+        data.qpos[q + 3:q + 7] = [math.cos(lean / 2), 0.0, math.sin(lean / 2), 0.0]
+        mujoco.mj_kinematics(model, data)
+        mujoco.mj_comPos(model, data)
+        com = data.subtree_com[root.bodyid[0]].copy()
+        data.qpos[q:q + 3] += np.array([0.0, 0.0, BOARD_TOP + CONSTANTS.start_com_height]) - com
+        data.qvel[:] = 0.0
+        mujoco.mj_kinematics(model, data)
+        # the feet touch the board (ballistically, the hurdle's rotation aside) at touchdown_on_board
+        # from its centre: the whole body is shifted along +X for that
+        feet = data.site_xpos[[i for i in range(model.nsite) if model.body(model.site_bodyid[i]).name in FOOT_BODIES]]
+        lowest = feet[int(np.argmin(feet[:, 2]))]
+        fall = lowest[2] - BOARD_TOP
+        vz = c["hurdle_vz"]
+        fall_time = (vz + math.sqrt(vz * vz + 2 * GRAVITY * max(fall, 0.0))) / GRAVITY
+        data.qpos[q] += CONSTANTS.board_ahead + CONSTANTS.touchdown_on_board - (lowest[0] + params["runup_speed"] * fall_time)
+        mujoco.mj_kinematics(model, data)
+        mujoco.mj_comPos(model, data)
+        com = data.subtree_com[root.bodyid[0]].copy()
+        # a rigid motion: the COM at (speed, 0, vz), the whole body turning at hurdle_spin about the
+        # COM (the free joint's linear velocity is the root body's origin's)
+        origin = data.qpos[q:q + 3]
+        spin = c["hurdle_spin"]
+        data.qvel[v:v + 3] = [params["runup_speed"] + spin * (origin[2] - com[2]), 0.0,
+                              c["hurdle_vz"] - spin * (origin[0] - com[0])]
+        data.qvel[v + 3:v + 6] = np.array([0.0, spin, 0.0]) @ data.xmat[root.bodyid[0]].reshape(3, 3)
+        return {"state": "hurdle", "com": com.tolist(), "com_velocity": [params["runup_speed"], 0.0, c["hurdle_vz"]],
+                "pitch": lean, "spin": spin, "com_above_board": CONSTANTS.start_com_height}
+
+    def check_feasible(self) -> None:
+        speed = self.params["runup_speed"]
+        low, high = CONSTANTS.handled_speed
+        if not low <= speed <= high:
+            raise ParameterError(f"parameter runup_speed={speed:g} m/s is outside what the vault controller handles; "
+                                 f"allowed range is [{low:g}, {high:g}] m/s")
+        if self.params["low_level"]:
+            return
+        name, strength = self.ctx.character.name, run_strength(self.ctx)
+        if calibrated(name, strength) is None:
+            limits = "unlimited strength" if strength == "unlimited" else "human torque limits"
+            rows = [f"{e['strength']} strength" for e in load_table(name)["vaults"]]
+            raise ParameterError(f"the {name} has no vault settings with {limits} (sim_core/tuned/tables/vault_{name}.json: "
+                                 f"{', '.join(rows) or 'none'}); the vault is set for the woman with human torque limits")
+
+    # ------------------------------------------------------------------ measurements
+    def body_pitch(self) -> float:
+        """phi: the trunk's forward pitch from vertical (pelvis to the upper chest), unwrapped."""
+        d = self.ctx.data
+        axis = d.xpos[self.chest] - d.xpos[self.pelvis]
+        raw = math.atan2(float(axis[0]), float(axis[2]))
+        self._pitch += (raw - self._last_raw + math.pi) % (2 * math.pi) - math.pi
+        self._last_raw = raw
+        return self._pitch
+
+    def deck_velocity(self) -> float:
+        return float(self.ctx.data.qvel[self.deck_dof])
+
+    # ------------------------------------------------------------------ the script
+    def steps(self) -> list[Step]:
+        ctx = self.ctx
+        m, d, s = ctx.model, ctx.data, ctx.servos
+        c = self.cfg = self.settings_for(self.params, ctx.character.name, run_strength(ctx))
+        layout = apparatus_layout(self.params, ctx.character)
+        self.hand_goal = np.array([layout["near_edge"] + c["hand_ahead"], 0.0, layout["height"]])
+        self.mat_top = CONSTANTS.mat_thickness
+        body = ctx.actor.body_id
+        self.pelvis, self.chest = body("PELVIS"), body("CHEST1")
+        self.shoulders = [body("UARMR"), body("UARML")]
+        self.shoulder_range = m.jnt_range[[ctx.actor.joint_id("shoulder_r_z"), ctx.actor.joint_id("shoulder_l_z")]]
+        self._last_raw = 0.0
+        self._pitch = 0.0
+        self._pitch = self._last_raw = math.atan2(*(d.xpos[self.chest] - d.xpos[self.pelvis])[[0, 2]])
+        self.deck_dof = int(m.jnt_dofadr[m.joint(DEFLECTION_JOINT).id])
+        p = ctx.actor.prefix
+        self.on_board = ApparatusTouch(m, "springboard", FOOT_BODIES, p)
+        self.on_horse = ApparatusTouch(m, "vault_table", HAND_BODIES, p)
+        self.rotation = FlightRotation(m, d, ctx.actor)
+        legs = both_sides({"hip_*_y": 1, "knee_*_y": 1, "ankle_*_y": 1})
+        arms_z = ["shoulder_r_z", "shoulder_l_z"]
+        limp = ("shoulder_r_z", "shoulder_l_z", "shoulder_r_x", "shoulder_l_x", "shoulder_r_y", "shoulder_l_y",
+                "wrist_r_x", "wrist_l_x", "wrist_r_y", "wrist_l_y")
+        self.pushed = self.deck_going_down = self.opened = False
+
+        def board(t):
+            return PoseLaw(ctx, both_sides({"shoulder_*_z": c["board_arm"]}), c["board_arm_time"], c["board_gain"],
+                           list(legs), law=lambda t: self.board_law(t))
+
+        def first_flight(t):
+            s.set_gains(s.indices(list(legs)), s.default_kp[s.indices(list(legs))], s.default_kv[s.indices(list(legs))])
+            return PoseLaw(ctx, both_sides({"hip_*_y": c["flight_hip"], "knee_*_y": 0.0, "ankle_*_y": 0.5,
+                                            "elbow_*_z": 0.0, "wrist_*_x": c["wrist_extension"],
+                                            "shoulder_*_x": c["reach_shoulder_x"]}), CONSTANTS.servo_move,
+                           c["arm_gain"], arms_z, law=lambda t: self.reach_law(t))
+
+        def horse(t):
+            return PoseLaw(ctx, both_sides({"hip_*_y": c["horse_hip"], "elbow_*_z": 0.0}), CONSTANTS.servo_move,
+                           c["elbow_gain"], ["elbow_r_z", "elbow_l_z"], limp=limp)
+
+        def second_flight(t):
+            s.set_gains(np.arange(len(s.names)), s.default_kp, s.default_kv)
+            return PoseLaw(ctx, both_sides({"hip_*_y": 0.0, "knee_*_y": 0.0, "shoulder_*_z": c["layout_arm"],
+                                            "hip_*_x": c["feet_apart"], "wrist_*_x": 0.0}), CONSTANTS.servo_move)
+
+        def ready_to_land(b, t):
+            turned = self.body_pitch()
+            com_z = float(d.subtree_com[ctx.actor.root][2])
+            return (turned >= 2 * math.pi - c["landing_lean"] or com_z - self.mat_top < c["open_height"]
+                    ) and float(d.subtree_linvel[ctx.actor.root][2]) < 0
+
+        def land(t):
+            return Landing(Landing.schema.validate(dict(
+                knee_flexion=c["landing_knee_flexion"], fast_knee_flexion=c["landing_knee_flexion"],
+                foot_delta=c["foot_delta"], foot_lead_time=c["landing_foot_lead_time"],
+                spin_placement=c["spin_placement"], blend_time=c["landing_blend"])), ctx)
+
+        return [
+            Step("hurdle", lambda t: PoseLaw(ctx, {}, CONSTANTS.servo_move, c["board_gain"], list(legs)),
+                 lambda b, t: self.on_board.touching(d)),
+            Step("board", board, lambda b, t: self.pushed and not self.on_board.touching(d)),
+            Step("first_flight", first_flight, lambda b, t: self.on_horse.touching(d)),
+            Step("horse", horse, lambda b, t: not self.on_horse.touching(d)),
+            Step("second_flight", second_flight, ready_to_land),
+            Step("landing", land, lambda b, t: b.stage != "flight"),
+            Step("absorb", lambda t: MatAbsorb(ctx, c, self.previous),
+                 lambda b, t: b.finished or t - b.t0 > c["absorb_max"]),
+            Step("rise", lambda t: MatRise(ctx, c, self.previous.landing), lambda b, t: b.finished),
+            Step("balance", lambda t: self.stand_up(),
+                 lambda b, t: b.posture_reached(t) and t - b.t0 >= c["stand_time"] + CONSTANTS.stand_settle),
+            Step("gesture", lambda t: ArmGesture(ctx, self.previous), lambda b, t: b.finished),
+            Step("bow", lambda t: Bow(ctx, self.previous.balance)),
+        ]
+
+    def stand_up(self) -> Behaviour:
+        """The balance from the landed crouch, standing up over ``stand_time`` (rebalance)."""
+        self.landing = self.previous.landing                  # the rise's landing
+        return self.rebalance(move_time=self.cfg["stand_time"], com_offset_x=self.cfg["stand_com_offset"])
+
+    def rebalance(self, **params) -> Balance:
+        """A balance (balance_after_landing: from the height the legs' length names) that starts
+        from the trunk's pitch as it is and moves to ``params``' posture: a balance started from an
+        upright trunk snapped the leaning one up and threw the COM, and one started from the
+        standing pose lost her within a second."""
+        balance = balance_after_landing(self.ctx, self.landing)
+        m = self.ctx.data.xmat[self.pelvis]
+        balance.from_pitch = math.atan2(-float(m[6]), float(m[8]))
+        balance.params = dict(balance.params, **params)
+        return balance
+
+    def board_law(self, t: float) -> None:
+        """At the board's maximum deflection (its deck stops going down) the legs extend."""
+        if self.deck_velocity() < 0.0:
+            self.deck_going_down = True
+        if self.pushed or not self.deck_going_down or self.deck_velocity() < 0.0:
+            return
+        self.pushed = True
+        self.event(t, "max_deflection")
+        c, s = self.cfg, self.ctx.servos
+        goals = both_sides({"knee_*_y": 0.0, "hip_*_y": c["push_hip"], "ankle_*_y": c["push_ankle"]})
+        s.move_to(s.indices(list(goals)), np.array(list(goals.values())), c["push_time"], t)
+
+    def reach_law(self, t: float) -> None:
+        """Eq. 12: each shoulder at gamma = lambda + phi (the arm along the line to the hand goal)."""
+        d, s = self.ctx.data, self.ctx.servos
+        phi = self.body_pitch()
+        if not self.opened and phi > self.cfg["open_pitch"]:
+            # the pike that sped the rotation opens before the hands land: the straight body and
+            # the arms in line carry the horse's push through the COM
+            self.opened = True
+            self.event(t, "open")
+            hips = s.indices(["hip_r_y", "hip_l_y"])
+            s.move_to(hips, np.array([self.cfg["horse_hip"]] * 2), self.cfg["open_time"], t)
+        goals = []
+        for k, side in enumerate("rl"):
+            # each hand's goal is on the horse straight ahead of its own shoulder (the hands land
+            # shoulder-width apart); lambda is in the shoulder's sagittal plane
+            to_hand = self.hand_goal - d.xpos[self.shoulders[k]]
+            lam = math.atan2(float(to_hand[0]), float(-to_hand[2]))       # from the downward vertical, + forward
+            gamma = lam + phi
+            goals.append(gamma if side == "r" else -gamma)
+        i = s.indices(["shoulder_r_z", "shoulder_l_z"])
+        s.start[i] = s.goal[i] = np.clip(goals, self.shoulder_range[:, 0], self.shoulder_range[:, 1])
+        s.t0[i] = t
+
+    def update(self, t: float) -> None:
+        self.rotation.update(t)
+        self.body_pitch()
+        super().update(t)
+
+    @classmethod
+    def assess(cls, trajectory):
+        from .report import vault_assess
+        return vault_assess(trajectory)

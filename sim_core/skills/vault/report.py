@@ -1,0 +1,266 @@
+"""The vault's phases and Table 1, read off a trajectory's contact forces (``contact_force``: the
+force of each named world geom on each body), so that anyone can recompute them from the file.
+
+``python -m sim_core report vault [--character woman] [--out FILE.npz]`` simulates the vault and
+prints Table 1 of Hodgins et al. 1995: our value, Takei's mean and range (24 elite women, 1987 Pan
+American Games) and the 1995 simulation, for the four phase times, the eight COM velocities and
+the two mean vertical forces F = integral F_z dt / T, with each force row's impulse-momentum check
+m (dv_z / T + g) beside it."""
+from __future__ import annotations
+
+import argparse
+import math
+
+import numpy as np
+
+from ...analysis import FOOT_BODIES, true_runs
+from ..handspring.behaviour import HAND_BODIES
+from ...ballistics import GRAVITY
+from ..somersault.behaviour import pelvis_pitch
+
+STILL_SPEED = 0.1                 # m/s: TARGETS.md "still"
+ROTATION_TOLERANCE = 0.5          # rad: one somersault is 2 pi within this (issue 31)
+PEAK_LANDING_LIMIT = 11.6         # body weights: the dismount band's top ([T] 481, Ozguven & Berme)
+CONTACT_GAP = 0.015               # s: a contact broken for at most this long is one contact (a bounce)
+SHIN_BODIES = ("LLEGR", "LLEGL")  # the lower legs (their body origin is the knee)
+KNEELING_HEIGHT = 0.15            # m: a knee this low above the mat is a kneel
+FALLEN_PELVIS = 0.35              # m: the pelvis this low above the mat after the landing is a fall
+BALANCED_TIME = 2.0               # s: standing balanced at least this long at the end (TARGETS.md V7, ours)
+
+# Table 1 of Hodgins et al. 1995 ([A] 208-230): (row, unit, Takei mean, min, max, the 1995 simulation)
+TABLE_1 = (
+    ("board contact", "s", 0.137, 0.11, 0.15, 0.105),
+    ("first flight", "s", 0.235, 0.14, 0.30, 0.156),
+    ("horse contact", "s", 0.245, 0.19, 0.30, 0.265),
+    ("second flight", "s", 0.639, 0.50, 0.78, 0.632),
+    ("vx board touchdown", "m/s", 6.75, 5.92, 7.25, 6.75),
+    ("vx board liftoff", "m/s", 4.61, 3.97, 5.26, 4.01),
+    ("vx horse touchdown", "m/s", 4.61, 3.97, 5.26, 4.01),
+    ("vx horse liftoff", "m/s", 3.11, 2.48, 3.83, 2.83),
+    ("vz board touchdown", "m/s", -1.15, -1.54, -0.71, -1.13),
+    ("vz board liftoff", "m/s", 3.34, 2.98, 3.87, 3.81),
+    ("vz horse touchdown", "m/s", 1.26, 0.74, 2.39, 2.13),
+    ("vz horse liftoff", "m/s", 1.46, 0.56, 2.47, 1.10),
+    ("mean vertical force board", "N", 2175, 1396, 2792, 5075),
+    ("mean vertical force horse", "N", 521, 309, 752, 957),
+)
+TAKEI_MASS = (47.96, 35.5, 64.0, 64.3)     # kg: mean, min, max, the 1995 simulation's gymnast
+TAKEI_HEIGHT = (1.55, 1.39, 1.66, 1.64)    # m
+
+
+def _column(trajectory, geom: str) -> np.ndarray:
+    """Per frame: the world-frame force (N) of the named world geom on the whole character."""
+    geoms = trajectory.meta["world_geoms"]
+    return trajectory.arrays["contact_force"][:, :, geoms.index(geom)].sum(axis=1)
+
+
+def contact_runs(force_z: np.ndarray, gap: int) -> list[tuple[int, int]]:
+    """The runs of frames with a pushing contact, a gap of at most ``gap`` frames closed: the first
+    impact on the springboard throws its light deck ahead of the feet for a few ms, and that is
+    not a flight."""
+    runs = true_runs(force_z > 0.0)
+    merged: list[tuple[int, int]] = []
+    for run in runs:
+        if merged and run[0] - merged[-1][1] <= gap:
+            merged[-1] = (merged[-1][0], run[1])
+        else:
+            merged.append(run)
+    return merged
+
+
+def vault_phases(trajectory) -> dict:
+    """The contact phases as frame ranges [first, last + 1): the first board contact; the horse
+    contact from the first touch after it to the last release before the mat; the first mat
+    contact after that (to the end). The flights are between them."""
+    gap = int(round(CONTACT_GAP * float(trajectory.meta["control_rate"])))
+    board, horse, mat = (contact_runs(_column(trajectory, g)[:, 2], gap) for g in ("springboard", "vault_table", "landing_mat"))
+    phases = {}
+    if board:
+        phases["board"] = board[0]
+        horse = [h for h in horse if h[0] >= board[0][1]]
+        mat = [r for r in mat if horse and r[0] >= horse[0][1]]
+        if horse:
+            # the horse contact: from the first touch to the last release before the mat (the hands
+            # bounce and land again: one support phase, as Takei's contact time counts it)
+            end = mat[0][0] if mat else len(trajectory.arrays["time"])
+            phases["horse"] = (horse[0][0], max(h[1] for h in horse if h[0] < end))
+            if mat:
+                phases["mat"] = (mat[0][0], len(trajectory.arrays["time"]))
+    return phases
+
+
+def table_1(trajectory) -> dict:
+    """Table 1's rows measured off the run (a row is None where its phase did not happen), and
+    per contact the impulse-momentum check: the mean vertical force m (dv_z / T + g)."""
+    a, meta = trajectory.arrays, trajectory.meta
+    t, v = a["time"], a["com_vel"]
+    mass = float(meta["total_mass"])
+    dt = 1.0 / float(meta["control_rate"])
+    ph = vault_phases(trajectory)
+    rows = {name: None for name, *_ in TABLE_1}
+    checks = {}
+    if "board" in ph:
+        i, j = ph["board"]
+        rows["board contact"] = float(t[j] - t[i]) if j < len(t) else None
+        rows["vx board touchdown"], rows["vz board touchdown"] = float(v[i, 0]), float(v[i, 2])
+        if j < len(t):
+            rows["vx board liftoff"], rows["vz board liftoff"] = float(v[j, 0]), float(v[j, 2])
+    for name, key, geom in (("board", "board", "springboard"), ("horse", "horse", "vault_table")):
+        if key not in ph or ph[key][1] >= len(t):
+            continue
+        i, j = ph[key]
+        duration = float(t[j] - t[i])
+        force = _column(trajectory, geom)[:, 2]
+        # a frame's force is the one of the physics step before it: frames i+1 .. j cover the contact
+        mean = float(force[i + 1:j + 1].sum() * dt / duration)
+        momentum = mass * ((float(v[j, 2]) - float(v[i, 2])) / duration + GRAVITY)
+        rows[f"mean vertical force {name}"] = mean
+        checks[name] = {"mean_force": mean, "momentum_force": momentum,
+                        "relative_difference": abs(mean - momentum) / max(abs(mean), 1e-9)}
+    if "horse" in ph:
+        i, j = ph["horse"]
+        rows["first flight"] = float(t[i] - t[ph["board"][1]])
+        rows["vx horse touchdown"], rows["vz horse touchdown"] = float(v[i, 0]), float(v[i, 2])
+        if j < len(t):
+            rows["horse contact"] = float(t[j] - t[i])
+            rows["vx horse liftoff"], rows["vz horse liftoff"] = float(v[j, 0]), float(v[j, 2])
+    if "mat" in ph:
+        rows["second flight"] = float(t[ph["mat"][0]] - t[ph["horse"][1]])
+    return {"rows": rows, "impulse_momentum": checks, "mass": mass}
+
+
+def vault_assess(trajectory) -> tuple[str, dict]:
+    """The vault's outcome: the phases in order (board, horse, mat), one forward somersault from
+    the upright (2 pi within ROTATION_TOLERANCE, the pelvis's pitch at the end), the feet first on
+    the mat, no body but the feet on the mat or the floor after the landing, the peak landing
+    force within PEAK_LANDING_LIMIT body weights, and at the end still, standing (COM over the
+    feet's polygon) for BALANCED_TIME; plus Table 1's rows."""
+    a, meta = trajectory.arrays, trajectory.meta
+    names = list(a["body_names"])
+    t = a["time"]
+    measured = table_1(trajectory)
+    metrics = {"table_1": measured["rows"], "impulse_momentum": measured["impulse_momentum"]}
+    ph = vault_phases(trajectory)
+    metrics["phases"] = {k: [float(t[i]), float(t[min(j, len(t) - 1)])] for k, (i, j) in ph.items()}
+    pitch = pelvis_pitch(trajectory)
+    metrics["rotation"] = float(pitch[-1])
+    metrics["somersaults"] = metrics["rotation"] / (2 * math.pi)
+    if "horse" in ph:
+        # the palms at the horse touchdown: the angle (deg) between each palm's normal (the hand
+        # box's thin axis, inward: medial in the standing pose) and straight down (palm down flat)
+        w, x, y, _ = a["body_quat"][ph["horse"][0], [names.index(n) for n in HAND_BODIES]].T
+        metrics["palm_angle_at_horse_deg"] = np.degrees(np.arccos(np.clip(1 - 2 * (x * x + y * y), -1, 1))).tolist()
+        # the elbows on the horse: the largest angle (deg) between upper arm and forearm, each side
+        i, j = ph["horse"]
+        bends = []
+        for side in "RL":
+            shoulder, elbow, wrist = (a["body_pos"][i:j, names.index(n + side)] for n in ("UARM", "LARM", "HAND"))
+            upper, fore = elbow - shoulder, wrist - elbow
+            cos = (upper * fore).sum(axis=1) / np.linalg.norm(upper, axis=1) / np.linalg.norm(fore, axis=1)
+            bends.append(float(np.degrees(np.arccos(np.clip(cos, -1, 1))).max()))
+        metrics["elbow_bend_on_horse_deg"] = bends
+    weight = GRAVITY * float(meta["total_mass"])
+    if "mat" not in ph:
+        return ("no_board" if "board" not in ph else "no_horse" if "horse" not in ph else "no_landing"), metrics
+    first = ph["mat"][0]
+    metrics["rotation_at_touchdown"] = float(pitch[first])
+    mat_force = a["contact_force"][:, :, meta["world_geoms"].index("landing_mat")]
+    touching = np.flatnonzero(np.linalg.norm(mat_force[first], axis=1) > 0)
+    metrics["first_on_mat"] = [names[b] for b in touching]
+    metrics["feet_first"] = bool(len(touching)) and all(names[b] in FOOT_BODIES for b in touching)
+    metrics["peak_landing_body_weights"] = float(mat_force[first:, :, 2].sum(axis=1).max() / weight)
+    # a fall after the landing: a body but the feet on the mat or the floor - except the shins while
+    # the knees are well above the mat (the feet sink into the mat and its top closes round the
+    # ankles, where the shin's capsule ends; a shin on the mat with the knee low is a kneel) - or
+    # the pelvis low
+    mat_top = meta["world"]["landing_mat"][4]
+    shins = [names.index(n) for n in SHIN_BODIES]
+    knee_low = a["body_pos"][first:, shins, 2] - mat_top < KNEELING_HEIGHT
+    after = a["ground_contact"][first:].copy()
+    after[:, shins] &= knee_low
+    allowed = np.array([n in FOOT_BODIES for n in names])
+    bad = np.flatnonzero((after & ~allowed).any(axis=1))
+    pelvis_z = a["body_pos"][first:, names.index("PELVIS"), 2]
+    low = np.flatnonzero(pelvis_z - mat_top < FALLEN_PELVIS)
+    metrics["fell"] = bool(len(bad) or len(low))
+    metrics["fall_time"] = float(t[first + min([*bad[:1], *low[:1]])]) if metrics["fell"] else None
+    # the feet through the mat onto the floor under it (until a fall, after which she may roll off
+    # the mat): what she then stands on is not the mat
+    feet = [names.index(n) for n in FOOT_BODIES]
+    until = first + min([*bad[:1], *low[:1]]) if metrics["fell"] else len(t)
+    floor = a["contact_force"][first:until + 1, feet, meta["world_geoms"].index("ground"), 2].sum(axis=1)
+    metrics["floor_under_mat_peak"] = float(floor.max())
+    metrics["landing_sink"] = float(mat_top - a["support_points"][first:until + 1, :, 2].min())
+    metrics["through_the_mat"] = bool(floor.max() > 0.0)
+    metrics["final_com_speed"] = float(np.linalg.norm(a["com_vel"][-1]))
+    feet = a["support_points"]
+    com = a["com"]
+    # standing balanced: the COM's ground projection inside the feet's box (x, y) at the end
+    lo, hi = feet[:, :, :2].min(axis=1), feet[:, :, :2].max(axis=1)
+    inside = ((com[:, :2] >= lo) & (com[:, :2] <= hi)).all(axis=1) & (t > t[first])
+    runs = true_runs(inside)
+    metrics["balanced_time_at_end"] = float(t[-1] - t[runs[-1][0]]) if runs and runs[-1][1] == len(t) else 0.0
+    middle = feet[first:, :, :2].mean(axis=1)
+    settled = int(np.searchsorted(t[first:], t[first] + 0.5))
+    metrics["landing_slide_after_settle"] = float(np.linalg.norm(middle[settled:] - middle[min(settled, len(middle) - 1)],
+                                                                 axis=1).max()) if settled < len(middle) else 0.0
+    if metrics["fell"]:
+        return "fell", metrics
+    if not metrics["feet_first"]:
+        return "not_feet_first", metrics
+    if abs(metrics["rotation"] - 2 * math.pi) > ROTATION_TOLERANCE:
+        return "wrong_rotation", metrics
+    if metrics["through_the_mat"]:
+        return "through_the_mat", metrics
+    if metrics["peak_landing_body_weights"] > PEAK_LANDING_LIMIT:
+        return "hard_landing", metrics
+    if metrics["balanced_time_at_end"] < BALANCED_TIME or metrics["final_com_speed"] >= STILL_SPEED:
+        return "not_balanced", metrics
+    return "success", metrics
+
+
+def format_table_1(trajectory) -> str:
+    """Table 1 as text: per row our value, Takei's mean [min, max], the 1995 simulation, whether
+    ours is inside the human range; and per contact the impulse-momentum check."""
+    measured = table_1(trajectory)
+    rows = measured["rows"]
+    meta = trajectory.meta
+    apparatus = ("the 1987 women's horse", "the FIG table")[int(round(meta["params"]["apparatus"]))]
+    lines = [f"Table 1 (Hodgins et al. 1995): the {meta['character']} vaulting {apparatus}",
+             f"{'variable':28s} {'ours':>9s} {'Takei mean':>10s} {'[min, max]':>16s} {'1995 sim':>9s}  in range"]
+    mass = measured["mass"]
+    m0, lo, hi, sim = TAKEI_MASS
+    lines.append(f"{'mass (kg)':28s} {mass:9.2f} {m0:10.2f} {f'[{lo:g}, {hi:g}]':>16s} {sim:9.2f}  {lo <= mass <= hi}")
+    for name, unit, mean, lo, hi, sim in TABLE_1:
+        ours = rows[name]
+        value = "   (none)" if ours is None else f"{ours:9.3f}"
+        inside = "-" if ours is None else str(lo <= ours <= hi)
+        lines.append(f"{f'{name} ({unit})':28s} {value} {mean:10.3f} {f'[{lo:g}, {hi:g}]':>16s} {sim:9.3f}  {inside}")
+    lines.append("impulse-momentum (mean vertical force against m (dv_z / T + g)):")
+    for name, check in measured["impulse_momentum"].items():
+        lines.append(f"  {name}: integral F_z dt / T = {check['mean_force']:.0f} N, m (dv_z / T + g) = "
+                     f"{check['momentum_force']:.0f} N, difference {100 * check['relative_difference']:.1f} %")
+    return "\n".join(lines)
+
+
+def main(argv=None) -> int:
+    from ...simulate import RunRequest, run
+    parser = argparse.ArgumentParser(prog="python -m sim_core report vault", description=__doc__.split("\n\n")[0])
+    parser.add_argument("--character", default="woman")
+    parser.add_argument("--apparatus", default="horse_1987", choices=("horse_1987", "table"))
+    parser.add_argument("--out", default=None, help="also write the trajectory (.npz)")
+    args = parser.parse_args(argv)
+    trajectory = run(RunRequest("vault", args.character, params={"apparatus": args.apparatus}))
+    if args.out:
+        trajectory.save(args.out)
+    print(format_table_1(trajectory))
+    metrics = trajectory.meta["metrics"]
+    print(f"outcome: {trajectory.meta['outcome']}; rotation {metrics['rotation']:.2f} rad "
+          f"({metrics['somersaults']:.2f} somersaults); feet first: {metrics.get('feet_first')}; "
+          f"peak landing force {metrics.get('peak_landing_body_weights', float('nan')):.1f} body weights; "
+          f"fell at {metrics.get('fall_time')} s; feet through the mat onto the floor: {metrics.get('through_the_mat')} "
+          f"(floor force up to {metrics.get('floor_under_mat_peak', 0.0):.0f} N); balanced at the end for "
+          f"{metrics.get('balanced_time_at_end', 0.0):.2f} s; the palms at the horse touchdown "
+          f"{', '.join(f'{x:.0f}' for x in metrics.get('palm_angle_at_horse_deg', []))} deg from palm-down; the elbows "
+          f"bent at most {', '.join(f'{x:.0f}' for x in metrics.get('elbow_bend_on_horse_deg', []))} deg on the horse")
+    return 0

@@ -1,0 +1,206 @@
+"""The handspring vault (issue 31; Hodgins et al. 1995), measured off the simulation: the seed's start,
+the six states in order, contact forces with the board, the horse and the mat in the trajectory,
+Table 1's rows with their impulse-momentum check, feet first on the mat, no force but gravity,
+contacts and servos, replay bit for bit, and the refusal of a run-up speed it does not handle.
+
+She ends standing balanced (the outcome "success")."""
+import math
+
+import numpy as np
+import pytest
+
+from sim_core.errors import ParameterError
+from sim_core.simulate import RunRequest, largest_difference, replay, run
+from sim_core.skills.vault.behaviour import CONSTANTS
+from sim_core.skills.vault.report import (BALANCED_TIME, PEAK_LANDING_LIMIT, ROTATION_TOLERANCE, TABLE_1,
+                                          format_table_1, table_1)
+from sim_core.world.apparatus import BOARD_TOP
+
+STATES = ["hurdle", "board", "first_flight", "horse", "second_flight", "landing", "absorb", "rise", "balance",
+          "gesture"]
+GESTURE_END = 6.0            # s: the gesture is over (4.43-5.93 s)
+
+
+@pytest.fixture(scope="module")
+def vault():
+    """The vault to the gesture: 6 s (the default runs on into the bow, where she falls)."""
+    return run(RunRequest("vault", "woman", duration=GESTURE_END))
+
+
+@pytest.fixture(scope="module")
+def whole():
+    """The whole script, the bow included (the default duration)."""
+    return run(RunRequest("vault", "woman"))
+
+
+def test_the_vault_starts_in_the_seeds_hurdle_flight(vault):
+    """Frame 0: the COM moving 6.75 m/s forward, 0.9 m above the board's top; logged as the start
+    state; no contact yet."""
+    a, meta = vault.arrays, vault.meta
+    assert a["com_vel"][0, 0] == pytest.approx(6.75, abs=1e-6)
+    assert a["com"][0, 2] - BOARD_TOP == pytest.approx(CONSTANTS.start_com_height, abs=1e-6)
+    skill = meta["start_state"]["skill"]
+    assert skill["state"] == "hurdle" and skill["com_velocity"][0] == 6.75 and skill["com_above_board"] == 0.9
+    assert not a["ground_contact"][0].any()
+
+
+def test_the_six_states_run_once_each_in_order(vault):
+    """The seed's six states once each, in order, then the landing's absorb, the rise, the balance
+    and the gesture (TARGETS.md V2)."""
+    names = [name for _, name in vault.meta["phase_events"]]
+    order = [names.index(s) for s in STATES]
+    assert order == sorted(order)
+    assert all(names.count(s) == 1 for s in STATES[:6])
+    assert "max_deflection" in names          # the knees extend at the board's maximum deflection
+
+
+def test_the_trajectory_records_the_board_horse_and_mat_forces(vault):
+    """contact_force has a column per apparatus; the board, the horse and the mat each push on her
+    in their phase (so Table 1 can be recomputed from the file)."""
+    geoms = vault.meta["world_geoms"]
+    force = vault.arrays["contact_force"].sum(axis=1)
+    for name in ("springboard", "vault_table", "landing_mat"):
+        assert force[:, geoms.index(name), 2].max() > 100.0, name
+    phases = vault.meta["metrics"]["phases"]
+    assert phases["board"][1] <= phases["horse"][0] < phases["horse"][1] <= phases["mat"][0]
+
+
+def test_table_1_rows_and_their_impulse_momentum_consistency(vault):
+    """Every row is measured; all but four are inside Takei's range (the four just outside are
+    listed in docs/vault.md); each contact's mean vertical force (integral F_z dt / T) agrees with
+    m (dv_z / T + g) within 5 % (TARGETS.md V4); in flight the horizontal velocity is kept (board
+    liftoff = horse touchdown)."""
+    measured = table_1(vault)
+    rows = measured["rows"]
+    print(format_table_1(vault))
+    assert all(rows[name] is not None for name, *_ in TABLE_1)
+    outside = [name for name, _, _, lo, hi, _ in TABLE_1 if not lo <= rows[name] <= hi]
+    assert outside == ["horse contact", "vx horse touchdown", "vx horse liftoff", "vz board liftoff"], outside
+    for contact in ("board", "horse"):
+        assert measured["impulse_momentum"][contact]["relative_difference"] < 0.05, contact
+    assert rows["vx board liftoff"] == pytest.approx(rows["vx horse touchdown"], abs=0.1)
+
+
+def test_she_turns_over_the_horse_and_lands_feet_first_softly(vault):
+    """At the mat touchdown the body has turned most of a forward somersault (within 1 rad of the
+    upright); the first bodies on the mat are feet."""
+    m = vault.meta["metrics"]
+    assert m["feet_first"], m["first_on_mat"]
+    assert 2 * math.pi - 1.0 < m["rotation_at_touchdown"] < 2 * math.pi + 0.5
+
+
+def test_the_peak_landing_force_is_in_the_dismount_band(vault):
+    """<= 11.6 body weights ([T] 481: dismounts onto regulation mats peak at 8.2-11.6)."""
+    assert vault.meta["metrics"]["peak_landing_body_weights"] <= PEAK_LANDING_LIMIT
+
+
+def test_only_gravity_contacts_and_servos_move_her(vault):
+    """No push (xfrc_applied) at any frame, and the trajectory's logged edits are only servo gains."""
+    assert not np.any(vault.arrays["push_force"])
+    fields = vault.meta["edit_fields"]
+    edited = {fields[int(f)] for f in vault.arrays["edit_field"]}
+    assert edited <= {"actuator_gainprm", "actuator_biasprm"}, edited
+
+
+def test_shoulders_and_wrists_have_no_torque_on_the_horse(vault):
+    """From the horse touchdown to the second flight the shoulder and wrist servos' gains (kp and
+    kv) are zero in the edit log, so their actuator force is 0; the elbows are stiffened (straight)."""
+    import mujoco
+    model = mujoco.MjModel.from_xml_string(vault.meta["model_xml"])
+    a, meta = vault.arrays, vault.meta
+    rate = meta["control_rate"]
+    start = next(t for t, name in meta["phase_events"] if name == "horse")
+    end = next(t for t, name in meta["phase_events"] if name == "second_flight")
+    gain = {k: model.actuator_gainprm[:, 0].copy() for k in ("kp",)}["kp"]
+    ncol = model.actuator_gainprm.shape[1]
+    field = meta["edit_fields"].index("actuator_gainprm")
+    for tick, f, index, value in zip(a["edit_tick"], a["edit_field"], a["edit_index"], a["edit_value"]):
+        if f == field and tick <= round(start * rate) and int(index) % ncol == 0:
+            gain[int(index) // ncol] = value
+    names = meta["dof_names"]
+    limp = [i for i, n in enumerate(names) if n.startswith(("shoulder", "wrist"))]
+    elbows = [names.index("elbow_r_z"), names.index("elbow_l_z")]
+    assert end > start and len(limp) == 10
+    assert np.all(gain[limp] == 0.0)
+    assert np.all(gain[elbows] > model.actuator_gainprm[elbows, 0])
+    later = [t for t, f, i in zip(a["edit_tick"], a["edit_field"], a["edit_index"])
+             if f == field and round(start * rate) < t < round(end * rate) and int(i) // ncol in limp]
+    assert not later
+
+
+def test_the_man_is_refused_in_one_line():
+    with pytest.raises(ParameterError, match=r"^the man has no vault settings with human torque limits"):
+        run(RunRequest("vault", "man", duration=0.1))
+
+
+def test_the_vault_replays_bit_for_bit(vault):
+    assert largest_difference(vault, replay(vault)) == 0.0
+
+
+@pytest.mark.parametrize("speed", [6.6, 6.9])
+def test_inside_the_handled_speeds_she_gets_over_and_lands_feet_first(speed):
+    """The handled run-up speeds (vault_any.json's handled_speed) each get her over the horse onto
+    her feet, turned to within 1 rad of upright (she falls after, as at 6.75 m/s)."""
+    m = run(RunRequest("vault", "woman", params={"runup_speed": speed}, duration=2.0)).meta["metrics"]
+    assert set(m["phases"]) == {"board", "horse", "mat"} and m["feet_first"]
+    assert 2 * math.pi - 1.0 < m["rotation_at_touchdown"] < 2 * math.pi + 0.5
+
+
+@pytest.mark.parametrize("speed", [5.0, 7.2])
+def test_a_run_up_speed_outside_the_handled_range_is_refused(speed):
+    low, high = CONSTANTS.handled_speed
+    with pytest.raises(ParameterError, match=rf"runup_speed={speed:g} m/s is outside .* allowed range is \[{low:g}, {high:g}\]"):
+        run(RunRequest("vault", "woman", params={"runup_speed": speed}, duration=0.1))
+
+
+def test_the_feet_stay_in_the_mat(vault):
+    """The landing sinks into the mat (more than standing does) without going through it: no foot
+    pushes on the floor under it."""
+    m = vault.meta["metrics"]
+    assert not m["through_the_mat"], m["floor_under_mat_peak"]
+    assert 0.04 < m["landing_sink"] < vault.meta["world"]["landing_mat"][4], m["landing_sink"]
+
+
+def test_the_landing_brings_the_com_to_rest_over_the_feet(vault):
+    """The seed's switch to the balance: it comes when the COM is over the middle of the feet (within
+    5 cm of it) and slow (< 0.3 m/s), with little spin: the landing has taken the vault's
+    horizontal and rotational momentum."""
+    a, meta = vault.arrays, vault.meta
+    when = next(t for t, name in meta["phase_events"] if name == "balance")
+    k = round(when * meta["control_rate"])
+    feet = a["support_points"][k, :, 0]
+    ahead = a["com"][k, 0] - 0.5 * (feet.min() + feet.max())
+    assert -0.05 <= ahead < 0.05, ahead
+    assert np.linalg.norm(a["com_vel"][k]) < 0.3 and abs(a["angmom"][k, 1]) < 3.0
+
+
+def test_the_gesture_is_made_standing(vault):
+    """Both arms thrown up and back (shoulder flexion past 2 rad) while she stands."""
+    a, meta = vault.arrays, vault.meta
+    import mujoco
+    model = mujoco.MjModel.from_xml_string(meta["model_xml"])
+    start = next(t for t, name in meta["phase_events"] if name == "gesture")
+    right = a["qpos"][:, model.jnt_qposadr[model.joint("shoulder_r_z").id]]
+    left = a["qpos"][:, model.jnt_qposadr[model.joint("shoulder_l_z").id]]
+    during = a["time"] >= start
+    assert right[during].max() > 2.0 and -left[during].min() > 2.0
+
+
+@pytest.mark.xfail(strict=True, reason="the bow: ~4 s after she stood up the balance on the mat tips her forward (the "
+                                        "right ankle plantarflexes, the heel lifts); she falls at 7.4 s, in the bow "
+                                        "(docs/vault.md, what is left)")
+def test_the_bow_and_she_still_stands(whole):
+    assert "bow_up" in [name for _, name in whole.meta["phase_events"]]
+    assert whole.meta["outcome"] == "success", (whole.meta["outcome"], whole.meta["metrics"]["fall_time"])
+
+
+def test_one_somersault_and_she_ends_standing_balanced(vault):
+    """From the hurdle to the end the pelvis turns one forward somersault (2 pi within 0.5 rad); after
+    the landing no body but the feet (and the shins while the feet are sunk into the mat, the knees
+    well above it) touches; at the end she is still, the COM over the feet for >= 2 s; the outcome
+    is success."""
+    m = vault.meta["metrics"]
+    assert not m["fell"], m["fall_time"]
+    assert abs(m["rotation"] - 2 * math.pi) <= ROTATION_TOLERANCE, m["rotation"]
+    assert m["balanced_time_at_end"] >= BALANCED_TIME and m["final_com_speed"] < 0.1
+    assert vault.meta["outcome"] == "success"
