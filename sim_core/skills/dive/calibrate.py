@@ -35,7 +35,8 @@ import numpy as np
 
 ROOT = Path.cwd()                   # docs are written under the folder it runs in (the checkout)
 
-from .behaviour import CALIBRATED_DIVES, FORWARD_ROTATING, GROUPS, Dive
+from .behaviour import CALIBRATED_DIVES, FORWARD_ROTATING, GROUPS, Dive, calibrated_row, dive_key, dive_parameters, dive_row
+from .fina import REPERTOIRE, parse
 from ... import tuned
 from ...errors import ParameterError
 from ...simulate import RunRequest, run
@@ -178,6 +179,26 @@ def table_limits(dives: list[dict]) -> dict:
             "twists": round(max(twists + [0.0]), 3)}
 
 
+def calibration_dives(character: str) -> list[dict]:
+    """The dives calibrated for ``character``, in its table's order: CALIBRATED_DIVES (the seed's
+    and the first beyond it), then the rest of the FINA repertoire; each with its number."""
+    repertoire = {n: dive_key(dive_parameters(n)) for n in REPERTOIRE}
+    seed = [dive_key(d) for d in CALIBRATED_DIVES[character]]
+    keys = seed + [key for key in repertoire.values() if key not in seed]
+    return [dict(number=next(n for n, k in repertoire.items() if k == key), **key) for key in keys]
+
+
+def chosen(dives: list[dict], only: list | None, numbers: list | None) -> set[int]:
+    """Indices of the dives to search: ``--only`` indices and ``--dive`` numbers; all without either."""
+    if only is None and numbers is None:
+        return set(range(len(dives)))
+    wanted = {parse(n).number for n in numbers or []}
+    unknown = wanted - {d["number"] for d in dives}
+    if unknown:
+        raise ParameterError(f"--dive {', '.join(sorted(unknown))}: not in the repertoire; allowed: {', '.join(REPERTOIRE)}")
+    return set(only or []) | {k for k, d in enumerate(dives) if d["number"] in wanted}
+
+
 def main(argv=None) -> None:
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--character", choices=sorted(CALIBRATED_DIVES), action="append")
@@ -199,6 +220,8 @@ def main(argv=None) -> None:
     parser.add_argument("--start", help="JSON settings to start from, over the table's")
     parser.add_argument("--only", type=int, action="append",
                         help="calibrate only the dive with this index in the character's list; keep the others' table rows")
+    parser.add_argument("--dive", action="append",
+                        help="calibrate only this FINA dive of the repertoire (e.g. 107C; repeatable); keep the others' rows")
     args = parser.parse_args(argv)
     budget = args.budget if args.budget is not None else args.iterations * args.population
     for character in args.character or sorted(CALIBRATED_DIVES):
@@ -210,13 +233,21 @@ def main(argv=None) -> None:
             path = tuned.save("dives", character, table, strengths=["human"], directory=args.tables)
             print(f"{character}: limits {table['limits']}")
             continue
-        starts = [dict(old[k]["settings"] if k < len(old) and not args.fresh else {},
-                       **json.loads(args.start or "{}")) for k in range(len(CALIBRATED_DIVES[character]))]
+        todo = calibration_dives(character)
+        searched = chosen(todo, args.only, args.dive)
+        rows = [calibrated_row(stored, d) if stored is not None else None for d in todo]
+        # a dive's search starts from its own row, else from the most alike dive's (dive_row)
+        starts = [dict({} if args.fresh else (row or {}).get("settings") or (stored and dive_row(stored, d)) or {},
+                       **json.loads(args.start or "{}")) for d, row in zip(todo, rows)]
+        dives = []
         with executor_for(args.workers) as executor:
-            dives = [search(character, dive, budget, args.population, args.seed, starts[k], args.method, executor,
-                            args.refine)
-                     if args.only is None or k in args.only or k >= len(old) else old[k]
-                     for k, dive in enumerate(CALIBRATED_DIVES[character])]
+            for k, dive in enumerate(todo):
+                key = {n: v for n, v in dive.items() if n != "number"}
+                if k in searched:
+                    dives.append({"number": dive["number"], **search(character, key, budget, args.population, args.seed,
+                                                                     starts[k], args.method, executor, args.refine)})
+                elif rows[k] is not None:
+                    dives.append({"number": dive["number"], **rows[k]})
         limits = table_limits(dives)
         path = tuned.save("dives", character, {"script": "python -m sim_core calibrate dive",
                                                "search": {**vars(args), "tables": str(args.tables), "budget": budget},
