@@ -9,7 +9,6 @@ Writes docs/tumbling.md's results block and docs/tumbling_rates.png.
 from __future__ import annotations
 
 import argparse
-import math
 import re
 import sys
 from pathlib import Path
@@ -21,12 +20,11 @@ ROOT = Path.cwd()                   # docs are written under the folder it runs 
 
 from ...character.model import compile_model
 from ...character.spec import load_character
-from .behaviour import (CALIBRATED_DIVES, Dive, ROTATION_TOLERANCE, calibrated_row, dive_name, entry_reach, flight_time,
-                        rotation_per_momentum)
+from .behaviour import CALIBRATED_DIVES, Dive, ROTATION_TOLERANCE, calibrated_row, dive_name
 from .fina import REPERTOIRE
 from ... import tuned
 from ..somersault.behaviour import DIRECTIONS
-from ...control.tumble import CONSTANTS as TUMBLE, inertia_about_com, position_inertia, position_name
+from ...control.tumble import CONSTANTS as TUMBLE, inertia_about_com, position_inertia
 from ...errors import ParameterError
 from ...simulate import RunRequest, run
 
@@ -185,18 +183,6 @@ REPERTOIRE_DOC = ROOT / "docs" / "skills" / "dives.md"
 PLATFORM = Dive.schema.by_name["platform_height"].default     # m: 10, FINA's highest, Wooten's dives
 
 
-def momentum_needed(character: str, params: dict) -> float:
-    """kg m^2/s at take-off the dive's somersaults need from PLATFORM (the feasibility check's
-    model, from the character's table's rise)."""
-    spec = load_character(character)
-    model, _ = compile_model(spec)
-    rise = (tuned.load("dives", character) or tuned.load("dives", "any"))["limits"]["rise"]
-    flight = flight_time(PLATFORM, rise, entry_reach(spec))
-    per_momentum = rotation_per_momentum(flight, position_inertia(model, spec, position_name(params["position"])),
-                                         position_inertia(model, spec, "line"))
-    return 2 * math.pi * params["somersaults"] / per_momentum
-
-
 def measure(character: str, number: str) -> dict:
     """One repertoire dive: run as an animator would (``--set dive=NUMBER``); refused, its best
     calibrated take-off run as set. The measured figures and the verdict."""
@@ -204,7 +190,7 @@ def measure(character: str, number: str) -> dict:
     table = tuned.load("dives", character)
     row = calibrated_row(table, params) if table else None
     out = {"character": character, "number": number, "name": dive_name(params), "params": params,
-           "needed": momentum_needed(character, params),
+           "needed": Dive.momentum_needed_by(character, params),
            "reached": row["largest_momentum_clear"] if row else None, "refused": None}
     try:
         trajectory = run(RunRequest("dive", character, params={"dive": number}, duration=4.5))  # enters within it
