@@ -146,7 +146,7 @@ def test_the_needed_momentum_matches_the_reached_dives_measured_take_off():
     """The physics estimate (air time from 10 m, the position's and the line's inertia) is within
     20 % of the take-off angular momentum the reached seed dives measured: the refusals' figure
     is the simulation's."""
-    from sim_core.skills.dive.report import momentum_needed
+    momentum_needed = Dive.momentum_needed_by
     for character, number in (("man", "103B"), ("man", "403B"), ("woman", "405B")):
         params = Dive.schema.validate({"dive": number})
         row = calibrated_row(tuned.load("dives", character), params)

@@ -22,6 +22,8 @@ import math
 
 import numpy as np
 
+from ...character.model import compile_model
+from ...character.spec import load_character
 from ...control.behaviour import register
 from ...control.leap import CONSTANTS as LEAP
 from ...control.sequencer import Sequence, Step
@@ -268,6 +270,18 @@ class Dive(Sequence):
         """The take-off angular momentum (kg m^2/s) the dive's somersaults need in a flight of
         ``flight`` s: the inverse of rotation_capacity."""
         return 2 * math.pi * self.params["somersaults"] / self.rotation_per_momentum(flight)
+
+    @classmethod
+    def momentum_needed_by(cls, character: str, params: dict) -> float:
+        """momentum_needed of a dive (validated ``params``) of a named character, from its
+        table's rise, outside a run (the calibration's start, the repertoire report)."""
+        spec = load_character(character)
+        model, _ = compile_model(spec)
+        rise = (load("dives", character) or load("dives", "any"))["limits"]["rise"]
+        flight = flight_time(params["platform_height"], rise, entry_reach(spec))
+        per_momentum = rotation_per_momentum(flight, position_inertia(model, spec, position_name(params["position"])),
+                                             position_inertia(model, spec, "line"))
+        return 2 * math.pi * params["somersaults"] / per_momentum
 
     def rotation_per_momentum(self, flight: float) -> float:
         return rotation_per_momentum(flight, self._position_inertia(), self._line_inertia())
