@@ -3,7 +3,6 @@ somersaults, twists and position; a number that is malformed, of a form not buil
 repertoire is refused in one line before anything runs; the repertoire's dives from 10 m are
 simulated and judged off the simulation, and a dive the calibration did not reach is refused
 naming the angular momentum it needs and the one reached."""
-import math
 from pathlib import Path
 
 import numpy as np
@@ -127,13 +126,13 @@ def test_a_reached_repertoire_dive_beyond_the_seed_makes_its_rotations(character
 
 
 def test_a_dive_not_reached_is_refused_naming_the_momentum_needed_and_reached():
-    """A repertoire dive the calibration searched and did not reach (the man's forward 4 1/2
-    tuck, 109C, needs about twice the angular momentum of his 1 1/2) is refused before simulating,
-    with both figures; the needed one is above the one reached."""
+    """A repertoire dive the calibration searched and did not reach is refused before simulating,
+    with both figures: the man's forward 4 1/2 pike (109B) needs about 30 % more angular momentum
+    than any of his forward take-offs reached."""
     missing = not_reached_dives("man")
-    if not missing:
-        pytest.xfail("the man reaches every repertoire dive")
-    number = "109C" if "109C" in missing else missing[0]
+    if "109B" not in missing:
+        pytest.xfail(f"the man reaches 109B (not reached: {missing})")
+    number = "109B"
     with pytest.raises(ParameterError, match=r"is not reached by the man.*needs about ([\d.]+) kg m\^2/s, "
                                              r"the calibration's take-offs reached ([\d.]+)") as error:
         run(RunRequest("dive", "man", params={"dive": number}))
@@ -142,14 +141,41 @@ def test_a_dive_not_reached_is_refused_naming_the_momentum_needed_and_reached():
     assert needed > got
 
 
-def test_the_needed_momentum_matches_the_reached_dives_measured_take_off():
+def test_the_needed_momentum_is_what_the_reached_dives_took_off_with():
     """The physics estimate (air time from 10 m, the position's and the line's inertia) is within
-    20 % of the take-off angular momentum the reached seed dives measured: the refusals' figure
-    is the simulation's."""
+    20 % of the take-off angular momentum the seed's 1 1/2 and 2 1/2 measured, and no reached
+    repertoire dive took off with less than 85 % of it (some took off with more and opened early):
+    the refusals' figure is the simulation's."""
     momentum_needed = Dive.momentum_needed_by
     for character, number in (("man", "103B"), ("man", "403B"), ("woman", "405B")):
         params = Dive.schema.validate({"dive": number})
         row = calibrated_row(tuned.load("dives", character), params)
-        measured = abs(row["measured"]["takeoff_angular_momentum"])
-        assert momentum_needed(character, params) == pytest.approx(measured, rel=0.2), (character, number)
-        assert math.isfinite(measured)
+        assert momentum_needed(character, params) == pytest.approx(abs(row["measured"]["takeoff_angular_momentum"]),
+                                                                   rel=0.2), (character, number)
+    for character in ("man", "woman"):
+        for number in reached_dives(character):
+            params = Dive.schema.validate({"dive": number})
+            measured = abs(calibrated_row(tuned.load("dives", character), params)["measured"]["takeoff_angular_momentum"])
+            assert measured >= 0.85 * momentum_needed(character, params), (character, number, measured)
+
+
+def test_the_calibration_covers_the_seed_dives_first_then_the_whole_repertoire():
+    """``calibrate dive`` keeps the table's first four rows (the seed's and the first beyond it) in
+    place, so the dives calibrated before stay bit for bit; every repertoire dive follows once."""
+    from sim_core.skills.dive.behaviour import CALIBRATED_DIVES, dive_key
+    from sim_core.skills.dive.calibrate import calibration_dives
+    for character in ("man", "woman"):
+        dives = calibration_dives(character)
+        assert [{k: d[k] for k in d if k != "number"} for d in dives[:4]] == [dive_key(d) for d in CALIBRATED_DIVES[character]]
+        assert sorted(d["number"] for d in dives) == sorted(REPERTOIRE)
+        table = tuned.load("dives", character)
+        assert [d["number"] for d in table["dives"][:4]] == [d["number"] for d in dives[:4]]
+
+
+def test_a_second_search_keeps_the_better_row_and_the_larger_momentum():
+    from sim_core.skills.dive.calibrate import better
+    old = {"score": 3.0, "settings": {"liftoff_hip": 1.0}, "largest_momentum_clear": 90.0}
+    new = {"score": 5.0, "settings": {"liftoff_hip": 1.2}, "largest_momentum_clear": 95.0}
+    assert better(old, new) == dict(old, largest_momentum_clear=95.0)
+    assert better(None, new) == new
+    assert better(old, dict(new, score=1.0))["settings"] == {"liftoff_hip": 1.2}

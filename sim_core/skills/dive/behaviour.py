@@ -227,7 +227,7 @@ class Dive(Sequence):
                 f"{_article(dive_name(p))} cannot be completed by the {self.ctx.character.name}: the arm throw made at most "
                 f"{limits.get('twists', 0.0):.2f} twists in a calibrated dive (allowed: that + {ROTATION_TOLERANCE:g})")
         flight = self.flight_time(limits["rise"])
-        lead = self.settings()["twist_lead"]
+        lead = self.twist_lead_needed()
         if p["twists"] and not p["low_level"] and position_name(p["position"]) != "layout" and lead >= flight:
             raise ParameterError(
                 f"{_article(dive_name(p))} cannot be done by the {self.ctx.character.name}: the "
@@ -241,6 +241,17 @@ class Dive(Sequence):
                 f"{_article(dive_name(p))} cannot be completed from {p['platform_height']:g} m by the "
                 f"{self.ctx.character.name}: the flight allows at most {capacity:.2f} somersaults in this position "
                 f"with the largest calibrated take-off angular momentum (allowed: that + {ROTATION_TOLERANCE:g})")
+
+    def twist_lead_needed(self) -> float:
+        """How long before the entry the twist of this dive needs the layout: the twist lead of the
+        character's calibrated twisting dive of the group nearest in twists (a multi-twist dive
+        twists from the take-off in the layout), else the lead this run's settings use."""
+        own = load("dives", self.ctx.character.name)
+        rows = [d for d in (own or {}).get("dives", []) if d.get("twists") and "twist_lead" in d["settings"]
+                and GROUPS[d["group"]] == group_name(self.params)]
+        if not rows:
+            return self.settings()["twist_lead"]
+        return min(rows, key=lambda d: abs(d["twists"] - self.params["twists"]))["settings"]["twist_lead"]
 
     def refuse_not_reached(self) -> None:
         """A dive the calibration searched and did not reach (its row's measured outcome is not a

@@ -196,6 +196,13 @@ def calibration_dives(character: str) -> list[dict]:
     return [dict(number=next(n for n, k in repertoire.items() if k == key), **key) for key in keys]
 
 
+def better(old: dict | None, new: dict) -> dict:
+    """A search's row, or the dive's old row where that scored better (a second search of a dive
+    not reached keeps the first's best); the largest momentum either reached clear of the platform."""
+    kept = new if old is None or new["score"] <= old.get("score", float("inf")) else old
+    return dict(kept, largest_momentum_clear=max(new["largest_momentum_clear"], (old or {}).get("largest_momentum_clear", 0.0)))
+
+
 def reached(row: dict | None) -> bool:
     """A table row whose search reached its dive (the measured outcome a success)."""
     return row is not None and row.get("measured", {}).get("outcome") == "success"
@@ -268,8 +275,9 @@ def main(argv=None) -> None:
             for k, dive in enumerate(todo):
                 key = {n: v for n, v in dive.items() if n != "number"}
                 if k in searched:
-                    dives.append({"number": dive["number"], **search(character, key, budget, args.population, args.seed,
-                                                                     starts[k], args.method, executor, args.refine)})
+                    found = search(character, key, budget, args.population, args.seed, starts[k], args.method,
+                                   executor, args.refine)
+                    dives.append({"number": dive["number"], **better(rows[k], found)})
                 elif rows[k] is not None:
                     dives.append({"number": dive["number"], **rows[k]})
         limits = table_limits(dives)

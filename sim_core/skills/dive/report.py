@@ -20,7 +20,9 @@ ROOT = Path.cwd()                   # docs are written under the folder it runs 
 
 from ...character.model import compile_model
 from ...character.spec import load_character
-from .behaviour import CALIBRATED_DIVES, Dive, ROTATION_TOLERANCE, calibrated_row, dive_name
+from .behaviour import (CALIBRATED_DIVES, FORWARD_ROTATING, GROUPS, ROTATION_TOLERANCE, Dive, calibrated_row,
+                        dive_name)
+from .calibrate import NoLimits
 from .fina import REPERTOIRE
 from ... import tuned
 from ..somersault.behaviour import DIRECTIONS
@@ -198,29 +200,58 @@ def measure(character: str, number: str) -> dict:
         out["refused"] = str(error)
         if row is None:
             return out
-        trajectory = run(RunRequest("dive", character, params=dict(dive=number, low_level=1, **row["settings"]),
-                                    duration=4.5))
+        with NoLimits():            # as the calibration ran it: the table's limits are what it measured
+            trajectory = run(RunRequest("dive", character, params=dict(dive=number, low_level=1, **row["settings"]),
+                                        duration=4.5))
     out.update(outcome=trajectory.meta["outcome"], metrics=trajectory.meta["metrics"])
     return out
 
 
 def table_lines(results: list[dict]) -> list[str]:
-    lines = ["| character | dive | | reached | outcome | somersaults (wanted) | twists (wanted) | entry from vertical | "
-             "take-off H kg m²/s | needed H kg m²/s | reached H kg m²/s | flight s |",
-             "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"]
+    lines = ["| character | dive | | reached | outcome | rotations within ¼ turn | somersaults (wanted) | twists (wanted) | "
+             "entry from vertical | take-off H kg m²/s | needed H kg m²/s | reached H kg m²/s | flight s | why not |",
+             "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"]
     for r in results:
         p, m = r["params"], r.get("metrics") or {}
         outcome = r.get("outcome", "not run") + (" (refused; its best calibrated take-off run as set)" if r["refused"] else "")
         cells = [r["character"], r["number"], r["name"], "yes" if reached(r) else "**no**", outcome]
         if "somersaults" in m:
-            cells += [f"{m['somersaults']:.2f} ({p['somersaults']:g})", f"{m['twists']:.2f} ({p['twists']:g})",
+            cells += ["yes" if rotations_right(p, m) else "no", f"{m['somersaults']:.2f} ({p['somersaults']:g})", f"{m['twists']:.2f} ({p['twists']:g})",
                       f"{m['entry_angle_from_vertical_deg']:.0f}°", f"{abs(m['takeoff_angular_momentum']):.1f}"]
         else:
-            cells += ["—"] * 4
+            cells += ["—"] * 5
         cells += [f"{r['needed']:.1f}", "—" if r["reached"] is None else f"{r['reached']:.1f}",
-                  f"{m['flight_time']:.2f}" if "flight_time" in m else "—"]
+                  f"{m['flight_time']:.2f}" if "flight_time" in m else "—", why_not(r)]
         lines.append("| " + " | ".join(cells) + " |")
     return lines
+
+
+def why_not(result: dict) -> str:
+    """Why a dive is not reached: the angular momentum (the largest any take-off of its group
+    reached without touching the platform is below the one it needs), or the control (that much
+    was reached, but no searched take-off gave the rotations and a vertical entry together)."""
+    if reached(result):
+        return ""
+    m, p = result.get("metrics") or {}, result["params"]
+    group = GROUPS[int(round(p["group"]))]
+    best = (tuned.load("dives", result["character"]) or tuned.load("dives", "any"))["limits"]["angular_momentum"][group]
+    if best < result["needed"]:
+        return f"momentum: the {group} take-offs reached {best:.1f} of {result['needed']:.1f}"
+    if m and rotations_right(p, m):
+        return f"entry: {m['entry_angle_from_vertical_deg']:.0f}° with the rotations right"
+    if m and abs(m["somersaults"] - p["somersaults"]) <= ROTATION_TOLERANCE:
+        return f"twist: {m['twists']:.2f} of {p['twists']:g} with the somersaults right"
+    return (f"control: the {group} take-offs reached {best:.1f} kg m²/s, no searched one gave "
+            f"{p['somersaults']:g} somersaults")
+
+
+def rotations_right(params: dict, metrics: dict) -> bool:
+    """The somersaults and twists within a quarter turn of the dive's, the right way round (the
+    entry aside)."""
+    forward = GROUPS[int(round(params["group"]))] in FORWARD_ROTATING
+    return (abs(metrics["somersaults"] - params["somersaults"]) <= ROTATION_TOLERANCE
+            and abs(metrics["twists"] - params["twists"]) <= ROTATION_TOLERANCE
+            and metrics["somersault_direction"] == ("forward" if forward else "backward"))
 
 
 def reached(result: dict) -> bool:
@@ -233,8 +264,12 @@ def summary(results: list[dict]) -> list[str]:
     for character in dict.fromkeys(r["character"] for r in results):
         mine = [r for r in results if r["character"] == character]
         done = [r["number"] for r in mine if reached(r)]
+        turned = [r["number"] for r in mine if r["number"] not in done and r.get("metrics")
+                  and rotations_right(r["params"], r["metrics"])]
+        short = [r["number"] for r in mine if r["number"] not in done + turned]
         out.append(f"- {character}: {len(done)} of {len(mine)} reached ({', '.join(done) or 'none'}); "
-                   f"not reached: {', '.join(r['number'] for r in mine if r['number'] not in done) or 'none'}")
+                   f"the rotations within a quarter turn but the entry not vertical: {', '.join(turned) or 'none'}; "
+                   f"the rotations not reached: {', '.join(short) or 'none'}")
     return out
 
 
