@@ -261,13 +261,15 @@ class Dive(Sequence):
         if not row or row["measured"].get("outcome") == "success":
             return
         m = row["measured"]
+        needed = self.momentum_needed(self.flight_time(self.limits()["rise"]))
+        why = ("" if row["largest_momentum_clear"] < needed else
+               ": the momentum is there, no searched take-off gave the rotations and a vertical entry together")
         raise ParameterError(
             f"{_article(dive_name(self.params))} is not reached by the {self.ctx.character.name} with human strength: "
             f"the best calibrated take-off made {m.get('somersaults') or 0:.2f} somersaults and {m.get('twists') or 0:.2f} "
             f"twists ({m.get('outcome')}, {abs(m.get('takeoff_angular_momentum') or 0):.1f} kg m^2/s at take-off); "
-            f"it needs about {self.momentum_needed(self.flight_time(self.limits()['rise'])):.1f} kg m^2/s, "
-            f"the calibration's take-offs reached {row['largest_momentum_clear']:.1f} (allowed: the reached dives, "
-            f"python -m sim_core report dive --repertoire)")
+            f"it needs about {needed:.1f} kg m^2/s, the calibration's take-offs reached "
+            f"{row['largest_momentum_clear']:.1f}{why} (allowed: the reached dives, python -m sim_core report dive --repertoire)")
 
     def rotation_capacity(self, limits: dict, flight: float) -> float:
         """Somersaults the flight (``flight`` s from this platform) allows: the largest take-off
