@@ -9,7 +9,8 @@ from sim_core.errors import ParameterError
 from sim_core.simulate import RunRequest, largest_difference, replay, run
 
 CASES = [("man", "backward", "unlimited"), ("man", "backward", "human"),
-         ("man", "forward", "human"), ("woman", "forward", "human")]   # the thesis: man backward, woman forward
+         ("man", "forward", "human"), ("woman", "forward", "human"),   # the thesis: man backward, woman forward
+         ("woman", "backward", "human")]                               # issue 29: both ways for both
 
 
 def _run(character, direction, strength):

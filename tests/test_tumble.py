@@ -141,14 +141,16 @@ def test_platform_world_holds_the_diver_and_the_water_is_not_felt():
 
 
 @pytest.mark.parametrize("params, match", [
-    (dict(group=0, somersaults=3.5, position=1), "at most .* somersaults"),        # inward 3 1/2 pike
+    (dict(group=0, somersaults=4.5, position=1), "at most .* somersaults"),        # inward 4 1/2 pike
+    (dict(group=0, somersaults=3.5, position=1), "not reached .* needs about"),    # 407B: calibrated, not reached
     (dict(group=1, somersaults=1.5, twists=3.0, position=0), "at most .* twists"),  # back 1 1/2 with 3 twists
     (dict(group=1, somersaults=1.5, twists=2.5, position=2), "no time in the tuck"),  # her 2 1/2 twists twist from take-off
 ])
 def test_the_womans_dives_beyond_her_takeoff_are_refused_with_the_reason(params, match):
-    """Beyond her calibrated dives: her take-offs do not give the rotation for an inward 3 1/2
-    pike, nor her twist 3 twists, and her 2 1/2-twist dive twists from the take-off in the layout,
-    so a tucked one would not tuck; the request is refused before simulating, naming the limit."""
+    """Beyond her calibrated dives: her take-offs do not give the rotation for an inward 4 1/2
+    pike, nor her twist 3 twists; her inward 3 1/2 pike (407B) was searched and not reached; her
+    2 1/2-twist dive twists from the take-off in the layout, so a tucked one would not tuck; the
+    request is refused before simulating, naming the limit."""
     with pytest.raises(ParameterError, match=match):
         run(RunRequest("dive", "woman", params=params))
 

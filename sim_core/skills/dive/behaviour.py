@@ -22,6 +22,8 @@ import math
 
 import numpy as np
 
+from ...character.model import compile_model
+from ...character.spec import load_character
 from ...control.behaviour import register
 from ...control.leap import CONSTANTS as LEAP
 from ...control.sequencer import Sequence, Step
@@ -31,6 +33,7 @@ from ...control.tumble import (POSITION_NAMES, FlightRotation, Tumble, position_
                                     rotation_to_come)
 from ...errors import ParameterError
 from ...schema import Choice, Parameter, Schema
+from .fina import CUSTOM, REPERTOIRE, DiveNumber, parse
 from ...tuned import TableType, load, register as register_table, require_calibrated
 from ...tuned.settings import SkillSchema
 from ...tuned.constants import constant, constant_rows, read_constants, with_constants
@@ -51,6 +54,9 @@ DIVE_CONSTANTS = Schema(
              "let the flight's angular momentum drift 4 % (measured: 4.4 / 2.1 / 1.0 % at 1 / 0.5 / 0.25 ms)"),
     constant("hold_move", "s", 0.01, 1.0, "the servo move that keeps the lift-off shape until the body is clear of the platform"),
     constant("entry_reach", "1", 0.0, 3.0, "share of the standing COM height the hands reach below the COM in the line"),
+    constant("free_tuck_twists", "1", 0.0, 3.0,
+             "a dive in the free position (FINA D) somersaults in the tuck and twists in the line at the end up to "
+             "this many twists, in the layout throughout above (the twist then needs the whole flight)"),
 )
 CONSTANTS = read_constants("dives", DIVE_CONSTANTS)
 
@@ -97,6 +103,19 @@ def dive_row(table: dict, p: dict) -> dict | None:
     return dict(best["settings"])
 
 
+def calibrated_row(table: dict, p: dict) -> dict | None:
+    """The table's row of exactly this dive (group, somersaults, twists, position), or None."""
+    key = dive_key(p)
+    return next((d for d in table["dives"] if all(abs(d.get(k, 0.0) - v) < 1e-9 for k, v in key.items())), None)
+
+
+def dive_key(p: dict) -> dict:
+    """What names a dive in a table row: group and position codes (whole numbers), somersaults,
+    twists."""
+    return dict(group=int(round(p["group"])), somersaults=float(p["somersaults"]), twists=float(p["twists"]),
+                position=int(round(p["position"])))
+
+
 def load_settings(character: str, p: dict) -> dict:
     """Leap settings for this dive: the character's calibrated dive most alike (dive_row), else
     the group's design row (dives_any)."""
@@ -124,6 +143,29 @@ DIVES_TABLE = register_table(TableType(
     lambda body: (*((f"dive {k}", d["settings"]) for k, d in enumerate(body["dives"])), *constant_rows(body)), (dive_row,)))
 
 
+class DiveSchema(SkillSchema):
+    """The dive's schema: a ``dive`` number other than custom sets group, somersaults, twists and
+    position (fina.parse; the free position D by CONSTANTS.free_tuck_twists), so that a run's
+    parameters, its replay log and its assessment hold the dive as numbers like any other."""
+
+    def validate(self, values: dict) -> dict:
+        result = super().validate(values)
+        number = self.by_name["dive"].option(result["dive"])
+        if number != CUSTOM:
+            result.update(dive_parameters(number))
+        return result
+
+
+def dive_parameters(number: str) -> dict:
+    """The group, somersaults, twists and position codes of a FINA number."""
+    dive = parse(number)
+    position = dive.position
+    if position == "free":
+        position = "tuck" if dive.twists <= CONSTANTS.free_tuck_twists else "layout"
+    return dict(group=float(GROUPS.index(dive.group)), somersaults=dive.somersaults, twists=dive.twists,
+                position=float(POSITION_NAMES.index(position)))
+
+
 @register
 class Dive(Sequence):
     name = "dive"
@@ -131,12 +173,15 @@ class Dive(Sequence):
     summary = "Platform dive: leap backwards off the edge, somersault and twist in flight, enter the water straight (Wooten §8.2.1)."
     default_duration = 4.0
     settings_schema = DIVE_SETTINGS
-    schema = SkillSchema(
+    schema = DiveSchema(
+        DiveNumber("dive", (CUSTOM, *REPERTOIRE), CUSTOM,
+                   "a FINA dive number (e.g. 107C: forward 3½ somersaults tuck; 5253B: back 2½ with 1½ twists pike); "
+                   "it sets group, somersaults, twists and position; custom: those four as set"),
         Choice("group", GROUPS, "inward", "the dive's group: standing backwards, inward or back; facing the water, "
                "forward or reverse",
                ("Standing backwards, somersault towards the platform", "Standing backwards, somersault away from it",
                 "Facing the water, somersault forward", "Facing the water, somersault back towards the platform")),
-        Parameter("somersaults", "1", 1.5, 0.5, 3.5, "somersaults before entry (x.5 = head first)"),
+        Parameter("somersaults", "1", 1.5, 0.5, 4.5, "somersaults before entry (x.5 = head first)"),
         Parameter("twists", "1", 0.0, 0.0, 3.0, "twists (full turns about the long axis), by an arm throw in flight"),
         Choice("position", POSITION_NAMES[:3], "pike", "body position in flight: layout (straight), pike or tuck"),
         Parameter("platform_height", "m", 10.0, 3.0, 10.0, "platform height above the water"),
@@ -171,6 +216,8 @@ class Dive(Sequence):
         if abs(p["twists"] * 2 - round(p["twists"] * 2)) > 1e-9:
             raise ParameterError(f"parameter twists={p['twists']:g} must be a whole or half number")
         limits = self.limits()
+        if not p["low_level"]:
+            self.refuse_not_reached()
         if limits["angular_momentum"].get(group_name(p), 0.0) <= 0:
             raise ParameterError(
                 f"the {self.ctx.character.name} has no calibrated {group_name(p)} take-off that clears "
@@ -180,7 +227,7 @@ class Dive(Sequence):
                 f"{_article(dive_name(p))} cannot be completed by the {self.ctx.character.name}: the arm throw made at most "
                 f"{limits.get('twists', 0.0):.2f} twists in a calibrated dive (allowed: that + {ROTATION_TOLERANCE:g})")
         flight = self.flight_time(limits["rise"])
-        lead = self.settings()["twist_lead"]
+        lead = self.twist_lead_needed()
         if p["twists"] and not p["low_level"] and position_name(p["position"]) != "layout" and lead >= flight:
             raise ParameterError(
                 f"{_article(dive_name(p))} cannot be done by the {self.ctx.character.name}: the "
@@ -195,25 +242,71 @@ class Dive(Sequence):
                 f"{self.ctx.character.name}: the flight allows at most {capacity:.2f} somersaults in this position "
                 f"with the largest calibrated take-off angular momentum (allowed: that + {ROTATION_TOLERANCE:g})")
 
+    def twist_lead_needed(self) -> float:
+        """How long before the entry the twist of this dive needs the layout: the twist lead of the
+        character's calibrated twisting dive of the group nearest in twists (a multi-twist dive
+        twists from the take-off in the layout), else the lead this run's settings use."""
+        own = load("dives", self.ctx.character.name)
+        rows = [d for d in (own or {}).get("dives", []) if d.get("twists") and "twist_lead" in d["settings"]
+                and GROUPS[d["group"]] == group_name(self.params)]
+        if not rows:
+            return self.settings()["twist_lead"]
+        return min(rows, key=lambda d: abs(d["twists"] - self.params["twists"]))["settings"]["twist_lead"]
+
+    def refuse_not_reached(self) -> None:
+        """A dive the calibration searched and did not reach (its row's measured outcome is not a
+        success) is refused with what it needs and what the take-offs reached."""
+        own = load("dives", self.ctx.character.name)
+        row = own and calibrated_row(own, self.params)
+        if not row or row["measured"].get("outcome") == "success":
+            return
+        m = row["measured"]
+        needed = self.momentum_needed(self.flight_time(self.limits()["rise"]))
+        why = ("" if row["largest_momentum_clear"] < needed else
+               ": the momentum is there, no searched take-off gave the rotations and a vertical entry together")
+        raise ParameterError(
+            f"{_article(dive_name(self.params))} is not reached by the {self.ctx.character.name} with human strength: "
+            f"the best calibrated take-off made {m.get('somersaults') or 0:.2f} somersaults and {m.get('twists') or 0:.2f} "
+            f"twists ({m.get('outcome')}, {abs(m.get('takeoff_angular_momentum') or 0):.1f} kg m^2/s at take-off); "
+            f"it needs about {needed:.1f} kg m^2/s, the calibration's take-offs reached "
+            f"{row['largest_momentum_clear']:.1f}{why} (allowed: the reached dives, python -m sim_core report dive --repertoire)")
+
     def rotation_capacity(self, limits: dict, flight: float) -> float:
         """Somersaults the flight (``flight`` s from this platform) allows: the largest take-off
         angular momentum the calibration reached for this group without touching the platform,
         spent in the position for the flight time less the take-off and opening, and in the line
         for the rest."""
         momentum = limits["angular_momentum"].get(group_name(self.params), 0.0)
-        straight = min(flight, CONSTANTS.open_time + CONSTANTS.position_move)
-        angle = momentum * ((flight - straight) / self._position_inertia() + straight / self._line_inertia())
-        return angle / (2 * math.pi)
+        return momentum * self.rotation_per_momentum(flight) / (2 * math.pi)
+
+    def momentum_needed(self, flight: float) -> float:
+        """The take-off angular momentum (kg m^2/s) the dive's somersaults need in a flight of
+        ``flight`` s: the inverse of rotation_capacity."""
+        return 2 * math.pi * self.params["somersaults"] / self.rotation_per_momentum(flight)
+
+    @classmethod
+    def momentum_needed_by(cls, character: str, params: dict) -> float:
+        """momentum_needed of a dive (validated ``params``) of a named character, from its
+        table's rise, outside a run (the calibration's start, the repertoire report)."""
+        spec = load_character(character)
+        model, _ = compile_model(spec)
+        rise = (load("dives", character) or load("dives", "any"))["limits"]["rise"]
+        flight = flight_time(params["platform_height"], rise, entry_reach(spec))
+        per_momentum = rotation_per_momentum(flight, position_inertia(model, spec, position_name(params["position"])),
+                                             position_inertia(model, spec, "line"))
+        return 2 * math.pi * params["somersaults"] / per_momentum
+
+    def rotation_per_momentum(self, flight: float) -> float:
+        return rotation_per_momentum(flight, self._position_inertia(), self._line_inertia())
 
     def limits(self) -> dict:
         return (load("dives", self.ctx.character.name) or load("dives", "any"))["limits"]
 
     def flight_time(self, rise: float) -> float:
-        drop = self.params["platform_height"] + rise - self._entry_reach()
-        return math.sqrt(2 * rise / GRAVITY) + math.sqrt(2 * max(drop, 0.0) / GRAVITY)
+        return flight_time(self.params["platform_height"], rise, self._entry_reach())
 
     def _entry_reach(self) -> float:
-        return CONSTANTS.entry_reach * float(self.ctx.character.bodies[0]["com"][2])
+        return entry_reach(self.ctx.character)
 
     def _position_inertia(self) -> float:
         return position_inertia(self.ctx.model, self.ctx.character, position_name(self.params["position"]),
@@ -281,6 +374,26 @@ class Dive(Sequence):
     @classmethod
     def assess(cls, trajectory):
         return dive_assess(trajectory)
+
+
+def flight_time(platform_height: float, rise: float, reach: float) -> float:
+    """Seconds from the take-off to the hands reaching the water: up ``rise`` m, then down the
+    platform's height and the rise less the hands' ``reach`` below the COM (ballistics)."""
+    drop = platform_height + rise - reach
+    return math.sqrt(2 * rise / GRAVITY) + math.sqrt(2 * max(drop, 0.0) / GRAVITY)
+
+
+def entry_reach(character) -> float:
+    """How far (m) the hands reach below the COM in the line: a share of the standing COM height."""
+    return CONSTANTS.entry_reach * float(character.bodies[0]["com"][2])
+
+
+def rotation_per_momentum(flight: float, position_inertia: float, line_inertia: float) -> float:
+    """Somersault angle (rad) per unit of take-off angular momentum (kg m^2/s) in a flight of
+    ``flight`` s: in the position (``position_inertia``) for the flight less the take-off and
+    opening, in the line for the rest."""
+    straight = min(flight, CONSTANTS.open_time + CONSTANTS.position_move)
+    return (flight - straight) / position_inertia + straight / line_inertia
 
 
 class _Aerial(Tumble):

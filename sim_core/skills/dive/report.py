@@ -4,9 +4,11 @@ four 10 m platform dives of §8.2.1, the standing somersaults of §8.4-8.5 and t
 Writes docs/tumbling.md's results block and docs/tumbling_rates.png.
 
     python -m sim_core report dive
+    python -m sim_core report dive --repertoire      # the FINA repertoire, both characters (REPERTOIRE_HELP)
 """
 from __future__ import annotations
 
+import argparse
 import re
 import sys
 from pathlib import Path
@@ -18,7 +20,11 @@ ROOT = Path.cwd()                   # docs are written under the folder it runs 
 
 from ...character.model import compile_model
 from ...character.spec import load_character
-from .behaviour import CALIBRATED_DIVES, dive_name
+from .behaviour import (CALIBRATED_DIVES, FORWARD_ROTATING, GROUPS, ROTATION_TOLERANCE, Dive, calibrated_row,
+                        dive_name)
+from .calibrate import NoLimits
+from .fina import REPERTOIRE
+from ... import tuned
 from ..somersault.behaviour import DIRECTIONS
 from ...control.tumble import CONSTANTS as TUMBLE, inertia_about_com, position_inertia
 from ...errors import ParameterError
@@ -77,7 +83,8 @@ def dive_rows() -> tuple[list[str], dict]:
 
 SOMERSAULTS = [("man", "backward", "human"), ("man", "backward", "unlimited"),    # Wooten §8.4: the man's back tuck
                ("man", "forward", "human"),
-               ("woman", "forward", "human")]                                     # §8.5: the woman's forward tuck
+               ("woman", "forward", "human"),                                     # §8.5: the woman's forward tuck
+               ("woman", "backward", "human")]                                    # issue 29: both ways
 
 
 def somersault_rows() -> list[str]:
@@ -156,7 +163,145 @@ def plot(runs: dict) -> None:
     fig.savefig(PLOT, dpi=110)
 
 
+# ------------------------------------------------------------------ the FINA repertoire
+REPERTOIRE_HELP = """The FINA repertoire from 10 m, for the man and the woman, with human strength: which dives are
+reached (rotations within a quarter turn of the dive's, a vertical entry, the platform not
+touched) and, for each, the take-off angular momentum it needs against the one the calibration's
+take-offs reached. Writes the table into docs/skills/dives.md between ``<!-- repertoire -->``
+markers and prints it.
+
+    python -m sim_core report dive --repertoire
+    python -m sim_core report dive --repertoire --character woman --dive 107C --no-write
+
+"Needed" is the physics estimate the feasibility check uses: 2 pi x somersaults over the
+rotation per unit of angular momentum of a 10 m flight (its air time from the take-off's rise
+and the drop to the hands reaching the water), spent in the position's moment of inertia but for
+the take-off and opening, in the line's for those. "Reached" is the largest take-off angular
+momentum the dive's own calibration search measured without touching the platform. A dive the
+calibration did not reach is refused before simulating; the table then runs its best calibrated
+take-off as set (low_level) to show what it makes.
+"""
+REPERTOIRE_DOC = ROOT / "docs" / "skills" / "dives.md"
+PLATFORM = Dive.schema.by_name["platform_height"].default     # m: 10, FINA's highest, Wooten's dives
+
+
+def measure(character: str, number: str) -> dict:
+    """One repertoire dive: run as an animator would (``--set dive=NUMBER``); refused, its best
+    calibrated take-off run as set. The measured figures and the verdict."""
+    params = Dive.schema.validate({"dive": number, "platform_height": PLATFORM})
+    table = tuned.load("dives", character)
+    row = calibrated_row(table, params) if table else None
+    out = {"character": character, "number": number, "name": dive_name(params), "params": params,
+           "needed": Dive.momentum_needed_by(character, params),
+           "reached": row["largest_momentum_clear"] if row else None, "refused": None}
+    try:
+        trajectory = run(RunRequest("dive", character, params={"dive": number}, duration=4.5))  # enters within it
+    except ParameterError as error:
+        out["refused"] = str(error)
+        if row is None:
+            return out
+        with NoLimits():            # as the calibration ran it: the table's limits are what it measured
+            trajectory = run(RunRequest("dive", character, params=dict(dive=number, low_level=1, **row["settings"]),
+                                        duration=4.5))
+    out.update(outcome=trajectory.meta["outcome"], metrics=trajectory.meta["metrics"])
+    return out
+
+
+def table_lines(results: list[dict]) -> list[str]:
+    lines = ["| character | dive | | reached | outcome | rotations within ¼ turn | somersaults (wanted) | twists (wanted) | "
+             "entry from vertical | take-off H kg m²/s | needed H kg m²/s | reached H kg m²/s | flight s | why not |",
+             "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"]
+    for r in results:
+        p, m = r["params"], r.get("metrics") or {}
+        outcome = r.get("outcome", "not run") + (" (refused; its best calibrated take-off run as set)" if r["refused"] else "")
+        cells = [r["character"], r["number"], r["name"], "yes" if reached(r) else "**no**", outcome]
+        if "somersaults" in m:
+            cells += ["yes" if rotations_right(p, m) else "no", f"{m['somersaults']:.2f} ({p['somersaults']:g})", f"{m['twists']:.2f} ({p['twists']:g})",
+                      f"{m['entry_angle_from_vertical_deg']:.0f}°", f"{abs(m['takeoff_angular_momentum']):.1f}"]
+        else:
+            cells += ["—"] * 5
+        cells += [f"{r['needed']:.1f}", "—" if r["reached"] is None else f"{r['reached']:.1f}",
+                  f"{m['flight_time']:.2f}" if "flight_time" in m else "—", why_not(r)]
+        lines.append("| " + " | ".join(cells) + " |")
+    return lines
+
+
+def why_not(result: dict) -> str:
+    """Why a dive is not reached: the angular momentum (the largest any take-off of its group
+    reached without touching the platform is below the one it needs), or the control (that much
+    was reached, but no searched take-off gave the rotations and a vertical entry together)."""
+    if reached(result):
+        return ""
+    m, p = result.get("metrics") or {}, result["params"]
+    group = GROUPS[int(round(p["group"]))]
+    best = (tuned.load("dives", result["character"]) or tuned.load("dives", "any"))["limits"]["angular_momentum"][group]
+    if best < result["needed"]:
+        return f"momentum: the {group} take-offs reached {best:.1f} of {result['needed']:.1f}"
+    if m and rotations_right(p, m):
+        return f"entry: {m['entry_angle_from_vertical_deg']:.0f}° with the rotations right"
+    if m and abs(m["somersaults"] - p["somersaults"]) <= ROTATION_TOLERANCE:
+        return f"twist: {m['twists']:.2f} of {p['twists']:g} with the somersaults right"
+    return (f"control: the {group} take-offs reached {best:.1f} kg m²/s, no searched one gave "
+            f"{p['somersaults']:g} somersaults")
+
+
+def rotations_right(params: dict, metrics: dict) -> bool:
+    """The somersaults and twists within a quarter turn of the dive's, the right way round (the
+    entry aside)."""
+    forward = GROUPS[int(round(params["group"]))] in FORWARD_ROTATING
+    return (abs(metrics["somersaults"] - params["somersaults"]) <= ROTATION_TOLERANCE
+            and abs(metrics["twists"] - params["twists"]) <= ROTATION_TOLERANCE
+            and metrics["somersault_direction"] == ("forward" if forward else "backward"))
+
+
+def reached(result: dict) -> bool:
+    """Run as an animator would (not refused) and a success."""
+    return result["refused"] is None and result.get("outcome") == "success"
+
+
+def summary(results: list[dict]) -> list[str]:
+    out = []
+    for character in dict.fromkeys(r["character"] for r in results):
+        mine = [r for r in results if r["character"] == character]
+        done = [r["number"] for r in mine if reached(r)]
+        turned = [r["number"] for r in mine if r["number"] not in done and r.get("metrics")
+                  and rotations_right(r["params"], r["metrics"])]
+        short = [r["number"] for r in mine if r["number"] not in done + turned]
+        out.append(f"- {character}: {len(done)} of {len(mine)} reached ({', '.join(done) or 'none'}); "
+                   f"the rotations within a quarter turn but the entry not vertical: {', '.join(turned) or 'none'}; "
+                   f"the rotations not reached: {', '.join(short) or 'none'}")
+    return out
+
+
+def repertoire_main(argv=None) -> int:
+    parser = argparse.ArgumentParser(description=REPERTOIRE_HELP, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--repertoire", action="store_true", help="(the report dive option that runs this)")
+    parser.add_argument("--character", choices=("man", "woman"), action="append")
+    parser.add_argument("--dive", action="append", help="only this FINA number (repeatable)")
+    parser.add_argument("--write", action=argparse.BooleanOptionalAction, default=True,
+                        help="write the table into docs/skills/dives.md (only for the whole repertoire)")
+    args = parser.parse_args(argv)
+    numbers = [Dive.schema.by_name["dive"].option(Dive.schema.validate({"dive": n})["dive"]) for n in args.dive or []]
+    results = []
+    for character in args.character or ("man", "woman"):
+        for number in numbers or REPERTOIRE:
+            results.append(measure(character, number))
+            print(table_lines([results[-1]])[-1], flush=True)
+    lines = (["Measured by `python -m sim_core report dive --repertoire` (10 m, human strength; reached = "
+              f"somersaults and twists within {ROTATION_TOLERANCE:g} turn of the dive's, entry within 20° of "
+              "vertical, the platform not touched):", ""] + table_lines(results) + [""] + summary(results))
+    print("\n".join(summary(results)))
+    if args.write and not args.dive and not args.character:
+        text = REPERTOIRE_DOC.read_text()
+        block = "<!-- repertoire -->\n" + "\n".join(lines) + "\n<!-- /repertoire -->"
+        REPERTOIRE_DOC.write_text(re.sub(r"<!-- repertoire -->.*<!-- /repertoire -->", lambda _: block, text, flags=re.S))
+        print(f"wrote {REPERTOIRE_DOC}")
+    return 0
+
+
 def main(argv=None) -> int:
+    if argv and "--repertoire" in argv:
+        return repertoire_main(argv)
     lines = ["Measured by `python -m sim_core report dive`.", "",
              "Moments of inertia about the somersault axis (positions as commanded, body upright):", ""]
     lines += inertia_table()

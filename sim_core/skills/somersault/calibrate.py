@@ -13,7 +13,8 @@ placement) minimises, with every quantity read off the simulated somersault,
     score = |rotation - 2 pi| + 50 max(0, drift - 0.9 %)             if it ends balanced
           = |rotation - 2 pi| + 50 max(0, drift - 0.9 %) + 0.5 |flight rotation - 5.9| + 1
             + 2 (1 - min(time on the feet after touchdown, 1.5 s) / 1.5 s)
-            + 20 max(0, foot slide after landing - 5 cm) / m                        otherwise
+            + 20 max(0, foot slide after landing - 5 cm) / m
+            + 100 max(0, skid of the feet's middle after touchdown - 5 cm) / m       otherwise
 
 (rotation: the pelvis's turn from the standing start to the end of the run; flight rotation: from
 lift-off to touchdown; drift: of the whole-body angular momentum in flight, which must stay within
@@ -47,7 +48,7 @@ from pathlib import Path
 
 ROOT = Path.cwd()                   # docs are written under the folder it runs in (the checkout)
 
-from ...control.leap import LANDING_SLIDE_LIMIT
+from ...control.leap import LANDING_SKID_LIMIT, LANDING_SLIDE_LIMIT
 from .behaviour import DIRECTIONS, LANDING_SETTINGS, OLD_ROW, SETTINGS, load_table
 from ...control.tumble import snap_damping
 from ...control.tuned import keep_search, kept_message, names_option, searched_and_fixed
@@ -56,6 +57,9 @@ from ...tuning import Space, SerialExecutor, StopAfterFound, executor_for, minim
 
 DURATION = 5.0
 SLIDE_WEIGHT = 20.0         # per m a foot moves after landing beyond the stepping limit (a run on its feet that steps)
+SKID_WEIGHT = 100.0         # per m the middle of the feet skids after touchdown beyond the skid limit: the
+                            # woman's backward tuck searches (2 x 288 runs) ended "skidded" 0.75 cm over it
+                            # with nothing in the score pulling them back
 DRIFT_GOAL = 0.009          # angular momentum drift in flight the search aims below (the test's limit is 1 %)
 SPACE = {  # name: (low, high) per direction
     "crouch_height": {"backward": (0.42, 0.9), "forward": (0.5, 0.9)},  # the crouch is a squat: it may go below half the standing pelvis height
@@ -88,7 +92,7 @@ START = {   # where the search starts when the table has nothing: found by hand-
 }
 KEEP = ("rotation", "somersaults", "flight_rotation", "first_flight_time", "com_rise", "com_travel",
         "liftoff_angular_momentum", "angular_momentum_drift", "peak_thrust_grf_body_weights", "final_com_speed",
-        "fall_time", "first_touchdown_time", "foot_slide_after_landing")
+        "fall_time", "first_touchdown_time", "foot_slide_after_landing", "landing_skid")
 
 
 def evaluate(character: str, direction: str, strength: str, settings: dict) -> tuple[float, dict]:
@@ -103,6 +107,7 @@ def evaluate(character: str, direction: str, strength: str, settings: dict) -> t
         up = m["fall_time"] - m["first_touchdown_time"] if m["fall_time"] is not None else 1.5
         score += 0.5 * abs(m["flight_rotation"] - 5.9) + 1.0 + 2.0 * (1.0 - min(max(up, 0.0), 1.5) / 1.5)
         score += SLIDE_WEIGHT * max(0.0, (m["foot_slide_after_landing"] or 0.0) - LANDING_SLIDE_LIMIT)
+        score += SKID_WEIGHT * max(0.0, (m["landing_skid"] or 0.0) - LANDING_SKID_LIMIT)
     return score, m
 
 
