@@ -256,18 +256,6 @@ class Balance(Behaviour):
         com = d.subtree_com[self.pelvis]
         return float(along[0] * com[0] + along[1] * com[1] - 0.5 * (p.min() + p.max()))
 
-    def replan(self, t: float, **params) -> None:
-        """Move on from the posture of now to the one ``params`` name (this schema's keys:
-        torso_pitch, move_time, hold_time, return_to_stand, ...), starting at once, without
-        restarting the controller: its COM servo and its targets carry on (a skill's next move
-        while she stands, e.g. the vault's bow; a new Balance would start from its own initial
-        posture and jolt her)."""
-        current = self.posture(t)
-        self.params = dict(self.params, **params, move_start=0.0)
-        self.t0 = t
-        self._postures = (current, self.target_posture(), self.standing_posture())
-        self._targets_key = None
-
     def posture_reached(self, t: float) -> bool:
         return t - self.t0 >= self.params["move_start"] + self.params["move_time"]
 
