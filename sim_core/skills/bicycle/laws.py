@@ -6,9 +6,10 @@ from __future__ import annotations
 import math
 
 
-def crank_torque(speed: float, desired_speed: float, gain: float) -> float:
-    """Eq. 7 with the sign fix: ``tau = k_v (v_d - v)``, k_v > 0; positive drives forward."""
-    return gain * (desired_speed - speed)
+def crank_torque(speed: float, desired_speed: float, gain: float, limit: float) -> float:
+    """Eq. 7 with the sign fix: ``tau = k_v (v_d - v)``, k_v > 0; positive drives forward; held
+    within +-``limit`` (the seed gives none: unlimited, a 2.4 m/s error asks 1.2 kN m of the legs)."""
+    return min(max(gain * (desired_speed - speed), -limit), limit)
 
 
 def leg_weight(phase: float) -> float:

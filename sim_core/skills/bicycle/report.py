@@ -24,6 +24,8 @@ from ...simulate import RunRequest, run
 from ...tuning import executor_for
 from ...world import World, add_world
 from ...world.bicycle import Bicycle, BicycleView, DEFAULT_GEAR
+from .behaviour import Bicycling
+from .course import SLALOM_MAX_OFFSET, SLALOM_SPACINGS, SLALOM_SPEEDS
 
 
 def riderless_model(gear: float = DEFAULT_GEAR) -> mujoco.MjModel:
@@ -96,7 +98,6 @@ COURSE_KEYS = ("fell", "fall_time", "max_abs_roll_deg", "mean_speed_last_5s", "p
                "hill_descent_mean_speed", "hill_descent_worst_error", "hill_climb_cadence_hz",
                "hill_climb_cadence_expected_hz", "max_hand_gap", "max_foot_gap", "max_seat_gap", "pedal_pull_r_max",
                "pedal_pull_r_share", "pedal_force_r_min", "pedal_force_r_max")
-SLALOM_GATE_TIME = 2.5        # s between gates at the drawn speed (the default slalom: 10 m at 4 m/s)
 
 
 def course_ride(item) -> tuple[str, dict]:
@@ -105,15 +106,27 @@ def course_ride(item) -> tuple[str, dict]:
     return name, {k: m[k] for k in COURSE_KEYS if k in m}
 
 
+def slalom_request(rng: np.random.Generator) -> tuple[float, float, float]:
+    """(speed m/s, gate spacing m, gate offset m) drawn uniformly inside the slalom's region."""
+    return (round(float(rng.uniform(*SLALOM_SPEEDS)), 2), round(float(rng.uniform(*SLALOM_SPACINGS)), 2),
+            round(float(rng.uniform(Bicycling.schema.by_name["gate_offset"].minimum, SLALOM_MAX_OFFSET)), 2))
+
+
+def slalom_seconds(speed: float, spacing: float, gates: int = 8, lead: float = 10.0) -> float:
+    """Long enough to ride the lead, the gates and half a spacing more, and two seconds on."""
+    return (lead + (gates + 0.5) * spacing) / speed + 2.0
+
+
 def course_rides(seed: int, slaloms: int) -> dict:
-    """The course rides above, and ``slaloms`` slaloms at speeds drawn from 2-7 m/s."""
+    """The course rides above, and ``slaloms`` slaloms drawn at random inside the region the slalom
+    is offered in (course.py: speed, gate spacing and offset)."""
     rng = np.random.default_rng(seed)
     rides = dict(COURSE_RIDES)
     for _ in range(slaloms):
-        speed = round(float(rng.uniform(2.0, 7.0)), 2)
-        spacing = round(SLALOM_GATE_TIME * speed, 2)
-        rides[f"slalom_{speed:g}ms_{spacing:g}m"] = ({"course": "slalom", "speed": speed, "gate_spacing": spacing},
-                                                     (10.0 + 8.5 * spacing) / speed + 2.0)
+        speed, spacing, offset = slalom_request(rng)
+        rides[f"slalom_{speed:g}ms_{spacing:g}m_{offset:g}m"] = (
+            {"course": "slalom", "speed": speed, "gate_spacing": spacing, "gate_offset": offset},
+            slalom_seconds(speed, spacing))
     return rides
 
 
