@@ -168,3 +168,12 @@ def test_a_scene_with_a_rider_is_refused_in_one_line():
     with pytest.raises(SimAthleticsError) as err:
         run_scene(scene)
     assert "scenes with a bicycle are not built yet" in str(err.value) and "\n" not in str(err.value)
+
+
+@pytest.mark.parametrize("character", ["woman", "child", "imaginary_cyclist", "imaginary_runner"])
+def test_a_rider_who_falls_is_refused_in_one_line(character):
+    """The woman falls 11 s into a ride at 4 m/s, the others sooner: refused before anything runs."""
+    with pytest.raises(ParameterError) as error:
+        run(RunRequest("bicycle", character, duration=0.05))
+    message = str(error.value)
+    assert "\n" not in message and character in message and "not calibrated" in message and "man" in message

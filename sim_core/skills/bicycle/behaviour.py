@@ -39,6 +39,7 @@ from .steering import steering_gains
 from .laws import ankle_angle, crank_torque, fork_angle, pedal_forces
 from .mount import IK_ITERATIONS_PER_TICK, SitePairs, match_velocities, solve
 
+RIDERS = ("man",)                   # criterion: the riders measured to ride (docs/bicycle.md: the others fall)
 MIN_LOOKAHEAD_SPEED = 1.0           # definition: m/s, the speed below which the look-ahead distance stops shrinking
 MOUNT_CRANK_ANGLE = math.pi / 2      # the start's crank: right pedal forward, left back (horizontal)
 LEG_JOINTS = {"r": ("hip_r_y", "knee_r_y"), "l": ("hip_l_y", "knee_l_y")}
@@ -168,10 +169,17 @@ class Bicycling(Behaviour):
 
     def check_feasible(self):
         """A scene does not mount a rider yet (run_scene calls neither start_state nor the rider's
-        attachments): refuse rather than ride a bicycle that is not there."""
+        attachments): refuse rather than ride a bicycle that is not there. Only the riders measured
+        to ride are offered."""
         if mujoco.mj_name2id(self.ctx.model, mujoco.mjtObj.mjOBJ_BODY, NAMES["frame"]) < 0 or self.ctx.actor.prefix:
             raise ParameterError("the bicycle behaviour runs only alone (python -m sim_core simulate bicycle); "
                                  "scenes with a bicycle are not built yet")
+        rider = self.ctx.character.name
+        if rider not in RIDERS:
+            raise ParameterError(f"bicycle is not calibrated for the {rider} (calibrated for: {', '.join(RIDERS)}): "
+                                 f"the bicycle is sized and its steering gains set for the man; at 4 m/s the woman "
+                                 f"fell 11.0 s into a ride, the imaginary cyclist 5.7 s, the child and the imaginary "
+                                 f"runner within 3 s (docs/bicycle.md)")
 
     def start(self, t):
         """Look the bicycle and the limbs up; the targets start at the mounted pose."""
