@@ -53,6 +53,7 @@ ARM_JOINTS = {"r": ("shoulder_r_x", "shoulder_r_y", "shoulder_r_z", "elbow_r_y",
 BICYCLE_RANGES = Schema(
     Parameter("speed_gain", "N m s/m", 0.0, 0.0, 5000.0, "eq. 7 k_v: crank torque per m/s of speed error"),
     Parameter("max_crank_torque", "N m", 0.0, 0.0, 1000.0, "limit of eq. 7's crank torque, driving or braking (a rider's strength)"),
+    Parameter("ik_velocity_filter", "s", 0.0, 0.0, 0.5, "time constant of the low-pass on the limb targets' velocity that leads the servos (0: unfiltered)"),
     Parameter("speed_ramp", "m/s^2", 0.1, 0.1, 10.0, "eq. 7's desired speed moves to a newly commanded one at this rate (a start, a speed step)"),
     Parameter("roll_gain", "1", 0.0, 0.0, 20.0, "eq. 11 k_alpha at reference_speed"),
     Parameter("roll_rate_gain", "s", 0.0, 0.0, 5.0, "eq. 11 k_alpha-dot at reference_speed"),
@@ -204,6 +205,7 @@ class Bicycling(Behaviour):
         self.kp = servos.default_kp
         self.lag = servos.default_kv / servos.default_kp          # s: a PD servo's lag behind its target
         self.previous_ik = None
+        self.ik_velocity = np.zeros(len(self.limb_servos))
         self.fork_command = 0.0
         self.desired_speed = self.course.start_speed
         self.jac = np.zeros((3, model.nv))
@@ -236,9 +238,13 @@ class Bicycling(Behaviour):
         solve(ctx.model, scratch, self.pairs, which, servos.dof_adr[servo_rows], ctx.data.qpos, IK_ITERATIONS_PER_TICK)
         goal = self.target.copy()
         ik = scratch.qpos[servos.qpos_adr[servo_rows]]
-        velocity = np.zeros_like(ik) if self.previous_ik is None else (ik - self.previous_ik) / ctx.control_dt
+        if self.previous_ik is not None:   # the targets' velocity, low-passed: the IK starts from the measured
+            # limbs, so its raw difference carries their jitter, and led by it the servos lost their damping
+            # (the shoulders chattered at 17 Hz, 2.8 rad/s rms, and the tyres' contacts took ~130 W)
+            blend = ctx.control_dt / (self.params["ik_velocity_filter"] + ctx.control_dt)
+            self.ik_velocity += blend * ((ik - self.previous_ik) / ctx.control_dt - self.ik_velocity)
         self.previous_ik = ik.copy()
-        goal[servo_rows] = ik + self.lag[servo_rows] * velocity
+        goal[servo_rows] = ik + self.lag[servo_rows] * self.ik_velocity
         for side, value in (ankles or {}).items():
             goal[self.ankle_servos[side]] = value
         return goal
