@@ -45,7 +45,7 @@ ROOT = Path.cwd()                   # docs are written under the folder it runs 
 
 import numpy as np
 
-from ...control.leap import AIRBORNE_HEIGHT, blend_rows, broad_gaps, broad_tolerance, uncovered_gaps
+from ...control.leap import AIRBORNE_HEIGHT, UNCOVERED_STEP, blend_rows, broad_gaps, broad_tolerance, uncovered_gaps
 from ..jump_to_target.behaviour import GROUND_AIR_TIME, leap_params, stored_plan
 from ...planning.jump import plan_jump, store_plan
 from ... import tuned
@@ -239,11 +239,25 @@ def blend_trial(args) -> dict:
             "blend": [a["com_travel"], b["com_travel"], w]}
 
 
+def in_travel_order(broad: dict) -> dict:
+    """The broad table with its row columns (BROAD_COLUMNS) in order of COM travel."""
+    order = sorted(range(len(broad["com_travel"])), key=lambda i: broad["com_travel"][i])
+    return {**broad, **{k: [broad[k][i] for i in order] for k in BROAD_COLUMNS}}
+
+
+def row_travel(args) -> float:
+    """The COM travel of a broad row's leap parameters, run as the leap runs (Leap.default_duration)."""
+    character, params = args
+    from .behaviour import Leap
+    return run(RunRequest("leap", character, params=params, duration=Leap.default_duration)).meta["metrics"]["com_travel"]
+
+
 def gap_cover(travel: float, gap: tuple[float, float]) -> float:
     """How much of the gap's commanded distances a row travelling ``travel`` m is within the
-    tolerance of (broad_tolerance: from travel / 1.1 to travel / 0.9)."""
+    tolerance of (broad_tolerance: from travel / 1.1 to travel / 0.9); each distance of the gap
+    (UNCOVERED_STEP apart) stands for half a step either side, so a one-distance gap has a length."""
     low, high = travel / (1 + broad_tolerance(1.0)), travel / (1 - broad_tolerance(1.0))
-    return min(high, gap[1]) - max(low, gap[0])
+    return min(high, gap[1] + 0.5 * UNCOVERED_STEP) - max(low, gap[0] - 0.5 * UNCOVERED_STEP)
 
 
 def fill_broad(character: str, broad: dict, pool) -> dict:
@@ -251,8 +265,13 @@ def fill_broad(character: str, broad: dict, pool) -> dict:
     within 10 % of), BROAD_FILL_ROUNDS times: BROAD_FILL_STEPS blends of the two rows around a gap
     are run whole, and the one that lands balanced and covers most of the gap becomes a row; where
     none does, the gap's middle is planned as a jump straight ahead like the first rows (broad_row).
-    The rows already there are kept as they are."""
+    The rows already there keep their settings; their travel is measured again first as the leap
+    runs them (row_travel), so that a row serves exactly the distances within 10 % of its travel."""
     broad = {k: list(v) for k, v in broad.items()}
+    # the rows' travel as the leap runs them (Leap.default_duration): a planned row was measured in a
+    # shorter run, and the COM creeps a few mm further while it stands up
+    broad["com_travel"] = pool.map(row_travel, [(character, params) for params in broad["params"]])
+    broad = in_travel_order(broad)
     for _ in range(BROAD_FILL_ROUNDS):
         gaps = broad_gaps(broad["com_travel"])
         print(f"  {character} broad: gaps {', '.join(f'{a:.3f}-{b:.3f}' for a, b in gaps) or 'none'} m", flush=True)
@@ -275,10 +294,8 @@ def fill_broad(character: str, broad: dict, pool) -> dict:
                 best = max(covering, key=lambda r: gap_cover(r["com_travel"], gap))
                 for k in BROAD_COLUMNS:
                     broad[k].append(best[k])
-        order = sorted(range(len(broad["com_travel"])), key=lambda i: broad["com_travel"][i])
-        for k in BROAD_COLUMNS:
-            broad[k] = [broad[k][i] for i in order]
-    return broad
+        broad = in_travel_order(broad)
+    return in_travel_order(broad)
 
 
 def vertical_table(results: list[dict]) -> dict:
