@@ -208,10 +208,10 @@ def test_the_stated_range_of_commandable_heights_is_the_one_that_runs():
 
 def test_infeasible_and_bad_leaps_are_refused_before_simulating():
     with pytest.raises(ParameterError, match=r"distance=2.45 m is beyond the calibrated broad jumps of man; allowed range "
-                                             r"is \[0.27, 2.28\] m \(calibrated broad jumps travel 0.30 ... 2.05 m"):
+                                             r"is \[0.28, 2.28\] m \(calibrated broad jumps travel 0.30 ... 2.05 m"):
         run(RunRequest("leap", "man", params=dict(distance=2.45)))
     with pytest.raises(ParameterError, match=r"distance=0.2 m is below the calibrated broad jumps of woman; allowed range "
-                                             r"is \[0.30, 1.82\] m"):
+                                             r"is \[0.30, 1.83\] m"):
         run(RunRequest("leap", "woman", params=dict(distance=0.2)))
     with pytest.raises(ParameterError, match=r"height=1.1 m is infeasible for man with human torque limits; "
                                              r"allowed range is \[0.09, 1.00\] m \(calibrated leaps rise 0.12 ... 0.90 m\)"):
