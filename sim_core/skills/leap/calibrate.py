@@ -23,7 +23,7 @@ swing, lift-off hip angle and the landing's settings) with the air time of the r
 is reused when its best trial ended balanced; new plans are stored there too); the whole leap is
 then run with the plan's settings and kept as a row (measured COM travel - within a few cm of the
 landing point - and the leap's low-level parameters) if it ends balanced.
-The behaviour runs the row nearest the commanded distance. Rerun after any change to the model
+The behaviour runs the row within 10 % of the commanded distance (control.leap.broad_row). Rerun after any change to the model
 or the controllers:
 
     python -m sim_core calibrate leap [--character man woman] [--processes 1] [--only vertical broad]
