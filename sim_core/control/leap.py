@@ -644,11 +644,87 @@ def vertical_row(columns: dict, height: float) -> dict:
             "thrust_damping": column("thrust_damping"), "foot_delta": column("foot_delta"), "liftoff_hip": column("liftoff_hip")}
 
 
+BROAD_FLAGS = ("low_level", "distance", "vertical_thrust", "landing_swing_arms", "landing_place_sideways")
+# a broad row's parameters (and plan settings) that are switches, not quantities (distance > 0: the
+# broad jump's thrust, 0: the vertical leap's), taken whole from the nearer row when blending two
+
+
+def broad_tolerance(distance: float) -> float:
+    """TARGETS.md's tolerance of a broad jump's COM travel: +-10 %."""
+    return 0.1 * distance          # criterion: TARGETS.md's broad jump tolerance
+
+
+def broad_rows(broad: dict) -> tuple[np.ndarray, list[dict]]:
+    """The calibrated broad jumps (their leap parameters) in order of measured COM travel, each
+    travelling further than the one before (calibrate leap stores them so; a row that does not is
+    dropped, so the travel is an increasing function of the row and can be interpolated)."""
+    travels, rows = [], []
+    for k in sorted(range(len(broad["com_travel"])), key=lambda k: broad["com_travel"][k]):
+        if not travels or broad["com_travel"][k] > travels[-1]:
+            travels.append(float(broad["com_travel"][k]))
+            rows.append(broad["params"][k])
+    return np.asarray(travels), rows
+
+
+def broad_distances(travels) -> tuple[float, float]:
+    """The commanded distances a broad-jump table serves: its calibrated travels, and beyond the
+    shortest and longest while that end row's travel is within TARGETS.md's 10 % of the command."""
+    return min(travels) / 1.1, max(travels) / 0.9      # criterion: broad_tolerance, inverted
+
+
+def broad_gaps(travels) -> list[tuple[float, float]]:
+    """The commanded distances between the shortest and the longest calibrated travel (UNCOVERED_STEP
+    apart) that no calibrated row's measured travel is within the tolerance of (broad_tolerance) -
+    the broad jump interpolates those, and may miss or fall - as intervals (first, last);
+    python -m sim_core calibrate leap --fill --only broad adds rows in them."""
+    gaps = []
+    if not len(travels):
+        return gaps
+    for d in np.round(np.arange(min(travels), max(travels) + 1e-9, UNCOVERED_STEP), 3):
+        if min(abs(t - d) for t in travels) <= broad_tolerance(d):
+            continue
+        if gaps and d - gaps[-1][1] < 1.5 * UNCOVERED_STEP:    # definition: the next grid distance
+            gaps[-1] = (gaps[-1][0], float(d))
+        else:
+            gaps.append((float(d), float(d)))
+    return gaps
+
+
+def broad_position(travels: np.ndarray, distance: float) -> tuple[int, float]:
+    """Where ``distance`` falls among the measured travels: the row k below it and the share w of
+    the way to row k + 1 (0 at or before the first row; the last row with w = 0 at or past it)."""
+    if distance <= travels[0]:
+        return 0, 0.0
+    if distance >= travels[-1]:
+        return len(travels) - 1, 0.0
+    k = int(np.searchsorted(travels, distance, side="right")) - 1
+    return k, float((distance - travels[k]) / (travels[k + 1] - travels[k]))
+
+
+def blend_rows(a: dict, b: dict, w: float) -> dict:
+    """Row ``a`` moved the share ``w`` of the way to row ``b``: each quantity linearly, each switch
+    (BROAD_FLAGS) from the nearer row; w = 0 is ``a`` itself, value for value."""
+    if w == 0.0:
+        return dict(a)
+    near = a if w < 0.5 else b          # definition: the nearer row
+    names = list(a) + [n for n in b if n not in a]
+    return {n: a[n] + w * (b[n] - a[n]) if n in a and n in b and n not in BROAD_FLAGS
+            else near.get(n, a.get(n, b.get(n))) for n in names}
+
+
 def broad_row(broad: dict, distance: float) -> dict:
-    """The calibrated broad jump whose measured COM travel is nearest the distance (its leap
-    parameters; a broad jump's travel is not smooth in its settings, so it is not interpolated)."""
-    k = int(np.argmin(np.abs(np.asarray(broad["com_travel"]) - distance)))
-    return dict(broad["params"][k])
+    """The leap parameters of a broad jump to ``distance``: the calibrated broad jump whose measured
+    COM travel is nearest, exactly, when that is within the tolerance (broad_tolerance), else those
+    of the two rows whose travels bracket it interpolated linearly in the travel (broad_position,
+    blend_rows; beyond the ends the end row). A row is a knife edge - a millimetre more crouch can
+    turn its balanced landing into a fall, and a blend of two rows falls more often than not - so
+    a measured row is preferred and calibrate leap --fill --only broad adds rows where none is near."""
+    travels, rows = broad_rows(broad)
+    nearest = int(np.argmin(np.abs(travels - distance)))
+    if abs(travels[nearest] - distance) <= broad_tolerance(distance):
+        return dict(rows[nearest])
+    k, w = broad_position(travels, distance)
+    return blend_rows(rows[k], rows[min(k + 1, len(rows) - 1)], w)
 
 
 LEAP_TABLE = register_table(TableType("leap", with_constants(LEAP_SETTINGS, LEAP_CONSTANTS), _leap_rows,

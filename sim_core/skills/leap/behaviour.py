@@ -4,11 +4,10 @@ settings looked up in the calibrated leap table."""
 from __future__ import annotations
 
 import math
-import numpy as np
 
 from ...control.balance import Balance, standing_hip_height
 from ...control.behaviour import register
-from ...control.leap import CONSTANTS as LEAP, LOW_LEVEL_SETTINGS, Landing, LeapThrust, balance_after_landing, broad_row, commandable_heights, leap_assess, load_mapping, vertical_key, vertical_row
+from ...control.leap import CONSTANTS as LEAP, LOW_LEVEL_SETTINGS, Landing, LeapThrust, balance_after_landing, broad_distances, broad_row, broad_rows, commandable_heights, leap_assess, load_mapping, vertical_key, vertical_row
 from ...control.sequencer import Sequence, Step
 from ...errors import ParameterError
 from ...schema import Parameter
@@ -27,7 +26,8 @@ class Leap(Sequence):
                   "commanded rise of the COM above standing (vertical leap): runs the calibrated leap nearest "
                   "it if that one's measured rise is within 10 % (3 cm below 0.3 m), else interpolates"),
         Parameter("distance", "m", 0.0, 0.0, 2.5,
-                  "commanded horizontal COM travel (broad jump); 0 = vertical leap"),
+                  "commanded horizontal COM travel (broad jump); 0 = vertical leap: runs the calibrated broad "
+                  "jump nearest it if that one's measured travel is within 10 %, else interpolates"),
         Parameter("liftoff_hip", "rad", 0.0, -1.0, 1.0,
                   "hip flexion (-) or extension (+) at lift-off beyond the calibrated neutral (0 = no "
                   "somersault): sends the ground force past the COM and sets the somersault rate"),
@@ -51,10 +51,10 @@ class Leap(Sequence):
 
     def run_params(self) -> dict:
         """The parameters the leap runs with: the user's, or for a broad jump (distance > 0) the
-        low-level leap of the calibrated broad jump nearest the distance (python -m sim_core calibrate leap
-        plans each as a jump to a point straight ahead, by simulation: the broad jump's distance is
-        not smooth in its settings, so it is not interpolated), with the user's lift-off hip angle
-        added to the row's."""
+        low-level leap of the calibrated broad jump within 10 % of the distance, else interpolated
+        between the two whose measured COM travels bracket it (control.leap.broad_row; python -m
+        sim_core calibrate leap plans the rows as jumps to a point straight ahead and fills the
+        gaps between them), with the user's lift-off hip angle added."""
         p = self.params
         if p["low_level"] or p["distance"] <= 0:
             return p
@@ -82,17 +82,17 @@ class Leap(Sequence):
         require_calibrated("leap", self.ctx.character.name, self.name)
         mapping = load_mapping(self.ctx.character.name)
         if p["distance"] > 0:
-            travels = np.asarray(mapping["broad"]["com_travel"])
+            travels, _ = broad_rows(mapping["broad"]) if mapping.get("broad") else ([], [])
             if not len(travels):
                 raise ParameterError(f"the broad jump of {self.ctx.character.name} is not calibrated (distance "
                                      f"must be 0): run python -m sim_core calibrate leap --only broad (or use low_level=1)")
-            nearest = travels[int(np.argmin(np.abs(travels - p["distance"])))]
-            if abs(nearest - p["distance"]) > 0.1 * p["distance"]:   # criterion: TARGETS.md, within 10 %
-                calibrated = ", ".join(f"{t:.2f}" for t in sorted(travels))
+            low, high = broad_distances(travels)
+            if not low <= p["distance"] <= high:
                 raise ParameterError(
-                    f"parameter distance={p['distance']:g} m has no calibrated broad jump within 10 % for "
-                    f"{self.ctx.character.name} (nearest {nearest:.2f} m; calibrated: {calibrated} m; "
-                    f"python -m sim_core calibrate leap)")
+                    f"parameter distance={p['distance']:g} m is {'below' if p['distance'] < low else 'beyond'} the "
+                    f"calibrated broad jumps of {self.ctx.character.name}; allowed range is [{low:.2f}, {high:.2f}] m "
+                    f"(calibrated broad jumps travel {travels[0]:.2f} ... {travels[-1]:.2f} m; python -m sim_core "
+                    f"calibrate leap --only broad)")
         else:
             key = vertical_key(self.ctx)
             strength = "unlimited strength" if key.endswith("unlimited") else "human torque limits"

@@ -23,11 +23,15 @@ swing, lift-off hip angle and the landing's settings) with the air time of the r
 is reused when its best trial ended balanced; new plans are stored there too); the whole leap is
 then run with the plan's settings and kept as a row (measured COM travel - within a few cm of the
 landing point - and the leap's low-level parameters) if it ends balanced.
-The behaviour runs the row nearest the commanded distance. Rerun after any change to the model
+The behaviour runs the row within 10 % of the commanded distance (control.leap.broad_row). Rerun after any change to the model
 or the controllers:
 
     python -m sim_core calibrate leap [--character man woman] [--processes 1] [--only vertical broad]
-    python -m sim_core calibrate leap --fill [--only vertical]     # more crouches where no row is near
+    python -m sim_core calibrate leap --fill [--only vertical broad]   # more rows where no row is near
+
+A broad-jump distance no row is within 10 % of gets a row from --fill --only broad: blends of the
+two rows around it (control.leap.blend_rows, the broad jump's own interpolation) run whole, the one
+that lands balanced and covers most of the gap kept (fill_broad).
 """
 from __future__ import annotations
 
@@ -41,7 +45,7 @@ ROOT = Path.cwd()                   # docs are written under the folder it runs 
 
 import numpy as np
 
-from ...control.leap import AIRBORNE_HEIGHT, uncovered_gaps
+from ...control.leap import AIRBORNE_HEIGHT, UNCOVERED_STEP, blend_rows, broad_gaps, broad_tolerance, uncovered_gaps
 from ..jump_to_target.behaviour import GROUND_AIR_TIME, leap_params, stored_plan
 from ...planning.jump import plan_jump, store_plan
 from ... import tuned
@@ -213,6 +217,87 @@ def calibrate_broad(character: str, pool) -> dict:
             "trials": [{k: r[k] for k in ("distance", "air_time", "com_travel", "outcome", "kept")} for r in results]}
 
 
+BROAD_FILL_STEPS = 15        # blends tried between the two rows around a gap, evenly spaced (w = 1/16 .. 15/16)
+BROAD_FILL_ROUNDS = 3        # rounds of gaps filled (a new row can leave a narrower gap beside it)
+BROAD_COLUMNS = ("com_travel", "params", "settings", "distance", "air_time", "peak_thrust_grf_body_weights")
+
+
+def blend_trial(args) -> dict:
+    """The whole leap run with row ``a`` blended the share ``w`` of the way to row ``b``
+    (control.leap.blend_rows, the broad jump's interpolation): a candidate row."""
+    character, a, b, w = args
+    from .behaviour import Leap
+    params = blend_rows(a["params"], b["params"], w)
+    traj = run(RunRequest("leap", character, params=params, duration=Leap.default_duration))
+    m = traj.meta["metrics"]
+    print(f"  {character} broad blend {a['com_travel']:.3f} -> {b['com_travel']:.3f} m at w = {w:.3f}: COM travel "
+          f"{m['com_travel']:.3f} m, {traj.meta['outcome']}", flush=True)
+    return {"distance": a["com_travel"] + w * (b["com_travel"] - a["com_travel"]), "air_time": GROUND_AIR_TIME,
+            "com_travel": m["com_travel"], "outcome": traj.meta["outcome"], "kept": traj.meta["outcome"] == "success",
+            "params": params, "settings": blend_rows(a["settings"], b["settings"], w),
+            "peak_thrust_grf_body_weights": m.get("peak_thrust_grf_body_weights"),
+            "blend": [a["com_travel"], b["com_travel"], w]}
+
+
+def in_travel_order(broad: dict) -> dict:
+    """The broad table with its row columns (BROAD_COLUMNS) in order of COM travel."""
+    order = sorted(range(len(broad["com_travel"])), key=lambda i: broad["com_travel"][i])
+    return {**broad, **{k: [broad[k][i] for i in order] for k in BROAD_COLUMNS}}
+
+
+def row_travel(args) -> float:
+    """The COM travel of a broad row's leap parameters, run as the leap runs (Leap.default_duration)."""
+    character, params = args
+    from .behaviour import Leap
+    return run(RunRequest("leap", character, params=params, duration=Leap.default_duration)).meta["metrics"]["com_travel"]
+
+
+def gap_cover(travel: float, gap: tuple[float, float]) -> float:
+    """How much of the gap's commanded distances a row travelling ``travel`` m is within the
+    tolerance of (broad_tolerance: from travel / 1.1 to travel / 0.9); each distance of the gap
+    (UNCOVERED_STEP apart) stands for half a step either side, so a one-distance gap has a length."""
+    low, high = travel / (1 + broad_tolerance(1.0)), travel / (1 - broad_tolerance(1.0))
+    return min(high, gap[1] + 0.5 * UNCOVERED_STEP) - max(low, gap[0] - 0.5 * UNCOVERED_STEP)
+
+
+def fill_broad(character: str, broad: dict, pool) -> dict:
+    """Rows added to a broad-jump table in its gaps (control.leap.broad_gaps: distances no row is
+    within 10 % of), BROAD_FILL_ROUNDS times: BROAD_FILL_STEPS blends of the two rows around a gap
+    are run whole, and the one that lands balanced and covers most of the gap becomes a row; where
+    none does, the gap's middle is planned as a jump straight ahead like the first rows (broad_row).
+    The rows already there keep their settings; their travel is measured again first as the leap
+    runs them (row_travel), so that a row serves exactly the distances within 10 % of its travel."""
+    broad = {k: list(v) for k, v in broad.items()}
+    # the rows' travel as the leap runs them (Leap.default_duration): a planned row was measured in a
+    # shorter run, and the COM creeps a few mm further while it stands up
+    broad["com_travel"] = pool.map(row_travel, [(character, params) for params in broad["params"]])
+    broad = in_travel_order(broad)
+    for _ in range(BROAD_FILL_ROUNDS):
+        gaps = broad_gaps(broad["com_travel"])
+        print(f"  {character} broad: gaps {', '.join(f'{a:.3f}-{b:.3f}' for a, b in gaps) or 'none'} m", flush=True)
+        if not gaps:
+            break
+        for gap in gaps:
+            rows = [{k: broad[k][i] for k in ("com_travel", "params", "settings")} for i in range(len(broad["com_travel"]))]
+            below = max((r for r in rows if r["com_travel"] < gap[0]), key=lambda r: r["com_travel"])
+            above = min((r for r in rows if r["com_travel"] > gap[1]), key=lambda r: r["com_travel"])
+            shares = np.linspace(0.0, 1.0, BROAD_FILL_STEPS + 2)[1:-1]
+            results = pool.map(blend_trial, [(character, below, above, float(w)) for w in shares])
+            covering = [r for r in results if r["kept"] and gap_cover(r["com_travel"], gap) > 0.0]
+            if not covering:
+                planned = broad_row((character, round(float(np.sqrt(gap[0] * gap[1])), 3)))
+                results.append(planned)
+                covering = [planned] if planned["kept"] and gap_cover(planned["com_travel"], gap) > 0.0 else []
+            broad["trials"] += [{k: r[k] for k in ("distance", "air_time", "com_travel", "outcome", "kept")
+                                 if k in r} | ({"blend": r["blend"]} if "blend" in r else {}) for r in results]
+            if covering:
+                best = max(covering, key=lambda r: gap_cover(r["com_travel"], gap))
+                for k in BROAD_COLUMNS:
+                    broad[k].append(best[k])
+        broad = in_travel_order(broad)
+    return in_travel_order(broad)
+
+
 def vertical_table(results: list[dict]) -> dict:
     """The leaps that landed balanced, in order of COM rise, each more than 1 cm above the last (a
     monotonic mapping the behaviour can interpolate): the damped thrust's leaps first, then the
@@ -293,7 +378,7 @@ def calibrate(character: str, processes: int, only: list[str], previous: dict, f
             trials[key] = results
             mapping[key] = vertical_table(results)
         if "broad" in only:
-            mapping["broad"] = calibrate_broad(character, pool)
+            mapping["broad"] = fill_broad(character, mapping["broad"], pool) if fill else calibrate_broad(character, pool)
             mapping.pop("broad_calibrated", None)
     mapping["trials_by_table"] = trials
     mapping.pop("trials", None)
@@ -307,12 +392,13 @@ def main(argv=None) -> int:
     parser.add_argument("--only", nargs="+", default=[*VERTICAL_TABLES, "broad"],
                         help="tables to recalibrate (the others are kept): " + " ".join([*VERTICAL_TABLES, "broad"]))
     parser.add_argument("--fill", action="store_true",
-                        help="keep the vertical tables' trials and add crouches in their gaps (commanded heights no "
-                             "row is within the tolerance of), instead of calibrating them afresh")
+                        help="keep the tables' rows and add rows in their gaps (commanded heights or distances no "
+                             "row is within the tolerance of), instead of calibrating them afresh: crouches for the "
+                             "vertical tables, blends of the neighbouring rows (else a plan) for the broad jump")
     args = parser.parse_args(argv)
     for character in args.character:
         previous = tuned.load("leap", character) or {}
-        only = [k for k in args.only if k in VERTICAL_TABLES] if args.fill else args.only
+        only = args.only
         mapping = calibrate(character, args.processes, only, previous, args.fill)
         # write only the recalibrated tables over the file as it is now (another run may have
         # recalibrated the others meanwhile)
