@@ -92,20 +92,25 @@ def test_tuned_settings_are_a_closed_sub_panel_generated_from_the_settings_schem
         addon.register()
 
 
+def poly_curve(context, name, points):
+    """A poly curve object through ``points`` (world metres), linked into the scene."""
+    data = bpy.data.curves.new(name, type="CURVE")
+    spline = data.splines.new("POLY")
+    spline.points.add(len(points) - 1)
+    for point, co in zip(spline.points, points):
+        point.co = (*co, 1.0)
+    curve = bpy.data.objects.new(name, data)
+    context.scene.collection.objects.link(curve)
+    context.view_layer.update()
+    return curve
+
+
 def test_a_curve_object_is_the_running_path(empty_scene):
     context = empty_scene
     bpy.ops.sim_athletics.add_character(character="man")
     arm = context.view_layer.objects.active
     arm.location = (1.0, 2.0, 0.0)
-    data = bpy.data.curves.new("track", type="CURVE")
-    spline = data.splines.new("POLY")
-    points = [(1.0, 2.0, 0.0), (1.0, -8.0, 0.0), (6.0, -8.0, 0.0)]      # 10 m ahead (-Y), then 5 m left
-    spline.points.add(len(points) - 1)
-    for point, co in zip(spline.points, points):
-        point.co = (*co, 1.0)
-    curve = bpy.data.objects.new("track", data)
-    context.scene.collection.objects.link(curve)
-    context.view_layer.update()
+    curve = poly_curve(context, "track", [(1.0, 2.0, 0.0), (1.0, -8.0, 0.0), (6.0, -8.0, 0.0)])  # 10 m ahead (-Y), then 5 m left
     context.scene.sim_athletics.params_running.path = curve
     s = operators.run_settings(context, behaviour="running")
     params = operators.with_scene_inputs(context, arm, s)
@@ -120,15 +125,7 @@ def test_a_curve_object_is_the_bicycle_path(empty_scene):
     context = empty_scene
     bpy.ops.sim_athletics.add_character(character="man")
     arm = context.view_layer.objects.active
-    data = bpy.data.curves.new("road", type="CURVE")
-    spline = data.splines.new("POLY")
-    points = [(0.0, 0.0, 0.0), (0.0, -20.0, 0.0), (10.0, -30.0, 0.0)]    # 20 m ahead (-Y), then ahead-left
-    spline.points.add(len(points) - 1)
-    for point, co in zip(spline.points, points):
-        point.co = (*co, 1.0)
-    curve = bpy.data.objects.new("road", data)
-    context.scene.collection.objects.link(curve)
-    context.view_layer.update()
+    curve = poly_curve(context, "road", [(0.0, 0.0, 0.0), (0.0, -20.0, 0.0), (10.0, -30.0, 0.0)])  # 20 m ahead (-Y), then ahead-left
     context.scene.sim_athletics.params_bicycle.path = curve
     s = operators.run_settings(context, behaviour="bicycle")
     params = operators.with_scene_inputs(context, arm, s)
