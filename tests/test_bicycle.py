@@ -63,7 +63,7 @@ def test_riderless_bicycle_at_4_m_s_weaves_and_falls():
 # --- the control laws (SEEDS-WAVE2 B5, eq. 11) ------------------------------------------------
 from sim_core.errors import ParameterError
 from sim_core.simulate import RunRequest, largest_difference, replay, run
-from sim_core.skills.bicycle.laws import crank_torque, fork_angle, leg_weight, pedal_forces
+from sim_core.skills.bicycle.laws import crank_torque, fork_angle, lean_ahead, leg_weight, pedal_forces
 from sim_core.world.bicycle import CRANK_LENGTH
 
 
@@ -177,3 +177,15 @@ def test_a_rider_who_falls_is_refused_in_one_line(character):
         run(RunRequest("bicycle", character, duration=0.05))
     message = str(error.value)
     assert "\n" not in message and character in message and "not calibrated" in message and "man" in message
+
+
+def test_a_curve_ahead_asks_for_its_steady_lean():
+    """A left arc of radius 15 m read ahead: curvature 1/15, and the lean asked for is left (roll
+    < 0) with tan = v^2 kappa / g times the share; a straight asks for none."""
+    from sim_core.control.path import PathFollower, turn_path
+    follower = PathFollower(turn_path(math.pi / 2, 10.0, 15.0, 20.0), 2.0)
+    assert follower.curvature_ahead(0.0, 0.0, 2.0) == pytest.approx(0.0, abs=1e-9)
+    assert follower.curvature_ahead(15.0, 3.0, 2.0) == pytest.approx(1 / 15, rel=0.02)
+    assert lean_ahead(4.0, 1 / 15, 1.0) == pytest.approx(-math.atan(16 / 15 / 9.80665))
+    assert lean_ahead(4.0, -1 / 15, 0.3) == pytest.approx(0.3 * math.atan(16 / 15 / 9.80665))
+    assert fork_angle(0.0, 0.0, 0.0, 0.0, 0.0, 2.0, 0.4, 0.6, 0.3, desired_roll=-0.1) < 0   # lean left: first steer right

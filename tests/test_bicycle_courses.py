@@ -51,7 +51,9 @@ def test_speed_steps_and_slow_start():
 @pytest.mark.parametrize("values, words", [
     ({"course": "turn", "speed": 8.0, "turn_radius": 5.0}, "lean of"),
     ({"course": "slalom", "speed": 8.0, "gate_spacing": 4.0, "gate_offset": 3.0}, "the slalom is ridden at speed"),
-    ({"course": "slalom", "speed": 4.0, "gate_spacing": 20.0}, "gate_spacing 20"),
+    ({"course": "slalom", "speed": 4.0, "gate_spacing": 8.0, "gate_offset": 1.0}, "gate_offset <= 0.65 m"),
+    ({"course": "slalom", "speed": 4.0, "gate_spacing": 20.0, "gate_offset": 1.5}, "gate_offset <= 1.00 m"),
+    ({"course": "slalom", "speed": 4.0, "gate_width": 1.0}, "gate_width >= 1.5 m"),
     ({"course": "hill", "hill_grade": 0.5}, "hill_grade=0.5"),
     ({"course": "roundabout"}, "course"),
     ({"path": [[0, 0], [0.01, 0]]}, "degenerate"),

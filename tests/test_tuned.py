@@ -175,7 +175,8 @@ ALLOWED = {
                                               "LANDING_SKID_LIMIT", "UNCOVERED_STEP")} | {"UP": "definition"},
     "skills.running.behaviour": {n: "definition" for n in ("FLIGHT", "LOADING", "HEEL", "HEEL_TOE", "TOE", "UNLOADING", "START", "TUNED")}
                | {"SCHEDULED": "search"},
-    "control.path": {n: "criterion" for n in ("MIN_SEGMENT", "MIN_LENGTH", "MAX_POINTS", "MIN_TURN_RADIUS")}
+    "control.path": {**{n: "criterion" for n in ("MIN_SEGMENT", "MIN_LENGTH", "MAX_POINTS", "MIN_TURN_RADIUS")},
+                     "CURVATURE_CHORD": "definition"}
                | {n: "definition" for n in ("TURN_RUN_OUT", "FIGURE_EIGHT_LAPS", "CIRCLE_LAPS")},
     "skills.somersault.behaviour": {"TUCK": "definition", "ROTATION_TOLERANCE": "criterion"},
     "skills.jump_to_target.behaviour": {n: "search" for n in ("TAKEOFF_COM", "TOUCHDOWN_COM", "WINDUP_OVERHEAD", "KNOB_DEFAULTS",
@@ -191,7 +192,7 @@ ALLOWED = {
     "skills.bicycle.behaviour": {"MIN_LOOKAHEAD_SPEED": "definition"},
     "skills.bicycle.steering": {"MIN_SCHEDULED_SPEED": "definition"},
     "skills.bicycle.course": {"SLALOM_POINT_SPACING": "definition", "RUN_OUT": "definition",
-                              **{n: "criterion" for n in ("SLALOM_SPEEDS", "SLALOM_SPACINGS", "SLALOM_MAX_OFFSET")}},
+                              **{n: "criterion" for n in ("SLALOM_SPEEDS", "SLALOM_MAX_ACCELERATION", "SLALOM_MAX_OFFSET", "SLALOM_MIN_WIDTH")}},
 }
 
 

@@ -17,6 +17,7 @@ MIN_SEGMENT = 0.05          # m: consecutive points closer than this are merged
 MIN_LENGTH = 2.0            # m: a path shorter than this cannot be run along
 MAX_POINTS = 10000
 MIN_TURN_RADIUS = 1.5       # m: a corner tighter than this is rounded to it (a runner cannot turn on a spot)
+CURVATURE_CHORD = 0.5       # m: the half-chord over which a path's curvature ahead is measured
 # the request's path shapes (turn, figure_eight, circle): what each one means
 TURN_RUN_OUT = 60.0         # m straight on after a turn: longer than any run goes
 FIGURE_EIGHT_LAPS = 3
@@ -130,8 +131,13 @@ class PathFollower:
 
     def target(self, x: float, y: float) -> tuple[float, float]:
         """The look-ahead point: ``lookahead`` metres along the path from the closest point."""
+        return self.ahead(x, y, self.lookahead)
+
+    def ahead(self, x: float, y: float, distance: float) -> tuple[float, float]:
+        """The point ``distance`` metres along the path from the closest point (the path's end
+        beyond its last point)."""
         k, s, _ = self.advance(x, y)
-        remaining = self.lookahead + s * self.lengths[k]
+        remaining = distance + s * self.lengths[k]
         last = len(self.points) - 2
         while k < last and remaining > self.lengths[k]:
             remaining -= self.lengths[k]
@@ -139,6 +145,14 @@ class PathFollower:
         (ax, ay), (bx, by) = self.points[k], self.points[k + 1]
         f = remaining / self.lengths[k]
         return ax + f * (bx - ax), ay + f * (by - ay)
+
+    def curvature_ahead(self, x: float, y: float, distance: float, chord: float = CURVATURE_CHORD) -> float:
+        """The path's curvature (1/m, left turns positive) ``distance`` metres ahead: that of the
+        circle through the points ``chord`` before, at and after it."""
+        (ax, ay), (bx, by), (cx, cy) = (self.ahead(x, y, max(distance + d, 0.0)) for d in (-chord, 0.0, chord))
+        cross = (bx - ax) * (cy - ay) - (by - ay) * (cx - ax)
+        sides = math.hypot(bx - ax, by - ay) * math.hypot(cx - bx, cy - by) * math.hypot(cx - ax, cy - ay)
+        return 2.0 * cross / sides if sides > 0.0 else 0.0
 
     def heading(self, x: float, y: float) -> float:
         tx, ty = self.target(x, y)

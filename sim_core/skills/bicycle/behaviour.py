@@ -36,7 +36,7 @@ from ...errors import ParameterError
 from ...world.bicycle import CRANK_LENGTH, DEFAULT_GEAR, NAMES, Bicycle, BicycleView
 from .course import COURSE, course_for
 from .steering import steering_gains
-from .laws import ankle_angle, crank_torque, fork_angle, pedal_forces
+from .laws import ankle_angle, crank_torque, fork_angle, lean_ahead, pedal_forces
 from .mount import IK_ITERATIONS_PER_TICK, SitePairs, match_velocities, solve
 
 RIDERS = ("man",)                   # criterion: the riders measured to ride (docs/bicycle.md: the others fall)
@@ -59,6 +59,8 @@ BICYCLE_RANGES = Schema(
     Parameter("roll_rate_gain", "s", 0.0, 0.0, 5.0, "eq. 11 k_alpha-dot at reference_speed"),
     Parameter("yaw_gain", "1", 0.0, 0.0, 10.0, "eq. 11 k_beta at reference_speed"),
     Parameter("yaw_rate_gain", "s", 0.0, 0.0, 5.0, "eq. 11 k_beta-dot at reference_speed"),
+    Parameter("lean_feedforward", "1", 0.0, 0.0, 1.0, "share of a steady turn's lean (tan = v^2 kappa / g) asked for ahead of a path's curve (0: the seed's eq. 11)"),
+    Parameter("curvature_preview", "s", 0.0, 0.0, 3.0, "the path's curvature is read this many seconds of travel ahead"),
     Parameter("reference_speed", "m/s", 0.5, 0.5, 10.0, "speed at which the four steering gains are these (steering.py scales them with speed)"),
     Parameter("max_fork_angle", "rad", 0.0, 0.0, 1.0, "limit of the commanded fork angle"),
     Parameter("ankle_mean", "rad", -0.7, -0.7, 0.87, "ankle curve: mean plantarflexion over a crank turn"),
@@ -217,11 +219,16 @@ class Bicycling(Behaviour):
         model, data = ctx.model, ctx.data
         state = bike.state(data)
         c = self.params
+        desired_roll = 0.0
         if self.follower is not None:      # pure pursuit: head for the point lookahead_time ahead
-            self.follower.lookahead = c["lookahead_time"] * max(state["speed"], MIN_LOOKAHEAD_SPEED)
-            self.desired_yaw = self.follower.heading(data.qpos[bike.free_qpos], data.qpos[bike.free_qpos + 1])
+            x, y = data.qpos[bike.free_qpos], data.qpos[bike.free_qpos + 1]
+            moving = max(state["speed"], MIN_LOOKAHEAD_SPEED)
+            self.follower.lookahead = c["lookahead_time"] * moving
+            self.desired_yaw = self.follower.heading(x, y)
+            curvature = self.follower.curvature_ahead(x, y, c["curvature_preview"] * moving)
+            desired_roll = lean_ahead(state["speed"], curvature, c["lean_feedforward"])
         fork = fork_angle(state["roll"], state["roll_rate"], state["yaw"], state["yaw_rate"], self.desired_yaw,
-                          *steering_gains(state["speed"], c))
+                          *steering_gains(state["speed"], c), desired_roll)
         self.fork_command = min(max(fork, -c["max_fork_angle"]), c["max_fork_angle"])
         self._pedal(t, state)
 

@@ -5,6 +5,8 @@ from __future__ import annotations
 
 import math
 
+from ...ballistics import GRAVITY
+
 
 def crank_torque(speed: float, desired_speed: float, gain: float, limit: float) -> float:
     """Eq. 7 with the sign fix: ``tau = k_v (v_d - v)``, k_v > 0; positive drives forward; held
@@ -42,9 +44,17 @@ def ankle_angle(phase: float, mean: float, swing: float, shift: float) -> float:
 
 
 def fork_angle(roll: float, roll_rate: float, yaw: float, yaw_rate: float, desired_yaw: float,
-               k_roll: float, k_roll_rate: float, k_yaw: float, k_yaw_rate: float) -> float:
-    """Eq. 11: ``theta_fork = -k_a (a - a_d) - k_ad a' + k_b (b - b_d) + k_bd b'`` with a_d = 0.
+               k_roll: float, k_roll_rate: float, k_yaw: float, k_yaw_rate: float, desired_roll: float = 0.0) -> float:
+    """Eq. 11: ``theta_fork = -k_a (a - a_d) - k_ad a' + k_b (b - b_d) + k_bd b'`` (the seed's
+    a_d = 0; ``desired_roll`` is a lean asked for ahead of a curve, lean_ahead).
     A right lean steers right (into the fall); a heading left of the desired one first steers
     left, which leans the bicycle right, and the roll term then turns it right: counter-steer."""
     heading_error = math.remainder(yaw - desired_yaw, 2 * math.pi)
-    return -k_roll * roll - k_roll_rate * roll_rate + k_yaw * heading_error + k_yaw_rate * yaw_rate
+    return -k_roll * (roll - desired_roll) - k_roll_rate * roll_rate + k_yaw * heading_error + k_yaw_rate * yaw_rate
+
+
+def lean_ahead(speed: float, curvature: float, share: float) -> float:
+    """The roll (rad, right side down positive) of a steady turn of ``curvature`` (1/m, left
+    positive) at ``speed``, tan(lean) = v^2 kappa / g, times ``share``: asked for before the curve
+    is reached, the bicycle leans into it instead of waiting for the heading error to turn it."""
+    return -share * math.atan(speed * speed * curvature / GRAVITY)

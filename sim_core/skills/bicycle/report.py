@@ -25,7 +25,7 @@ from ...tuning import executor_for
 from ...world import World, add_world
 from ...world.bicycle import Bicycle, BicycleView, DEFAULT_GEAR
 from .behaviour import Bicycling
-from .course import SLALOM_MAX_OFFSET, SLALOM_SPACINGS, SLALOM_SPEEDS
+from .course import SLALOM_SPEEDS, slalom_widest_offset
 
 
 def riderless_model(gear: float = DEFAULT_GEAR) -> mujoco.MjModel:
@@ -93,6 +93,7 @@ COURSE_RIDES = {      # name: (parameters, seconds)
     "hill_10pct": ({"course": "hill", "hill_grade": 0.10}, 28.0),
     "start_from_1.5ms": ({"course": "start", "start_speed": 1.5}, 12.0),
 }
+SLALOM_DRAW_PERIODS = (2.0, 4.5)     # s between gates in the drawn slaloms (the measured grid's periods)
 COURSE_KEYS = ("fell", "fall_time", "max_abs_roll_deg", "mean_speed_last_5s", "path_deviation_mean", "path_deviation_max",
                "gates_passed", "gate_count", "gate_misses", "speed_steps", "hill_climb_mean_speed", "hill_climb_worst_error",
                "hill_descent_mean_speed", "hill_descent_worst_error", "hill_climb_cadence_hz",
@@ -107,9 +108,14 @@ def course_ride(item) -> tuple[str, dict]:
 
 
 def slalom_request(rng: np.random.Generator) -> tuple[float, float, float]:
-    """(speed m/s, gate spacing m, gate offset m) drawn uniformly inside the slalom's region."""
-    return (round(float(rng.uniform(*SLALOM_SPEEDS)), 2), round(float(rng.uniform(*SLALOM_SPACINGS)), 2),
-            round(float(rng.uniform(Bicycling.schema.by_name["gate_offset"].minimum, SLALOM_MAX_OFFSET)), 2))
+    """(speed m/s, gate spacing m, gate offset m) drawn uniformly inside the region the slalom is
+    offered in for the default gate width (course.py), gate periods of SLALOM_DRAW_PERIODS s (long enough to be a slalom,
+    short enough for a test's ride)."""
+    schema = Bicycling.schema.by_name
+    speed = round(float(rng.uniform(*SLALOM_SPEEDS)), 2)
+    spacing = round(float(rng.uniform(*SLALOM_DRAW_PERIODS)) * speed, 2)
+    widest = slalom_widest_offset(speed, spacing)
+    return speed, spacing, float(np.floor(rng.uniform(schema["gate_offset"].minimum, widest) * 100) / 100)
 
 
 def slalom_seconds(speed: float, spacing: float, gates: int = 8, lead: float = 10.0) -> float:
