@@ -346,3 +346,47 @@ def test_a_running_constant_is_a_setting_a_run_may_set_by_name():
     default, same, other = (run_running(1.2, **extra).arrays["qpos"]
                             for extra in ({}, {"start_speed": stored}, {"start_speed": 0.3}))
     assert np.array_equal(default, same) and not np.array_equal(default, other)
+
+
+# --------------------------------------------------------------------------- the woman (docs/running.md, "The woman")
+def woman_speeds() -> tuple[float, float]:
+    """The speeds the woman's running table covers: what she is offered."""
+    speeds = SpeedTable.load("woman").speeds
+    return speeds[0], speeds[-1]
+
+
+def test_the_woman_is_refused_outside_her_tables_speeds():
+    low, high = woman_speeds()
+    knob = Running.schema.by_name["speed"]           # below or above the schema's range: its own message
+    outside = [v for v in (low - 0.1, high + 0.1) if knob.minimum <= v <= knob.maximum]
+    assert outside
+    for speed in outside:
+        with pytest.raises(ParameterError) as err:
+            run(RunRequest("running", "woman", params={"speed": speed}, duration=0.05))
+        message = str(err.value)
+        assert "\n" not in message and f"speed={speed:g}" in message and f"[{low:g}, {high:g}]" in message, message
+
+
+def test_the_womans_constants_are_the_mans_mass_scaled_and_the_man_keeps_his():
+    """Her table's constants of the laws are running_any's (the man's) scaled by Fig. 6 (mass), but
+    for the lean's hip damping (kept: she chatters without it); the man runs with running_any's."""
+    from sim_core.skills.running.calibrate import scaled_table
+    stored = SpeedTable.load("woman")
+    scaled = scaled_table("man", "woman", stored.speeds, {"start_hip_damping": 1.0})
+    assert stored.constants == pytest.approx(scaled.constants, rel=1e-9)
+    assert stored.constants["start_hip_damping"] == 1.0 and stored.constants["pitch_kd"] < 0.5 * 149.0
+    assert SpeedTable.load("man").constants == {}
+    assert Running.settings_schema.by_name["start_hip_damping"].default == 0.0
+
+
+@pytest.mark.slow
+def test_the_woman_runs_a_random_speed_of_her_range():
+    """From a stand, 30 s at a speed drawn inside her offered range: no fall, speed within 5 %."""
+    low, high = woman_speeds()
+    speed = float(np.random.default_rng(28).uniform(low, high))
+    traj = run(RunRequest("running", "woman", params={"speed": speed}, duration=STEADY_RUN))
+    m = traj.meta["metrics"]
+    print(f"the woman at {speed:.3f} m/s: {traj.meta['outcome']}, mean speed over the last 10 s "
+          f"{m['gait']['mean_speed']:.3f} m/s")
+    assert not_fallen(traj), f"fell at {m['fall_time']:.1f} s"
+    assert abs(m["gait"]["mean_speed"] - speed) <= SPEED_TOLERANCE * speed

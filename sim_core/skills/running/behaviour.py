@@ -40,6 +40,7 @@ from types import SimpleNamespace
 import numpy as np
 
 from ...ballistics import GRAVITY, time_to_fall_to
+from ...errors import ParameterError
 from ...character.model import Placement
 from ...control.behaviour import Behaviour, ControlContext, register
 from .leg import RunnerLeg
@@ -81,26 +82,39 @@ class SpeedTable:
     held constant beyond the ends): Hodgins et al. tune the thrust timing "30-50 % depending on
     forward speed"; this is where such schedules live, as data."""
 
-    def __init__(self, speeds: list[float], values: dict[str, list[float] | float]):
+    def __init__(self, speeds: list[float], values: dict[str, list[float] | float], constants: dict | None = None):
         self.speeds = [float(v) for v in speeds]
         self.values = {k: ([float(x) for x in v] if isinstance(v, (list, tuple)) else [float(v)] * len(self.speeds))
                        for k, v in values.items()}
+        # the character's own values of constants of the laws (running_any's are the man's), e.g. the
+        # woman's gains mass-scaled from the man's by Fig. 6 (docs/running.md, "The woman")
+        self.constants = {k: float(v) for k, v in (constants or {}).items()}
 
     @classmethod
     def load(cls, character: str = "man") -> "SpeedTable":
         """The character's running table (the man's if the character has none), its columns
-        completed from the design values of running_any (which is the table when neither exists)."""
+        completed from the design values of running_any (which is the table when neither exists);
+        the constants of the character's own table, if it has some."""
         fallback = load("running", "any")
         for name in (character, "man"):
             data = load("running", name)
             if data is not None:
-                return cls(data.get("speeds", fallback["speeds"]), {**fallback["parameters"], **data.get("parameters", {})})
+                return cls(data.get("speeds", fallback["speeds"]), {**fallback["parameters"], **data.get("parameters", {})},
+                           data.get("constants") if name == character else None)
         return cls(fallback["speeds"], fallback["parameters"])
 
+    @classmethod
+    def from_table(cls, table: dict) -> "SpeedTable":
+        """A table as ``to_table`` gives it (a run's ``table`` parameter)."""
+        return cls(table["speeds"], table["parameters"], table.get("constants"))
+
     def to_table(self) -> dict:
-        """The table's speeds and columns as a running table stores them (and a tuner passes a
-        candidate to a run: the ``table`` parameter)."""
-        return {"speeds": list(self.speeds), "parameters": {n: list(v) for n, v in self.values.items()}}
+        """The table's speeds and columns (and its constants, if any) as a running table stores them
+        (and a tuner passes a candidate to a run: the ``table`` parameter)."""
+        table = {"speeds": list(self.speeds), "parameters": {n: list(v) for n, v in self.values.items()}}
+        if self.constants:
+            table["constants"] = dict(self.constants)
+        return table
 
     def with_row(self, speed: float, row: dict[str, float]) -> "SpeedTable":
         """A copy with the values of ``row`` at ``speed`` (a new row if the speed is new; the
@@ -113,7 +127,7 @@ class SpeedTable:
             if v in self.speeds:                   # a stored row's value as it is (interpolating at a
                 return self.values[n][self.speeds.index(v)]     # knot could change it in the last bit)
             return self.at(n, v)
-        return SpeedTable(speeds, {n: [value(n, v) for v in speeds] for n in self.values})
+        return SpeedTable(speeds, {n: [value(n, v) for v in speeds] for n in self.values}, self.constants)
 
     def at(self, name: str, speed: float) -> float:
         """A column's value at the speed: piecewise linear between the rows, held beyond the ends."""
@@ -190,6 +204,7 @@ SETTING_RANGES = Schema(
     constant("start_speed", "m/s", 0.0, 10.0, "forward COM speed at which the lean turns into the first push-off"),
     constant("start_timeout", "s", 0.0, 10.0, "after the lean, the push-off starts at the latest this long whatever the speed"),
     constant("start_stance", "s", 0.0, 5.0, "expected duration of the first (push-off) stance"),
+    constant("start_hip_damping", "1", 0.0, 1.0, "share of the hip's own damping the lean's pitch servo keeps (0: a pure torque on the pelvis)"),
     constant("swing_fold_max", "rad", 0.0, 3.14, "at most this much extra knee flexion of a lagging swing"),
     constant("gsm_retract", "s", 0.0, 1.0, "the swung-forward foot is brought back over this time before the predicted touchdown"),
     constant("idle_forward_thigh", "rad", -3.14, 0.0, "forward angle (from vertical) the idle thigh reaches by the end of stance"),
@@ -280,10 +295,17 @@ class Running(Behaviour):
     )
 
     def check_feasible(self) -> None:
-        """A runner needs its own running table; a ``table`` parameter (a tuner's or a scaled
-        candidate, checked like a stored one) is its own."""
+        """A runner needs its own running table, and runs only at the speeds it covers (the man's:
+        the schema's 2.5-5 m/s); a ``table`` parameter (a tuner's or a scaled candidate, checked
+        like a stored one) is its own."""
         if "table" not in self.params:
-            require_calibrated("running", self.ctx.character.name, self.name)
+            name = self.ctx.character.name
+            require_calibrated("running", name, self.name)
+            speeds = SpeedTable.load(name).speeds
+            speed = self.params["speed"]
+            if not speeds[0] <= speed <= speeds[-1]:
+                raise ParameterError(f"parameter speed={speed:g} m/s is out of range for the {name}; allowed range for "
+                                     f"speed is [{speeds[0]:g}, {speeds[-1]:g}] m/s (the speeds of the {name}'s running table)")
 
     # --------------------------------------------------------------------- setup
     def __init__(self, params, ctx: ControlContext):
@@ -311,11 +333,14 @@ class Running(Behaviour):
         self.kp0 = s.default_kp.copy()
         self.kv0 = s.default_kv.copy()
         self.ratio = (s.default_kv / s.default_kp).tolist()
-        self.table = (SpeedTable(params["table"]["speeds"], params["table"]["parameters"]) if "table" in params
-                      else SpeedTable.load(ch.name))
+        self.table = (SpeedTable.from_table(params["table"]) if "table" in params else SpeedTable.load(ch.name))
         self.scheduled = [n for n in self.table.values if params.get(n, TUNED) == TUNED]
         defaults = RUNNING_SETTINGS.defaults()
-        self.constants = SimpleNamespace(**{n: params.get(n, defaults[n]) for n in CONSTANT_NAMES})
+        # a constant is the request's where it differs from running_any's (the man's) value, else the
+        # character's table's, else running_any's
+        own = self.table.constants
+        self.constants = SimpleNamespace(**{n: own[n] if n in own and params.get(n, defaults[n]) == defaults[n]
+                                            else params.get(n, defaults[n]) for n in CONSTANT_NAMES})
         share = self.constants.stance_hip_share      # stance hip servos are torque-commanded: low kp
         self.stance_hip_gains = {key: (share, share) for key in ("hy", "hx", "hz")}
         self.p = dict(params)
@@ -586,7 +611,11 @@ class Running(Behaviour):
             for jj in self.j:
                 targets[jj["ay"]] = -c.start_ankle_lean * s_
                 targets[jj["knee"]] = c.start_knee * s_
-                targets[jj["hy"]] = q[jj["hy"]] + (pitch - c.start_pitch * s_) + self.kv[jj["hy"]] / self.kp[jj["hy"]] * (qd[jj["hy"]] + pitch_rate)
+                # a torque on the pelvis through the hip servo; start_hip_damping keeps that share of
+                # the hip's own damping (0: none - with the woman's lighter legs the undamped hip
+                # chatters at its torque limit and flings the unloaded leg up, docs/running.md)
+                targets[jj["hy"]] = q[jj["hy"]] + (pitch - c.start_pitch * s_) + self.kv[jj["hy"]] / self.kp[jj["hy"]] * (
+                    qd[jj["hy"]] * (1.0 - c.start_hip_damping) + pitch_rate)
             hy_goal, hx_goal = targets[ja["hy"]], targets[ja["hx"]]
         elif state == FLIGHT:
             hy_goal, hx_goal = self._place_foot(t, p, a, ja, m, pitch, yaw, heading, ch, sh, vx, vy, vz, vxd, vyd)
@@ -674,6 +703,12 @@ class Running(Behaviour):
                 v_ = (targets[j_] - previous[j_]) * rate
                 v_ = c.ff_max if v_ > c.ff_max else -c.ff_max if v_ < -c.ff_max else v_
                 command[j_] += kv[j_] / kp[j_] * v_
+        if state == START and c.start_hip_damping > 0 and ji["hy"] in previous:
+            # in the lean the idle hip's target is the pitch servo's (it moves with the hip angle),
+            # so its lead cancels the hip's damping as well: taken back by the same share
+            v_ = (targets[ji["hy"]] - previous[ji["hy"]]) * rate
+            v_ = c.ff_max if v_ > c.ff_max else -c.ff_max if v_ < -c.ff_max else v_
+            command[ji["hy"]] -= c.start_hip_damping * kv[ji["hy"]] / kp[ji["hy"]] * v_
         self.previous_goal = {j_: targets[j_] for j_ in tracked}
         servos.hold(np.array(command), t)
 

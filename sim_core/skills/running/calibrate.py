@@ -316,6 +316,50 @@ def steering_search(args) -> int:
     return 0
 
 
+def scaled_table(source: str, character: str, speeds: list[float], constants: dict) -> SpeedTable:
+    """``source``'s running table and the constants of the laws (running_any's are the man's),
+    mass-scaled to ``character`` by Fig. 6 (sim_core.adapt.settings; the speeds as velocities, L^1/2);
+    the rows taken at ``speeds`` (interpolated, held at the ends); a value scaled out of its setting's
+    range is held at the range's end; ``constants`` replaces some constants as they are."""
+    from ...adapt.settings import MASS, CharacterPair, scale_columns, scale_settings
+    from ...character.spec import load_character
+    from .behaviour import CONSTANT_NAMES, RUNNING_SETTINGS, RUNNING_TABLE
+
+    def held(name, value):
+        knob = RUNNING_SETTINGS.by_name[name]
+        return min(max(value, knob.minimum), knob.maximum)
+    pair = CharacterPair(load_character(source), load_character(character))
+    table = SpeedTable.load(source)
+    columns = {n: v for n, v in table.values.items() if n in RUNNING_TABLE.settings.by_name}
+    scaled_speeds, scaled = scale_columns(table.speeds, columns, RUNNING_TABLE.settings, pair, MASS)
+    scaled_table = SpeedTable(scaled_speeds, {n: [held(n, x) for x in col] for n, col in scaled.items()})
+    design = {n: RUNNING_SETTINGS.defaults()[n] for n in CONSTANT_NAMES}
+    scaled_constants = {n: held(n, v) for n, v in
+                        scale_settings({**design, **table.constants}, RUNNING_SETTINGS, pair, MASS).items()}
+    unknown = sorted(set(constants) - set(CONSTANT_NAMES))
+    if unknown:
+        raise SystemExit(f"--constants: {', '.join(unknown)} are not constants of the running laws")
+    speeds = sorted(float(v) for v in speeds)
+    return SpeedTable(speeds, {n: [scaled_table.at(n, v) for v in speeds] for n in scaled_table.values},
+                      {**scaled_constants, **{n: float(v) for n, v in constants.items()}})
+
+
+def write_scaled_table(args, argv) -> int:
+    """``--scale-from``: the character's first table, written through the store."""
+    if args.character == args.scale_from:
+        raise SystemExit("--scale-from names the --character itself")
+    table = scaled_table(args.scale_from, args.character, args.speeds, args.constants)
+    path = tuned.save("running", args.character, {
+        **table.to_table(),
+        "note": f"the {args.scale_from}'s rows and the constants of the running laws mass-scaled by Fig. 6 "
+                "(sim_core.adapt.settings), the constants of --constants as given; rows then searched by "
+                "calibrate running (evaluation.per_speed)",
+        "command": "python -m sim_core calibrate running " + " ".join(argv if argv is not None else sys.argv[1:]),
+    }, strengths=["human"], directory=args.tables)
+    print(f"wrote {path}")
+    return 0
+
+
 def main(argv=None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--character", default="man")
@@ -357,7 +401,15 @@ def main(argv=None) -> int:
     ap.add_argument("--log", help="append each evaluation (row, score, runs) as a JSON line to this file")
     ap.add_argument("--steering", action="store_true",
                     help="search the steering constants on a 90-degree turn and a figure eight (CMA-ES; prints them)")
+    ap.add_argument("--scale-from", metavar="CHARACTER",
+                    help="write the --character's first table (at --speeds) and stop: CHARACTER's rows and the constants "
+                         "of the running laws, mass-scaled to the --character by Fig. 6 (sim_core.adapt); --constants "
+                         "sets some constants instead")
+    ap.add_argument("--constants", type=json.loads, default={},
+                    help="with --scale-from: JSON {name: value}, constants of the laws written as they are")
     args = ap.parse_args(argv)
+    if args.scale_from:
+        return write_scaled_table(args, argv)
     if not 0.0 < args.sigma <= 0.5:
         ap.error(f"--sigma {args.sigma:g} must be in (0, 0.5] (a share of each column's range)")
     if args.steering:
@@ -422,7 +474,8 @@ def main(argv=None) -> int:
     values = {n: list(table.values[n]) for n in COLUMNS}
     elapsed = time.monotonic() - started
     path = tuned.save("running", args.character, {
-        "speeds": speeds, "parameters": values,
+        "speeds": speeds, "parameters": values, **({"constants": table.constants} if table.constants else {}),
+        **({"note": stored["note"]} if "note" in stored else {}),
         "evaluation": {"weights": {"fall": W_FALL, "speed": W_SPEED, "speed_beyond_band": W_BAND,
                                    "speed_band": BAND, "head_acceleration": W_HEAD,
                                    "attitude_variation": W_ATT, "gait_fig12": W_GAIT,
