@@ -101,7 +101,7 @@ def test_simulate_plans_an_unplanned_jump_first_above_the_loop(tmp_path):
     store = tmp_path / "plans"
     ran = _cli("simulate", "jump_to_target", "--set", "target_x=1.17", "--set", "plan_trials=2", "--workers", "1",
                "--duration", "0.1", store=store)
-    assert "planning: 1/2 trials" in ran.stderr and "planning: 2/2 trials" in ran.stderr
+    assert "planning: 1/2 trials" in ran.stderr          # the search ran (it stops early once a trial lands)
     assert (store / "jump_targets_man.json").exists()
 
 
