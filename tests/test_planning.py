@@ -17,6 +17,7 @@ from sim_core.skills.jump_to_target.behaviour import GROUND_AIR_TIME, stored_pla
 
 ROOT = Path(__file__).resolve().parents[1]
 UNPLANNED = {"target_x": 1.17, "air_time": GROUND_AIR_TIME}     # no shipped plan has this request
+SLOW_TO_PLAN = {**UNPLANNED, "target_y": 0.3}     # no shipped plan is near it: its search runs on for many trials
 WINDUP_TIME = 1.25
 
 
@@ -136,7 +137,7 @@ def test_cancel_mid_plan_raises_within_a_second_and_writes_nothing():
         return time.monotonic() - started > 1.2
 
     with pytest.raises(Cancelled):
-        plan_and_store("man", UNPLANNED, budget=50, cancelled=cancelled)
+        plan_and_store("man", SLOW_TO_PLAN, budget=50, cancelled=cancelled)
     late = time.monotonic() - (started + 1.2)
     print(f"cancel landed {late:.2f} s after cancelled() turned true")
     assert late < 1.0
@@ -148,7 +149,7 @@ def test_cancel_with_a_process_pool_also_lands_within_a_second():
     from sim_core.tuning import LocalPool
     started = time.monotonic()
     with pytest.raises(Cancelled), LocalPool(2) as pool:
-        plan_and_store("man", UNPLANNED, budget=50, executor=pool, cancelled=lambda: time.monotonic() - started > 1.2)
+        plan_and_store("man", SLOW_TO_PLAN, budget=50, executor=pool, cancelled=lambda: time.monotonic() - started > 1.2)
     assert time.monotonic() - started - 1.2 < 1.0
     assert not user_plans_path("man").exists()
 

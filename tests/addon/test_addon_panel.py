@@ -146,7 +146,8 @@ def test_plan_jump_cancelled_like_esc_ends_within_a_second_and_writes_nothing(em
     bpy.ops.sim_athletics.add_character(character="man")
     settings = context.scene.sim_athletics
     settings.behaviour = "jump_to_target"
-    settings.params_jump_to_target.target_x = 1.17                # no plan stored for this jump
+    settings.params_jump_to_target.target_x = 1.17                # no plan stored near this jump
+    settings.params_jump_to_target.target_y = 0.3
     settings.params_jump_to_target.plan_trials = 40
     actions = set(bpy.data.actions.keys())
     job = operators.planning_job(context)

@@ -12,7 +12,7 @@ from blender_addon.core.jobs import PlanningJob, cancelled_error, stored_jump_pl
 from blender_addon.core.simcore import SIM_CORE
 from sim_core.skills import behaviour_class
 
-UNPLANNED = {"target_x": 1.17, "target_y": 0.0, "plan_trials": 40}     # a jump no table has a plan for
+UNPLANNED = {"target_x": 1.17, "target_y": 0.3, "plan_trials": 40}     # a jump no table has a plan near
 
 
 def test_vendored_wheels_are_appended_after_the_interpreters_own(tmp_path, monkeypatch):
