@@ -163,7 +163,8 @@ def plan_jump(character: str, target, air_time: float, windup_time: float, stren
         prior = found[1] if found else fallback
     else:
         prior = search_start(character, target, previous, strength) or fallback
-    prior = {**prior, **(start or {})}
+    if start:      # settings as a plan stores them: a knob they do not name is its default, as when the plan runs
+        prior = {**prior, **KNOB_DEFAULTS, **start}
     first = {n: min(max(float(prior.get(n, fallback[n])), lo), hi) for n, (lo, hi) in space.bounds().items()}
     seed = _stable_seed(target, air_time, windup_time) + 7919 * restart
     executor = executor or SerialExecutor()
