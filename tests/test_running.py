@@ -390,3 +390,11 @@ def test_the_woman_runs_a_random_speed_of_her_range():
           f"{m['gait']['mean_speed']:.3f} m/s")
     assert not_fallen(traj), f"fell at {m['fall_time']:.1f} s"
     assert abs(m["gait"]["mean_speed"] - speed) <= SPEED_TOLERANCE * speed
+
+
+@pytest.mark.parametrize("values", [{"course": "turn"}, {"facing": 1.0}, {"path": [[0, 0], [5, 0], [10, 5]]}])
+def test_the_woman_is_refused_a_turn_in_one_line(values):
+    """She runs straight ahead only: a turn, another facing or a path is refused before anything runs."""
+    with pytest.raises(ParameterError) as error:
+        run(RunRequest("running", "woman", params={"speed": 3.0, **values}, duration=0.05))
+    assert "\n" not in str(error.value) and "straight ahead" in str(error.value)

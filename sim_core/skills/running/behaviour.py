@@ -77,6 +77,8 @@ STATE_NAMES = ("flight", "loading", "heel", "heel_toe", "toe", "unloading", "sta
 TUNED = -1.0                # the value of a tuned parameter that means "as tuned for the running speed"
 
 
+STEERED_RUNNERS = ("man",)      # criterion: the runners measured to turn, follow a path and face another way
+
 class SpeedTable:
     """Tuned values of some parameters as functions of the running speed (piecewise linear,
     held constant beyond the ends): Hodgins et al. tune the thrust timing "30-50 % depending on
@@ -306,6 +308,13 @@ class Running(Behaviour):
             if not speeds[0] <= speed <= speeds[-1]:
                 raise ParameterError(f"parameter speed={speed:g} m/s is out of range for the {name}; allowed range for "
                                      f"speed is [{speeds[0]:g}, {speeds[-1]:g}] m/s (the speeds of the {name}'s running table)")
+            turning = ("path" in self.params or Running.schema.by_name["course"].option(self.params["course"]) != "straight"
+                       or self.params["facing"] != 0.0)
+            if turning and name not in STEERED_RUNNERS:
+                raise ParameterError(f"the {name} runs only straight ahead (course=straight, facing=0, no path): turning "
+                                     f"is calibrated for {', '.join(STEERED_RUNNERS)} only (the woman fell 1.6 s into "
+                                     f"a run at facing=1 and 4.1 s into the turn, circle and figure-eight courses at "
+                                     f"3 m/s; docs/running.md, the woman)")
 
     # --------------------------------------------------------------------- setup
     def __init__(self, params, ctx: ControlContext):
