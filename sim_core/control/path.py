@@ -137,6 +137,10 @@ class PathFollower:
         """The point ``distance`` metres along the path from the closest point (the path's end
         beyond its last point)."""
         k, s, _ = self.advance(x, y)
+        return self._along(k, s, distance)
+
+    def _along(self, k: int, s: float, distance: float) -> tuple[float, float]:
+        """The point ``distance`` metres on from parameter ``s`` of segment ``k``."""
         remaining = distance + s * self.lengths[k]
         last = len(self.points) - 2
         while k < last and remaining > self.lengths[k]:
@@ -149,7 +153,8 @@ class PathFollower:
     def curvature_ahead(self, x: float, y: float, distance: float, chord: float = CURVATURE_CHORD) -> float:
         """The path's curvature (1/m, left turns positive) ``distance`` metres ahead: that of the
         circle through the points ``chord`` before, at and after it."""
-        (ax, ay), (bx, by), (cx, cy) = (self.ahead(x, y, max(distance + d, 0.0)) for d in (-chord, 0.0, chord))
+        k, s, _ = self.advance(x, y)
+        (ax, ay), (bx, by), (cx, cy) = (self._along(k, s, max(distance + d, 0.0)) for d in (-chord, 0.0, chord))
         cross = (bx - ax) * (cy - ay) - (by - ay) * (cx - ax)
         sides = math.hypot(bx - ax, by - ay) * math.hypot(cx - bx, cy - by) * math.hypot(cx - ax, cy - ay)
         return 2.0 * cross / sides if sides > 0.0 else 0.0
