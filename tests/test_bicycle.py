@@ -183,9 +183,12 @@ def test_a_curve_ahead_asks_for_its_steady_lean():
     """A left arc of radius 15 m read ahead: curvature 1/15, and the lean asked for is left (roll
     < 0) with tan = v^2 kappa / g times the share; a straight asks for none."""
     from sim_core.control.path import PathFollower, turn_path
-    follower = PathFollower(turn_path(math.pi / 2, 10.0, 15.0, 20.0), 2.0)
-    assert follower.curvature_ahead(0.0, 0.0, 2.0) == pytest.approx(0.0, abs=1e-9)
-    assert follower.curvature_ahead(15.0, 3.0, 2.0) == pytest.approx(1 / 15, rel=0.02)
+    path = turn_path(math.pi / 2, 10.0, 15.0, 20.0)
+    assert PathFollower(path, 2.0).curvature_ahead(0.0, 0.0, 2.0) == pytest.approx(0.0, abs=1e-9)
+    on_the_arc = PathFollower(path, 2.0)       # a follower tracks its rider: it looks a few segments on per call
+    for x in np.linspace(0.0, 15.0, 16):
+        on_the_arc.advance(x, 0.0 if x <= 10.0 else 15.0 - math.sqrt(225.0 - (x - 10.0) ** 2))
+    assert on_the_arc.curvature_ahead(15.0, 15.0 - math.sqrt(200.0), 2.0) == pytest.approx(1 / 15, rel=0.02)
     assert lean_ahead(4.0, 1 / 15, 1.0) == pytest.approx(-math.atan(16 / 15 / 9.80665))
     assert lean_ahead(4.0, -1 / 15, 0.3) == pytest.approx(0.3 * math.atan(16 / 15 / 9.80665))
     assert fork_angle(0.0, 0.0, 0.0, 0.0, 0.0, 2.0, 0.4, 0.6, 0.3, desired_roll=-0.1) < 0   # lean left: first steer right
