@@ -60,7 +60,8 @@ speed or ``{"4.83": {name: value}, ...}``.
 
 The searches are the search service's (sim_core.tuning: SciPy's annealing or CMA-ES, in the
 columns scaled to [0, 1] by their ranges). Each evaluation runs its scenarios in a pool of
-``--workers`` processes (default one per CPU). A search runs at most ``--max-evaluations``
+``--workers`` processes (default one per CPU), or on a Dask distributed cluster (``--cluster ADDRESS``,
+the scheduler's address; sim_core.tuning.ClusterExecutor). A search runs at most ``--max-evaluations``
 evaluations and is time-boxed by ``--minutes``; the best point found is written only if it
 scores better than the current defaults, together with both scores, the evaluation's weights
 and the search settings (the file is written atomically: never half-written).
@@ -291,7 +292,7 @@ def steering_search(args) -> int:
     x0 = np.array([Running.schema.by_name[n].default for n in names], dtype=float)
     speed = 3.5
     history = []
-    with executor_for(args.workers) as pool:
+    with executor_for(args.workers, args.cluster) as pool:
         def evaluate(x) -> float:
             values = dict(zip(names, map(float, x)))
             terms = pool.map(steering_scenario, [(values, c, d, speed) for c, d in STEERING_COURSES])
@@ -371,6 +372,9 @@ def main(argv=None) -> int:
     ap.add_argument("--method", choices=("anneal", "cma"), default="anneal")
     ap.add_argument("--workers", type=int, default=None, help="processes running an evaluation's runs (default: one "
                     "per CPU)")
+    ap.add_argument("--cluster", metavar="ADDRESS",
+                    help="run the evaluations' runs on the Dask distributed cluster whose scheduler is at ADDRESS "
+                         "(e.g. tcp://10.0.0.5:8786; its workers need this project installed) instead of --workers")
     ap.add_argument("--names", nargs="+", default=list(TUNED_NAMES), choices=list(COLUMNS),
                     help="parameters searched (default the five of Hodgins & Pollard; the table has three more, "
                          "and the scheduled constants of the stance and swing laws)")
@@ -425,7 +429,7 @@ def main(argv=None) -> int:
     started = time.monotonic()
     per_speed = {}          # this search's rows' records, merged into the file's when it is written
     new_values = {}
-    with executor_for(args.workers) as pool:
+    with executor_for(args.workers, args.cluster) as pool:
         groups = [tuple(args.speeds)] if args.joint else [(v,) for v in args.speeds]
         for k, rows in enumerate(groups):
             speed = rows[0] if len(rows) == 1 else list(rows)
