@@ -9,6 +9,10 @@ outside it). Each figure is the best of ``repeats`` runs, interleaved.
 ``scene_bench`` does the same for a scene of several runners side by side in one model: the
 scene loop (every actor's behaviour, servos and recording) against raw ``mj_step`` of the same
 many-actor model.
+
+``search_bench`` measures a search's throughput: the running search's evaluation runs (runs from
+a stand, sim_core.skills.running.calibrate.scenario) handed to a pool of 1 and of 2 local worker
+processes in the same run, interleaved, as evaluations per minute and their ratio.
 """
 from __future__ import annotations
 
@@ -86,3 +90,32 @@ def scene_bench(count: int = 4, duration: float = 5.0, repeats: int = 3) -> dict
             "outcomes": {a["name"]: a["outcome"] for a in trajectory.meta["actors"]},
             "scene_loop_sim_s_per_wall_s": loop_rate, "raw_mj_step_sim_s_per_wall_s": raw_rate,
             "ratio": loop_rate / raw_rate}
+
+
+def search_bench(runs: int = 4, duration: float = 4.0, workers=(1, 2), repeats: int = 2) -> dict:
+    """Evaluations per minute of the running search (an evaluation: its two runs from a stand, one
+    per start lean, ``duration`` s each, of the man's stored table at 3.5 m/s) through a local pool
+    of each size in ``workers``; ``runs`` runs a batch; best of ``repeats`` batches, interleaved.
+    The pools are started (and their workers' imports warmed) before the clock."""
+    from .skills.running.behaviour import SpeedTable
+    from .skills.running.calibrate import scenario
+    from .tuning import LocalPool
+    table = SpeedTable.load("man").to_table()
+    leans = (0.35, 0.5)
+    jobs = [(table, 3.5, leans[k % 2], duration, "man", "human", None) for k in range(runs)]
+    pools = {n: LocalPool(n) for n in workers}
+    best = {n: float("inf") for n in workers}
+    try:
+        for pool in pools.values():
+            pool.map(scenario, [(table, 3.5, leans[0], 0.1, "man", "human", None)] * pool.workers)
+        for _ in range(repeats):
+            for n, pool in pools.items():
+                start = time.perf_counter()
+                pool.map(scenario, jobs)
+                best[n] = min(best[n], time.perf_counter() - start)
+    finally:
+        for pool in pools.values():
+            pool.shutdown()
+    per_minute = {n: 60.0 * runs / len(leans) / best[n] for n in workers}
+    return {"evaluation": f"{len(leans)} runs of {duration:g} s", "evaluations_per_minute": per_minute,
+            "speedup": per_minute[workers[-1]] / per_minute[workers[0]]}

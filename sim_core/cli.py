@@ -197,6 +197,13 @@ def cmd_bench(args) -> int:
         print(f"scene of {args.scene_actors} runners: {scene['scene_loop_sim_s_per_wall_s']:.2f} sim s / wall s, raw "
               f"mj_step of the same model {scene['raw_mj_step_sim_s_per_wall_s']:.2f}, ratio {scene['ratio']:.3f}")
         print(json.dumps(scene))
+    if args.search_runs:
+        from .bench import search_bench
+        search = search_bench(runs=args.search_runs, repeats=args.repeats)
+        rates = ", ".join(f"{n} worker{'s' if n > 1 else ''} {r:.1f}" for n, r in search["evaluations_per_minute"].items())
+        print(f"running search ({search['evaluation']} an evaluation), evaluations per minute: {rates}; "
+              f"speed-up {search['speedup']:.2f} (goal >= 1.8)")
+        print(json.dumps(search))
     return 0
 
 
@@ -313,6 +320,8 @@ def parser() -> argparse.ArgumentParser:
     b.add_argument("--repeats", type=int, default=5)
     b.add_argument("--scene-actors", type=int, default=4, help="runners in the scene benchmark (0 = none)")
     b.add_argument("--scene-duration", default="5", help="seconds simulated in the scene benchmark")
+    b.add_argument("--search-runs", type=int, default=0,
+                   help="runs of the running search timed through 1 and 2 local worker processes (0 = none)")
     b.set_defaults(func=cmd_bench)
     for part, text in (("calibrate", "run a skill's calibration: it searches by simulation and writes the skill's table"),
                        ("report", "run a skill's report (or 'report random': random requests across skills): it simulates and writes under docs/")):
