@@ -18,7 +18,7 @@ import numpy as np
 
 from .behaviour import Behaviour, ControlContext
 from .crouch import CrouchTable, arm_reach
-from .measure import SupportGeometry
+from .measure import SupportGeometry, compliant_boxes, over_a_box
 from .servo import hermite_scalar
 from ..errors import ParameterError
 from ..schema import Parameter, Schema
@@ -127,9 +127,10 @@ class Balance(Behaviour):
                   "twists the body; the hips turn the trunk against it while the feet are down"),
         Parameter("stagger_kp", "rad/rad", 1.0, 0.0, 10.0,
                   "hip pitch offset, opposite on the two legs, per radian that the line between the feet has "
-                  "turned in the feet's heading frame since the balance started (0 = not servoed): the hips "
-                  "hold the pelvis square to the feet; on a soft mat the feet twist and, without it, the body "
-                  "slowly turns over them and falls"),
+                  "turned in the feet's heading frame since the balance started, while the feet stand on ground "
+                  "that gives (the landing mat; 0 = not servoed): the hips hold the pelvis square to the feet; on "
+                  "the soft mat the feet twist and, without it, the body slowly turns over them and falls (on a "
+                  "rigid floor the feet's grip holds them)"),
         Parameter("height_kp", "rad/m", 10.0, 0.0, 20.0,
                   "pelvis height servo: knee offset per metre of height error (corrects servo sag)"),
     )
@@ -163,6 +164,7 @@ class Balance(Behaviour):
         self._targets_key, self._targets = None, None
         self._lean = 0.0
         self._stagger = 0.0
+        self.soft_ground = compliant_boxes(m)
         # ankle offset that puts the centre of pressure at the front (toe) / back (heel) edge
         weight_per_foot = 0.5 * self.total_mass * float(np.linalg.norm(m.opt.gravity))
         ankle = ch.joint_position("FOOTR")
@@ -369,10 +371,12 @@ class Balance(Behaviour):
         ratio = self.damping_ratio
         heading_kp, spin_kp = self.params["heading_kp"], self.params["spin_kp"]
         spin = spin_kp * float(d.subtree_angmom[self.pelvis][2]) if spin_kp else 0.0
-        # the hips hold the pelvis square to the feet: with the hips' and ankles' pitch servos both
-        # following the measured angles, nothing else holds the legs' scissor - on a rigid floor the
-        # feet's friction does; on a soft mat the feet twist in it and the body turns over them
-        square = self.params["stagger_kp"] * (self.feet_stagger() - self._stagger)
+        # the hips hold the pelvis square to the feet where the ground gives: with the hips' and
+        # ankles' pitch servos both following the measured angles, nothing else holds the legs'
+        # scissor - on a rigid floor the feet's grip does; on a soft mat the feet twist in it and
+        # the body turns over them
+        square = (self.params["stagger_kp"] * (self.feet_stagger() - self._stagger)
+                  if self.soft_ground and over_a_box(pts, self.soft_ground) else 0.0)
         for k in (0, 1):
             j = idx[k]
             f = d.xmat[self.feet[k]].tolist()          # row-major 3x3: columns are the foot axes
