@@ -67,19 +67,21 @@ def test_the_trajectory_records_the_board_horse_and_mat_forces(vault):
 
 
 def test_table_1_rows_and_their_impulse_momentum_consistency(vault):
-    """Every row is measured; all but four are inside Takei's range (the four just outside are
-    listed in docs/vault.md); each contact's mean vertical force (integral F_z dt / T) agrees with
+    """Every row is measured; all but three are inside Takei's range (the three outside and why are
+    in docs/vault.md); each contact's mean vertical force (integral F_z dt / T) agrees with
     m (dv_z / T + g) within 5 % (TARGETS.md V4); in flight the horizontal velocity is kept (board
-    liftoff = horse touchdown)."""
+    liftoff = horse touchdown; the hurdle's run-up speed at the board touchdown: a touchdown is read
+    before the impact)."""
     measured = table_1(vault)
     rows = measured["rows"]
     print(format_table_1(vault))
     assert all(rows[name] is not None for name, *_ in TABLE_1)
     outside = [name for name, _, _, lo, hi, _ in TABLE_1 if not lo <= rows[name] <= hi]
-    assert outside == ["horse contact", "vx horse touchdown", "vx horse liftoff", "vz board liftoff"], outside
+    assert outside == ["horse contact", "vx horse liftoff", "vz board liftoff"], outside
     for contact in ("board", "horse"):
         assert measured["impulse_momentum"][contact]["relative_difference"] < 0.05, contact
-    assert rows["vx board liftoff"] == pytest.approx(rows["vx horse touchdown"], abs=0.1)
+    assert rows["vx board liftoff"] == pytest.approx(rows["vx horse touchdown"], abs=0.02)
+    assert rows["vx board touchdown"] == pytest.approx(vault.meta["params"]["runup_speed"], abs=1e-3)
 
 
 def test_she_turns_over_the_horse_and_lands_feet_first_softly(vault):
