@@ -5,8 +5,9 @@ import numpy as np
 import pytest
 
 from sim_core.world import World
+from sim_core.world import apparatus
 from sim_core.skills.balance.experiments import backpack_stands, push_recovered, slope_holds
-from sim_core.simulate import RunRequest, run
+from sim_core.simulate import RunRequest, StartState, run
 
 KNEE_BEND = {"man": 0.52, "woman": 0.47}          # TARGETS.md: pelvis to 0.52 m / 0.47 m
 
@@ -111,3 +112,24 @@ def test_slope_is_a_logged_gravity_ramp():
     rows = traj.arrays["edit_field"] == field
     assert rows.sum() > 10                       # changed step by step, never in one jump
     assert balanced(traj)
+
+
+def test_on_the_soft_mat_the_hips_hold_the_body_square_to_the_feet():
+    """The woman standing on the landing mat: with the hips' stagger servo she does not turn over
+    her feet (pelvis yaw within 0.01 rad) and stands the 12 s; without it (stagger_kp=0) the feet
+    twist in the soft contact, the body turns over them and she falls (at 10.5 s)."""
+    mat = World(landing_mat=(0.0, 0.0, 3.0, 2.0, apparatus.LANDING_MAT_THICKNESS))
+
+    def stand(stagger_kp):
+        traj = run(RunRequest("balance", "woman", params=dict(stagger_kp=stagger_kp), duration=12.0, world=mat,
+                              start=StartState(height=apparatus.LANDING_MAT_THICKNESS)))
+        pelvis = traj.body_names.index("PELVIS")
+        q = traj.arrays["body_quat"][:, pelvis]
+        yaw = float(np.abs(2 * np.arctan2(q[:, 3], q[:, 0])).max())
+        height = traj.arrays["body_pos"][:, pelvis, 2]
+        return yaw, float(height[0] - height.min())
+    yaw, drop = stand(1.0)
+    free_yaw, free_drop = stand(0.0)
+    print(f"largest pelvis yaw {yaw:.4f} rad, pelvis drop {drop:.3f} m; without the servo {free_yaw:.2f} rad, {free_drop:.2f} m")
+    assert yaw < 0.01 and drop < 0.1
+    assert free_drop > 0.3

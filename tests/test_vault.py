@@ -3,7 +3,8 @@ the six states in order, contact forces with the board, the horse and the mat in
 Table 1's rows with their impulse-momentum check, feet first on the mat, no force but gravity,
 contacts and servos, replay bit for bit, and the refusal of a run-up speed it does not handle.
 
-She ends standing balanced (the outcome "success")."""
+She ends standing balanced (the outcome "success"): the gesture, the bow without a step, and she stands
+until the run ends. One run of the whole script (12.4 s) serves all but the run-up speed tests."""
 import math
 
 import numpy as np
@@ -12,25 +13,25 @@ import pytest
 from sim_core.errors import ParameterError
 from sim_core.simulate import RunRequest, largest_difference, replay, run
 from sim_core.skills.vault.behaviour import CONSTANTS
-from sim_core.skills.vault.report import (BALANCED_TIME, PEAK_LANDING_LIMIT, ROTATION_TOLERANCE, TABLE_1,
-                                          format_table_1, table_1)
+from sim_core.skills.vault.report import (BALANCED_TIME, BOW_BODIES, NO_STEP, PEAK_LANDING_LIMIT,
+                                          ROTATION_TOLERANCE, TABLE_1, format_table_1, table_1, trunk_pitch)
 from sim_core.world.apparatus import BOARD_TOP
 
 STATES = ["hurdle", "board", "first_flight", "horse", "second_flight", "landing", "absorb", "rise", "balance",
-          "gesture"]
-GESTURE_END = 6.0            # s: the gesture is over (4.43-5.93 s)
+          "gesture", "bow", "stand"]
+BOW_REACHED = 0.1            # rad: the trunk's pitch comes within this of the bow's
 
 
 @pytest.fixture(scope="module")
 def vault():
-    """The vault to the gesture: 6 s."""
-    return run(RunRequest("vault", "woman", duration=GESTURE_END))
-
-
-@pytest.fixture(scope="module")
-def whole():
-    """The whole script at the default duration: it ends when the gesture is over."""
+    """The whole script at the default duration: it ends final_stand after the bow."""
     return run(RunRequest("vault", "woman"))
+
+
+def _at(trajectory, state: str) -> int:
+    """The frame at which the state starts."""
+    when = next(t for t, name in trajectory.meta["phase_events"] if name == state)
+    return int(np.searchsorted(trajectory.arrays["time"], when - 1e-9))
 
 
 def test_the_vault_starts_in_the_seeds_hurdle_flight(vault):
@@ -66,19 +67,21 @@ def test_the_trajectory_records_the_board_horse_and_mat_forces(vault):
 
 
 def test_table_1_rows_and_their_impulse_momentum_consistency(vault):
-    """Every row is measured; all but four are inside Takei's range (the four just outside are
-    listed in docs/vault.md); each contact's mean vertical force (integral F_z dt / T) agrees with
+    """Every row is measured; all but three are inside Takei's range (the three outside and why are
+    in docs/vault.md); each contact's mean vertical force (integral F_z dt / T) agrees with
     m (dv_z / T + g) within 5 % (TARGETS.md V4); in flight the horizontal velocity is kept (board
-    liftoff = horse touchdown)."""
+    liftoff = horse touchdown; the hurdle's run-up speed at the board touchdown: a touchdown is read
+    before the impact)."""
     measured = table_1(vault)
     rows = measured["rows"]
     print(format_table_1(vault))
     assert all(rows[name] is not None for name, *_ in TABLE_1)
     outside = [name for name, _, _, lo, hi, _ in TABLE_1 if not lo <= rows[name] <= hi]
-    assert outside == ["horse contact", "vx horse touchdown", "vx horse liftoff", "vz board liftoff"], outside
+    assert outside == ["horse contact", "vx horse liftoff", "vz board liftoff"], outside
     for contact in ("board", "horse"):
         assert measured["impulse_momentum"][contact]["relative_difference"] < 0.05, contact
-    assert rows["vx board liftoff"] == pytest.approx(rows["vx horse touchdown"], abs=0.1)
+    assert rows["vx board liftoff"] == pytest.approx(rows["vx horse touchdown"], abs=0.02)
+    assert rows["vx board touchdown"] == pytest.approx(vault.meta["params"]["runup_speed"], abs=1e-3)
 
 
 def test_she_turns_over_the_horse_and_lands_feet_first_softly(vault):
@@ -140,7 +143,8 @@ def test_the_vault_replays_bit_for_bit(vault):
 @pytest.mark.parametrize("speed", [6.6, 6.9])
 def test_inside_the_handled_speeds_she_gets_over_and_lands_feet_first(speed):
     """The handled run-up speeds (vault_any.json's handled_speed) each get her over the horse onto
-    her feet, turned to within 1 rad of upright (she falls after, as at 6.75 m/s)."""
+    her feet, turned to within 1 rad of upright (only at 6.75 m/s does she stay up after: at 6.6 and
+    6.9 m/s she falls in the landing, docs/vault.md)."""
     m = run(RunRequest("vault", "woman", params={"runup_speed": speed}, duration=2.0)).meta["metrics"]
     assert set(m["phases"]) == {"board", "horse", "mat"} and m["feet_first"]
     assert 2 * math.pi - 1.0 < m["rotation_at_touchdown"] < 2 * math.pi + 0.5
@@ -186,11 +190,43 @@ def test_the_gesture_is_made_standing(vault):
     assert right[during].max() > 2.0 and -left[during].min() > 2.0
 
 
-def test_the_run_ends_standing_when_the_gesture_is_over(whole):
-    """The default duration asks for more than the script: the run ends after the gesture, standing
-    (the seed's bow is not offered; ~4 s after she stood up the balance on the mat tips her forward)."""
-    assert whole.meta["ended_early"] and whole.meta["phase_events"][-1][1] != "bow_down"
-    assert whole.meta["outcome"] == "success", (whole.meta["outcome"], whole.meta["metrics"]["fall_time"])
+def test_the_run_ends_standing_after_the_bow(vault):
+    """The default duration asks for more than the script: the run ends final_stand after the bow,
+    with her standing balanced from when the balance stood her up to the end (she used to tip
+    forward ~4 s after standing up)."""
+    meta, a = vault.meta, vault.arrays
+    assert meta["ended_early"] and meta["phase_events"][-1][1] != "bow"
+    assert meta["outcome"] == "success", (meta["outcome"], meta["metrics"]["fall_time"])
+    stand = next(t for t, name in meta["phase_events"] if name == "stand")
+    assert a["time"][-1] - stand >= CONSTANTS.final_stand - 0.02
+    up = _at(vault, "gesture")
+    assert meta["metrics"]["balanced_time_at_end"] >= a["time"][-1] - a["time"][up], meta["metrics"]["balanced_time_at_end"]
+
+
+def test_the_bow_is_taken_without_a_step(vault):
+    """The bow: the trunk pitches forward to the bow's pitch (within 0.1 rad) and comes back upright,
+    the hips go back as the trunk goes forward, the COM stays over the feet, and no foot moves more
+    than 2 cm from the bow's start to the end of the run."""
+    a = vault.arrays
+    names = vault.body_names
+    bow, stand = _at(vault, "bow"), _at(vault, "stand")
+    trunk = trunk_pitch(vault)
+    deepest = bow + int(np.argmax(trunk[bow:stand]))
+    print(f"trunk pitch {trunk[bow]:.3f} rad at the bow's start, {trunk[deepest]:.3f} at its deepest "
+          f"(t = {a['time'][deepest]:.2f} s), {trunk[-1]:.3f} at the end")
+    assert abs(trunk[deepest] - CONSTANTS.bow_pitch) < BOW_REACHED, trunk[deepest]
+    assert abs(trunk[-1]) < BOW_REACHED, trunk[-1]
+    feet = a["body_pos"][bow:, [names.index(n) for n in BOW_BODIES], :]
+    moved = float(np.linalg.norm(feet - feet[0], axis=2).max())
+    print(f"the feet move at most {100 * moved:.2f} cm from the bow's start to the end")
+    assert moved < NO_STEP, moved
+    hips = a["body_pos"][:, [names.index("ULEGR"), names.index("ULEGL")], 0].mean(axis=1)
+    middle = a["support_points"][:, :, 0].mean(axis=1)
+    assert (hips - middle)[deepest] < (hips - middle)[bow] - 0.05        # the hips back
+    lo, hi = a["support_points"][bow:, :, :2].min(axis=1), a["support_points"][bow:, :, :2].max(axis=1)
+    assert ((a["com"][bow:, :2] >= lo) & (a["com"][bow:, :2] <= hi)).all()
+    m = vault.meta["metrics"]                        # the outcome's figures are these
+    assert m["bow_trunk_pitch"] == pytest.approx(trunk[deepest]) and m["bow_feet_moved"] == pytest.approx(moved)
 
 
 def test_one_somersault_and_she_ends_standing_balanced(vault):

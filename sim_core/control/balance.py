@@ -18,7 +18,7 @@ import numpy as np
 
 from .behaviour import Behaviour, ControlContext
 from .crouch import CrouchTable, arm_reach
-from .measure import SupportGeometry
+from .measure import SupportGeometry, compliant_boxes, over_a_box
 from .servo import hermite_scalar
 from ..errors import ParameterError
 from ..schema import Parameter, Schema
@@ -125,6 +125,12 @@ class Balance(Behaviour):
                   "hip rotation offset per kg m²/s of the whole body's angular momentum about the vertical "
                   "(0 = not servoed): a sideways lean pushes at the forefeet, ahead of the COM, which "
                   "twists the body; the hips turn the trunk against it while the feet are down"),
+        Parameter("stagger_kp", "rad/rad", 1.0, 0.0, 10.0,
+                  "hip pitch offset, opposite on the two legs, per radian that the line between the feet has "
+                  "turned in the feet's heading frame since the balance started, while the feet stand on ground "
+                  "that gives (the landing mat; 0 = not servoed): the hips hold the pelvis square to the feet; on "
+                  "the soft mat the feet twist and, without it, the body slowly turns over them and falls (on a "
+                  "rigid floor the feet's grip holds them)"),
         Parameter("height_kp", "rad/m", 10.0, 0.0, 20.0,
                   "pelvis height servo: knee offset per metre of height error (corrects servo sag)"),
     )
@@ -157,6 +163,8 @@ class Balance(Behaviour):
                            for side in "rl"]
         self._targets_key, self._targets = None, None
         self._lean = 0.0
+        self._stagger = 0.0
+        self.soft_ground = compliant_boxes(m)
         # ankle offset that puts the centre of pressure at the front (toe) / back (heel) edge
         weight_per_foot = 0.5 * self.total_mass * float(np.linalg.norm(m.opt.gravity))
         ankle = ch.joint_position("FOOTR")
@@ -256,11 +264,23 @@ class Balance(Behaviour):
         com = d.subtree_com[self.pelvis]
         return float(along[0] * com[0] + along[1] * com[1] - 0.5 * (p.min() + p.max()))
 
+    def feet_stagger(self) -> float:
+        """The angle of the line from the right ankle to the left one in the feet's heading frame
+        (their mean yaw; 0: side by side, + the left foot ahead): it changes when the feet twist in
+        place (on a soft mat), not when the pelvis turns over still feet (the heading servo's)."""
+        d = self.ctx.data
+        right, left = d.xmat[self.feet[0]], d.xmat[self.feet[1]]
+        yaw = math.atan2(right[3] + left[3], right[0] + left[0])
+        dx, dy = (d.xpos[self.feet[1]] - d.xpos[self.feet[0]])[:2].tolist()
+        c, s = math.cos(yaw), math.sin(yaw)
+        return math.atan2(c * dx + s * dy, -s * dx + c * dy)
+
     def posture_reached(self, t: float) -> bool:
         return t - self.t0 >= self.params["move_start"] + self.params["move_time"]
 
     def start(self, t: float) -> None:
         self.t0 = t
+        self._stagger = self.feet_stagger()
         goal = self.params["pelvis_height"] or self.stand_height
         low = min(goal, self.initial_posture()[0])
         heights = np.linspace(low, self.stand_height, CROUCH_TABLE_ROWS) if low < self.stand_height else [goal]
@@ -351,6 +371,12 @@ class Balance(Behaviour):
         ratio = self.damping_ratio
         heading_kp, spin_kp = self.params["heading_kp"], self.params["spin_kp"]
         spin = spin_kp * float(d.subtree_angmom[self.pelvis][2]) if spin_kp else 0.0
+        # the hips hold the pelvis square to the feet where the ground gives: with the hips' and
+        # ankles' pitch servos both following the measured angles, nothing else holds the legs'
+        # scissor - on a rigid floor the feet's grip does; on a soft mat the feet twist in it and
+        # the body turns over them
+        square = (self.params["stagger_kp"] * (self.feet_stagger() - self._stagger)
+                  if self.soft_ground and over_a_box(pts, self.soft_ground) else 0.0)
         for k in (0, 1):
             j = idx[k]
             f = d.xmat[self.feet[k]].tolist()          # row-major 3x3: columns are the foot axes
@@ -374,7 +400,7 @@ class Balance(Behaviour):
             offset[ax] = -delta_y + ratio[ax] * (velocities[ax] - roll_rate)
             # hips hold the pelvis attitude, plus half the ankle offset (eqs. 7.1-7.2)
             targets[hy] = angles[hy] + (pelvis_pitch - pelvis_pitch_goal)
-            offset[hy] = hip_x
+            offset[hy] = hip_x - square if k == 0 else hip_x + square
             offset[hx] = CONSTANTS.hip_share * delta_y
             if heading_kp or spin_kp:
                 heading_error = math.remainder(yaw - math.atan2(f[3], f[0]), math.tau) if heading_kp else 0.0

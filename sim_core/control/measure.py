@@ -56,6 +56,23 @@ def boxes_of(model: mujoco.MjModel) -> tuple:
                                 if mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_GEOM, name) >= 0)
 
 
+def compliant_boxes(model: mujoco.MjModel) -> tuple:
+    """The fixed apparatus one stands on that gives under the feet (the landing mat): those whose
+    contact impedance at the surface (solimp's first value, used for their contacts by priority) is
+    below the ground's; as boxes_of's (x, y, top height, length, width)."""
+    ground = float(model.geom_solimp[model.geom("ground").id][0])
+    return tuple(_box(model, name) for name in STANDING_APPARATUS
+                 if mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_GEOM, name) >= 0
+                 and float(model.geom_solimp[model.geom(name).id][0]) < ground)
+
+
+def over_a_box(points: np.ndarray, boxes) -> bool:
+    """Whether any of the points (n, 3 or 2) is over the footprint of one of the boxes."""
+    points = np.asarray(points)
+    return any(bool(((np.abs(points[:, 0] - x) <= length / 2) & (np.abs(points[:, 1] - y) <= width / 2)).any())
+               for x, y, _, length, width in boxes)
+
+
 def _box(model: mujoco.MjModel, name: str) -> tuple:
     geom = model.geom(name)
     (x, y, z), (hx, hy, hz) = model.geom_pos[geom.id], model.geom_size[geom.id]

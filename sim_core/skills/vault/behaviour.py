@@ -19,10 +19,11 @@
                 body over the hands.
 5. second flight - a layout (straight body, arms overhead), the feet a little apart, and when the
                 body has nearly turned upright the landing's leg placement (control/leap.py Landing).
-6. landing    - on the mat: knees and waist absorb (Landing), then the balance controller. (The
-                seed's switch when the COM passes over the feet's centre, and the gesture (the run ends
-                there; the seed's bow is not offered: she falls in it)
-                are not built: she falls in the landing, docs/vault.md.)
+6. landing    - on the mat: knees and waist absorb (Landing, MatAbsorb) until the COM is over the
+                feet's middle and slow (the seed's switch), the legs straighten (MatRise), then the
+                balance controller stands her up; the gesture (arms thrown up and back), the bow
+                (the balance pitches the torso forward and back, the COM kept over the feet), and she
+                stands until the run ends (docs/vault.md).
 
 Nothing but gravity, the contacts (board, horse, mat) and the joint servos moves her. The settings
 per character come from ``sim_core/tuned/tables/vault_<character>.json`` and the shared design values
@@ -72,6 +73,10 @@ VAULT_CONSTANTS = Schema(
     constant("gesture", "rad", 0.0, 3.2, "the gesture of success: both arms thrown up and back by this much shoulder flexion"),
     constant("gesture_time", "s", 0.1, 5.0, "the arms' move into the gesture, and back"),
     constant("gesture_hold", "s", 0.0, 5.0, "the gesture is held this long"),
+    constant("bow_pitch", "rad", 0.0, 1.5, "the bow: the balance pitches the torso this far forward ([A] 164) ..."),
+    constant("bow_time", "s", 0.2, 5.0, "... in this time, and back up in the same time"),
+    constant("bow_hold", "s", 0.0, 5.0, "the bow is held this long at its deepest"),
+    constant("final_stand", "s", 0.0, 30.0, "after the bow she stands this long, and the run ends"),
 )
 CONSTANTS = read_constants("vault", VAULT_CONSTANTS)
 
@@ -381,8 +386,8 @@ class Vault(Sequence):
     name = "vault"
     world_frame = True             # the apparatus stands along +X from the origin
     summary = ("Handspring vault (Hodgins et al. 1995): hurdle, springboard, first flight (eq. 12), hands on the "
-               "horse, layout second flight, landing on the mat, balance.")
-    default_duration = 8.0             # longer than the whole script: the run ends when the gesture is over
+               "horse, layout second flight, landing on the mat, balance, the gesture and the bow.")
+    default_duration = 14.0            # longer than the whole script: the run ends final_stand after the bow
     settings_schema = VAULT_SETTINGS
     schema = SkillSchema(
         Parameter("runup_speed", "m/s", 6.75, 0.0, 12.0,
@@ -551,19 +556,33 @@ class Vault(Sequence):
             Step("rise", lambda t: MatRise(ctx, c, self.previous.landing), lambda b, t: b.finished),
             Step("balance", lambda t: self.stand_up(),
                  lambda b, t: b.posture_reached(t) and t - b.t0 >= c["stand_time"] + CONSTANTS.stand_settle),
-            Step("gesture", lambda t: ArmGesture(ctx, self.previous)),
+            Step("gesture", lambda t: ArmGesture(ctx, self.previous),
+                 lambda b, t: b.finished),
+            Step("bow", lambda t: self.bow(), lambda b, t: b.posture_back(t)),
+            Step("stand", lambda t: self.rebalance(move_start=0.0, return_to_stand=0)),
         ]
 
     @property
     def run_complete(self) -> bool:
-        """The run ends when the gesture is over. The seed's bow is not offered: ~4 s after she
-        stood up, the balance on the soft mat tips her forward, bow or not (docs/vault.md)."""
-        return getattr(self, "script", None) is not None and self.step_name == "gesture" and self.current.finished
+        """The run ends when she has stood ``final_stand`` after the bow."""
+        return (getattr(self, "script", None) is not None and self.step_name == "stand"
+                and self.ctx.data.time - self.current.t0 >= CONSTANTS.final_stand)
 
     def stand_up(self) -> Behaviour:
         """The balance from the landed crouch, standing up over ``stand_time`` (rebalance)."""
         self.landing = self.previous.landing                  # the rise's landing
         return self.rebalance(move_time=self.cfg["stand_time"], com_offset_x=self.cfg["stand_com_offset"])
+
+    def bow(self) -> Balance:
+        """The bow ([A] 164): the balance that stands her moves the torso bow_pitch forward over
+        bow_time, holds it bow_hold, and comes back up; its COM servo keeps the COM over the feet
+        (the ankles take the hips back as the trunk goes forward). The gesture's arm offsets are
+        back at zero; they are cleared."""
+        self.ctx.servos.offset[self.ctx.servos.indices(["shoulder_r_z", "shoulder_l_z"])] = 0.0
+        balance = self.rebalance(torso_pitch=CONSTANTS.bow_pitch, move_start=0.0, move_time=CONSTANTS.bow_time,
+                                 hold_time=CONSTANTS.bow_hold, return_to_stand=1)
+        balance.posture_back = lambda t: t - balance.t0 >= 2 * CONSTANTS.bow_time + CONSTANTS.bow_hold
+        return balance
 
     def rebalance(self, **params) -> Balance:
         """A balance (balance_after_landing: from the height the legs' length names) that starts

@@ -26,6 +26,8 @@ SHIN_BODIES = ("LLEGR", "LLEGL")  # the lower legs (their body origin is the kne
 KNEELING_HEIGHT = 0.15            # m: a knee this low above the mat is a kneel
 FALLEN_PELVIS = 0.35              # m: the pelvis this low above the mat after the landing is a fall
 BALANCED_TIME = 2.0               # s: standing balanced at least this long at the end (TARGETS.md V7, ours)
+NO_STEP = 0.02                    # m: in the bow no foot moves more than this (issue 31: the bow without a step)
+BOW_BODIES = ("FOOTR", "FOOTL", "TOER", "TOEL")
 
 # Table 1 of Hodgins et al. 1995 ([A] 208-230): (row, unit, Takei mean, min, max, the 1995 simulation)
 TABLE_1 = (
@@ -91,7 +93,10 @@ def vault_phases(trajectory) -> dict:
 
 def table_1(trajectory) -> dict:
     """Table 1's rows measured off the run (a row is None where its phase did not happen), and
-    per contact the impulse-momentum check: the mean vertical force m (dv_z / T + g)."""
+    per contact the impulse-momentum check: the mean vertical force m (dv_z / T + g). A touchdown
+    velocity is the COM's at the last frame before the contact (the first contact frame already
+    holds up to a frame of the impact: the board took 0.063 m/s off vx in it, the horse 0.063); a
+    liftoff velocity the COM's at the first frame after it."""
     a, meta = trajectory.arrays, trajectory.meta
     t, v = a["time"], a["com_vel"]
     mass = float(meta["total_mass"])
@@ -102,7 +107,7 @@ def table_1(trajectory) -> dict:
     if "board" in ph:
         i, j = ph["board"]
         rows["board contact"] = float(t[j] - t[i]) if j < len(t) else None
-        rows["vx board touchdown"], rows["vz board touchdown"] = float(v[i, 0]), float(v[i, 2])
+        rows["vx board touchdown"], rows["vz board touchdown"] = float(v[i - 1, 0]), float(v[i - 1, 2])
         if j < len(t):
             rows["vx board liftoff"], rows["vz board liftoff"] = float(v[j, 0]), float(v[j, 2])
     for name, key, geom in (("board", "board", "springboard"), ("horse", "horse", "vault_table")):
@@ -120,13 +125,41 @@ def table_1(trajectory) -> dict:
     if "horse" in ph:
         i, j = ph["horse"]
         rows["first flight"] = float(t[i] - t[ph["board"][1]])
-        rows["vx horse touchdown"], rows["vz horse touchdown"] = float(v[i, 0]), float(v[i, 2])
+        rows["vx horse touchdown"], rows["vz horse touchdown"] = float(v[i - 1, 0]), float(v[i - 1, 2])
         if j < len(t):
             rows["horse contact"] = float(t[j] - t[i])
             rows["vx horse liftoff"], rows["vz horse liftoff"] = float(v[j, 0]), float(v[j, 2])
     if "mat" in ph:
         rows["second flight"] = float(t[ph["mat"][0]] - t[ph["horse"][1]])
     return {"rows": rows, "impulse_momentum": checks, "mass": mass}
+
+
+def trunk_pitch(trajectory) -> np.ndarray:
+    """Per frame: the trunk's forward pitch from vertical (rad), the line from the pelvis to the
+    upper chest (CHEST1)."""
+    names = list(trajectory.arrays["body_names"])
+    pos = trajectory.arrays["body_pos"]
+    axis = pos[:, names.index("CHEST1")] - pos[:, names.index("PELVIS")]
+    return np.arctan2(axis[:, 0], axis[:, 2])
+
+
+def bow_measured(trajectory) -> dict:
+    """The bow, from its start (the "bow" event) to the end of the run: the trunk's pitch at the
+    start, deepest and at the end, and how far the feet (the foot and toe bodies) moved at most;
+    {} when the run has no bow."""
+    a = trajectory.arrays
+    t = a["time"]
+    when = [time for time, name in trajectory.meta.get("phase_events", []) if name == "bow"]
+    if not when:
+        return {}
+    first = int(np.searchsorted(t, when[0] - 1e-9))
+    pitch = trunk_pitch(trajectory)[first:]
+    names = list(a["body_names"])
+    feet = a["body_pos"][first:, [names.index(n) for n in BOW_BODIES]]
+    return {"bow_start": float(t[first]), "bow_trunk_pitch_start": float(pitch[0]),
+            "bow_trunk_pitch": float(pitch.max()), "bow_deepest_time": float(t[first + int(np.argmax(pitch))]),
+            "bow_trunk_pitch_end": float(pitch[-1]),
+            "bow_feet_moved": float(np.linalg.norm(feet - feet[0], axis=2).max())}
 
 
 def vault_assess(trajectory) -> tuple[str, dict]:
@@ -204,6 +237,7 @@ def vault_assess(trajectory) -> tuple[str, dict]:
     settled = int(np.searchsorted(t[first:], t[first] + 0.5))
     metrics["landing_slide_after_settle"] = float(np.linalg.norm(middle[settled:] - middle[min(settled, len(middle) - 1)],
                                                                  axis=1).max()) if settled < len(middle) else 0.0
+    metrics.update(bow_measured(trajectory))
     if metrics["fell"]:
         return "fell", metrics
     if not metrics["feet_first"]:
@@ -216,6 +250,8 @@ def vault_assess(trajectory) -> tuple[str, dict]:
         return "hard_landing", metrics
     if metrics["balanced_time_at_end"] < BALANCED_TIME or metrics["final_com_speed"] >= STILL_SPEED:
         return "not_balanced", metrics
+    if metrics.get("bow_feet_moved", 0.0) > NO_STEP:
+        return "stepped_in_bow", metrics
     return "success", metrics
 
 
@@ -263,4 +299,9 @@ def main(argv=None) -> int:
           f"{metrics.get('balanced_time_at_end', 0.0):.2f} s; the palms at the horse touchdown "
           f"{', '.join(f'{x:.0f}' for x in metrics.get('palm_angle_at_horse_deg', []))} deg from palm-down; the elbows "
           f"bent at most {', '.join(f'{x:.0f}' for x in metrics.get('elbow_bend_on_horse_deg', []))} deg on the horse")
+    if "bow_start" in metrics:
+        print(f"the bow from {metrics['bow_start']:.2f} s: the trunk pitched {metrics['bow_trunk_pitch_start']:.3f} -> "
+              f"{metrics['bow_trunk_pitch']:.3f} rad (at {metrics['bow_deepest_time']:.2f} s) -> "
+              f"{metrics['bow_trunk_pitch_end']:.3f} rad at the end ({trajectory.arrays['time'][-1]:.2f} s); the feet moved "
+              f"at most {100 * metrics['bow_feet_moved']:.2f} cm")
     return 0
