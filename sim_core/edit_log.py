@@ -1,13 +1,14 @@
 """The replay log of everything a run changed besides the state: model parameters the controller
 set (servo gains, gravity of a tilting ground), the applied push forces and the equality
-constraints switched on or off (a rider's foot let go of its pedal). Each edit is
+constraints switched on or off (a rider's foot let go of its pedal) and joint friction (a bicycle's
+rim brakes). Each edit is
 (tick, field, flat index, value); replay re-applies them before the same tick's physics steps."""
 from __future__ import annotations
 
 import numpy as np
 
 # Model/data arrays a run may edit, by name. Replay looks them up with getattr.
-EDITABLE_FIELDS = ("actuator_gainprm", "actuator_biasprm", "opt.gravity", "push_force", "eq_active")
+EDITABLE_FIELDS = ("actuator_gainprm", "actuator_biasprm", "opt.gravity", "push_force", "eq_active", "dof_frictionloss")
 
 
 class EditLog:

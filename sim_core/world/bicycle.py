@@ -24,11 +24,11 @@ steering angle is positive to the left.
   crank drives the wheel forward, and when the wheel overruns the crank it is slack. It has no
   control (gain 0) and no position term, so it re-engages at any crank angle, as a ratchet with
   many pawls does; under drive it slips by torque / FREEWHEEL_DAMPING (4 % of the cadence at 4 m/s).
-* Brakes (``Bicycle.brakes``): "bicycle_brake_front" and "bicycle_brake_rear", one on each wheel
-  hinge (front wheel against the fork, rear wheel against the frame): a rim brake as a damper
-  ``tau = -BRAKE_DAMPING * lever * omega`` held within +-``BRAKE_MAX_TORQUE``; the lever (0-1) is the
-  rider's control, logged with the servos' controls. Near a standstill it is viscous, so the wheel
-  stops without a stick-slip switch.
+* Rim brakes: dry friction on each wheel hinge (front wheel against the fork, rear wheel against
+  the frame), MuJoCo's joint ``frictionloss``, at most ``BRAKE_MAX_TORQUE``: the rider sets it
+  (sim_core.skills.bicycle, the stop) through the run's edit log, so a replay brakes at the same
+  ticks. Dry friction holds the bicycle at rest, as a squeezed brake does (a damper let it creep
+  backwards 2-5 cm/s under the rider leaning on his foot, and fall).
 * Rolling resistance proportional to speed ([A] 120): hinge damping on both wheels,
   ``tau = -b omega`` with ``b = (c/2) r^2`` so that the ground force of the two wheels is ``c v``.
 * Wheels: cylinders ``TYRE_WIDTH`` wide touching the ground by contact only (no joint to the
@@ -93,7 +93,6 @@ FREEWHEEL_DAMPING = 50.0        # N m s / rad of rear-wheel slip. Stiffer is not
                                 # 50 / 100 / 200 / 5000, the fixed gear's 11.1 s); under a 25 N m drive it
                                 # slips 0.5 rad/s (4 % of the cadence at 4 m/s)
 FREEWHEEL_MAX_FORCE = 1000.0    # N m: the clutch's largest torque on the wheel (never reached)
-BRAKE_DAMPING = 400.0           # N m s / rad at full lever: saturates above 0.15 rad/s (5 cm/s) of wheel spin
 BRAKE_MAX_TORQUE = 60.0         # N m per wheel: both at once decelerate rider and bicycle (114 kg) by 3.2 m/s^2,
                                 # a hard stop on a city bike (rim brakes: 2-4 m/s^2, Wilson 2004 ch. 7)
 CRANK_ARMATURE = 0.02           # kg m^2: drivetrain inertia (chainring, chain) about the crank axle
@@ -104,8 +103,7 @@ TYRE_COLOUR = [0.1, 0.1, 0.1, 1.0]
 NAMES = dict(frame="bicycle_frame", fork="bicycle_fork", front="bicycle_front_wheel",
              rear="bicycle_rear_wheel", crank="bicycle_crank", free="bicycle_free",
              steer="bicycle_steer", front_spin="bicycle_front_spin", rear_spin="bicycle_rear_spin",
-             crank_spin="bicycle_crank_spin", chain="bicycle_chain", freewheel="bicycle_freewheel",
-             brake_front="bicycle_brake_front", brake_rear="bicycle_brake_rear")
+             crank_spin="bicycle_crank_spin", chain="bicycle_chain", freewheel="bicycle_freewheel")
 WHEEL_BODIES = (NAMES["front"], NAMES["rear"])
 
 
@@ -128,18 +126,17 @@ class Bicycle:
     """What a run asks of the bicycle prop: the gear ratio (wheel turns per crank turn), where
     the bicycle stands (rear contact at (x, y), facing ``heading`` rad from +X) and the prefix of
     the rider attached to it (None: riderless); ``freewheel``: the chain drives through a freewheel
-    instead of the fixed gear; ``brakes``: rim brakes on both wheels, worked by the rider's controls."""
+    instead of the fixed gear."""
     gear: float = DEFAULT_GEAR
     x: float = 0.0
     y: float = 0.0
     heading: float = 0.0
     rider: str | None = None
     freewheel: bool = False
-    brakes: bool = False
 
     def to_dict(self) -> dict:
         return {"gear": self.gear, "x": self.x, "y": self.y, "heading": self.heading, "rider": self.rider,
-                "freewheel": self.freewheel, "brakes": self.brakes}
+                "freewheel": self.freewheel}
 
 
 @dataclass(frozen=True)
@@ -272,10 +269,6 @@ def add_bicycle(spec: mujoco.MjSpec, bicycle: Bicycle, contact_group: int) -> No
     if bicycle.freewheel:       # a one-way viscous clutch on the chain: F = -b dL/dt, only while F <= 0 (driving)
         _bicycle_actuator(spec, n["freewheel"], mujoco.mjtTrn.mjTRN_TENDON, n["chain"], gain=(0.0, 0.0, 0.0),
                           bias=(0.0, 0.0, -FREEWHEEL_DAMPING), force=(-FREEWHEEL_MAX_FORCE, 0.0))
-    if bicycle.brakes:          # rim brakes: tau = -b lever omega within +-max, on each wheel's hinge
-        for name, joint in ((n["brake_front"], n["front_spin"]), (n["brake_rear"], n["rear_spin"])):
-            _bicycle_actuator(spec, name, mujoco.mjtTrn.mjTRN_JOINT, joint, gain=(0.0, 0.0, -BRAKE_DAMPING),
-                              bias=(0.0, 0.0, 0.0), force=(-BRAKE_MAX_TORQUE, BRAKE_MAX_TORQUE))
     spec.add_exclude(bodyname1=n["frame"], bodyname2=n["front"])
     spec.add_exclude(bodyname1=n["fork"], bodyname2=n["crank"])
     spec.add_exclude(bodyname1=n["front"], bodyname2=n["crank"])
@@ -285,7 +278,8 @@ def add_bicycle(spec: mujoco.MjSpec, bicycle: Bicycle, contact_group: int) -> No
 def _bicycle_actuator(spec: mujoco.MjSpec, name: str, trntype, target: str, gain, bias, force) -> None:
     """A bicycle-internal element as a MuJoCo actuator (force = gain(velocity) * control + bias(length,
     velocity), clamped to ``force``): its transmission is a bicycle joint or the chain, so it acts
-    between two bicycle bodies only; its control, a lever in 0-1, is logged with the servos'."""
+    between two bicycle bodies only; its control column is logged with the servos' (the freewheel
+    has no control: gain 0)."""
     a = spec.add_actuator(name=name, trntype=trntype, target=target)
     a.gaintype = mujoco.mjtGain.mjGAIN_AFFINE
     a.biastype = mujoco.mjtBias.mjBIAS_AFFINE
