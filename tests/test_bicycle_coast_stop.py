@@ -127,6 +127,7 @@ def test_a_stop_ends_at_rest_on_the_left_foot(stop):
     assert m["stopped_at"] is not None and m["stand_seconds"] >= 4.0
     assert m["stand_drift"] < 0.1 and -20.0 < m["stand_final_roll_deg"] < 0.0
     assert m["stop_plant_speed"] < 0.5
+    assert m["max_hand_gap"] < 0.03 and m["max_foot_gap"] < 0.03 and m["max_seat_gap"] < 0.001   # the left foot until let go
     model = mujoco.MjModel.from_xml_string(trajectory.meta["model_xml"])
     touching = trajectory.arrays["ground_contact"][-1]
     names = [model.body(b).name for b in range(1, model.nbody)]

@@ -68,6 +68,9 @@ def ride_metrics(trajectory) -> dict:
     end = len(t) if fall_frame is None else fall_frame
     last10 = (t >= t[end - 1] - 10.0) & (np.arange(len(t)) < end)     # criterion: TARGETS.md's mean speed of the last 10 s
     gaps = attachment_gaps(model, a["qpos"][:end])
+    released = [when for when, name in meta["phase_events"] if name == "foot_off_pedal"]
+    if released:                             # the left foot let go of its pedal: its gap is no longer a stretch
+        gaps[np.searchsorted(t[:end], released[0]) + 1:, 5] = 0.0
     desired = yaw[0] + meta["params"]["heading"]
     error = np.degrees(np.abs(yaw[:end] - desired))
     outside = np.nonzero(error > HEADING_TOLERANCE_DEG)[0]

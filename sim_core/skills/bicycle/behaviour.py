@@ -79,6 +79,7 @@ BICYCLE_RANGES = Schema(
     Parameter("fork_straighten_rate", "rad/s", 0.0, 0.0, 5.0, "stop: once the foot is down the arms turn the fork straight at this rate"),
     Parameter("stand_roll", "rad", -0.5, -0.5, 0.0, "stop: the roll (left down) the planted leg holds the bicycle at"),
     Parameter("knee_roll_gain", "1", 0.0, 0.0, 20.0, "stop: the planted knee straightens this many rad per rad the bicycle leans beyond stand_roll"),
+    Parameter("knee_roll_integral_gain", "1/s", 0.0, 0.0, 20.0, "stop: and this many rad per rad s of roll beyond stand_roll (the lean does not creep)"),
     Parameter("knee_roll_rate_gain", "s", 0.0, 0.0, 5.0, "stop: and this many rad per rad/s of roll rate towards the foot"),
     Parameter("ankle_mean", "rad", -0.7, -0.7, 0.87, "ankle curve: mean plantarflexion over a crank turn"),
     Parameter("ankle_swing", "rad", 0.0, 0.0, 0.5, "ankle curve: half its range"),
@@ -236,6 +237,7 @@ class Bicycling(Behaviour):
         self.stopping = self.course.stop        # braking to a stop (the stop course; a coast that got too slow)
         self.foot_down = None               # stop: (time the foot left its pedal, where it left it, the ground point)
         self.planted = None                 # stop: the left leg's servo targets once the foot is on the ground
+        self.knee_integral = 0.0            # stop: the planted knee's integral term (rad)
         self.foot_site = model.site(ctx.actor.prefix + "rider_foot_l").id
         self.foot_eq = model.equality(ctx.actor.prefix + "attach_foot_l").id
         left_leg = ("hip_l_y", "hip_l_x", "hip_l_z", "knee_l_y")
@@ -344,7 +346,9 @@ class Bicycling(Behaviour):
         if self.planted is not None:
             goal[self.left_leg_servos] = self.planted
             state = self.bike.state(ctx.data)
-            knee = self.planted[KNEE] + c["knee_roll_gain"] * (state["roll"] - c["stand_roll"]) + c["knee_roll_rate_gain"] * state["roll_rate"]
+            error = state["roll"] - c["stand_roll"]
+            self.knee_integral += c["knee_roll_integral_gain"] * error * ctx.control_dt
+            knee = self.planted[KNEE] + c["knee_roll_gain"] * error + self.knee_integral + c["knee_roll_rate_gain"] * state["roll_rate"]
             goal[self.left_leg_servos[KNEE]] = max(knee, 0.0)
         else:
             start_time, start, ground = self.foot_down
