@@ -80,7 +80,8 @@ def ride_metrics(trajectory) -> dict:
     last5 = (t >= t[end - 1] - 5.0) & (np.arange(len(t)) < end)     # criterion: the mean speed and cadence reported over the last 5 s
     gear = float(model.wrap_prm[model.tendon_adr[model.tendon(NAMES["chain"]).id]])
     rear = model.jnt_qposadr[model.joint(NAMES["rear_spin"]).id]
-    stretch = gear * a["qpos"][:end, crank] - a["qpos"][:end, rear]
+    driven = end if course.coast_from is None else min(end, int(np.searchsorted(t, course.coast_from)) + 1)
+    stretch = gear * a["qpos"][:driven, crank] - a["qpos"][:driven, rear]     # a freewheel's slack is no stretch
     crank_rate = a["qvel"][:end, model.jnt_dofadr[model.joint(NAMES["crank_spin"]).id]]
     metrics = {
         "fell": fall_frame is not None,

@@ -17,7 +17,11 @@ Control, every tick (laws.py for the equations):
     crank instead of braking it);
   * steering: eq. 11 gives the fork angle; inverse kinematics puts the hands on the grips of a
     fork turned to it; the arms' servos steer the bicycle through the hand springs ([A] 142);
-  * waist, neck and wrists hold their mounted angles ([A] 144).
+  * waist, neck and wrists hold their mounted angles ([A] 144);
+  * coasting (the coast and stop courses, a freewheel bicycle): eq. 7 off, the legs turn the cranks
+    level and hold them; stopping: eq. 7's braking torque to the rim brakes (joint friction set
+    through the edit log), the left foot let go of its pedal below foot_release_speed and put down
+    beside the bicycle, its knee propping the lean (docs/bicycle.md, the stop).
 """
 from __future__ import annotations
 
@@ -72,7 +76,7 @@ BICYCLE_RANGES = Schema(
     Parameter("front_brake_share", "1", 0.0, 0.0, 1.0, "stop: share of the braking torque asked of the front brake"),
     Parameter("stop_lean", "rad", 0.0, 0.0, 0.4, "stop: eq. 11's desired roll towards the foot that goes down (left) while braking"),
     Parameter("foot_release_speed", "m/s", 0.0, 0.0, 3.0, "stop: below this speed the left foot leaves its pedal and the brakes stop the bicycle"),
-    Parameter("foot_out", "m", 0.0, 0.0, 0.8, "stop: the left foot is put down this far left of the bicycle's mid-plane"),
+    Parameter("foot_out", "m", 0.0, 0.0, 0.8, "stop: the left foot is put down this far left of the wheels' contact line"),
     Parameter("foot_ahead", "m", -0.5, -0.5, 0.5, "stop: and this far ahead of the left hip"),
     Parameter("foot_swing_time", "s", 0.05, 0.05, 2.0, "stop: time to move the foot from its pedal to the ground point"),
     Parameter("foot_ankle", "rad", -0.7, -0.7, 0.87, "stop: the left ankle's plantarflexion while the foot goes down (toes first)"),
@@ -306,8 +310,8 @@ class Bicycling(Behaviour):
 
     def _release_foot(self, t) -> None:
         """The left foot leaves its pedal (its attachment switched off through the edit log, so a
-        replay switches it off at the same tick) for a ground point foot_out left of the bicycle's
-        mid-plane and foot_ahead ahead of the left hip."""
+        replay switches it off at the same tick) for a ground point foot_out left of the wheels'
+        contact line and foot_ahead ahead of the left hip."""
         data, bike = self.ctx.data, self.bike
         active = data.eq_active.copy()
         active[self.foot_eq] = 0
@@ -335,10 +339,10 @@ class Bicycling(Behaviour):
     def _left_leg_goal(self, t, goal: np.ndarray) -> None:
         """The released left leg: inverse kinematics of the foot's sole to a point moving from where
         it left the pedal out to above the ground point (in half foot_swing_time) and down to it (in
-        foot_swing_time), toes a little down (foot_ankle); the point is far enough out that the leg
-        reaches it straight only once the bicycle leans onto it. Once the foot touches the ground the
-        hip's targets stay where they are and the knee's goes straight: the leg is a column against
-        the knee's stop that the bicycle leans on."""
+        foot_swing_time), toes a little down (foot_ankle). Once the foot touches the ground the
+        hip's targets stay where they are and the knee props the lean: its target straightens with
+        the roll beyond stand_roll (proportional, integral and roll-rate terms: the leg pushes the
+        bicycle back up as it leans further onto the foot)."""
         ctx, servos, c = self.ctx, self.ctx.servos, self.params
         if self.planted is None and self._foot_on_ground():
             self.planted = servos.angles()[self.left_leg_servos].copy()
