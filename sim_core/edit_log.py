@@ -1,12 +1,14 @@
 """The replay log of everything a run changed besides the state: model parameters the controller
-set (servo gains, gravity of a tilting ground) and the applied push forces. Each edit is
+set (servo gains, gravity of a tilting ground), the applied push forces and the equality
+constraints switched on or off (a rider's foot let go of its pedal) and joint friction (a bicycle's
+rim brakes). Each edit is
 (tick, field, flat index, value); replay re-applies them before the same tick's physics steps."""
 from __future__ import annotations
 
 import numpy as np
 
 # Model/data arrays a run may edit, by name. Replay looks them up with getattr.
-EDITABLE_FIELDS = ("actuator_gainprm", "actuator_biasprm", "opt.gravity", "push_force")
+EDITABLE_FIELDS = ("actuator_gainprm", "actuator_biasprm", "opt.gravity", "push_force", "eq_active", "dof_frictionloss")
 
 
 class EditLog:
@@ -59,6 +61,8 @@ def resolve_field(model, data, field: str) -> np.ndarray:
         return model.opt.gravity
     if field == "push_force":                    # the pushes' forces (sim_core.perturbation)
         return applied_forces(data)
+    if field == "eq_active":                     # equality constraints on or off (mjData: part of the state)
+        return data.eq_active
     return getattr(model, field)
 
 

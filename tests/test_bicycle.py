@@ -113,21 +113,37 @@ def test_rides_straight_at_4_m_s(straight_ride):
     assert m["max_hand_gap"] < 0.03 and m["max_foot_gap"] < 0.03 and m["max_seat_gap"] < 0.001
 
 
-def test_only_gravity_contacts_servos_and_body_to_body_attachments_act(straight_ride):
+def audit(trajectory):
     """The physical-validity audit: no applied force anywhere; every equality constraint joins a
-    rider body to a bicycle body (none is anchored to the world); the bicycle has no actuator."""
-    a, meta = straight_ride.arrays, straight_ride.meta
+    rider body to a bicycle body (none is anchored to the world); every actuator is a rider servo
+    or a bicycle-internal element (a freewheel on the chain, a rim brake on a wheel hinge) whose
+    transmission joins two bicycle bodies; the chain tendon spans bicycle joints only."""
+    a, meta = trajectory.arrays, trajectory.meta
     assert not np.any(a["push_force"])
     model = mujoco.MjModel.from_xml_string(meta["model_xml"])
     bike = {model.body(n).id for n in ("bicycle_frame", "bicycle_fork", "bicycle_crank")}
+    frame = model.body("bicycle_frame").id
     rider_root = model.body("PELVIS").id
     assert model.neq == 6
     for e in range(model.neq):
         assert model.eq_type[e] == mujoco.mjtEq.mjEQ_CONNECT and model.eq_objtype[e] == mujoco.mjtObj.mjOBJ_SITE
         b1, b2 = model.site_bodyid[model.eq_obj1id[e]], model.site_bodyid[model.eq_obj2id[e]]
         assert model.body_rootid[b1] == rider_root and b2 in bike
-    assert all(model.body_rootid[model.jnt_bodyid[model.actuator_trnid[i, 0]]] == rider_root for i in range(model.nu))
-    assert model.ntendon == 1 and model.tendon_stiffness[0] > 0        # the chain: passive spring
+    assert model.ntendon == 1 and model.tendon(0).name == "bicycle_chain"
+    chain_joints = model.wrap_objid[model.tendon_adr[0]:model.tendon_adr[0] + model.tendon_num[0]]
+    assert all(model.body_rootid[model.jnt_bodyid[j]] == frame for j in chain_joints)
+    for i in range(model.nu):
+        if model.actuator_trntype[i] == mujoco.mjtTrn.mjTRN_TENDON:     # the freewheel, on the chain
+            assert model.actuator(i).name == "bicycle_freewheel" and model.actuator_trnid[i, 0] == 0
+            continue
+        root = model.body_rootid[model.jnt_bodyid[model.actuator_trnid[i, 0]]]
+        assert root == rider_root or (root == frame and model.actuator(i).name.startswith("bicycle_brake"))
+    if not any(model.actuator(i).name == "bicycle_freewheel" for i in range(model.nu)):
+        assert model.tendon_stiffness[0] > 0                          # the fixed gear: a passive spring
+
+
+def test_only_gravity_contacts_servos_and_body_to_body_attachments_act(straight_ride):
+    audit(straight_ride)
 
 
 def test_replay_of_a_ride_is_bit_identical(straight_ride):

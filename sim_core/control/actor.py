@@ -30,7 +30,8 @@ class ActorView:
         root = int(model.jnt_bodyid[joint])
         body_ids = np.nonzero(model.body_rootid == root)[0]
         joints = np.nonzero(np.isin(model.jnt_bodyid, body_ids))[0]
-        actuators = np.nonzero(np.isin(model.actuator_trnid[:, 0], joints))[0]
+        actuators = np.nonzero((model.actuator_trntype == mujoco.mjtTrn.mjTRN_JOINT)       # its servos, not a prop's
+                               & np.isin(model.actuator_trnid[:, 0], joints))[0]                 # tendon-driven element
         sites = np.nonzero(np.isin(model.site_bodyid, body_ids))[0]
         last = joints[-1]
         return cls(model, prefix, root, _span(body_ids),

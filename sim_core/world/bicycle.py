@@ -18,6 +18,17 @@ steering angle is positive to the left.
   ``tau = -k L - b dL/dt`` times the moment arms (g on the crank, -1 on the wheel), i.e.
   ``tau_rear = k(g theta_c - theta_r) + b(...)`` and ``-g`` times that on the crank, the seed's
   reading. ``g`` is wheel turns per crank turn.
+* Freewheel (``Bicycle.freewheel``, the coast and stop courses): the chain is the same tendon, but
+  it carries no spring; the actuator "bicycle_freewheel" on it is a one-way viscous clutch,
+  ``F = -FREEWHEEL_DAMPING dL/dt`` held to the driving sign (MuJoCo's force range ``[-max, 0]``): the
+  crank drives the wheel forward, and when the wheel overruns the crank it is slack. It has no
+  control (gain 0) and no position term, so it re-engages at any crank angle, as a ratchet with
+  many pawls does; under drive it slips by torque / FREEWHEEL_DAMPING (4 % of the cadence at 4 m/s).
+* Rim brakes: dry friction on each wheel hinge (front wheel against the fork, rear wheel against
+  the frame), MuJoCo's joint ``frictionloss``, at most ``BRAKE_MAX_TORQUE``: the rider sets it
+  (sim_core.skills.bicycle, the stop) through the run's edit log, so a replay brakes at the same
+  ticks. Dry friction holds the bicycle at rest, as a squeezed brake does (a damper let it creep
+  backwards 2-5 cm/s under the rider leaning on his foot, and fall).
 * Rolling resistance proportional to speed ([A] 120): hinge damping on both wheels,
   ``tau = -b omega`` with ``b = (c/2) r^2`` so that the ground force of the two wheels is ``c v``.
 * Wheels: cylinders ``TYRE_WIDTH`` wide touching the ground by contact only (no joint to the
@@ -76,6 +87,14 @@ CHAIN_STIFFNESS = 2000.0        # N m / rad of rear-wheel angle: stretch < 0.1 r
 CHAIN_DAMPING = 20.0           # N m s / rad
 ROLLING_RESISTANCE = 1.5        # N s / m: ground force c v of both wheels (= Crr m g of a 110 kg
                                 # rider + bike at 4 m/s for Crr = 0.0055, Wilson 2004)
+FREEWHEEL_DAMPING = 50.0        # N m s / rad of rear-wheel slip. Stiffer is not better: MuJoCo's implicitfast
+                                # step of a clamped stiff damper gains energy while engaged (the riderless
+                                # bicycle pushed by its spinning crank: T = 11.5 / 12.1 / 13.3 / 26.5 s at
+                                # 50 / 100 / 200 / 5000, the fixed gear's 11.1 s); under a 25 N m drive it
+                                # slips 0.5 rad/s (4 % of the cadence at 4 m/s)
+FREEWHEEL_MAX_FORCE = 1000.0    # N m: the clutch's largest torque on the wheel (never reached)
+BRAKE_MAX_TORQUE = 60.0         # N m per wheel: both at once decelerate rider and bicycle (114 kg) by 3.2 m/s^2,
+                                # a hard stop on a city bike (rim brakes: 2-4 m/s^2, Wilson 2004 ch. 7)
 CRANK_ARMATURE = 0.02           # kg m^2: drivetrain inertia (chainring, chain) about the crank axle
 TYRE_FRICTION = 0.9             # rubber on asphalt
 FRAME_COLOUR = [0.15, 0.35, 0.6, 1.0]
@@ -84,7 +103,7 @@ TYRE_COLOUR = [0.1, 0.1, 0.1, 1.0]
 NAMES = dict(frame="bicycle_frame", fork="bicycle_fork", front="bicycle_front_wheel",
              rear="bicycle_rear_wheel", crank="bicycle_crank", free="bicycle_free",
              steer="bicycle_steer", front_spin="bicycle_front_spin", rear_spin="bicycle_rear_spin",
-             crank_spin="bicycle_crank_spin", chain="bicycle_chain")
+             crank_spin="bicycle_crank_spin", chain="bicycle_chain", freewheel="bicycle_freewheel")
 WHEEL_BODIES = (NAMES["front"], NAMES["rear"])
 
 
@@ -106,15 +125,18 @@ ISCHIUM_BEHIND_HIP = 0.03
 class Bicycle:
     """What a run asks of the bicycle prop: the gear ratio (wheel turns per crank turn), where
     the bicycle stands (rear contact at (x, y), facing ``heading`` rad from +X) and the prefix of
-    the rider attached to it (None: riderless)."""
+    the rider attached to it (None: riderless); ``freewheel``: the chain drives through a freewheel
+    instead of the fixed gear."""
     gear: float = DEFAULT_GEAR
     x: float = 0.0
     y: float = 0.0
     heading: float = 0.0
     rider: str | None = None
+    freewheel: bool = False
 
     def to_dict(self) -> dict:
-        return {"gear": self.gear, "x": self.x, "y": self.y, "heading": self.heading, "rider": self.rider}
+        return {"gear": self.gear, "x": self.x, "y": self.y, "heading": self.heading, "rider": self.rider,
+                "freewheel": self.freewheel}
 
 
 @dataclass(frozen=True)
@@ -238,14 +260,35 @@ def add_bicycle(spec: mujoco.MjSpec, bicycle: Bicycle, contact_group: int) -> No
         g.contype = g.conaffinity = contact_group
         crank.add_site(name=f"bicycle_pedal_{side}", pos=list(pedal + [0, np.sign(pedal[1]) * 0.04, 0]))
 
-    chain = spec.add_tendon(name=n["chain"], stiffness=[CHAIN_STIFFNESS, 0.0, 0.0], damping=[CHAIN_DAMPING, 0.0, 0.0])
+    fixed = not bicycle.freewheel
+    chain = spec.add_tendon(name=n["chain"], stiffness=[CHAIN_STIFFNESS * fixed, 0.0, 0.0],
+                            damping=[CHAIN_DAMPING * fixed, 0.0, 0.0])
     chain.springlength = [0.0, 0.0]
     chain.wrap_joint(n["crank_spin"], bicycle.gear)
     chain.wrap_joint(n["rear_spin"], -1.0)
+    if bicycle.freewheel:       # a one-way viscous clutch on the chain: F = -b dL/dt, only while F <= 0 (driving)
+        _bicycle_actuator(spec, n["freewheel"], mujoco.mjtTrn.mjTRN_TENDON, n["chain"], gain=(0.0, 0.0, 0.0),
+                          bias=(0.0, 0.0, -FREEWHEEL_DAMPING), force=(-FREEWHEEL_MAX_FORCE, 0.0))
     spec.add_exclude(bodyname1=n["frame"], bodyname2=n["front"])
     spec.add_exclude(bodyname1=n["fork"], bodyname2=n["crank"])
     spec.add_exclude(bodyname1=n["front"], bodyname2=n["crank"])
     spec.add_exclude(bodyname1=n["rear"], bodyname2=n["crank"])
+
+
+def _bicycle_actuator(spec: mujoco.MjSpec, name: str, trntype, target: str, gain, bias, force) -> None:
+    """A bicycle-internal element as a MuJoCo actuator (force = gain(velocity) * control + bias(length,
+    velocity), clamped to ``force``): its transmission is a bicycle joint or the chain, so it acts
+    between two bicycle bodies only; its control column is logged with the servos' (the freewheel
+    has no control: gain 0)."""
+    a = spec.add_actuator(name=name, trntype=trntype, target=target)
+    a.gaintype = mujoco.mjtGain.mjGAIN_AFFINE
+    a.biastype = mujoco.mjtBias.mjBIAS_AFFINE
+    a.gainprm[:3] = gain
+    a.biasprm[:3] = bias
+    a.ctrllimited = mujoco.mjtLimited.mjLIMITED_TRUE
+    a.ctrlrange = [0.0, 1.0]
+    a.forcelimited = mujoco.mjtLimited.mjLIMITED_TRUE
+    a.forcerange = list(force)
 
 
 @dataclass(frozen=True)

@@ -15,6 +15,10 @@ from ...world.hill import hill_height
 HEADING_TOLERANCE_DEG = 5.0
 FIRST_FORK_MOTION = math.radians(1.0)   # rad: the fork's first move counts from this far
 SEGMENT_TAIL = 5.0          # criterion: s, the end of each speed step over which its mean error is judged
+STOP_FOOT_BODIES = ("FOOTL", "TOEL")   # definition: the bodies of the foot put down at a stop
+STOP_FALL_ROLL_DEG = 30.0   # criterion: deg, leaning further on the put-down foot is a fall (the stop's tripod has tipped)
+STOPPED_SPEED = 0.05        # criterion: m/s, the bicycle is at rest below it
+COAST_SETTLE = 2.0          # criterion: s after the rider stops pedalling before the coast's decay is fitted (the legs level the crank)
 HILL_SETTLE = 5.0           # criterion: m into the climb or the descent before its speed is judged
 
 
@@ -43,8 +47,11 @@ def ride_metrics(trajectory) -> dict:
     others = np.ones(len(body_names), dtype=bool)
     others[wheels] = False
 
+    from .course import course_for
+    course = course_for(meta["params"])
+    if course.coast_from is not None:        # a stop ends on the left foot: its sole on the ground is no fall
+        others[[body_names.index(n) for n in STOP_FOOT_BODIES]] = False
     touching = a["ground_contact"][:, others].any(axis=1)
-    fall_frame = int(np.argmax(touching)) if touching.any() else None
     free = model.joint(NAMES["free"])
     q, dof = int(free.qposadr[0]), int(free.dofadr[0])
     steer = model.jnt_qposadr[model.joint(NAMES["steer"]).id]
@@ -53,11 +60,17 @@ def ride_metrics(trajectory) -> dict:
                           a["qpos"][k, crank]) for k in range(len(a["time"]))]
     speed = np.array([s["speed"] for s in states])
     roll = np.array([s["roll"] for s in states])
+    if course.coast_from is not None:        # lying on the foot is a fall too
+        touching |= np.abs(roll) > math.radians(STOP_FALL_ROLL_DEG)
+    fall_frame = int(np.argmax(touching)) if touching.any() else None
     yaw = np.unwrap([s["yaw"] for s in states])
     t = a["time"]
     end = len(t) if fall_frame is None else fall_frame
     last10 = (t >= t[end - 1] - 10.0) & (np.arange(len(t)) < end)     # criterion: TARGETS.md's mean speed of the last 10 s
     gaps = attachment_gaps(model, a["qpos"][:end])
+    released = [when for when, name in meta["phase_events"] if name == "foot_off_pedal"]
+    if released:                             # the left foot let go of its pedal: its gap is no longer a stretch
+        gaps[np.searchsorted(t[:end], released[0]) + 1:, 5] = 0.0
     desired = yaw[0] + meta["params"]["heading"]
     error = np.degrees(np.abs(yaw[:end] - desired))
     outside = np.nonzero(error > HEADING_TOLERANCE_DEG)[0]
@@ -67,7 +80,8 @@ def ride_metrics(trajectory) -> dict:
     last5 = (t >= t[end - 1] - 5.0) & (np.arange(len(t)) < end)     # criterion: the mean speed and cadence reported over the last 5 s
     gear = float(model.wrap_prm[model.tendon_adr[model.tendon(NAMES["chain"]).id]])
     rear = model.jnt_qposadr[model.joint(NAMES["rear_spin"]).id]
-    stretch = gear * a["qpos"][:end, crank] - a["qpos"][:end, rear]
+    driven = end if course.coast_from is None else min(end, int(np.searchsorted(t, course.coast_from)) + 1)
+    stretch = gear * a["qpos"][:driven, crank] - a["qpos"][:driven, rear]     # a freewheel's slack is no stretch
     crank_rate = a["qvel"][:end, model.jnt_dofadr[model.joint(NAMES["crank_spin"]).id]]
     metrics = {
         "fell": fall_frame is not None,
@@ -85,12 +99,57 @@ def ride_metrics(trajectory) -> dict:
         "final_heading_deg": float(np.degrees(yaw[end - 1])),
         "distance": float(np.linalg.norm(a["qpos"][end - 1, q:q + 2] - a["qpos"][0, q:q + 2])),
     }
-    from .course import course_for
-    course = course_for(meta["params"])
     xy = a["qpos"][:end, q:q + 2] - a["qpos"][0, q:q + 2]          # from the start, as the course is given
     metrics.update(course_metrics(course, t[:end], xy, speed[:end], crank_rate, gear))
+    if course.coast_from is not None and not course.stop:
+        again = [float(when) for when, name in meta["phase_events"] if name == "brake_to_stop"]
+        coast_end = min([float(t[end - 1])] + again)
+        metrics.update(coast_metrics(model, t, speed, course.coast_from + COAST_SETTLE, coast_end))
+    if course.stop or any(name == "brake_to_stop" for _, name in meta["phase_events"]):
+        metrics.update(stop_metrics(meta["phase_events"], t, speed, roll, a["qpos"][:, q:q + 2], fall_frame))
     metrics.update(pedal_force_range(model, trajectory, end))
     return metrics
+
+
+def stop_metrics(events, t: np.ndarray, speed: np.ndarray, roll: np.ndarray, xy: np.ndarray, fall_frame) -> dict:
+    """The stop: when the bicycle came to rest (|v| below STOPPED_SPEED, first time), how fast it
+    was going when the left foot left its pedal and when it touched the ground, how long it then
+    stood without a fall, its roll at the end and how far it moved after coming to rest."""
+    when = {name: when for when, name in events}
+    index = lambda time: int(np.searchsorted(t, time))
+    still = np.nonzero(np.abs(speed) < STOPPED_SPEED)[0]
+    out = {"stop_release_speed": float(speed[index(when["foot_off_pedal"])]) if "foot_off_pedal" in when else None,
+           "stop_plant_speed": float(speed[index(when["foot_planted"])]) if "foot_planted" in when else None,
+           "stop_plant_roll_deg": float(np.degrees(roll[index(when["foot_planted"])])) if "foot_planted" in when else None,
+           "stopped_at": float(t[still[0]]) if len(still) else None}
+    end = len(t) if fall_frame is None else fall_frame
+    if len(still) and still[0] < end:
+        k = still[0]
+        out.update(stand_seconds=float(t[end - 1] - t[k]), stand_final_roll_deg=float(np.degrees(roll[end - 1])),
+                   stand_max_abs_roll_deg=float(np.degrees(np.abs(roll[k:end]).max())),
+                   stand_drift=float(np.linalg.norm(xy[end - 1] - xy[k])))
+    return out
+
+
+def coast_metrics(model: mujoco.MjModel, t: np.ndarray, speed: np.ndarray, start: float, stop: float) -> dict:
+    """The coast's decay: v = v0 exp(-t / T) fitted to ln v from ``start`` to ``stop`` (its R^2 and
+    the rms of v about the fit, relative), against rolling resistance alone: T = M_eff / c, with
+    M_eff the mass of rider and bicycle plus the wheels' spin inertia over r^2 (the crank, on the
+    freewheel, does not turn with them) and c the wheels' ground damping (ROLLING_RESISTANCE)."""
+    from ...world.bicycle import ROLLING_RESISTANCE
+    on = (t >= start) & (t <= stop)
+    if on.sum() < 3:
+        return {"coast_seconds": 0.0}
+    slope, intercept = np.polyfit(t[on], np.log(speed[on]), 1)
+    residual = np.log(speed[on]) - (slope * t[on] + intercept)
+    spin = sum(model.body_inertia[model.body(b).id][1] for b in WHEEL_BODIES) / WHEEL_RADIUS ** 2
+    effective_mass = float(model.body_subtreemass[0]) + spin
+    return {"coast_seconds": float(t[on][-1] - t[on][0]), "coast_speed_start": float(speed[on][0]),
+            "coast_speed_end": float(speed[on][-1]), "coast_time_constant_s": float(-1.0 / slope),
+            "coast_predicted_time_constant_s": effective_mass / ROLLING_RESISTANCE,
+            "coast_effective_mass": effective_mass,
+            "coast_r2_of_ln_v": float(1.0 - residual.var() / np.log(speed[on]).var()),
+            "coast_fit_rms": float(np.sqrt(np.mean((speed[on] / np.exp(slope * t[on] + intercept) - 1.0) ** 2)))}
 
 
 def course_metrics(course, t: np.ndarray, xy: np.ndarray, speed: np.ndarray, crank_rate: np.ndarray,

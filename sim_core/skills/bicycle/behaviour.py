@@ -17,7 +17,11 @@ Control, every tick (laws.py for the equations):
     crank instead of braking it);
   * steering: eq. 11 gives the fork angle; inverse kinematics puts the hands on the grips of a
     fork turned to it; the arms' servos steer the bicycle through the hand springs ([A] 142);
-  * waist, neck and wrists hold their mounted angles ([A] 144).
+  * waist, neck and wrists hold their mounted angles ([A] 144);
+  * coasting (the coast and stop courses, a freewheel bicycle): eq. 7 off, the legs turn the cranks
+    level and hold them; stopping: eq. 7's braking torque to the rim brakes (joint friction set
+    through the edit log), the left foot let go of its pedal below foot_release_speed and put down
+    beside the bicycle, its knee propping the lean (docs/bicycle.md, the stop).
 """
 from __future__ import annotations
 
@@ -33,12 +37,15 @@ from ...schema import Parameter, Points, Schema
 from ...tuned import TableType, load, register as register_table
 from ...tuned.settings import SkillSchema, with_defaults
 from ...errors import ParameterError
-from ...world.bicycle import CRANK_LENGTH, DEFAULT_GEAR, NAMES, Bicycle, BicycleView
-from .course import COURSE, course_for
+from ...world.bicycle import BRAKE_MAX_TORQUE, WHEEL_RADIUS, CRANK_LENGTH, DEFAULT_GEAR, NAMES, Bicycle, BicycleView
+from .course import COURSE, FREEWHEEL_COURSES, course_for
 from .steering import steering_gains
 from .laws import ankle_angle, crank_torque, fork_angle, lean_ahead, pedal_forces
 from .mount import IK_ITERATIONS_PER_TICK, SitePairs, match_velocities, solve
 
+FOOT_IK_ITERATIONS = 5              # definition: damped least-squares steps a tick for the foot going down
+FOOT_IK_DAMPING = 1e-3              # definition: lambda^2 of that solve
+KNEE = 3                            # definition: the knee's place in the left leg's servos below
 RIDERS = ("man",)                   # criterion: the riders measured to ride (docs/bicycle.md: the others fall)
 MIN_LOOKAHEAD_SPEED = 1.0           # definition: m/s, the speed below which the look-ahead distance stops shrinking
 MOUNT_CRANK_ANGLE = math.pi / 2      # the start's crank: right pedal forward, left back (horizontal)
@@ -63,6 +70,21 @@ BICYCLE_RANGES = Schema(
     Parameter("curvature_preview", "s", 0.0, 0.0, 3.0, "the path's curvature is read this many seconds of travel ahead"),
     Parameter("reference_speed", "m/s", 0.5, 0.5, 10.0, "speed at which the four steering gains are these (steering.py scales them with speed)"),
     Parameter("max_fork_angle", "rad", 0.0, 0.0, 1.0, "limit of the commanded fork angle"),
+    Parameter("coast_min_speed", "m/s", 0.5, 0.5, 8.0, "coast course: below this speed the rider brakes to a stop (steering needs speed)"),
+    Parameter("crank_level_rate", "rad/s", 0.1, 0.1, 20.0, "coasting: the legs turn the crank to level (pedals horizontal) at most this fast"),
+    Parameter("brake_deceleration", "m/s^2", 0.1, 0.1, 5.0, "stop: eq. 7's desired speed falls to 0 at this rate; its braking torque goes to the rim brakes"),
+    Parameter("front_brake_share", "1", 0.0, 0.0, 1.0, "stop: share of the braking torque asked of the front brake"),
+    Parameter("stop_lean", "rad", 0.0, 0.0, 0.4, "stop: eq. 11's desired roll towards the foot that goes down (left) while braking"),
+    Parameter("foot_release_speed", "m/s", 0.0, 0.0, 3.0, "stop: below this speed the left foot leaves its pedal and the brakes stop the bicycle"),
+    Parameter("foot_out", "m", 0.0, 0.0, 0.8, "stop: the left foot is put down this far left of the wheels' contact line"),
+    Parameter("foot_ahead", "m", -0.5, -0.5, 0.5, "stop: and this far ahead of the left hip"),
+    Parameter("foot_swing_time", "s", 0.05, 0.05, 2.0, "stop: time to move the foot from its pedal to the ground point"),
+    Parameter("foot_ankle", "rad", -0.7, -0.7, 0.87, "stop: the left ankle's plantarflexion while the foot goes down (toes first)"),
+    Parameter("fork_straighten_rate", "rad/s", 0.0, 0.0, 5.0, "stop: once the foot is down the arms turn the fork straight at this rate"),
+    Parameter("stand_roll", "rad", -0.5, -0.5, 0.0, "stop: the roll (left down) the planted leg holds the bicycle at"),
+    Parameter("knee_roll_gain", "1", 0.0, 0.0, 20.0, "stop: the planted knee straightens this many rad per rad the bicycle leans beyond stand_roll"),
+    Parameter("knee_roll_integral_gain", "1/s", 0.0, 0.0, 20.0, "stop: and this many rad per rad s of roll beyond stand_roll (the lean does not creep)"),
+    Parameter("knee_roll_rate_gain", "s", 0.0, 0.0, 5.0, "stop: and this many rad per rad/s of roll rate towards the foot"),
     Parameter("ankle_mean", "rad", -0.7, -0.7, 0.87, "ankle curve: mean plantarflexion over a crank turn"),
     Parameter("ankle_swing", "rad", 0.0, 0.0, 0.5, "ankle curve: half its range"),
     Parameter("ankle_phase", "rad", -math.pi, -math.pi, math.pi, "ankle curve: crank angle past top dead centre of the least plantarflexion"),
@@ -124,6 +146,7 @@ class Bicycling(Behaviour):
         Parameter("hill_length", "m", 40.0, 5.0, 300.0, "hill: length (along the ground) of the climb and of the descent"),
         Parameter("hill_top", "m", 10.0, 1.0, 100.0, "hill: length of its flat top"),
         Parameter("start_speed", "m/s", 1.5, 1.5, 8.0, "start: the rolling start's speed, from which the rider pedals up to speed"),
+        Parameter("coast_after", "s", 2.0, 0.5, 100.0, "coast, stop: time from which the rider stops pedalling (coast) or brakes to a stop (stop)"),
         Points("path", "the path to ride along, [x, y] points in metres from the start (in Blender: a curve "
                "object); given, it replaces the course's path", clean=lambda points: validate_path(points).tolist(),
                max_points=MAX_POINTS),
@@ -137,7 +160,9 @@ class Bicycling(Behaviour):
     def scene(cls, params, world, character=None):
         """The requested world with the bicycle (at the origin facing +X, its gear, the rider
         attached) and the course's hill, if it has one."""
-        return dataclasses.replace(world, bicycle=Bicycle(gear=params["gear"], rider=""), hill=course_for(params).hill)
+        course = course_for(params)
+        bicycle = Bicycle(gear=params["gear"], rider="", freewheel=course.name in FREEWHEEL_COURSES)
+        return dataclasses.replace(world, bicycle=bicycle, hill=course.hill)
 
     @classmethod
     def start_state(cls, params, model, data, character):
@@ -211,6 +236,23 @@ class Bicycling(Behaviour):
         self.fork_command = 0.0
         self.desired_speed = self.course.start_speed
         self.jac = np.zeros((3, model.nv))
+        self.crank_command = None            # coasting: the crank angle the legs hold (None: the pedals as they are)
+        self.coasting = self.coasted = False
+        self.stopping = self.course.stop        # braking to a stop (the stop course; a coast that got too slow)
+        self.foot_down = None               # stop: (time the foot left its pedal, where it left it, the ground point)
+        self.planted = None                 # stop: the left leg's servo targets once the foot is on the ground
+        self.knee_integral = 0.0            # stop: the planted knee's integral term (rad)
+        self.foot_site = model.site(ctx.actor.prefix + "rider_foot_l").id
+        self.foot_eq = model.equality(ctx.actor.prefix + "attach_foot_l").id
+        left_leg = ("hip_l_y", "hip_l_x", "hip_l_z", "knee_l_y")
+        self.left_leg_servos = servos.indices(left_leg)
+        self.left_leg_dofs = servos.dof_adr[self.left_leg_servos]
+        self.left_leg_qpos = servos.qpos_adr[self.left_leg_servos]
+        joints = [model.joint(ctx.actor.prefix + n).id for n in left_leg]
+        self.left_leg_range = (model.jnt_range[joints, 0], model.jnt_range[joints, 1])
+        self.left_foot_geoms = np.nonzero(np.isin(model.geom_bodyid, [model.body(ctx.actor.prefix + b).id
+                                                                      for b in ("FOOTL", "TOEL")]))[0]
+        self.ground = mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_GEOM, "ground")
 
     def update(self, t):
         """Eq. 11 -> fork command -> arm IK; pedal IK and ankle curve -> leg targets; eqs. 7-10
@@ -219,7 +261,7 @@ class Bicycling(Behaviour):
         model, data = ctx.model, ctx.data
         state = bike.state(data)
         c = self.params
-        desired_roll = 0.0
+        desired_roll = -c["stop_lean"] if self.coasting and self.stopping else 0.0
         if self.follower is not None:      # pure pursuit: head for the point lookahead_time ahead
             x, y = data.qpos[bike.free_qpos], data.qpos[bike.free_qpos + 1]
             moving = max(state["speed"], MIN_LOOKAHEAD_SPEED)
@@ -227,10 +269,124 @@ class Bicycling(Behaviour):
             self.desired_yaw = self.follower.heading(x, y)
             curvature = self.follower.curvature_ahead(x, y, c["curvature_preview"] * moving)
             desired_roll = lean_ahead(state["speed"], curvature, c["lean_feedforward"])
-        fork = fork_angle(state["roll"], state["roll_rate"], state["yaw"], state["yaw_rate"], self.desired_yaw,
-                          *steering_gains(state["speed"], c), desired_roll)
-        self.fork_command = min(max(fork, -c["max_fork_angle"]), c["max_fork_angle"])
-        self._pedal(t, state)
+        if self.planted is not None:      # once the foot is on the ground the arms turn the bars straight
+            step = c["fork_straighten_rate"] * ctx.control_dt
+            self.fork_command -= min(max(self.fork_command, -step), step)
+        else:
+            fork = fork_angle(state["roll"], state["roll_rate"], state["yaw"], state["yaw_rate"], self.desired_yaw,
+                              *steering_gains(state["speed"], c), desired_roll)
+            self.fork_command = min(max(fork, -c["max_fork_angle"]), c["max_fork_angle"])
+        self._pedal(t, state, self._crank_torque(t, state))
+
+    def _crank_torque(self, t, state) -> float:
+        """Eq. 7 on the desired speed, which follows the course's command at speed_ramp. Coasting
+        (the coast and stop courses, from coast_from) the crank is not driven: the legs turn it level
+        and hold it on the freewheel; on the coast course, below coast_min_speed (too slow to steer),
+        the rider brakes to a stop. Stopping, the desired speed falls to 0 at brake_deceleration and
+        eq. 7's braking torque goes to the rim brakes (a freewheel cannot brake through the pedals);
+        below foot_release_speed the left foot goes down."""
+        c, course, dt = self.params, self.course, self.ctx.control_dt
+        coast_from = course.coast_from
+        if coast_from is not None and t >= coast_from and not self.coasted:   # from now on the crank is not driven
+            self.coasting = self.coasted = True
+            self.crank_command = state["crank"]
+        if self.coasting and not self.stopping and state["speed"] < c["coast_min_speed"]:
+            self.stopping, self.desired_speed = True, state["speed"]      # too slow to steer: a stop
+            self.event(t, "brake_to_stop")
+        if not self.coasting:
+            step = c["speed_ramp"] * dt
+            self.desired_speed += min(max(course.speed_at(t) - self.desired_speed, -step), step)
+            return crank_torque(state["speed"], self.desired_speed, c["speed_gain"], c["max_crank_torque"])
+        level = math.pi / 2 + math.pi * math.ceil((self.crank_command - math.pi / 2) / math.pi)   # the next level crank
+        self.crank_command = min(self.crank_command + c["crank_level_rate"] * dt, level)
+        if self.stopping:
+            self.desired_speed = max(self.desired_speed - c["brake_deceleration"] * dt, 0.0)
+            if self.foot_down is None and state["speed"] < c["foot_release_speed"]:
+                self._release_foot(t)
+            # the brakes hold the bicycle whichever way it rolls; with the foot down, fully
+            self._brake(math.inf if self.planted is not None else
+                        -crank_torque(abs(state["speed"]), self.desired_speed, c["speed_gain"], 2 * c["max_crank_torque"]))
+        return 0.0
+
+    def _release_foot(self, t) -> None:
+        """The left foot leaves its pedal (its attachment switched off through the edit log, so a
+        replay switches it off at the same tick) for a ground point foot_out left of the wheels'
+        contact line and foot_ahead ahead of the left hip."""
+        data, bike = self.ctx.data, self.bike
+        active = data.eq_active.copy()
+        active[self.foot_eq] = 0
+        self.ctx.servos.log.set_flat(data.eq_active, "eq_active", active)
+        frame = data.xmat[bike.frame].reshape(3, 3)
+        heading = math.atan2(frame[1, 0], frame[0, 0])
+        forward, left = np.array([math.cos(heading), math.sin(heading), 0.0]), np.array([-math.sin(heading), math.cos(heading), 0.0])
+        hip = data.xpos[self.ctx.model.body(self.ctx.actor.prefix + "ULEGL").id]
+        mid = data.xpos[bike.frame].copy()
+        mid[:2] += left[:2] * WHEEL_RADIUS * math.sin(self.bike.state(data)["roll"])   # the wheels' contact line
+        ground = mid + forward * (float(np.dot(hip - mid, forward)) + self.params["foot_ahead"])
+        ground = ground + left * self.params["foot_out"]
+        ground[2] = 0.0
+        self.foot_down = (t, data.site_xpos[self.foot_site].copy(), ground)
+        self.event(t, "foot_off_pedal")
+
+    def _foot_on_ground(self) -> bool:
+        data = self.ctx.data
+        for con in data.contact[:data.ncon]:
+            pair = {con.geom1, con.geom2}
+            if self.ground in pair and pair & set(self.left_foot_geoms.tolist()):
+                return True
+        return False
+
+    def _left_leg_goal(self, t, goal: np.ndarray) -> None:
+        """The released left leg: inverse kinematics of the foot's sole to a point moving from where
+        it left the pedal out to above the ground point (in half foot_swing_time) and down to it (in
+        foot_swing_time), toes a little down (foot_ankle). Once the foot touches the ground the
+        hip's targets stay where they are and the knee props the lean: its target straightens with
+        the roll beyond stand_roll (proportional, integral and roll-rate terms: the leg pushes the
+        bicycle back up as it leans further onto the foot)."""
+        ctx, servos, c = self.ctx, self.ctx.servos, self.params
+        if self.planted is None and self._foot_on_ground():
+            self.planted = servos.angles()[self.left_leg_servos].copy()
+            self.event(t, "foot_planted")
+        if self.planted is not None:
+            goal[self.left_leg_servos] = self.planted
+            state = self.bike.state(ctx.data)
+            error = state["roll"] - c["stand_roll"]
+            self.knee_integral += c["knee_roll_integral_gain"] * error * ctx.control_dt
+            knee = self.planted[KNEE] + c["knee_roll_gain"] * error + self.knee_integral + c["knee_roll_rate_gain"] * state["roll_rate"]
+            goal[self.left_leg_servos[KNEE]] = max(knee, 0.0)
+        else:
+            start_time, start, ground = self.foot_down
+            share = min((t - start_time) / c["foot_swing_time"], 1.0)
+            point = start + min(2.0 * share, 1.0) * (ground - start)
+            point[2] = start[2] + share * (ground[2] - start[2])
+            scratch = self.scratch
+            scratch.qpos[:] = ctx.data.qpos
+            scratch.qpos[servos.qpos_adr[self.ankle_servos["l"]]] = c["foot_ankle"]
+            jac = np.zeros((3, ctx.model.nv))
+            for _ in range(FOOT_IK_ITERATIONS):
+                mujoco.mj_kinematics(ctx.model, scratch)
+                mujoco.mj_comPos(ctx.model, scratch)
+                mujoco.mj_jacSite(ctx.model, scratch, jac, None, self.foot_site)
+                J = jac[:, self.left_leg_dofs]
+                error = point - scratch.site_xpos[self.foot_site]
+                step = np.zeros(ctx.model.nv)
+                step[self.left_leg_dofs] = np.linalg.solve(J.T @ J + FOOT_IK_DAMPING * np.eye(len(self.left_leg_dofs)), J.T @ error)
+                mujoco.mj_integratePos(ctx.model, scratch.qpos, step, 1.0)
+                scratch.qpos[self.left_leg_qpos] = np.clip(scratch.qpos[self.left_leg_qpos], *self.left_leg_range)
+            goal[self.left_leg_servos] = scratch.qpos[self.left_leg_qpos]
+        goal[self.ankle_servos["l"]] = c["foot_ankle"]
+
+    def _brake(self, torque: float) -> None:
+        """The rim brakes for a total braking torque (N m at the wheels, front_brake_share of it at
+        the front): each wheel hinge's dry friction, at most BRAKE_MAX_TORQUE, set through the edit
+        log (a replay brakes alike)."""
+        model = self.ctx.model
+        friction = model.dof_frictionloss.copy()
+        share = self.params["front_brake_share"]
+        wanted = max(torque, 0.0)
+        friction[self.bike.front_dof] = min(share * wanted, BRAKE_MAX_TORQUE)
+        friction[self.bike.rear_dof] = min((1.0 - share) * wanted, BRAKE_MAX_TORQUE)
+        self.ctx.servos.log.set_flat(model.dof_frictionloss, "dof_frictionloss", friction)
 
     def _limb_goal(self, state, which, servo_rows, ankles=None) -> np.ndarray:
         """Servo targets: the limbs ``servo_rows`` by inverse kinematics of the attachments
@@ -240,6 +396,8 @@ class Bicycling(Behaviour):
         scratch = self.scratch
         scratch.qpos[:] = ctx.data.qpos
         scratch.qpos[bike.steer_qpos] = self.fork_command
+        if self.crank_command is not None:
+            scratch.qpos[bike.crank_qpos] = self.crank_command
         for side, value in (ankles or {}).items():
             scratch.qpos[servos.qpos_adr[self.ankle_servos[side]]] = value
         solve(ctx.model, scratch, self.pairs, which, servos.dof_adr[servo_rows], ctx.data.qpos, IK_ITERATIONS_PER_TICK)
@@ -256,7 +414,7 @@ class Bicycling(Behaviour):
             goal[self.ankle_servos[side]] = value
         return goal
 
-    def _pedal(self, t, state) -> None:
+    def _pedal(self, t, state, torque: float) -> None:
         """Feet on the pedals: pedal IK and the ankle curve -> leg targets; eqs. 7-10 -> pedal
         forces -> leg torques (servo offsets)."""
         ctx, servos, bike = self.ctx, self.ctx.servos, self.bike
@@ -264,16 +422,16 @@ class Bicycling(Behaviour):
         c = self.params
         curve = (c["ankle_mean"], c["ankle_swing"], c["ankle_phase"])
         ankles = {"r": ankle_angle(state["crank"], *curve), "l": ankle_angle(state["crank"] + math.pi, *curve)}
-        goal = self._limb_goal(state, [2, 3, 4, 5], self.limb_servos, ankles)  # definition: the hand and foot attachments
+        attached = [2, 3, 4] if self.foot_down is not None else [2, 3, 4, 5]   # definition: the hands' and feet's attachments
+        goal = self._limb_goal(state, attached, self.limb_servos, ankles)
+        if self.foot_down is not None:
+            self._left_leg_goal(t, goal)
         # eqs. 7-10: pedal forces, through each leg's Jacobian to joint torques (servo offsets)
-        step = c["speed_ramp"] * ctx.control_dt
-        self.desired_speed += min(max(self.course.speed_at(t) - self.desired_speed, -step), step)
-        torque = crank_torque(state["speed"], self.desired_speed, c["speed_gain"], c["max_crank_torque"])
         forces = dict(zip("rl", pedal_forces(torque, state["crank"], CRANK_LENGTH)))
         offset = np.zeros(len(goal))
         axle = data.xpos[bike.crank_body]
         crank_axis = data.xmat[bike.crank_body].reshape(3, 3)[:, 1]
-        for k, side in ((4, "r"), (5, "l")):          # definition: the foot attachments
+        for k, side in ((4, "r"), (5, "l"))[:1 if self.foot_down is not None else 2]:   # definition: the foot attachments
             site = self.pairs.rider[k]
             arm = data.site_xpos[self.pairs.bike[k]] - axle
             tangent = np.cross(crank_axis, arm)

@@ -9,7 +9,11 @@ Courses (the ``course`` parameter; a ``path`` given replaces the course's path):
   * speed_steps: ``speed`` until ``step_time``, ``second_speed`` until twice it, then ``third_speed``;
   * hill: ``hill_after`` m of flat, a climb of ``hill_length`` m at ``hill_grade``, ``hill_top`` m
     of flat top and a descent like the climb (the hill is a world prop, sim_core.world.hill);
-  * start: the rolling start is at ``start_speed``; the rider pedals up to ``speed``.
+  * start: the rolling start is at ``start_speed``; the rider pedals up to ``speed``;
+  * coast: a freewheel bicycle; from ``coast_after`` s the rider stops pedalling and holds the cranks
+    level, steering on, until the speed falls to the table's ``coast_min_speed``, then stops as below;
+  * stop: a freewheel bicycle with rim brakes; from ``coast_after`` s the rider brakes to a standstill
+    (behaviour.py), offered from the speeds at which the stop was measured to work (STOP_SPEEDS).
 
 A course that asks the bicycle to turn harder than ``MAX_LEAN`` of lean at its speed is refused
 before anything runs, naming the limit.
@@ -26,16 +30,19 @@ from ...control.path import turn_path, validate_path
 from ...errors import ParameterError
 from ...schema import Choice
 
-COURSES = ("straight", "turn", "slalom", "speed_steps", "hill", "start")
+COURSES = ("straight", "turn", "slalom", "speed_steps", "hill", "start", "coast", "stop")
 COURSE = Choice("course", COURSES, "straight",
                 "what the ride does (docs/bicycle.md, courses): hold the heading; a turn; a slalom of gates; "
-                "speed steps; over a hill; a start from a slow roll")
+                "speed steps; over a hill; a start from a slow roll; coast on a freewheel; brake to a stop")
+FREEWHEEL_COURSES = ("coast", "stop")   # definition: the courses ridden on a freewheel bicycle
 MAX_LEAN = math.radians(25.0)      # criterion: the steepest steady lean a course may ask for (v^2 / (g r) = tan)
 SLALOM_POINT_SPACING = 0.25        # definition: m between the points of the slalom's sine
 SLALOM_SPEEDS = (3.0, 5.5)         # criterion: m/s, the speeds at which the slalom's gates were measured to be passed
 SLALOM_MAX_ACCELERATION = 1.6      # criterion: m/s^2, the sine's peak lateral acceleration (a lean of 9.3 deg, inside MAX_LEAN) ridden through the gates
 SLALOM_MAX_OFFSET = 1.0            # criterion: m, the largest gate offset ridden through the gates
 SLALOM_MIN_WIDTH = 1.5             # criterion: m, the gate width the gates were measured with (misses reached 0.6 m)
+COAST_SPEEDS = (3.5, 5.0)          # criterion: m/s, the speeds from which the coast was measured (it stops at coast_min_speed)
+STOP_SPEEDS = (3.0, 5.0)           # criterion: m/s, the speeds from which the stop was measured to end standing
 RUN_OUT = 60.0                     # definition: m of straight after a course's last feature (longer than a ride goes)
 
 
@@ -43,8 +50,9 @@ RUN_OUT = 60.0                     # definition: m of straight after a course's 
 class Course:
     """What the controller asks for, from the request: ``path`` (N x 2, m from the start, or None
     for a fixed heading), the commanded speed as steps ``speeds`` ((from time s, m/s), ...), the
-    time from which the crank is not driven (None: never), the start's rolling speed, the gates
-    ((x, y) centres, m) and ``hill`` (the World field, () for none)."""
+    start's rolling speed, the gates ((x, y) centres, m), ``hill`` (the World field, () for none),
+    the time from which the crank is not driven (``coast_from``, None: never) and whether the rider
+    then brakes to a stop (``stop``)."""
     name: str
     path: np.ndarray | None
     speeds: tuple
@@ -52,6 +60,8 @@ class Course:
     gates: np.ndarray
     gate_width: float
     hill: tuple
+    coast_from: float | None = None
+    stop: bool = False
 
     def speed_at(self, t: float) -> float:
         speed = self.speeds[0][1]
@@ -79,9 +89,34 @@ def course_for(p: dict) -> Course:
         hill = (p["hill_after"], p["hill_grade"], p["hill_length"], p["hill_top"], p["hill_length"])
     elif name == "start":
         start_speed = p["start_speed"]
+    elif name == "stop":
+        _check_stop(p["speed"])
+    elif name == "coast":
+        _check_coast(p["speed"], p["coast_min_speed"])
     if "path" in p:
         path = np.asarray(p["path"], dtype=float)
-    return Course(name, path, speeds, start_speed, gates, p["gate_width"], hill)
+    coast_from = p["coast_after"] if name in FREEWHEEL_COURSES else None
+    return Course(name, path, speeds, start_speed, gates, p["gate_width"], hill, coast_from, name == "stop")
+
+
+def _check_coast(speed: float, slowest: float) -> None:
+    """The coast is offered from the speeds it was measured from, and it ends in a stop from a speed
+    the stop was measured from."""
+    low, high = COAST_SPEEDS
+    if not low <= speed <= high:
+        raise ParameterError(f"the coast is ridden from speed {low:g}-{high:g} m/s (asked: {speed:g} m/s); "
+                             f"from elsewhere it was not measured (docs/bicycle.md, coasting)")
+    if not STOP_SPEEDS[0] <= slowest < speed:
+        raise ParameterError(f"the coast hands over to a stop at coast_min_speed, which must be from "
+                             f"{STOP_SPEEDS[0]:g} m/s up to below the speed {speed:g} m/s (asked: {slowest:g} m/s)")
+
+
+def _check_stop(speed: float) -> None:
+    """The stop is offered from the speeds at which it was measured to end standing (docs/bicycle.md)."""
+    low, high = STOP_SPEEDS
+    if not low <= speed <= high:
+        raise ParameterError(f"the stop is ridden from speed {low:g}-{high:g} m/s (asked: {speed:g} m/s); "
+                             f"from elsewhere the rider was not measured to stop standing (docs/bicycle.md, the stop)")
 
 
 def slalom(count: int, spacing: float, offset: float, lead: float) -> tuple[np.ndarray, np.ndarray]:

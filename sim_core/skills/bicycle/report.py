@@ -5,7 +5,8 @@
 * rides at 3, 4 and 5 m/s and a +30 deg heading step (metrics of ``assess``);
 * the courses (``--courses``): a turn, the slalom at speeds drawn at random (``--seed``) with the
   gates spaced for the same time between gates, speed steps 3 -> 5 -> 4 m/s, the hill at 5 %
-  (gears 2.6 and 2.0) and 10 %, and a start from a slow roll, run in ``--workers`` processes;
+  (gears 2.6 and 2.0) and 10 %, a start from a slow roll, a coast from 4 m/s (its decay fitted,
+  ending in a stop) and stops from speeds drawn at random (``--stops``), run in ``--workers`` processes;
 * speed: simulated seconds per wall-clock second of a ride beside raw ``mj_step`` of the same
   model with the controls held.
 """
@@ -25,7 +26,7 @@ from ...tuning import executor_for
 from ...world import World, add_world
 from ...world.bicycle import Bicycle, BicycleView, DEFAULT_GEAR
 from .behaviour import Bicycling
-from .course import SLALOM_SPEEDS, slalom_widest_offset
+from .course import SLALOM_SPEEDS, STOP_SPEEDS, slalom_widest_offset
 
 
 def riderless_model(gear: float = DEFAULT_GEAR) -> mujoco.MjModel:
@@ -92,13 +93,18 @@ COURSE_RIDES = {      # name: (parameters, seconds)
     "hill_5pct_gear_2.0": ({"course": "hill", "hill_grade": 0.05, "gear": 2.0}, 28.0),
     "hill_10pct": ({"course": "hill", "hill_grade": 0.10}, 28.0),
     "start_from_1.5ms": ({"course": "start", "start_speed": 1.5}, 12.0),
+    "coast_from_4ms": ({"course": "coast", "speed": 4.0}, 32.0),     # coasts to coast_min_speed, then stops
 }
+STOP_STAND = 6.0       # definition: s ridden after the stop's expected standstill (speed / brake_deceleration after coast_after)
 SLALOM_DRAW_PERIODS = (2.0, 4.5)     # s between gates in the drawn slaloms (the measured grid's periods)
 COURSE_KEYS = ("fell", "fall_time", "max_abs_roll_deg", "mean_speed_last_5s", "path_deviation_mean", "path_deviation_max",
                "gates_passed", "gate_count", "gate_misses", "speed_steps", "hill_climb_mean_speed", "hill_climb_worst_error",
                "hill_descent_mean_speed", "hill_descent_worst_error", "hill_climb_cadence_hz",
                "hill_climb_cadence_expected_hz", "max_hand_gap", "max_foot_gap", "max_seat_gap", "pedal_pull_r_max",
-               "pedal_pull_r_share", "pedal_force_r_min", "pedal_force_r_max")
+               "pedal_pull_r_share", "pedal_force_r_min", "pedal_force_r_max", "coast_seconds", "coast_speed_start",
+               "coast_speed_end", "coast_time_constant_s", "coast_predicted_time_constant_s", "coast_r2_of_ln_v",
+               "coast_fit_rms", "stop_release_speed", "stop_plant_speed", "stop_plant_roll_deg", "stopped_at",
+               "stand_seconds", "stand_final_roll_deg", "stand_max_abs_roll_deg", "stand_drift")
 
 
 def course_ride(item) -> tuple[str, dict]:
@@ -123,9 +129,10 @@ def slalom_seconds(speed: float, spacing: float, gates: int = 8, lead: float = 1
     return (lead + (gates + 0.5) * spacing) / speed + 2.0
 
 
-def course_rides(seed: int, slaloms: int) -> dict:
-    """The course rides above, and ``slaloms`` slaloms drawn at random inside the region the slalom
-    is offered in (course.py: speed, gate spacing and offset)."""
+def course_rides(seed: int, slaloms: int, stops: int = 0) -> dict:
+    """The course rides above, ``slaloms`` slaloms drawn at random inside the region the slalom
+    is offered in (course.py: speed, gate spacing and offset) and ``stops`` stops from speeds drawn
+    in the range the stop is offered in."""
     rng = np.random.default_rng(seed)
     rides = dict(COURSE_RIDES)
     for _ in range(slaloms):
@@ -133,6 +140,11 @@ def course_rides(seed: int, slaloms: int) -> dict:
         rides[f"slalom_{speed:g}ms_{spacing:g}m_{offset:g}m"] = (
             {"course": "slalom", "speed": speed, "gate_spacing": spacing, "gate_offset": offset},
             slalom_seconds(speed, spacing))
+    deceleration = Bicycling.settings_schema.by_name["brake_deceleration"].default
+    coast_after = Bicycling.schema.by_name["coast_after"].default
+    for _ in range(stops):
+        speed = round(float(rng.uniform(*STOP_SPEEDS)), 2)
+        rides[f"stop_from_{speed:g}ms"] = ({"course": "stop", "speed": speed}, coast_after + speed / deceleration + STOP_STAND)
     return rides
 
 
@@ -141,7 +153,8 @@ def main(argv=None) -> int:
     parser.add_argument("--seconds", type=float, default=20.0, help="length of each ride (s)")
     parser.add_argument("--courses", action="store_true", help="also ride the courses (several minutes)")
     parser.add_argument("--slaloms", type=int, default=4, help="slaloms at random speeds with --courses")
-    parser.add_argument("--seed", type=int, default=30, help="draws the slaloms' speeds")
+    parser.add_argument("--stops", type=int, default=6, help="stops from random speeds with --courses")
+    parser.add_argument("--seed", type=int, default=30, help="draws the slaloms' and the stops' speeds")
     parser.add_argument("--workers", type=int, default=None, help="processes for the course rides (default: one per CPU)")
     args = parser.parse_args(argv)
     model = riderless_model()
@@ -158,7 +171,7 @@ def main(argv=None) -> int:
     out["heading_step_30deg"] = {k: m[k] for k in keys}
     if args.courses:
         with executor_for(args.workers) as executor:
-            out["courses"] = dict(executor.map(course_ride, list(course_rides(args.seed, args.slaloms).items())))
+            out["courses"] = dict(executor.map(course_ride, list(course_rides(args.seed, args.slaloms, args.stops).items())))
     out["benchmark"] = benchmark(args.seconds)
     print(json.dumps(out, indent=1))
     return 0
