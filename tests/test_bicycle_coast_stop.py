@@ -9,6 +9,8 @@ import mujoco
 import numpy as np
 import pytest
 
+from sim_core import tuned
+
 from sim_core.character.model import new_spec
 from sim_core.errors import ParameterError
 from sim_core.simulate import RunRequest, largest_difference, replay, run
@@ -107,7 +109,7 @@ def test_a_coast_too_slow_to_steer_hands_over_to_a_stop():
     and stands on his left foot."""
     meta = ride(16.0, course="coast", speed=4.0, coast_after=1.0, coast_min_speed=3.8).meta
     m = meta["metrics"]
-    assert [name for _, name in meta["phase_events"]] == ["brake_to_stop", "foot_off_pedal", "foot_planted"]
+    assert [name for _, name in meta["phase_events"]] == ["brake_to_stop", "foot_off_pedal", "foot_planted", "at_rest"]
     assert not m["fell"] and m["stand_seconds"] >= 3.0 and m["stand_drift"] < 0.1
     assert m["coast_time_constant_s"] == pytest.approx(m["coast_predicted_time_constant_s"], rel=0.2)
 
@@ -127,6 +129,8 @@ def test_a_stop_ends_at_rest_on_the_left_foot(stop):
     assert m["stopped_at"] is not None and m["stand_seconds"] >= 4.0
     assert m["stand_drift"] < 0.1 and -20.0 < m["stand_final_roll_deg"] < 0.0
     assert m["stop_plant_speed"] < 0.5
+    stand = tuned.load("bicycle", "any")["constants"]["stop_stand"]       # the run ends stop_stand after rest
+    assert trajectory.arrays["time"][-1] == pytest.approx(m["stopped_at"] + stand, abs=0.25)
     assert m["max_hand_gap"] < 0.03 and m["max_foot_gap"] < 0.03 and m["max_seat_gap"] < 0.001   # the left foot until let go
     model = mujoco.MjModel.from_xml_string(trajectory.meta["model_xml"])
     touching = trajectory.arrays["ground_contact"][-1]

@@ -138,7 +138,7 @@ def coast_metrics(model: mujoco.MjModel, t: np.ndarray, speed: np.ndarray, start
     freewheel, does not turn with them) and c the wheels' ground damping (ROLLING_RESISTANCE)."""
     from ...world.bicycle import ROLLING_RESISTANCE
     on = (t >= start) & (t <= stop)
-    if on.sum() < 3:
+    if on.sum() < 3:                    # definition: a line needs three points to have a residual
         return {"coast_seconds": 0.0}
     slope, intercept = np.polyfit(t[on], np.log(speed[on]), 1)
     residual = np.log(speed[on]) - (slope * t[on] + intercept)

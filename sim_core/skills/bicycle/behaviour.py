@@ -38,6 +38,7 @@ from ...tuned import TableType, load, register as register_table
 from ...tuned.settings import SkillSchema, with_defaults
 from ...errors import ParameterError
 from ...world.bicycle import BRAKE_MAX_TORQUE, WHEEL_RADIUS, CRANK_LENGTH, DEFAULT_GEAR, NAMES, Bicycle, BicycleView
+from .assess import STOPPED_SPEED
 from .course import COURSE, FREEWHEEL_COURSES, course_for
 from .steering import steering_gains
 from .laws import ankle_angle, crank_torque, fork_angle, lean_ahead, pedal_forces
@@ -85,6 +86,7 @@ BICYCLE_RANGES = Schema(
     Parameter("knee_roll_gain", "1", 0.0, 0.0, 20.0, "stop: the planted knee straightens this many rad per rad the bicycle leans beyond stand_roll"),
     Parameter("knee_roll_integral_gain", "1/s", 0.0, 0.0, 20.0, "stop: and this many rad per rad s of roll beyond stand_roll (the lean does not creep)"),
     Parameter("knee_roll_rate_gain", "s", 0.0, 0.0, 5.0, "stop: and this many rad per rad/s of roll rate towards the foot"),
+    Parameter("stop_stand", "s", 0.0, 0.0, 60.0, "stop: the run ends this long after the bicycle came to rest with the foot down"),
     Parameter("ankle_mean", "rad", -0.7, -0.7, 0.87, "ankle curve: mean plantarflexion over a crank turn"),
     Parameter("ankle_swing", "rad", 0.0, 0.0, 0.5, "ankle curve: half its range"),
     Parameter("ankle_phase", "rad", -math.pi, -math.pi, math.pi, "ankle curve: crank angle past top dead centre of the least plantarflexion"),
@@ -242,6 +244,7 @@ class Bicycling(Behaviour):
         self.foot_down = None               # stop: (time the foot left its pedal, where it left it, the ground point)
         self.planted = None                 # stop: the left leg's servo targets once the foot is on the ground
         self.knee_integral = 0.0            # stop: the planted knee's integral term (rad)
+        self.rest_since = None              # stop: when the bicycle came to rest with the foot down
         self.foot_site = model.site(ctx.actor.prefix + "rider_foot_l").id
         self.foot_eq = model.equality(ctx.actor.prefix + "attach_foot_l").id
         left_leg = ("hip_l_y", "hip_l_x", "hip_l_z", "knee_l_y")
@@ -306,7 +309,16 @@ class Bicycling(Behaviour):
             # the brakes hold the bicycle whichever way it rolls; with the foot down, fully
             self._brake(math.inf if self.planted is not None else
                         -crank_torque(abs(state["speed"]), self.desired_speed, c["speed_gain"], 2 * c["max_crank_torque"]))
+            if self.planted is not None and self.rest_since is None and abs(state["speed"]) < STOPPED_SPEED:
+                self.rest_since = t
+                self.event(t, "at_rest")
         return 0.0
+
+    @property
+    def run_complete(self) -> bool:
+        """A stop's run ends stop_stand after the bicycle came to rest with the foot down (standing on
+        longer, the lean creeps until the propping leg lifts the rear wheel: docs/bicycle.md, the stop)."""
+        return self.rest_since is not None and self.ctx.data.time - self.rest_since >= self.params["stop_stand"]
 
     def _release_foot(self, t) -> None:
         """The left foot leaves its pedal (its attachment switched off through the edit log, so a
