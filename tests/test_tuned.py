@@ -176,7 +176,7 @@ ALLOWED = {
     "skills.running.behaviour": {n: "definition" for n in ("FLIGHT", "LOADING", "HEEL", "HEEL_TOE", "TOE", "UNLOADING", "START", "TUNED")}
                | {"SCHEDULED": "search"},
     "control.path": {**{n: "criterion" for n in ("MIN_SEGMENT", "MIN_LENGTH", "MAX_POINTS", "MIN_TURN_RADIUS")},
-                     "CURVATURE_CHORD": "definition"}
+                     "CURVATURE_CHORD": "definition", "RADIUS_SAMPLE": "definition"}
                | {n: "definition" for n in ("TURN_RUN_OUT", "FIGURE_EIGHT_LAPS", "CIRCLE_LAPS")},
     "skills.somersault.behaviour": {"TUCK": "definition", "ROTATION_TOLERANCE": "criterion"},
     "skills.jump_to_target.behaviour": {n: "search" for n in ("TAKEOFF_COM", "TOUCHDOWN_COM", "WINDUP_OVERHEAD", "KNOB_DEFAULTS",
@@ -188,11 +188,15 @@ ALLOWED = {
     # the bicycle's inverse-kinematics solver settings (numerics, not control) and its judging threshold
     "skills.bicycle.mount": {n: "definition" for n in ("IK_DAMPING", "IK_POSTURE_WEIGHT", "IK_ITERATIONS",
                                                        "IK_ITERATIONS_PER_TICK", "IK_TOLERANCE")},
-    "skills.bicycle.assess": {n: "criterion" for n in ("HEADING_TOLERANCE_DEG", "SEGMENT_TAIL", "HILL_SETTLE")},
-    "skills.bicycle.behaviour": {"MIN_LOOKAHEAD_SPEED": "definition"},
+    "skills.bicycle.assess": {n: "criterion" for n in ("HEADING_TOLERANCE_DEG", "SEGMENT_TAIL", "HILL_SETTLE",
+                                                       "STOP_FALL_ROLL_DEG", "STOPPED_SPEED", "COAST_SETTLE")},
+    # the foot going down: its inverse-kinematics solver's numerics, and the knee's index in the leg's servos
+    "skills.bicycle.behaviour": {n: "definition" for n in ("MIN_LOOKAHEAD_SPEED", "FOOT_IK_ITERATIONS", "FOOT_IK_DAMPING",
+                                                           "KNEE")},
     "skills.bicycle.steering": {"MIN_SCHEDULED_SPEED": "definition"},
     "skills.bicycle.course": {"SLALOM_POINT_SPACING": "definition", "RUN_OUT": "definition",
-                              **{n: "criterion" for n in ("SLALOM_SPEEDS", "SLALOM_MAX_ACCELERATION", "SLALOM_MAX_OFFSET", "SLALOM_MIN_WIDTH")}},
+                              **{n: "criterion" for n in ("SLALOM_SPEEDS", "SLALOM_MAX_ACCELERATION", "SLALOM_MAX_OFFSET", "SLALOM_MIN_WIDTH",
+                                                       "COAST_SPEEDS", "STOP_SPEEDS")}},
 }
 
 

@@ -18,6 +18,7 @@ MIN_LENGTH = 2.0            # m: a path shorter than this cannot be run along
 MAX_POINTS = 10000
 MIN_TURN_RADIUS = 1.5       # m: a corner tighter than this is rounded to it (a runner cannot turn on a spot)
 CURVATURE_CHORD = 0.5       # m: the half-chord over which a path's curvature ahead is measured
+RADIUS_SAMPLE = 0.1         # m: spacing of the points along a path where its tightest bend is looked for
 # the request's path shapes (turn, figure_eight, circle): what each one means
 TURN_RUN_OUT = 60.0         # m straight on after a turn: longer than any run goes
 FIGURE_EIGHT_LAPS = 3
@@ -162,6 +163,27 @@ class PathFollower:
     def heading(self, x: float, y: float) -> float:
         tx, ty = self.target(x, y)
         return math.atan2(ty - y, tx - x)
+
+
+def tightest_radius(points: np.ndarray, chord: float) -> tuple[float, float]:
+    """(radius m, distance along the path m) of the path's tightest bend at the scale ``chord``:
+    the smallest circle through three points ``chord`` apart along it (a follower that aims a
+    look-ahead ahead cuts a corner at about that scale; an arc of radius >= chord is measured
+    exactly). A straight path gives (inf, 0)."""
+    pts = np.asarray(points, dtype=float)
+    lengths = np.hypot(*np.diff(pts, axis=0).T)
+    along = np.concatenate([[0.0], np.cumsum(lengths)])
+    if along[-1] <= 2.0 * chord:
+        return math.inf, 0.0
+    s = np.arange(chord, along[-1] - chord, RADIUS_SAMPLE)
+    a, b, c = (np.column_stack([np.interp(s + d, along, pts[:, 0]), np.interp(s + d, along, pts[:, 1])])
+               for d in (-chord, 0.0, chord))
+    cross = np.abs((b[:, 0] - a[:, 0]) * (c[:, 1] - a[:, 1]) - (b[:, 1] - a[:, 1]) * (c[:, 0] - a[:, 0]))
+    sides = np.linalg.norm(b - a, axis=1) * np.linalg.norm(c - b, axis=1) * np.linalg.norm(c - a, axis=1)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        radius = np.where(cross > 1e-12, sides / (2.0 * cross), math.inf)
+    k = int(np.argmax(radius <= radius.min() * (1.0 + 1e-3)))      # the first of equally tight bends
+    return float(radius[k]), float(s[k])
 
 
 def path_deviation(points: np.ndarray, xy: np.ndarray) -> np.ndarray:

@@ -110,11 +110,12 @@ def test_a_curve_object_is_the_running_path(empty_scene):
     bpy.ops.sim_athletics.add_character(character="man")
     arm = context.view_layer.objects.active
     arm.location = (1.0, 2.0, 0.0)
-    curve = poly_curve(context, "track", [(1.0, 2.0, 0.0), (1.0, -8.0, 0.0), (6.0, -8.0, 0.0)])  # 10 m ahead (-Y), then 5 m left
+    # 10 m ahead (-Y), then 20 m on, bearing 2 m left (a bend the runner is offered: docs/running.md)
+    curve = poly_curve(context, "track", [(1.0, 2.0, 0.0), (1.0, -8.0, 0.0), (3.0, -28.0, 0.0)])
     context.scene.sim_athletics.params_running.path = curve
     s = operators.run_settings(context, behaviour="running")
     params = operators.with_scene_inputs(context, arm, s)
-    assert np.allclose(params["path"], [[0.0, 0.0], [10.0, 0.0], [10.0, 5.0]], atol=1e-6)
+    assert np.allclose(params["path"], [[0.0, 0.0], [10.0, 0.0], [30.0, 2.0]], atol=1e-6)
     assert bpy.ops.sim_athletics.simulate_bake(behaviour="running", duration=0.2) == {"FINISHED"}
     assert json.loads(arm[rig.RESULT_KEY])["params"]["path"] == params["path"]
 

@@ -44,7 +44,8 @@ from ...errors import ParameterError
 from ...character.model import Placement
 from ...control.behaviour import Behaviour, ControlContext, register
 from .leg import RunnerLeg
-from ...control.path import MAX_POINTS, PathFollower, circle_path, figure_eight_path, turn_path, validate_path
+from ...control.path import (MAX_POINTS, PathFollower, circle_path, figure_eight_path, tightest_radius, turn_path,
+                             validate_path)
 from ...control.servo import hermite_scalar
 from ...schema import Choice, Parameter, Points, Schema
 from ...tuned import TableType, load, register as register_table, require_calibrated
@@ -78,6 +79,11 @@ TUNED = -1.0                # the value of a tuned parameter that means "as tune
 
 
 STEERED_RUNNERS = ("man",)      # criterion: the runners measured to turn, follow a path and face another way
+# criterion: where the man was measured to steer (docs/running.md, "Where steering is offered": a grid of
+# circles and figure eights, radii 6-50 m, 2.5-5 m/s): at 3.75 m/s and faster every curve fell, even a
+# circle of radius 50 m at 5 m/s; up to 3.5 m/s every curve asking at most 0.625 m/s^2 (v^2 / r) was run
+STEER_MAX_SPEED = 3.5
+STEER_MAX_ACCELERATION = 0.625
 
 class SpeedTable:
     """Tuned values of some parameters as functions of the running speed (piecewise linear,
@@ -277,13 +283,14 @@ class Running(Behaviour):
     schema = RunningSchema(
         Parameter("speed", "m/s", 3.5, 2.5, 5.0, "desired running speed on the ground plane"),
         Parameter("facing", "rad", 0.0, -math.pi, math.pi,
-                  "facing direction to run in (0 = +X, counter-clockwise), used when no path is given"),
+                  "direction to run in (0 = +X, counter-clockwise) when no path or course is given: the runner starts "
+                  "straight ahead and turns to it after turn_after m on turn_radius"),
         Choice("course", COURSES, "straight",
                "built-in path when no path is given: straight along facing, a turn by turn_angle, a figure eight, a circle"),
         Parameter("turn_angle", "rad", math.pi / 2, -math.pi, math.pi, "course 1: angle of the turn (left positive)"),
         Parameter("turn_radius", "m", 20.0, 1.5, 50.0,
-                  "course 1-3: radius of the turn, of each loop of the eight, of the circle (at 3.5 m/s a 90-degree "
-                  "turn of 10 m is run, an eight of 10 m loops is not: docs/running.md)"),
+                  "course 1-3 and facing: radius of the turn, of each loop of the eight, of the circle (the man: "
+                  "v^2 / r at most 0.625 m/s^2, up to 3.5 m/s; docs/running.md)"),
         Parameter("turn_after", "m", 15.0, 2.0, 200.0, "course 1-3: distance run straight before the turn or the loops"),
         Parameter("lean", "1", 1.0, 0.0, 1.5, "share of the lean into a turn that balances the centripetal force (atan(v^2 / (g r)))"),
         Points("path", "the path to run along, [x, y] points in metres from the start (in Blender: a curve "
@@ -308,9 +315,10 @@ class Running(Behaviour):
             if not speeds[0] <= speed <= speeds[-1]:
                 raise ParameterError(f"parameter speed={speed:g} m/s is out of range for the {name}; allowed range for "
                                      f"speed is [{speeds[0]:g}, {speeds[-1]:g}] m/s (the speeds of the {name}'s running table)")
-            turning = ("path" in self.params or Running.schema.by_name["course"].option(self.params["course"]) != "straight"
-                       or self.params["facing"] != 0.0)
-            if turning and name not in STEERED_RUNNERS:
+            path = path_for(self.params)
+            if path is not None and name in STEERED_RUNNERS:
+                check_steering(speed, path, self.params["lookahead"])
+            if path is not None and name not in STEERED_RUNNERS:
                 raise ParameterError(f"the {name} runs only straight ahead (course=straight, facing=0, no path): turning "
                                      f"is calibrated for {', '.join(STEERED_RUNNERS)} only (the woman fell 1.6 s into "
                                      f"a run at facing=1 and 4.1 s into the turn, circle and figure-eight courses at "
@@ -836,9 +844,33 @@ class Running(Behaviour):
         targets[ji["mt"]] = 0.0
 
 
+def check_steering(speed: float, path: np.ndarray, lookahead: float) -> None:
+    """A run along ``path`` (in the runner's frame: it starts at the origin facing +X) is offered
+    where the man was measured to steer: a path with a bend (the turn from +X onto the path's first
+    direction included) at most STEER_MAX_SPEED, its tightest bend (at the look-ahead's scale, as
+    pure pursuit cuts it) asking at most STEER_MAX_ACCELERATION of lateral acceleration; else
+    refused, naming what would do."""
+    radius, where = tightest_radius(np.vstack([[-lookahead, 0.0], path]), lookahead)
+    if not math.isfinite(radius):
+        return                                              # a straight line along the runner's heading
+    if speed > STEER_MAX_SPEED:
+        raise ParameterError(f"a course, a path or a facing other than 0 is run at speed <= {STEER_MAX_SPEED:g} m/s "
+                             f"(asked: {speed:g} m/s): faster, every curve measured fell, even a circle of radius "
+                             f"50 m at 5 m/s (docs/running.md, where steering is offered); run straight or slower")
+    if speed * speed / radius > STEER_MAX_ACCELERATION * 1.01:    # definition: a polyline measures its arcs up to 0.2 % tight
+        widest = speed * speed / STEER_MAX_ACCELERATION
+        slowest = math.sqrt(STEER_MAX_ACCELERATION * radius)
+        raise ParameterError(f"the path bends on a radius of {radius:.2f} m ({max(where - lookahead, 0.0):.1f} m along "
+                             f"it), which at speed {speed:g} m/s asks {speed * speed / radius:.2f} m/s^2 of lateral "
+                             f"acceleration; at most {STEER_MAX_ACCELERATION:g} m/s^2 is run: a radius >= {widest:.1f} m"
+                             + (f" or speed <= {slowest:.2f} m/s" if slowest >= 2.5 else "")
+                             + " (docs/running.md, where steering is offered)")
+
+
 def path_for(p: dict, placement: Placement | None = None):
-    """The polyline a run follows: the user's points, a built-in course, or None (facing); in
-    the world frame of a runner placed at ``placement`` (None: the origin, facing +X)."""
+    """The polyline a run follows: the user's points, a built-in course, a turn to ``facing``
+    (straight ahead for turn_after m, then a turn by facing on turn_radius), or None (straight
+    ahead); in the world frame of a runner placed at ``placement`` (None: the origin, facing +X)."""
     if "path" in p:
         path = np.asarray(p["path"], dtype=float)
     else:
@@ -849,6 +881,8 @@ def path_for(p: dict, placement: Placement | None = None):
             path = figure_eight_path(p["turn_radius"], p["turn_after"])
         elif course == "circle":
             path = circle_path(p["turn_radius"], p["turn_after"])
+        elif p["facing"] != 0.0:
+            path = turn_path(p["facing"], p["turn_after"], p["turn_radius"])
         else:
             return None
     if placement is None:
