@@ -26,7 +26,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...ballistics import GRAVITY
-from ...control.path import turn_path, validate_path
+from ...control.path import tightest_radius, turn_path, validate_path
 from ...errors import ParameterError
 from ...schema import Choice
 
@@ -95,6 +95,10 @@ def course_for(p: dict) -> Course:
         _check_coast(p["speed"], p["coast_min_speed"])
     if "path" in p:
         path = np.asarray(p["path"], dtype=float)
+        lookahead = p["lookahead_time"] * max(speed for _, speed in speeds)
+        radius, where = tightest_radius(np.vstack([[-lookahead, 0.0], path]), lookahead)
+        if math.isfinite(radius):
+            _check_turn(max(speed for _, speed in speeds), radius, f"path, {max(where - lookahead, 0.0):.1f} m along it")
     coast_from = p["coast_after"] if name in FREEWHEEL_COURSES else None
     return Course(name, path, speeds, start_speed, gates, p["gate_width"], hill, coast_from, name == "stop")
 
