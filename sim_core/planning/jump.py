@@ -35,6 +35,8 @@ from .. import tuned
 from ..errors import ParameterError
 from ..simulate import RunRequest, run
 from ..tuning import SerialExecutor, Space, minimize
+from ..skills.jump_to_target.region import model
+from .jump_model import plan_from_model
 
 PLAN_MARGIN = 0.6                   # the search aims inside this share of the tolerances
 
@@ -155,6 +157,10 @@ def plan_jump(character: str, target, air_time: float, windup_time: float, stren
     target = tuple(float(v) for v in target) + ((0.0,) if len(target) == 3 else ())
     if not isinstance(budget, int) or budget < 1:
         raise_budget(budget)
+    if target[2] == 0 and not obstacle_of(target) and strength == "human" and not restart and start is None \
+            and model(character) is not None:        # on flat ground: from the measured jumps (jump_model)
+        trial = JumpTrial(character, target, air_time, windup_time, strength, cancelled)
+        return plan_from_model(character, target, air_time, trial, budget, progress, cancelled)
     space = Space(knobs_for(target))
     fallback = search_prior(character, target)
     previous = stored_plan(character, request_of(target, air_time, windup_time, strength))
