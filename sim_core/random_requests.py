@@ -28,7 +28,7 @@ import numpy as np
 
 from .control.leap import commandable_heights, load_mapping, rise_tolerance
 from .errors import ParameterError
-from .planning.jump_model import MODEL_TRIALS
+from .planning.jump import MODEL_TRIALS
 from .tuning import executor_for
 
 # the ranges issue 29 names for a jump to a target on the ground

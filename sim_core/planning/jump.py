@@ -5,7 +5,10 @@ finds one: it searches the leap's settings (the wind-up pose, the lean, arm swin
 angle and the landing's foot delta, foot lead and arm swing in flight) over whole simulated
 jumps, each trial a ``simulate.run`` of the leap, judged by what the simulation did (the middle of
 the feet at touchdown, the time the feet were off the ground, whether the jump ended balanced).
-The search is the search service's (sim_core.tuning): CMA-ES over every setting from the request's
+On flat ground without an obstacle a request is planned from the character's measured jumps
+(plan_from_model; the jump_model table, python -m sim_core.planning.jump_model): the nearest
+measured balanced jump, then blends towards near ones, at most MODEL_TRIALS trials. Elsewhere the
+search is the search service's (sim_core.tuning): CMA-ES over every setting from the request's
 start (the best trial of an earlier search for the same request, else the stored plan found
 nearest the target, else a prior), then CMA-ES again with a short step from the best balanced
 trial (REFINE_SHARE of the budget): the landing point is not smooth in the settings - a balanced
@@ -29,14 +32,13 @@ from typing import Callable
 import numpy as np
 
 from ..character.spec import load_character
-from ..control.leap import load_mapping
+from ..control.leap import blend_rows, load_mapping
 from ..skills.jump_to_target.behaviour import AIR_TIME_TOLERANCE, KNOB_DEFAULTS, LANDING_TOLERANCE, REQUEST_KEYS, JumpToTarget, check_request, landing_measures, leap_params, obstacle_of, plan_store_dir, read_plans, same_request, scene_for, stored_plan, stored_plans
 from .. import tuned
-from ..errors import ParameterError
+from ..errors import Cancelled, ParameterError
 from ..simulate import RunRequest, run
 from ..tuning import SerialExecutor, Space, minimize
-from ..skills.jump_to_target.region import model
-from .jump_model import plan_from_model
+from ..skills.jump_to_target.region import model, nearest_balanced
 
 PLAN_MARGIN = 0.6                   # the search aims inside this share of the tolerances
 
@@ -72,6 +74,9 @@ BROAD_PRIOR = {"crouch_height": 0.655, "crouch_pitch": 0.0, "com_offset": 0.1, "
 LANDING_PRIOR = {"foot_delta": 0.0, "landing_swing_arms": 0.0, "landing_arm_flexion": 0.6, "landing_foot_lead_time": 0.2}
 
 
+MODEL_TRIALS = 6                    # at most this many trials a flat-ground request planned from the measured
+                                    # jumps runs (about 1.5 s each)
+NEIGHBOURS = 8                      # measured balanced jumps its trials start from or blend towards
 REFINE_SHARE = 0.4                  # share of a search's trials kept for refining the best balanced trial
 POPULATION = 12                     # trials per batch of the first stage (CMA-ES's population)
 FIRST_STEP = 0.25                   # the first stage's step, as a share of each setting's range
@@ -200,6 +205,46 @@ def plan_jump(character: str, target, air_time: float, windup_time: float, stren
         settings, measured = previous["settings"], previous["measured"]     # the earlier search did better
     return {"settings": settings, "measured": measured, "trials": len(tried) + (previous or {}).get("trials", 0),
             "found": within_tolerance(measured, target, air_time)}
+
+
+def candidates(near: list[tuple[float, dict]], target, air_time: float):
+    """The settings a request's trials run, in order: the measured balanced jump nearest the request,
+    then that jump blended (control.leap.blend_rows) towards each other near one that landed on the
+    other side of the target, by the share of the way that puts the landing on the target if the
+    landing is linear in the settings between them (interpolation of the measured data)."""
+    first = near[0][1]
+    yield first["settings"]
+    x0, t0 = first["measured"]["landing"][0], first["measured"]["air_time"]
+    for _, other in near[1:]:
+        x1, t1 = other["measured"]["landing"][0], other["measured"]["air_time"]
+        if (x1 - x0) * (float(target[0]) - x0) <= 0 or abs(x1 - x0) < 1e-3:
+            continue
+        w = min(max((float(target[0]) - x0) / (x1 - x0), 0.0), 1.0)
+        yield blend_rows(first["settings"], other["settings"], w)
+
+
+def plan_from_model(character: str, target, air_time: float, trial, budget: int, progress=None,
+                    cancelled=None) -> dict:
+    """Plan a jump on flat ground from the measured jumps: run candidates() one by one (``trial``:
+    planning.jump.JumpTrial for the request) until one lands within the tolerances and balanced, at
+    most min(budget, MODEL_TRIALS) of them. Returns the planner's {"settings", "measured",
+    "trials", "found"} (the best trial, found or not)."""
+    near = nearest_balanced(character, target, air_time, NEIGHBOURS)
+    tried = []
+    for settings in candidates(near, target, air_time):
+        if len(tried) >= min(budget, MODEL_TRIALS):
+            break
+        if cancelled is not None and cancelled():
+            raise Cancelled("planning cancelled")
+        cost, measured = trial(settings)
+        tried.append((cost, len(tried), settings, measured))
+        if progress is not None:
+            progress(len(tried), min(budget, MODEL_TRIALS), min(tried, key=lambda e: (e[0], e[1]))[3])
+        if within_tolerance(measured, target, air_time):
+            break
+    cost, _, settings, measured = min(tried, key=lambda e: (e[0], e[1]))
+    return {"settings": settings, "measured": measured, "trials": len(tried),
+            "found": bool(within_tolerance(measured, target, air_time))}
 
 
 def _best(tried: list, balanced: bool = False):

@@ -9,8 +9,8 @@ balanced or not). They are kept in ``sim_core/tuned/tables/jump_model_<character
 
 The model maps a request (x, y, air time) to the measured balanced jumps near it, in units of
 TARGETS.md's tolerances (``request_distance``): the nearest is a working answer where it is
-within the tolerance, and the planner (planning.jump.plan_from_model) blends the nearest ones
-for a request between them. The region a character is offered is where a measured balanced jump
+within the tolerance, and the planner (planning.jump.plan_from_model) runs it, then blends of it
+with the near ones on the other side of the target. The region a character is offered is where a measured balanced jump
 lands within ``REACH`` tolerances of the request (``nearest_balanced``); the refusal names the
 nearest and the air times and lateral offsets measured near that distance (``region_refusal``).
 """
@@ -26,10 +26,10 @@ from pathlib import Path
 import numpy as np
 
 from ..control.leap import LEAP_SETTINGS, blend_rows, broad_rows, load_mapping
-from ..errors import Cancelled
 from ..skills.jump_to_target.behaviour import KNOB_DEFAULTS, read_plans
-from ..skills.jump_to_target.region import JUMP_MODEL_TABLE, LANDING_TOLERANCE, model, nearest_balanced  # noqa: F401  (the row type, for save)
+from ..skills.jump_to_target.region import JUMP_MODEL_TABLE, LANDING_TOLERANCE, model  # noqa: F401  (the row type, for save)
 from .. import tuned
+from .jump import measure_settings
 
 # nudges of a calibrated jump's settings measured around it: (setting, change). A broad row is a
 # knife edge (the man's 1.0 m row: com_offset +0.005 m fell, -0.005 m landed 13 cm short and
@@ -51,8 +51,6 @@ NUDGES = tuple(((name, change),) for name, change in (
     (("crouch_height", -0.06), ("com_offset", -0.05), ("liftoff_hip", 0.2)))
 FILL_STEPS = (0.25, 0.5, 0.75)      # shares of the way between the jumps around a gap that fill measures
 FILL_ROUNDS = 2                     # rounds of fill over the gaps left
-MODEL_TRIALS = 6        # at most this many trials a request planned from the model runs (about 1 s each)
-NEIGHBOURS = 8          # measured balanced jumps a request's trials start from or blend towards
 WINDUP_TIME = 1.25      # s: the wind-up the calibration jumps ran with (the schema's default)
 PLAN_KEYS = ("crouch_height", "crouch_pitch", "com_offset", "liftoff_hip", "arm_swing", "thrust_damping",
              "foot_delta", "vertical_thrust", "landing_swing_arms", "landing_arm_flexion", "landing_foot_lead_time")
@@ -98,51 +96,9 @@ def nudged(settings: dict, only: tuple = ()) -> list[dict]:
     return out
 
 
-def candidates(near: list[tuple[float, dict]], target, air_time: float):
-    """The settings a request's trials run, in order: the measured balanced jump nearest the request,
-    then that jump blended (control.leap.blend_rows) towards each other near one that landed on the
-    other side of the target, by the share of the way that puts the landing on the target if the
-    landing is linear in the settings between them (interpolation of the measured data)."""
-    first = near[0][1]
-    yield first["settings"]
-    x0, t0 = first["measured"]["landing"][0], first["measured"]["air_time"]
-    for _, other in near[1:]:
-        x1, t1 = other["measured"]["landing"][0], other["measured"]["air_time"]
-        if (x1 - x0) * (float(target[0]) - x0) <= 0 or abs(x1 - x0) < 1e-3:
-            continue
-        w = min(max((float(target[0]) - x0) / (x1 - x0), 0.0), 1.0)
-        yield blend_rows(first["settings"], other["settings"], w)
-
-
-def plan_from_model(character: str, target, air_time: float, trial, budget: int, progress=None,
-                    cancelled=None) -> dict:
-    """Plan a jump on flat ground from the measured jumps: run candidates() one by one (``trial``:
-    planning.jump.JumpTrial for the request) until one lands within the tolerances and balanced, at
-    most min(budget, MODEL_TRIALS) of them. Returns the planner's {"settings", "measured",
-    "trials", "found"} (the best trial, found or not)."""
-    from .jump import within_tolerance
-    near = nearest_balanced(character, target, air_time, NEIGHBOURS)
-    tried = []
-    for settings in candidates(near, target, air_time):
-        if len(tried) >= min(budget, MODEL_TRIALS):
-            break
-        if cancelled is not None and cancelled():
-            raise Cancelled("planning cancelled")
-        cost, measured = trial(settings)
-        tried.append((cost, len(tried), settings, measured))
-        if progress is not None:
-            progress(len(tried), min(budget, MODEL_TRIALS), measured)
-        if within_tolerance(measured, target, air_time):
-            break
-    cost, _, settings, measured = min(tried, key=lambda e: (e[0], e[1]))
-    return {"settings": settings, "measured": measured, "trials": len(tried),
-            "found": bool(within_tolerance(measured, target, air_time))}
-
-
 def measure(character: str, settings: dict, log=None) -> dict:
     """One calibration jump: the settings run as a jump to the point they were planned for (the
     target only names the broad thrust; the landing is measured)."""
-    from .jump import measure_settings
     measured = measure_settings(character, settings, (1.0, 0.0, 0.0, 0.0), 0.45, WINDUP_TIME)
     keep = {k: measured[k] for k in ("landing", "air_time", "outcome")}
     return {"settings": settings, "measured": keep}

@@ -109,7 +109,7 @@ def region_refusal(character: str, target, air_time: float) -> str | None:
                     else f" (measured landings: {xs[0]:.2f}-{xs[-1]:.2f} m)"))
     elif not timed:
         limit = (f"air_time at {x:.2f} m forward is offered only in "
-                 f"{intervals([(h['air_time'] - window, h['air_time'] + window) for h in here])} s")
+                 f"{intervals([(max(h['air_time'] - window, 0.0), h['air_time'] + window) for h in here])} s")
     else:
         spans = [(h["landing"][1] - math.sqrt(max(reach ** 2 - (h["landing"][0] - x) ** 2, 0.0)),
                   h["landing"][1] + math.sqrt(max(reach ** 2 - (h["landing"][0] - x) ** 2, 0.0))) for h in timed]
