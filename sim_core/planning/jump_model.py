@@ -139,20 +139,24 @@ def gaps(points: list[dict]) -> list[tuple[dict, dict]]:
 
 def fill(character: str, points: list[dict], sink=None, rounds: int = FILL_ROUNDS) -> list[dict]:
     """Blends (control.leap.blend_rows) of the two balanced jumps around each gap (gaps), at
-    FILL_STEPS shares of the way, measured; repeated over the gaps left, ``rounds`` times. Returns
-    the new jumps (balanced or not)."""
+    FILL_STEPS shares of the way, measured unless measured already (a jump is deterministic);
+    repeated over the gaps left, ``rounds`` times. Returns the new jumps (balanced or not)."""
     added = []
     for _ in range(rounds):
         todo = gaps(points + added)
         for a, b in todo:
             for w in FILL_STEPS:
-                added.append(_logged(measure(character, blend_rows(a["settings"], b["settings"], w)), sink))
+                settings = blend_rows(a["settings"], b["settings"], w)
+                if not any(p["settings"] == settings for p in points + added):     # measured already: the same
+                    added.append(_logged(measure(character, settings), sink))
         print(f"{character}: filled {len(todo)} gaps, {len(added)} jumps, "
               f"{sum(p['measured']['outcome'] == 'success' for p in added)} balanced", file=sys.stderr, flush=True)
     return added
 
 
 def store(character: str, points: list[dict], directory: Path | None = None) -> Path:
+    """Write the table, each jump once (the first of any with the same settings)."""
+    points = [p for k, p in enumerate(points) if not any(q["settings"] == p["settings"] for q in points[:k])]
     return tuned.save("jump_model", character, {"script": "python -m sim_core.planning.jump_model", "points": points},
                       strengths=["human"], directory=directory)
 
