@@ -49,6 +49,13 @@ NUDGES = tuple(((name, change),) for name, change in (
     # extended at lift-off, 0.63 m in 0.54 s; deeper alone, or a wider arm swing, fell)
     (("crouch_height", -0.04), ("com_offset", -0.03)),
     (("crouch_height", -0.06), ("com_offset", -0.05), ("liftoff_hip", 0.2)))
+OUTWARD = (("com_offset_y", 0.02),)    # from a balanced jump that landed LATERAL_EDGE or more to a side:
+                                        # 0.02 m more lean that way (the nudges' step)
+LONGER = (("crouch_height", -0.02), ("com_offset", -0.015))    # from one that flew LONG_EDGE or longer: a
+                                        # deeper crouch leaning less (half the compound nudge's step)
+LATERAL_EDGE = 0.025                    # m: a landing this far to a side is at the measured region's edge
+LONG_EDGE = 0.5                         # s: a flight this long is at its edge (the broad rows fly 0.36-0.54 s)
+EXTEND_ROUNDS = 2                       # steps outward from the edge
 FILL_STEPS = (0.25, 0.5, 0.75)      # shares of the way between the jumps around a gap that fill measures
 FILL_ROUNDS = 2                     # rounds of fill over the gaps left
 WINDUP_TIME = 1.25      # s: the wind-up the calibration jumps ran with (the schema's default)
@@ -105,8 +112,8 @@ def measure(character: str, settings: dict, log=None) -> dict:
 
 
 def calibrate(character: str, out: Path | None = None, directory: Path | None = None, only: tuple = ()) -> list[dict]:
-    """Measure every base and its nudges (one process; about 1.5 s a jump), then fill the gaps
-    between their balanced landings (fill), and store the table. ``only``: measure just the nudges
+    """Measure every base and its nudges (one process; about 1.5 s a jump), step outward from the
+    edge (extend), fill the gaps between the balanced landings (fill), and store the table. ``only``: measure just the nudges
     that change every one of these settings and add them to the stored table's jumps."""
     points = list(model(character)["points"]) if only else []
     began = time.perf_counter()
@@ -116,6 +123,7 @@ def calibrate(character: str, out: Path | None = None, directory: Path | None = 
             points.append(_logged(measure(character, settings), sink))
         print(f"{character}: base {k + 1}, {len(points)} jumps, {sum(p['measured']['outcome'] == 'success' for p in points)}"
               f" balanced, {time.perf_counter() - began:.0f} s", file=sys.stderr, flush=True)
+    points += extend(character, points, sink)
     points += fill(character, points, sink)
     store(character, points, directory)
     return points
@@ -126,6 +134,38 @@ def _logged(point: dict, sink) -> dict:
         sink.write(json.dumps(point) + "\n")
         sink.flush()
     return point
+
+
+def extend(character: str, points: list[dict], sink=None, rounds: int = EXTEND_ROUNDS) -> list[dict]:
+    """Steps outward from the balanced jumps at the edge of the measured region: OUTWARD (more lean
+    to the side it landed) from those LATERAL_EDGE or more to a side, LONGER from those that flew
+    LONG_EDGE or longer; each round from the balanced edge jumps the round before added (the first
+    from all). Returns the new jumps (balanced or not)."""
+    ranges = {p.name: (p.minimum, p.maximum) for p in LEAP_SETTINGS.parameters}
+    added, edge = [], balanced_points(points)
+    for _ in range(rounds):
+        new = []
+        for p in edge:
+            steps = []
+            side = p["measured"]["landing"][1]
+            if abs(side) >= LATERAL_EDGE:
+                steps.append([(n, math.copysign(c, side)) for n, c in OUTWARD])
+            if p["measured"]["air_time"] >= LONG_EDGE:
+                steps.append(list(LONGER))
+            for step in steps:
+                settings = dict(p["settings"])
+                for n, c in step:
+                    settings[n] = min(max(settings[n] + c, ranges[n][0]), ranges[n][1])
+                if not any(q["settings"] == settings for q in points + added + new):
+                    new.append(_logged(measure(character, settings), sink))
+        added += new
+        edge = balanced_points(new)
+        print(f"{character}: extended by {len(new)} jumps, {len(edge)} balanced", file=sys.stderr, flush=True)
+    return added
+
+
+def balanced_points(points: list[dict]) -> list[dict]:
+    return [p for p in points if p["measured"]["outcome"] == "success"]
 
 
 def gaps(points: list[dict]) -> list[tuple[dict, dict]]:
@@ -167,11 +207,16 @@ def main(argv=None) -> int:
     parser.add_argument("--log", help="also append every measured jump to this JSON-lines file")
     parser.add_argument("--only", default="", help="comma-separated settings: measure only the nudges that change "
                                                    "every one of them and add them to the stored table")
+    parser.add_argument("--extend-only", action="store_true",
+                        help="only step outward from the stored table's edge (extend), adding to it")
     parser.add_argument("--fill-only", action="store_true",
                         help="only fill the gaps of the stored table's jumps (fill), adding to it")
     args = parser.parse_args(argv)
     for character in [c.strip() for c in args.characters.split(",") if c.strip()]:
-        if args.fill_only:
+        if args.extend_only:
+            points = list(model(character)["points"])
+            store(character, points + extend(character, points, open(args.log, "a") if args.log else None))
+        elif args.fill_only:
             points = list(model(character)["points"])
             sink = open(args.log, "a") if args.log else None
             store(character, points + fill(character, points, sink))
