@@ -17,7 +17,7 @@ from sim_core.skills.jump_to_target.behaviour import GROUND_AIR_TIME, stored_pla
 
 ROOT = Path(__file__).resolve().parents[1]
 UNPLANNED = {"target_x": 1.17, "air_time": GROUND_AIR_TIME}     # no shipped plan has this request
-SLOW_TO_PLAN = {**UNPLANNED, "target_y": 0.3}     # no shipped plan is near it: its search runs on for many trials
+SLOW_TO_PLAN = {"target_x": 0.9, "target_z": 0.6, "air_time": 0.6}   # onto a box no plan is for: its search runs on
 WINDUP_TIME = 1.25
 
 
@@ -76,17 +76,17 @@ def _cli(*args, store: Path) -> subprocess.CompletedProcess:
 
 
 def test_plan_stores_a_plan_that_a_later_simulate_finds_without_a_trial(tmp_path):
-    """A 4-trial plan for 1.31 m (nobody planned it; it starts from the shipped 1.3 m plan and
-    lands within 5 cm), in two worker processes, stored in --store; a later simulate finds it,
-    runs no trial, and its run is the plan's trial again (the same landing)."""
+    """A plan of at most 4 trials for 1.31 m (nobody planned it; on flat ground it starts from the
+    measured jump nearest it, which lands within 5 cm), stored in --store; a later simulate finds
+    it, runs no trial, and its run is the plan's trial again (the same landing)."""
     store = tmp_path / "plans"
     sets = ["--set", "target_x=1.31"]
     planned = _cli("plan", "jump_to_target", "--character", "man", *sets, "--budget", "4", "--workers", "2",
                    "--store", str(store), store=tmp_path / "unused")
     assert planned.returncode == 0, planned.stderr
     summary = json.loads(planned.stdout.strip().splitlines()[-1])
-    assert summary["found"] and summary["trials"] >= 4 and summary["store"] == str(store)
-    assert "planning: 4/4 trials" in planned.stderr
+    assert summary["found"] and 1 <= summary["trials"] <= 4 and summary["store"] == str(store)
+    assert f"planning: {summary['trials']}/4 trials" in planned.stderr
     plans = json.loads((store / "jump_targets_man.json").read_text())["plans"]
     assert len(plans) == 1 and plans[0]["request"]["target_x"] == pytest.approx(1.31)
     assert not list(store.glob("*.tmp"))                                   # written through a temporary file

@@ -46,14 +46,15 @@ def test_target_params_are_measured_from_the_middle_of_the_feet():
     ({"air_time": -0.2}, ["air_time=-0.2", "allowed range"]),
     ({"target_x": 2.5, "air_time": 0.1}, ["needs a take-off at", "strongest take-off of man"]),
     ({"target_x": -1.0}, ["target_x=-1", "allowed range"]),
-    ({"target_x": 0.0, "target_y": 1.1, "plan_trials": 0}, ["no stored plan"]),
-    ({"target_x": 1.1, "plan_trials": 120}, ["no stored plan", "python -m sim_core plan jump_to_target "
-                                             "--character man --set target_x=1.1"]),     # a run never plans
+    ({"target_x": 0.0, "target_y": 1.1, "plan_trials": 0}, ["outside the region", "air_time at 0.00 m forward is offered only in"]),
+    ({"target_x": 1.2, "plan_trials": 120}, ["no stored plan", "python -m sim_core plan jump_to_target "
+                                             "--character man --set target_x=1.2"]),     # a run never plans
     ({"target_x": 0.0, "target_y": 0.0}, ["target_x=0", "not back or on the spot"]),
     ({"target_z": -0.5, "obstacle_height": 0.3, "target_x": 0.5}, ["obstacle_height=0.3", "ahead of the toes"]),
     ({"target_z": 0.5, "obstacle_height": 0.3, "target_x": 1.5}, ["obstacle_height=0.3", "target_z <= 0"]),
     ({"obstacle_height": -0.1}, ["obstacle_height", "allowed range"]),
-    ({"target_x": 1.1, "plan_trials": 0}, ["no stored plan", "plan it first"]),
+    ({"target_x": 1.2, "plan_trials": 0}, ["no stored plan", "plan it first"]),
+    ({"target_x": 1.1, "plan_trials": 0}, ["outside the region", "measured landings go from"]),
 ])
 def test_bad_requests_are_refused_before_simulating(params, words):
     with pytest.raises(ParameterError) as refused:

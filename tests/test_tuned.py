@@ -181,10 +181,11 @@ ALLOWED = {
     "skills.somersault.behaviour": {"TUCK": "definition", "ROTATION_TOLERANCE": "criterion"},
     "skills.jump_to_target.behaviour": {n: "search" for n in ("TAKEOFF_COM", "TOUCHDOWN_COM", "WINDUP_OVERHEAD", "KNOB_DEFAULTS",
                                                    "MIN_CROUCH_TIME", "MIN_BROAD_DISTANCE")}
-                   | {n: "criterion" for n in ("LANDING_TOLERANCE", "AIR_TIME_TOLERANCE", "GROUND_AIR_TIME",
+                   | {n: "criterion" for n in ("GROUND_AIR_TIME",
                                                "SIDEWAYS_AIR_TIME", "BOX_DISTANCE", "BOX_AIR_TIME", "BOX_LENGTH",
                                                "BOX_WIDTH", "START_BOX_LENGTH", "START_BOX_EDGE", "OBSTACLE_LENGTH",
                                                "OBSTACLE_ROOM")},
+    "skills.jump_to_target.region": {n: "criterion" for n in ("LANDING_TOLERANCE", "AIR_TIME_TOLERANCE", "REACH")},
     # the bicycle's inverse-kinematics solver settings (numerics, not control) and its judging threshold
     "skills.bicycle.mount": {n: "definition" for n in ("IK_DAMPING", "IK_POSTURE_WEIGHT", "IK_ITERATIONS",
                                                        "IK_ITERATIONS_PER_TICK", "IK_TOLERANCE")},

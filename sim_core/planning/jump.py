@@ -5,7 +5,10 @@ finds one: it searches the leap's settings (the wind-up pose, the lean, arm swin
 angle and the landing's foot delta, foot lead and arm swing in flight) over whole simulated
 jumps, each trial a ``simulate.run`` of the leap, judged by what the simulation did (the middle of
 the feet at touchdown, the time the feet were off the ground, whether the jump ended balanced).
-The search is the search service's (sim_core.tuning): CMA-ES over every setting from the request's
+On flat ground without an obstacle a request is planned from the character's measured jumps
+(plan_from_model; the jump_model table, python -m sim_core.planning.jump_model): the nearest
+measured balanced jump, then blends towards near ones, at most MODEL_TRIALS trials. Elsewhere the
+search is the search service's (sim_core.tuning): CMA-ES over every setting from the request's
 start (the best trial of an earlier search for the same request, else the stored plan found
 nearest the target, else a prior), then CMA-ES again with a short step from the best balanced
 trial (REFINE_SHARE of the budget): the landing point is not smooth in the settings - a balanced
@@ -29,12 +32,13 @@ from typing import Callable
 import numpy as np
 
 from ..character.spec import load_character
-from ..control.leap import load_mapping
+from ..control.leap import blend_rows, load_mapping
 from ..skills.jump_to_target.behaviour import AIR_TIME_TOLERANCE, KNOB_DEFAULTS, LANDING_TOLERANCE, REQUEST_KEYS, JumpToTarget, check_request, landing_measures, leap_params, obstacle_of, plan_store_dir, read_plans, same_request, scene_for, stored_plan, stored_plans
 from .. import tuned
-from ..errors import ParameterError
+from ..errors import Cancelled, ParameterError
 from ..simulate import RunRequest, run
 from ..tuning import SerialExecutor, Space, minimize
+from ..skills.jump_to_target.region import model, nearest_balanced
 
 PLAN_MARGIN = 0.6                   # the search aims inside this share of the tolerances
 
@@ -70,6 +74,9 @@ BROAD_PRIOR = {"crouch_height": 0.655, "crouch_pitch": 0.0, "com_offset": 0.1, "
 LANDING_PRIOR = {"foot_delta": 0.0, "landing_swing_arms": 0.0, "landing_arm_flexion": 0.6, "landing_foot_lead_time": 0.2}
 
 
+MODEL_TRIALS = 6                    # at most this many trials a flat-ground request planned from the measured
+                                    # jumps runs (about 1.5 s each)
+NEIGHBOURS = 8                      # measured balanced jumps its trials start from or blend towards
 REFINE_SHARE = 0.4                  # share of a search's trials kept for refining the best balanced trial
 POPULATION = 12                     # trials per batch of the first stage (CMA-ES's population)
 FIRST_STEP = 0.25                   # the first stage's step, as a share of each setting's range
@@ -82,7 +89,7 @@ def search_prior(character: str, target) -> dict:
     deep vertical leap leaning forward with the hips extending at lift-off; with the landing's
     defaults."""
     mapping = load_mapping(character)
-    if abs(target[1]) > 1e-9:
+    if _side(target[0], target[1]):
         prior = {**LANDING_PRIOR, **SIDEWAYS_PRIOR, "com_offset_y": math.copysign(0.17, target[1]),
                  "liftoff_roll": math.copysign(SIDEWAYS_LIFTOFF_ROLL, -target[1])}
     elif target[2] > 0:
@@ -155,6 +162,10 @@ def plan_jump(character: str, target, air_time: float, windup_time: float, stren
     target = tuple(float(v) for v in target) + ((0.0,) if len(target) == 3 else ())
     if not isinstance(budget, int) or budget < 1:
         raise_budget(budget)
+    if target[2] == 0 and not obstacle_of(target) and strength == "human" and not restart and start is None \
+            and model(character) is not None:        # on flat ground: from the measured jumps (jump_model)
+        trial = JumpTrial(character, target, air_time, windup_time, strength, cancelled)
+        return plan_from_model(character, target, air_time, trial, budget, progress, cancelled)
     space = Space(knobs_for(target))
     fallback = search_prior(character, target)
     previous = stored_plan(character, request_of(target, air_time, windup_time, strength))
@@ -194,6 +205,46 @@ def plan_jump(character: str, target, air_time: float, windup_time: float, stren
         settings, measured = previous["settings"], previous["measured"]     # the earlier search did better
     return {"settings": settings, "measured": measured, "trials": len(tried) + (previous or {}).get("trials", 0),
             "found": within_tolerance(measured, target, air_time)}
+
+
+def candidates(near: list[tuple[float, dict]], target, air_time: float):
+    """The settings a request's trials run, in order: the measured balanced jump nearest the request,
+    then that jump blended (control.leap.blend_rows) towards each other near one that landed on the
+    other side of the target, by the share of the way that puts the landing on the target if the
+    landing is linear in the settings between them (interpolation of the measured data)."""
+    first = near[0][1]
+    yield first["settings"]
+    x0, t0 = first["measured"]["landing"][0], first["measured"]["air_time"]
+    for _, other in near[1:]:
+        x1, t1 = other["measured"]["landing"][0], other["measured"]["air_time"]
+        if (x1 - x0) * (float(target[0]) - x0) <= 0 or abs(x1 - x0) < 1e-3:
+            continue
+        w = min(max((float(target[0]) - x0) / (x1 - x0), 0.0), 1.0)
+        yield blend_rows(first["settings"], other["settings"], w)
+
+
+def plan_from_model(character: str, target, air_time: float, trial, budget: int, progress=None,
+                    cancelled=None) -> dict:
+    """Plan a jump on flat ground from the measured jumps: run candidates() one by one (``trial``:
+    planning.jump.JumpTrial for the request) until one lands within the tolerances and balanced, at
+    most min(budget, MODEL_TRIALS) of them. Returns the planner's {"settings", "measured",
+    "trials", "found"} (the best trial, found or not)."""
+    near = nearest_balanced(character, target, air_time, NEIGHBOURS)
+    tried = []
+    for settings in candidates(near, target, air_time):
+        if len(tried) >= min(budget, MODEL_TRIALS):
+            break
+        if cancelled is not None and cancelled():
+            raise Cancelled("planning cancelled")
+        cost, measured = trial(settings)
+        tried.append((cost, len(tried), settings, measured))
+        if progress is not None:
+            progress(len(tried), min(budget, MODEL_TRIALS), min(tried, key=lambda e: (e[0], e[1]))[3])
+        if within_tolerance(measured, target, air_time):
+            break
+    cost, _, settings, measured = min(tried, key=lambda e: (e[0], e[1]))
+    return {"settings": settings, "measured": measured, "trials": len(tried),
+            "found": bool(within_tolerance(measured, target, air_time))}
 
 
 def _best(tried: list, balanced: bool = False):
@@ -314,8 +365,11 @@ def store_plan(character: str, request: dict, plan: dict, script: str, directory
     _store(character, request, plan, script, directory)
 
 
-def _side(y: float) -> int:
-    return 0 if abs(y) < 1e-9 else (1 if y > 0 else -1)
+def _side(x: float, y: float) -> int:
+    """0 for a target more ahead than to the side (a broad jump, leaning sideways a little), else
+    1 to the left, -1 to the right: a target at (0.57, +0.008) m started from the pure-sideways 1.0 m
+    plan and every trial landed at (0.0, +1.0) m (docs/random_requests.md before issue 29's fix)."""
+    return 0 if abs(y) <= abs(x) else (1 if y > 0 else -1)
 
 
 def search_start(character: str, target, previous: dict | None, strength="human") -> dict | None:
@@ -348,7 +402,7 @@ def nearest_found_plan(character: str, target, strength="human", raised=False) -
              if p["found"] and p["request"].get("strength", "human") == strength
              and (p["request"]["target_z"] > 0 if raised else abs(p["request"]["target_z"] - float(target[2])) < 1e-6)
              and abs(p["request"].get("obstacle_height", 0.0) - obstacle_of(target)) < 1e-6
-             and _side(p["request"]["target_y"]) == _side(float(target[1]))]
+             and _side(p["request"]["target_x"], p["request"]["target_y"]) == _side(float(target[0]), float(target[1]))]
     if not plans:
         return None
     def distance(p):        # nearest; of two as near, the longer jump (shortening one is easier)

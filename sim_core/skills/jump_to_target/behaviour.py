@@ -36,6 +36,7 @@ from ..leap.behaviour import Leap
 from ...errors import ParameterError
 from ...schema import Parameter, Schema
 from ...tuned import TableType, load, register as register_table, require_calibrated, table_path
+from .region import AIR_TIME_TOLERANCE, LANDING_TOLERANCE, region_refusal
 
 # where the COM is, relative to the middle of the feet, at take-off and at touchdown of a broad
 # jump (measured on the man's calibrated 1.0 m jump; used only for the path estimate)
@@ -44,8 +45,6 @@ TOUCHDOWN_COM = (-0.25, 0.90)       # m ahead of the feet (behind: the feet land
 WINDUP_OVERHEAD = 0.45              # s of the wind-up that are not the crouch: standing still, thrust
 MIN_CROUCH_TIME = 0.3               # s: the shortest crouch a plan's wind-up asks of the leap
 MIN_BROAD_DISTANCE = 0.05           # m: a plan with the broad jump's thrust asks at least this distance (> 0: broad)
-LANDING_TOLERANCE = 0.05            # m: landing point within this of the target
-AIR_TIME_TOLERANCE = 0.05           # s
 
 KNOB_DEFAULTS = {"crouch_arms": 0.0, "liftoff_roll": 0.0,    # a knob a prior or a stored plan does not name
                  "thrust_lean": 0.0, "com_offset_y": 0.0,     # (arms hanging in the crouch, no lift-off roll,
@@ -212,8 +211,10 @@ def crouch_time(windup_time: float) -> float:
 
 def check_request(character, p: dict, strength: str) -> None:
     """The refusals of a jump that need no simulation (the box to clear, the direction, the
-    take-off speed against the character's strongest), for the behaviour and for the planner
-    before it searches; ``strength``: "human" or "unlimited" (leap.run_strength)."""
+    take-off speed against the character's strongest, and on flat ground a target outside the
+    region its measured jumps offer, region.region_refusal, unless a stored plan found it), for the
+    behaviour and for the planner before it searches; ``strength``: "human" or "unlimited"
+    (leap.run_strength)."""
     require_calibrated("leap", character.name, "leap")        # a jump to a target takes off as the leap does
     target = np.array([p["target_x"], p["target_y"], p["target_z"], p["obstacle_height"]])
     if p["obstacle_height"] > 0.0:
@@ -237,6 +238,11 @@ def check_request(character, p: dict, strength: str) -> None:
             f"needs a take-off at {speed:.2f} m/s (path estimate: {velocity[0]:.2f} forward, "
             f"{velocity[2]:.2f} up); the strongest take-off of {character.name} is {capacity:.2f} m/s - "
             f"allow a longer or shorter air time, or a nearer target")
+    if p["target_z"] == 0.0 and p["obstacle_height"] == 0.0 and strength == "human":
+        plan = stored_plan(character.name, {**{k: float(p[k]) for k in REQUEST_KEYS}, "strength": strength})
+        refusal = None if plan and plan["found"] else region_refusal(character.name, target[:2], p["air_time"])
+        if refusal:        # on flat ground: only where a measured balanced jump does it (region.py)
+            raise ParameterError(refusal)
 
 
 def plan_command(character: str, p: dict) -> str:

@@ -1,0 +1,230 @@
+"""The jump-to-target model (issue 29): which settings land where, measured.
+
+Calibration data: the leap's settings of every calibrated broad jump (control.leap, the broad rows)
+and of every stored ground plan straight ahead, each run as a jump to a target and also with its
+forward lean, lift-off hip angle, crouch depth and arm swing nudged (``NUDGES``), each trial
+measured as the planner measures one (landing point of the middle of the feet, air time,
+balanced or not). They are kept in ``sim_core/tuned/tables/jump_model_<character>.json``
+(``python -m sim_core.planning.jump_model --characters man,woman`` measures and writes them).
+
+The model maps a request (x, y, air time) to the measured balanced jumps near it, in units of
+TARGETS.md's tolerances (``request_distance``): the nearest is a working answer where it is
+within the tolerance, and the planner (planning.jump.plan_from_model) runs it, then blends of it
+with the near ones on the other side of the target. The region a character is offered is where a measured balanced jump
+lands within ``REACH`` tolerances of the request (``nearest_balanced``); the refusal names the
+nearest and the air times and lateral offsets measured near that distance (``region_refusal``).
+"""
+from __future__ import annotations
+
+import argparse
+import json
+import math
+import sys
+import time
+from pathlib import Path
+
+import numpy as np
+
+from ..control.leap import LEAP_SETTINGS, blend_rows, broad_rows, load_mapping
+from ..skills.jump_to_target.behaviour import KNOB_DEFAULTS, read_plans
+from ..skills.jump_to_target.region import JUMP_MODEL_TABLE, LANDING_TOLERANCE, model  # noqa: F401  (the row type, for save)
+from .. import tuned
+from .jump import measure_settings
+
+# nudges of a calibrated jump's settings measured around it: (setting, change). A broad row is a
+# knife edge (the man's 1.0 m row: com_offset +0.005 m fell, -0.005 m landed 13 cm short and
+# balanced; liftoff_hip -0.08 rad landed 5 cm short and balanced, +0.07 fell; a lift-off roll of
+# 0.02 rad fell): the nudges walk down from each row towards the shorter, balanced side, and deeper
+# or shallower crouches change the air time. A sideways lean lands a short jump to the side,
+# balanced (the man's 0.5 m row leaning 0.02 m left: (0.50, +0.03) m, 0.04 m: fell; the woman's
+# 0.54 m row leaning 0.04 m: (0.56, +0.10) m), a long one falls (the man's 1.0 m row at 0.005 m).
+NUDGES = tuple(((name, change),) for name, change in (
+    ("com_offset", -0.0025), ("com_offset", -0.005), ("com_offset", -0.01), ("com_offset", -0.015),
+    ("liftoff_hip", -0.05), ("liftoff_hip", -0.1), ("liftoff_hip", -0.15),
+    ("crouch_height", -0.01), ("crouch_height", 0.01), ("arm_swing", -0.2), ("arm_swing", 0.2),
+    ("com_offset_y", 0.02), ("com_offset_y", -0.02), ("com_offset_y", 0.04), ("com_offset_y", -0.04),
+    ("com_offset_y", 0.07), ("com_offset_y", -0.07))) + (
+    # a deeper crouch leaning less flies longer and shorter (the woman's 1.0 m row: 0.04 m deeper and
+    # 0.03 m less lean landed 0.77 m in 0.525 s, balanced; 0.06 / 0.05 and the hips 0.2 rad more
+    # extended at lift-off, 0.63 m in 0.54 s; deeper alone, or a wider arm swing, fell)
+    (("crouch_height", -0.04), ("com_offset", -0.03)),
+    (("crouch_height", -0.06), ("com_offset", -0.05), ("liftoff_hip", 0.2)))
+OUTWARD = (("com_offset_y", 0.02),)    # from a balanced jump that landed LATERAL_EDGE or more to a side:
+                                        # 0.02 m more lean that way (the nudges' step)
+LONGER = (("crouch_height", -0.02), ("com_offset", -0.015))    # from one that flew LONG_EDGE or longer: a
+                                        # deeper crouch leaning less (half the compound nudge's step)
+LATERAL_EDGE = 0.025                    # m: a landing this far to a side is at the measured region's edge
+LONG_EDGE = 0.5                         # s: a flight this long is at its edge (the broad rows fly 0.36-0.54 s)
+EXTEND_ROUNDS = 2                       # steps outward from the edge
+FILL_STEPS = (0.25, 0.5, 0.75)      # shares of the way between the jumps around a gap that fill measures
+FILL_ROUNDS = 2                     # rounds of fill over the gaps left
+WINDUP_TIME = 1.25      # s: the wind-up the calibration jumps ran with (the schema's default)
+PLAN_KEYS = ("crouch_height", "crouch_pitch", "com_offset", "liftoff_hip", "arm_swing", "thrust_damping",
+             "foot_delta", "vertical_thrust", "landing_swing_arms", "landing_arm_flexion", "landing_foot_lead_time")
+
+
+def plan_settings(row: dict) -> dict:
+    """A broad row's leap parameters as the planner's settings (a row with distance 0 runs the
+    vertical leap's thrust)."""
+    settings = {k: float(row.get(k, LEAP_SETTINGS.defaults().get(k, 0.0))) for k in PLAN_KEYS}
+    settings["vertical_thrust"] = float(row.get("distance", 0.0) <= 0.0 or row.get("vertical_thrust", 0.0) > 0.5)
+    settings.update({k: float(row.get(k, v)) for k, v in KNOB_DEFAULTS.items()})
+    return settings
+
+
+def bases(character: str) -> list[dict]:
+    """The settings measured around: every calibrated broad row and every stored plan on flat ground
+    straight ahead (found or not: its settings land somewhere), without repeats."""
+    found = [plan_settings(row) for row in broad_rows(load_mapping(character)["broad"])[1]]
+    for plan in read_plans(character):
+        r = plan["request"]
+        if r["target_z"] == 0 and r["target_y"] == 0 and not r.get("obstacle_height") and \
+                r.get("strength", "human") == "human" and abs(r["windup_time"] - WINDUP_TIME) < 1e-6:
+            found.append({**plan_settings(plan["settings"]), "vertical_thrust": float(plan["settings"]["vertical_thrust"])})
+    unique = []
+    for s in found:
+        if not any(all(abs(s[k] - u[k]) < 1e-9 for k in s) for u in unique):
+            unique.append(s)
+    return unique
+
+
+def nudged(settings: dict, only: tuple = ()) -> list[dict]:
+    """The settings and each NUDGE of them, inside the leap's ranges (``only``: just the nudges that
+    change every one of these settings, without the settings themselves)."""
+    ranges = {p.name: (p.minimum, p.maximum) for p in LEAP_SETTINGS.parameters}
+    out = [] if only else [dict(settings)]
+    for nudge in NUDGES:
+        if only and not set(only) <= {name for name, _ in nudge}:
+            continue
+        changed = dict(settings)
+        for name, change in nudge:
+            changed[name] = min(max(settings[name] + change, ranges[name][0]), ranges[name][1])
+        out.append(changed)
+    return out
+
+
+def measure(character: str, settings: dict, log=None) -> dict:
+    """One calibration jump: the settings run as a jump to the point they were planned for (the
+    target only names the broad thrust; the landing is measured)."""
+    measured = measure_settings(character, settings, (1.0, 0.0, 0.0, 0.0), 0.45, WINDUP_TIME)
+    keep = {k: measured[k] for k in ("landing", "air_time", "outcome")}
+    return {"settings": settings, "measured": keep}
+
+
+def calibrate(character: str, out: Path | None = None, directory: Path | None = None, only: tuple = ()) -> list[dict]:
+    """Measure every base and its nudges (one process; about 1.5 s a jump), step outward from the
+    edge (extend), fill the gaps between the balanced landings (fill), and store the table. ``only``: measure just the nudges
+    that change every one of these settings and add them to the stored table's jumps."""
+    points = list(model(character)["points"]) if only else []
+    began = time.perf_counter()
+    sink = open(out, "a") if out else None
+    for k, base in enumerate(bases(character)):
+        for settings in nudged(base, only):
+            points.append(_logged(measure(character, settings), sink))
+        print(f"{character}: base {k + 1}, {len(points)} jumps, {sum(p['measured']['outcome'] == 'success' for p in points)}"
+              f" balanced, {time.perf_counter() - began:.0f} s", file=sys.stderr, flush=True)
+    points += extend(character, points, sink)
+    points += fill(character, points, sink)
+    store(character, points, directory)
+    return points
+
+
+def _logged(point: dict, sink) -> dict:
+    if sink:
+        sink.write(json.dumps(point) + "\n")
+        sink.flush()
+    return point
+
+
+def extend(character: str, points: list[dict], sink=None, rounds: int = EXTEND_ROUNDS) -> list[dict]:
+    """Steps outward from the balanced jumps at the edge of the measured region: OUTWARD (more lean
+    to the side it landed) from those LATERAL_EDGE or more to a side, LONGER from those that flew
+    LONG_EDGE or longer; each round from the balanced edge jumps the round before added (the first
+    from all). Returns the new jumps (balanced or not)."""
+    ranges = {p.name: (p.minimum, p.maximum) for p in LEAP_SETTINGS.parameters}
+    added, edge = [], balanced_points(points)
+    for _ in range(rounds):
+        new = []
+        for p in edge:
+            steps = []
+            side = p["measured"]["landing"][1]
+            if abs(side) >= LATERAL_EDGE:
+                steps.append([(n, math.copysign(c, side)) for n, c in OUTWARD])
+            if p["measured"]["air_time"] >= LONG_EDGE:
+                steps.append(list(LONGER))
+            for step in steps:
+                settings = dict(p["settings"])
+                for n, c in step:
+                    settings[n] = min(max(settings[n] + c, ranges[n][0]), ranges[n][1])
+                if not any(q["settings"] == settings for q in points + added + new):
+                    new.append(_logged(measure(character, settings), sink))
+        added += new
+        edge = balanced_points(new)
+        print(f"{character}: extended by {len(new)} jumps, {len(edge)} balanced", file=sys.stderr, flush=True)
+    return added
+
+
+def balanced_points(points: list[dict]) -> list[dict]:
+    return [p for p in points if p["measured"]["outcome"] == "success"]
+
+
+def gaps(points: list[dict]) -> list[tuple[dict, dict]]:
+    """Neighbouring balanced landings (in forward distance) further apart than the tolerance's
+    diameter: the jumps on either side of a stretch no measured jump serves."""
+    ranked = sorted((p for p in points if p["measured"]["outcome"] == "success"),
+                    key=lambda p: p["measured"]["landing"][0])
+    return [(a, b) for a, b in zip(ranked, ranked[1:])
+            if b["measured"]["landing"][0] - a["measured"]["landing"][0] > 2 * LANDING_TOLERANCE]
+
+
+def fill(character: str, points: list[dict], sink=None, rounds: int = FILL_ROUNDS) -> list[dict]:
+    """Blends (control.leap.blend_rows) of the two balanced jumps around each gap (gaps), at
+    FILL_STEPS shares of the way, measured unless measured already (a jump is deterministic);
+    repeated over the gaps left, ``rounds`` times. Returns the new jumps (balanced or not)."""
+    added = []
+    for _ in range(rounds):
+        todo = gaps(points + added)
+        for a, b in todo:
+            for w in FILL_STEPS:
+                settings = blend_rows(a["settings"], b["settings"], w)
+                if not any(p["settings"] == settings for p in points + added):     # measured already: the same
+                    added.append(_logged(measure(character, settings), sink))
+        print(f"{character}: filled {len(todo)} gaps, {len(added)} jumps, "
+              f"{sum(p['measured']['outcome'] == 'success' for p in added)} balanced", file=sys.stderr, flush=True)
+    return added
+
+
+def store(character: str, points: list[dict], directory: Path | None = None) -> Path:
+    """Write the table, each jump once (the first of any with the same settings)."""
+    points = [p for k, p in enumerate(points) if not any(q["settings"] == p["settings"] for q in points[:k])]
+    return tuned.save("jump_model", character, {"script": "python -m sim_core.planning.jump_model", "points": points},
+                      strengths=["human"], directory=directory)
+
+
+def main(argv=None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--characters", default="man,woman")
+    parser.add_argument("--log", help="also append every measured jump to this JSON-lines file")
+    parser.add_argument("--only", default="", help="comma-separated settings: measure only the nudges that change "
+                                                   "every one of them and add them to the stored table")
+    parser.add_argument("--extend-only", action="store_true",
+                        help="only step outward from the stored table's edge (extend), adding to it")
+    parser.add_argument("--fill-only", action="store_true",
+                        help="only fill the gaps of the stored table's jumps (fill), adding to it")
+    args = parser.parse_args(argv)
+    for character in [c.strip() for c in args.characters.split(",") if c.strip()]:
+        if args.extend_only:
+            points = list(model(character)["points"])
+            store(character, points + extend(character, points, open(args.log, "a") if args.log else None))
+        elif args.fill_only:
+            points = list(model(character)["points"])
+            sink = open(args.log, "a") if args.log else None
+            store(character, points + fill(character, points, sink))
+        else:
+            calibrate(character, Path(args.log) if args.log else None,
+                      only=tuple(n.strip() for n in args.only.split(",") if n.strip()))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
