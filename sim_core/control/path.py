@@ -182,7 +182,7 @@ def tightest_radius(points: np.ndarray, chord: float) -> tuple[float, float]:
     sides = np.linalg.norm(b - a, axis=1) * np.linalg.norm(c - b, axis=1) * np.linalg.norm(c - a, axis=1)
     with np.errstate(divide="ignore", invalid="ignore"):
         radius = np.where(cross > 1e-12, sides / (2.0 * cross), math.inf)
-    k = int(np.argmax(radius <= radius.min() * (1.0 + 1e-3)))      # the first of equally tight bends
+    k = int(np.argmax(radius <= radius.min() * (1.0 + 1e-3)))      # definition: the first of bends as tight within 0.1 %
     return float(radius[k]), float(s[k])
 
 

@@ -863,7 +863,7 @@ def check_steering(speed: float, path: np.ndarray, lookahead: float) -> None:
         raise ParameterError(f"the path bends on a radius of {radius:.2f} m ({max(where - lookahead, 0.0):.1f} m along "
                              f"it), which at speed {speed:g} m/s asks {speed * speed / radius:.2f} m/s^2 of lateral "
                              f"acceleration; at most {STEER_MAX_ACCELERATION:g} m/s^2 is run: a radius >= {widest:.1f} m"
-                             + (f" or speed <= {slowest:.2f} m/s" if slowest >= 2.5 else "")
+                             + (f" or speed <= {slowest:.2f} m/s" if slowest >= Running.schema.by_name["speed"].minimum else "")
                              + " (docs/running.md, where steering is offered)")
 
 
