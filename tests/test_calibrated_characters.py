@@ -30,3 +30,18 @@ def test_a_skill_is_refused_for_every_character_it_is_not_calibrated_for(skill):
 def test_the_characters_a_table_is_for_are_its_own_files():
     assert characters_of("running") == ["man", "woman"]
     assert characters_of("leap") == ["man", "woman"]
+
+
+def test_the_landings_calibration_trials_run_for_a_character_with_no_table():
+    """`calibrate land` places the feet of its trials by their delta alone (landing_table=0), so a
+    body with no landing table yet can be calibrated (before, the calibration deleted the table and
+    its own trials were then refused), and it no longer deletes a stored table to do so."""
+    import inspect
+
+    from sim_core.skills.land import calibrate
+    from sim_core.simulate import StartState
+    character = next(c for c in available_characters() if not exists("landing", c))
+    trajectory = run(RunRequest("land", character, params={"landing_table": 0.0, "foot_delta": 0.0},
+                                start=StartState(height=0.2), duration=0.5))
+    assert trajectory.meta["duration"] == pytest.approx(0.5)
+    assert "tuned.delete" not in inspect.getsource(calibrate.calibrate)

@@ -390,7 +390,8 @@ class Landing(Behaviour):
                 fx_rate = 0.0 if self.last_fx[k] is None else (fx - self.last_fx[k]) / self.ctx.control_dt
                 self.last_fx[k] = fx
                 if self.calibrated_delta is None:          # the horizontal and touchdown speeds of this flight
-                    self.calibrated_delta = calibrated_foot_delta(self.ctx.character.name, vx, touchdown_speed)
+                    self.calibrated_delta = (calibrated_foot_delta(self.ctx.character.name, vx, touchdown_speed)
+                                             if p.get("landing_table", 1.0) else 0.0)
                 wanted = vx * p["foot_lead_time"] + self.calibrated_delta + p["foot_delta"] + spin_offset
                 hip = d.xpos[self.hips[k]]
                 hip_from_com = c * (hip[0] - com[0]) + sn * (hip[1] - com[1])

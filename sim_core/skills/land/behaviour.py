@@ -5,6 +5,7 @@ from __future__ import annotations
 from ...control.behaviour import register
 from ...control.leap import Landing, balance_after_landing, leap_assess
 from ...control.sequencer import Sequence, Step
+from ...schema import Parameter, Schema
 from ...tuned import require_calibrated
 
 
@@ -15,10 +16,14 @@ class Land(Sequence):
     name = "land"
     summary = "Land from a fall (use a start height / velocity), absorb and stand up balanced (Wooten ch. 6)."
     default_duration = 3.0
-    schema = Landing.schema
+    schema = Schema(*Landing.schema.parameters,
+                    Parameter("landing_table", "bool", 1.0, 0.0, 1.0,
+                              "1: the feet are placed by the character's landing table plus foot_delta (a character "
+                              "needs its table); 0: by foot_delta alone (python -m sim_core calibrate land's trials)"))
 
     def check_feasible(self) -> None:
-        require_calibrated("landing", self.ctx.character.name, self.name)
+        if self.params["landing_table"]:
+            require_calibrated("landing", self.ctx.character.name, self.name)
 
     def steps(self) -> list[Step]:
         return [Step("land", lambda t: Landing(self.params, self.ctx), lambda b, t: b.finished),

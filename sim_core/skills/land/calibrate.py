@@ -51,7 +51,7 @@ def fast_touchdown(character: str, table: dict) -> dict:
 
 def trial(args):
     character, drop, speed, delta = args
-    traj = run(RunRequest("land", character, params=dict(foot_delta=delta),
+    traj = run(RunRequest("land", character, params=dict(foot_delta=delta, landing_table=0.0),
                           start=StartState(height=drop, velocity=(speed, 0.0, 0.0)), duration=3.0))
     return drop, speed, delta, traj.meta["outcome"] == "success"
 
@@ -72,7 +72,8 @@ def middle_of_longest_run(ok: list[float]) -> float:
 
 
 def calibrate(character: str, processes: int) -> dict:
-    tuned.delete("landing", character)     # calibrate against no table (delta = the trial's own)
+    """The sweep, each trial placing the feet by its delta alone (landing_table=0: calibrated against
+    no table, so a character with none yet can be calibrated and a stored one is not touched)."""
     with Pool(processes) as pool:
         results = pool.map(trial, [(character, h, v, d) for h in DROPS for v in SPEEDS for d in DELTAS])
     rows, landed = [], {}
@@ -99,7 +100,17 @@ def main(argv=None) -> int:
     args = parser.parse_args(argv)
     for character in args.character:
         table = calibrate(character, args.processes)
-        table["fast_touchdown"] = fast_touchdown(character, table)
+        stored = tuned.table_path("landing", character)
+        before = stored.read_bytes() if stored.exists() else None
+        try:            # the fast-touchdown scan runs its trials with the candidate as the character's table
+            table["fast_touchdown"] = fast_touchdown(character, table)
+        except BaseException:           # a stopped scan leaves the table that was there, byte for byte
+            if before is None:
+                tuned.delete("landing", character)
+            else:
+                stored.with_suffix(".restore").write_bytes(before)
+                stored.with_suffix(".restore").replace(stored)
+            raise
         path = tuned.save("landing", character, table, strengths=["human"])
         for row in table["foot_delta"]:
             print(f"wrote {path.relative_to(ROOT)}: drop {row['drop']} m, speeds {row['speed']}")
