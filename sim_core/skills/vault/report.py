@@ -28,6 +28,7 @@ FALLEN_PELVIS = 0.35              # m: the pelvis this low above the mat after t
 BALANCED_TIME = 2.0               # s: standing balanced at least this long at the end (TARGETS.md V7, ours)
 NO_STEP = 0.02                    # m: in the bow no foot moves more than this (issue 31: the bow without a step)
 BOW_BODIES = ("FOOTR", "FOOTL", "TOER", "TOEL")
+HORSE_BODIES = ("HANDR", "HANDL", "LARMR", "LARML")   # a handspring touches the horse with these only
 
 # Table 1 of Hodgins et al. 1995 ([A] 208-230): (row, unit, Takei mean, min, max, the 1995 simulation)
 TABLE_1 = (
@@ -162,6 +163,20 @@ def bow_measured(trajectory) -> dict:
             "bow_feet_moved": float(np.linalg.norm(feet - feet[0], axis=2).max())}
 
 
+def horse_contact_bodies(trajectory, frames: tuple[int, int]) -> dict:
+    """Which bodies touch the horse over its contact, each with its share of the vertical impulse
+    the horse gives (a body pulled down over the edge has a negative share), and the fault: any
+    body but the hands and forearms (HORSE_BODIES) touching the horse - a head, trunk or upper arm."""
+    i, j = frames
+    force = trajectory.arrays["contact_force"][i:j + 1, :, trajectory.meta["world_geoms"].index("vault_table")]
+    names = list(trajectory.arrays["body_names"])
+    touched = np.flatnonzero(np.abs(force).sum(axis=(0, 2)) > 0)
+    impulse = force[:, :, 2].sum(axis=0)
+    total = float(impulse.sum()) or 1.0
+    share = {names[b]: float(impulse[b] / total) for b in touched}
+    return {"horse_bodies": share, "horse_fault": [n for n in share if n not in HORSE_BODIES]}
+
+
 def vault_assess(trajectory) -> tuple[str, dict]:
     """The vault's outcome: the phases in order (board, horse, mat), one forward somersault from
     the upright (2 pi within ROTATION_TOLERANCE, the pelvis's pitch at the end), the feet first on
@@ -192,6 +207,7 @@ def vault_assess(trajectory) -> tuple[str, dict]:
             cos = (upper * fore).sum(axis=1) / np.linalg.norm(upper, axis=1) / np.linalg.norm(fore, axis=1)
             bends.append(float(np.degrees(np.arccos(np.clip(cos, -1, 1))).max()))
         metrics["elbow_bend_on_horse_deg"] = bends
+        metrics.update(horse_contact_bodies(trajectory, ph["horse"]))
     weight = GRAVITY * float(meta["total_mass"])
     if "mat" not in ph:
         return ("no_board" if "board" not in ph else "no_horse" if "horse" not in ph else "no_landing"), metrics
@@ -299,6 +315,12 @@ def main(argv=None) -> int:
           f"{metrics.get('balanced_time_at_end', 0.0):.2f} s; the palms at the horse touchdown "
           f"{', '.join(f'{x:.0f}' for x in metrics.get('palm_angle_at_horse_deg', []))} deg from palm-down; the elbows "
           f"bent at most {', '.join(f'{x:.0f}' for x in metrics.get('elbow_bend_on_horse_deg', []))} deg on the horse")
+    if "horse_bodies" in metrics:
+        shares = ", ".join(f"{name} {100 * share:.0f} %" for name, share in metrics["horse_bodies"].items())
+        fault = metrics["horse_fault"]
+        print(f"on the horse (share of its vertical impulse): {shares}; "
+              + (f"FAULT: {', '.join(fault)} on the horse (only the hands and forearms may touch it)" if fault
+                 else "only the hands and forearms touch it"))
     if "bow_start" in metrics:
         print(f"the bow from {metrics['bow_start']:.2f} s: the trunk pitched {metrics['bow_trunk_pitch_start']:.3f} -> "
               f"{metrics['bow_trunk_pitch']:.3f} rad (at {metrics['bow_deepest_time']:.2f} s) -> "
