@@ -295,13 +295,68 @@ def format_table_1(trajectory) -> str:
     return "\n".join(lines)
 
 
+def speed_scan(speeds, character: str = "woman", apparatus: str = "horse_1987") -> list[dict]:
+    """Runs the whole vault at each run-up speed - also outside the offered range (vault_any.json's
+    handled_speed), since the scan is how that range is measured - and returns per speed its
+    outcome, the fall time, the rotation and the bodies on the horse."""
+    from ...simulate import RunRequest, run
+    from .behaviour import CONSTANTS
+    offered = CONSTANTS.handled_speed
+    rows = []
+    try:
+        CONSTANTS.handled_speed = [0.0, math.inf]
+        for speed in speeds:
+            trajectory = run(RunRequest("vault", character, params={"runup_speed": float(speed), "apparatus": apparatus}))
+            m = trajectory.meta["metrics"]
+            rows.append({"speed": float(speed), "outcome": trajectory.meta["outcome"], "fall_time": m.get("fall_time"),
+                         "rotation": m["rotation"], "horse_fault": m.get("horse_fault")})
+    finally:
+        CONSTANTS.handled_speed = offered
+    return rows
+
+
+def scan_main(args) -> int:
+    """--scan: a grid of run-up speeds plus random draws; prints each and the contiguous range
+    around the default run-up speed (the seed's) where every speed scanned succeeds."""
+    from .behaviour import Vault
+    default = Vault.schema.by_name["runup_speed"].default
+    low, high, step = args.scan
+    grid = list(np.round(np.arange(low, high + step / 2, step), 4))
+    draws = list(np.round(np.random.default_rng(args.seed).uniform(low, high, args.draws), 4))
+    rows = sorted(speed_scan(sorted(set(grid + draws)), args.character, args.apparatus), key=lambda r: r["speed"])
+    for r in rows:
+        fell = "" if r["fall_time"] is None else f", fell at {r['fall_time']:.2f} s"
+        print(f"runup_speed {r['speed']:.4f} m/s: {r['outcome']}{fell}; rotation {r['rotation']:.2f} rad; "
+              f"on the horse besides the hands and forearms: {', '.join(r['horse_fault'] or []) or 'nothing'}")
+    ok = [r["outcome"] == "success" for r in rows]
+    seed_speed = min(range(len(rows)), key=lambda k: abs(rows[k]["speed"] - default))
+    if not ok[seed_speed]:
+        print(f"the scanned speed nearest {default:g} m/s does not succeed")
+        return 0
+    lo = hi = seed_speed
+    while lo > 0 and ok[lo - 1]:
+        lo -= 1
+    while hi < len(rows) - 1 and ok[hi + 1]:
+        hi += 1
+    print(f"every scanned speed succeeds in [{rows[lo]['speed']:g}, {rows[hi]['speed']:g}] m/s "
+          f"({hi - lo + 1} of {len(rows)} speeds; the neighbours outside it fall or fail)")
+    return 0
+
+
 def main(argv=None) -> int:
     from ...simulate import RunRequest, run
     parser = argparse.ArgumentParser(prog="python -m sim_core report vault", description=__doc__.split("\n\n")[0])
     parser.add_argument("--character", default="woman")
     parser.add_argument("--apparatus", default="horse_1987", choices=("horse_1987", "table"))
     parser.add_argument("--out", default=None, help="also write the trajectory (.npz)")
+    parser.add_argument("--scan", nargs=3, type=float, metavar=("LOW", "HIGH", "STEP"),
+                        help="instead: run the vault at run-up speeds LOW..HIGH every STEP m/s (and --draws random ones) "
+                             "and print which succeed (how handled_speed is measured)")
+    parser.add_argument("--draws", type=int, default=0, help="with --scan: this many random speeds in [LOW, HIGH]")
+    parser.add_argument("--seed", type=int, default=0, help="with --scan: the random draws' seed")
     args = parser.parse_args(argv)
+    if args.scan:
+        return scan_main(args)
     trajectory = run(RunRequest("vault", args.character, params={"apparatus": args.apparatus}))
     if args.out:
         trajectory.save(args.out)
