@@ -153,17 +153,29 @@ def test_the_vault_replays_bit_for_bit(vault):
     assert largest_difference(vault, replay(vault)) == 0.0
 
 
-@pytest.mark.parametrize("speed", [6.6, 6.9])
-def test_inside_the_handled_speeds_she_gets_over_and_lands_feet_first(speed):
-    """The handled run-up speeds (vault_any.json's handled_speed) each get her over the horse onto
-    her feet, turned to within 1 rad of upright (only at 6.75 m/s does she stay up after: at 6.6 and
-    6.9 m/s she falls in the landing, docs/vault.md)."""
-    m = run(RunRequest("vault", "woman", params={"runup_speed": speed}, duration=2.0)).meta["metrics"]
-    assert set(m["phases"]) == {"board", "horse", "mat"} and m["feet_first"]
-    assert 2 * math.pi - 1.0 < m["rotation_at_touchdown"] < 2 * math.pi + 0.5
+OFFERED_DRAWS = 2            # random run-up speeds drawn inside the offered range per test run
+DRAW_SEED = 31
 
 
-@pytest.mark.parametrize("speed", [5.0, 7.2])
+def _draws() -> list[float]:
+    low, high = CONSTANTS.handled_speed
+    return sorted({round(float(x), 4) for x in np.random.default_rng(DRAW_SEED).uniform(low, high, OFFERED_DRAWS)})
+
+
+@pytest.mark.parametrize("speed", _draws())
+def test_a_run_up_speed_drawn_inside_the_offered_range_succeeds(speed):
+    """A run-up speed drawn at random inside the offered range (vault_any.json's handled_speed,
+    measured by `report vault --scan`) gets her over the horse, one somersault (2 pi within 0.5
+    rad), feet first, the bow without a step, and standing balanced at the end. (The range is the
+    single speed 6.75 m/s: 6.7502 m/s already falls, docs/vault.md.)"""
+    trajectory = run(RunRequest("vault", "woman", params={"runup_speed": speed}))
+    m = trajectory.meta["metrics"]
+    assert trajectory.meta["outcome"] == "success", (speed, trajectory.meta["outcome"], m.get("fall_time"))
+    assert m["feet_first"] and abs(m["rotation"] - 2 * math.pi) <= ROTATION_TOLERANCE
+    assert m["balanced_time_at_end"] >= BALANCED_TIME and m["bow_feet_moved"] < NO_STEP
+
+
+@pytest.mark.parametrize("speed", [5.0, 6.6, 6.9, 7.2])
 def test_a_run_up_speed_outside_the_handled_range_is_refused(speed):
     low, high = CONSTANTS.handled_speed
     with pytest.raises(ParameterError, match=rf"runup_speed={speed:g} m/s is outside .* allowed range is \[{low:g}, {high:g}\]"):
