@@ -13,7 +13,7 @@ import pytest
 from sim_core.errors import ParameterError
 from sim_core.simulate import RunRequest, largest_difference, replay, run
 from sim_core.skills.vault.behaviour import CONSTANTS
-from sim_core.skills.vault.report import (BALANCED_TIME, BOW_BODIES, NO_STEP, PEAK_LANDING_LIMIT,
+from sim_core.skills.vault.report import (BALANCED_TIME, BOW_BODIES, HORSE_BODIES, NO_STEP, PEAK_LANDING_LIMIT,
                                           ROTATION_TOLERANCE, TABLE_1, format_table_1, table_1, trunk_pitch)
 from sim_core.world.apparatus import BOARD_TOP
 
@@ -84,6 +84,19 @@ def test_table_1_rows_and_their_impulse_momentum_consistency(vault):
     assert rows["vx board touchdown"] == pytest.approx(vault.meta["params"]["runup_speed"], abs=1e-3)
 
 
+def test_the_bodies_on_the_horse_are_measured_and_a_head_on_it_is_a_fault(vault):
+    """The assess reads which bodies touch the horse and each one's share of its vertical impulse;
+    any body but the hands and forearms is a fault. Today the head takes the horse's push (and the
+    upper arms hook over its edge): the hands strike its near face (docs/vault.md), and the fault
+    is reported."""
+    m = vault.meta["metrics"]
+    shares = m["horse_bodies"]
+    assert {"HANDR", "HANDL"} <= set(shares)
+    assert sum(shares.values()) == pytest.approx(1.0)
+    assert m["horse_fault"] == [n for n in shares if n not in HORSE_BODIES]
+    assert "HEAD" in m["horse_fault"] and shares["HEAD"] > 0.5, shares
+
+
 def test_she_turns_over_the_horse_and_lands_feet_first_softly(vault):
     """At the mat touchdown the body has turned most of a forward somersault (within 1 rad of the
     upright); the first bodies on the mat are feet."""
@@ -140,17 +153,29 @@ def test_the_vault_replays_bit_for_bit(vault):
     assert largest_difference(vault, replay(vault)) == 0.0
 
 
-@pytest.mark.parametrize("speed", [6.6, 6.9])
-def test_inside_the_handled_speeds_she_gets_over_and_lands_feet_first(speed):
-    """The handled run-up speeds (vault_any.json's handled_speed) each get her over the horse onto
-    her feet, turned to within 1 rad of upright (only at 6.75 m/s does she stay up after: at 6.6 and
-    6.9 m/s she falls in the landing, docs/vault.md)."""
-    m = run(RunRequest("vault", "woman", params={"runup_speed": speed}, duration=2.0)).meta["metrics"]
-    assert set(m["phases"]) == {"board", "horse", "mat"} and m["feet_first"]
-    assert 2 * math.pi - 1.0 < m["rotation_at_touchdown"] < 2 * math.pi + 0.5
+OFFERED_DRAWS = 2            # random run-up speeds drawn inside the offered range per test run
+DRAW_SEED = 31
 
 
-@pytest.mark.parametrize("speed", [5.0, 7.2])
+def _draws() -> list[float]:
+    low, high = CONSTANTS.handled_speed
+    return sorted({round(float(x), 4) for x in np.random.default_rng(DRAW_SEED).uniform(low, high, OFFERED_DRAWS)})
+
+
+@pytest.mark.parametrize("speed", _draws())
+def test_a_run_up_speed_drawn_inside_the_offered_range_succeeds(speed):
+    """A run-up speed drawn at random inside the offered range (vault_any.json's handled_speed,
+    measured by `report vault --scan`) gets her over the horse, one somersault (2 pi within 0.5
+    rad), feet first, the bow without a step, and standing balanced at the end. (The range is the
+    single speed 6.75 m/s: 6.7502 m/s already falls, docs/vault.md.)"""
+    trajectory = run(RunRequest("vault", "woman", params={"runup_speed": speed}))
+    m = trajectory.meta["metrics"]
+    assert trajectory.meta["outcome"] == "success", (speed, trajectory.meta["outcome"], m.get("fall_time"))
+    assert m["feet_first"] and abs(m["rotation"] - 2 * math.pi) <= ROTATION_TOLERANCE
+    assert m["balanced_time_at_end"] >= BALANCED_TIME and m["bow_feet_moved"] < NO_STEP
+
+
+@pytest.mark.parametrize("speed", [5.0, 6.6, 6.9, 7.2])
 def test_a_run_up_speed_outside_the_handled_range_is_refused(speed):
     low, high = CONSTANTS.handled_speed
     with pytest.raises(ParameterError, match=rf"runup_speed={speed:g} m/s is outside .* allowed range is \[{low:g}, {high:g}\]"):
@@ -239,3 +264,29 @@ def test_one_somersault_and_she_ends_standing_balanced(vault):
     assert abs(m["rotation"] - 2 * math.pi) <= ROTATION_TOLERANCE, m["rotation"]
     assert m["balanced_time_at_end"] >= BALANCED_TIME and m["final_com_speed"] < 0.1
     assert vault.meta["outcome"] == "success"
+
+
+ARMS_UP = {"hurdle_arm": 1.0, "board_arm": 3.0, "hurdle_lean": -0.3, "hand_ahead": 0.1, "open_height": 0.8,
+           "second_pike": -1.5}           # the arms-up variant of docs/vault.md (not the woman's table: she falls)
+
+
+def _arms_up(touchdown_lean: float):
+    from sim_core.skills.vault.behaviour import calibrated
+    params = dict(calibrated("woman", "human")["settings"], **ARMS_UP, touchdown_lean=touchdown_lean, low_level=1.0)
+    return run(RunRequest("vault", "woman", params=params, duration=1.4))
+
+
+def test_arms_up_before_the_board_keeps_the_horse_on_the_hands_and_the_second_flight_sets_the_rotation():
+    """With the arms raised before the board only the hands and forearms touch the horse (no
+    fault); the second flight's pike opens on the rotation left, so asking for the whole body
+    upright at the touchdown (touchdown_lean 0) turns her further than 0.4 rad short of it (measured:
+    7.06 and 6.03 rad at the mat touchdown). She does not yet stand from it (docs/vault.md)."""
+    upright, short = _arms_up(0.0), _arms_up(0.4)
+    for trajectory in (upright, short):
+        m = trajectory.meta["metrics"]
+        assert m["horse_fault"] == [], m["horse_bodies"]
+        names = [name for _, name in trajectory.meta["phase_events"]]
+        assert names.index("second_pike") <= names.index("second_open") < names.index("landing")
+    turned = [t.meta["metrics"]["rotation_at_touchdown"] for t in (upright, short)]
+    print(f"rotation at the mat touchdown: {turned[0]:.2f} rad (touchdown_lean 0), {turned[1]:.2f} (0.4)")
+    assert turned[0] > turned[1] + 0.5

@@ -18,7 +18,10 @@
                 wrists (their servos' gains are zero); the angular and forward velocity carry the
                 body over the hands.
 5. second flight - a layout (straight body, arms overhead), the feet a little apart, and when the
-                body has nearly turned upright the landing's leg placement (control/leap.py Landing).
+                body has nearly turned upright the landing's leg placement (control/leap.py Landing);
+                with second_pike set, a pike once the COM is over the hands that opens when the
+                rotation still to come at the layout's rate covers what is left (as the somersault's
+                tuck opens).
 6. landing    - on the mat: knees and waist absorb (Landing, MatAbsorb) until the COM is over the
                 feet's middle and slow (the seed's switch), the legs straighten (MatRise), then the
                 balance controller stands her up; the gesture (arms thrown up and back), the bow
@@ -37,7 +40,7 @@ import math
 import mujoco
 import numpy as np
 
-from ...ballistics import GRAVITY
+from ...ballistics import GRAVITY, time_to_fall_to
 from ...control.behaviour import Behaviour, ControlContext, register
 from ...control.servo import hermite_scalar
 from ...control.balance import Balance
@@ -45,7 +48,7 @@ from ...control.leap import Landing, balance_after_landing, run_strength
 from ...control.sequencer import Sequence, Step
 from ...analysis import FOOT_BODIES
 from ..handspring.behaviour import HAND_BODIES, PoseMove
-from ...control.tumble import FlightRotation, both_sides
+from ...control.tumble import FlightRotation, both_sides, inertia_about_com, rotation_to_come
 from ...errors import ParameterError
 from ...schema import Choice, Parameter, Schema
 from ...tuned import TableType, keyed, load, register as register_table
@@ -108,6 +111,13 @@ VAULT_SETTINGS = Schema(
     setting("elbow_gain", "1", 1.0, 20.0, "gain factor of the elbow servos on the horse (arms straight)"),
     setting("horse_hip", "rad", -1.0, 0.5, "hip angle on the horse (0: the layout)"),
     setting("layout_arm", "rad", 0.0, 3.14, "shoulder flexion in the second flight's layout"),
+    setting("second_pike", "rad", -2.0, 0.0,
+            "hip flexion (-) the second flight starts in; it opens to the layout once the rotation the laid-out body "
+            "will still make before the touchdown covers what is left (0: a layout throughout)"),
+    setting("second_open_time", "s", 0.02, 0.5, "... the second flight's pike opens in this time"),
+    setting("touchdown_lean", "rad", -1.0, 1.5,
+            "... what is left: the whole body turned to this short of upright when the feet reach the mat"),
+    setting("touchdown_com", "m", 0.3, 1.5, "the COM's height above the mat when the feet reach it (for the time left)"),
     setting("feet_apart", "rad", 0.0, 0.3,
             "hip abduction of each leg in the second flight, until the landing places the legs (the feet a little apart)"),
     setting("landing_lean", "rad", 0.0, 2.0, "the landing's leg placement starts this far short of the upright"),
@@ -528,14 +538,18 @@ class Vault(Sequence):
 
         def second_flight(t):
             s.set_gains(np.arange(len(s.names)), s.default_kp, s.default_kv)
+            self.rotation.takeoff(t)
+            self.second_opened = c["second_pike"] == 0.0
+            self.second_piked = False
             return PoseLaw(ctx, both_sides({"hip_*_y": 0.0, "knee_*_y": 0.0, "shoulder_*_z": c["layout_arm"],
-                                            "hip_*_x": c["feet_apart"], "wrist_*_x": 0.0}), CONSTANTS.servo_move)
+                                            "hip_*_x": c["feet_apart"], "wrist_*_x": 0.0}), CONSTANTS.servo_move,
+                           law=lambda t: self.second_flight_law(t))
 
         def ready_to_land(b, t):
             turned = self.body_pitch()
             com_z = float(d.subtree_com[ctx.actor.root][2])
-            return (turned >= 2 * math.pi - c["landing_lean"] or com_z - self.mat_top < c["open_height"]
-                    ) and float(d.subtree_linvel[ctx.actor.root][2]) < 0
+            return self.second_opened and (turned >= 2 * math.pi - c["landing_lean"] or com_z - self.mat_top < c["open_height"]
+                                           ) and float(d.subtree_linvel[ctx.actor.root][2]) < 0
 
         def land(t):
             return Landing(Landing.schema.validate(dict(
@@ -629,6 +643,38 @@ class Vault(Sequence):
         i = s.indices(["shoulder_r_z", "shoulder_l_z"])
         s.start[i] = s.goal[i] = np.clip(goals, self.shoulder_range[:, 0], self.shoulder_range[:, 1])
         s.t0[i] = t
+
+    def second_flight_law(self, t: float) -> None:
+        """The second flight's rotation, closed on the measured state: the pike (second_pike) turns
+        her faster; it opens to the layout once the rotation the laid-out body will still make
+        before the feet reach the mat (at the layout's rate for her angular momentum, plus about
+        half the difference over the opening) covers what is left to turn to touchdown_lean short
+        of upright - as the somersault's tuck opens (skills/somersault). An over-rotating vault
+        opens at once."""
+        if self.second_opened:
+            return
+        c, d = self.cfg, self.ctx.data
+        root = self.ctx.actor.root
+        s = self.ctx.servos
+        if not self.second_piked:
+            # the pike once the COM has passed over the hands' goal on the horse
+            if float(d.subtree_com[root][0]) < self.hand_goal[0]:
+                return
+            self.second_piked = True
+            self.event(t, "second_pike")
+            # the layout it opens to: the straight body with the arms overhead, as she leaves the horse
+            self.layout_inertia = float(inertia_about_com(self.ctx.model, d, self.ctx.actor)[1, 1])
+            s.move_to(s.indices(["hip_r_y", "hip_l_y"]), np.array([c["second_pike"]] * 2), c["second_open_time"], t)
+        remaining = 2 * math.pi - c["touchdown_lean"] - self.rotation.whole_body
+        rate_open = float(d.subtree_angmom[root][1]) / self.layout_inertia
+        time_left = time_to_fall_to(float(d.subtree_com[root][2]), float(d.subtree_linvel[root][2]),
+                                    self.mat_top + c["touchdown_com"])
+        if time_left > c["second_open_time"] and rotation_to_come(self.rotation.rate(), rate_open, time_left,
+                                                                  c["second_open_time"]) < remaining:
+            return
+        self.second_opened = True
+        self.event(t, "second_open")
+        s.move_to(s.indices(["hip_r_y", "hip_l_y"]), np.zeros(2), c["second_open_time"], t)
 
     def update(self, t: float) -> None:
         self.rotation.update(t)

@@ -28,6 +28,7 @@ FALLEN_PELVIS = 0.35              # m: the pelvis this low above the mat after t
 BALANCED_TIME = 2.0               # s: standing balanced at least this long at the end (TARGETS.md V7, ours)
 NO_STEP = 0.02                    # m: in the bow no foot moves more than this (issue 31: the bow without a step)
 BOW_BODIES = ("FOOTR", "FOOTL", "TOER", "TOEL")
+HORSE_BODIES = ("HANDR", "HANDL", "LARMR", "LARML")   # a handspring touches the horse with these only
 
 # Table 1 of Hodgins et al. 1995 ([A] 208-230): (row, unit, Takei mean, min, max, the 1995 simulation)
 TABLE_1 = (
@@ -162,6 +163,20 @@ def bow_measured(trajectory) -> dict:
             "bow_feet_moved": float(np.linalg.norm(feet - feet[0], axis=2).max())}
 
 
+def horse_contact_bodies(trajectory, frames: tuple[int, int]) -> dict:
+    """Which bodies touch the horse over its contact, each with its share of the vertical impulse
+    the horse gives (a body pulled down over the edge has a negative share), and the fault: any
+    body but the hands and forearms (HORSE_BODIES) touching the horse - a head, trunk or upper arm."""
+    i, j = frames
+    force = trajectory.arrays["contact_force"][i:j + 1, :, trajectory.meta["world_geoms"].index("vault_table")]
+    names = list(trajectory.arrays["body_names"])
+    touched = np.flatnonzero(np.abs(force).sum(axis=(0, 2)) > 0)
+    impulse = force[:, :, 2].sum(axis=0)
+    total = float(impulse.sum()) or 1.0
+    share = {names[b]: float(impulse[b] / total) for b in touched}
+    return {"horse_bodies": share, "horse_fault": [n for n in share if n not in HORSE_BODIES]}
+
+
 def vault_assess(trajectory) -> tuple[str, dict]:
     """The vault's outcome: the phases in order (board, horse, mat), one forward somersault from
     the upright (2 pi within ROTATION_TOLERANCE, the pelvis's pitch at the end), the feet first on
@@ -192,6 +207,7 @@ def vault_assess(trajectory) -> tuple[str, dict]:
             cos = (upper * fore).sum(axis=1) / np.linalg.norm(upper, axis=1) / np.linalg.norm(fore, axis=1)
             bends.append(float(np.degrees(np.arccos(np.clip(cos, -1, 1))).max()))
         metrics["elbow_bend_on_horse_deg"] = bends
+        metrics.update(horse_contact_bodies(trajectory, ph["horse"]))
     weight = GRAVITY * float(meta["total_mass"])
     if "mat" not in ph:
         return ("no_board" if "board" not in ph else "no_horse" if "horse" not in ph else "no_landing"), metrics
@@ -279,13 +295,68 @@ def format_table_1(trajectory) -> str:
     return "\n".join(lines)
 
 
+def speed_scan(speeds, character: str = "woman", apparatus: str = "horse_1987") -> list[dict]:
+    """Runs the whole vault at each run-up speed - also outside the offered range (vault_any.json's
+    handled_speed), since the scan is how that range is measured - and returns per speed its
+    outcome, the fall time, the rotation and the bodies on the horse."""
+    from ...simulate import RunRequest, run
+    from .behaviour import CONSTANTS
+    offered = CONSTANTS.handled_speed
+    rows = []
+    try:
+        CONSTANTS.handled_speed = [0.0, math.inf]
+        for speed in speeds:
+            trajectory = run(RunRequest("vault", character, params={"runup_speed": float(speed), "apparatus": apparatus}))
+            m = trajectory.meta["metrics"]
+            rows.append({"speed": float(speed), "outcome": trajectory.meta["outcome"], "fall_time": m.get("fall_time"),
+                         "rotation": m["rotation"], "horse_fault": m.get("horse_fault")})
+    finally:
+        CONSTANTS.handled_speed = offered
+    return rows
+
+
+def scan_main(args) -> int:
+    """--scan: a grid of run-up speeds plus random draws; prints each and the contiguous range
+    around the default run-up speed (the seed's) where every speed scanned succeeds."""
+    from .behaviour import Vault
+    default = Vault.schema.by_name["runup_speed"].default
+    low, high, step = args.scan
+    grid = list(np.round(np.arange(low, high + step / 2, step), 4))
+    draws = list(np.round(np.random.default_rng(args.seed).uniform(low, high, args.draws), 4))
+    rows = sorted(speed_scan(sorted(set(grid + draws)), args.character, args.apparatus), key=lambda r: r["speed"])
+    for r in rows:
+        fell = "" if r["fall_time"] is None else f", fell at {r['fall_time']:.2f} s"
+        print(f"runup_speed {r['speed']:.4f} m/s: {r['outcome']}{fell}; rotation {r['rotation']:.2f} rad; "
+              f"on the horse besides the hands and forearms: {', '.join(r['horse_fault'] or []) or 'nothing'}")
+    ok = [r["outcome"] == "success" for r in rows]
+    seed_speed = min(range(len(rows)), key=lambda k: abs(rows[k]["speed"] - default))
+    if not ok[seed_speed]:
+        print(f"the scanned speed nearest {default:g} m/s does not succeed")
+        return 0
+    lo = hi = seed_speed
+    while lo > 0 and ok[lo - 1]:
+        lo -= 1
+    while hi < len(rows) - 1 and ok[hi + 1]:
+        hi += 1
+    print(f"every scanned speed succeeds in [{rows[lo]['speed']:g}, {rows[hi]['speed']:g}] m/s "
+          f"({hi - lo + 1} of {len(rows)} speeds; the neighbours outside it fall or fail)")
+    return 0
+
+
 def main(argv=None) -> int:
     from ...simulate import RunRequest, run
     parser = argparse.ArgumentParser(prog="python -m sim_core report vault", description=__doc__.split("\n\n")[0])
     parser.add_argument("--character", default="woman")
     parser.add_argument("--apparatus", default="horse_1987", choices=("horse_1987", "table"))
     parser.add_argument("--out", default=None, help="also write the trajectory (.npz)")
+    parser.add_argument("--scan", nargs=3, type=float, metavar=("LOW", "HIGH", "STEP"),
+                        help="instead: run the vault at run-up speeds LOW..HIGH every STEP m/s (and --draws random ones) "
+                             "and print which succeed (how handled_speed is measured)")
+    parser.add_argument("--draws", type=int, default=0, help="with --scan: this many random speeds in [LOW, HIGH]")
+    parser.add_argument("--seed", type=int, default=0, help="with --scan: the random draws' seed")
     args = parser.parse_args(argv)
+    if args.scan:
+        return scan_main(args)
     trajectory = run(RunRequest("vault", args.character, params={"apparatus": args.apparatus}))
     if args.out:
         trajectory.save(args.out)
@@ -299,6 +370,12 @@ def main(argv=None) -> int:
           f"{metrics.get('balanced_time_at_end', 0.0):.2f} s; the palms at the horse touchdown "
           f"{', '.join(f'{x:.0f}' for x in metrics.get('palm_angle_at_horse_deg', []))} deg from palm-down; the elbows "
           f"bent at most {', '.join(f'{x:.0f}' for x in metrics.get('elbow_bend_on_horse_deg', []))} deg on the horse")
+    if "horse_bodies" in metrics:
+        shares = ", ".join(f"{name} {100 * share:.0f} %" for name, share in metrics["horse_bodies"].items())
+        fault = metrics["horse_fault"]
+        print(f"on the horse (share of its vertical impulse): {shares}; "
+              + (f"FAULT: {', '.join(fault)} on the horse (only the hands and forearms may touch it)" if fault
+                 else "only the hands and forearms touch it"))
     if "bow_start" in metrics:
         print(f"the bow from {metrics['bow_start']:.2f} s: the trunk pitched {metrics['bow_trunk_pitch_start']:.3f} -> "
               f"{metrics['bow_trunk_pitch']:.3f} rad (at {metrics['bow_deepest_time']:.2f} s) -> "
