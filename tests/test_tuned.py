@@ -195,6 +195,10 @@ ALLOWED = {
     "skills.bicycle.behaviour": {n: "definition" for n in ("MIN_LOOKAHEAD_SPEED", "FOOT_IK_ITERATIONS", "FOOT_IK_DAMPING",
                                                            "KNEE")},
     "skills.bicycle.steering": {"MIN_SCHEDULED_SPEED": "definition"},
+    # the vault's judging (TARGETS.md, issue 31) and Takei's Table 1, the reference it is judged against
+    "skills.vault.assess": {n: "criterion" for n in ("STILL_SPEED", "ROTATION_TOLERANCE", "PEAK_LANDING_LIMIT", "CONTACT_GAP",
+                                                     "KNEELING_HEIGHT", "FALLEN_PELVIS", "BALANCED_TIME", "NO_STEP",
+                                                     "TABLE_1", "TAKEI_MASS", "TAKEI_HEIGHT")},
     "skills.bicycle.course": {"SLALOM_POINT_SPACING": "definition", "RUN_OUT": "definition",
                               **{n: "criterion" for n in ("SLALOM_SPEEDS", "SLALOM_MAX_ACCELERATION", "SLALOM_MAX_OFFSET", "SLALOM_MIN_WIDTH",
                                                        "COAST_SPEEDS", "STOP_SPEEDS")}},

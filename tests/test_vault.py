@@ -13,8 +13,9 @@ import pytest
 from sim_core.errors import ParameterError
 from sim_core.simulate import RunRequest, largest_difference, replay, run
 from sim_core.skills.vault.behaviour import CONSTANTS
-from sim_core.skills.vault.report import (BALANCED_TIME, BOW_BODIES, HORSE_BODIES, NO_STEP, PEAK_LANDING_LIMIT,
-                                          ROTATION_TOLERANCE, TABLE_1, format_table_1, table_1, trunk_pitch)
+from sim_core.skills.vault.assess import (BALANCED_TIME, BOW_BODIES, HORSE_BODIES, NO_STEP, PEAK_LANDING_LIMIT,
+                                          ROTATION_TOLERANCE, TABLE_1, table_1, trunk_pitch)
+from sim_core.skills.vault.report import format_table_1
 from sim_core.world.apparatus import BOARD_TOP
 
 STATES = ["hurdle", "board", "first_flight", "horse", "second_flight", "landing", "absorb", "rise", "balance",

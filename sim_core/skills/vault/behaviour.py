@@ -683,5 +683,5 @@ class Vault(Sequence):
 
     @classmethod
     def assess(cls, trajectory):
-        from .report import vault_assess
+        from .assess import vault_assess
         return vault_assess(trajectory)
