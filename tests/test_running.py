@@ -426,6 +426,21 @@ def test_the_woman_runs_a_random_speed_of_her_range():
     assert abs(m["gait"]["mean_speed"] - speed) <= SPEED_TOLERANCE * speed
 
 
+@pytest.mark.slow
+def test_the_child_runs_100_s_at_her_tables_speed():
+    """The child (Fig. 3, 1.08 m, 26 kg): the man's row mass-scaled, then searched (docs/running.md,
+    the child): 100 s from a stand at 2.5 m/s, the one speed of her table, no fall, speed within 5 %;
+    any other speed is refused."""
+    speeds = SpeedTable.load("child").speeds
+    assert speeds == [2.5]
+    traj = run(RunRequest("running", "child", params={"speed": 2.5}, duration=100.0))
+    m = traj.meta["metrics"]
+    assert not_fallen(traj), f"fell at {m['fall_time']:.1f} s"
+    assert abs(m["gait"]["mean_speed"] - 2.5) <= SPEED_TOLERANCE * 2.5
+    with pytest.raises(ParameterError, match=r"\[2.5, 2.5\]"):
+        run(RunRequest("running", "child", params={"speed": 2.7}, duration=0.05))
+
+
 @pytest.mark.parametrize("values", [{"course": "turn"}, {"facing": 1.0}, {"path": [[0, 0], [5, 0], [10, 5]]}])
 def test_the_woman_is_refused_a_turn_in_one_line(values):
     """She runs straight ahead only: a turn, another facing or a path is refused before anything runs."""
