@@ -30,10 +30,15 @@ def surface_under(points: np.ndarray, boxes, floor: float = 0.0) -> np.ndarray:
     else the ground (``floor``). ``boxes``: World.boxes, ((x, y, height, length, width), ...)."""
     points = np.asarray(points)
     under = np.full(points.shape[:-1], float(floor))
-    for x, y, height, length, width in boxes:
-        inside = (np.abs(points[..., 0] - x) <= length / 2) & (np.abs(points[..., 1] - y) <= width / 2)
-        under = np.where(inside, np.maximum(under, height), under)
+    for box in boxes:
+        under = np.where(in_footprint(points, box), np.maximum(under, box[2]), under)
     return under
+
+
+def in_footprint(points: np.ndarray, box) -> np.ndarray:
+    """Per point (..., 3 or 2): whether it lies over the footprint of ``box`` (x, y, height, length, width)."""
+    x, y, _, length, width = box
+    return (np.abs(points[..., 0] - x) <= length / 2) & (np.abs(points[..., 1] - y) <= width / 2)
 
 
 def floor_of(model: mujoco.MjModel) -> float:
@@ -69,8 +74,7 @@ def compliant_boxes(model: mujoco.MjModel) -> tuple:
 def over_a_box(points: np.ndarray, boxes) -> bool:
     """Whether any of the points (n, 3 or 2) is over the footprint of one of the boxes."""
     points = np.asarray(points)
-    return any(bool(((np.abs(points[:, 0] - x) <= length / 2) & (np.abs(points[:, 1] - y) <= width / 2)).any())
-               for x, y, _, length, width in boxes)
+    return any(bool(in_footprint(points, box).any()) for box in boxes)
 
 
 def _box(model: mujoco.MjModel, name: str) -> tuple:

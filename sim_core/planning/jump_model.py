@@ -26,7 +26,7 @@ from pathlib import Path
 import numpy as np
 
 from ..control.leap import LEAP_SETTINGS, blend_rows, broad_rows, load_mapping
-from ..skills.jump_to_target.behaviour import KNOB_DEFAULTS, read_plans
+from ..skills.jump_to_target.behaviour import KNOB_DEFAULTS, JumpToTarget, read_plans
 from ..skills.jump_to_target.region import JUMP_MODEL_TABLE, LANDING_TOLERANCE, model  # noqa: F401  (the row type, for save)
 from .. import tuned
 from .jump import measure_settings
@@ -58,7 +58,7 @@ LONG_EDGE = 0.5                         # s: a flight this long is at its edge (
 EXTEND_ROUNDS = 2                       # steps outward from the edge
 FILL_STEPS = (0.25, 0.5, 0.75)      # shares of the way between the jumps around a gap that fill measures
 FILL_ROUNDS = 2                     # rounds of fill over the gaps left
-WINDUP_TIME = 1.25      # s: the wind-up the calibration jumps ran with (the schema's default)
+WINDUP_TIME = JumpToTarget.schema.by_name["windup_time"].default   # s: the wind-up the calibration jumps ran with
 PLAN_KEYS = ("crouch_height", "crouch_pitch", "com_offset", "liftoff_hip", "arm_swing", "thrust_damping",
              "foot_delta", "vertical_thrust", "landing_swing_arms", "landing_arm_flexion", "landing_foot_lead_time")
 
