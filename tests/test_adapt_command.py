@@ -36,26 +36,29 @@ def test_the_nearest_calibrated_character_is_the_nearest_in_size():
 def test_scaling_a_table_onto_its_own_character_changes_nothing():
     woman = load_character("woman")
     landing = tuned.load("landing", "woman")
-    scaled = LandingAdapter().scale(woman, woman, landing)
+    scaled, runs = LandingAdapter().scale(woman, woman, landing)
+    assert runs == 0
     for row, original in zip(scaled["foot_delta"], landing["foot_delta"]):
         assert row == {k: original[k] for k in ("drop", "touchdown_speed", "speed", "delta")}
     assert scaled["fast_touchdown"] == {k: landing["fast_touchdown"][k] for k in ("speed", "ramp", "delta")}
-    leap = tuned.load("leap", "woman")
-    vertical = LeapAdapter().scale(woman, woman, leap)["vertical"]
-    for name, column in vertical.items():
-        assert column == pytest.approx(leap["vertical"][name], abs=1e-12), name
+    leap = tuned.load("leap", "woman")["vertical"]
+    rows = LeapAdapter().scaled_rows(woman, woman, {"vertical": leap})
+    assert len(rows) == len(leap["com_rise"])
+    for k, row in enumerate(rows):
+        assert row == pytest.approx({n: leap[n][k] for n in row}, abs=1e-12)
 
 
 def test_scaling_to_the_child_shortens_lengths_by_L_and_speeds_by_its_root():
     woman, child = load_character("woman"), load_character("child")
     from sim_core.adapt.skills import leg_length_ratio
     L = leg_length_ratio(woman, child)
-    scaled = LandingAdapter().scale(woman, child, tuned.load("landing", "woman"))
+    scaled, _ = LandingAdapter().scale(woman, child, tuned.load("landing", "woman"))
     original = tuned.load("landing", "woman")["foot_delta"][0]
     assert scaled["foot_delta"][0]["drop"] == pytest.approx(original["drop"] * L, abs=1e-3)
     assert scaled["foot_delta"][0]["speed"][-1] == pytest.approx(original["speed"][-1] * L ** 0.5, abs=1e-3)
-    vertical = LeapAdapter().scale(woman, child, tuned.load("leap", "woman"))["vertical"]
-    assert vertical["crouch_height"][0] == pytest.approx(tuned.load("leap", "woman")["vertical"]["crouch_height"][0] * L)
+    vertical = tuned.load("leap", "woman")["vertical"]
+    rows = LeapAdapter().scaled_rows(woman, child, {"vertical": vertical})
+    assert rows[0]["crouch_height"] == pytest.approx(vertical["crouch_height"][0] * L)
 
 
 def test_a_refused_skill_leaves_no_table_behind(tables, tmp_path, monkeypatch):

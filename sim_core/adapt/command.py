@@ -16,13 +16,15 @@ measured figures, evaluations (simulated runs of searches) and wall time.
 
 Resumable: each finished skill is recorded in ``<out>/state.json`` (written whole after each skill);
 a rerun skips the recorded ones (``--redo`` runs them again). Stopped with Ctrl-C, the skill under
-way leaves the tables as they were. ``--minutes`` is the budget of the searches: a search starts only
+way (or killed with SIGTERM) leaves the tables as they were. ``--minutes`` is the budget of the searches: a search starts only
 while budget is left and gets its share of what is left.
 """
 from __future__ import annotations
 
 import json
+import signal
 import time
+import zlib
 from dataclasses import asdict, dataclass
 from pathlib import Path
 
@@ -86,7 +88,7 @@ def adapt_skill(skill: str, character: str, rng, workers: int, deadline: float, 
             if source_name is None:
                 return Result(skill, "refused", "no calibrated character to scale from", "-")
             source = load_character(source_name)
-            body = adapter.scale(source, spec, tuned.load(adapter.table, source_name))
+            body, runs = adapter.scale(source, spec, tuned.load(adapter.table, source_name))
             tuned.save(adapter.table, spec.name, body, strengths=["human"])
             route = f"scaled from the {source_name}"
             say(f"{skill}: {route}, checking")
@@ -145,8 +147,8 @@ def try_default(skill: str, character: str) -> Result:
 def skills_of(names: list[str]) -> list[str]:
     from ..skills import available_behaviours
     every = available_behaviours()
-    if names == ["all"]:
-        return every
+    if names == ["all"]:          # the adapted skills first, in ADAPTERS' order (the leap lands: the landing first)
+        return [*ADAPTERS, *(n for n in every if n not in ADAPTERS)]
     unknown = [n for n in names if n not in every]
     if unknown:
         raise ParameterError(f"--skills {' '.join(unknown)}: unknown skill; available: all, {', '.join(every)}")
@@ -176,7 +178,6 @@ def adapt(character: str, skills: list[str], out: Path, minutes: float, workers:
         raise ParameterError(f"{state_path} records an adaptation of {state.get('character')!r}, not {spec.name!r}: "
                              f"give another --out, or --redo")
     done = {r["skill"]: Result(**r) for r in state.get("results", [])}
-    rng = np.random.default_rng(seed)
     deadline = time.monotonic() + 60.0 * minutes
     results = []
     for skill in names:
@@ -185,8 +186,12 @@ def adapt(character: str, skills: list[str], out: Path, minutes: float, workers:
             results.append(done[skill])
             continue
         say(f"{skill}: adapting to the {spec.name}")
-        result = (adapt_skill(skill, character, rng, workers, deadline, say) if skill in ADAPTERS
-                  else try_default(skill, character))
+        rng = np.random.default_rng([seed, zlib.crc32(skill.encode())])   # a skill's draw whatever ran before it
+        try:
+            result = (adapt_skill(skill, character, rng, workers, deadline, say) if skill in ADAPTERS
+                      else try_default(skill, character))
+        except ParameterError as error:        # e.g. a scaled row its table refuses: that skill only is refused
+            result = Result(skill, "refused", "error", str(error).split("\n")[0])
         say(f"{skill}: {result.status} ({result.route}; {result.figures})")
         results.append(result)
         done[skill] = result
@@ -197,7 +202,12 @@ def adapt(character: str, skills: list[str], out: Path, minutes: float, workers:
     return results
 
 
+def _stop_on_terminate(signum, frame):
+    raise KeyboardInterrupt          # a kill (SIGTERM) unwinds like Ctrl-C: the table under way is put back
+
+
 def main(args) -> int:
+    signal.signal(signal.SIGTERM, _stop_on_terminate)
     out = Path(args.out) if args.out else Path("out") / "adapt" / load_character(args.character).name
     results = adapt(args.character, args.skills, out, args.minutes, args.workers, args.seed, args.redo,
                     say=lambda line: print(line, flush=True))

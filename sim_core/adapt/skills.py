@@ -33,6 +33,8 @@ CHECKS = 6                   # definition: random requests a check draws (balanc
 KNEE_BEND = (0.75, 0.95)     # definition: a balance check's pelvis heights, shares of the standing hip height
 BALANCE_SECONDS = 5.0        # definition: a knee bend's run (move 1.2 s, hold 0.5 s, back up, stand)
 LANDING_DROPS = (0.2, 0.6)   # definition: drops (m above standing, x L) the landing's check draws: calibrate land's DROPS
+LANDING_SPEEDS = (-1.0, 1.5)  # definition: horizontal speeds (m/s, x L^1/2) drawn: drops and vertical leaps; the broad
+                             # jump's faster landings (to 3 m/s) are not adapted (the man's own table lands 4 of 6 there)
 LANDING_SECONDS = 3.0        # definition: a landing's run, as calibrate land's trials
 LEAP_HEIGHTS = (0.2, 0.5)    # definition: the issue's leap range for adapted bodies (m of COM rise)
 LEAP_SECONDS = 4.5           # definition: a leap's run, as calibrate leap's trials
@@ -100,18 +102,23 @@ class LandingAdapter:
     by L^1/2, deltas by L."""
     skill, table = "land", "landing"
 
-    def scale(self, source: CharacterSpec, target: CharacterSpec, body: dict) -> dict:
+    def scale(self, source: CharacterSpec, target: CharacterSpec, body: dict) -> tuple[dict, int]:
         f = ScaleFactors(leg_length_ratio(source, target))
         v = lambda x: round(scale(x, VELOCITY, f), 3)
         m = lambda x: round(scale(x, LENGTH, f), 3)
-        rows = [{"drop": m(r["drop"]), "touchdown_speed": v(r["touchdown_speed"]), "speed": [v(s) for s in r["speed"]],
-                 "delta": [m(d) for d in r["delta"]]} for r in body["foot_delta"]]
+        from ..control.leap import LANDING_SETTINGS
+        knob = LANDING_SETTINGS.by_name["foot_delta"]
+        rows = []
+        for r in body["foot_delta"]:           # a delta scaled out of the setting's range: that speed is left out
+            kept = [(v(s), m(d)) for s, d in zip(r["speed"], r["delta"]) if knob.minimum <= m(d) <= knob.maximum]
+            rows.append({"drop": m(r["drop"]), "touchdown_speed": v(r["touchdown_speed"]),
+                         "speed": [s for s, _ in kept], "delta": [d for _, d in kept]})
         out = {"script": f"python -m sim_core adapt (scaled from the {source.name}'s landing table by Fig. 6)",
                "foot_delta": rows}
         fast = body.get("fast_touchdown")
         if fast:
             out["fast_touchdown"] = {"speed": v(fast["speed"]), "ramp": v(fast["ramp"]), "delta": m(fast["delta"])}
-        return out
+        return out, 0
 
     def check(self, character: str, rng) -> Check:
         from ..simulate import StartState
@@ -119,9 +126,9 @@ class LandingAdapter:
         spec = load_character(character)
         table = tuned.load("landing", spec.name)
         rows = [r for r in table["foot_delta"] if r["speed"]]
-        low = max(min(r["speed"]) for r in rows)
-        high = min(max(r["speed"]) for r in rows)
         L = leg_length_ratio(load_character("man"), spec)
+        low = max(min(r["speed"]) for r in rows + [{"speed": [LANDING_SPEEDS[0] * L ** 0.5]}])
+        high = min(max(r["speed"]) for r in rows + [{"speed": [LANDING_SPEEDS[1] * L ** 0.5]}])
         drops = rng.uniform(LANDING_DROPS[0] * L, LANDING_DROPS[1] * L, size=CHECKS)
         speeds = rng.uniform(low, high, size=CHECKS) if high > low else np.full(CHECKS, low)
         missed = []
@@ -131,7 +138,7 @@ class LandingAdapter:
             if t.meta["outcome"] != "success":
                 missed.append(f"{drop:.2f} m at {speed:+.2f} m/s ({t.meta['outcome']})")
         figures = (f"drops {drops.min():.2f}-{drops.max():.2f} m at {speeds.min():+.2f}..{speeds.max():+.2f} m/s "
-                   f"(the table's common speeds {low:+.2f}..{high:+.2f}): {CHECKS - len(missed)}/{CHECKS} balanced"
+                   f"(the table's common speeds within {low:+.2f}..{high:+.2f}): {CHECKS - len(missed)}/{CHECKS} balanced"
                    + (f"; missed {', '.join(missed)}" if missed else ""))
         return Check(not missed, figures, CHECKS)
 
@@ -149,25 +156,42 @@ class LeapAdapter:
     by L; angles and shares as they are. The broad jump is not carried (it is planned per distance)."""
     skill, table = "leap", "leap"
 
-    def scale(self, source: CharacterSpec, target: CharacterSpec, body: dict) -> dict:
+    def scaled_rows(self, source: CharacterSpec, target: CharacterSpec, body: dict) -> list[dict]:
+        """The source's vertical rows, each setting by its units; a row scaled out of a setting's range
+        is left out."""
         from ..control.leap import LEAP_SETTINGS
         pair = CharacterPair(source, target)
         columns = body["vertical"]
         settings = {n: c for n, c in columns.items() if n in LEAP_SETTINGS.by_name}
         rows = [scale_settings({n: c[k] for n, c in settings.items()}, LEAP_SETTINGS, pair, GEOMETRIC)
                 for k in range(len(columns["com_rise"]))]
-        f = ScaleFactors(pair.length)
-        vertical = {n: [row[n] for row in rows] for n in settings}
-        vertical["com_rise"] = [scale(x, LENGTH, f) for x in columns["com_rise"]]
-        vertical["com_travel"] = [scale(x, LENGTH, f) for x in columns.get("com_travel", [0.0] * len(rows))]
+        return [row for row in rows if all(LEAP_SETTINGS.by_name[n].minimum <= v <= LEAP_SETTINGS.by_name[n].maximum
+                                           for n, v in row.items())]
+
+    def scale(self, source: CharacterSpec, target: CharacterSpec, body: dict) -> tuple[dict, int]:
+        """The scaled rows, each leapt once on the new body: the rows that land balanced, with their
+        rises as measured (a rise scaled by L missed by 8-15 % on the 70 % man -> woman body)."""
+        rows = self.scaled_rows(source, target, body)
+        measured = []
+        for row in rows:
+            t = _run("leap", target.path, params={"low_level": 1, **row}, duration=LEAP_SECONDS)
+            if t.meta["outcome"] == "success":
+                measured.append((t.meta["metrics"]["com_rise"], len(measured), row, t.meta["metrics"]))
+        measured.sort(key=lambda m: m[0])
+        vertical = {n: [row[n] for _, _, row, _ in measured] for n in (rows[0] if rows else {})}
+        for name in ("com_rise", "com_travel", "peak_thrust_grf_body_weights"):
+            vertical[name] = [m[name] for _, _, _, m in measured]
         return {"character": target.name,
-                "script": f"python -m sim_core adapt (scaled from the {source.name}'s vertical leaps by Fig. 6)",
-                "vertical": vertical}
+                "script": f"python -m sim_core adapt (the {source.name}'s vertical leaps scaled by Fig. 6, each run "
+                          f"once: {len(measured)} of {len(rows)} landed balanced, their rises as measured)",
+                "vertical": vertical}, len(rows)
 
     def check(self, character: str, rng) -> Check:
         from .. import tuned
         from ..control.leap import commandable_heights, rise_tolerance
         rises = tuned.load("leap", load_character(character).name)["vertical"]["com_rise"]
+        if not rises:
+            return Check(False, "no leap of the table landed balanced", 0)
         low, high = commandable_heights(rises)
         top, bottom = min(high, LEAP_HEIGHTS[1]), max(low, LEAP_HEIGHTS[0])
         if top <= bottom:
@@ -200,7 +224,7 @@ class RunningAdapter:
     (calibrate running --scale-from), at its speeds x L^1/2 held inside the schema's range."""
     skill, table = "running", "running"
 
-    def scale(self, source: CharacterSpec, target: CharacterSpec, body: dict) -> dict:
+    def scale(self, source: CharacterSpec, target: CharacterSpec, body: dict) -> tuple[dict, int]:
         from ..skills.running.behaviour import Running
         from ..skills.running.calibrate import scaled_table
         knob = Running.schema.by_name["speed"]
@@ -209,7 +233,7 @@ class RunningAdapter:
         table = scaled_table(source.path, target.path, speeds, {})     # the source's own constants come along
         return {**table.to_table(),
                 "note": f"the {source.name}'s rows and the constants of the running laws mass-scaled by Fig. 6 "
-                        "(python -m sim_core adapt); rows that did not run were searched or dropped"}
+                        "(python -m sim_core adapt); rows that did not run were searched or dropped"}, 0
 
     def check(self, character: str, rng, speeds: list[float] | None = None) -> Check:
         from .. import tuned
