@@ -104,3 +104,22 @@ def test_the_morph_of_the_seed_runs_without_a_fall():
     m = traj.meta["metrics"]
     assert not m["fell"]
     assert abs(m["speed_error_during_morph"]) < 0.05 and abs(m["speed_error_after_morph"]) < 0.05
+
+
+def test_the_ramps_offsets_are_checked_and_ride_on_the_interpolated_rows():
+    """``morph_ramps`` (a tuner's candidate): the offset is reached at f = 1 on top of the woman's row
+    and held in the setting's range; an unknown name or an offset wider than the range is refused."""
+    from sim_core.skills.running.behaviour import SETTING_RANGES, Running, SpeedTable
+    from sim_core.skills.running.morph import RAMPED, MorphTable
+    bounds = {n: (SETTING_RANGES.by_name[n].minimum, SETTING_RANGES.by_name[n].maximum) for n in RAMPED}
+    man, woman = SpeedTable.load("man"), SpeedTable.load("woman")
+    table = MorphTable(man, woman, {"stance_pitch": 0.05, "thrust_time": 1.0}, bounds)
+    assert table.at("stance_pitch", 3.0) == man.at("stance_pitch", 3.0)
+    table.fraction = 1.0
+    assert table.at("stance_pitch", 3.0) == pytest.approx(woman.at("stance_pitch", 3.0) + 0.05, abs=1e-12)
+    assert table.at("thrust_time", 3.0) == bounds["thrust_time"][1]
+    assert table.at("speed_gain", 3.0) == pytest.approx(woman.at("speed_gain", 3.0), abs=1e-12)
+    for ramps, message in (({"speed_gain": 0.1}, "unknown parameter 'speed_gain'"),
+                           ({"stance_pitch": 0.6}, r"allowed range is \[-0.5, 0.5\] rad")):
+        with pytest.raises(ParameterError, match=message):
+            Running.schema.validate({"morph_to": "woman", "morph_ramps": ramps})

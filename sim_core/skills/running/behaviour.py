@@ -45,7 +45,7 @@ from ...character.model import Placement
 from ...character.spec import load_character
 from ...control.behaviour import Behaviour, ControlContext, register
 from .leg import RunnerLeg
-from .morph import MorphTable, leg_between, lerp, morph_ramps, morph_speed_metrics
+from .morph import RAMPED, MorphTable, leg_between, lerp, morph_ramps, morph_speed_metrics
 from ...control.path import (MAX_POINTS, PathFollower, circle_path, figure_eight_path, tightest_radius, turn_path,
                              validate_path)
 from ...control.servo import hermite_scalar
@@ -264,16 +264,35 @@ CONSTANT_NAMES = tuple(load("running", "any")["constants"])
 class RunningSchema(SkillSchema):
     """The schema's parameters, plus ``table``: a running table's speeds and columns to run with
     instead of the stored one (a tuner's candidate, SpeedTable.to_table), checked like a stored
-    table's rows."""
+    table's rows; and ``morph_ramps``: the five tuned parameters' offsets at the morph's end (a
+    tuner's candidate), each within plus or minus its range's width."""
 
     def validate(self, values: dict) -> dict:
         values = dict(values)
         table = values.pop("table", None)
+        ramps = values.pop("morph_ramps", None)
         result = super().validate(values)
         if table is not None:
             check_rows("the table parameter", "running", table)
             result["table"] = table
+        if ramps is not None:
+            result["morph_ramps"] = check_ramps(ramps)
         return result
+
+
+def check_ramps(ramps: dict) -> dict[str, float]:
+    """A morph's ramp offsets: names among the five, finite, within their ranges' widths."""
+    out = {}
+    for name, value in dict(ramps).items():
+        if name not in RAMPED:
+            raise ParameterError(f"morph_ramps: unknown parameter {name!r}; allowed: {', '.join(RAMPED)}")
+        setting = SETTING_RANGES.by_name[name]
+        width = setting.maximum - setting.minimum
+        if not (isinstance(value, (int, float)) and math.isfinite(value) and abs(value) <= width):
+            raise ParameterError(f"morph_ramps: {name}={value!r} is out of range; allowed range is "
+                                 f"[{-width:g}, {width:g}] {setting.unit}")
+        out[name] = float(value)
+    return out
 
 
 @register
@@ -424,7 +443,8 @@ class Running(Behaviour):
                                  else params.get(n, defaults[n]) for n in CONSTANT_NAMES})
         end = load_character(target)
         self.morph_legs = (self.legs, [RunnerLeg(end, "R"), RunnerLeg(end, "L")])
-        self.table = MorphTable(self.table, end_table, morph_ramps(target, params))
+        bounds = {n: (SETTING_RANGES.by_name[n].minimum, SETTING_RANGES.by_name[n].maximum) for n in RAMPED}
+        self.table = MorphTable(self.table, end_table, morph_ramps(target, params), bounds)
         self.morph_seen = 0.0
 
     def _follow_morph(self) -> None:

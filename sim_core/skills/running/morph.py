@@ -22,10 +22,10 @@ def lerp(a: float, b: float, f: float) -> float:
 class MorphTable:
     """A SpeedTable's face (``values``, ``constants``, ``at``) for a body ``fraction`` of the way
     from the start table's character to the end table's: each column at the speed interpolated,
-    plus ``fraction`` times the column's ramp offset."""
+    plus ``fraction`` times the column's ramp offset (held within the column's range, ``bounds``)."""
 
-    def __init__(self, start, end, offsets: dict[str, float]):
-        self.start, self.end, self.offsets = start, end, dict(offsets)
+    def __init__(self, start, end, offsets: dict[str, float], bounds: dict[str, tuple[float, float]]):
+        self.start, self.end, self.offsets, self.bounds = start, end, dict(offsets), bounds
         self.values = {n: v for n, v in start.values.items() if n in end.values}
         self.constants = start.constants
         self.speeds = start.speeds
@@ -33,7 +33,11 @@ class MorphTable:
 
     def at(self, name: str, speed: float) -> float:
         f = self.fraction
-        return lerp(self.start.at(name, speed), self.end.at(name, speed), f) + f * self.offsets.get(name, 0.0)
+        value = lerp(self.start.at(name, speed), self.end.at(name, speed), f)
+        if name not in self.offsets:
+            return value
+        low, high = self.bounds[name]
+        return min(high, max(low, value + f * self.offsets[name]))
 
 
 def morph_ramps(target: str, params: dict) -> dict[str, float]:
