@@ -123,3 +123,20 @@ def test_the_ramps_offsets_are_checked_and_ride_on_the_interpolated_rows():
                            ({"stance_pitch": 0.6}, r"allowed range is \[-0.5, 0.5\] rad")):
         with pytest.raises(ParameterError, match=message):
             Running.schema.validate({"morph_to": "woman", "morph_ramps": ramps})
+
+
+def test_the_morph_changes_the_body_never_the_state(man_woman):
+    """Physical validity: the morph edits the model only; positions, velocities, controls and applied
+    forces stay bit for bit what they were (its mj_setConst works on a data of its own)."""
+    man, woman = man_woman
+    model, _, morph = morph_models(man, woman)
+    data = mujoco.MjData(model)
+    rng = np.random.default_rng(3)
+    data.qpos[7:] = rng.uniform(-0.2, 0.2, model.nq - 7)
+    data.qpos[2] = 1.2
+    data.qvel[:] = rng.normal(size=model.nv)
+    data.ctrl[:] = rng.normal(size=model.nu)
+    mujoco.mj_forward(model, data)
+    state = {k: np.array(getattr(data, k)) for k in ("qpos", "qvel", "act", "ctrl", "xfrc_applied", "qfrc_applied")}
+    morph.apply(0.7)
+    assert all(np.array_equal(v, getattr(data, k)) for k, v in state.items())
