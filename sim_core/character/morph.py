@@ -54,37 +54,39 @@ def _lerp(a: np.ndarray, b: np.ndarray, f: float) -> np.ndarray:
     return a + f * (b - a)          # a where the ends agree, bit for bit
 
 
+def _matrices(quats: np.ndarray) -> np.ndarray:
+    """Unit quaternions (n, 4), w first -> rotation matrices (n, 3, 3)."""
+    w, x, y, z = quats.T
+    return np.stack([1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y),
+                     2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x),
+                     2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)], axis=1).reshape(-1, 3, 3)
+
+
 def _full_inertia(moments: np.ndarray, quats: np.ndarray) -> np.ndarray:
-    out = np.zeros((len(moments), 3, 3))
-    mat = np.zeros(9)
-    for i, (m, q) in enumerate(zip(moments, quats)):
-        mujoco.mju_quat2Mat(mat, q)
-        r = mat.reshape(3, 3)
-        out[i] = r @ np.diag(m) @ r.T
+    r = _matrices(quats)
+    return r @ (moments[:, :, None] * np.swapaxes(r, 1, 2))
+
+
+def _z_to(vectors: np.ndarray) -> np.ndarray:
+    """Quaternions turning +Z onto each vector (as mju_quatZ2Vec, which the compiler's ``fromto``
+    follows): about z x v by the angle between them."""
+    v = vectors / np.linalg.norm(vectors, axis=1, keepdims=True)
+    axis = np.stack([-v[:, 1], v[:, 0], np.zeros(len(v))], axis=1)
+    sin = np.linalg.norm(axis, axis=1)
+    angle = np.arctan2(sin, v[:, 2])
+    unit = axis / np.where(sin > 0, sin, 1.0)[:, None]
+    out = np.concatenate([np.cos(angle / 2)[:, None], np.sin(angle / 2)[:, None] * unit], axis=1)
+    out[sin == 0] = np.where(v[sin == 0, 2:3] < 0, [0.0, 1.0, 0.0, 0.0], [1.0, 0.0, 0.0, 0.0])
     return out
 
 
-def _capsule_ends(pos: np.ndarray, quat: np.ndarray, half_length: float) -> tuple[np.ndarray, np.ndarray]:
-    mat = np.zeros(9)
-    mujoco.mju_quat2Mat(mat, quat)
-    axis = mat.reshape(3, 3)[:, 2]
-    return pos - half_length * axis, pos + half_length * axis
-
-
-def _x_axis(quat: np.ndarray) -> np.ndarray:
-    mat = np.zeros(9)
-    mujoco.mju_quat2Mat(mat, quat)
-    return mat.reshape(3, 3)[:, 0].copy()
-
-
-def _quat_from_x_to(d: np.ndarray) -> np.ndarray:
-    """As character.model turns a box onto its ``along`` (then normalised, as the compiler does)."""
-    d = d / np.linalg.norm(d)
-    c = float(d[0])
-    if c < -0.999999:
-        return np.array([0.0, 0.0, 0.0, 1.0])
-    q = np.array([1.0 + c, 0.0, -d[2], d[1]])          # (1 + x.d, x cross d)
-    return q / np.linalg.norm(q)
+def _x_to(vectors: np.ndarray) -> np.ndarray:
+    """As character.model turns a box onto its ``along``: (1 + x.d, x cross d), normalised."""
+    d = vectors / np.linalg.norm(vectors, axis=1, keepdims=True)
+    q = np.stack([1.0 + d[:, 0], np.zeros(len(d)), -d[:, 2], d[:, 1]], axis=1)
+    q = q / np.linalg.norm(q, axis=1, keepdims=True)
+    q[d[:, 0] < -0.999999] = [0.0, 0.0, 0.0, 1.0]
+    return q
 
 
 class Morph:
@@ -103,21 +105,43 @@ class Morph:
         self.scratch = mujoco.MjData(model)          # mj_setConst works on a data of its own
         self.fraction = 0.0
         self.kp, self.kv = self.start["kp"].copy(), self.start["kv"].copy()   # the defaults at ``fraction``
-        self.changed = {name: np.nonzero((self.start[name] != self.end[name]).reshape(-1))[0] for name in LINEAR}
-        self.inertia = (_full_inertia(self.start["body_inertia"], self.start["body_iquat"]),
-                        _full_inertia(self.end["body_inertia"], self.end["body_iquat"]))
-        self.bodies = [i for i in range(1, model.nbody)
-                       if not np.array_equal(self.inertia[0][i], self.inertia[1][i])]
-        self.geoms = [g for g in range(model.ngeom)
-                      if any(not np.array_equal(self.start[n][g], self.end[n][g]) for n in ("geom_size", "geom_pos", "geom_quat"))]
-        self.capsule_ends = {}
-        for g in self.geoms:
-            if model.geom_type[g] == mujoco.mjtGeom.mjGEOM_CAPSULE:
-                self.capsule_ends[g] = tuple(_capsule_ends(arrays["geom_pos"][g], arrays["geom_quat"][g],
-                                                           arrays["geom_size"][g, 1])
-                                             for arrays in (self.start, self.end))
-        self.box_axes = {g: (_x_axis(self.start["geom_quat"][g]), _x_axis(self.end["geom_quat"][g]))
-                         for g in self.geoms if model.geom_type[g] == mujoco.mjtGeom.mjGEOM_BOX}
+        s, e = self.start, self.end
+        self.changed = {name: np.nonzero((s[name] != e[name]).reshape(-1))[0] for name in LINEAR}
+        tensors = (_full_inertia(s["body_inertia"], s["body_iquat"]), _full_inertia(e["body_inertia"], e["body_iquat"]))
+        self.bodies = np.array([i for i in range(1, model.nbody) if not np.array_equal(tensors[0][i], tensors[1][i])],
+                               dtype=int)
+        self.inertia = (tensors[0][self.bodies], tensors[1][self.bodies])
+        geoms = np.array([g for g in range(model.ngeom) if any(not np.array_equal(s[n][g], e[n][g])
+                                                                for n in ("geom_size", "geom_pos", "geom_quat"))], dtype=int)
+        kind = model.geom_type[geoms]
+        self.geoms = geoms
+        self.capsules = geoms[kind == mujoco.mjtGeom.mjGEOM_CAPSULE]
+        self.spheres = geoms[kind == mujoco.mjtGeom.mjGEOM_SPHERE]
+        self.boxes = geoms[kind == mujoco.mjtGeom.mjGEOM_BOX]
+        self.others = geoms[kind != mujoco.mjtGeom.mjGEOM_CAPSULE]     # centred on their ``pos``
+        if len(geoms) != len(self.capsules) + len(self.spheres) + len(self.boxes):
+            raise ValueError("a morph moves capsules, spheres and boxes only")
+        c = self.capsules
+        self.capsule_ends = [(arrays["geom_pos"][c] - arrays["geom_size"][c, 1:2] * _matrices(arrays["geom_quat"][c])[:, :, 2],
+                              arrays["geom_pos"][c] + arrays["geom_size"][c, 1:2] * _matrices(arrays["geom_quat"][c])[:, :, 2])
+                             for arrays in (s, e)]
+        self.box_axes = (_matrices(s["geom_quat"][self.boxes])[:, :, 0], _matrices(e["geom_quat"][self.boxes])[:, :, 0])
+        self._prepare_trees()
+
+    def _prepare_trees(self) -> None:
+        """The bounding-volume nodes of the bodies whose geoms move: the leaves (a node per geom)
+        and the inner nodes, children before parents (the compiled model's tree)."""
+        m = self.model
+        bodies = sorted({int(m.geom_bodyid[g]) for g in self.geoms})
+        nodes = [n for b in bodies if m.body_bvhadr[b] >= 0
+                 for n in range(int(m.body_bvhadr[b]), int(m.body_bvhadr[b] + m.body_bvhnum[b]))]
+        self.leaves = np.array([n for n in nodes if m.bvh_nodeid[n] >= 0], dtype=int)
+        self.leaf_geoms = m.bvh_nodeid[self.leaves].astype(int)
+        first = {n: int(m.body_bvhadr[b]) for b in bodies for n in range(int(m.body_bvhadr[b]),
+                                                                          int(m.body_bvhadr[b] + m.body_bvhnum[b]))}
+        # children are stored relative to their body's first node, and come after their parent
+        self.inner = [(n, [first[n] + int(c) for c in m.bvh_child[n] if c >= 0])
+                      for n in sorted(nodes, reverse=True) if m.bvh_nodeid[n] < 0]
 
     def end_arrays(self) -> dict[str, np.ndarray]:
         return dict(self.end)
@@ -129,13 +153,11 @@ class Morph:
             target = getattr(m, name).reshape(-1)
             target[idx] = _lerp(s[name].reshape(-1)[idx], e[name].reshape(-1)[idx], f)
         eigval, eigvec, quat = np.zeros(3), np.zeros(9), np.zeros(4)
-        for i in self.bodies:
-            tensor = _lerp(self.inertia[0][i], self.inertia[1][i], f)
-            mujoco.mju_eig3(eigval, eigvec, quat, tensor.reshape(-1))
+        for i, tensor in zip(self.bodies, _lerp(self.inertia[0], self.inertia[1], f).reshape(-1, 9)):
+            mujoco.mju_eig3(eigval, eigvec, quat, tensor)
             m.body_inertia[i] = eigval
             m.body_iquat[i] = quat
-        for g in self.geoms:
-            self._shape(g, f)
+        self._shapes(f)
         self._bounding_boxes()
         kp, kv = _lerp(s["kp"], e["kp"], f), _lerp(s["kv"], e["kv"], f)
         kp_ratio, kv_ratio = kp / self.kp, kv / self.kv
@@ -146,56 +168,49 @@ class Morph:
         mujoco.mj_setConst(m, self.scratch)
         self.fraction = f
 
-    def _shape(self, g: int, f: float) -> None:
+    def _shapes(self, f: float) -> None:
         m, s, e = self.model, self.start, self.end
+        g = self.geoms
         m.geom_size[g] = _lerp(s["geom_size"][g], e["geom_size"][g], f)
-        if g in self.capsule_ends:
-            (a0, a1), (b0, b1) = self.capsule_ends[g]
+        g = self.others
+        m.geom_pos[g] = _lerp(s["geom_pos"][g], e["geom_pos"][g], f)
+        if len(self.boxes):
+            m.geom_quat[self.boxes] = _x_to(_lerp(self.box_axes[0], self.box_axes[1], f))
+        if len(self.capsules):
+            (a0, a1), (b0, b1) = self.capsule_ends
             p0, p1 = _lerp(a0, b0, f), _lerp(a1, b1, f)
             axis = p1 - p0
-            m.geom_pos[g] = 0.5 * (p0 + p1)
-            m.geom_size[g, 1] = 0.5 * math.sqrt(float(axis @ axis))
-            quat = np.zeros(4)
-            mujoco.mju_quatZ2Vec(quat, axis)
-            m.geom_quat[g] = quat
-        else:
-            m.geom_pos[g] = _lerp(s["geom_pos"][g], e["geom_pos"][g], f)
-            if g in self.box_axes:
-                a, b = self.box_axes[g]
-                m.geom_quat[g] = _quat_from_x_to(_lerp(a, b, f))
-        kind, size = m.geom_type[g], m.geom_size[g]
-        if kind == mujoco.mjtGeom.mjGEOM_SPHERE:
-            half = np.array([size[0]] * 3)
-        elif kind == mujoco.mjtGeom.mjGEOM_CAPSULE:
-            half = np.array([size[0], size[0], size[0] + size[1]])
-        else:
-            half = size.copy()
-        m.geom_aabb[g] = [0.0, 0.0, 0.0, *half]
-        m.geom_rbound[g] = float(np.linalg.norm(half)) if kind == mujoco.mjtGeom.mjGEOM_BOX else float(half[2])
+            m.geom_pos[self.capsules] = 0.5 * (p0 + p1)
+            m.geom_size[self.capsules, 1] = 0.5 * np.linalg.norm(axis, axis=1)
+            m.geom_quat[self.capsules] = _z_to(axis)
+        # MuJoCo's bounding box (centre, half sizes) and radius of each primitive
+        r = m.geom_size[self.spheres, 0]
+        m.geom_aabb[self.spheres] = np.stack([0 * r, 0 * r, 0 * r, r, r, r], axis=1)
+        m.geom_rbound[self.spheres] = r
+        r, h = m.geom_size[self.capsules, 0], m.geom_size[self.capsules, 1]
+        m.geom_aabb[self.capsules] = np.stack([0 * r, 0 * r, 0 * r, r, r, r + h], axis=1)
+        m.geom_rbound[self.capsules] = r + h
+        half = m.geom_size[self.boxes]
+        m.geom_aabb[self.boxes] = np.concatenate([0 * half, half], axis=1)
+        m.geom_rbound[self.boxes] = np.linalg.norm(half, axis=1)
 
     def _bounding_boxes(self) -> None:
-        """Each body's bounding-volume tree (the compiled model's structure) over its geoms' boxes
-        in the body frame, leaves first."""
+        """Each moved body's bounding-volume tree (the compiled model's structure) over its geoms'
+        boxes in the body frame: the leaves at once, then the inner nodes, children first."""
         m = self.model
-        mat = np.zeros(9)
-        for body in {int(m.geom_bodyid[g]) for g in self.geoms}:
-            first, count = int(m.body_bvhadr[body]), int(m.body_bvhnum[body])
-            if first < 0:
-                continue
-            lo, hi = np.zeros((count, 3)), np.zeros((count, 3))
-            for k in reversed(range(count)):
-                node = first + k
-                g = int(m.bvh_nodeid[node])
-                if g >= 0:
-                    mujoco.mju_quat2Mat(mat, m.geom_quat[g])
-                    centre = m.geom_pos[g] + mat.reshape(3, 3) @ m.geom_aabb[g, :3]
-                    half = np.abs(mat.reshape(3, 3)) @ m.geom_aabb[g, 3:]
-                    lo[k], hi[k] = centre - half, centre + half
-                else:
-                    children = [int(c) for c in m.bvh_child[node] if c >= 0]     # relative to the body's first node
-                    lo[k] = np.min([lo[c] for c in children], axis=0)
-                    hi[k] = np.max([hi[c] for c in children], axis=0)
-                m.bvh_aabb[node] = [*(0.5 * (lo[k] + hi[k])), *(0.5 * (hi[k] - lo[k]))]
+        g = self.leaf_geoms
+        rot = _matrices(m.geom_quat[g])
+        centre = m.geom_pos[g] + (rot @ m.geom_aabb[g, :3, None])[:, :, 0]
+        half = (np.abs(rot) @ m.geom_aabb[g, 3:, None])[:, :, 0]
+        lo, hi = {}, {}
+        for n, c, h in zip(self.leaves, centre, half):
+            lo[n], hi[n] = c - h, c + h
+        for n, children in self.inner:
+            lo[n] = np.min([lo[c] for c in children], axis=0)
+            hi[n] = np.max([hi[c] for c in children], axis=0)
+        nodes = list(lo)
+        low, high = np.array([lo[n] for n in nodes]), np.array([hi[n] for n in nodes])
+        m.bvh_aabb[nodes] = np.concatenate([0.5 * (low + high), 0.5 * (high - low)], axis=1)
 
 
 def morph_models(start: CharacterSpec, end: CharacterSpec, world=None, strength="human"):
