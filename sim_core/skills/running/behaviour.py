@@ -85,8 +85,8 @@ STEERED_RUNNERS = ("man",)      # criterion: the runners measured to turn, follo
 # circles and figure eights, radii 6-50 m, 2.5-5 m/s): at 3.75 m/s and faster every curve fell, even a
 # circle of radius 50 m at 5 m/s; up to 3.5 m/s every curve asking at most 0.625 m/s^2 (v^2 / r) was run
 STEER_MAX_SPEED = 3.5
-MORPH_TARGETS = ("none", "woman")   # criterion: the characters of the man's skeleton with a running table
 STEER_MAX_ACCELERATION = 0.625
+MORPH_TARGETS = ("none", "woman")   # criterion: the characters of the man's skeleton with a running table
 
 class SpeedTable:
     """Tuned values of some parameters as functions of the running speed (piecewise linear,
@@ -325,7 +325,8 @@ class Running(Behaviour):
         Choice("morph_to", MORPH_TARGETS, "none",
                "the body turns into this character while it runs (Hodgins & Pollard 1997's metamorphosis: lengths, "
                "masses, inertias and servos interpolated every control tick); straight ahead, at speeds both run"),
-        Parameter("morph_start", "s", 5.0, 0.0, 100.0, "the morph starts this long into the run (the man reaches 90 % of 3.5 m/s by 4.7 s)"),
+        Parameter("morph_start", "s", 5.0, 0.0, 100.0,
+                  "the morph starts this long into the run (the man reaches 90 % of 3.5 m/s by 4.7 s)"),
         Parameter("morph_time", "s", 20.0, 1.0, 100.0, "the morph takes this long, linearly"),
         settings=RUNNING_SETTINGS,
     )
