@@ -96,7 +96,6 @@ def test_a_quick_morph_runs_without_a_fall_and_replays_bit_for_bit(tmp_path):
     assert largest_difference(saved, replay(saved)) == 0.0
 
 
-@pytest.mark.slow
 def test_the_morph_of_the_seed_runs_without_a_fall():
     """Hodgins & Pollard 1997: 20 s of morph, then 7 s as the woman (after 5 s as the man) at
     3 m/s: no fall, the mean speed within 5 % during the morph and after it."""
