@@ -80,6 +80,12 @@ def test_a_morph_is_refused_outside_what_both_run_in_one_line(values, message):
     assert "\n" not in str(err.value)
 
 
+def test_a_morph_from_another_runner_than_the_man_is_refused_in_one_line():
+    with pytest.raises(ParameterError, match="measured from the man only") as err:
+        run(RunRequest("running", "woman", params={"morph_to": "woman", "speed": 3.0}, duration=0.05))
+    assert "\n" not in str(err.value)
+
+
 def test_a_quick_morph_runs_without_a_fall_and_replays_bit_for_bit(tmp_path):
     """The man at 3 m/s turns into the woman over 6 s (from 4 s on), then runs 2 s as her: no
     fall, and the saved run replays bit for bit (the model is re-morphed from the log)."""

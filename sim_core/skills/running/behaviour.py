@@ -87,6 +87,7 @@ STEERED_RUNNERS = ("man",)      # criterion: the runners measured to turn, follo
 STEER_MAX_SPEED = 3.5
 STEER_MAX_ACCELERATION = 0.625
 MORPH_TARGETS = ("none", "woman")   # criterion: the characters of the man's skeleton with a running table
+MORPH_FROM = ("man",)               # criterion: the runners measured morphing (docs/bodies.md, the morph)
 
 class SpeedTable:
     """Tuned values of some parameters as functions of the running speed (piecewise linear,
@@ -370,6 +371,9 @@ class Running(Behaviour):
             raise ParameterError("morph_to: a morph runs alone (a one-character run), not as an actor of a scene")
         require_calibrated("running", target, self.name)
         name = self.ctx.character.name
+        if name not in MORPH_FROM:
+            raise ParameterError(f"morph_to: the {name} cannot morph; the morph is measured from the "
+                                 f"{', '.join(MORPH_FROM)} only (docs/bodies.md, the morph)")
         if "table" in self.params:
             ends = (self.table.start.speeds, SpeedTable.load(target).speeds)
         else:
