@@ -49,7 +49,18 @@ def channels_for(obj: bpy.types.Object, trajectory, fps: float, start_frame: int
         if parent is not None and parent.name not in names:
             raise RigError(f"bone {n!r} has parent {parent.name!r}, which is not a simulated body")
     return bake_channels(trajectory.arrays, rest_matrices(obj, names), names, bone_parents(obj, names),
-                         fps=fps, start_frame=start_frame, duration=duration)
+                         fps=fps, start_frame=start_frame, duration=duration, morph=morph_masses(trajectory, names))
+
+
+def morph_masses(trajectory, names: list[str]):
+    """(meta, start masses, end masses) per named body of a morphing run (its model's and the
+    morph's end arrays), or None for a run whose body stays as it is."""
+    end = trajectory.arrays.get(sim("edit_log").MORPH_END + "body_mass")
+    if end is None:
+        return None
+    model = mujoco.MjModel.from_xml_string(trajectory.meta["model_xml"])
+    ids = [model.body(n).id for n in names]
+    return trajectory.meta, model.body_mass[ids].copy(), np.asarray(end)[ids]
 
 
 def fill_fcurves(fcurves: list, frames: np.ndarray, values: list[np.ndarray]) -> None:

@@ -3,8 +3,8 @@
 recorded into a Trajectory together with the log that replays it bit for bit.
 
 Per control tick, in this order (replay follows the same order):
-  1. apply the edit log of this tick (pushes, gains, gravity) - in a live run, written by the
-     push schedule and the behaviour as they act;
+  1. apply the edit log of this tick (pushes, gains, gravity, a morph of the body) - in a live run,
+     written by the push schedule and the behaviour as they act;
   2. fresh kinematics (positions, COM, COM velocity) of the current state;
   3. record a frame;
   4. the behaviour sets servo targets -> control vector (live run) / read it from the log (replay);
@@ -25,6 +25,7 @@ import mujoco
 import numpy as np
 
 from .character.model import compile_model, place_standing, set_standing_pose
+from .character.morph import morph_models
 from .character.spec import CharacterSpec, load_character
 from .control.actor import ActorView
 from .control.behaviour import Behaviour, ControlContext
@@ -239,7 +240,12 @@ def run(request: RunRequest, progress: Callable[[float], None] | None = None,
     """Validate, simulate and return the trajectory (nothing is written to disk here)."""
     character, cls, params, duration = request.validated()
     world = cls.scene(params, request.world, character)
-    model, xml = compile_model(character, world, request.strength)
+    morph_to = cls.morph_target(params)
+    morph = None
+    if morph_to is None:
+        model, xml = compile_model(character, world, request.strength)
+    else:
+        model, xml, morph = morph_models(character, load_character(morph_to), world, request.strength)
     data = mujoco.MjData(model)
     set_standing_pose(model, data, character)
     request.start.apply(model, data)
@@ -251,7 +257,7 @@ def run(request: RunRequest, progress: Callable[[float], None] | None = None,
     view = ActorView.of(model)
     servos = ServoBank(model, data, character, log, view)
     behaviour = cls(params, ControlContext(model, data, character, servos, control_dt=1.0 / cls.control_rate,
-                                           actor=view))
+                                           actor=view, morph=morph))
     behaviour.check_feasible()
     actors = [ActorRun("", view, behaviour)]
     support_sites = behaviour_support_sites(model)
@@ -275,6 +281,7 @@ def run(request: RunRequest, progress: Callable[[float], None] | None = None,
         "support_site_side": [model.body(model.site_bodyid[i]).name[-1] for i in support_sites],
         "world_geoms": [model.geom(g).name for g in named_world_geoms(model)],
         "mujoco_version": mujoco.__version__,
+        **({"morph_to": morph_to} if morph is not None else {}),
     }
     trajectory = Trajectory(arrays, meta)
     outcome, metrics = cls.assess(trajectory)
@@ -389,6 +396,10 @@ class _Loop:
             pushes.apply(t, 0.5 * tick_time)
             if world.tilting(t):
                 log.set_flat(model.opt.gravity, "opt.gravity", world.gravity(t))
+            for a in actors:
+                morph = a.behaviour.ctx.morph
+                if morph is not None and (f := a.behaviour.morph_fraction(t)) != morph.fraction:
+                    log.set_morph(morph, f)          # the body changes before this tick's kinematics
             refresh_kinematics(model, data)
             if tick == 0:
                 for a in actors:

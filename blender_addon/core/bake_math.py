@@ -145,13 +145,17 @@ def resample(times: np.ndarray, positions: np.ndarray, quats: np.ndarray, at: np
     return pos, rot
 
 
-def bone_pose_matrices(body_pos: np.ndarray, body_quat: np.ndarray, rest: np.ndarray) -> np.ndarray:
+def bone_pose_matrices(body_pos: np.ndarray, body_quat: np.ndarray, rest: np.ndarray,
+                       scale: np.ndarray | None = None) -> np.ndarray:
     """World body poses in the sim frame (F, B, 3) / (F, B, 4) -> bone pose matrices (F, B, 4, 4)
     in armature space: rotation = body rotation (conjugated into Blender's axes) applied to the
-    bone's rest orientation; head = the body frame's origin."""
+    bone's rest orientation; head = the body frame's origin; ``scale`` (F, B): each bone's uniform
+    scale (a morphing body's segments, ``morph_scales``)."""
     rot = SIM_TO_BLENDER @ quat_to_matrix(body_quat) @ SIM_TO_BLENDER.T
     out = np.zeros(body_pos.shape[:2] + (4, 4))
     out[..., :3, :3] = rot @ rest[None, :, :3, :3]
+    if scale is not None:
+        out[..., :3, :3] *= scale[..., None, None]
     out[..., :3, 3] = body_pos @ SIM_TO_BLENDER.T
     out[..., 3, 3] = 1.0
     return out
@@ -166,20 +170,33 @@ def rigid_inverse(m: np.ndarray) -> np.ndarray:
     return out
 
 
-def basis_from_pose(pose: np.ndarray, rest: np.ndarray, parents: list[int]) -> np.ndarray:
+def similarity_inverse(m: np.ndarray) -> np.ndarray:
+    """Inverse of rotation x uniform scale + translation matrices (a scaled bone's pose)."""
+    out = np.zeros_like(m)
+    s2 = np.sum(m[..., :3, 0] ** 2, axis=-1)[..., None, None]
+    rt = np.swapaxes(m[..., :3, :3], -1, -2) / s2
+    out[..., :3, :3] = rt
+    out[..., :3, 3] = -(rt @ m[..., :3, 3:4])[..., 0]
+    out[..., 3, 3] = 1.0
+    return out
+
+
+def basis_from_pose(pose: np.ndarray, rest: np.ndarray, parents: list[int], scaled: bool = False) -> np.ndarray:
     """Armature-space pose matrices (F, B, 4, 4) -> ``matrix_basis`` (F, B, 4, 4).
 
     Blender evaluates ``pose = parent_pose @ (parent_rest^-1 @ rest) @ basis`` (``rest @ basis``
     for the root) for bones that inherit rotation and scale, so ``basis`` is that solved for.
+    ``scaled``: the poses carry uniform scales (a morph), so the parents' are inverted as such.
     """
     basis = np.empty_like(pose)
     inv_rest = rigid_inverse(rest)
+    inverse = similarity_inverse if scaled else rigid_inverse
     for b, p in enumerate(parents):
         if p < 0:
             basis[:, b] = inv_rest[b] @ pose[:, b]
         else:
             rest_local = inv_rest[p] @ rest[b]
-            basis[:, b] = rigid_inverse(rest_local) @ rigid_inverse(pose[:, p]) @ pose[:, b]
+            basis[:, b] = rigid_inverse(rest_local) @ inverse(pose[:, p]) @ pose[:, b]
     return basis
 
 
@@ -190,6 +207,8 @@ class BoneChannels:
     root_location: np.ndarray       # (F, 3) root bone location (bone-local, Blender's convention)
     rotations: np.ndarray           # (F, B, 4) rotation_quaternion per bone (w, x, y, z)
     joint_slip: float               # largest translation a non-root basis would need (m): ~0
+    locations: np.ndarray | None = None   # (F, B, 3) every bone's location: a morphing body's joints move
+    scales: np.ndarray | None = None      # (F, B) every bone's uniform scale (its basis's)
 
     def fcurve_values(self):
         """(data_path, index, bone, values (F,)) for every F-curve to write."""
@@ -199,15 +218,51 @@ class BoneChannels:
         for b, name in enumerate(self.names):
             for i in range(4):
                 yield f'pose.bones["{name}"].rotation_quaternion', i, name, self.rotations[:, b, i]
+        if self.scales is None:
+            return
+        for b, name in enumerate(self.names):
+            if b > 0:
+                for i in range(3):
+                    yield f'pose.bones["{name}"].location', i, name, self.locations[:, b, i]
+            for i in range(3):
+                yield f'pose.bones["{name}"].scale', i, name, self.scales[:, b]
 
 
-def channels(frames: np.ndarray, basis: np.ndarray, names: list[str], parents: list[int]) -> BoneChannels:
+def channels(frames: np.ndarray, basis: np.ndarray, names: list[str], parents: list[int],
+             scaled: bool = False) -> BoneChannels:
     roots = [b for b, p in enumerate(parents) if p < 0]
     if roots != [0]:
         raise ValueError("the first bone must be the only root")
-    rotations = make_continuous(matrix_to_quat(basis[..., :3, :3]))
-    slip = float(np.abs(basis[:, 1:, :3, 3]).max()) if len(names) > 1 else 0.0
-    return BoneChannels(frames, list(names), basis[:, 0, :3, 3].copy(), rotations, slip)
+    if not scaled:
+        rotations = make_continuous(matrix_to_quat(basis[..., :3, :3]))
+        slip = float(np.abs(basis[:, 1:, :3, 3]).max()) if len(names) > 1 else 0.0
+        return BoneChannels(frames, list(names), basis[:, 0, :3, 3].copy(), rotations, slip)
+    scales = np.linalg.norm(basis[..., :3, 0], axis=-1)
+    rotations = make_continuous(matrix_to_quat(basis[..., :3, :3] / scales[..., None, None]))
+    return BoneChannels(frames, list(names), basis[:, 0, :3, 3].copy(), rotations, 0.0,
+                        basis[..., :3, 3].copy(), scales)
+
+
+def morph_fraction_at(arrays: dict, meta: dict, times: np.ndarray) -> np.ndarray | None:
+    """A morphing run's fraction f (sim_core.character.morph) at ``times`` (s from the start),
+    from its edit log: f holds from each logged tick on (None: the run does not morph)."""
+    fields = meta.get("edit_fields", [])
+    if "morph" not in fields:
+        return None
+    sel = arrays["edit_field"] == fields.index("morph")
+    if not sel.any():
+        return None
+    tick_time = meta["steps_per_tick"] * meta["timestep"]
+    ticks, values = arrays["edit_tick"][sel], arrays["edit_value"][sel]
+    k = np.searchsorted(ticks * tick_time, np.asarray(times, float) + 1e-9, side="right") - 1
+    return np.where(k >= 0, values[np.maximum(k, 0)], 0.0)
+
+
+def morph_scales(fraction: np.ndarray, start_mass: np.ndarray, end_mass: np.ndarray) -> np.ndarray:
+    """(F, B) each bone's uniform scale at the fractions (F,): the cube root of its body's mass
+    ratio, so that the skin's volume per segment x its density stays the segment's mass."""
+    mass = start_mass[None, :] + fraction[:, None] * (end_mass - start_mass)[None, :]
+    return np.cbrt(mass / start_mass[None, :])
 
 
 def frame_poses(trajectory_arrays: dict, names: list[str], fps: float, start_frame: int = 1,
@@ -229,15 +284,25 @@ def frame_poses(trajectory_arrays: dict, names: list[str], fps: float, start_fra
 
 
 def bake_channels(trajectory_arrays: dict, rest: np.ndarray, names: list[str], parents: list[int],
-                  fps: float, start_frame: int = 1, duration: float | None = None) -> BoneChannels:
+                  fps: float, start_frame: int = 1, duration: float | None = None,
+                  morph: tuple | None = None) -> BoneChannels:
     """The whole pipeline: trajectory arrays + the armature's rest matrices -> F-curve channels.
 
     ``names``/``parents``/``rest`` describe the armature's bones; every bone must be a body of
-    the trajectory (matched by name, so the order of bones and bodies need not agree)."""
+    the trajectory (matched by name, so the order of bones and bodies need not agree).
+    ``morph``: (meta, start masses, end masses) of a morphing run (the masses per bone, in
+    ``names`` order): each bone is then scaled with its body, and its joint placed where the
+    body's is (location channels)."""
     frames, pos, quat = frame_poses(trajectory_arrays, names, fps, start_frame, duration,
                                     missing="bones without a simulated body")
-    pose = bone_pose_matrices(pos, quat, rest)
-    return channels(frames, basis_from_pose(pose, rest, parents), names, parents)
+    if morph is None:
+        pose = bone_pose_matrices(pos, quat, rest)
+        return channels(frames, basis_from_pose(pose, rest, parents), names, parents)
+    meta, start_mass, end_mass = morph
+    fraction = morph_fraction_at(trajectory_arrays, meta, (frames - frames[0]) / fps)
+    scale = morph_scales(fraction, start_mass, end_mass)
+    pose = bone_pose_matrices(pos, quat, rest, scale)
+    return channels(frames, basis_from_pose(pose, rest, parents, scaled=True), names, parents, scaled=True)
 
 
 # ----------------------------------------------------------------------------- checks
@@ -247,6 +312,9 @@ def pose_from_channels(ch: BoneChannels, rest: np.ndarray, parents: list[int]) -
     n_frames, n_bones = ch.rotations.shape[:2]
     basis = np.zeros((n_frames, n_bones, 4, 4))
     basis[..., :3, :3] = quat_to_matrix(ch.rotations)
+    if ch.scales is not None:
+        basis[..., :3, :3] *= ch.scales[..., None, None]
+        basis[..., :3, 3] = ch.locations
     basis[:, 0, :3, 3] = ch.root_location
     basis[..., 3, 3] = 1.0
     pose = np.empty_like(basis)
@@ -262,5 +330,6 @@ def pose_from_channels(ch: BoneChannels, rest: np.ndarray, parents: list[int]) -
 def body_pose_from_bone(pose: np.ndarray, rest: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """Bone pose matrices (armature space) -> body positions and rotation matrices in the sim
     frame (what a bake must reproduce)."""
-    rot = SIM_TO_BLENDER.T @ (pose[..., :3, :3] @ np.swapaxes(rest[..., :3, :3], -1, -2)) @ SIM_TO_BLENDER
+    scale = np.linalg.norm(pose[..., :3, 0], axis=-1)[..., None, None]       # 1 but for a morph
+    rot = SIM_TO_BLENDER.T @ (pose[..., :3, :3] / scale @ np.swapaxes(rest[..., :3, :3], -1, -2)) @ SIM_TO_BLENDER
     return pose[..., :3, 3] @ SIM_TO_BLENDER, rot

@@ -79,18 +79,21 @@ def new_spec(name: str) -> mujoco.MjSpec:
     return spec
 
 
-def build_mjspec(character: CharacterSpec, world: World | None = None, strength: str | float = "human") -> mujoco.MjSpec:
-    """One character, unprefixed, standing at the origin facing +X, in ``world``."""
+def build_mjspec(character: CharacterSpec, world: World | None = None, strength: str | float = "human",
+                 also_excluded: tuple = ()) -> mujoco.MjSpec:
+    """One character, unprefixed, standing at the origin facing +X, in ``world``; ``also_excluded``:
+    body pairs kept from colliding besides its own (a morph's: the pairs of the body it turns into)."""
     world = world or World()
     spec = new_spec(f"sim_athletics_{character.name}")
-    add_character(spec, character, world.extra_mass, strength)
+    add_character(spec, character, world.extra_mass, strength, also_excluded=also_excluded)
     add_world(spec, world, character)      # after the character: a moving prop's body comes last
     add_attachments(spec, world, character)
     return spec
 
 
 def add_character(spec: mujoco.MjSpec, character: CharacterSpec, extra_mass: dict | None = None,
-                  strength: str | float = "human", prefix: str = "", placement: Placement | None = None) -> None:
+                  strength: str | float = "human", prefix: str = "", placement: Placement | None = None,
+                  also_excluded: tuple = ()) -> None:
     """The character's bodies, joints, geoms, sites, servos and excluded contact pairs, every name
     prefixed by ``prefix`` (a scene's "<actor>/"; "" for a single character), its root at
     ``placement`` (None: the spec's own frame, as a single character stands)."""
@@ -105,7 +108,7 @@ def add_character(spec: mujoco.MjSpec, character: CharacterSpec, extra_mass: dic
             act.forcerange = [-dof.torque_limit * torque_scale, dof.torque_limit * torque_scale]
         else:
             act.forcelimited = mujoco.mjtLimited.mjLIMITED_FALSE
-    for a, b in excluded_pairs(character):
+    for a, b in sorted(set(excluded_pairs(character)) | {tuple(sorted(p)) for p in also_excluded}):
         spec.add_exclude(bodyname1=prefix + a, bodyname2=prefix + b)
 
 
@@ -221,7 +224,8 @@ def place_standing(model: mujoco.MjModel, data: mujoco.MjData, character: Charac
         data.qpos[model.joint(prefix + dof.name).qposadr[0]] = character.standing_pose[i]
 
 
-def compile_model(character: CharacterSpec, world: World | None = None, strength="human") -> tuple[mujoco.MjModel, str]:
+def compile_model(character: CharacterSpec, world: World | None = None, strength="human",
+                  also_excluded: tuple = ()) -> tuple[mujoco.MjModel, str]:
     """Return (model, mjcf_text); the model is compiled from the text (see module doc)."""
-    xml = build_mjspec(character, world, strength).to_xml()
+    xml = build_mjspec(character, world, strength, also_excluded).to_xml()
     return mujoco.MjModel.from_xml_string(xml), xml

@@ -9,6 +9,7 @@ from typing import ClassVar
 import mujoco
 import numpy as np
 
+from ..character.morph import Morph
 from ..character.spec import CharacterSpec
 from .actor import ActorView
 from .servo import ServoBank
@@ -35,6 +36,8 @@ class ControlContext:
                                       # a finer step, e.g. a twisting flight); logged for replay
     actor: ActorView | None = None    # where this behaviour's character is in the model (its name
                                       # prefix, root body, index ranges); None: the model's only one
+    morph: Morph | None = None        # a Morph when the body turns into another
+                                      # during the run (the loop applies morph_fraction each tick)
 
     def __post_init__(self):
         if self.actor is None:
@@ -67,6 +70,15 @@ class Behaviour:
 
     def event(self, t: float, name: str) -> None:
         self.phase_events.append((float(t), name))
+
+    @classmethod
+    def morph_target(cls, params: dict) -> str | None:
+        """The character the body turns into during the run (None: it stays itself)."""
+        return None
+
+    def morph_fraction(self, t: float) -> float:
+        """How far the body is on its way to ``morph_target`` at time t (0-1)."""
+        return 0.0
 
     @classmethod
     def scene(cls, params: dict[str, float], world, character=None):

@@ -112,6 +112,35 @@ def test_basis_solves_blenders_pose_evaluation():
     assert back.joint_slip < 1e-12
 
 
+def test_scaled_bones_solve_blenders_pose_evaluation():
+    """A morph's bones carry a uniform scale and a location each: pose -> basis -> pose again."""
+    parents = [-1, 0, 1, 1, 0]
+    n = len(parents)
+    rest = np.tile(np.eye(4), (n, 1, 1))
+    rest[:, :3, :3] = bm.quat_to_matrix(random_quats(n))
+    rest[:, :3, 3] = RNG.normal(size=(n, 3))
+    ch = bm.BoneChannels(np.arange(6.0), [str(i) for i in range(n)], RNG.normal(size=(6, 3)),
+                         random_quats(6 * n).reshape(6, n, 4), 0.0, RNG.normal(size=(6, n, 3)),
+                         RNG.uniform(0.7, 1.0, size=(6, n)))
+    ch.locations[:, 0] = ch.root_location
+    pose = bm.pose_from_channels(ch, rest, parents)
+    back = bm.channels(ch.frames, bm.basis_from_pose(pose, rest, parents, scaled=True), ch.names, parents, scaled=True)
+    assert np.allclose(back.root_location, ch.root_location) and np.allclose(back.locations, ch.locations)
+    assert np.allclose(back.scales, ch.scales)
+    assert np.max(bm.quat_angle(back.rotations, ch.rotations)) < 1e-7
+
+
+def test_morph_scales_follow_the_logged_fraction():
+    """f holds from each logged tick on; a bone's scale is the cube root of its mass ratio."""
+    meta = {"edit_fields": ["actuator_gainprm", "morph"], "steps_per_tick": 5, "timestep": 0.001}
+    arrays = {"edit_field": np.array([0, 1, 1]), "edit_tick": np.array([0, 2, 4]), "edit_value": np.array([9.0, 0.5, 1.0])}
+    f = bm.morph_fraction_at(arrays, meta, np.array([0.0, 0.009, 0.010, 0.015, 0.020, 1.0]))
+    assert f.tolist() == [0.0, 0.0, 0.5, 0.5, 1.0, 1.0]
+    assert bm.morph_fraction_at(arrays, {"edit_fields": ["actuator_gainprm"]}, np.zeros(1)) is None
+    scale = bm.morph_scales(np.array([0.0, 1.0]), np.array([8.0, 2.0]), np.array([1.0, 2.0]))
+    assert np.allclose(scale, [[1.0, 1.0], [0.5, 1.0]])
+
+
 def test_trajectory_round_trip_through_channels(knee_bend):
     """Channels at the 200 Hz samples reproduce every body's pose (what the bake must show)."""
     spec = load_character("man")

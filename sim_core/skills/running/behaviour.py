@@ -42,8 +42,10 @@ import numpy as np
 from ...ballistics import GRAVITY, time_to_fall_to
 from ...errors import ParameterError
 from ...character.model import Placement
+from ...character.spec import load_character
 from ...control.behaviour import Behaviour, ControlContext, register
 from .leg import RunnerLeg
+from .morph import RAMPED, MorphTable, leg_between, lerp, morph_ramps, morph_speed_metrics
 from ...control.path import (MAX_POINTS, PathFollower, circle_path, figure_eight_path, tightest_radius, turn_path,
                              validate_path)
 from ...control.servo import hermite_scalar
@@ -84,6 +86,8 @@ STEERED_RUNNERS = ("man",)      # criterion: the runners measured to turn, follo
 # circle of radius 50 m at 5 m/s; up to 3.5 m/s every curve asking at most 0.625 m/s^2 (v^2 / r) was run
 STEER_MAX_SPEED = 3.5
 STEER_MAX_ACCELERATION = 0.625
+MORPH_TARGETS = ("none", "woman")   # criterion: the characters of the man's skeleton with a running table
+MORPH_FROM = ("man",)               # criterion: the runners measured morphing (docs/bodies.md, the morph)
 
 class SpeedTable:
     """Tuned values of some parameters as functions of the running speed (piecewise linear,
@@ -261,16 +265,35 @@ CONSTANT_NAMES = tuple(load("running", "any")["constants"])
 class RunningSchema(SkillSchema):
     """The schema's parameters, plus ``table``: a running table's speeds and columns to run with
     instead of the stored one (a tuner's candidate, SpeedTable.to_table), checked like a stored
-    table's rows."""
+    table's rows; and ``morph_ramps``: the five tuned parameters' offsets at the morph's end (a
+    tuner's candidate), each within plus or minus its range's width."""
 
     def validate(self, values: dict) -> dict:
         values = dict(values)
         table = values.pop("table", None)
+        ramps = values.pop("morph_ramps", None)
         result = super().validate(values)
         if table is not None:
             check_rows("the table parameter", "running", table)
             result["table"] = table
+        if ramps is not None:
+            result["morph_ramps"] = check_ramps(ramps)
         return result
+
+
+def check_ramps(ramps: dict) -> dict[str, float]:
+    """A morph's ramp offsets: names among the five, finite, within their ranges' widths."""
+    out = {}
+    for name, value in dict(ramps).items():
+        if name not in RAMPED:
+            raise ParameterError(f"morph_ramps: unknown parameter {name!r}; allowed: {', '.join(RAMPED)}")
+        setting = SETTING_RANGES.by_name[name]
+        width = setting.maximum - setting.minimum
+        if not (isinstance(value, (int, float)) and math.isfinite(value) and abs(value) <= width):
+            raise ParameterError(f"morph_ramps: {name}={value!r} is out of range; allowed range is "
+                                 f"[{-width:g}, {width:g}] {setting.unit}")
+        out[name] = float(value)
+    return out
 
 
 @register
@@ -300,8 +323,23 @@ class Running(Behaviour):
         Parameter("arm_swing", "1", 0.8, 0.0, 2.0,
                   "k of eq. 5: shoulder swing per radian of the opposite hip's swing"),
         Parameter("start_lean", "s", 0.35, 0.1, 1.0, "time the standing body leans forward before the first push-off"),
+        Choice("morph_to", MORPH_TARGETS, "none",
+               "the body turns into this character while it runs (Hodgins & Pollard 1997's metamorphosis: lengths, "
+               "masses, inertias and servos interpolated every control tick); straight ahead, at speeds both run"),
+        Parameter("morph_start", "s", 5.0, 0.0, 100.0,
+                  "the morph starts this long into the run (the man reaches 90 % of 3.5 m/s by 4.7 s)"),
+        Parameter("morph_time", "s", 20.0, 1.0, 100.0, "the morph takes this long, linearly"),
         settings=RUNNING_SETTINGS,
     )
+
+    @classmethod
+    def morph_target(cls, params: dict) -> str | None:
+        target = cls.schema.by_name["morph_to"].option(params.get("morph_to", 0.0))
+        return None if target == "none" else target
+
+    def morph_fraction(self, t: float) -> float:
+        p = self.params
+        return min(1.0, max(0.0, (t - p["morph_start"]) / p["morph_time"]))
 
     def check_feasible(self) -> None:
         """A runner needs its own running table, and runs only at the speeds it covers (the man's:
@@ -323,6 +361,32 @@ class Running(Behaviour):
                                      f"is calibrated for {', '.join(STEERED_RUNNERS)} only (the woman fell 1.6 s into "
                                      f"a run at facing=1 and 4.1 s into the turn, circle and figure-eight courses at "
                                      f"3 m/s; docs/running.md, the woman)")
+        target = self.morph_target(self.params)
+        if target is not None:
+            self._check_morph(target)
+
+    def _check_morph(self, target: str) -> None:
+        """A morph runs alone, straight ahead, at a speed both characters' tables cover."""
+        if self.ctx.actor.prefix:
+            raise ParameterError("morph_to: a morph runs alone (a one-character run), not as an actor of a scene")
+        require_calibrated("running", target, self.name)
+        name = self.ctx.character.name
+        if name not in MORPH_FROM:
+            raise ParameterError(f"morph_to: the {name} cannot morph; the morph is measured from the "
+                                 f"{', '.join(MORPH_FROM)} only (docs/bodies.md, the morph)")
+        if "table" in self.params:
+            ends = (self.table.start.speeds, SpeedTable.load(target).speeds)
+        else:
+            ends = (SpeedTable.load(name).speeds, SpeedTable.load(target).speeds)
+        low, high = max(e[0] for e in ends), min(e[-1] for e in ends)
+        speed = self.params["speed"]
+        if not low <= speed <= high:
+            raise ParameterError(f"parameter speed={speed:g} m/s is out of range for a morph from the {name} to the "
+                                 f"{target}; allowed range for speed is [{low:g}, {high:g}] m/s (the speeds both "
+                                 f"running tables cover)")
+        if path_for(self.params) is not None:
+            raise ParameterError(f"a morph into the {target} runs only straight ahead (course=straight, facing=0, "
+                                 f"no path): the {target} is not calibrated to turn")
 
     # --------------------------------------------------------------------- setup
     def __init__(self, params, ctx: ControlContext):
@@ -361,6 +425,8 @@ class Running(Behaviour):
         share = self.constants.stance_hip_share      # stance hip servos are torque-commanded: low kp
         self.stance_hip_gains = {key: (share, share) for key in ("hy", "hx", "hz")}
         self.p = dict(params)
+        if ctx.morph is not None:
+            self._prepare_morph(params, defaults)
         self._schedule(0.0)
         placement = ctx.actor.placement
         self.path = self._path()
@@ -370,6 +436,38 @@ class Running(Behaviour):
 
     def _path(self):
         return path_for(self.params, self.ctx.actor.placement)
+
+    def _prepare_morph(self, params: dict, defaults: dict) -> None:
+        """The two ends of the control model (this character's and the target's): tables, the
+        constants of the laws, the legs; the ramps' offsets of the five parameters."""
+        target = self.morph_target(params)
+        end_table = SpeedTable.load(target)
+        own = end_table.constants
+        self.morph_constants = (vars(self.constants).copy(),
+                                {n: own[n] if n in own and params.get(n, defaults[n]) == defaults[n]
+                                 else params.get(n, defaults[n]) for n in CONSTANT_NAMES})
+        end = load_character(target)
+        self.morph_legs = (self.legs, [RunnerLeg(end, "R"), RunnerLeg(end, "L")])
+        bounds = {n: (SETTING_RANGES.by_name[n].minimum, SETTING_RANGES.by_name[n].maximum) for n in RAMPED}
+        self.table = MorphTable(self.table, end_table, morph_ramps(target, params), bounds)
+        self.morph_seen = 0.0
+
+    def _follow_morph(self) -> None:
+        """The control model at the body's fraction of the way (called when it has moved on)."""
+        f = self.ctx.morph.fraction
+        self.morph_seen = f
+        self.table.fraction = f
+        start, end = self.morph_constants
+        self.constants = SimpleNamespace(**{n: lerp(start[n], end[n], f) for n in CONSTANT_NAMES})
+        share = self.constants.stance_hip_share
+        self.stance_hip_gains = {key: (share, share) for key in ("hy", "hx", "hz")}
+        self.legs = [leg_between(a, b, f) for a, b in zip(*self.morph_legs)]
+        m, s = self.ctx.model, self.ctx.servos
+        s.default_kp = self.ctx.morph.kp[s.actuators].copy()
+        s.default_kv = self.ctx.morph.kv[s.actuators].copy()
+        self.kp0, self.kv0 = s.default_kp.copy(), s.default_kv.copy()
+        self.kp = m.actuator_gainprm[s.actuators, 0].tolist()       # the live gains, rescaled by the morph
+        self.kv = (-m.actuator_biasprm[s.actuators, 2]).tolist()
 
     def _schedule(self, speed: float) -> None:
         """Effective values of the tuned parameters left at -1: the table at this speed."""
@@ -405,6 +503,8 @@ class Running(Behaviour):
             deviation = path_deviation(path, a["com"][sel, :2])
             metrics["path_deviation_mean"] = float(deviation.mean()) if deviation.size else None
             metrics["path_deviation_max"] = float(deviation.max()) if deviation.size else None
+        if cls.morph_target(params) is not None:
+            metrics.update(morph_speed_metrics(a["time"], speed, params, metrics["fall_time"]))
         return ("fell" if metrics["fell"] else "success"), metrics
 
     # --------------------------------------------------------------------- start
@@ -513,6 +613,8 @@ class Running(Behaviour):
 
     # --------------------------------------------------------------------- control
     def update(self, t: float) -> None:
+        if self.ctx.morph is not None and self.ctx.morph.fraction != self.morph_seen:
+            self._follow_morph()
         c = self.constants
         d = self.ctx.data
         p = self.p
