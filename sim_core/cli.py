@@ -366,7 +366,8 @@ def parser() -> argparse.ArgumentParser:
     ad.add_argument("--workers", default="2", help="processes a search runs its simulations in (default 2)")
     ad.add_argument("--seed", type=int, default=1, help="seed of the checks' random requests (default 1)")
     ad.add_argument("--out", help="folder of state.json and report.md (default out/adapt/<character>)")
-    ad.add_argument("--redo", action="store_true", help="adapt the skills state.json records as done again")
+    ad.add_argument("--redo", nargs="*", metavar="SKILL", help="adapt again the skills state.json records as done "
+                    "(all of them, or the ones named)")
     ad.set_defaults(func=cmd_adapt)
     return p
 

@@ -65,7 +65,7 @@ def test_a_refused_skill_leaves_no_table_behind(tables, tmp_path, monkeypatch):
     """The scaled landing table is written for its check; the check fails and no budget is left for
     a search, so the skill is refused and the child has no landing table afterwards."""
     monkeypatch.setattr(ADAPTERS["land"], "check", lambda character, rng: Check(False, "measured: fell", 6))
-    results = command.adapt("child", ["land"], tmp_path / "out", minutes=0, workers=1, seed=1, redo=False,
+    results = command.adapt("child", ["land"], tmp_path / "out", minutes=0, workers=1, seed=1, redo=None,
                             say=lambda line: None)
     assert [(r.skill, r.status) for r in results] == [("land", "refused")]
     assert "no budget left" in results[0].figures and results[0].route == "scaled from the woman"
@@ -82,7 +82,7 @@ def test_a_table_that_was_there_is_put_back_byte_for_byte(tables, tmp_path, monk
         (tables / "running_child.json").write_text("{}")
     assert (tables / "running_child.json").read_bytes() == before
     with pytest.raises(KeyboardInterrupt):
-        command.adapt("child", ["running"], tmp_path / "out", minutes=0, workers=1, seed=1, redo=False,
+        command.adapt("child", ["running"], tmp_path / "out", minutes=0, workers=1, seed=1, redo=None,
                       say=lambda line: None)
     assert (tables / "running_child.json").read_bytes() == before
     assert not (tmp_path / "out" / "state.json").exists()
@@ -96,7 +96,7 @@ def test_adapt_balance_on_the_child_works_and_a_rerun_resumes(tmp_path, capsys):
     assert "| balance | works |" in (out / "report.md").read_text()
     capsys.readouterr()
     assert main(["adapt", "--character", "child", "--skills", "balance", "--out", str(out)]) == 0
-    assert "balance: done before (works)" in capsys.readouterr().out
+    assert "balance: done before (works); --redo balance runs it again" in capsys.readouterr().out
 
 
 @pytest.mark.parametrize("argv, message", [

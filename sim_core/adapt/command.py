@@ -15,7 +15,7 @@ the outcome measured. The report is a Markdown table, skill x character: works /
 measured figures, evaluations (simulated runs of searches) and wall time.
 
 Resumable: each finished skill is recorded in ``<out>/state.json`` (written whole after each skill);
-a rerun skips the recorded ones (``--redo`` runs them again). Stopped with Ctrl-C, the skill under
+a rerun skips the recorded ones (``--redo`` runs them all again, ``--redo SKILL ...`` those). Stopped with Ctrl-C, the skill under
 way (or killed with SIGTERM) leaves the tables as they were. ``--minutes`` is the budget of the searches: a search starts only
 while budget is left and gets its share of what is left.
 """
@@ -35,6 +35,7 @@ from .. import tuned
 from ..character.spec import CharacterSpec, load_character
 from ..errors import ParameterError
 from ..files import write_atomically
+from ..tuned.store import read as read_table
 
 
 @dataclass
@@ -95,25 +96,36 @@ def adapt_skill(skill: str, character: str, rng, workers: int, deadline: float, 
         check = adapter.check(character, rng)
         runs += check.runs
         say(f"{skill}: {route}: {check.figures}")
-        if not check.works:
+        if not (check.works and check.covers):
             minutes = (deadline - time.monotonic()) / 60.0
             if minutes <= 0:
                 figures = f"{check.figures} (no budget left for a search)"
-                return Result(skill, "refused", route, figures, runs, time.monotonic() - started)
+                if check.works:
+                    provisional.keep()
+                return Result(skill, status(check), route, figures, runs, time.monotonic() - started)
             say(f"{skill}: searching ({minutes:.0f} min of budget left)")
+            path = tuned.table_path(adapter.table, spec.name)
+            before, strengths = path.read_bytes(), read_table(adapter.table, spec.name)["strengths"]
             body, evaluations = adapter.search(character, workers, minutes)
             runs += evaluations
-            tuned.save(adapter.table, spec.name, body, strengths=["human"])
-            route += " and searched"
-            check = adapter.check(character, rng)
-            runs += check.runs
-            say(f"{skill}: {route}: {check.figures}")
+            tuned.save(adapter.table, spec.name, body, strengths=strengths)
+            searched = adapter.check(character, rng)
+            runs += searched.runs
+            say(f"{skill}: {route} and searched: {searched.figures}")
+            if (searched.works, searched.covers) >= (check.works, check.covers):
+                check, route = searched, route + " and searched"
+            else:                                  # the search's table checked worse: the one before it is kept
+                write_atomically(path, write=lambda tmp: Path(tmp).write_bytes(before))
+                route += f" (searched; its table checked worse and was not kept: {searched.figures})"
         if not check.works and skill == "running":
             check, runs = _keep_running_rows(adapter, character, spec, check, runs, rng)
         if check.works:
             provisional.keep()
-        return Result(skill, "works" if check.works else "refused", route, check.figures, runs,
-                      time.monotonic() - started)
+        return Result(skill, status(check), route, check.figures, runs, time.monotonic() - started)
+
+
+def status(check: Check) -> str:
+    return ("works" if check.covers else "works in part of the range") if check.works else "refused"
 
 
 def _keep_running_rows(adapter, character: str, spec: CharacterSpec, check: Check, runs: int, rng):
@@ -164,8 +176,10 @@ def markdown(character: CharacterSpec, results: list[Result]) -> str:
     return "\n".join(lines) + "\n"
 
 
-def adapt(character: str, skills: list[str], out: Path, minutes: float, workers: int, seed: int, redo: bool,
-          say=print) -> list[Result]:
+def adapt(character: str, skills: list[str], out: Path, minutes: float, workers: int, seed: int,
+          redo: list[str] | None, say=print) -> list[Result]:
+    """``redo``: None resumes (skills state.json records are skipped), [] runs every skill again, a list
+    runs those again."""
     if not (np.isfinite(minutes) and 0 <= minutes <= 24 * 60):
         raise ParameterError(f"--minutes={minutes:g} is out of range; allowed range is [0, 1440]")
     if not 1 <= workers <= 64:
@@ -173,16 +187,16 @@ def adapt(character: str, skills: list[str], out: Path, minutes: float, workers:
     spec = load_character(character)           # a bad spec is refused here, before anything runs
     names = skills_of(skills)
     state_path = out / "state.json"
-    state = json.loads(state_path.read_text()) if state_path.exists() and not redo else {}
+    state = json.loads(state_path.read_text()) if state_path.exists() and redo != [] else {}
     if state and state.get("character") != spec.name:
         raise ParameterError(f"{state_path} records an adaptation of {state.get('character')!r}, not {spec.name!r}: "
                              f"give another --out, or --redo")
-    done = {r["skill"]: Result(**r) for r in state.get("results", [])}
+    done = {r["skill"]: Result(**r) for r in state.get("results", []) if r["skill"] not in (redo or [])}
     deadline = time.monotonic() + 60.0 * minutes
     results = []
     for skill in names:
         if skill in done:
-            say(f"{skill}: done before ({done[skill].status}); --redo runs it again")
+            say(f"{skill}: done before ({done[skill].status}); --redo {skill} runs it again")
             results.append(done[skill])
             continue
         say(f"{skill}: adapting to the {spec.name}")
@@ -194,6 +208,8 @@ def adapt(character: str, skills: list[str], out: Path, minutes: float, workers:
             result = Result(skill, "refused", "error", str(error).split("\n")[0])
         say(f"{skill}: {result.status} ({result.route}; {result.figures})")
         results.append(result)
+        if result.route == "error":          # not recorded: a rerun tries it again
+            continue
         done[skill] = result
         write_atomically(state_path, json.dumps({"character": spec.name, "seed": seed,
                                                  "results": [asdict(r) for r in done.values()]}, indent=1) + "\n")

@@ -46,9 +46,10 @@ RUN_SEARCH_SECONDS = 15.0    # definition: the seed's 15 s evaluation runs (§5,
 
 @dataclass
 class Check:
-    works: bool
+    works: bool              # every drawn request did what was asked
     figures: str             # what was measured, one line
     runs: int
+    covers: bool = True      # the table serves the whole range checked (else works only where it serves)
 
 
 def leg_length_ratio(source: CharacterSpec, target: CharacterSpec) -> float:
@@ -209,12 +210,14 @@ class LeapAdapter:
         figures = (f"heights {heights.min():.2f}-{heights.max():.2f} m{covered}: {CHECKS - len(missed)}/{CHECKS} within "
                    f"tolerance and balanced, largest error {max(errors) * 100:.1f} cm"
                    + (f"; missed {', '.join(missed)}" if missed else ""))
-        return Check(not missed and (bottom, top) == LEAP_HEIGHTS, figures, CHECKS)
+        return Check(not missed, figures, CHECKS, covers=(bottom, top) == LEAP_HEIGHTS)
 
     def search(self, character: str, workers: int, minutes: float) -> tuple[dict, int]:
         """calibrate leap's crouch sweep of the vertical table (human strength)."""
+        from .. import tuned
         from ..skills.leap.calibrate import calibrate
-        mapping = calibrate(character, workers, ["vertical"], {})
+        current = tuned.load("leap", load_character(character).name) or {}
+        mapping = calibrate(character, workers, ["vertical"], current)     # its other tables (broad, unlimited) kept
         mapping["script"] = "python -m sim_core adapt (calibrate leap --only vertical)"
         return mapping, len(mapping["trials_by_table"]["vertical"])
 
