@@ -118,3 +118,21 @@ def test_a_state_file_of_another_body_is_refused(tmp_path, capsys):
     (out / "state.json").write_text(json.dumps({"character": "woman", "results": []}))
     assert main(["adapt", "--character", "child", "--skills", "balance", "--out", str(out)]) == 2
     assert "records an adaptation of 'woman', not 'child'" in capsys.readouterr().err
+
+
+def test_a_search_whose_table_checks_worse_is_not_kept(tables, tmp_path, monkeypatch):
+    """The scaled leap works where its table serves (not the whole range), so the search runs; its
+    table checks worse (a fall), so the scaled one is put back and the leap works in part."""
+    (tables / "leap_child.json").unlink(missing_ok=True)        # the child has no leap table of its own
+    woman = tuned.load("leap", "woman")
+    scaled = {"vertical": {n: c[:5] for n, c in woman["vertical"].items()}}
+    searched = {"vertical": {n: c[5:] for n, c in woman["vertical"].items()}}
+    checks = iter([Check(True, "6/6 where it serves", 6, covers=False), Check(False, "fell", 6)])
+    monkeypatch.setattr(ADAPTERS["leap"], "scale", lambda source, target, body: (scaled, 5))
+    monkeypatch.setattr(ADAPTERS["leap"], "search", lambda character, workers, minutes: (searched, 20))
+    monkeypatch.setattr(ADAPTERS["leap"], "check", lambda character, rng: next(checks))
+    [result] = command.adapt("child", ["leap"], tmp_path / "out", minutes=5, workers=1, seed=1, redo=None,
+                             say=lambda line: None)
+    assert (result.status, result.evaluations) == ("works in part of the range", 5 + 6 + 20 + 6)
+    assert "its table checked worse and was not kept: fell" in result.route
+    assert tuned.load("leap", "child")["vertical"] == scaled["vertical"]
