@@ -1,4 +1,4 @@
-"""Command line: python -m sim_core {list, describe, simulate, plan, replay, bench, calibrate, report, character}.
+"""Command line: python -m sim_core {list, describe, simulate, plan, replay, bench, calibrate, report, character, adapt}.
 
 Errors a user can cause print one line ('error: ...') and exit with status 2; nothing is written.
 ``simulate`` prints a JSON summary (outcome and metrics) as its last line.
@@ -267,6 +267,13 @@ def cmd_character(args) -> int:
     return 0
 
 
+def cmd_adapt(args) -> int:
+    """``adapt``: every skill carried to a body (sim_core/adapt/command.py)."""
+    from .adapt.command import main as adapt_main
+    args.minutes, args.workers = _finite(args.minutes, "--minutes"), int(_finite(args.workers, "--workers"))
+    return adapt_main(args)
+
+
 def _write_skin(spec, out) -> str:
     """The made character's rigged skin next to its spec, by the builder build.py uses
     (tools.rigbuild, a checkout's build-time code with the rig extras); where it or its
@@ -351,6 +358,17 @@ def parser() -> argparse.ArgumentParser:
     sr.add_argument("--skill", action="append", choices=["balance", "running"], help="repeatable; default both")
     sr.add_argument("--cap", default="20", help="seconds: a run that has not fallen by then stops (default 20)")
     sr.set_defaults(func=cmd_character)
+    ad = sub.add_parser("adapt", help="adapt every skill to a body (scale from the nearest calibrated character, "
+                        "check by random runs, search where that fails) and report what works")
+    ad.add_argument("--character", required=True, help="the body: a name or a spec .json (character make)")
+    ad.add_argument("--skills", nargs="+", default=["all"], help="skills to adapt (default all)")
+    ad.add_argument("--minutes", default="60", help="budget of the searches in minutes (default 60)")
+    ad.add_argument("--workers", default="2", help="processes a search runs its simulations in (default 2)")
+    ad.add_argument("--seed", type=int, default=1, help="seed of the checks' random requests (default 1)")
+    ad.add_argument("--out", help="folder of state.json and report.md (default out/adapt/<character>)")
+    ad.add_argument("--redo", nargs="*", metavar="SKILL", help="adapt again the skills state.json records as done "
+                    "(all of them, or the ones named)")
+    ad.set_defaults(func=cmd_adapt)
     return p
 
 

@@ -34,9 +34,9 @@ def test_every_parameter_is_documented():
 
 
 @pytest.mark.parametrize("value, message", [
-    ("nan", "pelvis_height=nan is not finite; allowed range for pelvis_height is [0.3, 1.2] m"),
+    ("nan", "pelvis_height=nan is not finite; allowed range for pelvis_height is [0.2, 1.2] m"),
     ("abc", "pelvis_height='abc' is not a number; allowed range"),
-    ("5", "pelvis_height=5 m is out of range; allowed range for pelvis_height is [0.3, 1.2] m"),
+    ("5", "pelvis_height=5 m is out of range; allowed range for pelvis_height is [0.2, 1.2] m"),
 ])
 def test_schema_errors_name_value_and_range(value, message):
     schema = behaviour_class("balance").schema

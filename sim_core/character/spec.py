@@ -138,6 +138,11 @@ def load_character(name_or_path: str) -> CharacterSpec:
     return CharacterSpec(data, str(path))
 
 
+def character_name(name_or_path: str) -> str:
+    """The name a character's tables are stored under: a preset's own, or a spec file's ``name``."""
+    return load_character(name_or_path).name if Path(name_or_path).suffix == ".json" else name_or_path
+
+
 def _validate(data: dict, path: str) -> None:
     def fail(msg):
         raise RigFileError(f"{path}: {msg}")

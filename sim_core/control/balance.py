@@ -98,7 +98,7 @@ class Balance(Behaviour):
     default_duration = 5.0
     control_rate = 100.0       # a 10 ms balance loop (human postural reflexes take 50-100 ms)
     schema = Schema(
-        Parameter("pelvis_height", "m", 0.0, 0.30, 1.20,
+        Parameter("pelvis_height", "m", 0.0, 0.20, 1.20,
                   "height of the mid-hip point above the ground to move to; 0 = standing height", special=0.0),
         Parameter("torso_pitch", "rad", 0.0, -0.35, 1.75,
                   "forward pitch of the upper body from vertical (hips take 75 %, the spine 25 %)"),

@@ -598,7 +598,7 @@ def vertical_table(strength: str) -> str:
 # jump's settings (sim_core.planning.jump searches them); a default is what a row that does
 # not name the setting runs with
 LEAP_SETTINGS = Schema(
-    Parameter("crouch_height", "m", 0.65, 0.4, 0.95, "pelvis height of the crouch"),
+    Parameter("crouch_height", "m", 0.65, 0.2, 0.95, "pelvis height of the crouch (a child's is lower: 0.2 m floor)"),
     Parameter("crouch_pitch", "rad", 0.0, 0.0, 1.8, "torso pitch in the crouch"),
     Parameter("com_offset", "m", 0.0, -0.05, 0.25, "COM ahead (+) of the middle of the feet in the crouch"),
     Parameter("com_offset_y", "m", 0.0, -0.2, 0.2, "COM to the left (+) of the middle of the feet in the crouch"),
@@ -739,7 +739,7 @@ def load_mapping(character: str) -> dict:
 
 # the settings a low-level leap (low_level=1) runs with, by the names the leap table and the jump plans use
 LOW_LEVEL_SETTINGS = Schema(
-    Parameter("crouch_height", "m", 0.65, 0.4, 0.95, "pelvis height of the crouch (low_level only)"),
+    Parameter("crouch_height", "m", 0.65, 0.2, 0.95, "pelvis height of the crouch (low_level only)"),
     Parameter("crouch_pitch", "rad", 1.0, 0.0, 1.8, "torso pitch in the crouch (low_level only)"),
     Parameter("com_offset", "m", 0.0, -0.05, 0.25, "COM forward of the feet in the crouch (low_level only)"),
     Parameter("com_offset_y", "m", 0.0, -0.2, 0.2,

@@ -124,7 +124,7 @@ def test_legacy_zip_in_blender_3_4_batch_bakes_and_saves(zips, tmp_path):
     assert bad.returncode == 2
     errors = [l for l in bad.stderr.splitlines() if l.startswith("sim_athletics: error:")]
     assert errors == ["sim_athletics: error: parameter pelvis_height=5 m is out of range; allowed range "
-                      "for pelvis_height is [0.3, 1.2] m (or 0: 0 = standing height)"]
+                      "for pelvis_height is [0.2, 1.2] m (or 0: 0 = standing height)"]
     assert not (tmp_path / "bad.blend").exists()
 
 

@@ -22,6 +22,7 @@ ROOT = Path.cwd()                   # docs are written under the folder it runs 
 from ...ballistics import GRAVITY
 from ... import tuned
 from ...control.leap import LANDING_TABLE  # noqa: F401  (declares the landing table's row type)
+from ...character.spec import character_name
 from ...simulate import RunRequest, StartState, run
 
 SPEEDS = [-1.0, -0.5, 0.0, 0.5, 1.0, 1.5, 2.0, 2.5, 3.0]
@@ -38,9 +39,9 @@ HIGH_DROPS = [0.8, 0.9, 1.0, 1.1, 1.15, 1.2, 1.3]
 
 def fast_touchdown(character: str, table: dict) -> dict:
     """Scan the extra delta for fast touchdowns one value at a time (each trial reads the table)."""
-    landed = {}
+    landed, name = {}, character_name(character)
     for extra in FAST_DELTAS:
-        tuned.save("landing", character, dict(table, fast_touchdown={"speed": FAST_FROM, "ramp": FAST_RAMP, "delta": extra}),
+        tuned.save("landing", name, dict(table, fast_touchdown={"speed": FAST_FROM, "ramp": FAST_RAMP, "delta": extra}),
                    strengths=["human"])
         landed[extra] = [drop for drop in HIGH_DROPS
                          if run(RunRequest("land", character, start=StartState(height=drop), duration=3.0)).meta["outcome"] == "success"]
@@ -100,18 +101,18 @@ def main(argv=None) -> int:
     args = parser.parse_args(argv)
     for character in args.character:
         table = calibrate(character, args.processes)
-        stored = tuned.table_path("landing", character)
+        stored = tuned.table_path("landing", character_name(character))
         before = stored.read_bytes() if stored.exists() else None
         try:            # the fast-touchdown scan runs its trials with the candidate as the character's table
             table["fast_touchdown"] = fast_touchdown(character, table)
         except BaseException:           # a stopped scan leaves the table that was there, byte for byte
             if before is None:
-                tuned.delete("landing", character)
+                tuned.delete("landing", character_name(character))
             else:
                 stored.with_suffix(".restore").write_bytes(before)
                 stored.with_suffix(".restore").replace(stored)
             raise
-        path = tuned.save("landing", character, table, strengths=["human"])
+        path = tuned.save("landing", character_name(character), table, strengths=["human"])
         for row in table["foot_delta"]:
             print(f"wrote {path.relative_to(ROOT)}: drop {row['drop']} m, speeds {row['speed']}")
     return 0

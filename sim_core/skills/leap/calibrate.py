@@ -363,7 +363,7 @@ def calibrate(character: str, processes: int, only: list[str], previous: dict, f
     spec = load_character(character)
     stand = standing_hip_height(spec)
     mapping = dict(previous)
-    mapping.update({"character": character, "script": "python -m sim_core calibrate leap"})
+    mapping.update({"character": spec.name, "script": "python -m sim_core calibrate leap"})
     trials = dict(mapping.get("trials_by_table", {}))
     with Pool(processes) as pool:
         for key, (strength, grid) in VERTICAL_TABLES.items():
@@ -396,19 +396,21 @@ def main(argv=None) -> int:
                              "row is within the tolerance of), instead of calibrating them afresh: crouches for the "
                              "vertical tables, blends of the neighbouring rows (else a plan) for the broad jump")
     args = parser.parse_args(argv)
+    from ...character.spec import character_name
     for character in args.character:
-        previous = tuned.load("leap", character) or {}
+        name = character_name(character)             # a spec file's tables are stored under its name
+        previous = tuned.load("leap", name) or {}
         only = args.only
         mapping = calibrate(character, args.processes, only, previous, args.fill)
         # write only the recalibrated tables over the file as it is now (another run may have
         # recalibrated the others meanwhile)
-        current = tuned.load("leap", character) or {}
+        current = tuned.load("leap", name) or {}
         current.update({k: v for k, v in mapping.items() if k in only or k in ("character", "script")})
         current.setdefault("trials_by_table", {}).update(
             {k: v for k, v in mapping.get("trials_by_table", {}).items() if k in only})
         current.pop("broad_calibrated", None)
         mapping = current
-        path = tuned.save("leap", character, mapping,
+        path = tuned.save("leap", name, mapping,
                           strengths=["human"] + (["unlimited"] if "vertical_unlimited" in mapping else []))
         for key in VERTICAL_TABLES:
             rises = mapping.get(key, {}).get("com_rise", [])

@@ -81,6 +81,7 @@ ROOT = Path.cwd()                   # docs are written under the folder it runs 
 
 from .behaviour import SCHEDULED_CONSTANTS, TABLE_NAMES, TUNED_NAMES, Running, SpeedTable
 from ... import tuned
+from ...character.spec import character_name
 from ...tuning import Space, deadline_stop, executor_for, minimize
 
 COLUMNS = TABLE_NAMES + tuple(SCHEDULED_CONSTANTS)     # what a row of the table can hold
@@ -330,7 +331,7 @@ def scaled_table(source: str, character: str, speeds: list[float], constants: di
         knob = RUNNING_SETTINGS.by_name[name]
         return min(max(value, knob.minimum), knob.maximum)
     pair = CharacterPair(load_character(source), load_character(character))
-    table = SpeedTable.load(source)
+    table = SpeedTable.load(pair.old_spec.name)
     columns = {n: v for n, v in table.values.items() if n in RUNNING_TABLE.settings.by_name}
     scaled_speeds, scaled = scale_columns(table.speeds, columns, RUNNING_TABLE.settings, pair, MASS)
     scaled_table = SpeedTable(scaled_speeds, {n: [held(n, x) for x in col] for n, col in scaled.items()})
@@ -350,7 +351,7 @@ def write_scaled_table(args, argv) -> int:
     if args.character == args.scale_from:
         raise SystemExit("--scale-from names the --character itself")
     table = scaled_table(args.scale_from, args.character, args.speeds, args.constants)
-    path = tuned.save("running", args.character, {
+    path = tuned.save("running", character_name(args.character), {
         **table.to_table(),
         "note": f"the {args.scale_from}'s rows and the constants of the running laws mass-scaled by Fig. 6 "
                 "(sim_core.adapt.settings), the constants of --constants as given; rows then searched by "
@@ -425,7 +426,8 @@ def main(argv=None) -> int:
     if unknown:
         ap.error(f"--start names {', '.join(unknown)}, which --names does not search ({', '.join(args.names)})")
     strength = args.strength if args.strength in ("human", "unlimited") else float(args.strength)
-    table = SpeedTable.load(args.character)
+    name = character_name(args.character)          # a spec file's tables are stored under its name
+    table = SpeedTable.load(name)
     started = time.monotonic()
     per_speed = {}          # this search's rows' records, merged into the file's when it is written
     new_values = {}
@@ -469,15 +471,15 @@ def main(argv=None) -> int:
         return 0
     # the rows found go into the table as it is now: another search (of other speeds) may have written it
     # since this one started
-    table = with_found_rows(SpeedTable.load(args.character), args.names, new_values)
-    stored = tuned.load("running", args.character, args.tables) or tuned.load("running", args.character) or {}
+    table = with_found_rows(SpeedTable.load(name), args.names, new_values)
+    stored = tuned.load("running", name, args.tables) or tuned.load("running", name) or {}
     per_speed = {**stored.get("evaluation", {}).get("per_speed", {}), **per_speed}
     speeds = table.speeds
     # as stored, unrounded (the runs are chaotic in them); not table.at() at the knots, which can change
     # a value in the last bit
     values = {n: list(table.values[n]) for n in COLUMNS}
     elapsed = time.monotonic() - started
-    path = tuned.save("running", args.character, {
+    path = tuned.save("running", name, {
         "speeds": speeds, "parameters": values, **({"constants": table.constants} if table.constants else {}),
         **({"note": stored["note"]} if "note" in stored else {}),
         "evaluation": {"weights": {"fall": W_FALL, "speed": W_SPEED, "speed_beyond_band": W_BAND,

@@ -1,0 +1,232 @@
+"""``python -m sim_core adapt --character F.json [--skills all]``: adapt every skill to a body and
+report what works (issue 28 part 7; Hodgins & Pollard 1997 §5).
+
+For each skill with an adapter (``sim_core.adapt.skills``: balance, land, leap, running):
+- the character's own table, if it has one, is checked as it is;
+- otherwise the nearest calibrated character's table is scaled by Fig. 6, written through the store
+  and checked by measured runs of random requests;
+- where the check fails and budget is left, the skill's search runs and the result is checked again;
+- a skill that still fails is **refused**: its provisional table is removed (or the one that was
+  there restored byte for byte), so the body is never offered a skill that fell. A running table
+  keeps the rows that ran and drops the others.
+
+Every other skill is run once with its default request: refused before simulating (and why), or
+the outcome measured. The report is a Markdown table, skill x character: works / refused, the
+measured figures, evaluations (simulated runs of searches) and wall time.
+
+Resumable: each finished skill is recorded in ``<out>/state.json`` (written whole after each skill);
+a rerun skips the recorded ones (``--redo`` runs them all again, ``--redo SKILL ...`` those). Stopped with Ctrl-C, the skill under
+way (or killed with SIGTERM) leaves the tables as they were. ``--minutes`` is the budget of the searches: a search starts only
+while budget is left and gets its share of what is left.
+"""
+from __future__ import annotations
+
+import json
+import signal
+import time
+import zlib
+from dataclasses import asdict, dataclass
+from pathlib import Path
+
+import numpy as np
+
+from .skills import ADAPTERS, Check, nearest_source
+from .. import tuned
+from ..character.spec import CharacterSpec, load_character
+from ..errors import ParameterError
+from ..files import write_atomically
+from ..tuned.store import read as read_table
+
+
+@dataclass
+class Result:
+    skill: str
+    status: str              # "works" or "refused"
+    route: str               # own table / scaled from X / scaled from X and searched / default request
+    figures: str
+    evaluations: int = 0     # simulated runs: the checks' and the searches'
+    wall_seconds: float = 0.0
+
+
+class ProvisionalTable:
+    """A table written for a check: on ``keep()`` it stays, otherwise the file that was there before is
+    put back byte for byte (or the new one removed) when the block ends, also on Ctrl-C."""
+
+    def __init__(self, table: str, character: str):
+        self.path = tuned.table_path(table, character)
+        self.before = self.path.read_bytes() if self.path.exists() else None
+        self.kept = False
+
+    def __enter__(self):
+        return self
+
+    def keep(self) -> None:
+        self.kept = True
+
+    def __exit__(self, *exc) -> bool:
+        if not self.kept:
+            if self.before is None:
+                self.path.unlink(missing_ok=True)
+            else:
+                write_atomically(self.path, write=lambda tmp: Path(tmp).write_bytes(self.before))
+        return False
+
+
+def adapt_skill(skill: str, character: str, rng, workers: int, deadline: float, say) -> Result:
+    adapter = ADAPTERS[skill]
+    spec = load_character(character)
+    started = time.monotonic()
+    if adapter.table is None:
+        check = adapter.check(character, rng)
+        return Result(skill, "works" if check.works else "refused", "no table (the controller reads the body)",
+                      check.figures, check.runs, time.monotonic() - started)
+    with ProvisionalTable(adapter.table, spec.name) as provisional:
+        runs = 0
+        if tuned.exists(adapter.table, spec.name):
+            route = "own table"
+        else:
+            source_name = nearest_source(spec, tuned.characters_of(adapter.table))
+            if source_name is None:
+                return Result(skill, "refused", "no calibrated character to scale from", "-")
+            source = load_character(source_name)
+            body, runs = adapter.scale(source, spec, tuned.load(adapter.table, source_name))
+            tuned.save(adapter.table, spec.name, body, strengths=["human"])
+            route = f"scaled from the {source_name}"
+            say(f"{skill}: {route}, checking")
+        check = adapter.check(character, rng)
+        runs += check.runs
+        say(f"{skill}: {route}: {check.figures}")
+        if not (check.works and check.covers):
+            minutes = (deadline - time.monotonic()) / 60.0
+            if minutes <= 0:
+                figures = f"{check.figures} (no budget left for a search)"
+                if check.works:
+                    provisional.keep()
+                return Result(skill, status(check), route, figures, runs, time.monotonic() - started)
+            say(f"{skill}: searching ({minutes:.0f} min of budget left)")
+            path = tuned.table_path(adapter.table, spec.name)
+            before, strengths = path.read_bytes(), read_table(adapter.table, spec.name)["strengths"]
+            body, evaluations = adapter.search(character, workers, minutes)
+            runs += evaluations
+            tuned.save(adapter.table, spec.name, body, strengths=strengths)
+            searched = adapter.check(character, rng)
+            runs += searched.runs
+            say(f"{skill}: {route} and searched: {searched.figures}")
+            if (searched.works, searched.covers) >= (check.works, check.covers):
+                check, route = searched, route + " and searched"
+            else:                                  # the search's table checked worse: the one before it is kept
+                write_atomically(path, write=lambda tmp: Path(tmp).write_bytes(before))
+                route += f" (searched; its table checked worse and was not kept: {searched.figures})"
+        if not check.works and skill == "running":
+            check, runs = _keep_running_rows(adapter, character, spec, check, runs, rng)
+        if check.works:
+            provisional.keep()
+        return Result(skill, status(check), route, check.figures, runs, time.monotonic() - started)
+
+
+def status(check: Check) -> str:
+    return ("works" if check.covers else "works in part of the range") if check.works else "refused"
+
+
+def _keep_running_rows(adapter, character: str, spec: CharacterSpec, check: Check, runs: int, rng):
+    """The running table with only the rows whose 100 s runs did not fall and held the speed."""
+    body = tuned.load("running", spec.name)
+    keep = [k for k, v in enumerate(body["speeds"]) if v not in adapter.failed]
+    if not keep:
+        return check, runs
+    body = dict(body, speeds=[body["speeds"][k] for k in keep],
+                parameters={n: [col[k] for k in keep] for n, col in body["parameters"].items()})
+    tuned.save("running", spec.name, body, strengths=["human"])
+    kept = adapter.check(character, rng)
+    dropped = ", ".join(f"{v:g}" for v in adapter.failed)
+    return Check(kept.works, f"{kept.figures} (rows {dropped} m/s dropped: {check.figures})", kept.runs), runs + kept.runs
+
+
+def try_default(skill: str, character: str) -> Result:
+    """A skill without an adapter, run once with its default request."""
+    from ..simulate import RunRequest, run
+    started = time.monotonic()
+    try:
+        trajectory = run(RunRequest(skill, character))
+    except ParameterError as refusal:
+        return Result(skill, "refused", "not adapted (no adapter scales its table)", str(refusal).split("\n")[0], 0,
+                      time.monotonic() - started)
+    outcome = trajectory.meta["outcome"]
+    return Result(skill, "works" if outcome == "success" else "refused", "default request as it is",
+                  f"outcome {outcome} in {trajectory.arrays['time'][-1]:.1f} s", 1, time.monotonic() - started)
+
+
+def skills_of(names: list[str]) -> list[str]:
+    from ..skills import available_behaviours
+    every = available_behaviours()
+    if names == ["all"]:          # the adapted skills first, in ADAPTERS' order (the leap lands: the landing first)
+        return [*ADAPTERS, *(n for n in every if n not in ADAPTERS)]
+    unknown = [n for n in names if n not in every]
+    if unknown:
+        raise ParameterError(f"--skills {' '.join(unknown)}: unknown skill; available: all, {', '.join(every)}")
+    return names
+
+
+def markdown(character: CharacterSpec, results: list[Result]) -> str:
+    lines = [f"**{character.name}** ({character.total_mass:.1f} kg)", "",
+             "| skill | result | route | measured | runs | wall s |", "| --- | --- | --- | --- | --- | --- |"]
+    for r in results:
+        lines.append(f"| {r.skill} | {r.status} | {r.route} | {r.figures.replace('|', '/')} | {r.evaluations} | "
+                     f"{r.wall_seconds:.0f} |")
+    return "\n".join(lines) + "\n"
+
+
+def adapt(character: str, skills: list[str], out: Path, minutes: float, workers: int, seed: int,
+          redo: list[str] | None, say=print) -> list[Result]:
+    """``redo``: None resumes (skills state.json records are skipped), [] runs every skill again, a list
+    runs those again."""
+    if not (np.isfinite(minutes) and 0 <= minutes <= 24 * 60):
+        raise ParameterError(f"--minutes={minutes:g} is out of range; allowed range is [0, 1440]")
+    if not 1 <= workers <= 64:
+        raise ParameterError(f"--workers={workers} is out of range; allowed range is [1, 64]")
+    spec = load_character(character)           # a bad spec is refused here, before anything runs
+    names = skills_of(skills)
+    state_path = out / "state.json"
+    state = json.loads(state_path.read_text()) if state_path.exists() and redo != [] else {}
+    if state and state.get("character") != spec.name:
+        raise ParameterError(f"{state_path} records an adaptation of {state.get('character')!r}, not {spec.name!r}: "
+                             f"give another --out, or --redo")
+    done = {r["skill"]: Result(**r) for r in state.get("results", []) if r["skill"] not in (redo or [])}
+    deadline = time.monotonic() + 60.0 * minutes
+    results = []
+    for skill in names:
+        if skill in done:
+            say(f"{skill}: done before ({done[skill].status}); --redo {skill} runs it again")
+            results.append(done[skill])
+            continue
+        say(f"{skill}: adapting to the {spec.name}")
+        rng = np.random.default_rng([seed, zlib.crc32(skill.encode())])   # a skill's draw whatever ran before it
+        try:
+            result = (adapt_skill(skill, character, rng, workers, deadline, say) if skill in ADAPTERS
+                      else try_default(skill, character))
+        except ParameterError as error:        # e.g. a scaled row its table refuses: that skill only is refused
+            result = Result(skill, "refused", "error", str(error).split("\n")[0])
+        say(f"{skill}: {result.status} ({result.route}; {result.figures})")
+        results.append(result)
+        if result.route == "error":          # not recorded: a rerun tries it again
+            continue
+        done[skill] = result
+        write_atomically(state_path, json.dumps({"character": spec.name, "seed": seed,
+                                                 "results": [asdict(r) for r in done.values()]}, indent=1) + "\n")
+    report = markdown(spec, results)
+    write_atomically(out / "report.md", report)
+    return results
+
+
+def _stop_on_terminate(signum, frame):
+    raise KeyboardInterrupt          # a kill (SIGTERM) unwinds like Ctrl-C: the table under way is put back
+
+
+def main(args) -> int:
+    signal.signal(signal.SIGTERM, _stop_on_terminate)
+    out = Path(args.out) if args.out else Path("out") / "adapt" / load_character(args.character).name
+    results = adapt(args.character, args.skills, out, args.minutes, args.workers, args.seed, args.redo,
+                    say=lambda line: print(line, flush=True))
+    print(markdown(load_character(args.character), results))
+    print(f"wrote {out / 'report.md'}")
+    return 0
