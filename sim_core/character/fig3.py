@@ -17,6 +17,8 @@ absolute values (SEEDS-WAVE2.md §5.3, trap 4). What the figure leaves open, we 
     inertia pin where the hip and the head are, and for the imaginary runner they agree only with
     a higher ankle (its 5.98 kg head alone, 0.75 m above a hip at leg length over a man-like ankle,
     would take 3.4 of the 3.6 kg m^2 its body/hip leaves after the swing leg);
+  * no trunk slice thinner front-to-back than a third of the man's same slice per stature
+    (TRUNK_DEPTH_FLOOR, applied only where the fit's optimum breaks it: the imaginary runner);
   * the arm's parts keep the man's mass shares; head and hands are geometric copies of the man's
     at their new mass (Fig. 3 gives no head or hand length).
 
@@ -197,8 +199,8 @@ def _fit_fig3(base: CharacterSpec, target: dict, depth_floor: float | None, leas
             columns.append((residuals(moved) - base_residuals) / step)
         return np.array(columns).T
 
-    fit = least_squares(residuals, np.clip(start, lower_bounds, upper_bounds), jac=jacobian, bounds=(lower_bounds, upper_bounds), method="trf",
-                        max_nfev=FIT_EVALUATIONS)
+    fit = least_squares(residuals, np.clip(start, lower_bounds, upper_bounds), jac=jacobian,
+                        bounds=(lower_bounds, upper_bounds), method="trf", max_nfev=FIT_EVALUATIONS)
     return build(fit.x), fit.x
 
 
