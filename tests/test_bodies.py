@@ -188,6 +188,19 @@ def test_stored_fig3_characters_are_what_the_command_makes(man, name):
     assert not off, (f"run: python -m sim_core character make --preset {name}", off)
 
 
+@pytest.mark.parametrize("name", PRESETS)
+def test_no_trunk_slice_of_a_fig3_character_is_a_sheet(man, name):
+    """Every trunk slice is at least TRUNK_DEPTH_FLOOR of the man's same slice's depth (front to back)
+    times the stature ratio (the imaginary runner's unbounded fit had a 3 cm CHEST1 and a 6 mm sternum)."""
+    from sim_core.character.fig3 import LOWER_TRUNK, TRUNK_DEPTH_FLOOR, UPPER_TRUNK
+    spec = load_character(name)
+    depth = lambda shape: shape["half"][0] if "half" in shape else shape["radius"]      # noqa: E731
+    stature = spec.data["height"] / man.data["height"]
+    for body in LOWER_TRUNK + UPPER_TRUNK:
+        ratio = depth(spec.body(body)["shapes"][0]) / depth(man.body(body)["shapes"][0]) / stature
+        assert ratio >= TRUNK_DEPTH_FLOOR * (1 - 0.03), (body, ratio)
+
+
 FIT_REPRODUCED = 0.005   # the fit ends on a flat optimum: on another CPU's BLAS the cyclist's trunk split moves ~3 %, its Fig. 3 figures < 0.1 %
 
 
@@ -315,7 +328,7 @@ def test_character_make_refuses_bad_input_and_writes_nothing(tmp_path, args, mes
 
 # ----------------------------------------------------------------------------- skins (rigs/<name>.glb)
 
-SKINNED = ["child", "imaginary_cyclist"]      # made characters with a committed skin
+SKINNED = ["child", "imaginary_cyclist", "imaginary_runner"]      # made characters with a committed skin
 
 
 def _has_rig_extras() -> bool:
@@ -373,14 +386,18 @@ def test_the_childs_rebuilt_skin_passes_the_mans_mass_check(tmp_path):
 
 
 @pytest.mark.slow
-def test_a_skin_that_falls_apart_is_refused_and_nothing_is_written(tmp_path):
-    """The imaginary runner's fitted upper trunk is a sheet (CHEST1 3 cm deep, the sternum 6 mm):
-    its skin cannot hold the mass in one surface, so the builder refuses it."""
+def test_a_skin_that_falls_apart_is_refused_and_nothing_is_written(man, tmp_path):
+    """The imaginary runner fitted without the trunk's depth floor has an upper trunk that is a sheet
+    (CHEST1 3 cm deep, the sternum 6 mm): its skin cannot hold the mass in one surface, so the
+    builder refuses it."""
     if not _has_rig_extras():
         pytest.skip("the rig extras (pip install -e '.[rigs]') are not installed")
+    from sim_core.character.fig3 import FIG3, _fit_fig3
     from tools.rigbuild import write_checked_rig
-    out = tmp_path / "imaginary_runner.glb"
-    report, failure = write_checked_rig(load_character("imaginary_runner"), out)
+    data, _ = _fit_fig3(man, FIG3["imaginary_runner"], None)
+    data["name"] = "unbounded_runner"
+    out = tmp_path / "unbounded_runner.glb"
+    report, failure = write_checked_rig(CharacterSpec(data), out)
     assert failure and "falls apart" in failure
     assert list(tmp_path.iterdir()) == []
 

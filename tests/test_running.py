@@ -441,6 +441,21 @@ def test_the_child_runs_100_s_at_her_tables_speed():
         run(RunRequest("running", "child", params={"speed": 2.7}, duration=0.05))
 
 
+@pytest.mark.slow
+def test_the_imaginary_runner_runs_100_s_at_its_tables_speed():
+    """The imaginary runner (Fig. 3, 1.61 m, 46.5 kg): reached through bodies between the woman and it
+    (docs/running.md, the imaginary runner): 100 s from a stand at 3.0 m/s, the one speed of its
+    table, no fall, speed within 5 %; any other speed is refused."""
+    speeds = SpeedTable.load("imaginary_runner").speeds
+    assert speeds == [3.0]
+    traj = run(RunRequest("running", "imaginary_runner", params={"speed": 3.0}, duration=100.0))
+    m = traj.meta["metrics"]
+    assert not_fallen(traj), f"fell at {m['fall_time']:.1f} s"
+    assert abs(m["gait"]["mean_speed"] - 3.0) <= SPEED_TOLERANCE * 3.0
+    with pytest.raises(ParameterError, match=r"\[3, 3\]"):
+        run(RunRequest("running", "imaginary_runner", params={"speed": 2.8}, duration=0.05))
+
+
 @pytest.mark.parametrize("values", [{"course": "turn"}, {"facing": 1.0}, {"path": [[0, 0], [5, 0], [10, 5]]}])
 def test_the_woman_is_refused_a_turn_in_one_line(values):
     """She runs straight ahead only: a turn, another facing or a path is refused before anything runs."""

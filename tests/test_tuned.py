@@ -29,7 +29,10 @@ def driving_modules() -> list[Path]:
 
 def stored_tables() -> list[tuple[str, str]]:
     available_behaviours()                       # every skill's module imported: their row types declared
-    return [tuple(p.stem.rsplit("_", 1)) for p in sorted(store.DIRECTORY.glob("*.json"))]
+    # (skill, character) from each file's header: a name split at its last "_" would cut
+    # running_imaginary_runner into the skill "running_imaginary"
+    tables = [json.loads(p.read_text()) for p in sorted(store.DIRECTORY.glob("*.json"))]
+    return [(t["skill"], t["character"]) for t in tables]
 
 
 @pytest.fixture

@@ -17,6 +17,8 @@ absolute values (SEEDS-WAVE2.md §5.3, trap 4). What the figure leaves open, we 
     inertia pin where the hip and the head are, and for the imaginary runner they agree only with
     a higher ankle (its 5.98 kg head alone, 0.75 m above a hip at leg length over a man-like ankle,
     would take 3.4 of the 3.6 kg m^2 its body/hip leaves after the swing leg);
+  * no trunk slice thinner front-to-back than a third of the man's same slice per stature
+    (TRUNK_DEPTH_FLOOR, applied only where the fit's optimum breaks it: the imaginary runner);
   * the arm's parts keep the man's mass shares; head and hands are geometric copies of the man's
     at their new mass (Fig. 3 gives no head or hand length).
 
@@ -79,6 +81,18 @@ SHARE_PULL = 0.05
 # trunk's width by ~40 %, the ankle's height by a factor 2, the mass shares' odds by e^2.5; unbounded,
 # the fit meets the rows with caricatures (a torso seven times as wide and a centimetre deep).
 FIT_BOUNDS = np.array([2.0, 0.35, 2.5, 2.0, 2.0, 0.35, 2.5, 2.0, 0.7])
+# Depth floor of the trunk's slices: no slice (CHEST3, CHEST2, CHEST1, STERNUM, the shoulder girdle)
+# may be thinner front-to-back than this fraction of the man's same slice times the stature ratio.
+# Anthropometry: adult chest depth per stature spans well under a factor 2 (roughly 0.12-0.17 of
+# stature between the 5th and 95th percentiles of army surveys), and our man (97.8 kg, 1.81 m,
+# BMI 30) is at the deep end, so the leanest plausible adult trunk is ~0.6 of his per stature. A
+# third is far below that: the floor rules out sheets (unbounded, the imaginary runner's upper trunk
+# came out 3 cm deep and its sternum 6 mm, which no skin at Dempster's density can hold), it does not
+# shape a body. A slice's depth is its mass over its height and width, so the floor bounds the share
+# of the torso's mass the upper trunk takes (both ways: the lower trunk has the same floor). The fit
+# applies it only when its unbounded optimum breaks it (fit_fig3): the child's (0.65 of the man's per
+# stature) and the cyclist's (lower trunk 0.34) optima keep clear of it, so they are as they were.
+TRUNK_DEPTH_FLOOR = 1.0 / 3.0
 # Finite-difference step of the fit (absolute, in log-ratio): the model is measured through its MJCF
 # text, whose numbers carry ~6 significant digits, so a smaller step sees rounding, not slope.
 FIT_STEP = 1e-3
@@ -87,8 +101,11 @@ PARAMETERS = ("leg axial", "thigh/shank", "thigh mass", "arm axial", "trunk heig
               "trunk width", "upper trunk mass", "pelvis width", "foot height")
 
 
-def fig3_scales(base: CharacterSpec, target: dict, p: np.ndarray) -> dict[str, BodyScale]:
-    """Per-body scales for target masses ``target`` and the fit's parameters ``p`` (PARAMETERS, logs)."""
+def fig3_scales(base: CharacterSpec, target: dict, p: np.ndarray, depth_floor: float | None = None
+                ) -> dict[str, BodyScale]:
+    """Per-body scales for target masses ``target`` and the fit's parameters ``p`` (PARAMETERS, logs).
+    With ``depth_floor``, the upper trunk's share of the torso's mass is clamped so that every trunk
+    slice is at least that fraction of the man's depth times the stature ratio (TRUNK_DEPTH_FLOOR)."""
     mass = lambda names: sum(base.body(n)["mass"] for n in names)           # noqa: E731
     side_names = lambda prefixes, side: [p_ + side for p_ in prefixes]       # noqa: E731
     scales: dict[str, BodyScale] = {}
@@ -115,6 +132,10 @@ def fig3_scales(base: CharacterSpec, target: dict, p: np.ndarray) -> dict[str, B
     scales["PELVIS"] = BodyScale((pelvis_ratio / (v * h), h, v), pelvis_ratio)
     man_upper = mass(UPPER_TRUNK) / mass(LOWER_TRUNK + UPPER_TRUNK)
     upper = man_upper * math.exp(upper_logit) / (man_upper * math.exp(upper_logit) + 1 - man_upper)
+    if depth_floor is not None:     # a group's depth factor is its mass ratio / (v w)
+        least_ratio = depth_floor * target["height"] / float(base.data["height"]) * v * w
+        least = {names: least_ratio * mass(names) / target["torso mass"] for names in (LOWER_TRUNK, UPPER_TRUNK)}
+        upper = min(max(upper, least[UPPER_TRUNK]), 1.0 - least[LOWER_TRUNK])
     for names, share in ((LOWER_TRUNK, 1 - upper), (UPPER_TRUNK, upper)):
         ratio = target["torso mass"] * share / mass(names)
         for name in names:
@@ -122,14 +143,34 @@ def fig3_scales(base: CharacterSpec, target: dict, p: np.ndarray) -> dict[str, B
     return scales
 
 
-def fit_fig3(base: CharacterSpec, target: dict) -> tuple[dict, np.ndarray]:
-    """Least-squares fit of the free shares and lengths to ``target``'s lengths and inertias.
-    Returns (reshaped spec data, parameters)."""
+def trunk_depth(base: CharacterSpec, target: dict, p: np.ndarray, depth_floor: float | None = None) -> float:
+    """The thinnest trunk slice's depth, as a fraction of the man's same slice times the stature ratio."""
+    scales = fig3_scales(base, target, p, depth_floor)
+    stature = target["height"] / float(base.data["height"])
+    return min(scales[name].axes[0] for name in LOWER_TRUNK + UPPER_TRUNK) / stature
+
+
+def fit_fig3(base: CharacterSpec, target: dict) -> tuple[dict, np.ndarray, float | None]:
+    """Least-squares fit of the free shares and lengths to ``target``'s lengths and inertias, fitted
+    again with the trunk's depth floor when the unbounded optimum breaks it.
+    Returns (reshaped spec data, parameters, the depth floor applied or None)."""
+    data, p = _fit_fig3(base, target, None)
+    if trunk_depth(base, target, p) >= TRUNK_DEPTH_FLOOR:
+        return data, p, None
+    # the floor binds: fitted again with it, and with the trunk no narrower than it was (a narrower
+    # trunk lowers the floor's share, and the fit would meet the floor by narrowing the trunk into a
+    # deep, narrow drum instead of giving the upper trunk its mass)
+    data, p = _fit_fig3(base, target, TRUNK_DEPTH_FLOOR, least_width=p[5])
+    return data, p, TRUNK_DEPTH_FLOOR
+
+
+def _fit_fig3(base: CharacterSpec, target: dict, depth_floor: float | None, least_width: float | None = None
+              ) -> tuple[dict, np.ndarray]:
     man = fig3_measures(base)
     rows = [k for k in target if KIND[k] != "mass"]
 
     def build(p):
-        return reshaped(base.data, fig3_scales(base, target, p))
+        return reshaped(base.data, fig3_scales(base, target, p, depth_floor))
 
     def residuals(p):
         measured = fig3_measures(CharacterSpec(build(p)))
@@ -142,6 +183,9 @@ def fit_fig3(base: CharacterSpec, target: dict) -> tuple[dict, np.ndarray]:
     start = np.array([length("leg length"), 0.0, 0.0, length("arm length"), length("height"),
                       0.5 * (math.log(torso_ratio) - length("height")), 0.0, length("hip spacing"), 0.0])
     upper_bounds = start + FIT_BOUNDS
+    lower_bounds = start - FIT_BOUNDS
+    if least_width is not None:     # SciPy needs lower < upper strictly
+        lower_bounds[5] = min(max(lower_bounds[5], least_width), upper_bounds[5] - FIT_STEP)
 
     def jacobian(p):
         """Forward differences of absolute step FIT_STEP (backward at an upper bound): SciPy's
@@ -155,8 +199,8 @@ def fit_fig3(base: CharacterSpec, target: dict) -> tuple[dict, np.ndarray]:
             columns.append((residuals(moved) - base_residuals) / step)
         return np.array(columns).T
 
-    fit = least_squares(residuals, start, jac=jacobian, bounds=(start - FIT_BOUNDS, upper_bounds), method="trf",
-                        max_nfev=FIT_EVALUATIONS)
+    fit = least_squares(residuals, np.clip(start, lower_bounds, upper_bounds), jac=jacobian,
+                        bounds=(lower_bounds, upper_bounds), method="trf", max_nfev=FIT_EVALUATIONS)
     return build(fit.x), fit.x
 
 
@@ -164,7 +208,7 @@ def build_fig3_character(name: str, base: CharacterSpec) -> dict:
     """Spec data of the Fig. 3 character ``name`` (one of PRESETS) made from ``base`` (the man)."""
     if name not in PRESETS:
         raise UnknownNameError(f"unknown Fig. 3 character {name!r}; choose from {', '.join(PRESETS)}")
-    data, p = fit_fig3(base, FIG3[name])
+    data, p, depth_floor = fit_fig3(base, FIG3[name])
     leg_ratio = fig3_measures(CharacterSpec(data))["leg length"] / fig3_measures(base)["leg length"]
     data = mass_scaled_servos(data, base, leg_ratio)
     data["name"] = name
@@ -173,4 +217,6 @@ def build_fig3_character(name: str, base: CharacterSpec) -> dict:
     data["strength"] = {"scaled_from": base.name, "note": "kp, kv and torque limits mass-scaled (Fig. 6) by "
                         "the inertia each DOF moves, L = leg-length ratio (sim_core.adapt.servos)"}
     data["made"] = {"preset": name, "from": base.name, "fit": dict(zip(PARAMETERS, map(float, p)))}
+    if depth_floor is not None:
+        data["made"]["trunk depth floor"] = depth_floor
     return data
