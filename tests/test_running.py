@@ -427,33 +427,18 @@ def test_the_woman_runs_a_random_speed_of_her_range():
 
 
 @pytest.mark.slow
-def test_the_child_runs_100_s_at_her_tables_speed():
-    """The child (Fig. 3, 1.08 m, 26 kg): the man's row mass-scaled, then searched (docs/running.md,
-    the child): 100 s from a stand at 2.5 m/s, the one speed of her table, no fall, speed within 5 %;
-    any other speed is refused."""
-    speeds = SpeedTable.load("child").speeds
-    assert speeds == [2.5]
-    traj = run(RunRequest("running", "child", params={"speed": 2.5}, duration=100.0))
+@pytest.mark.parametrize("character, speed, refused", [("child", 2.5, 2.7), ("imaginary_runner", 3.0, 2.8)])
+def test_a_scaled_character_runs_100_s_at_its_tables_speed(character, speed, refused):
+    """The child (Fig. 3, 1.08 m, 26 kg: the man's row mass-scaled, then searched) and the imaginary
+    runner (1.61 m, 46.5 kg: reached through bodies between the woman and it; docs/running.md): 100 s
+    from a stand at the one speed of the table, no fall, speed within 5 %; any other speed is refused."""
+    assert SpeedTable.load(character).speeds == [speed]
+    traj = run(RunRequest("running", character, params={"speed": speed}, duration=100.0))
     m = traj.meta["metrics"]
     assert not_fallen(traj), f"fell at {m['fall_time']:.1f} s"
-    assert abs(m["gait"]["mean_speed"] - 2.5) <= SPEED_TOLERANCE * 2.5
-    with pytest.raises(ParameterError, match=r"\[2.5, 2.5\]"):
-        run(RunRequest("running", "child", params={"speed": 2.7}, duration=0.05))
-
-
-@pytest.mark.slow
-def test_the_imaginary_runner_runs_100_s_at_its_tables_speed():
-    """The imaginary runner (Fig. 3, 1.61 m, 46.5 kg): reached through bodies between the woman and it
-    (docs/running.md, the imaginary runner): 100 s from a stand at 3.0 m/s, the one speed of its
-    table, no fall, speed within 5 %; any other speed is refused."""
-    speeds = SpeedTable.load("imaginary_runner").speeds
-    assert speeds == [3.0]
-    traj = run(RunRequest("running", "imaginary_runner", params={"speed": 3.0}, duration=100.0))
-    m = traj.meta["metrics"]
-    assert not_fallen(traj), f"fell at {m['fall_time']:.1f} s"
-    assert abs(m["gait"]["mean_speed"] - 3.0) <= SPEED_TOLERANCE * 3.0
-    with pytest.raises(ParameterError, match=r"\[3, 3\]"):
-        run(RunRequest("running", "imaginary_runner", params={"speed": 2.8}, duration=0.05))
+    assert abs(m["gait"]["mean_speed"] - speed) <= SPEED_TOLERANCE * speed
+    with pytest.raises(ParameterError, match=rf"\[{speed:g}, {speed:g}\]"):
+        run(RunRequest("running", character, params={"speed": refused}, duration=0.05))
 
 
 @pytest.mark.parametrize("values", [{"course": "turn"}, {"facing": 1.0}, {"path": [[0, 0], [5, 0], [10, 5]]}])

@@ -18,3 +18,14 @@ def empty_scene(addon):
     import bpy
     bpy.ops.wm.read_homefile(use_empty=True)
     return bpy.context
+
+
+def man_in_an_empty_scene(fps: int):
+    """A fresh, empty file at ``fps`` frames per second with the man added by the add-on's operator;
+    returns (the context, his armature)."""
+    import bpy
+    bpy.ops.wm.read_homefile(use_empty=True)
+    context = bpy.context
+    context.scene.render.fps, context.scene.render.fps_base = fps, 1.0
+    assert bpy.ops.sim_athletics.add_character(character="man") == {"FINISHED"}
+    return context, context.view_layer.objects.active

@@ -96,13 +96,19 @@ def test_rest_frames_put_heads_on_joints_and_the_root_at_the_pelvis_com():
     assert m[frames.names.index("TOER"), 1, 1] < -0.9
 
 
-def test_basis_solves_blenders_pose_evaluation():
-    """Random rest frames and random poses of a small chain: pose -> basis -> pose again."""
+def random_chain() -> tuple[list[int], int, np.ndarray]:
+    """A small chain's parents, its bone count and random rest frames."""
     parents = [-1, 0, 1, 1, 0]
     n = len(parents)
     rest = np.tile(np.eye(4), (n, 1, 1))
     rest[:, :3, :3] = bm.quat_to_matrix(random_quats(n))
     rest[:, :3, 3] = RNG.normal(size=(n, 3))
+    return parents, n, rest
+
+
+def test_basis_solves_blenders_pose_evaluation():
+    """Random rest frames and random poses of a small chain: pose -> basis -> pose again."""
+    parents, n, rest = random_chain()
     ch = bm.BoneChannels(np.arange(6.0), [str(i) for i in range(n)], RNG.normal(size=(6, 3)),
                          random_quats(6 * n).reshape(6, n, 4), 0.0)
     pose = bm.pose_from_channels(ch, rest, parents)
@@ -114,11 +120,7 @@ def test_basis_solves_blenders_pose_evaluation():
 
 def test_scaled_bones_solve_blenders_pose_evaluation():
     """A morph's bones carry a uniform scale and a location each: pose -> basis -> pose again."""
-    parents = [-1, 0, 1, 1, 0]
-    n = len(parents)
-    rest = np.tile(np.eye(4), (n, 1, 1))
-    rest[:, :3, :3] = bm.quat_to_matrix(random_quats(n))
-    rest[:, :3, 3] = RNG.normal(size=(n, 3))
+    parents, n, rest = random_chain()
     ch = bm.BoneChannels(np.arange(6.0), [str(i) for i in range(n)], RNG.normal(size=(6, 3)),
                          random_quats(6 * n).reshape(6, n, 4), 0.0, RNG.normal(size=(6, n, 3)),
                          RNG.uniform(0.7, 1.0, size=(6, n)))

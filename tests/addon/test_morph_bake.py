@@ -12,17 +12,15 @@ from blender_addon import bake, rig  # noqa: E402
 from blender_addon.core import bake_math as bm  # noqa: E402
 from sim_core.simulate import RunRequest, run  # noqa: E402
 
+from .conftest import man_in_an_empty_scene  # noqa: E402
+
 FPS = 24
 
 
 @pytest.fixture(scope="module")
 def morph_baked(addon):
     """2 s of running at 3 m/s, the man turning into the woman from 0.5 s to 1.5 s, baked."""
-    bpy.ops.wm.read_homefile(use_empty=True)
-    context = bpy.context
-    context.scene.render.fps, context.scene.render.fps_base = FPS, 1.0
-    assert bpy.ops.sim_athletics.add_character(character="man") == {"FINISHED"}
-    arm = context.view_layer.objects.active
+    context, arm = man_in_an_empty_scene(FPS)
     trajectory = run(RunRequest("running", "man", params={"speed": 3.0, "morph_to": "woman", "morph_start": 0.5,
                                                           "morph_time": 1.0}, duration=2.0))
     bake.bake_trajectory(arm, trajectory, FPS)
