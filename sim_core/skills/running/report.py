@@ -3,6 +3,7 @@
 
     python -m sim_core report running            # everything (several minutes on 2 cores)
     python -m sim_core report running --quick    # shorter runs, no 100 s runs
+    python -m sim_core report running --fig12    # only Fig. 12: man, woman and child beside the human rows
 
 Every number comes from a simulation started from the standing pose (the issue asks for a start
 from a stand), read off the trajectory by sim_core.gait and the behaviour's own assess().
@@ -214,12 +215,53 @@ def figures(res: dict) -> None:
     plt.close(fig)
 
 
+FIG12_SECONDS = 30.0       # definition: a Fig. 12 run from a stand; its gait is the last 10 s (sim_core.gait)
+
+
+def fig12_markdown(duration: float = FIG12_SECONDS) -> str:
+    """Each character of Fig. 12 that runs (man, woman, child): a run at the speed of its table nearest
+    the figure's, its gait beside the human row and the 1997 simulation's."""
+    from ... import tuned
+    from ...simulate import RunRequest, run
+    from .behaviour import SpeedTable
+    lines = ["| character | Fig. 12 speed (human / 1997 sim) m/s | run at m/s | mean speed | steps/s (human, error) | "
+             "step length m (human, error) | stance/step % (human, error) | outcome |",
+             "| --- | --- | --- | --- | --- | --- | --- | --- |"]
+    for character, human in HUMAN_FIG12.items():
+        if not tuned.exists("running", character):
+            continue
+        speed = min(SpeedTable.load(character).speeds, key=lambda v: abs(v - human["speed"]))
+        trajectory = run(RunRequest("running", character, params={"speed": speed}, duration=duration))
+        g = trajectory.meta["metrics"]["gait"]
+
+        def cell(key, digits):
+            value = g[key]
+            return "-" if value is None else f"{value:.{digits}f} ({human[key]}, {(value - human[key]) / human[key] * 100:+.0f} %)"
+        lines.append(f"| {character} | {human['speed']} / {SIMULATED_1997[character]['speed']} | {speed:g} | "
+                     f"{fmt(g['mean_speed'])} | {cell('step_frequency', 2)} | {cell('step_length', 2)} | "
+                     f"{cell('stance_fraction', 1)} | {trajectory.meta['outcome']} |")
+    return "\n".join(lines)
+
+
 def main(argv=None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--quick", action="store_true")
+    ap.add_argument("--fig12", action="store_true",
+                    help="only the Fig. 12 table: man, woman and child at their tables' speeds nearest the figure's "
+                         "(rewrites the <!-- fig12 --> block of docs/running.md)")
     ap.add_argument("--workers", type=int, default=1, help="simulation processes (the project's machine: 1 while others work)")
     args = ap.parse_args(argv)
     started = time.perf_counter()
+    if args.fig12:
+        block = fig12_markdown()
+        text = DOC.read_text()
+        if "<!-- fig12 -->" not in text:
+            raise SystemExit(f"{DOC}: no <!-- fig12 --> ... <!-- /fig12 --> block to rewrite")
+        DOC.write_text(re.sub(r"<!-- fig12 -->\n.*?<!-- /fig12 -->", lambda _: f"<!-- fig12 -->\n{block}\n<!-- /fig12 -->",
+                              text, flags=re.S))
+        print(block)
+        print(f"total {time.perf_counter() - started:.0f} s")
+        return 0
     with Pool(args.workers) as pool:
         res = {r["name"]: r for r in pool.map(simulate, jobs(args.quick), chunksize=1)}
     for r in res.values():
