@@ -447,3 +447,12 @@ def test_the_woman_is_refused_a_turn_in_one_line(values):
     with pytest.raises(ParameterError) as error:
         run(RunRequest("running", "woman", params={"speed": 3.0, **values}, duration=0.05))
     assert "\n" not in str(error.value) and "straight ahead" in str(error.value)
+
+
+def test_the_fig12_table_has_a_row_per_runner_of_the_figure():
+    """report running --fig12: man, woman and child, each at its table's speed nearest Fig. 12's
+    (short runs here; the report's are 30 s)."""
+    from sim_core.skills.running.report import fig12_markdown
+    rows = fig12_markdown(duration=4.0).splitlines()[2:]
+    assert [r.split(" | ")[0] for r in rows] == ["| man", "| woman", "| child"]
+    assert [r.split(" | ")[2] for r in rows] == ["5", "3.5", "2.5"]
