@@ -136,3 +136,14 @@ def test_a_search_whose_table_checks_worse_is_not_kept(tables, tmp_path, monkeyp
     assert (result.status, result.evaluations) == ("works in part of the range", 5 + 6 + 20 + 6)
     assert "its table checked worse and was not kept: fell" in result.route
     assert tuned.load("leap", "child")["vertical"] == scaled["vertical"]
+
+
+def test_an_own_table_that_fails_its_check_is_reported_and_kept(tables, tmp_path, monkeypatch):
+    before = (tables / "running_child.json").read_bytes()
+    monkeypatch.setattr(ADAPTERS["running"], "check", lambda character, rng: Check(False, "2.5 m/s: fell at 9.0 s", 1))
+    monkeypatch.setattr(ADAPTERS["running"], "search", lambda *args: pytest.fail("an own table is not searched"))
+    [result] = command.adapt("child", ["running"], tmp_path / "out", minutes=5, workers=1, seed=1, redo=None,
+                             say=lambda line: None)
+    assert (result.status, result.route) == ("fails its check (own table kept)", "own table")
+    assert "`calibrate running` searches it again" in result.figures
+    assert (tables / "running_child.json").read_bytes() == before

@@ -2,7 +2,8 @@
 report what works (issue 28 part 7; Hodgins & Pollard 1997 §5).
 
 For each skill with an adapter (``sim_core.adapt.skills``: balance, land, leap, running):
-- the character's own table, if it has one, is checked as it is;
+- the character's own table, if it has one, is checked as it is and never replaced (a calibrated
+  character is searched again by ``calibrate SKILL``, not here);
 - otherwise the nearest calibrated character's table is scaled by Fig. 6, written through the store
   and checked by measured runs of random requests;
 - where the check fails and budget is left, the skill's search runs and the result is checked again;
@@ -96,6 +97,11 @@ def adapt_skill(skill: str, character: str, rng, workers: int, deadline: float, 
         check = adapter.check(character, rng)
         runs += check.runs
         say(f"{skill}: {route}: {check.figures}")
+        if route == "own table":              # a calibrated character's table is checked, never replaced here
+            provisional.keep()
+            state = status(check) if check.works else "fails its check (own table kept)"
+            figures = check.figures if check.works else f"{check.figures}; `calibrate {skill}` searches it again"
+            return Result(skill, state, route, figures, runs, time.monotonic() - started)
         if not (check.works and check.covers):
             minutes = (deadline - time.monotonic()) / 60.0
             if minutes <= 0:
