@@ -94,7 +94,7 @@ class BalanceAdapter:
             if t.meta["outcome"] != "success" or t.meta["metrics"].get("fell"):
                 failed.append(f"{h:.3f} m ({t.meta['outcome']})")
         figures = (f"knee bends to pelvis {min(heights):.2f}-{max(heights):.2f} m, {BALANCE_SECONDS:g} s: "
-                   + (f"{len(heights)}/{len(heights)} balanced" if not failed else "fell at " + ", ".join(failed)))
+                   + (f"{len(heights)}/{len(heights)} balanced" if not failed else "not balanced at " + ", ".join(failed)))
         return Check(not failed, figures, len(heights))
 
 
