@@ -73,18 +73,21 @@ def test_a_refused_skill_leaves_no_table_behind(tables, tmp_path, monkeypatch):
 
 
 def test_a_table_that_was_there_is_put_back_byte_for_byte(tables, tmp_path, monkeypatch):
+    """tuned.provisional puts the file back; an adaptation stopped during its check (Ctrl-C) leaves
+    no scaled table and no state behind."""
     before = (tables / "running_child.json").read_bytes()
-
-    def stopped(character, rng):
-        raise KeyboardInterrupt
-    monkeypatch.setattr(ADAPTERS["running"], "check", stopped)
-    with command.ProvisionalTable("running", "child"):
+    with tuned.provisional("running", "child"):
         (tables / "running_child.json").write_text("{}")
     assert (tables / "running_child.json").read_bytes() == before
+
+    def stopped(character, rng):
+        assert (tables / "landing_child.json").exists()       # the scaled table, written for the check
+        raise KeyboardInterrupt
+    monkeypatch.setattr(ADAPTERS["land"], "check", stopped)
     with pytest.raises(KeyboardInterrupt):
-        command.adapt("child", ["running"], tmp_path / "out", minutes=0, workers=1, seed=1, redo=None,
+        command.adapt("child", ["land"], tmp_path / "out", minutes=0, workers=1, seed=1, redo=None,
                       say=lambda line: None)
-    assert (tables / "running_child.json").read_bytes() == before
+    assert not (tables / "landing_child.json").exists()
     assert not (tmp_path / "out" / "state.json").exists()
 
 
@@ -129,11 +132,11 @@ def test_a_search_whose_table_checks_worse_is_not_kept(tables, tmp_path, monkeyp
     searched = {"vertical": {n: c[5:] for n, c in woman["vertical"].items()}}
     checks = iter([Check(True, "6/6 where it serves", 6, covers=False), Check(False, "fell", 6)])
     monkeypatch.setattr(ADAPTERS["leap"], "scale", lambda source, target, body: (scaled, 5))
-    monkeypatch.setattr(ADAPTERS["leap"], "search", lambda character, workers, minutes: (searched, 20))
+    monkeypatch.setattr(ADAPTERS["leap"], "search", lambda character, workers, minutes, check: (searched, 20))
     monkeypatch.setattr(ADAPTERS["leap"], "check", lambda character, rng: next(checks))
     [result] = command.adapt("child", ["leap"], tmp_path / "out", minutes=5, workers=1, seed=1, redo=None,
                              say=lambda line: None)
-    assert (result.status, result.evaluations) == ("works in part of the range", 5 + 6 + 20 + 6)
+    assert (result.status, result.runs) == ("works in part of the range", 5 + 6 + 20 + 6)
     assert "its table checked worse and was not kept: fell" in result.route
     assert tuned.load("leap", "child")["vertical"] == scaled["vertical"]
 

@@ -8,12 +8,13 @@ For each skill with an adapter (``sim_core.adapt.skills``: balance, land, leap, 
   and checked by measured runs of random requests;
 - where the check fails and budget is left, the skill's search runs and the result is checked again;
 - a skill that still fails is **refused**: its provisional table is removed (or the one that was
-  there restored byte for byte), so the body is never offered a skill that fell. A running table
-  keeps the rows that ran and drops the others.
+  there restored byte for byte: ``tuned.provisional``), so the body is never offered a skill that
+  fell; an adapter may keep the part that works instead (``keep_what_works``: a running table keeps
+  the rows that ran and drops the others).
 
 Every other skill is run once with its default request: refused before simulating (and why), or
 the outcome measured. The report is a Markdown table, skill x character: works / refused, the
-measured figures, evaluations (simulated runs of searches) and wall time.
+measured figures, simulated runs (checks and searches) and wall time.
 
 Resumable: each finished skill is recorded in ``<out>/state.json`` (written whole after each skill);
 a rerun skips the recorded ones (``--redo`` runs them all again, ``--redo SKILL ...`` those). Stopped with Ctrl-C, the skill under
@@ -36,116 +37,73 @@ from .. import tuned
 from ..character.spec import CharacterSpec, load_character
 from ..errors import ParameterError
 from ..files import write_atomically
-from ..tuned.store import read as read_table
 
 
 @dataclass
 class Result:
     skill: str
-    status: str              # "works" or "refused"
+    status: str              # works / works in part of the range / refused / fails its check (own table kept)
     route: str               # own table / scaled from X / scaled from X and searched / default request
     figures: str
-    evaluations: int = 0     # simulated runs: the checks' and the searches'
+    runs: int = 0            # simulated runs: the checks' and the searches'
     wall_seconds: float = 0.0
-
-
-class ProvisionalTable:
-    """A table written for a check: on ``keep()`` it stays, otherwise the file that was there before is
-    put back byte for byte (or the new one removed) when the block ends, also on Ctrl-C."""
-
-    def __init__(self, table: str, character: str):
-        self.path = tuned.table_path(table, character)
-        self.before = self.path.read_bytes() if self.path.exists() else None
-        self.kept = False
-
-    def __enter__(self):
-        return self
-
-    def keep(self) -> None:
-        self.kept = True
-
-    def __exit__(self, *exc) -> bool:
-        if not self.kept:
-            if self.before is None:
-                self.path.unlink(missing_ok=True)
-            else:
-                write_atomically(self.path, write=lambda tmp: Path(tmp).write_bytes(self.before))
-        return False
 
 
 def adapt_skill(skill: str, character: str, rng, workers: int, deadline: float, say) -> Result:
     adapter = ADAPTERS[skill]
     spec = load_character(character)
     started = time.monotonic()
+    result = lambda state, route, check, runs: Result(skill, state, route, check.figures, runs,
+                                                       time.monotonic() - started)
     if adapter.table is None:
         check = adapter.check(character, rng)
-        return Result(skill, "works" if check.works else "refused", "no table (the controller reads the body)",
-                      check.figures, check.runs, time.monotonic() - started)
-    with ProvisionalTable(adapter.table, spec.name) as provisional:
-        runs = 0
-        if tuned.exists(adapter.table, spec.name):
-            route = "own table"
-        else:
-            source_name = nearest_source(spec, tuned.characters_of(adapter.table))
-            if source_name is None:
-                return Result(skill, "refused", "no calibrated character to scale from", "-")
-            source = load_character(source_name)
-            body, runs = adapter.scale(source, spec, tuned.load(adapter.table, source_name))
-            tuned.save(adapter.table, spec.name, body, strengths=["human"])
-            route = f"scaled from the {source_name}"
-            say(f"{skill}: {route}, checking")
+        return result(status(check), "no table (the controller reads the body)", check, check.runs)
+    if tuned.exists(adapter.table, spec.name):      # a calibrated character's table is checked, never replaced here
+        check = adapter.check(character, rng)
+        say(f"{skill}: own table: {check.figures}")
+        if not check.works:
+            check.figures += f"; `calibrate {skill}` searches it again"
+        return result(status(check) if check.works else "fails its check (own table kept)", "own table", check,
+                      check.runs)
+    source_name = nearest_source(spec, tuned.characters_of(adapter.table))
+    if source_name is None:
+        return Result(skill, "refused", "no calibrated character to scale from", "-")
+    with tuned.provisional(adapter.table, spec.name) as provisional:
+        body, runs = adapter.scale(load_character(source_name), spec, tuned.load(adapter.table, source_name))
+        tuned.save(adapter.table, spec.name, body, strengths=["human"])
+        route = f"scaled from the {source_name}"
         check = adapter.check(character, rng)
         runs += check.runs
         say(f"{skill}: {route}: {check.figures}")
-        if route == "own table":              # a calibrated character's table is checked, never replaced here
-            provisional.keep()
-            state = status(check) if check.works else "fails its check (own table kept)"
-            figures = check.figures if check.works else f"{check.figures}; `calibrate {skill}` searches it again"
-            return Result(skill, state, route, figures, runs, time.monotonic() - started)
         if not (check.works and check.covers):
             minutes = (deadline - time.monotonic()) / 60.0
             if minutes <= 0:
-                figures = f"{check.figures} (no budget left for a search)"
-                if check.works:
-                    provisional.keep()
-                return Result(skill, status(check), route, figures, runs, time.monotonic() - started)
-            say(f"{skill}: searching ({minutes:.0f} min of budget left)")
-            path = tuned.table_path(adapter.table, spec.name)
-            before, strengths = path.read_bytes(), read_table(adapter.table, spec.name)["strengths"]
-            body, evaluations = adapter.search(character, workers, minutes)
-            runs += evaluations
-            tuned.save(adapter.table, spec.name, body, strengths=strengths)
-            searched = adapter.check(character, rng)
-            runs += searched.runs
-            say(f"{skill}: {route} and searched: {searched.figures}")
-            if (searched.works, searched.covers) >= (check.works, check.covers):
-                check, route = searched, route + " and searched"
-            else:                                  # the search's table checked worse: the one before it is kept
-                write_atomically(path, write=lambda tmp: Path(tmp).write_bytes(before))
-                route += f" (searched; its table checked worse and was not kept: {searched.figures})"
-        if not check.works and skill == "running":
-            check, runs = _keep_running_rows(adapter, character, spec, check, runs, rng)
+                check.figures += " (no budget left for a search)"
+            else:
+                say(f"{skill}: searching ({minutes:.0f} min of budget left)")
+                with tuned.provisional(adapter.table, spec.name) as searched_table:
+                    body, evaluations = adapter.search(character, workers, minutes, check)
+                    tuned.save(adapter.table, spec.name, body, strengths=["human"])
+                    searched = adapter.check(character, rng)
+                    runs += evaluations + searched.runs
+                    say(f"{skill}: {route} and searched: {searched.figures}")
+                    if (searched.works, searched.covers) >= (check.works, check.covers):
+                        searched_table.keep()
+                        check, route = searched, route + " and searched"
+                    else:                      # the search's table checked worse: the scaled one is put back
+                        route += f" (searched; its table checked worse and was not kept: {searched.figures})"
+        if not check.works:                    # e.g. a running table without the rows that did not run
+            narrowed = adapter.keep_what_works(character, check, rng)
+            if narrowed is not None:
+                runs += narrowed.runs
+                check = narrowed
         if check.works:
             provisional.keep()
-        return Result(skill, status(check), route, check.figures, runs, time.monotonic() - started)
+        return result(status(check), route, check, runs)
 
 
 def status(check: Check) -> str:
     return ("works" if check.covers else "works in part of the range") if check.works else "refused"
-
-
-def _keep_running_rows(adapter, character: str, spec: CharacterSpec, check: Check, runs: int, rng):
-    """The running table with only the rows whose 100 s runs did not fall and held the speed."""
-    body = tuned.load("running", spec.name)
-    keep = [k for k, v in enumerate(body["speeds"]) if v not in adapter.failed]
-    if not keep:
-        return check, runs
-    body = dict(body, speeds=[body["speeds"][k] for k in keep],
-                parameters={n: [col[k] for k in keep] for n, col in body["parameters"].items()})
-    tuned.save("running", spec.name, body, strengths=["human"])
-    kept = adapter.check(character, rng)
-    dropped = ", ".join(f"{v:g}" for v in adapter.failed)
-    return Check(kept.works, f"{kept.figures} (rows {dropped} m/s dropped: {check.figures})", kept.runs), runs + kept.runs
 
 
 def try_default(skill: str, character: str) -> Result:
@@ -177,7 +135,7 @@ def markdown(character: CharacterSpec, results: list[Result]) -> str:
     lines = [f"**{character.name}** ({character.total_mass:.1f} kg)", "",
              "| skill | result | route | measured | runs | wall s |", "| --- | --- | --- | --- | --- | --- |"]
     for r in results:
-        lines.append(f"| {r.skill} | {r.status} | {r.route} | {r.figures.replace('|', '/')} | {r.evaluations} | "
+        lines.append(f"| {r.skill} | {r.status} | {r.route} | {r.figures.replace('|', '/')} | {r.runs} | "
                      f"{r.wall_seconds:.0f} |")
     return "\n".join(lines) + "\n"
 

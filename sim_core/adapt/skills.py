@@ -40,7 +40,6 @@ LEAP_HEIGHTS = (0.2, 0.5)    # definition: the issue's leap range for adapted bo
 LEAP_SECONDS = 4.5           # definition: a leap's run, as calibrate leap's trials
 RUN_SECONDS = 100.0          # criterion: TARGETS.md's 100 s of running without a fall
 SPEED_TOLERANCE = 0.05       # criterion: mean speed of the last 10 s within 5 % (TARGETS.md "Running")
-SPEED_WINDOW = 10.0          # definition: the steady-state window (calibrate running's)
 RUN_SEARCH_SECONDS = 15.0    # definition: the seed's 15 s evaluation runs (§5, S6)
 
 
@@ -50,6 +49,18 @@ class Check:
     figures: str             # what was measured, one line
     runs: int
     covers: bool = True      # the table serves the whole range checked (else works only where it serves)
+    failed: tuple = ()       # the requests that failed, where an adapter can act on them (running: speeds)
+
+
+class Adapter:
+    """What every adapter has: ``skill``, its ``table`` (None: no table), ``check``; with a table
+    also ``scale`` and ``search(character, workers, minutes, check)``."""
+    skill: str
+    table: str | None
+
+    def keep_what_works(self, character: str, check: Check, rng) -> Check | None:
+        """After a failed check: the table narrowed to what worked, checked again (None: all or nothing)."""
+        return None
 
 
 def leg_length_ratio(source: CharacterSpec, target: CharacterSpec) -> float:
@@ -79,7 +90,7 @@ def _run(behaviour: str, character: str, **request):
     return run(RunRequest(behaviour, character, **request))
 
 
-class BalanceAdapter:
+class BalanceAdapter(Adapter):
     """Balance has no table: its controller reads the body (leg geometry, feet, servos)."""
     skill, table = "balance", None
 
@@ -98,7 +109,7 @@ class BalanceAdapter:
         return Check(not failed, figures, len(heights))
 
 
-class LandingAdapter:
+class LandingAdapter(Adapter):
     """The landing's foot-servo delta table (python -m sim_core calibrate land): drops by L, speeds
     by L^1/2, deltas by L."""
     skill, table = "land", "landing"
@@ -128,8 +139,8 @@ class LandingAdapter:
         table = tuned.load("landing", spec.name)
         rows = [r for r in table["foot_delta"] if r["speed"]]
         L = leg_length_ratio(load_character("man"), spec)
-        low = max(min(r["speed"]) for r in rows + [{"speed": [LANDING_SPEEDS[0] * L ** 0.5]}])
-        high = min(max(r["speed"]) for r in rows + [{"speed": [LANDING_SPEEDS[1] * L ** 0.5]}])
+        low = max(LANDING_SPEEDS[0] * L ** 0.5, *(min(r["speed"]) for r in rows))
+        high = min(LANDING_SPEEDS[1] * L ** 0.5, *(max(r["speed"]) for r in rows))
         drops = rng.uniform(LANDING_DROPS[0] * L, LANDING_DROPS[1] * L, size=CHECKS)
         speeds = rng.uniform(low, high, size=CHECKS) if high > low else np.full(CHECKS, low)
         missed = []
@@ -143,7 +154,7 @@ class LandingAdapter:
                    + (f"; missed {', '.join(missed)}" if missed else ""))
         return Check(not missed, figures, CHECKS)
 
-    def search(self, character: str, workers: int, minutes: float) -> tuple[dict, int]:
+    def search(self, character: str, workers: int, minutes: float, check: Check) -> tuple[dict, int]:
         """calibrate land's sweep (every drop, speed and delta), then its fast-touchdown scan."""
         from ..skills.land.calibrate import DELTAS, DROPS, FAST_DELTAS, HIGH_DROPS, SPEEDS, calibrate, fast_touchdown
         table = calibrate(character, workers)
@@ -152,7 +163,7 @@ class LandingAdapter:
         return table, len(DROPS) * len(SPEEDS) * len(DELTAS) + len(FAST_DELTAS) * len(HIGH_DROPS)
 
 
-class LeapAdapter:
+class LeapAdapter(Adapter):
     """The vertical leap's table (human strength): crouch heights, COM offsets and the measured rises
     by L; angles and shares as they are. The broad jump is not carried (it is planned per distance)."""
     skill, table = "leap", "leap"
@@ -177,11 +188,11 @@ class LeapAdapter:
         for row in rows:
             t = _run("leap", target.path, params={"low_level": 1, **row}, duration=LEAP_SECONDS)
             if t.meta["outcome"] == "success":
-                measured.append((t.meta["metrics"]["com_rise"], len(measured), row, t.meta["metrics"]))
-        measured.sort(key=lambda m: m[0])
-        vertical = {n: [row[n] for _, _, row, _ in measured] for n in (rows[0] if rows else {})}
+                measured.append((row, t.meta["metrics"]))
+        measured.sort(key=lambda m: m[1]["com_rise"])
+        vertical = {n: [row[n] for row, _ in measured] for n in (rows[0] if rows else {})}
         for name in ("com_rise", "com_travel", "peak_thrust_grf_body_weights"):
-            vertical[name] = [m[name] for _, _, _, m in measured]
+            vertical[name] = [metrics[name] for _, metrics in measured]
         return {"character": target.name,
                 "script": f"python -m sim_core adapt (the {source.name}'s vertical leaps scaled by Fig. 6, each run "
                           f"once: {len(measured)} of {len(rows)} landed balanced, their rises as measured)",
@@ -212,7 +223,7 @@ class LeapAdapter:
                    + (f"; missed {', '.join(missed)}" if missed else ""))
         return Check(not missed, figures, CHECKS, covers=(bottom, top) == LEAP_HEIGHTS)
 
-    def search(self, character: str, workers: int, minutes: float) -> tuple[dict, int]:
+    def search(self, character: str, workers: int, minutes: float, check: Check) -> tuple[dict, int]:
         """calibrate leap's crouch sweep of the vertical table (human strength)."""
         from .. import tuned
         from ..skills.leap.calibrate import calibrate
@@ -222,7 +233,7 @@ class LeapAdapter:
         return mapping, len(mapping["trials_by_table"]["vertical"])
 
 
-class RunningAdapter:
+class RunningAdapter(Adapter):
     """The running table: the nearest runner's rows and the laws' constants mass-scaled by Fig. 6
     (calibrate running --scale-from), at its speeds x L^1/2 held inside the schema's range."""
     skill, table = "running", "running"
@@ -238,32 +249,45 @@ class RunningAdapter:
                 "note": f"the {source.name}'s rows and the constants of the running laws mass-scaled by Fig. 6 "
                         "(python -m sim_core adapt); rows that did not run were searched or dropped"}, 0
 
-    def check(self, character: str, rng, speeds: list[float] | None = None) -> Check:
+    def check(self, character: str, rng) -> Check:
+        """A 100 s run at every speed of the table (the running's own measure: the gait's mean speed
+        over the last 10 s)."""
         from .. import tuned
-        table = tuned.load("running", load_character(character).name)
-        speeds = list(table["speeds"]) if speeds is None else speeds
+        speeds = tuned.load("running", load_character(character).name)["speeds"]
         failed, figures = [], []
         for v in speeds:
-            t = _run("running", character, params={"speed": float(v)}, duration=RUN_SECONDS)
-            m, a = t.meta["metrics"], t.arrays
-            window = a["time"] >= a["time"][-1] - SPEED_WINDOW
-            mean = float(np.mean(np.linalg.norm(a["com_vel"][window, :2], axis=1)))
-            ok = not m["fell"] and abs(mean - v) <= SPEED_TOLERANCE * v
+            m = _run("running", character, params={"speed": float(v)}, duration=RUN_SECONDS).meta["metrics"]
+            mean = m["gait"]["mean_speed"]
             figures.append(f"{v:g} m/s: " + (f"fell at {m['fall_time']:.1f} s" if m["fell"] else f"{mean:.3f} m/s"))
-            if not ok:
+            if m["fell"] or abs(mean - v) > SPEED_TOLERANCE * v:
                 failed.append(v)
-        self.failed = failed
-        return Check(not failed, f"{RUN_SECONDS:g} s runs: " + "; ".join(figures), len(speeds))
+        return Check(not failed, f"{RUN_SECONDS:g} s runs: " + "; ".join(figures), len(speeds), failed=tuple(failed))
 
-    def search(self, character: str, workers: int, minutes: float) -> tuple[dict, int]:
+    def keep_what_works(self, character: str, check: Check, rng) -> Check | None:
+        """The table with only the rows whose runs did not fall and held the speed."""
+        from .. import tuned
+        name = load_character(character).name
+        body = tuned.load("running", name)
+        keep = [k for k, v in enumerate(body["speeds"]) if v not in check.failed]
+        if not keep:
+            return None
+        tuned.save("running", name, dict(body, speeds=[body["speeds"][k] for k in keep],
+                                         parameters={n: [col[k] for k in keep] for n, col in body["parameters"].items()}),
+                   strengths=["human"])
+        kept = self.check(character, rng)
+        dropped = ", ".join(f"{v:g}" for v in check.failed)
+        kept.figures += f" (rows {dropped} m/s dropped: {check.figures})"
+        return kept
+
+    def search(self, character: str, workers: int, minutes: float, check: Check) -> tuple[dict, int]:
         """CMA-ES over the five parameters of each row the check saw fail (calibrate running, 15 s
         runs), within the budget; rows that still do not run are dropped by the command."""
         from .. import tuned
         from ..skills.running.calibrate import main as calibrate_running
         name = load_character(character).name
         evaluations = 0
-        for k, v in enumerate(self.failed):
-            share = minutes / (len(self.failed) - k)
+        for k, v in enumerate(check.failed):
+            share = minutes / (len(check.failed) - k)
             start = time.monotonic()
             calibrate_running(["--character", character, "--speeds", f"{v:g}", "--method", "cma", "--workers",
                                str(workers), "--duration", f"{RUN_SEARCH_SECONDS:g}", "--minutes", f"{share:.2f}"])

@@ -17,6 +17,7 @@ from pathlib import Path
 
 from ..adapt.servos import mass_scaled_servos
 from .dimensions import fig3_measures
+from .morph import lerp
 from .reshape import BodyScale, reshaped, standing_height
 from .spec import RIGS_DIR, CharacterSpec
 from ..files import write_atomically
@@ -69,7 +70,7 @@ def _mix(x, y, t):
     if isinstance(x, bool) or x is None or isinstance(x, str):
         return x
     if isinstance(x, (int, float)):
-        return (1 - t) * x + t * y
+        return lerp(x, y, t)
     if isinstance(x, list):
         return [_mix(u, v, t) for u, v in zip(x, y, strict=True)]
     if isinstance(x, dict):

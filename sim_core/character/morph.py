@@ -50,8 +50,11 @@ def model_arrays(model: mujoco.MjModel) -> dict[str, np.ndarray]:
     return out
 
 
-def _lerp(a: np.ndarray, b: np.ndarray, f: float) -> np.ndarray:
-    return a + f * (b - a)          # a where the ends agree, bit for bit
+def lerp(a, b, f: float):
+    """``f`` of the way from ``a`` to ``b`` (numbers or arrays): a where the ends agree, bit for bit.
+    The one interpolation of a body between two (character.make.between, the morph, the running
+    controller's tables)."""
+    return a + f * (b - a)
 
 
 def _matrices(quats: np.ndarray) -> np.ndarray:
@@ -151,15 +154,15 @@ class Morph:
         m, s, e = self.model, self.start, self.end
         for name, idx in self.changed.items():
             target = getattr(m, name).reshape(-1)
-            target[idx] = _lerp(s[name].reshape(-1)[idx], e[name].reshape(-1)[idx], f)
+            target[idx] = lerp(s[name].reshape(-1)[idx], e[name].reshape(-1)[idx], f)
         eigval, eigvec, quat = np.zeros(3), np.zeros(9), np.zeros(4)
-        for i, tensor in zip(self.bodies, _lerp(self.inertia[0], self.inertia[1], f).reshape(-1, 9)):
+        for i, tensor in zip(self.bodies, lerp(self.inertia[0], self.inertia[1], f).reshape(-1, 9)):
             mujoco.mju_eig3(eigval, eigvec, quat, tensor)
             m.body_inertia[i] = eigval
             m.body_iquat[i] = quat
         self._shapes(f)
         self._bounding_boxes()
-        kp, kv = _lerp(s["kp"], e["kp"], f), _lerp(s["kv"], e["kv"], f)
+        kp, kv = lerp(s["kp"], e["kp"], f), lerp(s["kv"], e["kv"], f)
         kp_ratio, kv_ratio = kp / self.kp, kv / self.kv
         m.actuator_gainprm[:, 0] *= kp_ratio
         m.actuator_biasprm[:, 1] *= kp_ratio
@@ -171,14 +174,14 @@ class Morph:
     def _shapes(self, f: float) -> None:
         m, s, e = self.model, self.start, self.end
         g = self.geoms
-        m.geom_size[g] = _lerp(s["geom_size"][g], e["geom_size"][g], f)
+        m.geom_size[g] = lerp(s["geom_size"][g], e["geom_size"][g], f)
         g = self.others
-        m.geom_pos[g] = _lerp(s["geom_pos"][g], e["geom_pos"][g], f)
+        m.geom_pos[g] = lerp(s["geom_pos"][g], e["geom_pos"][g], f)
         if len(self.boxes):
-            m.geom_quat[self.boxes] = _x_to(_lerp(self.box_axes[0], self.box_axes[1], f))
+            m.geom_quat[self.boxes] = _x_to(lerp(self.box_axes[0], self.box_axes[1], f))
         if len(self.capsules):
             (a0, a1), (b0, b1) = self.capsule_ends
-            p0, p1 = _lerp(a0, b0, f), _lerp(a1, b1, f)
+            p0, p1 = lerp(a0, b0, f), lerp(a1, b1, f)
             axis = p1 - p0
             m.geom_pos[self.capsules] = 0.5 * (p0 + p1)
             m.geom_size[self.capsules, 1] = 0.5 * np.linalg.norm(axis, axis=1)

@@ -15,6 +15,7 @@ half-written table. JSON floats round-trip exactly (``repr``), so a stored row r
 from __future__ import annotations
 
 import json
+from contextlib import contextmanager
 from dataclasses import dataclass
 from importlib import resources
 from pathlib import Path
@@ -133,6 +134,36 @@ def save(skill: str, character: str, body: dict, strengths: Iterable[str], direc
     path = table_path(skill, character, directory)
     check(path.name, skill, character, data)
     return write_atomically(path, dumps(data))
+
+
+class Provisional:
+    """A table that may be written for trials and then must not stay: ``keep()`` keeps what is there
+    when the block ends; otherwise the file that was there before is put back byte for byte (or the
+    one written removed), also when the block ends by an exception or Ctrl-C."""
+
+    def __init__(self, path: Path):
+        self.path, self.before, self.kept = path, (path.read_bytes() if path.exists() else None), False
+
+    def keep(self) -> None:
+        self.kept = True
+
+    def restore(self) -> None:
+        """The file as it was when the block began."""
+        if self.before is None:
+            self.path.unlink(missing_ok=True)
+        else:
+            write_atomically(self.path, write=lambda tmp: Path(tmp).write_bytes(self.before))
+
+
+@contextmanager
+def provisional(skill: str, character: str, directory: Path | None = None):
+    """``with provisional(skill, character) as table: ...; table.keep()`` (Provisional)."""
+    table = Provisional(table_path(skill, character, directory))
+    try:
+        yield table
+    finally:
+        if not table.kept:
+            table.restore()
 
 
 def delete(skill: str, character: str, directory: Path | None = None) -> None:

@@ -101,18 +101,12 @@ def main(argv=None) -> int:
     args = parser.parse_args(argv)
     for character in args.character:
         table = calibrate(character, args.processes)
-        stored = tuned.table_path("landing", character_name(character))
-        before = stored.read_bytes() if stored.exists() else None
-        try:            # the fast-touchdown scan runs its trials with the candidate as the character's table
+        # the fast-touchdown scan runs its trials with the candidate as the character's table; a
+        # stopped scan leaves the table that was there, byte for byte
+        with tuned.provisional("landing", character_name(character)) as stored:
             table["fast_touchdown"] = fast_touchdown(character, table)
-        except BaseException:           # a stopped scan leaves the table that was there, byte for byte
-            if before is None:
-                tuned.delete("landing", character_name(character))
-            else:
-                stored.with_suffix(".restore").write_bytes(before)
-                stored.with_suffix(".restore").replace(stored)
-            raise
-        path = tuned.save("landing", character_name(character), table, strengths=["human"])
+            path = tuned.save("landing", character_name(character), table, strengths=["human"])
+            stored.keep()
         for row in table["foot_delta"]:
             print(f"wrote {path.relative_to(ROOT)}: drop {row['drop']} m, speeds {row['speed']}")
     return 0

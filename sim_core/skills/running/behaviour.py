@@ -45,7 +45,8 @@ from ...character.model import Placement
 from ...character.spec import load_character
 from ...control.behaviour import Behaviour, ControlContext, register
 from .leg import RunnerLeg
-from .morph import RAMPED, MorphTable, leg_between, lerp, morph_ramps, morph_speed_metrics
+from ...character.morph import lerp
+from .morph import RAMPED, MorphTable, leg_between, morph_ramps, morph_speed_metrics
 from ...control.path import (MAX_POINTS, PathFollower, circle_path, figure_eight_path, tightest_radius, turn_path,
                              validate_path)
 from ...control.servo import hermite_scalar

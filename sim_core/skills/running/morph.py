@@ -10,13 +10,10 @@ import copy
 
 import numpy as np
 
+from ...character.morph import lerp
 from .leg import RunnerLeg
 
 RAMPED = ("ground_speed_matching", "stance_pitch", "thrust_time", "ankle_extension", "knee_extension")
-
-
-def lerp(a: float, b: float, f: float) -> float:
-    return a + f * (b - a)
 
 
 class MorphTable:
