@@ -34,7 +34,7 @@ import numpy as np
 
 from .moved_bodies import gain_factors
 from .scaling import ScaleFactors, Units, scale
-from ..character.dimensions import fig3_measures
+from ..character.dimensions import leg_length_ratio
 from ..character.mass_properties import StandingBody
 from ..character.spec import CharacterSpec
 from ..errors import ParameterError
@@ -79,8 +79,7 @@ class CharacterPair:
     def __init__(self, old: CharacterSpec, new: CharacterSpec, length: float | None = None):
         self.old, self.new = StandingBody(old), StandingBody(new)
         self.old_spec, self.new_spec = old, new
-        self.length = (fig3_measures(new)["leg length"] / fig3_measures(old)["leg length"]
-                       if length is None else float(length))
+        self.length = leg_length_ratio(old, new) if length is None else float(length)
         ScaleFactors(self.length)                          # refuses a non-positive L
         self.dof_names = [d.name for d in old.dofs]
 

@@ -26,6 +26,7 @@ import numpy as np
 
 from .scaling import ScaleFactors, Units, scale
 from .settings import GEOMETRIC, MASS, CharacterPair, scale_settings
+from ..character.dimensions import leg_length_ratio
 from ..character.spec import CharacterSpec, load_character
 
 VELOCITY, LENGTH = Units.parse("m/s"), Units.parse("m")
@@ -61,10 +62,6 @@ class Adapter:
     def keep_what_works(self, character: str, check: Check, rng) -> Check | None:
         """After a failed check: the table narrowed to what worked, checked again (None: all or nothing)."""
         return None
-
-
-def leg_length_ratio(source: CharacterSpec, target: CharacterSpec) -> float:
-    return CharacterPair(source, target).length
 
 
 def nearest_source(target: CharacterSpec, candidates: list[str]) -> str | None:

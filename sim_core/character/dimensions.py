@@ -50,3 +50,8 @@ def fig3_measures(character: CharacterSpec) -> dict[str, float]:
         "body / hip": standing.inertia_about(everything - leg, hip, PITCH),
     })
     return out
+
+
+def leg_length_ratio(old: CharacterSpec, new: CharacterSpec) -> float:
+    """L of Fig. 6 for runners ([B] 144): ``new``'s leg length over ``old``'s (hip joint to ankle joint)."""
+    return fig3_measures(new)["leg length"] / fig3_measures(old)["leg length"]
