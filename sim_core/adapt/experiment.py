@@ -105,11 +105,12 @@ def controller_for(skill: str, man: CharacterSpec, body: dict, controller: str) 
 
 
 def time_before_falling(skill: str, character: CharacterSpec, params: dict, cap: float) -> tuple[float, bool]:
-    """Seconds until the run falls (standard_metrics' fall_time), or ``cap`` if it does not."""
+    """Seconds until the run falls (standard_metrics' fall_time), or ``cap`` if it does not (a run
+    lasts whole control ticks, so a scaled body's may end a fraction of a tick past the cap)."""
     from ..simulate import RunRequest, run
     trajectory = run(RunRequest(skill, character, params=params, duration=cap))
     fall = trajectory.meta["metrics"].get("fall_time")
-    return (float(fall), True) if fall is not None else (float(trajectory.arrays["time"][-1]), False)
+    return (float(fall), True) if fall is not None else (min(float(trajectory.arrays["time"][-1]), cap), False)
 
 
 def experiment(skill: str, fractions=FRACTIONS, controllers=CONTROLLERS, cap: float = CAP,
