@@ -167,22 +167,23 @@ class Bicycling(Behaviour):
         return dataclasses.replace(world, bicycle=bicycle, hill=course.hill)
 
     @classmethod
-    def start_state(cls, params, model, data, character):
+    def start_state(cls, params, model, data, character, prefix=""):
         """Mounted and rolling: the rider's root and joints solved so that the seat bones sit on
         the saddle and the palms and balls of the feet on the grips and pedals (crank
-        horizontal), then the rolling start at the commanded speed."""
+        horizontal), then the rolling start at the commanded speed. ``prefix``: the rider's (a
+        scene's actor); nobody else is moved."""
         bike = BicycleView.of(model)
         bike.set_crank(data, MOUNT_CRANK_ANGLE)
         mujoco.mj_kinematics(model, data)
-        pairs = SitePairs(model)
-        root = model.joint("root")
+        pairs = SitePairs(model, prefix)
+        root = model.joint(prefix + "root")
         adr = int(root.qposadr[0])
         seat_mid = data.site_xpos[pairs.rider[:2]].mean(axis=0)
         saddle = data.site_xpos[pairs.bike[:2]].mean(axis=0)
         data.qpos[adr:adr + 3] += saddle - seat_mid
         reference = data.qpos.copy()
         for name, value in mount_posture(params).items():
-            reference[model.joint(name).qposadr[0]] = value
+            reference[model.joint(prefix + name).qposadr[0]] = value
         data.qpos[:] = reference
         dofs = np.arange(int(root.dofadr[0]), model.nv)
         rider_dofs = dofs[model.body_rootid[model.dof_bodyid[dofs]] == model.jnt_bodyid[root.id]]
@@ -198,12 +199,7 @@ class Bicycling(Behaviour):
                 "attachment_gaps": {n: float(g) for n, g in zip(pairs.names, gaps)}}
 
     def check_feasible(self):
-        """A scene does not mount a rider yet (run_scene calls neither start_state nor the rider's
-        attachments): refuse rather than ride a bicycle that is not there. Only the riders measured
-        to ride are offered."""
-        if mujoco.mj_name2id(self.ctx.model, mujoco.mjtObj.mjOBJ_BODY, NAMES["frame"]) < 0 or self.ctx.actor.prefix:
-            raise ParameterError("the bicycle behaviour runs only alone (python -m sim_core simulate bicycle); "
-                                 "scenes with a bicycle are not built yet")
+        """Only the riders measured to ride are offered."""
         rider = self.ctx.character.name
         if rider not in RIDERS:
             raise ParameterError(f"bicycle is not calibrated for the {rider} (calibrated for: {', '.join(RIDERS)}): "
