@@ -95,6 +95,11 @@ FREEWHEEL_DAMPING = 50.0        # N m s / rad of rear-wheel slip. Stiffer is not
 FREEWHEEL_MAX_FORCE = 1000.0    # N m: the clutch's largest torque on the wheel (never reached)
 BRAKE_MAX_TORQUE = 60.0         # N m per wheel: both at once decelerate rider and bicycle (114 kg) by 3.2 m/s^2,
                                 # a hard stop on a city bike (rim brakes: 2-4 m/s^2, Wilson 2004 ch. 7)
+BRAKE_SOLREF = (0.005, 1.0)     # s, damping ratio of the brakes' dry friction (MuJoCo's joint solreffriction)
+BRAKE_SOLIMP = (0.99, 0.999, 0.001, 0.5, 2.0)   # its impedance (solimpfriction). MuJoCo's dry friction is a soft
+                                # constraint: under a steady load it creeps at a speed ~ (1 - d) / d * timeconst;
+                                # at the defaults (0.9, 0.02 s) the braked bicycle crept forward 20-50 mm/s under the
+                                # rider leaning on his foot and fell within 9-16 s of coming to rest (docs/bicycle.md)
 CRANK_ARMATURE = 0.02           # kg m^2: drivetrain inertia (chainring, chain) about the crank axle
 TYRE_FRICTION = 0.9             # rubber on asphalt
 FRAME_COLOUR = [0.15, 0.35, 0.6, 1.0]
@@ -196,6 +201,8 @@ def _wheel(parent, name: str, joint: str, pos, mass: float, contact: int):
     _inertia(wheel, mass, [axial / 2, axial, axial / 2])
     hinge = wheel.add_joint(name=joint, type=mujoco.mjtJoint.mjJNT_HINGE, axis=[0, 1, 0])
     hinge.damping = [ROLLING_RESISTANCE / 2 * r * r, 0.0, 0.0]     # linear viscous term only
+    hinge.solref_friction = list(BRAKE_SOLREF)                        # the rim brake's dry friction holds
+    hinge.solimp_friction = list(BRAKE_SOLIMP)
     seen = wheel.add_geom(name=name + "_tyre_seen", type=mujoco.mjtGeom.mjGEOM_CYLINDER, size=[r - 0.005, 0, 0],
                           fromto=[0, -TYRE_WIDTH / 2, 0, 0, TYRE_WIDTH / 2, 0], rgba=TYRE_COLOUR)
     seen.contype = seen.conaffinity = 0

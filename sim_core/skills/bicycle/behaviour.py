@@ -237,12 +237,13 @@ class Bicycling(Behaviour):
         self.crank_command = None            # coasting: the crank angle the legs hold (None: the pedals as they are)
         self.coasting = self.coasted = False
         self.stopping = self.course.stop        # braking to a stop (the stop course; a coast that got too slow)
-        self.foot_down = None               # stop: (time the foot left its pedal, where it left it, the ground point)
+        self.foot_down = None               # stop: (time the foot left its pedal, where it left it from the left hip)
         self.planted = None                 # stop: the left leg's servo targets once the foot is on the ground
         self.knee_integral = 0.0            # stop: the planted knee's integral term (rad)
         self.rest_since = None              # stop: when the bicycle came to rest with the foot down
         self.foot_site = model.site(ctx.actor.prefix + "rider_foot_l").id
         self.foot_eq = model.equality(ctx.actor.prefix + "attach_foot_l").id
+        self.left_hip = model.body(ctx.actor.prefix + "ULEGL").id
         left_leg = ("hip_l_y", "hip_l_x", "hip_l_z", "knee_l_y")
         self.left_leg_servos = servos.indices(left_leg)
         self.left_leg_dofs = servos.dof_adr[self.left_leg_servos]
@@ -318,23 +319,30 @@ class Bicycling(Behaviour):
 
     def _release_foot(self, t) -> None:
         """The left foot leaves its pedal (its attachment switched off through the edit log, so a
-        replay switches it off at the same tick) for a ground point foot_out left of the wheels'
-        contact line and foot_ahead ahead of the left hip."""
-        data, bike = self.ctx.data, self.bike
+        replay switches it off at the same tick) for a ground point beside the hip (``_ground_point``)."""
+        data = self.ctx.data
         active = data.eq_active.copy()
         active[self.foot_eq] = 0
         self.ctx.servos.log.set_flat(data.eq_active, "eq_active", active)
+        self.foot_down = (t, data.site_xpos[self.foot_site] - data.xpos[self.left_hip])
+        self.event(t, "foot_off_pedal")
+
+    def _ground_point(self) -> np.ndarray:
+        """Where the left foot goes down, read afresh each tick (the bicycle still rolls while the foot
+        swings): on the ground foot_out left of the wheels' contact line and foot_ahead ahead of the
+        left hip. Aimed once, where the hip was when the foot let go, the foot landed 0.2 m behind the
+        hip at rest: the leg then pushed the bicycle forward against the brakes and the foot back, and
+        both crept until the bicycle fell (docs/bicycle.md, the stop)."""
+        data, bike = self.ctx.data, self.bike
         frame = data.xmat[bike.frame].reshape(3, 3)
         heading = math.atan2(frame[1, 0], frame[0, 0])
         forward, left = np.array([math.cos(heading), math.sin(heading), 0.0]), np.array([-math.sin(heading), math.cos(heading), 0.0])
-        hip = data.xpos[self.ctx.model.body(self.ctx.actor.prefix + "ULEGL").id]
+        hip = data.xpos[self.left_hip]
         mid = data.xpos[bike.frame].copy()
-        mid[:2] += left[:2] * WHEEL_RADIUS * math.sin(self.bike.state(data)["roll"])   # the wheels' contact line
-        ground = mid + forward * (float(np.dot(hip - mid, forward)) + self.params["foot_ahead"])
-        ground = ground + left * self.params["foot_out"]
+        mid[:2] += left[:2] * WHEEL_RADIUS * math.sin(bike.state(data)["roll"])   # the wheels' contact line
+        ground = mid + forward * (float(np.dot(hip - mid, forward)) + self.params["foot_ahead"]) + left * self.params["foot_out"]
         ground[2] = 0.0
-        self.foot_down = (t, data.site_xpos[self.foot_site].copy(), ground)
-        self.event(t, "foot_off_pedal")
+        return ground
 
     def _foot_on_ground(self) -> bool:
         data = self.ctx.data
@@ -363,10 +371,12 @@ class Bicycling(Behaviour):
             knee = self.planted[KNEE] + c["knee_roll_gain"] * error + self.knee_integral + c["knee_roll_rate_gain"] * state["roll_rate"]
             goal[self.left_leg_servos[KNEE]] = max(knee, 0.0)
         else:
-            start_time, start, ground = self.foot_down
+            start_time, start = self.foot_down           # from where it left the pedal, relative to the hip
+            hip = ctx.data.xpos[self.left_hip]
+            ground = self._ground_point() - hip
             share = min((t - start_time) / c["foot_swing_time"], 1.0)
-            point = start + min(2.0 * share, 1.0) * (ground - start)
-            point[2] = start[2] + share * (ground[2] - start[2])
+            point = hip + start + min(2.0 * share, 1.0) * (ground - start)
+            point[2] = hip[2] + start[2] + share * (ground[2] - start[2])
             scratch = self.scratch
             scratch.qpos[:] = ctx.data.qpos
             scratch.qpos[servos.qpos_adr[self.ankle_servos["l"]]] = c["foot_ankle"]
