@@ -46,7 +46,7 @@ from .mount import IK_ITERATIONS_PER_TICK, SitePairs, match_velocities, solve
 
 FOOT_IK_ITERATIONS = 5              # definition: damped least-squares steps a tick for the foot going down
 FOOT_IK_DAMPING = 1e-3              # definition: lambda^2 of that solve
-KNEE = 3                            # definition: the knee's place in the left leg's servos below
+HIP_Y, KNEE = 0, 3                  # definition: the hip's flexion and the knee's places in the left leg's servos below
 RIDERS = ("man",)                   # criterion: the riders measured to ride (docs/bicycle.md: the others fall)
 MIN_LOOKAHEAD_SPEED = 1.0           # definition: m/s, the speed below which the look-ahead distance stops shrinking
 MOUNT_CRANK_ANGLE = math.pi / 2      # the start's crank: right pedal forward, left back (horizontal)
@@ -244,6 +244,9 @@ class Bicycling(Behaviour):
         self.foot_site = model.site(ctx.actor.prefix + "rider_foot_l").id
         self.foot_eq = model.equality(ctx.actor.prefix + "attach_foot_l").id
         self.left_hip = model.body(ctx.actor.prefix + "ULEGL").id
+        self.pelvis = model.body(ctx.actor.prefix + "PELVIS").id
+        self.root_qpos = int(model.joint(ctx.actor.prefix + "root").qposadr[0])
+        self.pelvis_pitch = None            # stop: the pelvis's pitch on the saddle held once the foot is down (rad)
         left_leg = ("hip_l_y", "hip_l_x", "hip_l_z", "knee_l_y")
         self.left_leg_servos = servos.indices(left_leg)
         self.left_leg_dofs = servos.dof_adr[self.left_leg_servos]
@@ -358,18 +361,29 @@ class Bicycling(Behaviour):
         foot_swing_time), toes a little down (foot_ankle). Once the foot touches the ground the
         hip's targets stay where they are and the knee props the lean: its target straightens with
         the roll beyond stand_roll (proportional, integral and roll-rate terms: the leg pushes the
-        bicycle back up as it leans further onto the foot)."""
+        bicycle back up as it leans further onto the foot), and the hip's flexion turns the thigh so
+        that the knee's change moves the foot up and down, not along the ground (through the leg's
+        Jacobian at the foot); the arms and the right leg hold the pelvis at its pitch on the saddle
+        (``_seat_pelvis``)."""
         ctx, servos, c = self.ctx, self.ctx.servos, self.params
         if self.planted is None and self._foot_on_ground():
             self.planted = servos.angles()[self.left_leg_servos].copy()
+            self.pelvis_pitch = self._pelvis_pitch(ctx.data)     # held from here
             self.event(t, "foot_planted")
         if self.planted is not None:
             goal[self.left_leg_servos] = self.planted
             state = self.bike.state(ctx.data)
             error = state["roll"] - c["stand_roll"]
             self.knee_integral += c["knee_roll_integral_gain"] * error * ctx.control_dt
-            knee = self.planted[KNEE] + c["knee_roll_gain"] * error + self.knee_integral + c["knee_roll_rate_gain"] * state["roll_rate"]
-            goal[self.left_leg_servos[KNEE]] = max(knee, 0.0)
+            knee = max(self.planted[KNEE] + c["knee_roll_gain"] * error + self.knee_integral
+                       + c["knee_roll_rate_gain"] * state["roll_rate"], 0.0)
+            goal[self.left_leg_servos[KNEE]] = knee
+            # the hip turns the thigh so that the knee's change does not move the foot along the ground
+            # fore and aft (alone, the straightening knee pushed the planted foot forward and it slid)
+            mujoco.mj_jacSite(ctx.model, ctx.data, self.jac, None, self.foot_site)
+            frame = ctx.data.xmat[self.bike.frame].reshape(3, 3)[:, 0]
+            along = frame @ self.jac[:, self.left_leg_dofs[[HIP_Y, KNEE]]]
+            goal[self.left_leg_servos[HIP_Y]] = self.planted[HIP_Y] - along[1] / along[0] * (knee - self.planted[KNEE])
         else:
             start_time, start = self.foot_down           # from where it left the pedal, relative to the hip
             hip = ctx.data.xpos[self.left_hip]
@@ -418,6 +432,8 @@ class Bicycling(Behaviour):
             scratch.qpos[bike.crank_qpos] = self.crank_command
         for side, value in (ankles or {}).items():
             scratch.qpos[servos.qpos_adr[self.ankle_servos[side]]] = value
+        if self.planted is not None:
+            self._seat_pelvis(scratch)
         solve(ctx.model, scratch, self.pairs, which, servos.dof_adr[servo_rows], ctx.data.qpos, IK_ITERATIONS_PER_TICK)
         goal = self.target.copy()
         ik = scratch.qpos[servos.qpos_adr[servo_rows]]
@@ -431,6 +447,33 @@ class Bicycling(Behaviour):
         for side, value in (ankles or {}).items():
             goal[self.ankle_servos[side]] = value
         return goal
+
+    def _pelvis_pitch(self, data) -> float:
+        """The pelvis's pitch on the saddle (rad, about the frame's lateral axis; forward tilt negative)."""
+        frame = data.xmat[self.bike.frame].reshape(3, 3)
+        forward = data.xmat[self.pelvis].reshape(3, 3)[:, 0]
+        return math.atan2(float(forward @ frame[:, 2]), float(forward @ frame[:, 0]))
+
+    def _seat_pelvis(self, scratch) -> None:
+        """Turn the rider in ``scratch`` about the seat pivot (the frame's lateral axis through the
+        saddle) back to the pelvis pitch he rode with: the limbs' inverse kinematics then gives the
+        targets that hold him there. Without it, once a foot has left its pedal the pelvis pitch is held
+        by nothing but limbs whose targets follow them, and under a stand's propping leg it tipped
+        back 33 deg in 3 s (docs/bicycle.md, the stop)."""
+        model = self.ctx.model
+        mujoco.mj_kinematics(model, scratch)
+        turn = self.pelvis_pitch - self._pelvis_pitch(scratch)
+        axis = scratch.xmat[self.bike.frame].reshape(3, 3)[:, 1]
+        quat = np.zeros(4)
+        mujoco.mju_axisAngle2Quat(quat, axis, -turn)
+        rot = np.zeros(9)
+        mujoco.mju_quat2Mat(rot, quat)
+        pivot = scratch.site_xpos[self.pairs.bike[:2]].mean(axis=0)
+        q = self.root_qpos
+        scratch.qpos[q:q + 3] = pivot + rot.reshape(3, 3) @ (scratch.qpos[q:q + 3] - pivot)
+        turned = np.zeros(4)
+        mujoco.mju_mulQuat(turned, quat, scratch.qpos[q + 3:q + 7].copy())
+        scratch.qpos[q + 3:q + 7] = turned
 
     def _pedal(self, t, state, torque: float) -> None:
         """Feet on the pedals: pedal IK and the ankle curve -> leg targets; eqs. 7-10 -> pedal
