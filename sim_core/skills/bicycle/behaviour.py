@@ -459,7 +459,7 @@ class Bicycling(Behaviour):
         saddle) back to the pelvis pitch he rode with: the limbs' inverse kinematics then gives the
         targets that hold him there. Without it, once a foot has left its pedal the pelvis pitch is held
         by nothing but limbs whose targets follow them, and under a stand's propping leg it tipped
-        back 33 deg in 3 s (docs/bicycle.md, the stop)."""
+        back 36 deg in 3 s (docs/bicycle.md, the stop)."""
         model = self.ctx.model
         mujoco.mj_kinematics(model, scratch)
         turn = self.pelvis_pitch - self._pelvis_pitch(scratch)
