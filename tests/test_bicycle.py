@@ -216,7 +216,8 @@ def test_a_cyclist_rides_beside_a_runner_in_a_scene_and_replays_bit_for_bit(tmp_
 
 @pytest.mark.parametrize("character", ["woman", "child", "imaginary_cyclist", "imaginary_runner"])
 def test_a_rider_who_falls_is_refused_in_one_line(character):
-    """The woman falls 11 s into a ride at 4 m/s, the others sooner: refused before anything runs."""
+    """The woman falls at 3 m/s on a frame sized for her with Fig. 6's gains, the others fell sooner
+    on the man's: refused before anything runs."""
     with pytest.raises(ParameterError) as error:
         run(RunRequest("bicycle", character, duration=0.05))
     message = str(error.value)

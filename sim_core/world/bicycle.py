@@ -131,22 +131,26 @@ class Bicycle:
     """What a run asks of the bicycle prop: the gear ratio (wheel turns per crank turn), where
     the bicycle stands (rear contact at (x, y), facing ``heading`` rad from +X) and the prefix of
     the rider attached to it (None: riderless); ``freewheel``: the chain drives through a freewheel
-    instead of the fixed gear."""
+    instead of the fixed gear; ``fit``: the saddle's height above the bottom bracket and the grips'
+    place from the saddle as a share of the man's (a smaller rider's frame size: his leg length ratio)."""
     gear: float = DEFAULT_GEAR
     x: float = 0.0
     y: float = 0.0
     heading: float = 0.0
     rider: str | None = None
     freewheel: bool = False
+    fit: float = 1.0
 
     def to_dict(self) -> dict:
         return {"gear": self.gear, "x": self.x, "y": self.y, "heading": self.heading, "rider": self.rider,
-                "freewheel": self.freewheel}
+                "freewheel": self.freewheel, **({"fit": self.fit} if self.fit != 1.0 else {})}
 
 
 @dataclass(frozen=True)
 class Layout:
-    """Derived points in the frame's axes (origin at the rear axle, X forward, Z up)."""
+    """Derived points in the frame's axes (origin at the rear axle, X forward, Z up), for a frame
+    sized by ``fit`` (Bicycle.fit; 1: the man's)."""
+    fit: float = 1.0
     steer_axis: np.ndarray = field(init=False)   # unit, pointing up (and back)
     front_axle: np.ndarray = field(init=False)
     head_top: np.ndarray = field(init=False)     # the fork body's origin, on the steering axis
@@ -163,8 +167,11 @@ class Layout:
         ground_point = np.array([WHEELBASE + trail(), 0.0, -r])          # axis meets the ground
         head_top = ground_point + axis * (HEAD_TUBE_TOP / axis[2])
         bb = np.array([CHAINSTAY, 0.0, BOTTOM_BRACKET_HEIGHT - r])
-        saddle = bb + SADDLE_FROM_BOTTOM_BRACKET * np.array([-math.cos(SEAT_TUBE_ANGLE), 0, math.sin(SEAT_TUBE_ANGLE)])
-        bar = head_top + np.array([-GRIP_BACK, 0.0, STEM_RISE])
+        seat_tube = np.array([-math.cos(SEAT_TUBE_ANGLE), 0, math.sin(SEAT_TUBE_ANGLE)])
+        saddle = bb + self.fit * SADDLE_FROM_BOTTOM_BRACKET * seat_tube
+        mans_saddle = bb + SADDLE_FROM_BOTTOM_BRACKET * seat_tube
+        mans_bar = head_top + np.array([-GRIP_BACK, 0.0, STEM_RISE])
+        bar = mans_bar + (saddle - mans_saddle) + (self.fit - 1.0) * (mans_bar - mans_saddle)   # fit 1: the man's, exactly
         set_ = object.__setattr__
         set_(self, "steer_axis", axis)
         set_(self, "front_axle", front_axle)
@@ -176,8 +183,6 @@ class Layout:
         set_(self, "pedals", (np.array([0.0, -PEDAL_HALF_SPACING, CRANK_LENGTH]),
                               np.array([0.0, PEDAL_HALF_SPACING, -CRANK_LENGTH])))
 
-
-LAYOUT = Layout()
 
 
 def _inertia(body, mass: float, diag, pos=(0.0, 0.0, 0.0)) -> None:
@@ -217,7 +222,7 @@ def _wheel(parent, name: str, joint: str, pos, mass: float, contact: int):
 def add_bicycle(spec: mujoco.MjSpec, bicycle: Bicycle, contact_group: int) -> None:
     """The bicycle's five bodies, four hinges, chain tendon and sites (grips, pedals, saddle) into
     ``spec``, standing upright on the ground (z = 0) as ``bicycle`` places it."""
-    lay, r, n = LAYOUT, WHEEL_RADIUS, NAMES
+    lay, r, n = Layout(bicycle.fit), WHEEL_RADIUS, NAMES
     c, s = math.cos(bicycle.heading), math.sin(bicycle.heading)
     frame = spec.worldbody.add_body(name=n["frame"], pos=[bicycle.x, bicycle.y, r],
                                     quat=[math.cos(bicycle.heading / 2), 0, 0, math.sin(bicycle.heading / 2)])
@@ -408,7 +413,7 @@ def attach_rider(spec: mujoco.MjSpec, bicycle: Bicycle, character) -> None:
     prefix = bicycle.rider
     frame = spec.body(NAMES["frame"])
     for side, dy in (("r", -SEAT_PIVOT_HALF_WIDTH), ("l", SEAT_PIVOT_HALF_WIDTH)):
-        frame.add_site(name=f"bicycle_seat_{side}", pos=list(LAYOUT.saddle + [0, dy, 0]))
+        frame.add_site(name=f"bicycle_seat_{side}", pos=list(Layout(bicycle.fit).saddle + [0, dy, 0]))
     points = rider_points(character)
     for name, body, bike_site, solref in ATTACHMENTS:
         rider_site = f"{prefix}rider_{name}"

@@ -36,6 +36,8 @@ from ...control.path import MAX_POINTS, PathFollower, validate_path
 from ...schema import Parameter, Points, Schema
 from ...tuned import TableType, load, register as register_table
 from ...tuned.settings import SkillSchema, with_defaults
+from ...character.dimensions import fig3_measures
+from ...character.spec import load_character
 from ...errors import ParameterError
 from ...world.bicycle import BRAKE_MAX_TORQUE, WHEEL_RADIUS, CRANK_LENGTH, DEFAULT_GEAR, NAMES, Bicycle, BicycleView
 from .assess import STOPPED_SPEED
@@ -47,6 +49,7 @@ from .mount import IK_ITERATIONS_PER_TICK, SitePairs, match_velocities, solve
 FOOT_IK_ITERATIONS = 5              # definition: damped least-squares steps a tick for the foot going down
 FOOT_IK_DAMPING = 1e-3              # definition: lambda^2 of that solve
 HIP_Y, KNEE = 0, 3                  # definition: the hip's flexion and the knee's places in the left leg's servos below
+SIZED_FOR = "man"                   # definition: the rider the bicycle's saddle and bar are set for (world/bicycle.py)
 RIDERS = ("man",)                   # criterion: the riders measured to ride (docs/bicycle.md: the others fall)
 MIN_LOOKAHEAD_SPEED = 1.0           # definition: m/s, the speed below which the look-ahead distance stops shrinking
 MOUNT_CRANK_ANGLE = math.pi / 2      # the start's crank: right pedal forward, left back (horizontal)
@@ -114,6 +117,14 @@ BICYCLE_TABLE = register_table(TableType("bicycle", BICYCLE_RANGES, _bicycle_row
 BICYCLE_SETTINGS = with_defaults(BICYCLE_RANGES, bicycle_constants())
 
 
+def frame_fit(character) -> float:
+    """The bicycle's frame size for ``character`` (Bicycle.fit): its leg length over the man's, for
+    whom the saddle and the bar were set (Fig. 3's leg length); 1 for the man or no character."""
+    if character is None or character.name == SIZED_FOR:
+        return 1.0
+    return fig3_measures(character)["leg length"] / fig3_measures(load_character(SIZED_FOR))["leg length"]
+
+
 def mount_posture(c: dict) -> dict[str, float]:
     """The rider's reference posture for the mounting solve, both sides, from the constants."""
     return {"hip_r_y": c["mount_hip"], "hip_l_y": c["mount_hip"], "knee_r_y": c["mount_knee"],
@@ -163,7 +174,8 @@ class Bicycling(Behaviour):
         """The requested world with the bicycle (at the origin facing +X, its gear, the rider
         attached) and the course's hill, if it has one."""
         course = course_for(params)
-        bicycle = Bicycle(gear=params["gear"], rider="", freewheel=course.name in FREEWHEEL_COURSES)
+        bicycle = Bicycle(gear=params["gear"], rider="", freewheel=course.name in FREEWHEEL_COURSES,
+                          fit=frame_fit(character))
         return dataclasses.replace(world, bicycle=bicycle, hill=course.hill)
 
     @classmethod
@@ -203,9 +215,9 @@ class Bicycling(Behaviour):
         rider = self.ctx.character.name
         if rider not in RIDERS:
             raise ParameterError(f"bicycle is not calibrated for the {rider} (calibrated for: {', '.join(RIDERS)}): "
-                                 f"the bicycle is sized and its steering gains set for the man; at 4 m/s the woman "
-                                 f"fell 11.0 s into a ride, the imaginary cyclist 5.7 s, the child and the imaginary "
-                                 f"runner within 3 s (docs/bicycle.md)")
+                                 f"its steering gains are set for the man; the woman, on a frame sized to her leg "
+                                 f"length with the gains scaled by Fig. 6, fell 7.2 s into a ride at 3 m/s and "
+                                 f"leaned 24 deg at 5 m/s (docs/bicycle.md)")
 
     def start(self, t):
         """Look the bicycle and the limbs up; the targets start at the mounted pose."""
