@@ -193,6 +193,14 @@ def test_a_lone_cyclist_scene_is_the_one_character_ride_bit_for_bit():
     assert scene.meta["actors"][0]["start_state"]["skill"]["mounted"]
 
 
+def test_a_second_cyclist_in_a_scene_is_refused_in_one_line():
+    from sim_core.scene import SceneError, scene_from_dict
+    with pytest.raises(SceneError) as error:
+        scene_from_dict({"actors": [{"name": "a", "character": "man", "behaviour": "bicycle"},
+                                    {"name": "b", "character": "man", "behaviour": "bicycle", "position": [0, 2]}]})
+    assert "actor 'b'" in str(error.value) and "asks for props (bicycle)" in str(error.value) and "\n" not in str(error.value)
+
+
 def test_a_cyclist_rides_beside_a_runner_in_a_scene_and_replays_bit_for_bit(tmp_path):
     """examples/cyclist_and_runner.json: the man on the bicycle at 4 m/s and a runner 1.5 m to his
     left, 10 s in one model: neither falls, the hands and feet stay within 3 cm of the grips and
