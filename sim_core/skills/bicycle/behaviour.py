@@ -329,7 +329,7 @@ class Bicycling(Behaviour):
     @property
     def run_complete(self) -> bool:
         """A stop's run ends stop_stand after the bicycle came to rest with the foot down: the skill is
-        done (asked to, the rider stands on: eight stops stood 22 s, docs/bicycle.md, the stop)."""
+        done (asked to, the rider stands on: twelve stops stood 22 s, docs/bicycle.md, the stop)."""
         return self.rest_since is not None and self.ctx.data.time - self.rest_since >= self.params["stop_stand"]
 
     def _release_foot(self, t) -> None:
