@@ -245,3 +245,20 @@ def test_a_curve_ahead_asks_for_its_steady_lean():
     assert lean_ahead(4.0, 1 / 15, 1.0) == pytest.approx(-math.atan(16 / 15 / 9.80665))
     assert lean_ahead(4.0, -1 / 15, 0.3) == pytest.approx(0.3 * math.atan(16 / 15 / 9.80665))
     assert fork_angle(0.0, 0.0, 0.0, 0.0, 0.0, 2.0, 0.4, 0.6, 0.3, desired_roll=-0.1) < 0   # lean left: first steer right
+
+
+def test_a_frame_is_sized_by_the_riders_leg_length():
+    """Bicycle.fit: the man's frame is the one measured (fit 1, exactly); the woman's saddle and grips
+    come nearer the bottom bracket by her leg length ratio (Fig. 3: 0.754 / 0.854 m), the wheels stay."""
+    from sim_core.character.spec import load_character
+    from sim_core.skills.bicycle.behaviour import frame_fit
+    from sim_core.world.bicycle import Layout
+    assert frame_fit(load_character("man")) == 1.0 and frame_fit(None) == 1.0
+    fit = frame_fit(load_character("woman"))
+    assert fit == pytest.approx(0.754 / 0.854, abs=0.005)
+    mans, hers = Layout(), Layout(fit)
+    assert np.linalg.norm(hers.saddle - hers.bottom_bracket) == pytest.approx(fit * np.linalg.norm(mans.saddle - mans.bottom_bracket))
+    bar = lambda layout: (layout.grips[0] + layout.grips[1]) / 2          # the grips keep their width
+    assert np.allclose(bar(hers) - hers.saddle, fit * (bar(mans) - mans.saddle))
+    assert np.array_equal(hers.front_axle, mans.front_axle) and Bicycle(fit=fit).to_dict()["fit"] == fit
+    assert "fit" not in Bicycle().to_dict()
