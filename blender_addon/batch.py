@@ -157,7 +157,7 @@ def run_scene(args: argparse.Namespace, pkg) -> int:
     context = _prepared_file(args, pkg)
     scene = context.scene
     fps, end = bake.scene_fps(scene), args.start_frame
-    outcomes = {}
+    outcomes, armatures = {}, {}
     try:
         for actor in trajectory.meta["actors"]:
             arm = api.add_character(context, actor["character"], location=(0.0, 0.0, 0.0))
@@ -167,7 +167,11 @@ def run_scene(args: argparse.Namespace, pkg) -> int:
             action = bake.bake_trajectory(arm, trajectory.actor(actor["name"]), fps=fps, start_frame=args.start_frame)
             end = max(end, int(round(action.frame_range[1])))
             outcomes[arm.name] = actor["outcome"]
+            armatures[actor["prefix"]] = arm
         scenery.add_scenery(context, arm, trajectory)
+        bicycle = trajectory.meta["world"].get("bicycle")
+        if bicycle:                 # the bicycle's bodies as objects, parented to its rider's armature
+            bake.bake_moving_props(context, armatures[bicycle["rider"]], trajectory, fps=fps, start_frame=args.start_frame)
     except (SimAthleticsError, rig.RigError) as exc:
         print(f"{PROG}: error: {exc}", file=sys.stderr)
         return 2

@@ -37,7 +37,7 @@ from .character.spec import CharacterSpec, load_character
 from .control.behaviour import Behaviour
 from .skills import behaviour_class
 from .errors import SimAthleticsError
-from .world import World, add_world
+from .world import World, add_attachments, add_world
 from .world.apparatus import APPARATUS_LAYOUT, check_apparatus
 
 TOP_KEYS = ("duration", "world", "actors")
@@ -48,7 +48,7 @@ START_CLEARANCE = 0.10        # m: free ground between two actors' standing foot
 MAX_POSITION = 1000.0         # m from the origin
 # World fields a behaviour's scene() may set; any change is a prop it asks for
 PROP_FIELDS = ("platform", "platform_edge", "boxes", "floor", "slope", "slope_axis", "springboard", "vault_table",
-               "landing_mat")
+               "landing_mat", "bicycle", "hill")
 
 
 class SceneError(SimAthleticsError):
@@ -256,6 +256,8 @@ def merge_prop_requests(world: World, actors: list[Actor]) -> tuple[World, Chara
     prop_character = None
     for a in actors:
         asked = a.behaviour.scene(a.params, world, a.character)
+        if asked.bicycle is not None and asked.bicycle != world.bicycle:     # the actor rides the bicycle it asks for
+            asked = dataclasses.replace(asked, bicycle=dataclasses.replace(asked.bicycle, rider=a.prefix))
         changed = [f for f in PROP_FIELDS if getattr(asked, f) != getattr(world, f)]
         if not changed:
             continue
@@ -320,6 +322,8 @@ def build_scene_spec(scene: Scene) -> mujoco.MjSpec:
     for a in scene.actors:
         add_character(spec, a.character, {}, a.strength, prefix=a.prefix, placement=a.placement)
     add_world(spec, scene.world, scene.prop_character or scene.actors[0].character)   # a moving prop's body last
+    for a in scene.actors:                   # what ties an actor to a prop (a rider to the bicycle)
+        add_attachments(spec, scene.world, a.character, a.prefix)
     return spec
 
 

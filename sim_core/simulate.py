@@ -308,6 +308,8 @@ def run_scene(scene: Scene, progress: Callable[[float], None] | None = None,
     mujoco.mj_resetData(model, data)
     for a in scene.actors:
         place_standing(model, data, a.character, a.prefix, a.placement)
+    skill_starts = {a.name: a.behaviour.start_state(a.params, model, data, a.character, prefix=a.prefix)
+                    for a in scene.actors}       # after every actor stands (a rider mounts a rolling bicycle)
     hold_pose(model, data)
     mujoco.mj_forward(model, data)
 
@@ -344,6 +346,8 @@ def run_scene(scene: Scene, progress: Callable[[float], None] | None = None,
             "support_site_side": [model.body(model.site_bodyid[i]).name[-1] for i in sites],
             "dof_names": [model.actuator(i).name[len(a.prefix):] for i in range(v.actuators.start, v.actuators.stop)],
             "completed": r.done,
+            "start_state": {"height": 0.0, "velocity": [0.0, 0.0, 0.0],
+                            **({"skill": skill_starts[a.name]} if skill_starts[a.name] is not None else {})},
             # its own run ends with the state after its last tick, as a one-character run's does
             "end_frame": len(arrays["time"]) if r.last_tick is None else r.last_tick + 2,
         })

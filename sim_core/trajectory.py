@@ -43,7 +43,7 @@ BODY_FIELDS = ("body_pos", "body_quat", "ground_contact", "contact_force")
 SHARED_META = ("model_xml", "duration", "ended_early", "world", "timestep", "steps_per_tick", "control_rate",
                "edit_fields", "state_spec", "pushes", "start_state", "world_geoms", "mujoco_version")
 ACTOR_META = ("character", "behaviour", "params", "strength", "phase_events", "total_mass", "dof_names",
-              "support_site_side", "placement", "outcome", "metrics")
+              "support_site_side", "placement", "outcome", "metrics", "start_state")
 LOG_FIELDS = ("initial_state", "control", "step_division", "edit_tick", "edit_field", "edit_index", "edit_value")
 
 
@@ -51,6 +51,7 @@ LOG_FIELDS = ("initial_state", "control", "step_division", "edit_tick", "edit_fi
 class Trajectory:
     arrays: dict[str, np.ndarray]
     meta: dict = field(default_factory=dict)
+    scene: "Trajectory | None" = field(default=None, repr=False, compare=False)   # an actor's view: the whole scene
 
     def __getattr__(self, name):
         arrays = self.__dict__.get("arrays", {})
@@ -73,7 +74,8 @@ class Trajectory:
         """One actor of a scene as a one-character trajectory: its qpos/qvel slices, its bodies
         (names without the "<actor>/" prefix), its COM, ground reaction and support points, the
         scene's time and edit log, and the meta a behaviour's ``assess`` reads. Positions stay in
-        the world frame (meta["placement"] says where the actor started)."""
+        the world frame (meta["placement"] says where the actor started); ``scene`` is the whole
+        scene (a rider's bicycle is judged off it)."""
         actors = self.meta.get("actors", [])
         for k, m in enumerate(actors):
             if m["name"] == name:
@@ -102,7 +104,7 @@ class Trajectory:
         if end < len(a["time"]):
             tick_time = self.meta["steps_per_tick"] * self.meta["timestep"]
             meta.update(ended_early=True, duration=float((end - 1) * tick_time))   # as a lone run counts it
-        return Trajectory(view, meta)
+        return Trajectory(view, meta, scene=self)
 
     def save(self, path: str | Path) -> Path:
         """Write atomically: a failed save leaves no partial file."""

@@ -117,13 +117,16 @@ def audit(trajectory):
     """The physical-validity audit: no applied force anywhere; every equality constraint joins a
     rider body to a bicycle body (none is anchored to the world); every actuator is a rider servo
     or a bicycle-internal element (a freewheel on the chain, a rim brake on a wheel hinge) whose
-    transmission joins two bicycle bodies; the chain tendon spans bicycle joints only."""
+    transmission joins two bicycle bodies; the chain tendon spans bicycle joints only. A scene's
+    rider is its first actor; every actor's servos count as servos."""
     a, meta = trajectory.arrays, trajectory.meta
     assert not np.any(a["push_force"])
     model = mujoco.MjModel.from_xml_string(meta["model_xml"])
     bike = {model.body(n).id for n in ("bicycle_frame", "bicycle_fork", "bicycle_crank")}
     frame = model.body("bicycle_frame").id
-    rider_root = model.body("PELVIS").id
+    prefixes = [actor["prefix"] for actor in meta.get("actors", [{"prefix": ""}])]
+    rider_root = model.body(prefixes[0] + "PELVIS").id
+    characters = {model.body(prefix + "PELVIS").id for prefix in prefixes}
     assert model.neq == 6
     for e in range(model.neq):
         assert model.eq_type[e] == mujoco.mjtEq.mjEQ_CONNECT and model.eq_objtype[e] == mujoco.mjtObj.mjOBJ_SITE
@@ -137,7 +140,7 @@ def audit(trajectory):
             assert model.actuator(i).name == "bicycle_freewheel" and model.actuator_trnid[i, 0] == 0
             continue
         root = model.body_rootid[model.jnt_bodyid[model.actuator_trnid[i, 0]]]
-        assert root == rider_root or (root == frame and model.actuator(i).name.startswith("bicycle_brake"))
+        assert root in characters or (root == frame and model.actuator(i).name.startswith("bicycle_brake"))
     if not any(model.actuator(i).name == "bicycle_freewheel" for i in range(model.nu)):
         assert model.tendon_stiffness[0] > 0                          # the fixed gear: a passive spring
 
@@ -176,19 +179,53 @@ def test_fixed_gear_sets_the_cadence(gear):
     assert m["cadence_last_5s_hz"] == pytest.approx(m["mean_speed_last_5s"] / (2 * math.pi * WHEEL_RADIUS * gear), rel=0.05)
 
 
-def test_a_scene_with_a_rider_is_refused_in_one_line():
-    from sim_core.errors import SimAthleticsError
+def test_a_lone_cyclist_scene_is_the_one_character_ride_bit_for_bit():
+    """A scene mounts its rider (start_state) and attaches it (add_attachments) as a lone run does:
+    one cyclist at the origin is that run, state and controls, and judged alike."""
     from sim_core.scene import scene_from_dict
     from sim_core.simulate import run_scene
-    scene = scene_from_dict({"duration": 1, "actors": [{"name": "a", "character": "man", "behaviour": "bicycle"}]})
-    with pytest.raises(SimAthleticsError) as err:
-        run_scene(scene)
-    assert "scenes with a bicycle are not built yet" in str(err.value) and "\n" not in str(err.value)
+    single = ride(2.0, speed=4.0)
+    scene = run_scene(scene_from_dict({"duration": 2.0, "actors": [
+        {"name": "solo", "character": "man", "behaviour": "bicycle", "params": {"speed": 4.0}}]}))
+    for name in ("qpos", "qvel", "control"):
+        assert np.array_equal(scene.arrays[name], single.arrays[name]), name
+    assert scene.meta["actors"][0]["metrics"] == single.meta["metrics"]
+    assert scene.meta["actors"][0]["start_state"]["skill"]["mounted"]
+
+
+def test_a_second_cyclist_in_a_scene_is_refused_in_one_line():
+    from sim_core.scene import SceneError, scene_from_dict
+    with pytest.raises(SceneError) as error:
+        scene_from_dict({"actors": [{"name": "a", "character": "man", "behaviour": "bicycle"},
+                                    {"name": "b", "character": "man", "behaviour": "bicycle", "position": [0, 2]}]})
+    assert "actor 'b'" in str(error.value) and "asks for props (bicycle)" in str(error.value) and "\n" not in str(error.value)
+
+
+def test_a_cyclist_rides_beside_a_runner_in_a_scene_and_replays_bit_for_bit(tmp_path):
+    """examples/cyclist_and_runner.json: the man on the bicycle at 4 m/s and a runner 1.5 m to his
+    left, 10 s in one model: neither falls, the hands and feet stay within 3 cm of the grips and
+    pedals (seat < 1 mm), and the saved scene replays bit for bit."""
+    from pathlib import Path
+    from sim_core.scene import load_scene
+    from sim_core.simulate import run_scene
+    from sim_core.trajectory import Trajectory
+    scene = run_scene(load_scene(Path(__file__).resolve().parents[1] / "examples" / "cyclist_and_runner.json"))
+    outcomes = {a["name"]: a["outcome"] for a in scene.meta["actors"]}
+    assert outcomes == {"cyclist": "success", "runner": "success"}
+    m = scene.actor("cyclist").meta["metrics"]
+    assert not m["fell"] and m["max_hand_gap"] < 0.03 and m["max_foot_gap"] < 0.03 and m["max_seat_gap"] < 0.001
+    assert m["mean_speed_last_5s"] == pytest.approx(4.0, rel=0.05) and m["max_abs_roll_deg"] < 20.0
+    runner = scene.actor("runner")
+    assert runner.com[-1, 0] - runner.com[0, 0] > 20.0 and abs(runner.com[-1, 1] - 1.5) < 0.5   # ran along its lane
+    audit(scene)
+    loaded = Trajectory.load(scene.save(tmp_path / "scene.npz"))
+    assert largest_difference(loaded, replay(loaded)) == 0.0
 
 
 @pytest.mark.parametrize("character", ["woman", "child", "imaginary_cyclist", "imaginary_runner"])
 def test_a_rider_who_falls_is_refused_in_one_line(character):
-    """The woman falls 11 s into a ride at 4 m/s, the others sooner: refused before anything runs."""
+    """The woman falls at 3 m/s on a frame sized for her with Fig. 6's gains, the others fell sooner
+    on the man's: refused before anything runs."""
     with pytest.raises(ParameterError) as error:
         run(RunRequest("bicycle", character, duration=0.05))
     message = str(error.value)
@@ -208,3 +245,20 @@ def test_a_curve_ahead_asks_for_its_steady_lean():
     assert lean_ahead(4.0, 1 / 15, 1.0) == pytest.approx(-math.atan(16 / 15 / 9.80665))
     assert lean_ahead(4.0, -1 / 15, 0.3) == pytest.approx(0.3 * math.atan(16 / 15 / 9.80665))
     assert fork_angle(0.0, 0.0, 0.0, 0.0, 0.0, 2.0, 0.4, 0.6, 0.3, desired_roll=-0.1) < 0   # lean left: first steer right
+
+
+def test_a_frame_is_sized_by_the_riders_leg_length():
+    """Bicycle.fit: the man's frame is the one measured (fit 1, exactly); the woman's saddle and grips
+    come nearer the bottom bracket by her leg length ratio (Fig. 3: 0.754 / 0.854 m), the wheels stay."""
+    from sim_core.character.spec import load_character
+    from sim_core.skills.bicycle.behaviour import frame_fit
+    from sim_core.world.bicycle import Layout
+    assert frame_fit(load_character("man")) == 1.0 and frame_fit(None) == 1.0
+    fit = frame_fit(load_character("woman"))
+    assert fit == pytest.approx(0.754 / 0.854, abs=0.005)
+    mans, hers = Layout(), Layout(fit)
+    assert np.linalg.norm(hers.saddle - hers.bottom_bracket) == pytest.approx(fit * np.linalg.norm(mans.saddle - mans.bottom_bracket))
+    bar = lambda layout: (layout.grips[0] + layout.grips[1]) / 2          # the grips keep their width
+    assert np.allclose(bar(hers) - hers.saddle, fit * (bar(mans) - mans.saddle))
+    assert np.array_equal(hers.front_axle, mans.front_axle) and Bicycle(fit=fit).to_dict()["fit"] == fit
+    assert "fit" not in Bicycle().to_dict()

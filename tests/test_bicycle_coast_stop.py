@@ -138,6 +138,22 @@ def test_a_stop_ends_at_rest_on_the_left_foot(stop):
     assert touching[names.index("TOEL")] or touching[names.index("FOOTL")]
 
 
+STANDS = np.random.default_rng(2030).uniform(*STOP_SPEEDS, 6)      # the six stops of docs/bicycle.md
+STAND_SECONDS = 15.0
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("speed", [round(float(v), 2) for v in STANDS])
+def test_a_stopped_rider_stands_15_s_on_his_foot(speed):
+    """The stand lasts: ridden on STAND_SECONDS past rest (the run asked not to end stop_stand after
+    it), the bicycle stays at rest on the left foot without a fall, leaning less than 20 deg, and
+    moves less than 10 cm."""
+    m = ride(COAST_AFTER + speed / 1.5 + STAND_SECONDS + 1.0, course="stop", speed=speed, coast_after=COAST_AFTER,
+             stop_stand=STAND_SECONDS + 5.0).meta["metrics"]
+    assert not m["fell"], (speed, m["fall_time"], m["stopped_at"])
+    assert m["stand_seconds"] >= STAND_SECONDS and m["stand_max_abs_roll_deg"] < 20.0 and m["stand_drift"] < 0.1
+
+
 def test_replay_of_a_stop_is_bit_identical(stop):
     """The foot's attachment switched off mid-run and the brakes' friction are in the edit log: the
     replay switches and brakes at the same ticks."""

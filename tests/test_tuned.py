@@ -196,7 +196,7 @@ ALLOWED = {
                                                        "STOP_FALL_ROLL_DEG", "STOPPED_SPEED", "COAST_SETTLE")},
     # the foot going down: its inverse-kinematics solver's numerics, and the knee's index in the leg's servos
     "skills.bicycle.behaviour": {n: "definition" for n in ("MIN_LOOKAHEAD_SPEED", "FOOT_IK_ITERATIONS", "FOOT_IK_DAMPING",
-                                                           "KNEE")},
+                                                           "HIP_Y", "KNEE")},
     "skills.bicycle.steering": {"MIN_SCHEDULED_SPEED": "definition"},
     # the vault's judging (TARGETS.md, issue 31) and Takei's Table 1, the reference it is judged against
     "skills.vault.assess": {n: "criterion" for n in ("STILL_SPEED", "ROTATION_TOLERANCE", "PEAK_LANDING_LIMIT", "CONTACT_GAP",

@@ -96,11 +96,12 @@ class Behaviour:
 
     @classmethod
     def start_state(cls, params: dict[str, float], model: mujoco.MjModel, data: mujoco.MjData,
-                    character: CharacterSpec) -> dict | None:
+                    character: CharacterSpec, prefix: str = "") -> dict | None:
         """Pose the start where the skill begins, after the standing pose and any StartState (a
         rider mounted on a rolling bicycle): a named initial condition, recorded in the run's
         initial state and described by the returned dict in meta["start_state"]["skill"].
-        Default: nothing (None)."""
+        ``prefix``: the character's names' prefix (a scene's "<actor>/"; it must move that
+        character only). Default: nothing (None)."""
         return None
 
     @property

@@ -95,6 +95,11 @@ FREEWHEEL_DAMPING = 50.0        # N m s / rad of rear-wheel slip. Stiffer is not
 FREEWHEEL_MAX_FORCE = 1000.0    # N m: the clutch's largest torque on the wheel (never reached)
 BRAKE_MAX_TORQUE = 60.0         # N m per wheel: both at once decelerate rider and bicycle (114 kg) by 3.2 m/s^2,
                                 # a hard stop on a city bike (rim brakes: 2-4 m/s^2, Wilson 2004 ch. 7)
+BRAKE_SOLREF = (0.005, 1.0)     # s, damping ratio of the brakes' dry friction (MuJoCo's joint solreffriction)
+BRAKE_SOLIMP = (0.99, 0.999, 0.001, 0.5, 2.0)   # its impedance (solimpfriction). MuJoCo's dry friction is a soft
+                                # constraint: under a steady load it creeps at a speed ~ (1 - d) / d * timeconst;
+                                # at the defaults (0.9, 0.02 s) the braked bicycle crept forward 20-50 mm/s under the
+                                # rider leaning on his foot and fell within 9-16 s of coming to rest (docs/bicycle.md)
 CRANK_ARMATURE = 0.02           # kg m^2: drivetrain inertia (chainring, chain) about the crank axle
 TYRE_FRICTION = 0.9             # rubber on asphalt
 FRAME_COLOUR = [0.15, 0.35, 0.6, 1.0]
@@ -126,22 +131,26 @@ class Bicycle:
     """What a run asks of the bicycle prop: the gear ratio (wheel turns per crank turn), where
     the bicycle stands (rear contact at (x, y), facing ``heading`` rad from +X) and the prefix of
     the rider attached to it (None: riderless); ``freewheel``: the chain drives through a freewheel
-    instead of the fixed gear."""
+    instead of the fixed gear; ``fit``: the saddle's height above the bottom bracket and the grips'
+    place from the saddle as a share of the man's (a smaller rider's frame size: his leg length ratio)."""
     gear: float = DEFAULT_GEAR
     x: float = 0.0
     y: float = 0.0
     heading: float = 0.0
     rider: str | None = None
     freewheel: bool = False
+    fit: float = 1.0
 
     def to_dict(self) -> dict:
         return {"gear": self.gear, "x": self.x, "y": self.y, "heading": self.heading, "rider": self.rider,
-                "freewheel": self.freewheel}
+                "freewheel": self.freewheel, **({"fit": self.fit} if self.fit != 1.0 else {})}
 
 
 @dataclass(frozen=True)
 class Layout:
-    """Derived points in the frame's axes (origin at the rear axle, X forward, Z up)."""
+    """Derived points in the frame's axes (origin at the rear axle, X forward, Z up), for a frame
+    sized by ``fit`` (Bicycle.fit; 1: the man's)."""
+    fit: float = 1.0
     steer_axis: np.ndarray = field(init=False)   # unit, pointing up (and back)
     front_axle: np.ndarray = field(init=False)
     head_top: np.ndarray = field(init=False)     # the fork body's origin, on the steering axis
@@ -158,8 +167,11 @@ class Layout:
         ground_point = np.array([WHEELBASE + trail(), 0.0, -r])          # axis meets the ground
         head_top = ground_point + axis * (HEAD_TUBE_TOP / axis[2])
         bb = np.array([CHAINSTAY, 0.0, BOTTOM_BRACKET_HEIGHT - r])
-        saddle = bb + SADDLE_FROM_BOTTOM_BRACKET * np.array([-math.cos(SEAT_TUBE_ANGLE), 0, math.sin(SEAT_TUBE_ANGLE)])
-        bar = head_top + np.array([-GRIP_BACK, 0.0, STEM_RISE])
+        seat_tube = np.array([-math.cos(SEAT_TUBE_ANGLE), 0, math.sin(SEAT_TUBE_ANGLE)])
+        saddle = bb + self.fit * SADDLE_FROM_BOTTOM_BRACKET * seat_tube
+        mans_saddle = bb + SADDLE_FROM_BOTTOM_BRACKET * seat_tube
+        mans_bar = head_top + np.array([-GRIP_BACK, 0.0, STEM_RISE])
+        bar = mans_bar + (saddle - mans_saddle) + (self.fit - 1.0) * (mans_bar - mans_saddle)   # fit 1: the man's, exactly
         set_ = object.__setattr__
         set_(self, "steer_axis", axis)
         set_(self, "front_axle", front_axle)
@@ -171,8 +183,6 @@ class Layout:
         set_(self, "pedals", (np.array([0.0, -PEDAL_HALF_SPACING, CRANK_LENGTH]),
                               np.array([0.0, PEDAL_HALF_SPACING, -CRANK_LENGTH])))
 
-
-LAYOUT = Layout()
 
 
 def _inertia(body, mass: float, diag, pos=(0.0, 0.0, 0.0)) -> None:
@@ -196,6 +206,8 @@ def _wheel(parent, name: str, joint: str, pos, mass: float, contact: int):
     _inertia(wheel, mass, [axial / 2, axial, axial / 2])
     hinge = wheel.add_joint(name=joint, type=mujoco.mjtJoint.mjJNT_HINGE, axis=[0, 1, 0])
     hinge.damping = [ROLLING_RESISTANCE / 2 * r * r, 0.0, 0.0]     # linear viscous term only
+    hinge.solref_friction = list(BRAKE_SOLREF)                        # the rim brake's dry friction holds
+    hinge.solimp_friction = list(BRAKE_SOLIMP)
     seen = wheel.add_geom(name=name + "_tyre_seen", type=mujoco.mjtGeom.mjGEOM_CYLINDER, size=[r - 0.005, 0, 0],
                           fromto=[0, -TYRE_WIDTH / 2, 0, 0, TYRE_WIDTH / 2, 0], rgba=TYRE_COLOUR)
     seen.contype = seen.conaffinity = 0
@@ -210,7 +222,7 @@ def _wheel(parent, name: str, joint: str, pos, mass: float, contact: int):
 def add_bicycle(spec: mujoco.MjSpec, bicycle: Bicycle, contact_group: int) -> None:
     """The bicycle's five bodies, four hinges, chain tendon and sites (grips, pedals, saddle) into
     ``spec``, standing upright on the ground (z = 0) as ``bicycle`` places it."""
-    lay, r, n = LAYOUT, WHEEL_RADIUS, NAMES
+    lay, r, n = Layout(bicycle.fit), WHEEL_RADIUS, NAMES
     c, s = math.cos(bicycle.heading), math.sin(bicycle.heading)
     frame = spec.worldbody.add_body(name=n["frame"], pos=[bicycle.x, bicycle.y, r],
                                     quat=[math.cos(bicycle.heading / 2), 0, 0, math.sin(bicycle.heading / 2)])
@@ -401,7 +413,7 @@ def attach_rider(spec: mujoco.MjSpec, bicycle: Bicycle, character) -> None:
     prefix = bicycle.rider
     frame = spec.body(NAMES["frame"])
     for side, dy in (("r", -SEAT_PIVOT_HALF_WIDTH), ("l", SEAT_PIVOT_HALF_WIDTH)):
-        frame.add_site(name=f"bicycle_seat_{side}", pos=list(LAYOUT.saddle + [0, dy, 0]))
+        frame.add_site(name=f"bicycle_seat_{side}", pos=list(Layout(bicycle.fit).saddle + [0, dy, 0]))
     points = rider_points(character)
     for name, body, bike_site, solref in ATTACHMENTS:
         rider_site = f"{prefix}rider_{name}"

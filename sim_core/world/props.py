@@ -37,10 +37,11 @@ def add_world(spec: mujoco.MjSpec, world: World, character) -> None:
         builder(spec, world, character)
 
 
-def add_attachments(spec: mujoco.MjSpec, world: World, character) -> None:
-    """What ties a character to a prop, added once the character's bodies exist: a bicycle's
-    rider attachments (body to body). Nothing for any other world."""
-    if world.bicycle is not None and world.bicycle.rider is not None:
+def add_attachments(spec: mujoco.MjSpec, world: World, character, prefix: str = "") -> None:
+    """What ties the character named by ``prefix`` (a scene's "<actor>/") to a prop, added once the
+    character's bodies exist: a bicycle's rider attachments (body to body), if it rides it. Nothing
+    for any other world or character."""
+    if world.bicycle is not None and world.bicycle.rider == prefix:
         attach_rider(spec, world.bicycle, character)
 
 

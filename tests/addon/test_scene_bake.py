@@ -54,3 +54,19 @@ def test_a_bad_scene_file_bakes_nothing(addon, tmp_path, capsys):
     assert not out.exists()
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and "actors 'left' and 'right' start" in err[0]
+
+
+def test_a_cyclist_scene_bakes_the_bicycle_with_its_rider(addon, tmp_path):
+    """A rider on the bicycle beside a runner: both armatures and the bicycle's five bodies as
+    objects, parented to the rider's armature."""
+    scene_file = tmp_path / "cyclist.json"
+    scene_file.write_text(json.dumps({"duration": 0.5, "actors": [
+        {"name": "cyclist", "character": "man", "behaviour": "bicycle", "params": {"speed": 4}},
+        {"name": "runner", "character": "man", "behaviour": "running", "params": {"speed": 4}, "position": [0, 1.5]}]}))
+    out = tmp_path / "cyclist.blend"
+    assert batch.run(["--scene", str(scene_file), "--fps", "25", "--out", str(out)]) == 0
+    bpy.ops.wm.open_mainfile(filepath=str(out))
+    assert {o.name for o in bpy.data.objects if o.type == "ARMATURE"} == {"cyclist", "runner"}
+    for part in ("frame", "fork", "front_wheel", "rear_wheel", "crank"):
+        obj = bpy.data.objects[f"SimAthletics bicycle_{part}"]
+        assert obj.parent.name == "cyclist" and obj.animation_data.action is not None

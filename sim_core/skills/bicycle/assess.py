@@ -22,12 +22,24 @@ COAST_SETTLE = 2.0          # criterion: s after the rider stops pedalling befor
 HILL_SETTLE = 5.0           # criterion: m into the climb or the descent before its speed is judged
 
 
-def attachment_gaps(model: mujoco.MjModel, qpos: np.ndarray) -> np.ndarray:
+def ride_arrays(trajectory) -> tuple[dict, str]:
+    """(arrays, the rider's name prefix) of a ride: a one-character run's own arrays, or for a
+    scene's actor (its view has only its own columns) the whole scene's up to the actor's end, in
+    which the bicycle's joints and bodies are."""
+    if trajectory.scene is None:
+        return trajectory.arrays, ""
+    whole, n = trajectory.scene.arrays, len(trajectory.arrays["time"])
+    arrays = {name: whole[name][:n] for name in ("time", "qpos", "qvel", "ground_contact")}
+    arrays.update(control=whole["control"][:n - 1], body_names=whole["body_names"])
+    return arrays, trajectory.meta["actor_prefix"]
+
+
+def attachment_gaps(model: mujoco.MjModel, qpos: np.ndarray, prefix: str = "") -> np.ndarray:
     """Frames x attachments (seat r, l, hands r, l, feet r, l): the distance (m) between each
-    rider site and its bicycle site, from the recorded joint angles."""
+    rider site (of the rider named by ``prefix``) and its bicycle site, from the recorded joint angles."""
     from .mount import SitePairs
     data = mujoco.MjData(model)
-    pairs = SitePairs(model)
+    pairs = SitePairs(model, prefix)
     out = np.zeros((len(qpos), len(pairs.names)))
     for k, q in enumerate(qpos):
         data.qpos[:] = q
@@ -40,17 +52,18 @@ def ride_metrics(trajectory) -> dict:
     """Fall (anything but a tyre on the ground), speed, roll, heading (the time from which it
     stays within 5 deg of the commanded one, the fork's first move: -1 right, +1 left) and the
     attachments' largest stretch."""
-    a, meta = trajectory.arrays, trajectory.meta
+    meta = trajectory.meta
+    a, prefix = ride_arrays(trajectory)
     model = mujoco.MjModel.from_xml_string(meta["model_xml"])
-    body_names = [model.body(b).name for b in range(1, model.nbody)]
-    wheels = [body_names.index(n) for n in WHEEL_BODIES]
-    others = np.ones(len(body_names), dtype=bool)
-    others[wheels] = False
+    body_names = [str(n) for n in a["body_names"]]
+    bicycle_bodies = {NAMES[part] for part in ("frame", "fork", "front", "rear", "crank")}
+    others = np.array([n.startswith(prefix) or n in bicycle_bodies for n in body_names])   # the rider's and the bicycle's
+    others[[body_names.index(n) for n in WHEEL_BODIES]] = False
 
     from .course import course_for
     course = course_for(meta["params"])
     if course.coast_from is not None:        # a stop ends on the left foot: its sole on the ground is no fall
-        others[[body_names.index(n) for n in STOP_FOOT_BODIES]] = False
+        others[[body_names.index(prefix + n) for n in STOP_FOOT_BODIES]] = False
     touching = a["ground_contact"][:, others].any(axis=1)
     free = model.joint(NAMES["free"])
     q, dof = int(free.qposadr[0]), int(free.dofadr[0])
@@ -67,7 +80,7 @@ def ride_metrics(trajectory) -> dict:
     t = a["time"]
     end = len(t) if fall_frame is None else fall_frame
     last10 = (t >= t[end - 1] - 10.0) & (np.arange(len(t)) < end)     # criterion: TARGETS.md's mean speed of the last 10 s
-    gaps = attachment_gaps(model, a["qpos"][:end])
+    gaps = attachment_gaps(model, a["qpos"][:end], prefix)
     released = [when for when, name in meta["phase_events"] if name == "foot_off_pedal"]
     if released:                             # the left foot let go of its pedal: its gap is no longer a stretch
         gaps[np.searchsorted(t[:end], released[0]) + 1:, 5] = 0.0
@@ -107,7 +120,7 @@ def ride_metrics(trajectory) -> dict:
         metrics.update(coast_metrics(model, t, speed, course.coast_from + COAST_SETTLE, coast_end))
     if course.stop or any(name == "brake_to_stop" for _, name in meta["phase_events"]):
         metrics.update(stop_metrics(meta["phase_events"], t, speed, roll, a["qpos"][:, q:q + 2], fall_frame))
-    metrics.update(pedal_force_range(model, trajectory, end))
+    metrics.update(pedal_force_range(model, a, end, prefix))
     return metrics
 
 
@@ -189,17 +202,17 @@ def course_metrics(course, t: np.ndarray, xy: np.ndarray, speed: np.ndarray, cra
     return out
 
 
-def pedal_force_range(model: mujoco.MjModel, trajectory, end: int) -> dict:
+def pedal_force_range(model: mujoco.MjModel, a: dict, end: int, prefix: str = "") -> dict:
     """The feet's attachment forces, recomputed from the recorded state and controls by
     ``mj_forward`` (the soft constraint's force at that state): along each pedal's direction of
     travel (N, the foot on the pedal; positive drives it forward) and vertically (the pedal on
     the foot; negative: the pedal pulls the foot down, the attachment in tension, as a toe clip
-    holds a foot). A pull shows the attachment is two-sided (SEEDS-WAVE2 B2)."""
-    a = trajectory.arrays
+    holds a foot). A pull shows the attachment is two-sided (SEEDS-WAVE2 B2). ``a``: the ride's
+    arrays (``ride_arrays``), ``prefix`` its rider's."""
     control = a["control"]
     data = mujoco.MjData(model)
     crank_body = model.body(NAMES["crank"]).id
-    feet = {side: model.equality(f"attach_foot_{side}").id for side in "rl"}
+    feet = {side: model.equality(f"{prefix}attach_foot_{side}").id for side in "rl"}
     tangential = {side: [] for side in feet}
     vertical = {side: [] for side in feet}
     for k in range(0, end, 2):                        # definition: every other frame (100 Hz) is enough

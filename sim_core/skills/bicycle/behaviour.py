@@ -36,6 +36,8 @@ from ...control.path import MAX_POINTS, PathFollower, validate_path
 from ...schema import Parameter, Points, Schema
 from ...tuned import TableType, load, register as register_table
 from ...tuned.settings import SkillSchema, with_defaults
+from ...character.dimensions import fig3_measures
+from ...character.spec import load_character
 from ...errors import ParameterError
 from ...world.bicycle import BRAKE_MAX_TORQUE, WHEEL_RADIUS, CRANK_LENGTH, DEFAULT_GEAR, NAMES, Bicycle, BicycleView
 from .assess import STOPPED_SPEED
@@ -46,7 +48,8 @@ from .mount import IK_ITERATIONS_PER_TICK, SitePairs, match_velocities, solve
 
 FOOT_IK_ITERATIONS = 5              # definition: damped least-squares steps a tick for the foot going down
 FOOT_IK_DAMPING = 1e-3              # definition: lambda^2 of that solve
-KNEE = 3                            # definition: the knee's place in the left leg's servos below
+HIP_Y, KNEE = 0, 3                  # definition: the hip's flexion and the knee's places in the left leg's servos below
+SIZED_FOR = "man"                   # definition: the rider the bicycle's saddle and bar are set for (world/bicycle.py)
 RIDERS = ("man",)                   # criterion: the riders measured to ride (docs/bicycle.md: the others fall)
 MIN_LOOKAHEAD_SPEED = 1.0           # definition: m/s, the speed below which the look-ahead distance stops shrinking
 MOUNT_CRANK_ANGLE = math.pi / 2      # the start's crank: right pedal forward, left back (horizontal)
@@ -114,6 +117,14 @@ BICYCLE_TABLE = register_table(TableType("bicycle", BICYCLE_RANGES, _bicycle_row
 BICYCLE_SETTINGS = with_defaults(BICYCLE_RANGES, bicycle_constants())
 
 
+def frame_fit(character) -> float:
+    """The bicycle's frame size for ``character`` (Bicycle.fit): its leg length over the man's, for
+    whom the saddle and the bar were set (Fig. 3's leg length); 1 for the man or no character."""
+    if character is None or character.name == SIZED_FOR:
+        return 1.0
+    return fig3_measures(character)["leg length"] / fig3_measures(load_character(SIZED_FOR))["leg length"]
+
+
 def mount_posture(c: dict) -> dict[str, float]:
     """The rider's reference posture for the mounting solve, both sides, from the constants."""
     return {"hip_r_y": c["mount_hip"], "hip_l_y": c["mount_hip"], "knee_r_y": c["mount_knee"],
@@ -163,26 +174,28 @@ class Bicycling(Behaviour):
         """The requested world with the bicycle (at the origin facing +X, its gear, the rider
         attached) and the course's hill, if it has one."""
         course = course_for(params)
-        bicycle = Bicycle(gear=params["gear"], rider="", freewheel=course.name in FREEWHEEL_COURSES)
+        bicycle = Bicycle(gear=params["gear"], rider="", freewheel=course.name in FREEWHEEL_COURSES,
+                          fit=frame_fit(character))
         return dataclasses.replace(world, bicycle=bicycle, hill=course.hill)
 
     @classmethod
-    def start_state(cls, params, model, data, character):
+    def start_state(cls, params, model, data, character, prefix=""):
         """Mounted and rolling: the rider's root and joints solved so that the seat bones sit on
         the saddle and the palms and balls of the feet on the grips and pedals (crank
-        horizontal), then the rolling start at the commanded speed."""
+        horizontal), then the rolling start at the commanded speed. ``prefix``: the rider's (a
+        scene's actor); nobody else is moved."""
         bike = BicycleView.of(model)
         bike.set_crank(data, MOUNT_CRANK_ANGLE)
         mujoco.mj_kinematics(model, data)
-        pairs = SitePairs(model)
-        root = model.joint("root")
+        pairs = SitePairs(model, prefix)
+        root = model.joint(prefix + "root")
         adr = int(root.qposadr[0])
         seat_mid = data.site_xpos[pairs.rider[:2]].mean(axis=0)
         saddle = data.site_xpos[pairs.bike[:2]].mean(axis=0)
         data.qpos[adr:adr + 3] += saddle - seat_mid
         reference = data.qpos.copy()
         for name, value in mount_posture(params).items():
-            reference[model.joint(name).qposadr[0]] = value
+            reference[model.joint(prefix + name).qposadr[0]] = value
         data.qpos[:] = reference
         dofs = np.arange(int(root.dofadr[0]), model.nv)
         rider_dofs = dofs[model.body_rootid[model.dof_bodyid[dofs]] == model.jnt_bodyid[root.id]]
@@ -198,18 +211,13 @@ class Bicycling(Behaviour):
                 "attachment_gaps": {n: float(g) for n, g in zip(pairs.names, gaps)}}
 
     def check_feasible(self):
-        """A scene does not mount a rider yet (run_scene calls neither start_state nor the rider's
-        attachments): refuse rather than ride a bicycle that is not there. Only the riders measured
-        to ride are offered."""
-        if mujoco.mj_name2id(self.ctx.model, mujoco.mjtObj.mjOBJ_BODY, NAMES["frame"]) < 0 or self.ctx.actor.prefix:
-            raise ParameterError("the bicycle behaviour runs only alone (python -m sim_core simulate bicycle); "
-                                 "scenes with a bicycle are not built yet")
+        """Only the riders measured to ride are offered."""
         rider = self.ctx.character.name
         if rider not in RIDERS:
             raise ParameterError(f"bicycle is not calibrated for the {rider} (calibrated for: {', '.join(RIDERS)}): "
-                                 f"the bicycle is sized and its steering gains set for the man; at 4 m/s the woman "
-                                 f"fell 11.0 s into a ride, the imaginary cyclist 5.7 s, the child and the imaginary "
-                                 f"runner within 3 s (docs/bicycle.md)")
+                                 f"its steering gains are set for the man; the woman, on a frame sized to her leg "
+                                 f"length with the gains scaled by Fig. 6, fell 7.2 s into a ride at 3 m/s and "
+                                 f"leaned 24 deg at 5 m/s (docs/bicycle.md)")
 
     def start(self, t):
         """Look the bicycle and the limbs up; the targets start at the mounted pose."""
@@ -241,12 +249,16 @@ class Bicycling(Behaviour):
         self.crank_command = None            # coasting: the crank angle the legs hold (None: the pedals as they are)
         self.coasting = self.coasted = False
         self.stopping = self.course.stop        # braking to a stop (the stop course; a coast that got too slow)
-        self.foot_down = None               # stop: (time the foot left its pedal, where it left it, the ground point)
+        self.foot_down = None               # stop: (time the foot left its pedal, where it left it from the left hip)
         self.planted = None                 # stop: the left leg's servo targets once the foot is on the ground
         self.knee_integral = 0.0            # stop: the planted knee's integral term (rad)
         self.rest_since = None              # stop: when the bicycle came to rest with the foot down
         self.foot_site = model.site(ctx.actor.prefix + "rider_foot_l").id
         self.foot_eq = model.equality(ctx.actor.prefix + "attach_foot_l").id
+        self.left_hip = model.body(ctx.actor.prefix + "ULEGL").id
+        self.pelvis = model.body(ctx.actor.prefix + "PELVIS").id
+        self.root_qpos = int(model.joint(ctx.actor.prefix + "root").qposadr[0])
+        self.pelvis_pitch = None            # stop: the pelvis's pitch on the saddle held once the foot is down (rad)
         left_leg = ("hip_l_y", "hip_l_x", "hip_l_z", "knee_l_y")
         self.left_leg_servos = servos.indices(left_leg)
         self.left_leg_dofs = servos.dof_adr[self.left_leg_servos]
@@ -316,29 +328,36 @@ class Bicycling(Behaviour):
 
     @property
     def run_complete(self) -> bool:
-        """A stop's run ends stop_stand after the bicycle came to rest with the foot down (standing on
-        longer, the lean creeps until the propping leg lifts the rear wheel: docs/bicycle.md, the stop)."""
+        """A stop's run ends stop_stand after the bicycle came to rest with the foot down: the skill is
+        done (asked to, the rider stands on: twelve stops stood 22 s, docs/bicycle.md, the stop)."""
         return self.rest_since is not None and self.ctx.data.time - self.rest_since >= self.params["stop_stand"]
 
     def _release_foot(self, t) -> None:
         """The left foot leaves its pedal (its attachment switched off through the edit log, so a
-        replay switches it off at the same tick) for a ground point foot_out left of the wheels'
-        contact line and foot_ahead ahead of the left hip."""
-        data, bike = self.ctx.data, self.bike
+        replay switches it off at the same tick) for a ground point beside the hip (``_ground_point``)."""
+        data = self.ctx.data
         active = data.eq_active.copy()
         active[self.foot_eq] = 0
         self.ctx.servos.log.set_flat(data.eq_active, "eq_active", active)
+        self.foot_down = (t, data.site_xpos[self.foot_site] - data.xpos[self.left_hip])
+        self.event(t, "foot_off_pedal")
+
+    def _ground_point(self) -> np.ndarray:
+        """Where the left foot goes down, read afresh each tick (the bicycle still rolls while the foot
+        swings): on the ground foot_out left of the wheels' contact line and foot_ahead ahead of the
+        left hip. Aimed once, where the hip was when the foot let go, the foot landed 0.2 m behind the
+        hip at rest: the leg then pushed the bicycle forward against the brakes and the foot back, and
+        both crept until the bicycle fell (docs/bicycle.md, the stop)."""
+        data, bike = self.ctx.data, self.bike
         frame = data.xmat[bike.frame].reshape(3, 3)
         heading = math.atan2(frame[1, 0], frame[0, 0])
         forward, left = np.array([math.cos(heading), math.sin(heading), 0.0]), np.array([-math.sin(heading), math.cos(heading), 0.0])
-        hip = data.xpos[self.ctx.model.body(self.ctx.actor.prefix + "ULEGL").id]
+        hip = data.xpos[self.left_hip]
         mid = data.xpos[bike.frame].copy()
-        mid[:2] += left[:2] * WHEEL_RADIUS * math.sin(self.bike.state(data)["roll"])   # the wheels' contact line
-        ground = mid + forward * (float(np.dot(hip - mid, forward)) + self.params["foot_ahead"])
-        ground = ground + left * self.params["foot_out"]
+        mid[:2] += left[:2] * WHEEL_RADIUS * math.sin(bike.state(data)["roll"])   # the wheels' contact line
+        ground = mid + forward * (float(np.dot(hip - mid, forward)) + self.params["foot_ahead"]) + left * self.params["foot_out"]
         ground[2] = 0.0
-        self.foot_down = (t, data.site_xpos[self.foot_site].copy(), ground)
-        self.event(t, "foot_off_pedal")
+        return ground
 
     def _foot_on_ground(self) -> bool:
         data = self.ctx.data
@@ -354,23 +373,36 @@ class Bicycling(Behaviour):
         foot_swing_time), toes a little down (foot_ankle). Once the foot touches the ground the
         hip's targets stay where they are and the knee props the lean: its target straightens with
         the roll beyond stand_roll (proportional, integral and roll-rate terms: the leg pushes the
-        bicycle back up as it leans further onto the foot)."""
+        bicycle back up as it leans further onto the foot), and the hip's flexion turns the thigh so
+        that the knee's change moves the foot up and down, not along the ground (through the leg's
+        Jacobian at the foot); the arms and the right leg hold the pelvis at its pitch on the saddle
+        (``_seat_pelvis``)."""
         ctx, servos, c = self.ctx, self.ctx.servos, self.params
         if self.planted is None and self._foot_on_ground():
             self.planted = servos.angles()[self.left_leg_servos].copy()
+            self.pelvis_pitch = self._pelvis_pitch(ctx.data)     # held from here
             self.event(t, "foot_planted")
         if self.planted is not None:
             goal[self.left_leg_servos] = self.planted
             state = self.bike.state(ctx.data)
             error = state["roll"] - c["stand_roll"]
             self.knee_integral += c["knee_roll_integral_gain"] * error * ctx.control_dt
-            knee = self.planted[KNEE] + c["knee_roll_gain"] * error + self.knee_integral + c["knee_roll_rate_gain"] * state["roll_rate"]
-            goal[self.left_leg_servos[KNEE]] = max(knee, 0.0)
+            knee = max(self.planted[KNEE] + c["knee_roll_gain"] * error + self.knee_integral
+                       + c["knee_roll_rate_gain"] * state["roll_rate"], 0.0)
+            goal[self.left_leg_servos[KNEE]] = knee
+            # the hip turns the thigh so that the knee's change does not move the foot along the ground
+            # fore and aft (alone, the straightening knee pushed the planted foot forward and it slid)
+            mujoco.mj_jacSite(ctx.model, ctx.data, self.jac, None, self.foot_site)
+            frame = ctx.data.xmat[self.bike.frame].reshape(3, 3)[:, 0]
+            along = frame @ self.jac[:, self.left_leg_dofs[[HIP_Y, KNEE]]]
+            goal[self.left_leg_servos[HIP_Y]] = self.planted[HIP_Y] - along[1] / along[0] * (knee - self.planted[KNEE])
         else:
-            start_time, start, ground = self.foot_down
+            start_time, start = self.foot_down           # from where it left the pedal, relative to the hip
+            hip = ctx.data.xpos[self.left_hip]
+            ground = self._ground_point() - hip
             share = min((t - start_time) / c["foot_swing_time"], 1.0)
-            point = start + min(2.0 * share, 1.0) * (ground - start)
-            point[2] = start[2] + share * (ground[2] - start[2])
+            point = hip + start + min(2.0 * share, 1.0) * (ground - start)
+            point[2] = hip[2] + start[2] + share * (ground[2] - start[2])
             scratch = self.scratch
             scratch.qpos[:] = ctx.data.qpos
             scratch.qpos[servos.qpos_adr[self.ankle_servos["l"]]] = c["foot_ankle"]
@@ -412,6 +444,8 @@ class Bicycling(Behaviour):
             scratch.qpos[bike.crank_qpos] = self.crank_command
         for side, value in (ankles or {}).items():
             scratch.qpos[servos.qpos_adr[self.ankle_servos[side]]] = value
+        if self.planted is not None:
+            self._seat_pelvis(scratch)
         solve(ctx.model, scratch, self.pairs, which, servos.dof_adr[servo_rows], ctx.data.qpos, IK_ITERATIONS_PER_TICK)
         goal = self.target.copy()
         ik = scratch.qpos[servos.qpos_adr[servo_rows]]
@@ -425,6 +459,33 @@ class Bicycling(Behaviour):
         for side, value in (ankles or {}).items():
             goal[self.ankle_servos[side]] = value
         return goal
+
+    def _pelvis_pitch(self, data) -> float:
+        """The pelvis's pitch on the saddle (rad, about the frame's lateral axis; forward tilt negative)."""
+        frame = data.xmat[self.bike.frame].reshape(3, 3)
+        forward = data.xmat[self.pelvis].reshape(3, 3)[:, 0]
+        return math.atan2(float(forward @ frame[:, 2]), float(forward @ frame[:, 0]))
+
+    def _seat_pelvis(self, scratch) -> None:
+        """Turn the rider in ``scratch`` about the seat pivot (the frame's lateral axis through the
+        saddle) back to the pelvis pitch he rode with: the limbs' inverse kinematics then gives the
+        targets that hold him there. Without it, once a foot has left its pedal the pelvis pitch is held
+        by nothing but limbs whose targets follow them, and under a stand's propping leg it tipped
+        back 36 deg in 3 s (docs/bicycle.md, the stop)."""
+        model = self.ctx.model
+        mujoco.mj_kinematics(model, scratch)
+        turn = self.pelvis_pitch - self._pelvis_pitch(scratch)
+        axis = scratch.xmat[self.bike.frame].reshape(3, 3)[:, 1]
+        quat = np.zeros(4)
+        mujoco.mju_axisAngle2Quat(quat, axis, -turn)
+        rot = np.zeros(9)
+        mujoco.mju_quat2Mat(rot, quat)
+        pivot = scratch.site_xpos[self.pairs.bike[:2]].mean(axis=0)
+        q = self.root_qpos
+        scratch.qpos[q:q + 3] = pivot + rot.reshape(3, 3) @ (scratch.qpos[q:q + 3] - pivot)
+        turned = np.zeros(4)
+        mujoco.mju_mulQuat(turned, quat, scratch.qpos[q + 3:q + 7].copy())
+        scratch.qpos[q + 3:q + 7] = turned
 
     def _pedal(self, t, state, torque: float) -> None:
         """Feet on the pedals: pedal IK and the ankle curve -> leg targets; eqs. 7-10 -> pedal

@@ -6,7 +6,8 @@
 * the courses (``--courses``): a turn, the slalom at speeds drawn at random (``--seed``) with the
   gates spaced for the same time between gates, speed steps 3 -> 5 -> 4 m/s, the hill at 5 %
   (gears 2.6 and 2.0) and 10 %, a start from a slow roll, a coast from 4 m/s (its decay fitted,
-  ending in a stop) and stops from speeds drawn at random (``--stops``), run in ``--workers`` processes;
+  ending in a stop) and stops from speeds drawn at random (``--stops``; ``--stand`` S: each asked to
+  stand S s after rest), run in ``--workers`` processes;
 * speed: simulated seconds per wall-clock second of a ride beside raw ``mj_step`` of the same
   model with the controls held.
 """
@@ -129,10 +130,12 @@ def slalom_seconds(speed: float, spacing: float, gates: int = 8, lead: float = 1
     return (lead + (gates + 0.5) * spacing) / speed + 2.0
 
 
-def course_rides(seed: int, slaloms: int, stops: int = 0) -> dict:
+def course_rides(seed: int, slaloms: int, stops: int = 0, stand: float | None = None) -> dict:
     """The course rides above, ``slaloms`` slaloms drawn at random inside the region the slalom
     is offered in (course.py: speed, gate spacing and offset) and ``stops`` stops from speeds drawn
-    in the range the stop is offered in."""
+    in the range the stop is offered in, each ridden STOP_STAND s past its expected standstill (the
+    run ends stop_stand after rest), or given ``stand``, asked to stand that long (stop_stand) and
+    ridden that long past it."""
     rng = np.random.default_rng(seed)
     rides = dict(COURSE_RIDES)
     for _ in range(slaloms):
@@ -144,7 +147,8 @@ def course_rides(seed: int, slaloms: int, stops: int = 0) -> dict:
     coast_after = Bicycling.schema.by_name["coast_after"].default
     for _ in range(stops):
         speed = round(float(rng.uniform(*STOP_SPEEDS)), 2)
-        rides[f"stop_from_{speed:g}ms"] = ({"course": "stop", "speed": speed}, coast_after + speed / deceleration + STOP_STAND)
+        params = {"course": "stop", "speed": speed, **({"stop_stand": stand} if stand is not None else {})}
+        rides[f"stop_from_{speed:g}ms"] = (params, coast_after + speed / deceleration + (STOP_STAND if stand is None else stand))
     return rides
 
 
@@ -155,6 +159,8 @@ def main(argv=None) -> int:
     parser.add_argument("--slaloms", type=int, default=4, help="slaloms at random speeds with --courses")
     parser.add_argument("--stops", type=int, default=6, help="stops from random speeds with --courses")
     parser.add_argument("--seed", type=int, default=30, help="draws the slaloms' and the stops' speeds")
+    parser.add_argument("--stand", type=float, default=None,
+                        help="with --courses: each stop stands this long (s) after rest (default: the run ends stop_stand after it)")
     parser.add_argument("--workers", type=int, default=None, help="processes for the course rides (default: one per CPU)")
     args = parser.parse_args(argv)
     model = riderless_model()
@@ -171,7 +177,7 @@ def main(argv=None) -> int:
     out["heading_step_30deg"] = {k: m[k] for k in keys}
     if args.courses:
         with executor_for(args.workers) as executor:
-            out["courses"] = dict(executor.map(course_ride, list(course_rides(args.seed, args.slaloms, args.stops).items())))
+            out["courses"] = dict(executor.map(course_ride, list(course_rides(args.seed, args.slaloms, args.stops, args.stand).items())))
     out["benchmark"] = benchmark(args.seconds)
     print(json.dumps(out, indent=1))
     return 0

@@ -432,17 +432,17 @@ class Vault(Sequence):
         return dict(row["settings"]) if row else {k: params[k] for k in VAULT_SETTINGS.by_name}
 
     @classmethod
-    def start_state(cls, params, model, data, character):
+    def start_state(cls, params, model, data, character, prefix=""):
         """The seed's hurdle flight: the standing pose with the block (hips flexed, knees bent, arms
         raised), the body pitched by hurdle_lean, the COM start_com_height above the board's top at
         x = 0, every body moving at (runup_speed, 0, hurdle_vz) plus the hurdle's forward spin."""
-        strength = "human" if model.actuator_forcelimited[model.actuator("knee_r_y").id] else "unlimited"
+        strength = "human" if model.actuator_forcelimited[model.actuator(prefix + "knee_r_y").id] else "unlimited"
         c = cls.settings_for(params, character.name, strength)
         pose = both_sides({"hip_*_y": c["block_hip"], "knee_*_y": c["board_knee"], "shoulder_*_z": c["hurdle_arm"],
                            "elbow_*_z": 0.0})
         for name, value in pose.items():
-            data.qpos[model.joint(name).qposadr[0]] = value
-        root = model.joint("root")
+            data.qpos[model.joint(prefix + name).qposadr[0]] = value
+        root = model.joint(prefix + "root")
         q, v = int(root.qposadr[0]), int(root.dofadr[0])
         lean = c["hurdle_lean"]
         data.qpos[q + 3:q + 7] = [math.cos(lean / 2), 0.0, math.sin(lean / 2), 0.0]
@@ -450,11 +450,13 @@ class Vault(Sequence):
         mujoco.mj_comPos(model, data)
         com = data.subtree_com[root.bodyid[0]].copy()
         data.qpos[q:q + 3] += np.array([0.0, 0.0, BOARD_TOP + CONSTANTS.start_com_height]) - com
-        data.qvel[:] = 0.0
+        own = model.body_rootid[model.dof_bodyid] == root.bodyid[0]     # this character's dofs only
+        data.qvel[own] = 0.0
         mujoco.mj_kinematics(model, data)
         # the feet touch the board (ballistically, the hurdle's rotation aside) at touchdown_on_board
         # from its centre: the whole body is shifted along +X for that
-        feet = data.site_xpos[[i for i in range(model.nsite) if model.body(model.site_bodyid[i]).name in FOOT_BODIES]]
+        feet = data.site_xpos[[i for i in range(model.nsite) if model.body(model.site_bodyid[i]).name in
+                                [prefix + b for b in FOOT_BODIES]]]
         lowest = feet[int(np.argmin(feet[:, 2]))]
         fall = lowest[2] - BOARD_TOP
         vz = c["hurdle_vz"]
