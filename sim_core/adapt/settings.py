@@ -34,7 +34,7 @@ import numpy as np
 
 from .moved_bodies import gain_factors
 from .scaling import ScaleFactors, Units, scale
-from ..character.dimensions import fig3_measures
+from ..character.dimensions import leg_length_ratio
 from ..character.mass_properties import StandingBody
 from ..character.spec import CharacterSpec
 from ..errors import ParameterError
@@ -79,8 +79,7 @@ class CharacterPair:
     def __init__(self, old: CharacterSpec, new: CharacterSpec, length: float | None = None):
         self.old, self.new = StandingBody(old), StandingBody(new)
         self.old_spec, self.new_spec = old, new
-        self.length = (fig3_measures(new)["leg length"] / fig3_measures(old)["leg length"]
-                       if length is None else float(length))
+        self.length = leg_length_ratio(old, new) if length is None else float(length)
         ScaleFactors(self.length)                          # refuses a non-positive L
         self.dof_names = [d.name for d in old.dofs]
 
@@ -124,6 +123,20 @@ def scale_settings(row: dict, schema: Schema, pair: CharacterPair, mode: str) ->
         else:
             out[name] = scale(float(value), units, pair.factors(name, mode))
     return out
+
+
+def scale_constants(constants: dict, schema: Schema, pair: CharacterPair, mode: str) -> dict:
+    """A controller's constants (numbers, lists or maps of numbers, as a ``<table>_any.json`` holds
+    them) scaled for ``pair.new``, every number by its constant's units and held inside the
+    constant's sanity range."""
+    def each(name, value):
+        if isinstance(value, (list, tuple)):
+            return [each(name, v) for v in value]
+        if isinstance(value, dict):
+            return {k: each(name, v) for k, v in value.items()}
+        knob = schema.by_name[name]
+        return min(max(scale_settings({name: value}, schema, pair, mode)[name], knob.minimum), knob.maximum)
+    return {name: each(name, value) for name, value in constants.items()}
 
 
 def scale_columns(speeds: list[float], columns: dict[str, list[float]], schema: Schema, pair: CharacterPair,

@@ -50,3 +50,8 @@ def fig3_measures(character: CharacterSpec) -> dict[str, float]:
         "body / hip": standing.inertia_about(everything - leg, hip, PITCH),
     })
     return out
+
+
+def leg_length_ratio(old: CharacterSpec, new: CharacterSpec) -> float:
+    """Fig. 6's L: the new body's leg length (hip joint to ankle joint, Fig. 3) over the old body's."""
+    return fig3_measures(new)["leg length"] / fig3_measures(old)["leg length"]

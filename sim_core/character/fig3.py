@@ -35,7 +35,7 @@ import numpy as np
 from scipy.optimize import least_squares
 
 from ..adapt.servos import mass_scaled_servos
-from .dimensions import SEGMENTS, fig3_measures
+from .dimensions import SEGMENTS, fig3_measures, leg_length_ratio
 from .reshape import BodyScale, reshaped
 from .spec import CharacterSpec
 from ..errors import UnknownNameError
@@ -209,7 +209,7 @@ def build_fig3_character(name: str, base: CharacterSpec) -> dict:
     if name not in PRESETS:
         raise UnknownNameError(f"unknown Fig. 3 character {name!r}; choose from {', '.join(PRESETS)}")
     data, p, depth_floor = fit_fig3(base, FIG3[name])
-    leg_ratio = fig3_measures(CharacterSpec(data))["leg length"] / fig3_measures(base)["leg length"]
+    leg_ratio = leg_length_ratio(base, CharacterSpec(data))
     data = mass_scaled_servos(data, base, leg_ratio)
     data["name"] = name
     data["source"] = (f"Hodgins & Pollard 1997, Fig. 3 ({name}): per-segment scaling of {base.name} fitted to the "

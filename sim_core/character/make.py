@@ -16,7 +16,7 @@ import re
 from pathlib import Path
 
 from ..adapt.servos import mass_scaled_servos
-from .dimensions import fig3_measures
+from .dimensions import leg_length_ratio
 from .morph import lerp
 from .reshape import BodyScale, reshaped, standing_height
 from .spec import RIGS_DIR, CharacterSpec
@@ -94,7 +94,7 @@ def scaled_to(base: CharacterSpec, height: float, mass: float, name: str | None 
         data = reshaped(base.data, {b: BodyScale.uniform(mass_ratio) if b.startswith(UNIFORM)
                                     else BodyScale.stretched(long_axis(b), axial, mass_ratio) for b in base.body_names})
         axial *= height / data["height"]
-    leg_ratio = fig3_measures(CharacterSpec(data))["leg length"] / fig3_measures(base)["leg length"]
+    leg_ratio = leg_length_ratio(base, CharacterSpec(data))
     data = mass_scaled_servos(data, base, leg_ratio)
     data["name"] = name or f"{base.name}_{round(100 * height)}cm_{round(mass)}kg"
     data["source"] = f"{base.name} scaled to {height:g} m and {mass:g} kg (sim_core.character.make)"
