@@ -132,10 +132,11 @@ def bake_moving_props(context, armature: bpy.types.Object, trajectory, fps: floa
     """Each moving prop body as its own object (a simple mesh from its geoms), parented to the
     armature object (so it moves with the rider's placement) and keyed on every frame from the
     trajectory's recorded body poses (``core.prop_motion``). An existing object of that name is reused (the user
-    may have restyled it) and gets the new action. Returns the objects."""
+    may have restyled it) and gets the new action. A springboard's deck (a scenery object) is
+    keyed with its deflection. Returns the objects."""
     names = moving_prop_bodies(trajectory)
     if not names:
-        return []
+        return bake_springboard(armature, trajectory, fps, start_frame)
     model = mujoco.MjModel.from_xml_string(trajectory.meta["model_xml"])
     keys = prop_motion.prop_keys(trajectory.arrays, names, fps, start_frame)
     objects = []
@@ -164,3 +165,29 @@ def bake_moving_props(context, armature: bpy.types.Object, trajectory, fps: floa
             raise
         objects.append(obj)
     return objects
+
+
+SPRINGBOARD_JOINT = "prop:springboard/deflection"        # sim_core.world.apparatus
+
+
+def bake_springboard(armature: bpy.types.Object, trajectory, fps: float, start_frame: int = 1) -> list:
+    """The springboard's scenery object (``scenery``, drawn at rest) keyed on every frame with
+    the deck's deflection as its ``delta_location`` (on top of wherever the user put it), the
+    slide turned as the armature is. Returns [the object], or [] for a run without a board."""
+    from .scenery import APPARATUS_NAMES
+    obj = bpy.data.objects.get(APPARATUS_NAMES["springboard"])
+    if obj is None or not trajectory.meta.get("world", {}).get("springboard"):
+        return []
+    model = mujoco.MjModel.from_xml_string(trajectory.meta["model_xml"])
+    keys = prop_motion.slide_keys(trajectory.arrays, model, SPRINGBOARD_JOINT, fps, start_frame)
+    offset = keys.offset @ np.array(armature.matrix_world.to_3x3()).T
+    channels = [("delta_location", i, "springboard") for i in range(3)]
+    action, fcurves, slot = compat.new_action(obj, f"{obj.name} {trajectory.meta.get('behaviour', '')}".strip(),
+                                              channels)
+    try:
+        fill_fcurves(fcurves, keys.frames, [offset[:, i] for i in range(3)])
+        compat.assign_action(obj, action, slot)
+    except BaseException:
+        bpy.data.actions.remove(action)
+        raise
+    return [obj]

@@ -52,8 +52,8 @@ def add_scenery(context, armature, trajectory) -> list:
 
 def _world_boxes(context, armature, model: mujoco.MjModel, names: dict) -> list:
     """The model's box geoms named in ``names`` (geom -> object) as boxes where the model puts
-    them at rest, turned as they are (a hill's ramps); the springboard's deck is shown still,
-    its deflection is in the trajectory's qpos."""
+    them at rest, turned as they are (a hill's ramps); the springboard's deck is drawn
+    at rest, and ``bake.bake_springboard`` keys its deflection."""
     data = mujoco.MjData(model)
     mujoco.mj_kinematics(model, data)
     made = []

@@ -32,7 +32,7 @@ from pathlib import Path
 import mujoco
 import numpy as np
 
-from .character.model import TIMESTEP, Placement, add_character, new_spec, place_standing
+from .character.model import Placement, add_character, character_timestep, new_spec, place_standing
 from .character.spec import CharacterSpec, load_character
 from .control.behaviour import Behaviour
 from .skills import behaviour_class
@@ -278,11 +278,26 @@ def merge_prop_requests(world: World, actors: list[Actor]) -> tuple[World, Chara
     return dataclasses.replace(world, **merged), prop_character
 
 
+def scene_timestep(scene: Scene) -> float:
+    """The one physics step of the scene's model: its actors' (character_timestep), which must agree
+    (a body made by scaling has its own Fig. 6 time scale; it shares a scene only with bodies of
+    the same)."""
+    steps = {a.name: character_timestep(a.character) for a in scene.actors}
+    first = scene.actors[0]
+    for a in scene.actors[1:]:
+        if steps[a.name] != steps[first.name]:
+            raise SceneError(f"actor {a.name!r} ({a.character.name}) has time_scale {a.character.time_scale:g}, actor "
+                             f"{first.name!r} ({first.character.name}) {first.character.time_scale:g}; one scene has "
+                             f"one physics step, so its actors' time scales must be equal")
+    return steps[first.name]
+
+
 def control_tick(scene: Scene) -> tuple[float, dict[str, int]]:
     """The loop's control rate (Hz) and each actor's update interval in ticks. The scene ticks at
     the fastest actor's rate; every other rate must divide it (200 and 100 Hz share a 200 Hz
     loop, the 100 Hz actor updating every 2nd tick), and a tick must be whole physics steps."""
-    rates = {a.name: float(a.behaviour.control_rate) for a in scene.actors}
+    timestep = scene_timestep(scene)
+    rates = {a.name: float(a.behaviour.rate_for(a.character)) for a in scene.actors}
     fastest = max(rates.values())
     every = {}
     for name, rate in rates.items():
@@ -291,9 +306,9 @@ def control_tick(scene: Scene) -> tuple[float, dict[str, int]]:
             raise SceneError(f"actor {name!r} runs at {rate:g} Hz, which does not divide the scene's "
                              f"{fastest:g} Hz loop; rates in one scene must divide the fastest")
         every[name] = int(round(ratio))
-    steps = 1.0 / (fastest * TIMESTEP)
+    steps = 1.0 / (fastest * timestep)
     if abs(steps - round(steps)) > 1e-9:
-        raise SceneError(f"the scene's control rate {fastest:g} Hz is not a whole number of {TIMESTEP * 1e3:g} ms steps")
+        raise SceneError(f"the scene's control rate {fastest:g} Hz is not a whole number of {timestep * 1e3:g} ms steps")
     return fastest, every
 
 
@@ -301,7 +316,7 @@ def control_tick(scene: Scene) -> tuple[float, dict[str, int]]:
 def build_scene_spec(scene: Scene) -> mujoco.MjSpec:
     """One MjSpec: every actor's character, prefixed and placed, then the world's props (the world's
     geoms still come first in the model; a moving prop's body comes after the characters')."""
-    spec = new_spec("sim_athletics_scene")
+    spec = new_spec("sim_athletics_scene", scene_timestep(scene))
     for a in scene.actors:
         add_character(spec, a.character, {}, a.strength, prefix=a.prefix, placement=a.placement)
     add_world(spec, scene.world, scene.prop_character or scene.actors[0].character)   # a moving prop's body last

@@ -1,4 +1,5 @@
-"""The simulation loop: physics at a 1 ms step (finer for the ticks a behaviour asks it for:
+"""The simulation loop: physics at the model's step (1 ms for the man; x a made body's Fig. 6 time
+scale, as its control period: CharacterSpec.time_scale) (finer for the ticks a behaviour asks it for:
 ``ControlContext.step_division``), the behaviour at the control rate, frames
 recorded into a Trajectory together with the log that replays it bit for bit.
 
@@ -256,12 +257,13 @@ def run(request: RunRequest, progress: Callable[[float], None] | None = None,
     log = EditLog()
     view = ActorView.of(model)
     servos = ServoBank(model, data, character, log, view)
-    behaviour = cls(params, ControlContext(model, data, character, servos, control_dt=1.0 / cls.control_rate,
+    rate = cls.rate_for(character)
+    behaviour = cls(params, ControlContext(model, data, character, servos, control_dt=1.0 / rate,
                                            actor=view, morph=morph))
     behaviour.check_feasible()
     actors = [ActorRun("", view, behaviour)]
     support_sites = behaviour_support_sites(model)
-    loop = _Loop(model, data, world, log, actors, cls.control_rate, duration, per_actor=False,
+    loop = _Loop(model, data, world, log, actors, rate, duration, per_actor=False,
                  support_sites=support_sites, pushes=request.pushes)
     arrays, loop_seconds = loop.run(progress, cancelled, stop_when_done=True)
     control = arrays["control"]
@@ -274,7 +276,7 @@ def run(request: RunRequest, progress: Callable[[float], None] | None = None,
                         **({"skill": skill_start} if skill_start is not None else {})},
         "strength": request.strength, "total_mass": float(model.body_subtreemass[1]), "timestep": model.opt.timestep,
         "steps_per_tick": loop.steps_per_tick,
-        "control_rate": cls.control_rate, "phase_events": behaviour.phase_events,
+        "control_rate": rate, "phase_events": behaviour.phase_events,
         "edit_fields": list(EDITABLE_FIELDS), "state_spec": int(STATE_SPEC),
         "dof_names": [model.actuator(i).name for i in range(model.nu)],
         "wall_seconds_in_loop": loop_seconds,
@@ -314,7 +316,8 @@ def run_scene(scene: Scene, progress: Callable[[float], None] | None = None,
     for a in scene.actors:
         view = ActorView.of(model, a.prefix, a.placement)
         servos = ServoBank(model, data, a.character, log, view)
-        ctx = ControlContext(model, data, a.character, servos, control_dt=1.0 / a.behaviour.control_rate, actor=view)
+        ctx = ControlContext(model, data, a.character, servos, control_dt=1.0 / a.behaviour.rate_for(a.character),
+                             actor=view)
         behaviour = a.behaviour(a.params, ctx)
         try:
             behaviour.check_feasible()
@@ -336,7 +339,7 @@ def run_scene(scene: Scene, progress: Callable[[float], None] | None = None,
             "qpos": [v.qpos.start, v.qpos.stop], "qvel": [v.qvel.start, v.qvel.stop],
             "actuators": [v.actuators.start, v.actuators.stop],
             "support_sites": [first_site, first_site + len(sites)],
-            "behaviour_rate": a.behaviour.control_rate, "update_every": r.every,
+            "behaviour_rate": a.behaviour.rate_for(a.character), "update_every": r.every,
             "phase_events": r.behaviour.phase_events, "total_mass": float(model.body_subtreemass[v.root]),
             "support_site_side": [model.body(model.site_bodyid[i]).name[-1] for i in sites],
             "dof_names": [model.actuator(i).name[len(a.prefix):] for i in range(v.actuators.start, v.actuators.stop)],

@@ -143,6 +143,10 @@ def test_the_scaled_running_table_is_passed_as_the_run_s_table(man, woman):
     unscaled, params0, _ = controller_for("running", man, body, "unscaled")
     assert params0 == {"table": SpeedTable.load("man").to_table()}       # the man's own table, as it is
     assert [d.kp for d in unscaled.dofs] == [d.kp for d in man.dofs]
+    # Fig. 6's time step and control period: x L^1/2 in the scaled columns, the man's unscaled
+    assert character.time_scale == pytest.approx(math.sqrt(CharacterPair(man, character).length), rel=1e-12)
+    assert controller_for("running", man, body, "geometric")[0].time_scale == character.time_scale
+    assert unscaled.time_scale == 1.0
 
 
 def test_running_at_50_percent_keeps_the_seeds_ordering():

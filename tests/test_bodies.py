@@ -243,6 +243,81 @@ def test_scaled_to_a_height_and_mass(man):
     compile_model(body)
 
 
+# ---------------------------------------------------------------- Fig. 6's time: step and control rate
+
+def test_fig6_the_childs_step_and_control_period_are_the_mans_times_root_L(man):
+    """Fig. 6 scales the integration step (and with it the control period) by L^1/2, L the leg-length
+    ratio: the child's 1 ms x L^1/2 physics step, 200 Hz / L^1/2 running and 100 Hz / L^1/2 balance."""
+    from sim_core.character.dimensions import leg_length_ratio
+    from sim_core.character.model import TIMESTEP, character_timestep
+    from sim_core.skills import behaviour_class
+    child = load_character("child")
+    root_L = math.sqrt(leg_length_ratio(man, child))
+    assert root_L == pytest.approx(math.sqrt(0.39 / 0.855), rel=0.01)          # Fig. 3's leg over ours
+    assert child.time_scale == pytest.approx(root_L, rel=1e-12)
+    assert character_timestep(child) == pytest.approx(TIMESTEP * root_L, rel=1e-12)
+    assert compile_model(child)[0].opt.timestep == pytest.approx(TIMESTEP * root_L, rel=1e-6)   # MJCF's 6 digits
+    running, balance = behaviour_class("running"), behaviour_class("balance")
+    assert running.rate_for(child) == pytest.approx(running.control_rate / root_L, rel=1e-12)
+    assert balance.rate_for(child) == pytest.approx(balance.control_rate / root_L, rel=1e-12)
+    meta = run(RunRequest("balance", child, duration=0.1)).meta
+    assert meta["timestep"] == pytest.approx(TIMESTEP * root_L, rel=1e-6)
+    assert meta["control_rate"] == pytest.approx(balance.control_rate / root_L, rel=1e-12)
+    assert meta["steps_per_tick"] == 10                                   # the same steps per tick as the man's
+
+
+@pytest.mark.parametrize("name", ["man", "woman"])
+def test_the_thesis_characters_keep_1_ms_and_their_rates_exactly(name):
+    """The man's and the woman's tables and plans were made at 1 ms, 200 Hz (balance 100 Hz): their
+    specs carry no time scale, and their runs use exactly those numbers."""
+    from sim_core.character.model import TIMESTEP
+    from sim_core.skills import behaviour_class
+    spec = load_character(name)
+    assert "time_scale" not in spec.data and spec.time_scale == 1.0
+    assert compile_model(spec)[0].opt.timestep == TIMESTEP == 0.001
+    assert behaviour_class("running").rate_for(spec) == 200.0 and behaviour_class("balance").rate_for(spec) == 100.0
+    meta = run(RunRequest("running", spec, params={"speed": 3.0}, duration=0.1)).meta
+    assert (meta["timestep"], meta["control_rate"], meta["steps_per_tick"]) == (0.001, 200.0, 5)
+
+
+def test_every_made_body_carries_its_time_scale(man, woman):
+    """between, scaled_to and the Fig. 3 presets: the time scale of the body it is made from x L^1/2."""
+    from sim_core.character.dimensions import leg_length_ratio
+    for data in (between(man, woman, 0.7), scaled_to(man, 1.5, 60.0)):
+        body = CharacterSpec(data)
+        assert body.time_scale == pytest.approx(math.sqrt(leg_length_ratio(man, body)), rel=1e-12)
+        assert body.time_scale < 1.0
+    assert CharacterSpec(between(man, woman, 0.0)).time_scale == 1.0
+    for name in PRESETS:
+        assert load_character(name).time_scale == pytest.approx(
+            math.sqrt(leg_length_ratio(man, load_character(name))), rel=1e-12)
+
+
+def test_a_scaled_characters_run_replays_bit_for_bit():
+    from sim_core.simulate import largest_difference, replay
+    trajectory = run(RunRequest("running", "child", params={"speed": 2.5}, duration=1.5))
+    assert trajectory.meta["timestep"] != 0.001
+    assert largest_difference(trajectory, replay(trajectory)) == 0.0
+
+
+@pytest.mark.parametrize("value", [0, -1.0, 3.0, float("nan"), "fast", True])
+def test_a_bad_time_scale_is_refused_in_one_line(value):
+    from sim_core.errors import RigFileError
+    data = json.loads((RIGS_DIR / "child.json").read_text())
+    data["time_scale"] = value
+    with pytest.raises(RigFileError) as error:
+        CharacterSpec(data, "bad.json")
+    message = str(error.value)
+    assert "\n" not in message and "time_scale" in message and "allowed range is [0.5, 2]" in message
+
+
+def test_a_scene_refuses_actors_of_different_time_scales():
+    from sim_core.scene import SceneError, scene_from_dict
+    with pytest.raises(SceneError, match="one physics step, so its actors' time scales must be equal"):
+        scene_from_dict({"actors": [{"name": "a", "character": "man", "behaviour": "balance"},
+                                    {"name": "b", "character": "child", "behaviour": "balance", "position": [0, 3]}]})
+
+
 def _balance(character):
     trajectory = run(RunRequest("balance", character, duration=5.0))
     return trajectory.meta
@@ -256,7 +331,8 @@ def test_new_bodies_balance_for_5_s(man, woman, make):
     meta = _balance(character)
     assert meta["outcome"] == "success", meta["metrics"]
     assert meta["metrics"]["fell"] is False and meta["metrics"]["stepped"] is False
-    assert meta["metrics"]["duration"] == pytest.approx(5.0)
+    tick = meta["steps_per_tick"] * meta["timestep"]              # a run ends on a whole control tick
+    assert 5.0 - 1e-9 <= meta["metrics"]["duration"] < 5.0 + tick
     assert meta["metrics"]["com_inside_support_throughout"]
     # standing height held: the pelvis did not sink
     assert meta["metrics"]["min_pelvis_height"] > 0.9 * meta["metrics"]["final_pelvis_height"]

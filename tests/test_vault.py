@@ -291,3 +291,17 @@ def test_arms_up_before_the_board_keeps_the_horse_on_the_hands_and_the_second_fl
     turned = [t.meta["metrics"]["rotation_at_touchdown"] for t in (upright, short)]
     print(f"rotation at the mat touchdown: {turned[0]:.2f} rad (touchdown_lean 0), {turned[1]:.2f} (0.4)")
     assert turned[0] > turned[1] + 0.5
+
+
+def test_the_palm_law_turns_the_palms_down_as_far_as_the_wrists_reach(vault):
+    """palm_down (off in the woman's table): each wrist servoed in the first flight from its
+    forearm's measured orientation turns the palm from ~94 deg off palm-down to ~30 at the horse
+    touchdown (measured: 29.8, 29.3), no closer: the forearms arrive nearly vertical and the wrist
+    reaches 70 deg (the rig's range) of the ~88 needed. She then falls in the landing (docs/vault.md)."""
+    from sim_core.skills.vault.behaviour import calibrated
+    params = dict(calibrated("woman", "human")["settings"], palm_down=1.0, low_level=1.0)
+    turned = run(RunRequest("vault", "woman", params=params, duration=0.8)).meta["metrics"]["palm_angle_at_horse_deg"]
+    default = vault.meta["metrics"]["palm_angle_at_horse_deg"]
+    print(f"palms at the horse touchdown: {default[0]:.1f}, {default[1]:.1f} deg (the woman's table); "
+          f"{turned[0]:.1f}, {turned[1]:.1f} deg (palm_down)")
+    assert min(default) > 80 and max(turned) < 35

@@ -13,6 +13,8 @@ import tempfile
 from pathlib import Path
 
 ROOT = Path.cwd()                   # docs are written under the folder it runs in (the checkout)
+APPARATUS_COLOURS = {"springboard": (0.85, 0.55, 0.25), "vault_table": (0.35, 0.18, 0.10),
+                     "landing_mat": (0.15, 0.30, 0.75)}     # so they stand out from the grey floor
 
 
 def main(argv=None) -> int:
@@ -25,14 +27,23 @@ def main(argv=None) -> int:
     parser.add_argument("--frames", type=int, default=8, help="pictures in the strip")
     parser.add_argument("--start", type=float, default=0.0, help="first picture at this time (s)")
     parser.add_argument("--end", type=float, default=None, help="last picture at this time (s)")
+    parser.add_argument("--times", default=None, metavar="T,T,...",
+                        help="the pictures at these times (s) instead of --frames evenly from --start to --end")
     parser.add_argument("--size", type=int, default=260, help="height of one picture in pixels")
-    parser.add_argument("--follow", action="store_true",
-                        help="the camera follows the COM (dives: the body falls 10 m); default: fixed")
+    parser.add_argument("--follow", nargs="?", const="com", choices=("com", "path"), default=None,
+                        help="the camera follows the COM (dives: the body falls 10 m); --follow path: only "
+                             "along the path, at a fixed height (a vault: the apparatus stays put); default: fixed")
     parser.add_argument("--view", choices=("side", "front"), default="side",
                         help="side: looking across the path (default); front: from ahead of the character, "
                              "looking back at it (a sideways jump)")
+    parser.add_argument("--camera-height", type=float, default=1.0, help="the camera's height (m) unless it follows the COM")
+    parser.add_argument("--lens", type=float, default=50.0, help="the camera's focal length (mm); shorter sees more")
     parser.add_argument("--out", required=True)
     args = parser.parse_args(argv)
+    try:
+        chosen = None if args.times is None else [float(t) for t in args.times.split(",")]
+    except ValueError:
+        parser.error(f"--times {args.times!r} is not a list of times in seconds, e.g. 0,0.25,1.5")
 
     import bpy
     import numpy as np
@@ -49,8 +60,16 @@ def main(argv=None) -> int:
                                                duration=args.duration, strength=args.strength)
     last = trajectory.arrays["time"][-1]
     end = last if args.end is None else min(args.end, last)
-    times = [args.start + (end - args.start) * k / max(args.frames - 1, 1) for k in range(args.frames)]
+    if chosen is not None:
+        times = chosen
+        bad = [t for t in times if not 0.0 <= t <= last]
+        if bad:
+            parser.error(f"--times {bad[0]:g} s is outside the run; allowed range is [0, {last:g}] s")
+        args.frames, args.start, end = len(times), times[0], times[-1]
+    else:
+        times = [args.start + (end - args.start) * k / max(args.frames - 1, 1) for k in range(args.frames)]
 
+    _colour_apparatus(bpy)
     # ground, light, a side camera looking at the character's path (the sim's X is Blender's -Y)
     world = trajectory.meta.get("world", {})
     if not world.get("platform"):     # a dive brings its platform and water
@@ -62,12 +81,12 @@ def main(argv=None) -> int:
     travel = trajectory.arrays["com"][-1, :2] - trajectory.arrays["com"][0, :2]
     camera = bpy.data.objects.new("camera", bpy.data.cameras.new("camera"))
     if args.view == "front":       # ahead of the character (sim +X = Blender -Y), looking back along +Y
-        camera.location = (float(travel[1]) / 2, -4.2, 1.0)
+        camera.location = (float(travel[1]) / 2, -4.2, args.camera_height)
         camera.rotation_euler = (math.radians(90), 0, 0)
     else:
-        camera.location = (4.2, -float(travel[0]) / 2, 1.0)
+        camera.location = (4.2, -float(travel[0]) / 2, args.camera_height)
         camera.rotation_euler = (math.radians(90), 0, math.radians(90))
-    camera.data.lens = 50
+    camera.data.lens = args.lens
     scene.collection.objects.link(camera)
     scene.camera = camera
     scene.render.engine = "CYCLES"
@@ -87,8 +106,9 @@ def main(argv=None) -> int:
             scene.frame_set(scene.frame_start + int(round(t * scene.render.fps)))
             if args.follow:          # sim (x, y, z) -> Blender (y, -x, z)
                 c = com[min(int(np.searchsorted(sim_time, t)), len(com) - 1)]
-                camera.location = ((float(c[1]), -4.2, float(c[2])) if args.view == "front"
-                                   else (4.2, -float(c[0]), float(c[2])))
+                height = float(c[2]) if args.follow == "com" else camera.location[2]
+                camera.location = ((float(c[1]), -4.2, height) if args.view == "front"
+                                   else (4.2, -float(c[0]), height))
             scene.render.filepath = str(Path(tmp) / f"f{k:02d}.png")
             bpy.ops.render.render(write_still=True)
             pictures.append(Image.open(scene.render.filepath).convert("RGB"))
@@ -104,6 +124,19 @@ def main(argv=None) -> int:
           f"{trajectory.meta['outcome']}")
     del rig, action
     return 0
+
+
+def _colour_apparatus(bpy) -> None:
+    """The vaulting apparatus's scenery objects (if any) in their own colours."""
+    from blender_addon.scenery import APPARATUS_NAMES
+    for geom, colour in APPARATUS_COLOURS.items():
+        obj = bpy.data.objects.get(APPARATUS_NAMES[geom])
+        if obj is None:
+            continue
+        material = bpy.data.materials.new(f"filmstrip {geom}")
+        material.use_nodes = True
+        material.node_tree.nodes["Principled BSDF"].inputs["Base Color"].default_value = (*colour, 1.0)
+        obj.data.materials.append(material)
 
 
 if __name__ == "__main__":

@@ -275,12 +275,19 @@ def frame_poses(trajectory_arrays: dict, names: list[str], fps: float, start_fra
     if absent:
         raise ValueError(f"{missing}: {', '.join(absent)}")
     order = [body_names.index(n) for n in names]
+    times, frames, at = run_frames(trajectory_arrays, fps, start_frame, duration)
+    pos, quat = resample(times, trajectory_arrays["body_pos"][:, order], trajectory_arrays["body_quat"][:, order], at)
+    return frames, pos, quat
+
+
+def run_frames(trajectory_arrays: dict, fps: float, start_frame: int = 1, duration: float | None = None):
+    """(the run's sample times from 0, the scene's frames, their times): the frames that fall
+    inside the run (or its first ``duration`` seconds)."""
     times = np.asarray(trajectory_arrays["time"], float)
     times = times - times[0]
     span = float(times[-1]) if duration is None else min(float(duration), float(times[-1]))
     frames, at = frame_times(span, fps, start_frame)
-    pos, quat = resample(times, trajectory_arrays["body_pos"][:, order], trajectory_arrays["body_quat"][:, order], at)
-    return frames, pos, quat
+    return times, frames, at
 
 
 def bake_channels(trajectory_arrays: dict, rest: np.ndarray, names: list[str], parents: list[int],

@@ -11,7 +11,7 @@ import mujoco
 import numpy as np
 
 from .axes import SIM_TO_BLENDER, sim_to_blender_points, sim_to_blender_rotations
-from .bake_math import frame_poses, make_continuous, matrix_to_quat, quat_to_matrix
+from .bake_math import frame_poses, make_continuous, matrix_to_quat, quat_to_matrix, run_frames
 
 PRISM_SIDES = 16        # a capsule or cylinder drawn as a 16-sided prism
 
@@ -33,6 +33,32 @@ def prop_keys(trajectory_arrays: dict, names: list[str], fps: float, start_frame
                                     missing="prop bodies not in the trajectory")
     rot = sim_to_blender_rotations(quat_to_matrix(quat))
     return PropKeys(frames, list(names), sim_to_blender_points(pos), make_continuous(matrix_to_quat(rot)))
+
+
+@dataclass
+class SlideKeys:
+    frames: np.ndarray          # (F,) scene frames
+    offset: np.ndarray          # (F, 3) the body's displacement from its rest place, in Blender axes
+
+
+def slide_keys(trajectory_arrays: dict, model: mujoco.MjModel, joint: str, fps: float,
+               start_frame: int = 1) -> SlideKeys:
+    """One key per scene frame of a world-fixed prop body's travel along its slide joint
+    ``joint`` (the springboard's deck): the joint's recorded qpos, linearly resampled, times the
+    joint's axis in the world at the model's rest pose (qpos = 0 is where the scenery draws it).
+    The recorder leaves such a body out of ``body_pos``, so its motion is read from ``qpos``."""
+    j = mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_JOINT, joint)
+    if j < 0 or model.jnt_type[j] != mujoco.mjtJoint.mjJNT_SLIDE:
+        raise ValueError(f"{joint!r} is not a slide joint of the run's model")
+    qpos = np.asarray(trajectory_arrays["qpos"], float)
+    if qpos.shape[1] != model.nq:
+        raise ValueError(f"the trajectory's qpos has {qpos.shape[1]} entries; the model has {model.nq}")
+    times, frames, at = run_frames(trajectory_arrays, fps, start_frame)
+    travel = np.interp(at, times, qpos[:, model.jnt_qposadr[j]])
+    data = mujoco.MjData(model)
+    mujoco.mj_kinematics(model, data)
+    axis = data.xmat[model.jnt_bodyid[j]].reshape(3, 3) @ model.jnt_axis[j]
+    return SlideKeys(frames, sim_to_blender_points(travel[:, None] * axis))
 
 
 def body_mesh(model: mujoco.MjModel, body: int) -> tuple[np.ndarray, list[tuple[int, ...]]]:

@@ -5,7 +5,9 @@ scaled and mass-scaled (SEEDS-WAVE2.md §5.4, §8.5 S5).
 The bodies are ``between(man, woman, x)``. The controller is everything the man's run is set
 with, carried to the new body as each column says:
 
-- the spec's joint servos (kp, kv, torque limits): adapt/servos.controller_servos;
+- the spec's joint servos (kp, kv, torque limits) and its time scale (the physics step and the
+  control period, x L^1/2 in both scaled columns, the man's 1 ms and rates unscaled):
+  adapt/servos.controller_servos;
 - every number of the run's request (the animator's parameters and the tuned settings at their
   man's values, e.g. the desired speed, the timing of a knee bend): adapt/settings.scale_settings;
 - for running, the man's table (SpeedTable of running_man.json, speeds and every column),
@@ -15,8 +17,7 @@ with, carried to the new body as each column says:
 that leaves its setting's range (the ranges are the man's search ranges) is held at the range's
 end, and the report lists every such value: the run then is not purely Fig. 6's.
 
-L is the leg-length ratio. Not scaled (outside adapt/): the physics step and the control rate
-(Fig. 6 scales the step by L^1/2; TIMESTEP is a constant of character/model.py).
+L is the leg-length ratio.
 
     python -m sim_core character scaling-report [--cap 20] [--out docs/bodies.md]
 """
@@ -104,11 +105,12 @@ def controller_for(skill: str, man: CharacterSpec, body: dict, controller: str) 
 
 
 def time_before_falling(skill: str, character: CharacterSpec, params: dict, cap: float) -> tuple[float, bool]:
-    """Seconds until the run falls (standard_metrics' fall_time), or ``cap`` if it does not."""
+    """Seconds until the run falls (standard_metrics' fall_time), or ``cap`` if it does not (a run
+    lasts whole control ticks, so a scaled body's may end a fraction of a tick past the cap)."""
     from ..simulate import RunRequest, run
     trajectory = run(RunRequest(skill, character, params=params, duration=cap))
     fall = trajectory.meta["metrics"].get("fall_time")
-    return (float(fall), True) if fall is not None else (float(trajectory.arrays["time"][-1]), False)
+    return (float(fall), True) if fall is not None else (min(float(trajectory.arrays["time"][-1]), cap), False)
 
 
 def experiment(skill: str, fractions=FRACTIONS, controllers=CONTROLLERS, cap: float = CAP,

@@ -53,5 +53,5 @@ def fig3_measures(character: CharacterSpec) -> dict[str, float]:
 
 
 def leg_length_ratio(old: CharacterSpec, new: CharacterSpec) -> float:
-    """Fig. 6's L: the new body's leg length (hip joint to ankle joint, Fig. 3) over the old body's."""
+    """L of Fig. 6 for runners ([B] 144): ``new``'s leg length over ``old``'s (hip joint to ankle joint)."""
     return fig3_measures(new)["leg length"] / fig3_measures(old)["leg length"]

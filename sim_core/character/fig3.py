@@ -34,7 +34,7 @@ import math
 import numpy as np
 from scipy.optimize import least_squares
 
-from ..adapt.servos import mass_scaled_servos
+from ..adapt.servos import mass_scaled_servos, scaled_time_scale
 from .dimensions import SEGMENTS, fig3_measures, leg_length_ratio
 from .reshape import BodyScale, reshaped
 from .spec import CharacterSpec
@@ -219,4 +219,5 @@ def build_fig3_character(name: str, base: CharacterSpec) -> dict:
     data["made"] = {"preset": name, "from": base.name, "fit": dict(zip(PARAMETERS, map(float, p)))}
     if depth_floor is not None:
         data["made"]["trunk depth floor"] = depth_floor
+    data["time_scale"] = scaled_time_scale(base, leg_ratio)     # Fig. 6: physics step and control period x L^1/2
     return data

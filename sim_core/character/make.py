@@ -15,7 +15,7 @@ import math
 import re
 from pathlib import Path
 
-from ..adapt.servos import mass_scaled_servos
+from ..adapt.servos import mass_scaled_servos, scaled_time_scale
 from .dimensions import leg_length_ratio
 from .morph import lerp
 from .reshape import BodyScale, reshaped, standing_height
@@ -48,7 +48,8 @@ def check_fraction(fraction: float) -> None:
 def between(a: CharacterSpec, b: CharacterSpec, fraction: float, name: str | None = None) -> dict:
     """The character ``fraction`` of the way from ``a`` to ``b``: every number of the bodies
     (masses, COMs, inertias, joint positions, shapes, contacts, servo gains, torque limits)
-    interpolated linearly, as the seed's intermediate characters are ([B] 65)."""
+    interpolated linearly, as the seed's intermediate characters are ([B] 65). Its time scale
+    (physics step and control period) is ``a``'s x L^1/2, L its leg length over ``a``'s (Fig. 6)."""
     check_fraction(fraction)
     if a.body_names != b.body_names or [d.name for d in a.dofs] != [d.name for d in b.dofs]:
         raise ParameterError(f"{a.name} and {b.name} have different bodies or joints; only characters "
@@ -62,6 +63,7 @@ def between(a: CharacterSpec, b: CharacterSpec, fraction: float, name: str | Non
     out["source"] = f"{100 * fraction:g} % of the way from {a.name} to {b.name} (linear interpolation)"
     out["strength"] = {"interpolated": [a.name, b.name], "note": "kp, kv and torque limits interpolated"}
     out["made"] = {"from": a.name, "to": b.name, "fraction": fraction}
+    out["time_scale"] = scaled_time_scale(a, leg_length_ratio(a, CharacterSpec(out)))
     return out
 
 
@@ -81,7 +83,8 @@ def _mix(x, y, t):
 def scaled_to(base: CharacterSpec, height: float, mass: float, name: str | None = None) -> dict:
     """``base`` scaled to ``height`` (m, top of the head) and ``mass`` (kg): every body's long axis
     by one factor, found so the height comes out right, every mass by mass / base's total (the
-    proportions and densities of ``base``); servos mass-scaled (Fig. 6), L = the leg-length ratio."""
+    proportions and densities of ``base``); servos mass-scaled and the time scale x L^1/2 (Fig. 6),
+    L = the leg-length ratio."""
     if not (math.isfinite(height) and HEIGHT_RANGE[0] <= height <= HEIGHT_RANGE[1]):
         raise ParameterError(f"--height={height:g} m is out of range; allowed range is "
                              f"[{HEIGHT_RANGE[0]:g}, {HEIGHT_RANGE[1]:g}] m")
@@ -100,6 +103,7 @@ def scaled_to(base: CharacterSpec, height: float, mass: float, name: str | None 
     data["source"] = f"{base.name} scaled to {height:g} m and {mass:g} kg (sim_core.character.make)"
     data["strength"] = {"scaled_from": base.name, "note": "kp, kv and torque limits mass-scaled (Fig. 6)"}
     data["made"] = {"from": base.name, "height": height, "mass": mass}
+    data["time_scale"] = scaled_time_scale(base, leg_ratio)
     return data
 
 

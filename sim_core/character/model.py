@@ -2,7 +2,8 @@
 sim_core.world's; a scene puts several characters, prefixed, into one spec).
 
 Physics choices (ARCHITECTURE.md "Choices"):
-  * timestep 1 ms with the ``implicitfast`` integrator: the PD servos are MuJoCo position
+  * timestep 1 ms (the man's; a body made by scaling multiplies it by its spec's ``time_scale``,
+    Fig. 6's L^1/2: ``character_timestep``) with the ``implicitfast`` integrator: the PD servos are MuJoCo position
     actuators whose damping (kv) is integrated implicitly, so stiff servos stay stable at 1 ms,
     and 1 ms resolves the foot contacts of landings (Wooten used a fixed-step RK4).
   * every SD/FAST degree of freedom is a hinge joint (gimbal = 3 hinges in the file's pin
@@ -65,11 +66,16 @@ def _quat_from_x_to(direction) -> list[float]:
     return list(q / np.linalg.norm(q))
 
 
-def new_spec(name: str) -> mujoco.MjSpec:
+def character_timestep(character: CharacterSpec) -> float:
+    """The physics step of ``character``'s runs: the man's TIMESTEP x its Fig. 6 time scale."""
+    return TIMESTEP * character.time_scale
+
+
+def new_spec(name: str, timestep: float = TIMESTEP) -> mujoco.MjSpec:
     """An empty MjSpec with the physics choices of the module doc (gravity is the world's)."""
     spec = mujoco.MjSpec()
     spec.modelname = name
-    spec.option.timestep = TIMESTEP
+    spec.option.timestep = timestep
     spec.option.integrator = mujoco.mjtIntegrator.mjINT_IMPLICITFAST
     spec.option.gravity = World().gravity()
     spec.option.cone = mujoco.mjtCone.mjCONE_ELLIPTIC
@@ -84,7 +90,7 @@ def build_mjspec(character: CharacterSpec, world: World | None = None, strength:
     """One character, unprefixed, standing at the origin facing +X, in ``world``; ``also_excluded``:
     body pairs kept from colliding besides its own (a morph's: the pairs of the body it turns into)."""
     world = world or World()
-    spec = new_spec(f"sim_athletics_{character.name}")
+    spec = new_spec(f"sim_athletics_{character.name}", character_timestep(character))
     add_character(spec, character, world.extra_mass, strength, also_excluded=also_excluded)
     add_world(spec, world, character)      # after the character: a moving prop's body comes last
     add_attachments(spec, world, character)

@@ -22,6 +22,9 @@ from ..resources import rigs_dir
 RIGS_DIR = rigs_dir()
 SPEC_VERSION = 1
 STRENGTH_CHOICES = ("human", "unlimited")
+# A body made by scaling carries Fig. 6's time scale (physics step and control period x L^1/2,
+# sim_core.adapt.servos.scaled_time_scale); the thesis man and woman have none, i.e. 1.
+TIME_SCALE_RANGE = (0.5, 2.0)      # L^1/2 for L = 0.25-4: far beyond the 0.8-2.2 m bodies `make` takes
 
 
 @dataclass(frozen=True)
@@ -107,6 +110,12 @@ class CharacterSpec:
         self.standing_pose = np.array([data["standing_pose"].get(d.name, 0.0) for d in self.dofs])
 
     @property
+    def time_scale(self) -> float:
+        """Fig. 6's time factor against the man's (his 1 ms physics step and each behaviour's
+        control period are multiplied by it); 1 for a spec without ``time_scale``."""
+        return float(self.data.get("time_scale", 1.0))
+
+    @property
     def total_mass(self) -> float:
         return float(sum(b["mass"] for b in self.bodies))
 
@@ -151,6 +160,11 @@ def _validate(data: dict, path: str) -> None:
         fail("not a Sim Athletics character spec (missing format 'sim_athletics.character')")
     if data.get("version") != SPEC_VERSION:
         fail(f"spec version {data.get('version')!r} not supported (expected {SPEC_VERSION})")
+    time_scale = data.get("time_scale", 1.0)
+    low, high = TIME_SCALE_RANGE
+    if not (isinstance(time_scale, (int, float)) and not isinstance(time_scale, bool) and math.isfinite(time_scale)
+            and low <= time_scale <= high):
+        fail(f"time_scale {time_scale!r} is out of range; allowed range is [{low:g}, {high:g}]")
     bodies = data.get("bodies")
     if not isinstance(bodies, list) or not bodies:
         fail("'bodies' must be a non-empty list")

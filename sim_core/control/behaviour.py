@@ -50,7 +50,8 @@ class Behaviour:
     schema: ClassVar[Schema]                  # what an animator sets
     settings_schema: ClassVar[Schema] = Schema()   # what a search sets (a tuned table's rows; docs/tables.md)
     default_duration: ClassVar[float] = 5.0
-    control_rate: ClassVar[float] = 200.0     # Hz at which update() runs; the servos run every step
+    control_rate: ClassVar[float] = 200.0     # Hz at which update() runs for the man (the servos run every
+                                              # step); a run's own rate is rate_for(its character)
     # True for a skill that measures or aims in the world's own axes (a somersault's rotation in
     # the X-Z plane, a jump's target from the origin): in a scene it must start at the origin
     # facing +X (sim_core.scene refuses it elsewhere)
@@ -59,7 +60,14 @@ class Behaviour:
     def __init__(self, params: dict[str, float], ctx: ControlContext):
         self.params = params
         self.ctx = ctx
+        self.control_rate = self.rate_for(ctx.character)      # this run's rate (Hz), shadowing the class's
         self.phase_events: list[tuple[float, str]] = []
+
+    @classmethod
+    def rate_for(cls, character: CharacterSpec) -> float:
+        """The control rate (Hz) on ``character``: the man's ``control_rate`` over the body's Fig. 6
+        time scale, so the control period scales with the physics step (x L^1/2)."""
+        return cls.control_rate / character.time_scale
 
     def start(self, t: float) -> None:
         """Called once before the first physics step."""

@@ -107,7 +107,13 @@ VAULT_SETTINGS = Schema(
     setting("reach_shoulder_x", "rad", 1.0, 1.75,
             "shoulder angle about the arm's forward axis in the first flight: the raised arms parallel, the hands "
             "shoulder-width apart (the standing pose's 1.43 brings them together overhead)"),
-    setting("wrist_extension", "rad", -1.2, 1.2, "wrist extension of the palms-down hands"),
+    setting("wrist_extension", "rad", -1.2, 1.2, "wrist extension of the palms-down hands (held unless palm_down)"),
+    setting("forearm_twist", "rad", -1.4, 1.4,
+            "the forearms' twist (elbow_*_y, the same on both sides) in the first flight, turning the palms toward "
+            "the horse (0: as standing)"),
+    setting("palm_down", "bool", 0.0, 1.0,
+            "1 = in the first flight each wrist is servoed every tick to turn its palm straight down, from its "
+            "forearm's measured orientation (within the wrist's range); 0 = wrist_extension held"),
     setting("elbow_gain", "1", 1.0, 20.0, "gain factor of the elbow servos on the horse (arms straight)"),
     setting("horse_hip", "rad", -1.0, 0.5, "hip angle on the horse (0: the layout)"),
     setting("layout_arm", "rad", 0.0, 3.14, "shoulder flexion in the second flight's layout"),
@@ -506,6 +512,8 @@ class Vault(Sequence):
         body = ctx.actor.body_id
         self.pelvis, self.chest = body("PELVIS"), body("CHEST1")
         self.shoulders = [body("UARMR"), body("UARML")]
+        self.forearms = [body("LARMR"), body("LARML")]
+        self.wrist_range = m.jnt_range[[ctx.actor.joint_id(f"wrist_{side}_{axis}") for side in "rl" for axis in "xy"]]
         self.shoulder_range = m.jnt_range[[ctx.actor.joint_id("shoulder_r_z"), ctx.actor.joint_id("shoulder_l_z")]]
         self._last_raw = 0.0
         self._pitch = 0.0
@@ -528,9 +536,10 @@ class Vault(Sequence):
         def first_flight(t):
             s.set_gains(s.indices(list(legs)), s.default_kp[s.indices(list(legs))], s.default_kv[s.indices(list(legs))])
             return PoseLaw(ctx, both_sides({"hip_*_y": c["flight_hip"], "knee_*_y": 0.0, "ankle_*_y": 0.5,
-                                            "elbow_*_z": 0.0, "wrist_*_x": c["wrist_extension"],
+                                            "elbow_*_z": 0.0, "elbow_*_y": c["forearm_twist"],
+                                            "wrist_*_x": c["wrist_extension"],
                                             "shoulder_*_x": c["reach_shoulder_x"]}), CONSTANTS.servo_move,
-                           c["arm_gain"], arms_z, law=lambda t: self.reach_law(t))
+                           c["arm_gain"], arms_z, law=lambda t: (self.reach_law(t), self.palm_law(t)))
 
         def horse(t):
             return PoseLaw(ctx, both_sides({"hip_*_y": c["horse_hip"], "elbow_*_z": 0.0}), CONSTANTS.servo_move,
@@ -542,7 +551,8 @@ class Vault(Sequence):
             self.second_opened = c["second_pike"] == 0.0
             self.second_piked = False
             return PoseLaw(ctx, both_sides({"hip_*_y": 0.0, "knee_*_y": 0.0, "shoulder_*_z": c["layout_arm"],
-                                            "hip_*_x": c["feet_apart"], "wrist_*_x": 0.0}), CONSTANTS.servo_move,
+                                            "hip_*_x": c["feet_apart"], "wrist_*_x": 0.0, "wrist_*_y": 0.0,
+                                            "elbow_*_y": 0.0}), CONSTANTS.servo_move,
                            law=lambda t: self.second_flight_law(t))
 
         def ready_to_land(b, t):
@@ -642,6 +652,22 @@ class Vault(Sequence):
             goals.append(gamma if side == "r" else -gamma)
         i = s.indices(["shoulder_r_z", "shoulder_l_z"])
         s.start[i] = s.goal[i] = np.clip(goals, self.shoulder_range[:, 0], self.shoulder_range[:, 1])
+        s.t0[i] = t
+
+    def palm_law(self, t: float) -> None:
+        """palm_down: each wrist (x, then y) turned so that its palm faces straight down, solved from
+        its forearm's measured orientation F: the hand's frame is F R_x(w_x) R_y(w_y), and its
+        normal (the thin axis, up in the palm-down reference pose) is up when R_x R_y e_z = F^T e_z
+        = u, i.e. w_y = asin(u_x), w_x = atan2(-u_y, u_z); clipped to the wrist's range."""
+        if not self.cfg["palm_down"]:
+            return
+        d, s = self.ctx.data, self.ctx.servos
+        goals = []
+        for forearm in self.forearms:
+            up = d.xmat[forearm].reshape(3, 3)[2]             # F^T e_z: the world's up in the forearm's frame
+            goals += [math.atan2(-float(up[1]), float(up[2])), math.asin(float(np.clip(up[0], -1.0, 1.0)))]
+        i = s.indices(["wrist_r_x", "wrist_r_y", "wrist_l_x", "wrist_l_y"])
+        s.start[i] = s.goal[i] = np.clip(goals, self.wrist_range[:, 0], self.wrist_range[:, 1])
         s.t0[i] = t
 
     def second_flight_law(self, t: float) -> None:
