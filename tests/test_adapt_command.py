@@ -158,6 +158,23 @@ def test_a_search_whose_table_checks_worse_is_not_kept(tables, tmp_path, monkeyp
     assert tuned.load("leap", "child")["vertical"] == scaled["vertical"]
 
 
+def test_a_search_that_fails_where_the_scaled_table_failed_is_kept_and_narrowed(tables, tmp_path, monkeypatch):
+    """Neither the scaled nor the searched landing table passes; the search's is the body's own
+    calibration, so it is kept and cut to the speeds inside the failing draws, then checked again."""
+    (tables / "landing_child.json").unlink(missing_ok=True)
+    woman = tuned.load("landing", "woman")
+    searched = {k: woman[k] for k in ("foot_delta", "fast_touchdown")}
+    checks = iter([Check(False, "2/6", 6, failed=(-0.6, 1.0)), Check(False, "3/6", 6, covers=False, failed=(0.7,)),
+                   Check(True, "6/6", 6, covers=False)])
+    monkeypatch.setattr(ADAPTERS["land"], "search", lambda character, workers, minutes, check: (searched, 20))
+    monkeypatch.setattr(ADAPTERS["land"], "check", lambda character, rng: next(checks))
+    [result] = command.adapt("child", ["land"], tmp_path / "out", minutes=5, workers=1, seed=1, redo=None,
+                             say=lambda line: None)
+    assert (result.status, result.route) == ("works in part of the range", "scaled from the woman and searched")
+    rows = tuned.load("landing", "child")["foot_delta"]
+    assert all(max(row["speed"]) < 0.7 for row in rows) and any(min(row["speed"]) < 0 for row in rows)
+
+
 def test_an_own_table_that_fails_its_check_is_reported_and_kept(tables, tmp_path, monkeypatch):
     before = (tables / "running_child.json").read_bytes()
     monkeypatch.setattr(ADAPTERS["running"], "check", lambda character, rng: Check(False, "2.5 m/s: fell at 9.0 s", 1))

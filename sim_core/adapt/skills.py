@@ -137,20 +137,41 @@ class LandingAdapter(Adapter):
         spec = load_character(character)
         table = tuned.load("landing", spec.name)
         L = leg_length_ratio(load_character("man"), spec)
+        wanted = (LANDING_SPEEDS[0] * L ** 0.5, LANDING_SPEEDS[1] * L ** 0.5)
         served = landing_speeds(table)
-        low, high = max(LANDING_SPEEDS[0] * L ** 0.5, served[0]), min(LANDING_SPEEDS[1] * L ** 0.5, served[1])
+        low, high = max(wanted[0], served[0]), min(wanted[1], served[1])
         drops = rng.uniform(LANDING_DROPS[0] * L, LANDING_DROPS[1] * L, size=CHECKS)
         speeds = rng.uniform(low, high, size=CHECKS) if high > low else np.full(CHECKS, low)
-        missed = []
+        missed, failed = [], []
         for drop, speed in zip(drops, speeds):
             t = _run("land", character, start=StartState(height=float(drop), velocity=(float(speed), 0.0, 0.0)),
                      duration=LANDING_SECONDS)
             if t.meta["outcome"] != "success":
                 missed.append(f"{drop:.2f} m at {speed:+.2f} m/s ({t.meta['outcome']})")
+                failed.append(float(speed))
         figures = (f"drops {drops.min():.2f}-{drops.max():.2f} m at {speeds.min():+.2f}..{speeds.max():+.2f} m/s "
-                   f"(the table's common speeds within {low:+.2f}..{high:+.2f}): {CHECKS - len(missed)}/{CHECKS} balanced"
-                   + (f"; missed {', '.join(missed)}" if missed else ""))
-        return Check(not missed, figures, CHECKS)
+                   f"(the table's common speeds within {low:+.2f}..{high:+.2f} of {wanted[0]:+.2f}..{wanted[1]:+.2f}): "
+                   f"{CHECKS - len(missed)}/{CHECKS} balanced" + (f"; missed {', '.join(missed)}" if missed else ""))
+        return Check(not missed, figures, CHECKS, covers=(low, high) == wanted, failed=tuple(failed))
+
+    def keep_what_works(self, character: str, check: Check, rng) -> Check | None:
+        """The table's rows cut to the horizontal speeds between the slowest failing draw on each
+        side of standing still (a landing fails at its fast edges), checked again with new draws."""
+        from .. import tuned
+        name = load_character(character).name
+        body = tuned.load("landing", name)
+        above = min((v for v in check.failed if v >= 0.0), default=math.inf)
+        below = max((v for v in check.failed if v < 0.0), default=-math.inf)
+        rows = []
+        for row in body["foot_delta"]:
+            kept = [(v, d) for v, d in zip(row["speed"], row["delta"]) if below < v < above]
+            rows.append(dict(row, speed=[v for v, _ in kept], delta=[d for _, d in kept]))
+        if not all(row["speed"] for row in rows):
+            return None
+        tuned.save("landing", name, dict(body, foot_delta=rows), strengths=["human"])
+        kept = self.check(character, rng)
+        kept.figures += f" (rows cut to the speeds inside ({below:+.2f}, {above:+.2f}) m/s: {check.figures})"
+        return kept
 
     def search(self, character: str, workers: int, minutes: float, check: Check) -> tuple[dict, int]:
         """calibrate land's sweep (every drop, speed and delta), then its fast-touchdown scan."""
