@@ -61,9 +61,24 @@ def test_scaling_to_the_child_shortens_lengths_by_L_and_speeds_by_its_root():
     assert rows[0]["crouch_height"] == pytest.approx(vertical["crouch_height"][0] * L)
 
 
+def test_the_leaps_constants_scale_to_the_child_and_the_man_and_woman_keep_leap_any():
+    """Fig. 6 on the thrust's and landing's constants: times by L^1/2, lengths by L, shares as they
+    are; a body whose leap table holds no constants section uses leap_any's, the same object."""
+    from sim_core.adapt.skills import leg_length_ratio
+    from sim_core.control.leap import CONSTANTS, leap_constants
+    woman, child = load_character("woman"), load_character("child")
+    assert leap_constants("man") is CONSTANTS and leap_constants("woman") is CONSTANTS
+    L = leg_length_ratio(woman, child)
+    scaled = LeapAdapter().scaled_constants(woman, child, tuned.load("leap", "woman"))
+    assert scaled["vertical_timing"] == pytest.approx([t * L ** 0.5 for t in CONSTANTS.vertical_timing])
+    assert scaled["fast_landing_speed"] == pytest.approx([v * L ** 0.5 for v in CONSTANTS.fast_landing_speed])
+    assert scaled["thrust_gain"] == CONSTANTS.thrust_gain and scaled["knee_restore"] == CONSTANTS.knee_restore
+
+
 def test_a_refused_skill_leaves_no_table_behind(tables, tmp_path, monkeypatch):
     """The scaled landing table is written for its check; the check fails and no budget is left for
     a search, so the skill is refused and the child has no landing table afterwards."""
+    (tables / "landing_child.json").unlink(missing_ok=True)     # as before the child's landing was adapted
     monkeypatch.setattr(ADAPTERS["land"], "check", lambda character, rng: Check(False, "measured: fell", 6))
     results = command.adapt("child", ["land"], tmp_path / "out", minutes=0, workers=1, seed=1, redo=None,
                             say=lambda line: None)
@@ -79,6 +94,8 @@ def test_a_table_that_was_there_is_put_back_byte_for_byte(tables, tmp_path, monk
     with tuned.provisional("running", "child"):
         (tables / "running_child.json").write_text("{}")
     assert (tables / "running_child.json").read_bytes() == before
+
+    (tables / "landing_child.json").unlink(missing_ok=True)     # as before the child's landing was adapted
 
     def stopped(character, rng):
         assert (tables / "landing_child.json").exists()       # the scaled table, written for the check
@@ -139,6 +156,23 @@ def test_a_search_whose_table_checks_worse_is_not_kept(tables, tmp_path, monkeyp
     assert (result.status, result.runs) == ("works in part of the range", 5 + 6 + 20 + 6)
     assert "its table checked worse and was not kept: fell" in result.route
     assert tuned.load("leap", "child")["vertical"] == scaled["vertical"]
+
+
+def test_a_search_that_fails_where_the_scaled_table_failed_is_kept_and_narrowed(tables, tmp_path, monkeypatch):
+    """Neither the scaled nor the searched landing table passes; the search's is the body's own
+    calibration, so it is kept and cut to the speeds inside the failing draws, then checked again."""
+    (tables / "landing_child.json").unlink(missing_ok=True)
+    woman = tuned.load("landing", "woman")
+    searched = {k: woman[k] for k in ("foot_delta", "fast_touchdown")}
+    checks = iter([Check(False, "2/6", 6, failed=(-0.6, 1.0)), Check(False, "3/6", 6, covers=False, failed=(0.7,)),
+                   Check(True, "6/6", 6, covers=False)])
+    monkeypatch.setattr(ADAPTERS["land"], "search", lambda character, workers, minutes, check: (searched, 20))
+    monkeypatch.setattr(ADAPTERS["land"], "check", lambda character, rng: next(checks))
+    [result] = command.adapt("child", ["land"], tmp_path / "out", minutes=5, workers=1, seed=1, redo=None,
+                             say=lambda line: None)
+    assert (result.status, result.route) == ("works in part of the range", "scaled from the woman and searched")
+    rows = tuned.load("landing", "child")["foot_delta"]
+    assert all(max(row["speed"]) < 0.7 for row in rows) and any(min(row["speed"]) < 0 for row in rows)
 
 
 def test_an_own_table_that_fails_its_check_is_reported_and_kept(tables, tmp_path, monkeypatch):

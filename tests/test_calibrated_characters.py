@@ -29,7 +29,7 @@ def test_a_skill_is_refused_for_every_character_it_is_not_calibrated_for(skill):
 
 def test_the_characters_a_table_is_for_are_its_own_files():
     assert characters_of("running") == ["child", "imaginary_runner", "man", "woman"]
-    assert characters_of("leap") == ["man", "woman"]
+    assert characters_of("leap") == ["child", "man", "woman"]
 
 
 def test_the_landings_calibration_trials_run_for_a_character_with_no_table():
@@ -45,3 +45,16 @@ def test_the_landings_calibration_trials_run_for_a_character_with_no_table():
                                 start=StartState(height=0.2), duration=0.5))
     assert trajectory.meta["duration"] == pytest.approx(0.5)
     assert "tuned.delete" not in inspect.getsource(calibrate.calibrate)
+
+
+def test_a_landing_starting_faster_than_its_table_serves_is_refused_in_one_line():
+    """The child's landing table serves the horizontal speeds its every drop row landed (from the
+    Fig. 6-scaled sweep); a faster start is refused before anything is simulated."""
+    from sim_core.control.leap import landing_speeds
+    from sim_core.simulate import StartState
+    from sim_core.tuned import load
+    low, high = landing_speeds(load("landing", "child"))
+    with pytest.raises(ParameterError) as error:
+        run(RunRequest("land", "child", start=StartState(height=0.2, velocity=(high + 0.5, 0.0, 0.0)), duration=0.05))
+    message = str(error.value)
+    assert "\n" not in message and f"[{low:+.2f}, {high:+.2f}] m/s" in message

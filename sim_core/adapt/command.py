@@ -87,7 +87,9 @@ def adapt_skill(skill: str, character: str, rng, workers: int, deadline: float, 
                     searched = adapter.check(character, rng)
                     runs += evaluations + searched.runs
                     say(f"{skill}: {route} and searched: {searched.figures}")
-                    if (searched.works, searched.covers) >= (check.works, check.covers):
+                    # kept unless the scaled table works and the search's works less: a search that
+                    # fails where the scaled table failed too is the body's own calibration, narrowed next
+                    if not check.works or (searched.works, searched.covers) >= (check.works, check.covers):
                         searched_table.keep()
                         check, route = searched, route + " and searched"
                     else:                      # the search's table checked worse: the scaled one is put back

@@ -125,6 +125,20 @@ def scale_settings(row: dict, schema: Schema, pair: CharacterPair, mode: str) ->
     return out
 
 
+def scale_constants(constants: dict, schema: Schema, pair: CharacterPair, mode: str) -> dict:
+    """A controller's constants (numbers, lists or maps of numbers, as a ``<table>_any.json`` holds
+    them) scaled for ``pair.new``, every number by its constant's units and held inside the
+    constant's sanity range."""
+    def each(name, value):
+        if isinstance(value, (list, tuple)):
+            return [each(name, v) for v in value]
+        if isinstance(value, dict):
+            return {k: each(name, v) for k, v in value.items()}
+        knob = schema.by_name[name]
+        return min(max(scale_settings({name: value}, schema, pair, mode)[name], knob.minimum), knob.maximum)
+    return {name: each(name, value) for name, value in constants.items()}
+
+
 def scale_columns(speeds: list[float], columns: dict[str, list[float]], schema: Schema, pair: CharacterPair,
                   mode: str) -> tuple[list[float], dict[str, list[float]]]:
     """A table scheduled over the running speed (m/s): the speeds scale as velocities (x L^1/2,

@@ -25,7 +25,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .scaling import ScaleFactors, Units, scale
-from .settings import GEOMETRIC, MASS, CharacterPair, scale_settings
+from .settings import GEOMETRIC, MASS, CharacterPair, scale_constants, scale_settings
 from ..character.dimensions import leg_length_ratio
 from ..character.spec import CharacterSpec, load_character
 
@@ -37,7 +37,8 @@ LANDING_DROPS = (0.2, 0.6)   # definition: drops (m above standing, x L) the lan
 LANDING_SPEEDS = (-1.0, 1.5)  # definition: horizontal speeds (m/s, x L^1/2) drawn: drops and vertical leaps; the broad
                              # jump's faster landings (to 3 m/s) are not adapted (the man's own table lands 4 of 6 there)
 LANDING_SECONDS = 3.0        # definition: a landing's run, as calibrate land's trials
-LEAP_HEIGHTS = (0.2, 0.5)    # definition: the issue's leap range for adapted bodies (m of COM rise)
+LEAP_HEIGHTS = (0.2, 0.5)    # definition: the issue's leap range for adapted bodies (m of COM rise, x L: a length,
+                             # Fig. 6; the man's 0.5 m is 0.29 m for the child, 0.47 m for the 70 % man -> woman body)
 LEAP_SECONDS = 4.5           # definition: a leap's run, as calibrate leap's trials
 RUN_SECONDS = 100.0          # criterion: TARGETS.md's 100 s of running without a fall
 SPEED_TOLERANCE = 0.05       # criterion: mean speed of the last 10 s within 5 % (TARGETS.md "Running")
@@ -130,34 +131,55 @@ class LandingAdapter(Adapter):
         return out, 0
 
     def check(self, character: str, rng) -> Check:
+        from ..control.leap import landing_speeds
         from ..simulate import StartState
         from .. import tuned
         spec = load_character(character)
         table = tuned.load("landing", spec.name)
-        rows = [r for r in table["foot_delta"] if r["speed"]]
         L = leg_length_ratio(load_character("man"), spec)
-        low = max(LANDING_SPEEDS[0] * L ** 0.5, *(min(r["speed"]) for r in rows))
-        high = min(LANDING_SPEEDS[1] * L ** 0.5, *(max(r["speed"]) for r in rows))
+        wanted = (LANDING_SPEEDS[0] * L ** 0.5, LANDING_SPEEDS[1] * L ** 0.5)
+        served = landing_speeds(table)
+        low, high = max(wanted[0], served[0]), min(wanted[1], served[1])
         drops = rng.uniform(LANDING_DROPS[0] * L, LANDING_DROPS[1] * L, size=CHECKS)
         speeds = rng.uniform(low, high, size=CHECKS) if high > low else np.full(CHECKS, low)
-        missed = []
+        missed, failed = [], []
         for drop, speed in zip(drops, speeds):
             t = _run("land", character, start=StartState(height=float(drop), velocity=(float(speed), 0.0, 0.0)),
                      duration=LANDING_SECONDS)
             if t.meta["outcome"] != "success":
                 missed.append(f"{drop:.2f} m at {speed:+.2f} m/s ({t.meta['outcome']})")
+                failed.append(float(speed))
         figures = (f"drops {drops.min():.2f}-{drops.max():.2f} m at {speeds.min():+.2f}..{speeds.max():+.2f} m/s "
-                   f"(the table's common speeds within {low:+.2f}..{high:+.2f}): {CHECKS - len(missed)}/{CHECKS} balanced"
-                   + (f"; missed {', '.join(missed)}" if missed else ""))
-        return Check(not missed, figures, CHECKS)
+                   f"(the table's common speeds within {low:+.2f}..{high:+.2f} of {wanted[0]:+.2f}..{wanted[1]:+.2f}): "
+                   f"{CHECKS - len(missed)}/{CHECKS} balanced" + (f"; missed {', '.join(missed)}" if missed else ""))
+        return Check(not missed, figures, CHECKS, covers=(low, high) == wanted, failed=tuple(failed))
+
+    def keep_what_works(self, character: str, check: Check, rng) -> Check | None:
+        """The table's rows cut to the horizontal speeds between the slowest failing draw on each
+        side of standing still (a landing fails at its fast edges), checked again with new draws."""
+        from .. import tuned
+        name = load_character(character).name
+        body = tuned.load("landing", name)
+        above = min((v for v in check.failed if v >= 0.0), default=math.inf)
+        below = max((v for v in check.failed if v < 0.0), default=-math.inf)
+        rows = []
+        for row in body["foot_delta"]:
+            kept = [(v, d) for v, d in zip(row["speed"], row["delta"]) if below < v < above]
+            rows.append(dict(row, speed=[v for v, _ in kept], delta=[d for _, d in kept]))
+        if not all(row["speed"] for row in rows):
+            return None
+        tuned.save("landing", name, dict(body, foot_delta=rows), strengths=["human"])
+        kept = self.check(character, rng)
+        kept.figures += f" (rows cut to the speeds inside ({below:+.2f}, {above:+.2f}) m/s: {check.figures})"
+        return kept
 
     def search(self, character: str, workers: int, minutes: float, check: Check) -> tuple[dict, int]:
         """calibrate land's sweep (every drop, speed and delta), then its fast-touchdown scan."""
-        from ..skills.land.calibrate import DELTAS, DROPS, FAST_DELTAS, HIGH_DROPS, SPEEDS, calibrate, fast_touchdown
+        from ..skills.land.calibrate import calibrate, fast_touchdown, grid
         table = calibrate(character, workers)
         table["fast_touchdown"] = fast_touchdown(character, table)
-        table["script"] = "python -m sim_core adapt (calibrate land's sweep)"
-        return table, len(DROPS) * len(SPEEDS) * len(DELTAS) + len(FAST_DELTAS) * len(HIGH_DROPS)
+        table["script"] = "python -m sim_core adapt (calibrate land's sweep, its grid scaled to the body by Fig. 6)"
+        return table, grid(character).trials
 
 
 class LeapAdapter(Adapter):
@@ -177,10 +199,25 @@ class LeapAdapter(Adapter):
         return [row for row in rows if all(LEAP_SETTINGS.by_name[n].minimum <= v <= LEAP_SETTINGS.by_name[n].maximum
                                            for n, v in row.items())]
 
+    def scaled_constants(self, source: CharacterSpec, target: CharacterSpec, body: dict) -> dict:
+        """The thrust's and the landing's constants the source uses (its own, else leap_any's),
+        scaled geometrically by Fig. 6: the thrust's extension times by L^1/2, so that the legs
+        extend at the speeds of a body of their length (with the man's times the child's leaps rose
+        0.06-0.12 m, with scaled times 0.10-0.20 m)."""
+        from ..control.leap import LEAP_CONSTANTS, leap_constants
+        own = vars(leap_constants(source.name))
+        return scale_constants({n: own[n] for n in LEAP_CONSTANTS.by_name}, LEAP_CONSTANTS, CharacterPair(source, target),
+                               GEOMETRIC)
+
     def scale(self, source: CharacterSpec, target: CharacterSpec, body: dict) -> tuple[dict, int]:
         """The scaled rows, each leapt once on the new body: the rows that land balanced, with their
         rises as measured (a rise scaled by L missed by 8-15 % on the 70 % man -> woman body)."""
+        from .. import tuned
         rows = self.scaled_rows(source, target, body)
+        constants = self.scaled_constants(source, target, body)
+        # the rows leap with the scaled constants: the body's table holds them (inside adapt's provisional table)
+        tuned.save("leap", target.name, {"character": target.name, "script": "python -m sim_core adapt (scaling)",
+                                         "constants": constants, "vertical": {}}, strengths=["human"])
         measured = []
         for row in rows:
             t = _run("leap", target.path, params={"low_level": 1, **row}, duration=LEAP_SECONDS)
@@ -191,21 +228,26 @@ class LeapAdapter(Adapter):
         for name in ("com_rise", "com_travel", "peak_thrust_grf_body_weights"):
             vertical[name] = [metrics[name] for _, metrics in measured]
         return {"character": target.name,
-                "script": f"python -m sim_core adapt (the {source.name}'s vertical leaps scaled by Fig. 6, each run "
-                          f"once: {len(measured)} of {len(rows)} landed balanced, their rises as measured)",
+                "script": f"python -m sim_core adapt (the {source.name}'s vertical leaps and the thrust's and landing's "
+                          f"constants scaled by Fig. 6, each row run once: {len(measured)} of {len(rows)} landed "
+                          f"balanced, their rises as measured)",
+                "constants": constants,
                 "vertical": vertical}, len(rows)
 
     def check(self, character: str, rng) -> Check:
         from .. import tuned
         from ..control.leap import commandable_heights, rise_tolerance
-        rises = tuned.load("leap", load_character(character).name)["vertical"]["com_rise"]
+        spec = load_character(character)
+        rises = tuned.load("leap", spec.name)["vertical"]["com_rise"]
         if not rises:
             return Check(False, "no leap of the table landed balanced", 0)
+        L = leg_length_ratio(load_character("man"), spec)
+        wanted = (round(LEAP_HEIGHTS[0] * L, 3), round(LEAP_HEIGHTS[1] * L, 3))
         low, high = commandable_heights(rises)
-        top, bottom = min(high, LEAP_HEIGHTS[1]), max(low, LEAP_HEIGHTS[0])
+        top, bottom = min(high, wanted[1]), max(low, wanted[0])
         if top <= bottom:
             return Check(False, f"the table's leaps rise {min(rises):.2f}-{max(rises):.2f} m, outside "
-                                f"{LEAP_HEIGHTS[0]:g}-{LEAP_HEIGHTS[1]:g} m", 0)
+                                f"{wanted[0]:g}-{wanted[1]:g} m ({LEAP_HEIGHTS[0]:g}-{LEAP_HEIGHTS[1]:g} m x L {L:.2f})", 0)
         heights = rng.uniform(bottom, top, size=CHECKS)
         missed, errors = [], []
         for h in heights:
@@ -214,11 +256,11 @@ class LeapAdapter(Adapter):
             errors.append(abs(rise - h))
             if t.meta["outcome"] != "success" or not abs(rise - h) <= rise_tolerance(h):
                 missed.append(f"{h:.2f} m rose {rise:.2f} ({t.meta['outcome']})")
-        covered = "" if (bottom, top) == LEAP_HEIGHTS else f" (the table serves {low:.2f}-{high:.2f} m)"
+        covered = "" if (bottom, top) == wanted else f" (the table serves {low:.2f}-{high:.2f} m of {wanted[0]:g}-{wanted[1]:g})"
         figures = (f"heights {heights.min():.2f}-{heights.max():.2f} m{covered}: {CHECKS - len(missed)}/{CHECKS} within "
                    f"tolerance and balanced, largest error {max(errors) * 100:.1f} cm"
                    + (f"; missed {', '.join(missed)}" if missed else ""))
-        return Check(not missed, figures, CHECKS, covers=(bottom, top) == LEAP_HEIGHTS)
+        return Check(not missed, figures, CHECKS, covers=(bottom, top) == wanted)
 
     def search(self, character: str, workers: int, minutes: float, check: Check) -> tuple[dict, int]:
         """calibrate leap's crouch sweep of the vertical table (human strength)."""

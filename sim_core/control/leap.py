@@ -21,6 +21,7 @@ leap_assess).
 from __future__ import annotations
 
 import math
+from types import SimpleNamespace
 
 import numpy as np
 
@@ -33,7 +34,7 @@ from .measure import SupportGeometry, roll_of
 from .servo import hermite_scalar
 from ..schema import Parameter, Schema
 from ..tuned import TableType, load, register as register_table
-from ..tuned.constants import constant, constant_rows, read_constants, with_constants
+from ..tuned.constants import as_constants, constant, constant_rows, read_constants, with_constants
 
 # the leap's thrust and landing's hand-set constants: data, leap_any.json's "constants", shared by
 # every skill that composes them (docs/tables.md)
@@ -83,6 +84,16 @@ LEAP_CONSTANTS = Schema(
 )
 CONSTANTS = read_constants("leap", LEAP_CONSTANTS)
 
+
+
+def leap_constants(character: str) -> SimpleNamespace:
+    """The thrust's and the landing's constants for ``character``: leap_any's (tuned on the man and
+    used as they are by the woman), or the character's own where its leap table holds a "constants"
+    section (a body ``adapt`` scaled by Fig. 6: times by L^1/2, lengths by L, ...; docs/bodies.md)."""
+    own = (load("leap", character) or {}).get("constants")
+    return CONSTANTS if not own else SimpleNamespace(**{**vars(CONSTANTS), **vars(as_constants({"constants": own}))})
+
+
 AIRBORNE_HEIGHT = 0.01          # m: every foot site this high above the ground = flight
 TOUCHDOWN_HEIGHT = 0.004        # m: a foot site this low = contact
 UP = np.array([0.0, 0.0, 1.0])
@@ -124,16 +135,20 @@ class LeapThrust(Behaviour):
     which sets the roll rate; ``spin_hold`` turns the hips against the body's angular momentum about
     the vertical while the feet are down, as the crouch's Balance ``spin_kp`` does (a sideways jump)."""
 
-    def __init__(self, params, ctx: ControlContext, crouch_height: float, timing=CONSTANTS.vertical_timing,
-                 ankle_gain=CONSTANTS.ankle_gain_vertical, liftoff_hip=0.0, arm_swing=CONSTANTS.arm_swing_default, stand_height=None,
-                 thrust_damping=CONSTANTS.thrust_damping_default, thrust_lean=0.0, liftoff_roll=0.0, spin_hold=0.0):
+    def __init__(self, params, ctx: ControlContext, crouch_height: float, timing=None,
+                 ankle_gain=None, liftoff_hip=0.0, arm_swing=None, stand_height=None,
+                 thrust_damping=None, thrust_lean=0.0, liftoff_roll=0.0, spin_hold=0.0):
         super().__init__(params, ctx)
-        self.timing, self.ankle_gain = timing, ankle_gain
-        self.liftoff_hip, self.arm_swing = liftoff_hip, arm_swing
+        self.constants = leap_constants(ctx.character.name)
+        c = self.constants
+        self.timing = c.vertical_timing if timing is None else timing
+        self.ankle_gain = c.ankle_gain_vertical if ankle_gain is None else ankle_gain
+        self.liftoff_hip = liftoff_hip
+        self.arm_swing = c.arm_swing_default if arm_swing is None else arm_swing
         self.airborne = Airborne(ctx.model, ctx.actor.prefix)
         self.crouch_height = crouch_height
         self.stand_height = stand_height
-        self.thrust_damping = thrust_damping
+        self.thrust_damping = c.thrust_damping_default if thrust_damping is None else thrust_damping
         self.thrust_lean = thrust_lean
         self.liftoff_roll = liftoff_roll
         self.spin_hold = spin_hold
@@ -153,14 +168,14 @@ class LeapThrust(Behaviour):
             s.move_to(s.indices([f"hip_{side}_x", f"hip_{side}_z", f"ankle_{side}_x"]),
                       np.array([self.liftoff_roll, 0.0, 0.0]), t_hip, t)
             s.move_to(s.indices([f"shoulder_{side}_z"]), sign * self.arm_swing, t_knee, t)
-            s.move_to(s.indices([f"elbow_{side}_z"]), sign * CONSTANTS.thrust_elbow, t_knee, t)
+            s.move_to(s.indices([f"elbow_{side}_z"]), sign * self.constants.thrust_elbow, t_knee, t)
         spine = [n for n in s.names if n.startswith("spine") and n.endswith("_y")]
         s.move_to(s.indices(spine), 0.0, t_hip, t)
         ankles = self.idx["ankle"]
         s.set_gains(ankles, s.default_kp[ankles] * self.ankle_gain,
                     s.default_kv[ankles] * self.ankle_gain * self.thrust_damping)
         legs = np.concatenate([self.idx["hip"], self.idx["knee"]])
-        s.set_gains(legs, s.default_kp[legs] * CONSTANTS.thrust_gain, s.default_kv[legs] * CONSTANTS.thrust_gain * self.thrust_damping)
+        s.set_gains(legs, s.default_kp[legs] * self.constants.thrust_gain, s.default_kv[legs] * self.constants.thrust_gain * self.thrust_damping)
         self.event(t, "thrust")
 
     def _height(self, t: float, duration: float) -> float:
@@ -175,9 +190,9 @@ class LeapThrust(Behaviour):
         hip = self.path.at(self._height(t, t_hip))[1] + self.liftoff_hip * hermite_scalar((t - self.t0) / t_hip)
         knee = self.path.at(self._height(t, t_knee))[0]
         ankle = self.path.at(self._height(t, t_ankle))[2]
-        share = CONSTANTS.ankle_push_start
+        share = self.constants.ankle_push_start
         push = hermite_scalar((t - self.t0 - share * t_ankle) / ((1.0 - share) * t_ankle))
-        ankle = ankle + (CONSTANTS.liftoff_ankle - ankle) * push
+        ankle = ankle + (self.constants.liftoff_ankle - ankle) * push
         for name, value in (("hip", hip), ("knee", knee), ("ankle", ankle)):
             for i in self.idx[name]:
                 s.start[i] = s.goal[i] = value
@@ -228,6 +243,7 @@ class Landing(Behaviour):
 
     def __init__(self, params, ctx: ControlContext):
         super().__init__(params, ctx)
+        self.constants = leap_constants(ctx.character.name)
         m, s = ctx.model, ctx.servos
         body = ctx.actor.body_id
         self.airborne = Airborne(m, ctx.actor.prefix)
@@ -258,8 +274,8 @@ class Landing(Behaviour):
         limits = np.array([ctx.character.dofs[ctx.character.dof_index[n]].torque_limit for n in s.names])
         legs = s.indices([f"{j}_{side}_{a}" for j, a in (("hip", "y"), ("knee", "y"), ("ankle", "y"))
                           for side in "rl"])
-        if (~m.actuator_forcelimited[s.actuators].astype(bool)[legs]).any() or (forcerange[legs] > limits[legs] * CONSTANTS.landing_torque_limit).any():
-            self.torque_cap = (legs, None, None, limits[legs] * CONSTANTS.landing_torque_limit)   # (model's own gains)
+        if (~m.actuator_forcelimited[s.actuators].astype(bool)[legs]).any() or (forcerange[legs] > limits[legs] * self.constants.landing_torque_limit).any():
+            self.torque_cap = (legs, None, None, limits[legs] * self.constants.landing_torque_limit)   # (model's own gains)
 
     def start(self, t: float) -> None:
         s = self.ctx.servos
@@ -287,7 +303,7 @@ class Landing(Behaviour):
         straighter legs reach further ahead of a fast COM and take the horizontal speed with the
         whole leg)."""
         p = self.params
-        low, high = CONSTANTS.fast_landing_speed if vx >= 0 else CONSTANTS.fast_backward_landing_speed
+        low, high = self.constants.fast_landing_speed if vx >= 0 else self.constants.fast_backward_landing_speed
         share = hermite_scalar((abs(vx) - low) / (high - low))
         return p["knee_flexion"] + (p["fast_knee_flexion"] - p["knee_flexion"]) * share
 
@@ -336,31 +352,31 @@ class Landing(Behaviour):
             points = self.airborne.support.supporting_points(d)
             px = c * points[:, 0] + sn * points[:, 1]
             com_x = c * com[0] + sn * com[1]
-            ankle_command = CONSTANTS.com_kp * (com_x - 0.5 * (px.min() + px.max())) + CONSTANTS.com_kv * vx
+            ankle_command = self.constants.com_kp * (com_x - 0.5 * (px.min() + px.max())) + self.constants.com_kv * vx
         toe_point = 0.0
         if self.stage == "flight":
             # a fast touchdown lands on the forefoot so the ankles absorb the first impact
             feet_height = max(float(self.airborne.feet_heights(d).min()), 0.0)
             touchdown_speed = math.sqrt(vel[2] * vel[2] + 2.0 * GRAVITY * feet_height)
-            toe_point = min(max(CONSTANTS.toe_point_per_speed * (touchdown_speed - CONSTANTS.toe_point_from), 0.0), CONSTANTS.toe_point_max)
+            toe_point = min(max(self.constants.toe_point_per_speed * (touchdown_speed - self.constants.toe_point_from), 0.0), self.constants.toe_point_max)
             # moving forward or back fast, the feet land flat: the whole sole has to stop the COM's
             # horizontal speed (the forefoot alone would let the ankles give way)
-            toe_point *= min(max((CONSTANTS.toe_fade_speed[1] - abs(vx)) / (CONSTANTS.toe_fade_speed[1] - CONSTANTS.toe_fade_speed[0]), 0.0), 1.0)
+            toe_point *= min(max((self.constants.toe_fade_speed[1] - abs(vx)) / (self.constants.toe_fade_speed[1] - self.constants.toe_fade_speed[0]), 0.0), 1.0)
         if self.stage == "flight" and self.airborne.touching(d):
             self.stage = "absorb"
             self.ctx.step_division = 1      # a flight run at a finer physics step lands at the model's
             self.touchdown_knee_speed = max(abs(float(velocities[self.knees].mean())), 1e-3)  # definition: a guard
             self.knees_touched_at = angles[self.knees].copy()
-            s.set_gains(self.knees, s.default_kp[self.knees] * CONSTANTS.soft_knee_kp, s.default_kv[self.knees] * CONSTANTS.soft_knee_kv)
+            s.set_gains(self.knees, s.default_kp[self.knees] * self.constants.soft_knee_kp, s.default_kv[self.knees] * self.constants.soft_knee_kv)
             self.touchdown_at = t
             self.event(t, "touchdown")
-        elif self.stage == "absorb" and abs(float(velocities[self.knees].mean())) < CONSTANTS.knee_restore * self.touchdown_knee_speed:
+        elif self.stage == "absorb" and abs(float(velocities[self.knees].mean())) < self.constants.knee_restore * self.touchdown_knee_speed:
             self.stage = "settle"
             self.knees_stopped_at = angles[self.knees].copy()
             s.set_gains(self.knees, s.default_kp[self.knees], s.default_kv[self.knees])
             self.event(t, "knees_restored")
         if self.finished_at is None and (self.stage == "settle" or (
-                self.stage == "absorb" and t - self.touchdown_at > CONSTANTS.absorb_time)):
+                self.stage == "absorb" and t - self.touchdown_at > self.constants.absorb_time)):
             self.finished_at = t
         knee = self._flight_knee(vx) if self.stage == "flight" else None
         spin_offset = 0.0
@@ -437,7 +453,7 @@ def balance_after_landing(ctx: ControlContext, landing: Landing) -> Balance:
     feet = 0.5 * (d.xpos[body("FOOTR")] + d.xpos[body("FOOTL")])
     leg_length = float(np.linalg.norm(hips - feet))
     height = float(np.interp(leg_length, landing.crouch.table[:, 4], landing.crouch.heights))
-    return Balance(Balance.schema.validate(dict(move_start=0.0, move_time=CONSTANTS.balance_handover_time, return_to_stand=0)), ctx,
+    return Balance(Balance.schema.validate(dict(move_start=0.0, move_time=landing.constants.balance_handover_time, return_to_stand=0)), ctx,
                    from_height=height)
 
 
@@ -523,6 +539,12 @@ def foot_delta_row(table: dict, horizontal_speed: float, touchdown_speed: float)
     if fast:
         delta += fast["delta"] * min(max((touchdown_speed - fast["speed"]) / fast["ramp"], 0.0), 1.0)
     return delta
+
+
+def landing_speeds(table: dict) -> tuple[float, float]:
+    """The horizontal speeds every drop's row of a landing table serves (its rows' common span)."""
+    rows = [row for row in table["foot_delta"] if row["speed"]]
+    return max(min(row["speed"]) for row in rows), min(max(row["speed"]) for row in rows)
 
 
 LANDING_TABLE = register_table(TableType("landing", LANDING_SETTINGS, _landing_rows, (foot_delta_row,)))

@@ -3,10 +3,13 @@ stand up balanced."""
 from __future__ import annotations
 
 from ...control.behaviour import register
-from ...control.leap import Landing, balance_after_landing, leap_assess
+import math
+
+from ...control.leap import Landing, balance_after_landing, landing_speeds, leap_assess
+from ...errors import ParameterError
 from ...control.sequencer import Sequence, Step
 from ...schema import Parameter, Schema
-from ...tuned import require_calibrated
+from ...tuned import load, require_calibrated
 
 
 @register
@@ -22,8 +25,21 @@ class Land(Sequence):
                               "needs its table); 0: by foot_delta alone (python -m sim_core calibrate land's trials)"))
 
     def check_feasible(self) -> None:
-        if self.params["landing_table"]:
-            require_calibrated("landing", self.ctx.character.name, self.name)
+        """A run on the character's landing table starts at a horizontal speed its rows serve."""
+        if not self.params["landing_table"]:
+            return
+        name = self.ctx.character.name
+        require_calibrated("landing", name, self.name)
+        low, high = landing_speeds(load("landing", name))
+        model, d, pelvis = self.ctx.model, self.ctx.data, self.ctx.actor.body_id("PELVIS")
+        m = d.xmat[pelvis]
+        yaw = math.atan2(m[3], m[0])
+        free = model.jnt_dofadr[model.body_jntadr[pelvis]]         # the root's free joint: world linear velocity first
+        speed = math.cos(yaw) * float(d.qvel[free]) + math.sin(yaw) * float(d.qvel[free + 1])
+        if not low <= speed <= high:
+            raise ParameterError(f"start velocity {speed:+.2f} m/s (forward) is out of the {name}'s landing range: "
+                                 f"its landing table serves [{low:+.2f}, {high:+.2f}] m/s (python -m sim_core "
+                                 f"calibrate land)")
 
     def steps(self) -> list[Step]:
         return [Step("land", lambda t: Landing(self.params, self.ctx), lambda b, t: b.finished),

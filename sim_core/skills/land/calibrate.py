@@ -1,12 +1,14 @@
 """Calibrate the landing's foot servo delta against horizontal speed and touchdown speed (the
-role of Wooten's Table 6.1, which is for one drop height): for each drop of DROPS and each
+role of Wooten's Table 6.1, which is for one drop height): for each drop of the grid's drops and each
 horizontal speed, land with a range of deltas and keep the middle of the longest run of
 neighbouring deltas that end balanced (feet staying where they touched down; see leap_assess),
 and write sim_core/tuned/tables/landing_<character>.json, which the landing reads: one row per drop, keyed by
 the vertical touchdown speed of that drop, interpolated between them. Then the extra delta for
 fast touchdowns (high drops and leaps, vertical touchdown speed above FAST_FROM): the one of
-FAST_DELTAS that lands the most drops from rest of HIGH_DROPS (the smallest on a tie).
-Rerun after a change to the model or the controllers:
+fast deltas that lands the most drops from rest of the high drops (the smallest on a tie). The grid
+is the man's (below) for the man, and for another body the man's scaled by Fig. 6: drops and
+deltas by L, speeds by L^1/2 (a child's landing windows are a third of the man's 2 cm step wide,
+and its drops a third of his). Rerun after a change to the model or the controllers:
 
     python -m sim_core calibrate land [--character man woman] [--processes 2]
 """
@@ -22,7 +24,10 @@ ROOT = Path.cwd()                   # docs are written under the folder it runs 
 from ...ballistics import GRAVITY
 from ... import tuned
 from ...control.leap import LANDING_TABLE  # noqa: F401  (declares the landing table's row type)
-from ...character.spec import character_name
+from dataclasses import dataclass
+
+from ...character.dimensions import leg_length_ratio
+from ...character.spec import character_name, load_character
 from ...simulate import RunRequest, StartState, run
 
 SPEEDS = [-1.0, -0.5, 0.0, 0.5, 1.0, 1.5, 2.0, 2.5, 3.0]
@@ -37,17 +42,43 @@ FAST_DELTAS = [0.0, 0.02, 0.04, 0.06, 0.08]
 HIGH_DROPS = [0.8, 0.9, 1.0, 1.1, 1.15, 1.2, 1.3]
 
 
+@dataclass(frozen=True)
+class Grid:
+    """What the calibration tries for one body (the constants above are the man's)."""
+    speeds: list
+    deltas: list
+    drops: tuple
+    fast_from: float
+    fast_ramp: float
+    fast_deltas: list
+    high_drops: list
+
+    @property
+    def trials(self) -> int:
+        return len(self.drops) * len(self.speeds) * len(self.deltas) + len(self.fast_deltas) * len(self.high_drops)
+
+
+def grid(character: str) -> Grid:
+    """The man's grid scaled to ``character`` by Fig. 6 (lengths x L, speeds x L^1/2; the man's own
+    numbers for the man, L = 1)."""
+    L = leg_length_ratio(load_character("man"), load_character(character))
+    length = lambda values: [round(v * L, 4) for v in values]
+    speed = lambda values: [round(v * L ** 0.5, 4) for v in values]
+    return Grid(speed(SPEEDS), length(DELTAS), tuple(length(DROPS)), speed([FAST_FROM])[0], speed([FAST_RAMP])[0],
+                length(FAST_DELTAS), length(HIGH_DROPS))
+
+
 def fast_touchdown(character: str, table: dict) -> dict:
     """Scan the extra delta for fast touchdowns one value at a time (each trial reads the table)."""
-    landed, name = {}, character_name(character)
-    for extra in FAST_DELTAS:
-        tuned.save("landing", name, dict(table, fast_touchdown={"speed": FAST_FROM, "ramp": FAST_RAMP, "delta": extra}),
+    landed, name, g = {}, character_name(character), grid(character)
+    for extra in g.fast_deltas:
+        tuned.save("landing", name, dict(table, fast_touchdown={"speed": g.fast_from, "ramp": g.fast_ramp, "delta": extra}),
                    strengths=["human"])
-        landed[extra] = [drop for drop in HIGH_DROPS
+        landed[extra] = [drop for drop in g.high_drops
                          if run(RunRequest("land", character, start=StartState(height=drop), duration=3.0)).meta["outcome"] == "success"]
         print(f"  {character} fast touchdown extra {extra:+.2f} m: lands drops {landed[extra]}")
-    best = max(FAST_DELTAS, key=lambda e: (len(landed[e]), -abs(e)))
-    return {"speed": FAST_FROM, "ramp": FAST_RAMP, "delta": best, "landed": {str(k): v for k, v in landed.items()}}
+    best = max(g.fast_deltas, key=lambda e: (len(landed[e]), -abs(e)))
+    return {"speed": g.fast_from, "ramp": g.fast_ramp, "delta": best, "landed": {str(k): v for k, v in landed.items()}}
 
 
 def trial(args):
@@ -57,11 +88,11 @@ def trial(args):
     return drop, speed, delta, traj.meta["outcome"] == "success"
 
 
-def middle_of_longest_run(ok: list[float]) -> float:
+def middle_of_longest_run(ok: list[float], deltas: list[float]) -> float:
     """The delta in the middle of the longest run of neighbouring successful deltas (the most
     margin on both sides)."""
     runs, current = [], []
-    for d in DELTAS:
+    for d in deltas:
         if d in ok:
             current.append(d)
         else:
@@ -75,19 +106,20 @@ def middle_of_longest_run(ok: list[float]) -> float:
 def calibrate(character: str, processes: int) -> dict:
     """The sweep, each trial placing the feet by its delta alone (landing_table=0: calibrated against
     no table, so a character with none yet can be calibrated and a stored one is not touched)."""
+    g = grid(character)
     with Pool(processes) as pool:
-        results = pool.map(trial, [(character, h, v, d) for h in DROPS for v in SPEEDS for d in DELTAS])
+        results = pool.map(trial, [(character, h, v, d) for h in g.drops for v in g.speeds for d in g.deltas])
     rows, landed = [], {}
-    for h in DROPS:
+    for h in g.drops:
         speeds, deltas = [], []
         landed[str(h)] = {}
-        for v in SPEEDS:
+        for v in g.speeds:
             ok = [d for drop, s, d, success in results if drop == h and s == v and success]
             landed[str(h)][str(v)] = ok
-            print(f"  {character} drop {h:.1f} m at {v:+.1f} m/s: balanced with deltas {ok}")
+            print(f"  {character} drop {h:.2f} m at {v:+.2f} m/s: balanced with deltas {ok}")
             if ok:
                 speeds.append(v)
-                deltas.append(round(middle_of_longest_run(ok), 3))
+                deltas.append(round(middle_of_longest_run(ok, g.deltas), 4))
         rows.append({"drop": h, "touchdown_speed": round((2.0 * GRAVITY * h) ** 0.5, 3),
                      "speed": speeds, "delta": deltas})
     return {"script": "python -m sim_core calibrate land", "foot_delta": rows,

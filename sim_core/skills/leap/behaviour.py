@@ -7,7 +7,7 @@ import math
 
 from ...control.balance import Balance, standing_hip_height
 from ...control.behaviour import register
-from ...control.leap import CONSTANTS as LEAP, LOW_LEVEL_SETTINGS, Landing, LeapThrust, balance_after_landing, broad_distances, broad_row, broad_rows, commandable_heights, leap_assess, load_mapping, vertical_key, vertical_row
+from ...control.leap import LOW_LEVEL_SETTINGS, Landing, LeapThrust, balance_after_landing, broad_distances, broad_row, broad_rows, commandable_heights, leap_assess, leap_constants, load_mapping, vertical_key, vertical_row
 from ...control.sequencer import Sequence, Step
 from ...errors import ParameterError
 from ...schema import Parameter
@@ -120,13 +120,14 @@ class Leap(Sequence):
         cfg = self.settings(p)
         broad = self.is_broad(p)
         schema = Balance.schema
+        constants = leap_constants(ctx.character.name)
 
         def crouch(t):
             return Balance(schema.validate(dict(pelvis_height=cfg["crouch_height"], torso_pitch=cfg["crouch_pitch"],
                                                 com_offset_x=cfg["com_offset"],
                                                 com_offset_y=cfg.get("com_offset_y", 0.0),
-                                                arm_flexion=cfg.get("crouch_arms", 0.0), move_start=LEAP.crouch_move_start,
-                                                heading_kp=LEAP.sideways_heading_kp if cfg.get("com_offset_y") else 0.0,
+                                                arm_flexion=cfg.get("crouch_arms", 0.0), move_start=constants.crouch_move_start,
+                                                heading_kp=constants.sideways_heading_kp if cfg.get("com_offset_y") else 0.0,
                                                 spin_kp=cfg.get("spin_hold", 0.0),
                                                 move_time=cfg["crouch_time"] if "crouch_time" in cfg
                                                 else p["crouch_time"],
@@ -139,13 +140,13 @@ class Leap(Sequence):
                 sideways = cfg.get("com_offset_y", 0.0)
                 if sideways:        # a sideways jump: thrust once the COM has left the feet sideways
                     return b.posture_reached(t) or b.com_left_of_support() * math.copysign(1.0, sideways) > \
-                        LEAP.broad_trigger * abs(sideways)
-                return b.posture_reached(t) or b.com_ahead_of_support() > LEAP.broad_trigger * cfg["com_offset"]
-            return b.posture_reached(t - LEAP.crouch_settle_time)
+                        constants.broad_trigger * abs(sideways)
+                return b.posture_reached(t) or b.com_ahead_of_support() > constants.broad_trigger * cfg["com_offset"]
+            return b.posture_reached(t - constants.crouch_settle_time)
 
         def thrust(t):
-            return LeapThrust({}, ctx, cfg["crouch_height"], LEAP.broad_timing if broad else LEAP.vertical_timing,
-                              LEAP.ankle_gain_broad if broad else LEAP.ankle_gain_vertical, cfg["liftoff_hip"],
+            return LeapThrust({}, ctx, cfg["crouch_height"], constants.broad_timing if broad else constants.vertical_timing,
+                              constants.ankle_gain_broad if broad else constants.ankle_gain_vertical, cfg["liftoff_hip"],
                               cfg["arm_swing"], stand_height=standing_hip_height(ctx.character), thrust_damping=cfg["thrust_damping"],
                               liftoff_roll=cfg.get("liftoff_roll", 0.0), thrust_lean=cfg.get("thrust_lean", 0.0),
                               spin_hold=cfg.get("spin_hold", 0.0))
