@@ -2,12 +2,13 @@
 stand up balanced."""
 from __future__ import annotations
 
-from ...control.behaviour import register
 import math
 
+from ...control.behaviour import register
 from ...control.leap import Landing, balance_after_landing, landing_speeds, leap_assess
-from ...errors import ParameterError
+from ...control.measure import yaw_of
 from ...control.sequencer import Sequence, Step
+from ...errors import ParameterError
 from ...schema import Parameter, Schema
 from ...tuned import load, require_calibrated
 
@@ -32,8 +33,7 @@ class Land(Sequence):
         require_calibrated("landing", name, self.name)
         low, high = landing_speeds(load("landing", name))
         model, d, pelvis = self.ctx.model, self.ctx.data, self.ctx.actor.body_id("PELVIS")
-        m = d.xmat[pelvis]
-        yaw = math.atan2(m[3], m[0])
+        yaw = yaw_of(d.xmat[pelvis])
         free = model.jnt_dofadr[model.body_jntadr[pelvis]]         # the root's free joint: world linear velocity first
         speed = math.cos(yaw) * float(d.qvel[free]) + math.sin(yaw) * float(d.qvel[free + 1])
         if not low <= speed <= high:
