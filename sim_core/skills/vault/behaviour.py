@@ -515,7 +515,9 @@ class Vault(Sequence):
         self.pelvis, self.chest = body("PELVIS"), body("CHEST1")
         self.shoulders = [body("UARMR"), body("UARML")]
         self.forearms = [body("LARMR"), body("LARML")]
-        self.wrist_range = m.jnt_range[[ctx.actor.joint_id(f"wrist_{side}_{axis}") for side in "rl" for axis in "xy"]]
+        wrists = [f"wrist_{side}_{axis}" for side in "rl" for axis in "xy"]
+        self.wrist_range = m.jnt_range[[ctx.actor.joint_id(name) for name in wrists]]
+        self.wrist_servos = ctx.servos.indices(wrists)
         self.shoulder_range = m.jnt_range[[ctx.actor.joint_id("shoulder_r_z"), ctx.actor.joint_id("shoulder_l_z")]]
         self._last_raw = 0.0
         self._pitch = 0.0
@@ -668,7 +670,7 @@ class Vault(Sequence):
         for forearm in self.forearms:
             up = d.xmat[forearm].reshape(3, 3)[2]             # F^T e_z: the world's up in the forearm's frame
             goals += [math.atan2(-float(up[1]), float(up[2])), math.asin(float(np.clip(up[0], -1.0, 1.0)))]
-        i = s.indices(["wrist_r_x", "wrist_r_y", "wrist_l_x", "wrist_l_y"])
+        i = self.wrist_servos
         s.start[i] = s.goal[i] = np.clip(goals, self.wrist_range[:, 0], self.wrist_range[:, 1])
         s.t0[i] = t
 
