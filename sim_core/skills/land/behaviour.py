@@ -24,10 +24,10 @@ class Land(Sequence):
                     Parameter("landing_table", "bool", 1.0, 0.0, 1.0,
                               "1: the feet are placed by the character's landing table plus foot_delta (a character "
                               "needs its table); 0: by foot_delta alone (python -m sim_core calibrate land's trials)"),
-                    Parameter("plan_trials", "count", 9, 0, 41,
+                    Parameter("plan_trials", "count", 17, 0, 41,
                               "simulate (python -m sim_core simulate) plans the landing above the loop: the request as "
                               "asked, and if it does not end balanced foot_delta one step more and less, two steps, ... "
-                              "(the landing calibration's delta step, 2 cm x the body's leg length / the man's), at most "
+                              "(1 cm x the body's leg length / the man's: half the landing calibration's step), at most "
                               "this many simulations in all; the first balanced one is run. 0: no plan"))
 
     def check_feasible(self) -> None:

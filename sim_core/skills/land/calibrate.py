@@ -56,6 +56,12 @@ class Grid:
     delta_step: float        # m between neighbouring deltas
 
     @property
+    def plan_step(self) -> float:
+        """m between the foot_delta values a landing's plan tries (sim_core.planning.land): half the
+        grid's step, so that a balanced window the grid saw as one delta holds a plan's trial."""
+        return round(0.5 * self.delta_step, 4)
+
+    @property
     def trials(self) -> int:
         return len(self.drops) * len(self.speeds) * len(self.deltas) + len(self.fast_deltas) * len(self.high_drops)
 
