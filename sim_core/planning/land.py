@@ -6,9 +6,10 @@ speeds; between its rows and drops the balanced window (a few centimetres wide: 
 against the COM's speed at touchdown) can lie beside the interpolated value. So before the run, the
 request is simulated as asked (the table's placement plus the request's ``foot_delta``); if it does
 not end balanced, the same request with ``foot_delta`` one step more and one step less, then two
-steps, ... (the step: half calibrate land's delta step for this body, the man's 1 cm x L: at
-2-3 m/s the balanced windows are 1-4 cm wide and not always whole - measured: the woman from
-0.515 m at +2.11 m/s balanced at -0.01 and +0.01..+0.03 m but fell at 0 - so the plan steps
+steps, ... (the step: landing_any.json's ``plan_step_share`` of calibrate land's delta step for
+this body, the man's 2 cm x L; at 2-3 m/s the balanced windows are 1-4 cm wide and not always
+whole - measured: the woman from 0.515 m at +2.11 m/s balanced at -0.01 and +0.01..+0.03 m but fell
+at 0, from 0.27 m at +2.83 m/s only at -0.005 and +0.005 m of -0.16..+0.16 m - so the plan steps
 finer than the calibration's grid), nearest the table's first, at most ``plan_trials`` simulations in all (the skill's parameter). The first
 balanced one is the plan, and the run is the request with that ``foot_delta`` (the same simulation
 as the trial, so it ends as the trial did; its trajectory logs the chosen value, so replay is
@@ -24,9 +25,13 @@ from __future__ import annotations
 import dataclasses
 from typing import Callable
 
+from ..control.leap import LANDING_CONSTANTS
 from ..simulate import RunRequest, run
 from ..skills.land.calibrate import grid
+from ..tuned.constants import read_constants
 from ..tuning import Space, minimize
+
+CONSTANTS = read_constants("landing", LANDING_CONSTANTS)
 
 TRIAL_FIGURES = ("landing_skid", "foot_slide_after_landing", "final_com_speed")
 
@@ -69,7 +74,7 @@ def plan_landing(request: RunRequest, progress: Callable | None = None, cancelle
     if request.behaviour != "land" or not params["landing_table"] or params["plan_trials"] < 1:
         return request, None
     knob = cls.schema.by_name["foot_delta"]
-    step = grid(character).plan_step
+    step = round(CONSTANTS.plan_step_share * grid(character).delta_step, 4)
     asked = float(params["foot_delta"])
     points = candidates(asked, step, int(params["plan_trials"]), knob.minimum, knob.maximum)
     space = Space({"foot_delta": (knob.minimum, knob.maximum)}, decimals=4)

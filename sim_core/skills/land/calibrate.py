@@ -31,7 +31,7 @@ from ...character.spec import CharacterSpec, character_name, load_character
 from ...simulate import RunRequest, StartState, run
 
 SPEEDS = [-1.0, -0.5, 0.0, 0.5, 1.0, 1.5, 2.0, 2.5, 3.0]
-DELTA_STEP = 0.02            # m between the deltas tried (the landing's plan steps by it too, x L)
+DELTA_STEP = 0.02            # m between the deltas tried (the landing's plan steps by a share of it, x L)
 DELTAS = [round(-0.3 + DELTA_STEP * k, 2) for k in range(28)]     # -0.30 ... 0.24 m
 DROPS = (0.2, 0.4, 0.6)      # m above standing: 0.2 puts the COM at about Wooten's 1.25 m (man) and
                              # lands like a standing broad jump (0.45 s in the air); 0.6 lands like a
@@ -53,13 +53,7 @@ class Grid:
     fast_ramp: float
     fast_deltas: list
     high_drops: list
-    delta_step: float        # m between neighbouring deltas
-
-    @property
-    def plan_step(self) -> float:
-        """m between the foot_delta values a landing's plan tries (sim_core.planning.land): half the
-        grid's step, so that a balanced window the grid saw as one delta holds a plan's trial."""
-        return round(0.5 * self.delta_step, 4)
+    delta_step: float        # m between neighbouring deltas (a landing's plan steps by a share of it)
 
     @property
     def trials(self) -> int:
