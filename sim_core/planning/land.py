@@ -10,11 +10,11 @@ steps, ... (the step: landing_any.json's ``plan_step_share`` of calibrate land's
 this body, the man's 2 cm x L; at 2-3 m/s the balanced windows are 1-4 cm wide and not always
 whole - measured: the woman from 0.515 m at +2.11 m/s balanced at -0.01 and +0.01..+0.03 m but fell
 at 0, from 0.27 m at +2.83 m/s only at -0.005 and +0.005 m of -0.16..+0.16 m - so the plan steps
-finer than the calibration's grid), nearest the table's first, at most ``plan_trials`` simulations in all (the skill's parameter). The first
-balanced one is the plan, and the run is the request with that ``foot_delta`` (the same simulation
-as the trial, so it ends as the trial did; its trajectory logs the chosen value, so replay is
-exact). If none within the bound ends balanced, the plan says so with every trial's outcome, and
-the run is the request as asked.
+finer than the calibration's grid), nearest the table's first, at most ``plan_trials`` simulations
+in all (the skill's parameter). The first balanced one is the plan, and the run is the request with
+that ``foot_delta`` (the same simulation as the trial, so it ends as the trial did; its trajectory
+logs the chosen value, so replay is exact). If none within the bound ends balanced, the plan says
+so with every trial's outcome, and the run is the request as asked.
 
 The trials run through the search service (sim_core.tuning, its ``scan``: the points in order, two
 at a time, stopping at the first accepted, so the plan does not depend on the executor). Nothing
@@ -81,7 +81,8 @@ def plan_landing(request: RunRequest, progress: Callable | None = None, cancelle
     report = None if progress is None else (lambda done, budget, best: progress(done, budget, best.extra))
     result = minimize(LandingTrial(request), space, method="scan", budget=len(points), start={"foot_delta": asked},
                       population=2, progress=report, cancelled=cancelled, executor=executor,
-                      stop=lambda evaluation: evaluation.score == 0.0, options={"points": [{"foot_delta": v} for v in points[1:]]})
+                      stop=lambda evaluation: evaluation.score == 0.0,
+                      options={"points": [{"foot_delta": v} for v in points[1:]]})
     tried = [{"foot_delta": e.settings["foot_delta"], **e.extra} for e in result.evaluations]
     found = result.ended == "stop"
     chosen = tried[-1]["foot_delta"] if found else asked
