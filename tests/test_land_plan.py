@@ -25,6 +25,15 @@ def test_the_plan_tries_the_request_first_then_steps_on_either_side_nearest_firs
     assert grid("man").delta_step == 0.02 and grid("child").delta_step == pytest.approx(0.0092)
 
 
+def test_random_drops_are_drawn_inside_the_offered_range_and_differ_by_seed():
+    """Rounded to mm and cm/s, never out of the range (the child's slowest -0.6765 m/s is drawn as -0.67)."""
+    for character in ("man", "woman", "child"):
+        (h0, h1), (v0, v1) = offered(character)
+        draws = [random_drops(character, 20, seed) for seed in range(1, 30)]
+        assert all(h0 <= h <= h1 and v0 <= v <= v1 for d in draws for h, v in d)
+        assert draws[0] == random_drops(character, 20, 1) != draws[1]
+
+
 def _score(settings):
     return (0.0 if settings["x"] >= 0.3 else 1.0), settings["x"]
 

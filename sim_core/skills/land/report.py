@@ -13,6 +13,7 @@ worst seconds.
 from __future__ import annotations
 
 import argparse
+import math
 import sys
 import time
 from multiprocessing import Pool
@@ -46,11 +47,21 @@ def offered(character: str) -> tuple[tuple[float, float], tuple[float, float]]:
     return (min(drops), max(drops)), landing_speeds(table)
 
 
+def _rounded_inside(values, low: float, high: float, digits: int) -> list[float]:
+    """``values`` rounded to ``digits`` decimals, held inside [low, high] at those decimals (a draw
+    next to an end of the range must not round out of it: the child's -0.6765 m/s is not -0.68)."""
+    scale = 10 ** digits
+    inner = (math.ceil(round(low * scale, 6)) / scale, math.floor(round(high * scale, 6)) / scale)
+    return [min(max(round(float(v), digits), inner[0]), inner[1]) for v in values]
+
+
 def random_drops(character: str, count: int, seed: int) -> list[tuple[float, float]]:
-    """``count`` (drop m, speed m/s) drawn uniformly in what the table offers (rounded to mm and cm/s)."""
+    """``count`` (drop m, speed m/s) drawn uniformly in what the table offers (rounded to mm and cm/s
+    inside it)."""
     (h0, h1), (v0, v1) = offered(character)
     rng = np.random.default_rng(seed)
-    return [(round(float(h), 3), round(float(v), 2)) for h, v in zip(rng.uniform(h0, h1, count), rng.uniform(v0, v1, count))]
+    drops, speeds = rng.uniform(h0, h1, count), rng.uniform(v0, v1, count)
+    return list(zip(_rounded_inside(drops, h0, h1, 3), _rounded_inside(speeds, v0, v1, 2)))
 
 
 def planned_landing(character: str, drop: float, speed: float, duration: float = 3.0) -> dict:
