@@ -15,6 +15,7 @@ import sys
 from typing import Callable
 
 from . import bake, rig, scenery
+from .core.jobs import planned_request
 from .core.simcore import sim
 
 
@@ -109,6 +110,7 @@ def simulate_and_bake(context, *, behaviour: str, params=None, duration: float |
             raise rig.RigError(f"target object {target!r} is not in this file")
         params = {**parse_params(behaviour, params), **target_from_object(obj, bpy.data.objects[target])}
     run_request = make_request(str(obj[rig.CHARACTER_KEY]), behaviour, params, duration, strength, request, pushes)
+    run_request, _ = planned_request(run_request, cancelled=cancelled)     # a landing's foot placement, planned
     trajectory = sim("simulate").run(run_request, progress=progress, cancelled=cancelled)
     action = bake_result(context, obj, trajectory, start_frame, fit_scene_range)
     return action, trajectory

@@ -17,7 +17,7 @@ import bpy
 from bpy.props import EnumProperty, FloatProperty, IntProperty, StringProperty
 
 from . import api, compat, props, rig
-from .core.jobs import PlanningJob, SimulationJob, stored_jump_plan
+from .core.jobs import PlanningJob, SimulationJob, plan_note, planned_request, stored_jump_plan
 from .core.simcore import sim
 
 JUMP = "jump_to_target"
@@ -143,11 +143,11 @@ class SIMATHLETICS_OT_simulate_bake(_ModalJob, bpy.types.Operator):
                                    s["strength"], s["request"])
         return obj, request, s
 
-    def _finish(self, context, obj, trajectory, s):
+    def _finish(self, context, obj, trajectory, s, plan=None):
         action = api.bake_result(context, obj, trajectory, s["start_frame"], s["fit_scene_range"])
         outcome = trajectory.meta.get("outcome")
         self.report({"INFO"} if outcome == "success" else {"WARNING"},
-                    f"Baked {action.name!r}: {key_count(action)} frames, outcome {outcome}")
+                    f"Baked {action.name!r}: {key_count(action)} frames, outcome {outcome}{plan_note(plan)}")
         return {"FINISHED"}
 
     # -- blocking (Python, background)
@@ -159,11 +159,12 @@ class SIMATHLETICS_OT_simulate_bake(_ModalJob, bpy.types.Operator):
             progress = api.console_progress if bpy.app.background else None
             wm.progress_begin(0, 100)
             try:
+                request, plan = planned_request(request)         # a landing's foot placement, planned first
                 trajectory = sim("simulate").run(request, progress=lambda f: (wm.progress_update(100 * f),
                                                                               progress and progress(f)))
             finally:
                 wm.progress_end()
-            return self._finish(context, obj, trajectory, s)
+            return self._finish(context, obj, trajectory, s, plan)
         except _user_errors() as exc:
             self.report({"ERROR"}, str(exc))
             return {"CANCELLED"}
@@ -180,7 +181,7 @@ class SIMATHLETICS_OT_simulate_bake(_ModalJob, bpy.types.Operator):
         if obj is None:
             self.report({"ERROR"}, f"the rig {self._rig_name!r} was deleted during the simulation")
             return {"CANCELLED"}
-        return self._finish(context, obj, job.trajectory, self._s)
+        return self._finish(context, obj, job.trajectory, self._s, job.plan)
 
 
 def overrides(op) -> dict:

@@ -84,6 +84,10 @@ def _plan_progress(done: int, total: int, best: dict) -> None:
           f"{best['landing'][1]:.2f}) m after {best['air_time']:.2f} s ({best['outcome']})", file=sys.stderr, flush=True)
 
 
+def _landing_progress(done: int, total: int, last: dict) -> None:
+    print(f"landing plan: {done}/{total} trials, best so far {last['outcome']}", file=sys.stderr, flush=True)
+
+
 def _use_store(args) -> None:
     """--store DIR: the user's plan store for this command (read and written), as
     $SIM_ATHLETICS_PLANS would set it."""
@@ -111,12 +115,22 @@ def cmd_simulate(args) -> int:
         with executor_for(args.workers) as executor:
             plan_before_run(request, int(request.params.get("plan_trials", 120)), progress=_plan_progress,
                             executor=executor)
+    plan = None
+    if request.behaviour == "land":           # the landing's foot placement, planned by simulating the request
+        from .planning.land import describe, plan_landing
+        from .tuning import executor_for
+        with executor_for(args.workers) as executor:
+            request, plan = plan_landing(request, progress=_landing_progress, executor=executor)
+        if plan is not None:
+            print(describe(plan), file=sys.stderr, flush=True)
     trajectory = run(request, progress=_progress_printer(args.progress or sys.stderr.isatty()))
     if args.out:
         trajectory.save(args.out)
     summary = {"outcome": trajectory.meta["outcome"], "metrics": trajectory.meta["metrics"],
                "behaviour": trajectory.meta["behaviour"], "character": trajectory.meta["character"],
                "out": args.out}
+    if plan is not None:
+        summary["plan"] = plan
     print(json.dumps(summary))
     return 0
 
@@ -302,7 +316,7 @@ def parser() -> argparse.ArgumentParser:
     add_request_arguments(s)
     s.add_argument("--out", help="trajectory file to write (.npz); written only if the run completes")
     s.add_argument("--progress", action="store_true", help="show a progress bar on stderr")
-    s.add_argument("--workers", type=int, help="processes for planning an unplanned jump (default: one per CPU)")
+    s.add_argument("--workers", type=int, help="processes for planning an unplanned jump or a landing (default: one per CPU)")
     s.add_argument("--store", help="the user's plan store directory (default $SIM_ATHLETICS_PLANS, else "
                    "~/.cache/sim_athletics/plans)")
     s.set_defaults(func=cmd_simulate)

@@ -184,3 +184,27 @@ def test_an_own_table_that_fails_its_check_is_reported_and_kept(tables, tmp_path
     assert (result.status, result.route) == ("fails its check (own table kept)", "own table")
     assert "`calibrate running` searches it again" in result.figures
     assert (tables / "running_child.json").read_bytes() == before
+
+
+def test_the_landing_of_a_body_without_a_leap_table_is_checked_with_the_leaps_scaled_constants(tables, tmp_path,
+                                                                                              monkeypatch):
+    """The landing is adapted before the leap (the leap lands), but it lands with the leap's constants
+    (control.leap.leap_constants): while it is adapted, the body's provisional leap table holds the
+    constants scaled to it as the leap's adapter writes them (not leap_any's); removed afterwards."""
+    from sim_core.control.leap import CONSTANTS, leap_constants
+    (tables / "landing_child.json").unlink(missing_ok=True)     # as before the child was adapted
+    (tables / "leap_child.json").unlink(missing_ok=True)
+    child, woman = load_character("child"), load_character("woman")
+    expected = LeapAdapter().scaled_constants(woman, child, tuned.load("leap", "woman"))
+    seen = []
+
+    def check(character, rng):
+        seen.append(vars(leap_constants("child")))
+        return Check(False, "measured: fell", 6)
+    monkeypatch.setattr(ADAPTERS["land"], "check", check)
+    results = command.adapt("child", ["land"], tmp_path / "out", minutes=0, workers=1, seed=1, redo=None,
+                            say=lambda line: None)
+    assert [(r.skill, r.status) for r in results] == [("land", "refused")]
+    assert seen and seen[0]["vertical_timing"] == tuple(expected["vertical_timing"]) != CONSTANTS.vertical_timing
+    assert seen[0]["fast_landing_speed"] == tuple(expected["fast_landing_speed"])
+    assert not (tables / "leap_child.json").exists() and not (tables / "landing_child.json").exists()

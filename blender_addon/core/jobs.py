@@ -58,17 +58,33 @@ class Job:
             self.finished_at = time.monotonic()
 
 
+def planned_request(request, cancelled=None):
+    """(the request a bake runs, its plan or None): a landing's with the foot placement its plan
+    chose above the loop by a few trial runs (sim_core.planning.land, as ``simulate land`` does);
+    any other request as it is."""
+    if request.behaviour != "land":
+        return request, None
+    return sim("planning.land").plan_landing(request, cancelled=cancelled)
+
+
+def plan_note(plan) -> str:
+    """What a bake's report adds about a landing's plan ("" for none)."""
+    return "" if plan is None else "; " + sim("planning.land").describe(plan)
+
+
 class SimulationJob(Job):
     def __init__(self, request):
         super().__init__("sim-athletics-run")
         self.request = request
+        self.plan = None
 
     @property
     def trajectory(self):
         return self.result
 
     def work(self):
-        return sim("simulate").run(self.request, progress=self._set_progress, cancelled=self._cancel.is_set)
+        request, self.plan = planned_request(self.request, cancelled=self._cancel.is_set)
+        return sim("simulate").run(request, progress=self._set_progress, cancelled=self._cancel.is_set)
 
     def _set_progress(self, fraction: float) -> None:
         self.progress = float(fraction)

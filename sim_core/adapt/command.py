@@ -7,6 +7,9 @@ For each skill with an adapter (``sim_core.adapt.skills``: balance, land, leap, 
 - otherwise the nearest calibrated character's table is scaled by Fig. 6, written through the store
   and checked by measured runs of random requests;
 - where the check fails and budget is left, the skill's search runs and the result is checked again;
+- the landing is adapted first (the leap lands), with the leap's constants scaled to the body as the
+  leap's adapter will write them (``LandingAdapter.runs_with``: a provisional leap table holding
+  only them, removed afterwards), not with leap_any's;
 - a skill that still fails is **refused**: its provisional table is removed (or the one that was
   there restored byte for byte: ``tuned.provisional``), so the body is never offered a skill that
   fell; an adapter may keep the part that works instead (``keep_what_works``: a running table keeps
@@ -50,8 +53,15 @@ class Result:
 
 
 def adapt_skill(skill: str, character: str, rng, workers: int, deadline: float, say) -> Result:
-    adapter = ADAPTERS[skill]
+    """One skill carried to the body, inside its adapter's context (the landing: with the leap's
+    constants scaled to the body, which the leap's adapter writes only after it)."""
     spec = load_character(character)
+    with ADAPTERS[skill].runs_with(spec):
+        return _adapt_skill(skill, character, spec, rng, workers, deadline, say)
+
+
+def _adapt_skill(skill: str, character: str, spec: CharacterSpec, rng, workers: int, deadline: float, say) -> Result:
+    adapter = ADAPTERS[skill]
     started = time.monotonic()
     result = lambda state, route, check, runs: Result(skill, state, route, check.figures, runs,
                                                        time.monotonic() - started)

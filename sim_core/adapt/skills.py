@@ -18,6 +18,7 @@ runs read it like any calibrated table. Nothing here writes a file.
 """
 from __future__ import annotations
 
+import contextlib
 import math
 import time
 from dataclasses import dataclass
@@ -63,6 +64,10 @@ class Adapter:
     def keep_what_works(self, character: str, check: Check, rng) -> Check | None:
         """After a failed check: the table narrowed to what worked, checked again (None: all or nothing)."""
         return None
+
+    def runs_with(self, target: CharacterSpec):
+        """A context the skill's scaling, checks and searches run in (nothing by default)."""
+        return contextlib.nullcontext()
 
 
 def nearest_source(target: CharacterSpec, candidates: list[str]) -> str | None:
@@ -129,6 +134,27 @@ class LandingAdapter(Adapter):
         if fast:
             out["fast_touchdown"] = {"speed": v(fast["speed"]), "ramp": v(fast["ramp"]), "delta": m(fast["delta"])}
         return out, 0
+
+    @contextlib.contextmanager
+    def runs_with(self, target: CharacterSpec):
+        """A body with no leap table yet lands with the leap's constants scaled to it, as it will
+        once the leap is adapted (the landing reads them: control.leap.leap_constants; the landing is
+        adapted first because the leap lands): a provisional leap table holding only the constants
+        LeapAdapter.scaled_constants gives from the nearest leap source, removed afterwards, also on
+        an exception or Ctrl-C. A body with a leap table lands with what it holds."""
+        from .. import tuned
+        source = nearest_source(target, tuned.characters_of("leap"))
+        if tuned.exists("leap", target.name) or source is None:
+            yield
+            return
+        with tuned.provisional("leap", target.name):
+            source_spec = load_character(source)
+            constants = LeapAdapter().scaled_constants(source_spec, target, tuned.load("leap", source))
+            tuned.save("leap", target.name, {"character": target.name, "constants": constants, "vertical": {},
+                                             "script": f"python -m sim_core adapt (the {source}'s thrust and landing "
+                                                       f"constants scaled by Fig. 6, while the landing is adapted)"},
+                       strengths=["human"])
+            yield
 
     def check(self, character: str, rng) -> Check:
         from ..control.leap import landing_speeds

@@ -515,6 +515,13 @@ def leap_assess(trajectory, squat_floor: float | None = None) -> tuple[str, dict
 LANDING_SETTINGS = Schema(
     Parameter("foot_delta", "m", 0.0, -0.3, 0.3,
               "foot servo delta the landing adds to its capture-point placement (Table 6.1's role)"))
+# the landing plan's hand-set constants (sim_core/planning/land.py reads them): landing_any.json's "constants"
+LANDING_CONSTANTS = Schema(
+    constant("plan_step_share", "1", 0.05, 1.0,
+             "share of calibrate land's delta step (the man's 2 cm x L) the landing's plan steps foot_delta by "
+             "either side of the table's placement (balanced windows at 2-3 m/s can be 1 cm wide around a "
+             "placement that falls)"),
+)
 
 
 def _landing_rows(body: dict):
@@ -524,6 +531,7 @@ def _landing_rows(body: dict):
     fast = body.get("fast_touchdown")
     if fast:
         yield "fast_touchdown", {"foot_delta": fast["delta"]}
+    yield from constant_rows(body)
 
 
 def foot_delta_row(table: dict, horizontal_speed: float, touchdown_speed: float) -> float:
@@ -547,7 +555,8 @@ def landing_speeds(table: dict) -> tuple[float, float]:
     return max(min(row["speed"]) for row in rows), min(max(row["speed"]) for row in rows)
 
 
-LANDING_TABLE = register_table(TableType("landing", LANDING_SETTINGS, _landing_rows, (foot_delta_row,)))
+LANDING_TABLE = register_table(TableType("landing", with_constants(LANDING_SETTINGS, LANDING_CONSTANTS), _landing_rows,
+                                         (foot_delta_row,)))
 
 
 def calibrated_foot_delta(character: str, horizontal_speed: float, touchdown_speed: float = 0.0) -> float:

@@ -1,9 +1,11 @@
 """Planning: whatever runs whole simulations to choose a behaviour's settings sits here, above
 sim_core/simulate.py (it calls ``simulate.run`` for its trials); a behaviour never runs a nested
-simulation, it only looks up what was planned. See docs/planning.md."""
+simulation, it only looks up what was planned (a jump) or runs the setting chosen for it (a
+landing's foot_delta, planning.land). See docs/planning.md."""
 from __future__ import annotations
 
 from .jump import plan_and_store, plan_jump, planned
+from .land import plan_landing
 
 PLANNED_BEHAVIOURS = ("jump_to_target",)     # behaviours whose runs need a plan first
 
@@ -21,4 +23,4 @@ def plan_before_run(request, budget: int, progress=None, cancelled=None, executo
                           executor=executor)
 
 
-__all__ = ["PLANNED_BEHAVIOURS", "plan_and_store", "plan_before_run", "plan_jump", "planned"]
+__all__ = ["PLANNED_BEHAVIOURS", "plan_and_store", "plan_before_run", "plan_jump", "plan_landing", "planned"]

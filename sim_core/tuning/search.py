@@ -13,6 +13,9 @@ that budgets, seeds, progress, cancel and parallel evaluation mean the same ever
   one); ``cancelled()`` is checked before each evaluation is handed out and while one is
   awaited: it raises ``Cancelled`` and the caller writes nothing.
 * the search works in normalised coordinates (Space): ``sigma`` is a share of every range.
+* ``method="scan"`` is the bounded list search: the start, then ``options["points"]`` (settings in
+  natural units) in the order given, ``population`` at a time, until ``stop`` accepts one (a
+  landing's plan: the table's foot placement, then steps on either side, nearest first).
 """
 from __future__ import annotations
 
@@ -30,7 +33,7 @@ from ..errors import Cancelled, ParameterError
 from .executor import SerialExecutor
 from .space import Space
 
-METHODS = ("cma", "anneal")
+METHODS = ("cma", "anneal", "scan")
 CANCEL_POLL = 0.05          # s between looks at ``cancelled`` while an evaluation runs elsewhere
 FAILED_SCORE = 1e12         # what annealing is told of a non-finite score (SciPy needs a number)
 
@@ -51,7 +54,8 @@ class SearchResult:
     seed: int
     budget: int
     evaluations: list[Evaluation] = field(default_factory=list)
-    ended: str = "budget"       # "budget", "stop" (the caller's stop accepted one), "converged" (CMA-ES)
+    ended: str = "budget"       # "budget", "stop" (the caller's stop accepted one), "converged" (CMA-ES),
+                                # "scanned" (a scan evaluated every point)
 
     @property
     def best(self) -> Evaluation:
@@ -78,7 +82,9 @@ def minimize(objective: Callable, space: Space, method: str = "cma", budget: int
     ``sigma``: CMA-ES's first step as a share of each range; ``population``: CMA-ES's batch size
     (default: cma's, 4 + 3 ln n); ``stop(evaluation)``: True ends the search after that
     evaluation; ``executor``: where evaluations run (default serial, in this process);
-    ``options``: passed to ``cma`` (its options) or to ``dual_annealing`` (keyword arguments)."""
+    ``options``: passed to ``cma`` (its options) or to ``dual_annealing`` (keyword arguments); a
+    scan's ``{"points": [settings, ...]}``, evaluated after the start in that order, ``population``
+    (default 1) at a time."""
     if method not in METHODS:
         raise ParameterError(f"search method {method!r} is unknown; allowed: {', '.join(METHODS)}")
     if not isinstance(budget, int) or budget < 1:
@@ -97,6 +103,8 @@ def minimize(objective: Callable, space: Space, method: str = "cma", budget: int
         return result
     if method == "cma":
         result.ended = _cma(run, z0, seed, sigma, population, options or {})
+    elif method == "scan":
+        result.ended = _scan(run, (options or {}).get("points", []), population or 1)
     else:
         result.ended = _anneal(run, z0, seed, options or {})
     return result
@@ -169,6 +177,15 @@ def _cma(run: _Run, z0, seed: int, sigma: float, population: int | None, options
             return run.ended
         es.tell(asked, [min(_comparable(e.score), FAILED_SCORE) for e in run.log[-len(asked):]])
     return "converged"
+
+
+def _scan(run: _Run, points: list[dict], batch: int) -> str:
+    """The given points (natural units) in order, ``batch`` at a time."""
+    z = [run.space.normalise(p) for p in points]
+    for k in range(0, len(z), batch):
+        if not run.evaluate(z[k:k + batch]):
+            return run.ended
+    return "scanned"
 
 
 def _anneal(run: _Run, z0, seed: int, options: dict) -> str:

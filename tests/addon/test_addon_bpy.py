@@ -409,3 +409,22 @@ def test_a_back_handspring_is_baked_with_its_hands_on_the_floor(empty_scene):
     simulated_travel = abs(result["metrics"]["com_travel"])
     assert simulated_travel > 0.8 and abs(travel.length - simulated_travel) < 0.15
     assert travel.normalized().dot(facing.normalized()) < -0.9      # backward
+
+
+def test_a_landing_is_planned_before_it_is_baked(empty_scene):
+    """Simulate & Bake of a landing plans its foot placement first, as ``simulate land`` does
+    (sim_core.planning.land): the woman from 0.515 m at +2.11 m/s falls on her table's placement and
+    is baked balanced on the plan's, through the operator (the panel's start) and the script API."""
+    from blender_addon import api
+    context = empty_scene
+    assert bpy.ops.sim_athletics.add_character(character="woman") == {"FINISHED"}
+    arm = context.view_layer.objects.active
+    start = context.scene.sim_athletics.request
+    start.start_height, start.start_velocity_x = 0.515, 2.11
+    assert bpy.ops.sim_athletics.simulate_bake(behaviour="land", duration=3.0) == {"FINISHED"}
+    result = json.loads(arm[rig.RESULT_KEY])
+    assert result["outcome"] == "success" and result["params"]["foot_delta"] != 0.0
+    _, trajectory = api.simulate_and_bake(context, behaviour="land", request={"start_height": 0.515,
+                                                                                "start_velocity_x": 2.11})
+    assert trajectory.meta["outcome"] == "success"
+    assert trajectory.meta["params"]["foot_delta"] == result["params"]["foot_delta"]

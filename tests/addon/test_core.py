@@ -71,3 +71,15 @@ def test_a_cancelled_plan_ends_within_a_second_and_writes_nothing(plan_store):
         job.store()
     assert stored_jump_plan("man", params, "human") is None
     assert not plan_store.exists() or not any(plan_store.iterdir())
+
+
+def test_a_baked_landing_runs_its_planned_foot_placement():
+    """Simulate & Bake's job plans a landing as ``simulate land`` does: the woman from 0.515 m at
+    +2.11 m/s falls on her table's placement and lands balanced on the plan's."""
+    from blender_addon.core.jobs import SimulationJob, plan_note
+    from sim_core.simulate import RunRequest, StartState
+    job = SimulationJob(RunRequest("land", "woman", start=StartState(height=0.515, velocity=(2.11, 0.0, 0.0)))).start()
+    assert job.wait(120) and job.error is None
+    assert job.plan["found"] and job.plan["trials"] > 1 and job.trajectory.meta["outcome"] == "success"
+    assert job.trajectory.meta["params"]["foot_delta"] == job.plan["foot_delta"]
+    assert "ends balanced" in plan_note(job.plan)

@@ -23,7 +23,13 @@ class Land(Sequence):
     schema = Schema(*Landing.schema.parameters,
                     Parameter("landing_table", "bool", 1.0, 0.0, 1.0,
                               "1: the feet are placed by the character's landing table plus foot_delta (a character "
-                              "needs its table); 0: by foot_delta alone (python -m sim_core calibrate land's trials)"))
+                              "needs its table); 0: by foot_delta alone (python -m sim_core calibrate land's trials)"),
+                    Parameter("plan_trials", "count", 25, 0, 61,
+                              "simulate (python -m sim_core simulate) plans the landing above the loop: the request as "
+                              "asked, and if it does not end balanced foot_delta one step more and less, two steps, ... "
+                              "(0.5 cm x the body's leg length / the man's: a quarter of the landing calibration's step, "
+                              "landing_any.json), at most this many simulations in all; the first balanced one is run. "
+                              "0: no plan"))
 
     def check_feasible(self) -> None:
         """A run on the character's landing table starts at a horizontal speed its rows serve."""

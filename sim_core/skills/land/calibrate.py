@@ -27,11 +27,12 @@ from ...control.leap import LANDING_TABLE  # noqa: F401  (declares the landing t
 from dataclasses import dataclass
 
 from ...character.dimensions import leg_length_ratio
-from ...character.spec import character_name, load_character
+from ...character.spec import CharacterSpec, character_name, load_character
 from ...simulate import RunRequest, StartState, run
 
 SPEEDS = [-1.0, -0.5, 0.0, 0.5, 1.0, 1.5, 2.0, 2.5, 3.0]
-DELTAS = [round(-0.3 + 0.02 * k, 2) for k in range(28)]     # -0.30 ... 0.24 m
+DELTA_STEP = 0.02            # m between the deltas tried (the landing's plan steps by a share of it, x L)
+DELTAS = [round(-0.3 + DELTA_STEP * k, 2) for k in range(28)]     # -0.30 ... 0.24 m
 DROPS = (0.2, 0.4, 0.6)      # m above standing: 0.2 puts the COM at about Wooten's 1.25 m (man) and
                              # lands like a standing broad jump (0.45 s in the air); 0.6 lands like a
                              # 0.6 m leap (forefoot first)
@@ -52,20 +53,22 @@ class Grid:
     fast_ramp: float
     fast_deltas: list
     high_drops: list
+    delta_step: float        # m between neighbouring deltas (a landing's plan steps by a share of it)
 
     @property
     def trials(self) -> int:
         return len(self.drops) * len(self.speeds) * len(self.deltas) + len(self.fast_deltas) * len(self.high_drops)
 
 
-def grid(character: str) -> Grid:
-    """The man's grid scaled to ``character`` by Fig. 6 (lengths x L, speeds x L^1/2; the man's own
-    numbers for the man, L = 1)."""
-    L = leg_length_ratio(load_character("man"), load_character(character))
+def grid(character) -> Grid:
+    """The man's grid scaled to ``character`` (a name, a spec file or a CharacterSpec) by Fig. 6
+    (lengths x L, speeds x L^1/2; the man's own numbers for the man, L = 1)."""
+    spec = character if isinstance(character, CharacterSpec) else load_character(character)
+    L = leg_length_ratio(load_character("man"), spec)
     length = lambda values: [round(v * L, 4) for v in values]
     speed = lambda values: [round(v * L ** 0.5, 4) for v in values]
     return Grid(speed(SPEEDS), length(DELTAS), tuple(length(DROPS)), speed([FAST_FROM])[0], speed([FAST_RAMP])[0],
-                length(FAST_DELTAS), length(HIGH_DROPS))
+                length(FAST_DELTAS), length(HIGH_DROPS), length([DELTA_STEP])[0])
 
 
 def fast_touchdown(character: str, table: dict) -> dict:

@@ -2,15 +2,29 @@
 speed, for the man and the woman. Prints a table (paste into the README / docs):
 
     python -m sim_core report land
+
+``--random N --seed S --character man woman child``: N random drops per character anywhere in
+what its landing table offers (drops between its rows' lowest and highest, horizontal speeds in
+its rows' common span, uniform, drawn from the seed), each planned and run as ``python -m sim_core
+simulate land`` does it (sim_core.planning.land, in this process): each drop's outcome, the plan's
+trials and foot_delta, and the wall seconds to a result; then passed / drawn and the median and
+worst seconds.
 """
 from __future__ import annotations
 
+import argparse
+import math
 import sys
+import time
 from multiprocessing import Pool
 from pathlib import Path
 
+import numpy as np
+
 ROOT = Path.cwd()                   # docs are written under the folder it runs in (the checkout)
 
+from ... import tuned
+from ...control.leap import landing_speeds
 from ...simulate import RunRequest, StartState, run
 
 DROPS = [round(0.1 * k, 1) for k in range(1, 13)]
@@ -25,7 +39,70 @@ def landed(args) -> bool:
     return traj.meta["outcome"] == "success"
 
 
+def offered(character: str) -> tuple[tuple[float, float], tuple[float, float]]:
+    """(drops, horizontal speeds) a character's landing table offers: its rows' lowest to highest
+    drop, and the speeds every row serves."""
+    table = tuned.load("landing", character)
+    drops = [row["drop"] for row in table["foot_delta"] if row["speed"]]
+    return (min(drops), max(drops)), landing_speeds(table)
+
+
+def _rounded_inside(values, low: float, high: float, digits: int) -> list[float]:
+    """``values`` rounded to ``digits`` decimals, held inside [low, high] at those decimals (a draw
+    next to an end of the range must not round out of it: the child's -0.6765 m/s is not -0.68)."""
+    scale = 10 ** digits
+    inner = (math.ceil(round(low * scale, 6)) / scale, math.floor(round(high * scale, 6)) / scale)
+    return [min(max(round(float(v), digits), inner[0]), inner[1]) for v in values]
+
+
+def random_drops(character: str, count: int, seed: int) -> list[tuple[float, float]]:
+    """``count`` (drop m, speed m/s) drawn uniformly in what the table offers (rounded to mm and cm/s
+    inside it)."""
+    (h0, h1), (v0, v1) = offered(character)
+    rng = np.random.default_rng(seed)
+    drops, speeds = rng.uniform(h0, h1, count), rng.uniform(v0, v1, count)
+    return list(zip(_rounded_inside(drops, h0, h1, 3), _rounded_inside(speeds, v0, v1, 2)))
+
+
+def planned_landing(character: str, drop: float, speed: float, duration: float = 3.0) -> dict:
+    """One drop as ``simulate land`` runs it: planned, then run; what it did and its wall seconds."""
+    from ...planning.land import plan_landing
+    started = time.monotonic()
+    request, plan = plan_landing(RunRequest("land", character, start=StartState(height=drop, velocity=(speed, 0.0, 0.0)),
+                                            duration=duration))
+    trajectory = run(request)
+    return {"drop": drop, "speed": speed, "outcome": trajectory.meta["outcome"], "plan": plan,
+            "seconds": time.monotonic() - started}
+
+
+def random_report(characters: list[str], count: int, seed: int) -> int:
+    for character in characters:
+        (h0, h1), (v0, v1) = offered(character)
+        print(f"{character}: {count} random drops {h0:g}-{h1:g} m at {v0:+g}..{v1:+g} m/s (seed {seed})", flush=True)
+        results = []
+        for drop, speed in random_drops(character, count, seed):
+            r = planned_landing(character, drop, speed)
+            results.append(r)
+            p = r["plan"]
+            print(f"  {drop:.3f} m at {speed:+.2f} m/s: {r['outcome']}, plan {p['trials']} trial(s), "
+                  f"foot_delta {p['foot_delta']:+.4f} m{'' if p['found'] else ' (none found)'}, {r['seconds']:.1f} s",
+                  flush=True)
+        seconds = [r["seconds"] for r in results]
+        passed = sum(r["outcome"] == "success" for r in results)
+        print(f"{character}: {passed}/{count} balanced; plans of 1 trial {sum(r['plan']['trials'] == 1 for r in results)}, "
+              f"most trials {max(r['plan']['trials'] for r in results)}; seconds to a result median "
+              f"{float(np.median(seconds)):.1f}, worst {max(seconds):.1f}", flush=True)
+    return 0
+
+
 def main(argv=None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--random", type=int, default=0, help="random drops per character (0: the fixed report)")
+    parser.add_argument("--seed", type=int, default=1)
+    parser.add_argument("--character", nargs="+", default=["man", "woman", "child"])
+    args = parser.parse_args(argv)
+    if args.random:
+        return random_report(args.character, args.random, args.seed)
     with Pool(2) as pool:
         for character in ("man", "woman"):
             drops = pool.map(landed, [(character, h, 0.0) for h in DROPS])
