@@ -117,10 +117,11 @@ def cmd_simulate(args) -> int:
                             executor=executor)
     plan = None
     if request.behaviour == "land":           # the landing's foot placement, planned by simulating the request
-        from .planning.land import describe, plan_landing
+        from .planning import planned_request
+        from .planning.land import describe
         from .tuning import executor_for
         with executor_for(args.workers) as executor:
-            request, plan = plan_landing(request, progress=_landing_progress, executor=executor)
+            request, plan = planned_request(request, progress=_landing_progress, executor=executor)
         if plan is not None:
             print(describe(plan), file=sys.stderr, flush=True)
     trajectory = run(request, progress=_progress_printer(args.progress or sys.stderr.isatty()))

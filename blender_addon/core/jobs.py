@@ -62,9 +62,7 @@ def planned_request(request, cancelled=None):
     """(the request a bake runs, its plan or None): a landing's with the foot placement its plan
     chose above the loop by a few trial runs (sim_core.planning.land, as ``simulate land`` does);
     any other request as it is."""
-    if request.behaviour != "land":
-        return request, None
-    return sim("planning.land").plan_landing(request, cancelled=cancelled)
+    return sim("planning").planned_request(request, cancelled=cancelled)
 
 
 def plan_note(plan) -> str:

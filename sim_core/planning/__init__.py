@@ -10,6 +10,15 @@ from .land import plan_landing
 PLANNED_BEHAVIOURS = ("jump_to_target",)     # behaviours whose runs need a plan first
 
 
+def planned_request(request, progress=None, cancelled=None, executor=None):
+    """(the request a run executes, its landing plan or None): a ``land`` request with the foot
+    placement its plan chose by trial runs (planning.land); any other request as it is. The one rule
+    the CLI's simulate and the add-on's bakes share."""
+    if request.behaviour != "land":
+        return request, None
+    return plan_landing(request, progress=progress, cancelled=cancelled, executor=executor)
+
+
 def plan_before_run(request, budget: int, progress=None, cancelled=None, executor=None) -> dict | None:
     """For a run ``request`` (simulate.RunRequest) of a planned behaviour with no stored plan: plan
     it now, above the loop, and store the plan (None if it needs none or has one; a budget of 0
@@ -23,4 +32,4 @@ def plan_before_run(request, budget: int, progress=None, cancelled=None, executo
                           executor=executor)
 
 
-__all__ = ["PLANNED_BEHAVIOURS", "plan_and_store", "plan_before_run", "plan_jump", "plan_landing", "planned"]
+__all__ = ["PLANNED_BEHAVIOURS", "plan_and_store", "plan_before_run", "plan_jump", "plan_landing", "planned", "planned_request"]
