@@ -25,7 +25,8 @@ from pathlib import Path
 
 import numpy as np
 
-from ..control.leap import LEAP_SETTINGS, blend_rows, broad_rows, load_mapping
+from ..ballistics import GRAVITY, time_to_fall_to
+from ..control.leap import LEAP_SETTINGS, Landing, blend_rows, broad_rows, load_mapping
 from ..skills.jump_to_target.behaviour import KNOB_DEFAULTS, JumpToTarget, read_plans
 from ..skills.jump_to_target.region import JUMP_MODEL_TABLE, LANDING_TOLERANCE, model  # noqa: F401  (the row type, for save)
 from .. import tuned
@@ -58,6 +59,24 @@ LONG_EDGE = 0.5                         # s: a flight this long is at its edge (
 EXTEND_ROUNDS = 2                       # steps outward from the edge
 FILL_STEPS = (0.25, 0.5, 0.75)      # shares of the way between the jumps around a gap that fill measures
 FILL_ROUNDS = 2                     # rounds of fill over the gaps left
+# the second family (issue 29's air times): the broad jumps fly 0.37-0.54 s (the man) at every distance;
+# a calibrated vertical leap blended with a broad jump (blend_rows) takes off higher and leaning less,
+# so it lands at the short and middle distances after a longer flight. Measured on the man (0.51 m
+# rise blended with his 1.33 m broad row): a quarter to three quarters of the way lands 0.2-1.05 m in
+# 0.61-0.66 s. With the landing settings blended too (the broad row's foot lead and delta, set for
+# 2.5 m/s forward and a 2 m/s touchdown) every one fell backward: the feet landed 0.14 m ahead of a
+# COM moving 0.6 m/s forward and 3.2 m/s down; with the landing's own settings (HIGH_LANDING, its
+# calibrated foot delta for those speeds) 5 of 12 landed. The rest left the ground spinning backward
+# (-9 kg m^2/s: the vertical rows extend the hips at lift-off) and touched down with the trunk 23 deg
+# back; less lift-off hip extension (HIGH_HIP) landed 10 of 12 of those.
+HIGH_AIR_TIMES = (0.55, 0.6, 0.65, 0.7)  # s: the vertical rows whose rise flies nearest each (vertical_flight)
+HIGH_PARTNERS = (1.0, 1.3, 1.6, 1.9)     # m: the broad rows travelling nearest each (TARGETS.md's distances)
+HIGH_WEIGHTS = (0.25, 0.5, 0.75)         # shares of the way from the vertical row to the broad one
+HIGH_HIP = (0.0, -0.1, -0.2)             # rad: lift-off hip extension taken off (less backward spin)
+HIGH_LANDING = {"foot_delta": 0.0,       # the landing as calibrated (calibrate land): its foot delta table only,
+                "landing_foot_lead_time": Landing.schema.by_name["foot_lead_time"].default,   # its lead,
+                "landing_swing_arms": 0.0,                                                   # arms held
+                "landing_arm_flexion": Landing.schema.by_name["arm_flexion"].default}
 WINDUP_TIME = JumpToTarget.schema.by_name["windup_time"].default   # s: the wind-up the calibration jumps ran with
 PLAN_KEYS = ("crouch_height", "crouch_pitch", "com_offset", "liftoff_hip", "arm_swing", "thrust_damping",
              "foot_delta", "vertical_thrust", "landing_swing_arms", "landing_arm_flexion", "landing_foot_lead_time")
@@ -88,6 +107,50 @@ def bases(character: str) -> list[dict]:
     return unique
 
 
+def vertical_flight(rise: float) -> float:
+    """The air time of a jump whose COM rises ``rise`` from take-off (ballistics: up and down again)."""
+    return time_to_fall_to(0.0, math.sqrt(2.0 * GRAVITY * max(rise, 0.0)), 0.0)
+
+
+def high_bases(character: str) -> list[dict]:
+    """The second family: each calibrated vertical leap flying nearest one of HIGH_AIR_TIMES
+    (vertical_flight of its rise) blended HIGH_WEIGHTS of the way to each broad row travelling
+    nearest one of HIGH_PARTNERS, with the landing's own settings (HIGH_LANDING) and the lift-off hip
+    extension less by each of HIGH_HIP, without repeats."""
+    mapping = load_mapping(character)
+    columns = mapping["vertical"]
+    rises = columns["com_rise"]
+    settings_names = [n for n in columns if n not in ("com_rise", "com_travel", "peak_thrust_grf_body_weights")]
+    verticals = sorted({min(range(len(rises)), key=lambda k: abs(vertical_flight(rises[k]) - t)) for t in HIGH_AIR_TIMES})
+    travels, rows = broad_rows(mapping["broad"])
+    partners = sorted({int(np.argmin(np.abs(travels - d))) for d in HIGH_PARTNERS})
+    ranges = {p.name: (p.minimum, p.maximum) for p in LEAP_SETTINGS.parameters}
+    out = []
+    for k in verticals:
+        high = plan_settings({n: columns[n][k] for n in settings_names})
+        for j in partners:
+            for w in HIGH_WEIGHTS:
+                blended = {**blend_rows(high, plan_settings(rows[j]), w), **HIGH_LANDING}
+                for dh in HIGH_HIP:
+                    s = dict(blended)
+                    s["liftoff_hip"] = min(max(s["liftoff_hip"] + dh, ranges["liftoff_hip"][0]), ranges["liftoff_hip"][1])
+                    if s not in out:
+                        out.append(s)
+    return out
+
+
+def measure_high(character: str, points: list[dict], sink=None) -> list[dict]:
+    """Measure the second family (high_bases) where not measured already. Returns the new jumps."""
+    began, added = time.perf_counter(), []
+    todo = [s for s in high_bases(character) if not any(p["settings"] == s for p in points)]
+    for k, settings in enumerate(todo):
+        added.append(_logged(measure(character, settings), sink))
+        if (k + 1) % 20 == 0 or k + 1 == len(todo):
+            print(f"{character}: high family {k + 1} / {len(todo)}, {len(balanced_points(added))} balanced, "
+                  f"{time.perf_counter() - began:.0f} s", file=sys.stderr, flush=True)
+    return added
+
+
 def nudged(settings: dict, only: tuple = ()) -> list[dict]:
     """The settings and each NUDGE of them, inside the leap's ranges (``only``: just the nudges that
     change every one of these settings, without the settings themselves)."""
@@ -112,8 +175,8 @@ def measure(character: str, settings: dict, log=None) -> dict:
 
 
 def calibrate(character: str, out: Path | None = None, directory: Path | None = None, only: tuple = ()) -> list[dict]:
-    """Measure every base and its nudges (one process; about 1.5 s a jump), step outward from the
-    edge (extend), fill the gaps between the balanced landings (fill), and store the table. ``only``: measure just the nudges
+    """Measure every base and its nudges (one process; about 1.5 s a jump), the second family
+    (measure_high), step outward from the edge (extend), fill the gaps between the balanced landings (fill), and store the table. ``only``: measure just the nudges
     that change every one of these settings and add them to the stored table's jumps."""
     points = list(model(character)["points"]) if only else []
     began = time.perf_counter()
@@ -123,6 +186,7 @@ def calibrate(character: str, out: Path | None = None, directory: Path | None = 
             points.append(_logged(measure(character, settings), sink))
         print(f"{character}: base {k + 1}, {len(points)} jumps, {sum(p['measured']['outcome'] == 'success' for p in points)}"
               f" balanced, {time.perf_counter() - began:.0f} s", file=sys.stderr, flush=True)
+    points += measure_high(character, points, sink)
     points += extend(character, points, sink)
     points += fill(character, points, sink)
     store(character, points, directory)
@@ -209,6 +273,9 @@ def main(argv=None) -> int:
                                                    "every one of them and add them to the stored table")
     parser.add_argument("--extend-only", action="store_true",
                         help="only step outward from the stored table's edge (extend), adding to it")
+    parser.add_argument("--high-only", action="store_true",
+                        help="only measure the second family (vertical leaps blended with broad jumps, "
+                             "measure_high), adding to the stored table")
     parser.add_argument("--fill-only", action="store_true",
                         help="only fill the gaps of the stored table's jumps (fill), adding to it")
     args = parser.parse_args(argv)
@@ -216,6 +283,9 @@ def main(argv=None) -> int:
         if args.extend_only:
             points = list(model(character)["points"])
             store(character, points + extend(character, points, open(args.log, "a") if args.log else None))
+        elif args.high_only:
+            points = list(model(character)["points"])
+            store(character, points + measure_high(character, points, open(args.log, "a") if args.log else None))
         elif args.fill_only:
             points = list(model(character)["points"])
             sink = open(args.log, "a") if args.log else None
