@@ -73,6 +73,11 @@ HIGH_AIR_TIMES = (0.55, 0.6, 0.65, 0.7)  # s: the vertical rows whose rise flies
 HIGH_PARTNERS = (1.0, 1.3, 1.6, 1.9)     # m: the broad rows travelling nearest each (TARGETS.md's distances)
 HIGH_WEIGHTS = (0.25, 0.5, 0.75)         # shares of the way from the vertical row to the broad one
 HIGH_HIP = (0.0, -0.1, -0.2)             # rad: lift-off hip extension taken off (less backward spin)
+HIGH_ARMS_BACK = {"landing_swing_arms": 1.0, "landing_arm_flexion": -0.8}   # those that fell, again with the arms
+                                        # swung down and back in flight (pitches the trunk back; the man's 1.21 m broad
+                                        # row swings them to -0.84 rad): his 1.23 m jump in 0.62 s touched down with the
+                                        # trunk 42 deg forward, the hips righted it and he fell backward; so, 1.19 m in
+                                        # 0.60 s, balanced (lift-off hip +-0.1-0.3 rad, foot lead 0.15 / 0.25 s: fell)
 HIGH_SIDEWAYS = ("com_offset_y",)       # then the balanced ones leaning sideways (NUDGES of these), as the bases
 HIGH_LANDING = {"foot_delta": 0.0,       # the landing as calibrated (calibrate land): its foot delta table only,
                 "landing_foot_lead_time": Landing.schema.by_name["foot_lead_time"].default,   # its lead,
@@ -141,20 +146,26 @@ def high_bases(character: str) -> list[dict]:
 
 
 def measure_high(character: str, points: list[dict], sink=None) -> list[dict]:
-    """Measure the second family (high_bases), then each of its balanced jumps leaning sideways (the
-    NUDGES of HIGH_SIDEWAYS), where not measured already. Returns the new jumps."""
+    """Measure the second family (high_bases), those of it that did not land balanced again with the
+    arms swung back in flight (HIGH_ARMS_BACK), then each balanced one leaning sideways (the NUDGES of
+    HIGH_SIDEWAYS), each where not measured already. Returns the new jumps."""
     began, added = time.perf_counter(), []
     family = high_bases(character)
-    todo = [s for s in family if not any(p["settings"] == s for p in points)]
-    for stage in ("high family", "sideways"):
+
+    def run(stage: str, todo: list[dict]) -> None:
+        todo = [s for k, s in enumerate(todo) if s not in todo[:k] and not any(p["settings"] == s for p in points + added)]
         for k, settings in enumerate(todo):
             added.append(_logged(measure(character, settings), sink))
             if (k + 1) % 20 == 0 or k + 1 == len(todo):
                 print(f"{character}: {stage} {k + 1} / {len(todo)}, {len(balanced_points(added))} balanced, "
                       f"{time.perf_counter() - began:.0f} s", file=sys.stderr, flush=True)
-        landed = [p["settings"] for p in balanced_points(points + added) if p["settings"] in family]
-        todo = [s for b in landed for s in nudged(b, HIGH_SIDEWAYS)
-                if not any(p["settings"] == s for p in points + added)]
+
+    run("high family", family)
+    run("arms back", [{**p["settings"], **HIGH_ARMS_BACK} for p in points + added
+                      if p["settings"] in family and p["measured"]["outcome"] != "success"])
+    family += [{**s, **HIGH_ARMS_BACK} for s in family]
+    run("sideways", [s for p in balanced_points(points + added) if p["settings"] in family
+                     for s in nudged(p["settings"], HIGH_SIDEWAYS)])
     return added
 
 
