@@ -148,7 +148,8 @@ def high_bases(character: str) -> list[dict]:
 def measure_high(character: str, points: list[dict], sink=None) -> list[dict]:
     """Measure the second family (high_bases), those of it that did not land balanced again with the
     arms swung back in flight (HIGH_ARMS_BACK), then each balanced one leaning sideways (the NUDGES of
-    HIGH_SIDEWAYS), each where not measured already. Returns the new jumps."""
+    HIGH_SIDEWAYS), each where not measured already, and step outward from those at a side (extend,
+    OUTWARD only). Returns the new jumps."""
     began, added = time.perf_counter(), []
     family = high_bases(character)
 
@@ -164,8 +165,12 @@ def measure_high(character: str, points: list[dict], sink=None) -> list[dict]:
     run("arms back", [{**p["settings"], **HIGH_ARMS_BACK} for p in points + added
                       if p["settings"] in family and p["measured"]["outcome"] != "success"])
     family += [{**s, **HIGH_ARMS_BACK} for s in family]
-    run("sideways", [s for p in balanced_points(points + added) if p["settings"] in family
-                     for s in nudged(p["settings"], HIGH_SIDEWAYS)])
+    sideways = [s for p in balanced_points(points + added) if p["settings"] in family
+                for s in nudged(p["settings"], HIGH_SIDEWAYS)]
+    run("sideways", sideways)
+    # and outward from those that landed at a side (extend's OUTWARD steps only: they fly long already)
+    added += extend(character, points + added, sink, start=[p for p in points + added if p["settings"] in sideways],
+                    longer=False)
     return added
 
 
@@ -218,13 +223,15 @@ def _logged(point: dict, sink) -> dict:
     return point
 
 
-def extend(character: str, points: list[dict], sink=None, rounds: int = EXTEND_ROUNDS) -> list[dict]:
+def extend(character: str, points: list[dict], sink=None, rounds: int = EXTEND_ROUNDS, start: list[dict] | None = None,
+           longer: bool = True) -> list[dict]:
     """Steps outward from the balanced jumps at the edge of the measured region: OUTWARD (more lean
-    to the side it landed) from those LATERAL_EDGE or more to a side, LONGER from those that flew
-    LONG_EDGE or longer; each round from the balanced edge jumps the round before added (the first
-    from all). Returns the new jumps (balanced or not)."""
+    to the side it landed) from those LATERAL_EDGE or more to a side, LONGER (unless not ``longer``)
+    from those that flew LONG_EDGE or longer; each round from the balanced edge jumps the round before
+    added (the first from all, or from the balanced ones of ``start``). Returns the new jumps
+    (balanced or not)."""
     ranges = {p.name: (p.minimum, p.maximum) for p in LEAP_SETTINGS.parameters}
-    added, edge = [], balanced_points(points)
+    added, edge = [], balanced_points(points if start is None else start)
     for _ in range(rounds):
         new = []
         for p in edge:
@@ -232,7 +239,7 @@ def extend(character: str, points: list[dict], sink=None, rounds: int = EXTEND_R
             side = p["measured"]["landing"][1]
             if abs(side) >= LATERAL_EDGE:
                 steps.append([(n, math.copysign(c, side)) for n, c in OUTWARD])
-            if p["measured"]["air_time"] >= LONG_EDGE:
+            if longer and p["measured"]["air_time"] >= LONG_EDGE:
                 steps.append(list(LONGER))
             for step in steps:
                 settings = dict(p["settings"])
