@@ -2,9 +2,10 @@
 
 Calibration data: the leap's settings of every calibrated broad jump (control.leap, the broad rows)
 and of every stored ground plan straight ahead, each run as a jump to a target and also with its
-forward lean, lift-off hip angle, crouch depth and arm swing nudged (``NUDGES``), each trial
-measured as the planner measures one (landing point of the middle of the feet, air time,
-balanced or not). They are kept in ``sim_core/tuned/tables/jump_model_<character>.json``
+forward lean, lift-off hip angle, crouch depth and arm swing nudged (``NUDGES``); and a second
+family for the long air times, the vertical leaps blended with the broad rows (``high_bases``,
+``measure_high``); each trial measured as the planner measures one (landing point of the middle of
+the feet, air time, balanced or not). They are kept in ``sim_core/tuned/tables/jump_model_<character>.json``
 (``python -m sim_core.planning.jump_model --characters man,woman`` measures and writes them).
 
 The model maps a request (x, y, air time) to the measured balanced jumps near it, in units of
