@@ -39,3 +39,23 @@ def test_a_target_outside_the_region_is_refused_in_one_line_before_simulating(pa
     for word in words:
         assert word in text
     assert region_refusal("man", (params["target_x"], params["target_y"]), params["air_time"]) == text
+
+
+@pytest.mark.parametrize("character", ["man", "woman"])
+def test_the_second_family_is_measured_and_lands_long_flights(character):
+    """The vertical leaps blended with the broad rows (jump_model.high_bases) are in the table, inside
+    the leap's ranges, with the landing's own settings, and some land balanced after 0.55 s or more
+    at 0.5-1 m (the broad jumps fly 0.37-0.54 s)."""
+    from sim_core.control.leap import LEAP_SETTINGS
+    from sim_core.planning.jump_model import HIGH_LANDING, high_bases, vertical_flight
+    from sim_core.skills.jump_to_target.region import model
+    assert vertical_flight(0.51) == pytest.approx(0.645, abs=0.001)
+    family = high_bases(character)
+    ranges = {p.name: (p.minimum, p.maximum) for p in LEAP_SETTINGS.parameters}
+    assert all(ranges[n][0] <= s[n] <= ranges[n][1] for s in family for n in s if n in ranges)
+    assert all(s[n] == v for s in family for n, v in HIGH_LANDING.items())
+    points = model(character)["points"]
+    measured = [p for p in points if p["settings"] in family]
+    assert len(measured) == len(family)
+    assert any(p["measured"]["outcome"] == "success" and p["measured"]["air_time"] >= 0.55
+               and 0.5 <= p["measured"]["landing"][0] <= 1.0 for p in measured)
