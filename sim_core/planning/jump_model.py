@@ -199,9 +199,11 @@ def measure(character: str, settings: dict, log=None) -> dict:
 
 
 def calibrate(character: str, out: Path | None = None, directory: Path | None = None, only: tuple = ()) -> list[dict]:
-    """Measure every base and its nudges (one process; about 1.5 s a jump), the second family
-    (measure_high), step outward from the edge (extend), fill the gaps between the balanced landings (fill), and store the table. ``only``: measure just the nudges
-    that change every one of these settings and add them to the stored table's jumps."""
+    """Measure every base and its nudges (one process; about 1.5 s a jump), step outward from the
+    edge (extend), fill the gaps between the balanced landings (fill), measure the second family
+    (measure_high, which steps outward from its own sideways landings), and store the table.
+    ``only``: measure just the nudges that change every one of these settings and add them to the
+    stored table's jumps."""
     points = list(model(character)["points"]) if only else []
     began = time.perf_counter()
     sink = open(out, "a") if out else None
@@ -210,9 +212,9 @@ def calibrate(character: str, out: Path | None = None, directory: Path | None = 
             points.append(_logged(measure(character, settings), sink))
         print(f"{character}: base {k + 1}, {len(points)} jumps, {sum(p['measured']['outcome'] == 'success' for p in points)}"
               f" balanced, {time.perf_counter() - began:.0f} s", file=sys.stderr, flush=True)
-    points += measure_high(character, points, sink)
     points += extend(character, points, sink)
     points += fill(character, points, sink)
+    points += measure_high(character, points, sink)
     store(character, points, directory)
     return points
 
