@@ -54,7 +54,8 @@ def test_target_params_are_measured_from_the_middle_of_the_feet():
     ({"target_z": 0.5, "obstacle_height": 0.3, "target_x": 1.5}, ["obstacle_height=0.3", "target_z <= 0"]),
     ({"obstacle_height": -0.1}, ["obstacle_height", "allowed range"]),
     ({"target_x": 1.2, "plan_trials": 0}, ["no stored plan", "plan it first"]),
-    ({"target_x": 1.1, "plan_trials": 0}, ["outside the region", "measured landings go from"]),
+    ({"target_x": 2.2, "air_time": 0.5, "plan_trials": 0}, ["outside the region", "measured landings: "]),
+    # (the man's measured landings have no gap of 10 cm left between 0.5 and 2.07 m)
 ])
 def test_bad_requests_are_refused_before_simulating(params, words):
     with pytest.raises(ParameterError) as refused:

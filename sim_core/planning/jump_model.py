@@ -2,9 +2,10 @@
 
 Calibration data: the leap's settings of every calibrated broad jump (control.leap, the broad rows)
 and of every stored ground plan straight ahead, each run as a jump to a target and also with its
-forward lean, lift-off hip angle, crouch depth and arm swing nudged (``NUDGES``), each trial
-measured as the planner measures one (landing point of the middle of the feet, air time,
-balanced or not). They are kept in ``sim_core/tuned/tables/jump_model_<character>.json``
+forward lean, lift-off hip angle, crouch depth and arm swing nudged (``NUDGES``); and a second
+family for the long air times, the vertical leaps blended with the broad rows (``high_bases``,
+``measure_high``); each trial measured as the planner measures one (landing point of the middle of
+the feet, air time, balanced or not). They are kept in ``sim_core/tuned/tables/jump_model_<character>.json``
 (``python -m sim_core.planning.jump_model --characters man,woman`` measures and writes them).
 
 The model maps a request (x, y, air time) to the measured balanced jumps near it, in units of
@@ -25,7 +26,8 @@ from pathlib import Path
 
 import numpy as np
 
-from ..control.leap import LEAP_SETTINGS, blend_rows, broad_rows, load_mapping
+from ..ballistics import GRAVITY, time_to_fall_to
+from ..control.leap import LEAP_SETTINGS, Landing, blend_rows, broad_rows, load_mapping
 from ..skills.jump_to_target.behaviour import KNOB_DEFAULTS, JumpToTarget, read_plans
 from ..skills.jump_to_target.region import JUMP_MODEL_TABLE, LANDING_TOLERANCE, model  # noqa: F401  (the row type, for save)
 from .. import tuned
@@ -58,6 +60,30 @@ LONG_EDGE = 0.5                         # s: a flight this long is at its edge (
 EXTEND_ROUNDS = 2                       # steps outward from the edge
 FILL_STEPS = (0.25, 0.5, 0.75)      # shares of the way between the jumps around a gap that fill measures
 FILL_ROUNDS = 2                     # rounds of fill over the gaps left
+# the second family (issue 29's air times): the broad jumps fly 0.37-0.54 s (the man) at every distance;
+# a calibrated vertical leap blended with a broad jump (blend_rows) takes off higher and leaning less,
+# so it lands at the short and middle distances after a longer flight. Measured on the man (0.51 m
+# rise blended with his 1.33 m broad row): a quarter to three quarters of the way lands 0.2-1.05 m in
+# 0.61-0.66 s. With the landing settings blended too (the broad row's foot lead and delta, set for
+# 2.5 m/s forward and a 2 m/s touchdown) every one fell backward: the feet landed 0.14 m ahead of a
+# COM moving 0.6 m/s forward and 3.2 m/s down; with the landing's own settings (HIGH_LANDING, its
+# calibrated foot delta for those speeds) 5 of 12 landed. The rest left the ground spinning backward
+# (-9 kg m^2/s: the vertical rows extend the hips at lift-off) and touched down with the trunk 23 deg
+# back; less lift-off hip extension (HIGH_HIP) landed 10 of 12 of those.
+HIGH_AIR_TIMES = (0.55, 0.6, 0.65, 0.7)  # s: the vertical rows whose rise flies nearest each (vertical_flight)
+HIGH_PARTNERS = (1.0, 1.3, 1.6, 1.9)     # m: the broad rows travelling nearest each (TARGETS.md's distances)
+HIGH_WEIGHTS = (0.25, 0.5, 0.75)         # shares of the way from the vertical row to the broad one
+HIGH_HIP = (0.0, -0.1, -0.2)             # rad: lift-off hip extension taken off (less backward spin)
+HIGH_ARMS_BACK = {"landing_swing_arms": 1.0, "landing_arm_flexion": -0.8}   # those that fell, again with the arms
+                                        # swung down and back in flight (pitches the trunk back; the man's 1.21 m broad
+                                        # row swings them to -0.84 rad): his 1.23 m jump in 0.62 s touched down with the
+                                        # trunk 42 deg forward, the hips righted it and he fell backward; so, 1.19 m in
+                                        # 0.60 s, balanced (lift-off hip +-0.1-0.3 rad, foot lead 0.15 / 0.25 s: fell)
+HIGH_SIDEWAYS = ("com_offset_y",)       # then the balanced ones leaning sideways (NUDGES of these), as the bases
+HIGH_LANDING = {"foot_delta": 0.0,       # the landing as calibrated (calibrate land): its foot delta table only,
+                "landing_foot_lead_time": Landing.schema.by_name["foot_lead_time"].default,   # its lead,
+                "landing_swing_arms": 0.0,                                                   # arms held
+                "landing_arm_flexion": Landing.schema.by_name["arm_flexion"].default}
 WINDUP_TIME = JumpToTarget.schema.by_name["windup_time"].default   # s: the wind-up the calibration jumps ran with
 PLAN_KEYS = ("crouch_height", "crouch_pitch", "com_offset", "liftoff_hip", "arm_swing", "thrust_damping",
              "foot_delta", "vertical_thrust", "landing_swing_arms", "landing_arm_flexion", "landing_foot_lead_time")
@@ -88,6 +114,67 @@ def bases(character: str) -> list[dict]:
     return unique
 
 
+def vertical_flight(rise: float) -> float:
+    """The air time of a jump whose COM rises ``rise`` from take-off (ballistics: up and down again)."""
+    return time_to_fall_to(0.0, math.sqrt(2.0 * GRAVITY * max(rise, 0.0)), 0.0)
+
+
+def high_bases(character: str) -> list[dict]:
+    """The second family: each calibrated vertical leap flying nearest one of HIGH_AIR_TIMES
+    (vertical_flight of its rise) blended HIGH_WEIGHTS of the way to each broad row travelling
+    nearest one of HIGH_PARTNERS, with the landing's own settings (HIGH_LANDING) and the lift-off hip
+    extension less by each of HIGH_HIP, without repeats."""
+    mapping = load_mapping(character)
+    columns = mapping["vertical"]
+    rises = columns["com_rise"]
+    settings_names = [n for n in columns if n not in ("com_rise", "com_travel", "peak_thrust_grf_body_weights")]
+    verticals = sorted({min(range(len(rises)), key=lambda k: abs(vertical_flight(rises[k]) - t)) for t in HIGH_AIR_TIMES})
+    travels, rows = broad_rows(mapping["broad"])
+    partners = sorted({int(np.argmin(np.abs(travels - d))) for d in HIGH_PARTNERS})
+    ranges = {p.name: (p.minimum, p.maximum) for p in LEAP_SETTINGS.parameters}
+    out = []
+    for k in verticals:
+        high = plan_settings({n: columns[n][k] for n in settings_names})
+        for j in partners:
+            for w in HIGH_WEIGHTS:
+                blended = {**blend_rows(high, plan_settings(rows[j]), w), **HIGH_LANDING}
+                for dh in HIGH_HIP:
+                    s = dict(blended)
+                    s["liftoff_hip"] = min(max(s["liftoff_hip"] + dh, ranges["liftoff_hip"][0]), ranges["liftoff_hip"][1])
+                    if s not in out:
+                        out.append(s)
+    return out
+
+
+def measure_high(character: str, points: list[dict], sink=None) -> list[dict]:
+    """Measure the second family (high_bases), those of it that did not land balanced again with the
+    arms swung back in flight (HIGH_ARMS_BACK), then each balanced one leaning sideways (the NUDGES of
+    HIGH_SIDEWAYS), each where not measured already, and step outward from those at a side (extend,
+    OUTWARD only). Returns the new jumps."""
+    began, added = time.perf_counter(), []
+    family = high_bases(character)
+
+    def run(stage: str, todo: list[dict]) -> None:
+        todo = [s for k, s in enumerate(todo) if s not in todo[:k] and not any(p["settings"] == s for p in points + added)]
+        for k, settings in enumerate(todo):
+            added.append(_logged(measure(character, settings), sink))
+            if (k + 1) % 20 == 0 or k + 1 == len(todo):
+                print(f"{character}: {stage} {k + 1} / {len(todo)}, {len(balanced_points(added))} balanced, "
+                      f"{time.perf_counter() - began:.0f} s", file=sys.stderr, flush=True)
+
+    run("high family", family)
+    run("arms back", [{**p["settings"], **HIGH_ARMS_BACK} for p in points + added
+                      if p["settings"] in family and p["measured"]["outcome"] != "success"])
+    family += [{**s, **HIGH_ARMS_BACK} for s in family]
+    sideways = [s for p in balanced_points(points + added) if p["settings"] in family
+                for s in nudged(p["settings"], HIGH_SIDEWAYS)]
+    run("sideways", sideways)
+    # and outward from those that landed at a side (extend's OUTWARD steps only: they fly long already)
+    added += extend(character, points + added, sink, start=[p for p in points + added if p["settings"] in sideways],
+                    longer=False)
+    return added
+
+
 def nudged(settings: dict, only: tuple = ()) -> list[dict]:
     """The settings and each NUDGE of them, inside the leap's ranges (``only``: just the nudges that
     change every one of these settings, without the settings themselves)."""
@@ -113,8 +200,10 @@ def measure(character: str, settings: dict, log=None) -> dict:
 
 def calibrate(character: str, out: Path | None = None, directory: Path | None = None, only: tuple = ()) -> list[dict]:
     """Measure every base and its nudges (one process; about 1.5 s a jump), step outward from the
-    edge (extend), fill the gaps between the balanced landings (fill), and store the table. ``only``: measure just the nudges
-    that change every one of these settings and add them to the stored table's jumps."""
+    edge (extend), fill the gaps between the balanced landings (fill), measure the second family
+    (measure_high, which steps outward from its own sideways landings), and store the table.
+    ``only``: measure just the nudges that change every one of these settings and add them to the
+    stored table's jumps."""
     points = list(model(character)["points"]) if only else []
     began = time.perf_counter()
     sink = open(out, "a") if out else None
@@ -125,6 +214,7 @@ def calibrate(character: str, out: Path | None = None, directory: Path | None = 
               f" balanced, {time.perf_counter() - began:.0f} s", file=sys.stderr, flush=True)
     points += extend(character, points, sink)
     points += fill(character, points, sink)
+    points += measure_high(character, points, sink)
     store(character, points, directory)
     return points
 
@@ -136,13 +226,15 @@ def _logged(point: dict, sink) -> dict:
     return point
 
 
-def extend(character: str, points: list[dict], sink=None, rounds: int = EXTEND_ROUNDS) -> list[dict]:
+def extend(character: str, points: list[dict], sink=None, rounds: int = EXTEND_ROUNDS, start: list[dict] | None = None,
+           longer: bool = True) -> list[dict]:
     """Steps outward from the balanced jumps at the edge of the measured region: OUTWARD (more lean
-    to the side it landed) from those LATERAL_EDGE or more to a side, LONGER from those that flew
-    LONG_EDGE or longer; each round from the balanced edge jumps the round before added (the first
-    from all). Returns the new jumps (balanced or not)."""
+    to the side it landed) from those LATERAL_EDGE or more to a side, LONGER (unless not ``longer``)
+    from those that flew LONG_EDGE or longer; each round from the balanced edge jumps the round before
+    added (the first from all, or from the balanced ones of ``start``). Returns the new jumps
+    (balanced or not)."""
     ranges = {p.name: (p.minimum, p.maximum) for p in LEAP_SETTINGS.parameters}
-    added, edge = [], balanced_points(points)
+    added, edge = [], balanced_points(points if start is None else start)
     for _ in range(rounds):
         new = []
         for p in edge:
@@ -150,7 +242,7 @@ def extend(character: str, points: list[dict], sink=None, rounds: int = EXTEND_R
             side = p["measured"]["landing"][1]
             if abs(side) >= LATERAL_EDGE:
                 steps.append([(n, math.copysign(c, side)) for n, c in OUTWARD])
-            if p["measured"]["air_time"] >= LONG_EDGE:
+            if longer and p["measured"]["air_time"] >= LONG_EDGE:
                 steps.append(list(LONGER))
             for step in steps:
                 settings = dict(p["settings"])
@@ -209,6 +301,9 @@ def main(argv=None) -> int:
                                                    "every one of them and add them to the stored table")
     parser.add_argument("--extend-only", action="store_true",
                         help="only step outward from the stored table's edge (extend), adding to it")
+    parser.add_argument("--high-only", action="store_true",
+                        help="only measure the second family (vertical leaps blended with broad jumps, "
+                             "measure_high), adding to the stored table")
     parser.add_argument("--fill-only", action="store_true",
                         help="only fill the gaps of the stored table's jumps (fill), adding to it")
     args = parser.parse_args(argv)
@@ -216,6 +311,9 @@ def main(argv=None) -> int:
         if args.extend_only:
             points = list(model(character)["points"])
             store(character, points + extend(character, points, open(args.log, "a") if args.log else None))
+        elif args.high_only:
+            points = list(model(character)["points"])
+            store(character, points + measure_high(character, points, open(args.log, "a") if args.log else None))
         elif args.fill_only:
             points = list(model(character)["points"])
             sink = open(args.log, "a") if args.log else None
