@@ -182,6 +182,18 @@ def main() -> None:
     shares = meta["metrics"].get("horse_bodies") or {}
     print("on the horse (share of its vertical impulse): "
           + (", ".join(f"{b} {100 * x:.0f} %" for b, x in shares.items()) or "nothing"))
+    bodies = list(a["body_names"])
+    horse = next((when for when, name in meta["phase_events"] if name == "horse"), None)
+    if horse is not None:
+        k = int(np.searchsorted(time, horse - 1e-9))
+        shoulder, wrist = a["body_pos"][k, bodies.index("UARMR")], a["body_pos"][k, bodies.index("HANDR")]
+        arm = wrist - shoulder
+        print(f"the hand touchdown ({horse:.3f} s): the right shoulder at x {shoulder[0]:.3f}, z {shoulder[2]:.3f} m, the "
+              f"wrist at x {wrist[0]:.3f}, z {wrist[2]:.3f} m, the arm {math.degrees(math.atan2(arm[0], -arm[2])):.0f} deg "
+              f"from the downward vertical (+ forward)")
+    metrics = meta["metrics"]
+    print(f"outcome {meta['outcome']} (the run's {args.duration:g} s), rotation {metrics['rotation']:.2f} rad, "
+          f"fell at {metrics.get('fall_time')}")
     print(f"events: {meta['phase_events'][:8]}")
     print(format_table_1(trajectory))
 

@@ -91,6 +91,9 @@ VAULT_SETTINGS = Schema(
     setting("hurdle_lean", "rad", -0.8, 0.5, "the body's forward pitch at the start (- leans back: the hips block)"),
     setting("hurdle_spin", "rad/s", -5.0, 5.0, "the body's forward rotation rate at the start"),
     setting("hurdle_arm", "rad", -1.0, 3.14, "shoulder flexion of both arms at the start"),
+    setting("hurdle_swing", "s", 0.0, 1.0,
+            "the arms swing from hurdle_arm toward board_arm over this time from the start, through the hurdle "
+            "flight, so they are moving forward-up as the feet meet the board (0: held until the board)"),
     setting("block_hip", "rad", -1.5, 0.5, "hip flexion (-) of the block: the legs held ahead of the body"),
     setting("board_knee", "rad", 0.0, 1.2, "knee bend at board touchdown, held while the board deflects"),
     setting("board_gain", "1", 1.0, 10.0, "gain factor of the leg servos on the board"),
@@ -571,8 +574,12 @@ class Vault(Sequence):
                 foot_delta=c["foot_delta"], foot_lead_time=c["landing_foot_lead_time"],
                 spin_placement=c["spin_placement"], blend_time=c["landing_blend"])), ctx)
 
+        def hurdle(t):
+            swing = both_sides({"shoulder_*_z": c["board_arm"]}) if c["hurdle_swing"] > 0 else {}
+            return PoseLaw(ctx, swing, c["hurdle_swing"] or CONSTANTS.servo_move, c["board_gain"], list(legs))
+
         return [
-            Step("hurdle", lambda t: PoseLaw(ctx, {}, CONSTANTS.servo_move, c["board_gain"], list(legs)),
+            Step("hurdle", hurdle,
                  lambda b, t: self.on_board.touching(d)),
             Step("board", board, lambda b, t: self.pushed and not self.on_board.touching(d)),
             Step("first_flight", first_flight, lambda b, t: self.on_horse.touching(d)),
