@@ -164,7 +164,7 @@ def main() -> None:
               f"{a['angmom'][i, 1]:5.1f} | {kinetic:5.0f} {translational:5.0f} {kinetic - translational:4.0f} "
               f"{potential:+6.0f} {spring:6.0f} {total:6.0f}   | {strut:+6.1f}")
     print("energy (J): " + ", ".join(f"{name} {value:.0f}" for name, value in budget.items()))
-    on = np.flatnonzero(board > 0)
+    on = np.flatnonzero((board > 0) & (time < events.get("first_flight", time[-1]) + 0.015))   # this contact's frames
     t0, t1 = float(time[on[0]] - 0.005), float(time[on[-1]] + 0.005)
     print(f"work over the board contact {t0:.3f}-{t1:.3f} s (J): "
           + ", ".join(f"{k} {v:+.0f}" for k, v in work.between(t0, t1).items()))
@@ -188,9 +188,15 @@ def main() -> None:
         k = int(np.searchsorted(time, horse - 1e-9))
         shoulder, wrist = a["body_pos"][k, bodies.index("UARMR")], a["body_pos"][k, bodies.index("HANDR")]
         arm = wrist - shoulder
+        trunk = a["body_pos"][k, bodies.index("CHEST1")] - a["body_pos"][k, bodies.index("PELVIS")]
         print(f"the hand touchdown ({horse:.3f} s): the right shoulder at x {shoulder[0]:.3f}, z {shoulder[2]:.3f} m, the "
               f"wrist at x {wrist[0]:.3f}, z {wrist[2]:.3f} m, the arm {math.degrees(math.atan2(arm[0], -arm[2])):.0f} deg "
-              f"from the downward vertical (+ forward)")
+              f"from the downward vertical (+ forward), the trunk pitched {math.degrees(math.atan2(trunk[0], trunk[2])) % 360:.0f} deg")
+        off = next((when for when, name in meta["phase_events"] if name == "second_flight"), None)
+        if off is not None:
+            j = int(np.searchsorted(time, off - 1e-9))
+            print(f"L_y at the hand touchdown {a['angmom'][k, 1]:.1f}, at the horse liftoff ({off:.3f} s) "
+                  f"{a['angmom'][j, 1]:.1f} kg m^2/s")
     metrics = meta["metrics"]
     print(f"outcome {meta['outcome']} (the run's {args.duration:g} s), rotation {metrics['rotation']:.2f} rad, "
           f"fell at {metrics.get('fall_time')}")
