@@ -91,6 +91,9 @@ VAULT_SETTINGS = Schema(
     setting("hurdle_lean", "rad", -0.8, 0.5, "the body's forward pitch at the start (- leans back: the hips block)"),
     setting("hurdle_spin", "rad/s", -5.0, 5.0, "the body's forward rotation rate at the start"),
     setting("hurdle_arm", "rad", -1.0, 3.14, "shoulder flexion of both arms at the start"),
+    setting("hurdle_swing", "s", 0.0, 1.0,
+            "the arms swing from hurdle_arm toward board_arm over this time from the start, through the hurdle "
+            "flight, so they are moving forward-up as the feet meet the board (0: held until the board)"),
     setting("block_hip", "rad", -1.5, 0.5, "hip flexion (-) of the block: the legs held ahead of the body"),
     setting("board_knee", "rad", 0.0, 1.2, "knee bend at board touchdown, held while the board deflects"),
     setting("board_gain", "1", 1.0, 10.0, "gain factor of the leg servos on the board"),
@@ -115,6 +118,9 @@ VAULT_SETTINGS = Schema(
             "1 = in the first flight each wrist is servoed every tick to turn its palm straight down, from its "
             "forearm's measured orientation (within the wrist's range); 0 = wrist_extension held"),
     setting("elbow_gain", "1", 1.0, 20.0, "gain factor of the elbow servos on the horse (arms straight)"),
+    setting("horse_release", "s", 0.0, 0.1,
+            "the horse state ends once no hand has pushed on the horse for this long (0: at the first tick without, "
+            "so a bounce of the hands ends it and the second flight's servos act while the arms are still on it)"),
     setting("horse_hip", "rad", -1.0, 0.5, "hip angle on the horse (0: the layout)"),
     setting("layout_arm", "rad", 0.0, 3.14, "shoulder flexion in the second flight's layout"),
     setting("second_pike", "rad", -2.0, 0.0,
@@ -532,6 +538,7 @@ class Vault(Sequence):
         limp = ("shoulder_r_z", "shoulder_l_z", "shoulder_r_x", "shoulder_l_x", "shoulder_r_y", "shoulder_l_y",
                 "wrist_r_x", "wrist_l_x", "wrist_r_y", "wrist_l_y")
         self.pushed = self.deck_going_down = self.opened = False
+        self.hands_off_since = None
 
         def board(t):
             return PoseLaw(ctx, both_sides({"shoulder_*_z": c["board_arm"]}), c["board_arm_time"], c["board_gain"],
@@ -571,12 +578,16 @@ class Vault(Sequence):
                 foot_delta=c["foot_delta"], foot_lead_time=c["landing_foot_lead_time"],
                 spin_placement=c["spin_placement"], blend_time=c["landing_blend"])), ctx)
 
+        def hurdle(t):
+            swing = both_sides({"shoulder_*_z": c["board_arm"]}) if c["hurdle_swing"] > 0 else {}
+            return PoseLaw(ctx, swing, c["hurdle_swing"] or CONSTANTS.servo_move, c["board_gain"], list(legs))
+
         return [
-            Step("hurdle", lambda t: PoseLaw(ctx, {}, CONSTANTS.servo_move, c["board_gain"], list(legs)),
+            Step("hurdle", hurdle,
                  lambda b, t: self.on_board.touching(d)),
             Step("board", board, lambda b, t: self.pushed and not self.on_board.touching(d)),
             Step("first_flight", first_flight, lambda b, t: self.on_horse.touching(d)),
-            Step("horse", horse, lambda b, t: not self.on_horse.touching(d)),
+            Step("horse", horse, lambda b, t: self.off_horse(t)),
             Step("second_flight", second_flight, ready_to_land),
             Step("landing", land, lambda b, t: b.stage != "flight"),
             Step("absorb", lambda t: MatAbsorb(ctx, c, self.previous),
@@ -622,6 +633,15 @@ class Vault(Sequence):
         balance.from_pitch = math.atan2(-float(m[6]), float(m[8]))
         balance.params = dict(balance.params, **params)
         return balance
+
+    def off_horse(self, t: float) -> bool:
+        """No hand has pushed on the horse for ``horse_release`` (the hands' bounces do not end the state)."""
+        if self.on_horse.touching(self.ctx.data):
+            self.hands_off_since = None
+            return False
+        if self.hands_off_since is None:
+            self.hands_off_since = t
+        return t - self.hands_off_since >= self.cfg["horse_release"]
 
     def board_law(self, t: float) -> None:
         """At the board's maximum deflection (its deck stops going down) the legs extend."""
