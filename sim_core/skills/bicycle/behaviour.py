@@ -71,6 +71,7 @@ BICYCLE_RANGES = Schema(
     Parameter("yaw_gain", "1", 0.0, 0.0, 10.0, "eq. 11 k_beta at reference_speed"),
     Parameter("yaw_rate_gain", "s", 0.0, 0.0, 5.0, "eq. 11 k_beta-dot at reference_speed"),
     Parameter("heading_acceleration", "m/s^2", 0.1, 0.1, 10.0, "a commanded heading (no path) is approached as a turn asking this lateral acceleration: the desired heading turns at this / v rad/s"),
+    Parameter("max_heading_turn_speed", "m/s", 0.5, 0.5, 10.0, "a commanded heading other than the start's (no path) is offered up to this speed (faster, the turn to it fell or leaned past 20 deg; course.py refuses it)"),
     Parameter("lean_feedforward", "1", 0.0, 0.0, 1.0, "share of a steady turn's lean (tan = v^2 kappa / g) asked for ahead of a path's curve (0: the seed's eq. 11)"),
     Parameter("curvature_preview", "s", 0.0, 0.0, 3.0, "the path's curvature is read this many seconds of travel ahead"),
     Parameter("reference_speed", "m/s", 0.5, 0.5, 10.0, "speed at which the four steering gains are these (steering.py scales them with speed)"),
@@ -286,7 +287,7 @@ class Bicycling(Behaviour):
         c = self.params
         desired_roll = -c["stop_lean"] if self.coasting and self.stopping else 0.0
         if self.follower is None and self.desired_yaw != self.heading_goal:
-            desired_roll += self._turn_to_heading(state["speed"])
+            self._turn_to_heading(state["speed"])
         if self.follower is not None:      # pure pursuit: head for the point lookahead_time ahead
             x, y = data.qpos[bike.free_qpos], data.qpos[bike.free_qpos + 1]
             moving = max(state["speed"], MIN_LOOKAHEAD_SPEED)
@@ -303,20 +304,16 @@ class Bicycling(Behaviour):
             self.fork_command = min(max(fork, -c["max_fork_angle"]), c["max_fork_angle"])
         self._pedal(t, state, self._crank_torque(t, state))
 
-    def _turn_to_heading(self, speed: float) -> float:
+    def _turn_to_heading(self, speed: float) -> None:
         """Eq. 11's desired heading turns towards the commanded one at the rate of a turn asking
-        heading_acceleration of lateral acceleration (omega = a / v), and the bicycle is asked to
-        lean lean_feedforward of that turn's lean: the desired roll (rad). Stepped at once, a 172 deg
-        heading change threw the bicycle over within 1.4 s at 3 m/s (docs/bicycle.md, random requests)."""
-        c = self.params
-        moving = max(speed, MIN_LOOKAHEAD_SPEED)
-        rate = c["heading_acceleration"] / moving
+        heading_acceleration of lateral acceleration (omega = a / v). Stepped at once, a 172 deg
+        heading change threw the bicycle over within 1.4 s at 3 m/s; asking the turn's lean ahead as
+        well (lean_feedforward, as along a path) left weaves of 14-21 deg that did not die out, or fell,
+        at 3.1 and 4.4 m/s (docs/bicycle.md, random requests over the panel)."""
+        rate = self.params["heading_acceleration"] / max(speed, MIN_LOOKAHEAD_SPEED)
         error = math.remainder(self.heading_goal - self.desired_yaw, 2 * math.pi)
-        step = min(max(error, -rate * self.ctx.control_dt), rate * self.ctx.control_dt)
-        self.desired_yaw = self.heading_goal if abs(error) <= abs(step) else self.desired_yaw + step
-        if self.desired_yaw == self.heading_goal:
-            return 0.0
-        return lean_ahead(speed, math.copysign(rate / moving, error), c["lean_feedforward"])
+        step = rate * self.ctx.control_dt
+        self.desired_yaw = self.heading_goal if abs(error) <= step else self.desired_yaw + math.copysign(step, error)
 
     def _crank_torque(self, t, state) -> float:
         """Eq. 7 on the desired speed, which follows the course's command at speed_ramp. Coasting

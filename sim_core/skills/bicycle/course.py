@@ -105,6 +105,11 @@ def course_for(p: dict) -> Course:
         if math.isfinite(radius):
             _check_turn(max(speed for _, speed in speeds), radius, f"path, {max(where - lookahead, 0.0):.1f} m along it")
     _check_pedalling(p, [speed for _, speed in speeds], start_speed)
+    fastest = max(speed for _, speed in speeds)
+    if path is None and p["heading"] != 0.0 and fastest > p["max_heading_turn_speed"]:
+        raise ParameterError(f"a new heading is turned to at speed <= {p['max_heading_turn_speed']:g} m/s (asked: heading "
+                             f"{p['heading']:g} rad at {fastest:g} m/s); faster, the turn was measured to fall: the turn "
+                             f"course rides a turn at speed")
     if hill:
         _check_hill(p["hill_grade"], p["gear"], p["max_hill_grade"], p["max_hill_grade_gear"])
     coast_from = p["coast_after"] if name in FREEWHEEL_COURSES else None

@@ -233,8 +233,8 @@ def audit_seconds(p: dict) -> float:
     c = Bicycling.settings_schema.by_name
     ramp = c["speed_ramp"].default
     v, course = p["speed"], p["course"]
-    if course == "straight":
-        seconds = AUDIT_SPEED_WINDOW + 5.0
+    if course == "straight":      # the turn to the commanded heading (behaviour._turn_to_heading), then TARGETS.md's 10 s
+        seconds = abs(p.get("heading", 0.0)) * v / c["heading_acceleration"].default + AUDIT_SPEED_WINDOW + 5.0
     elif course == "turn":
         seconds = (p["turn_after"] + p["turn_radius"] * abs(p["turn_angle"])) / v + AUDIT_SPEED_WINDOW
     elif course == "slalom":
