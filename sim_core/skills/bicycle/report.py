@@ -264,7 +264,7 @@ def audit_checks(p: dict, m: dict, seconds: float) -> list[tuple[str, bool, str]
     if wanted is not None and not m["fell"] and seconds >= AUDIT_SPEED_WINDOW:
         error = m["mean_speed_last_10s"] / wanted - 1.0
         out.append(("speed", abs(error) <= AUDIT_SPEED_TOLERANCE, f"v {m['mean_speed_last_10s']:.2f} m/s ({100 * error:+.1f} %)"))
-    if course == "straight" and not m["fell"]:
+    if course == "straight" and p.get("heading", 0.0) != 0.0 and not m["fell"]:     # after a turn to a new heading
         settled = m["heading_within_5deg_from"]
         out.append(("heading", settled is not None, "heading within 5 deg " +
                     (f"from {settled:.1f} s" if settled is not None else "not reached")))
