@@ -162,9 +162,9 @@ def test_random_requests_are_refused_in_one_line_or_offered():
 
 @pytest.mark.slow
 def test_random_requests_are_refused_or_pass():
-    """The drawn requests as the audit runs them, the short ones (<= 16 s ridden): refused before
+    """The drawn requests as the audit runs them, the short ones (<= 17 s ridden): refused before
     simulating, or ridden without a fall and passing TARGETS.md's checks (audit_checks)."""
-    short = [values for values in AUDIT if audit_seconds(values) <= 16.0][:4]
+    short = [values for values in AUDIT if audit_seconds(values) <= 17.0][:4]
     assert short
     for values in short:
         result = audit_request(values)

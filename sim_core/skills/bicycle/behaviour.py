@@ -80,7 +80,7 @@ BICYCLE_RANGES = Schema(
     Parameter("min_speed", "m/s", 0.5, 0.5, 8.0, "the slowest speed a course may command (slower rides were measured to fall; course.py refuses them)"),
     Parameter("max_cadence", "rev/s", 0.5, 0.5, 10.0, "the fastest cadence v / (2 pi r gear) a course may ask (faster, the legs do not turn the crank at the wheel's pace; course.py refuses it)"),
     Parameter("min_gear", "1", 0.5, 0.5, 5.0, "the lowest gear offered (lower, the legs lost more than 5 % of the speed at 1.9-2.4 rev/s; course.py refuses it)"),
-    Parameter("max_hill_grade", "1", 0.0, 0.0, 0.2, "the steepest hill_grade offered (on 12 % hills a toe touched the road; course.py refuses steeper)"),
+    Parameter("max_hill_grade", "1", 0.0, 0.0, 0.2, "the steepest hill_grade offered (steeper hills fell, a toe on the road, or lost more than 15 % of the speed; course.py refuses them)"),
     Parameter("max_hill_grade_gear", "1", 0.0, 0.0, 1.0, "the largest hill_grade x gear a hill may ask (the climb's crank torque goes with it; steeper or higher-geared climbs lost more than 15 % of the speed; course.py refuses them)"),
     Parameter("coast_min_speed", "m/s", 0.5, 0.5, 8.0, "coast course: below this speed the rider brakes to a stop (steering needs speed)"),
     Parameter("crank_level_rate", "rad/s", 0.1, 0.1, 20.0, "coasting: the legs turn the crank to level (pedals horizontal) at most this fast"),

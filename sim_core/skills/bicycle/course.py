@@ -16,7 +16,9 @@ Courses (the ``course`` parameter; a ``path`` given replaces the course's path):
     (behaviour.py), offered from the speeds at which the stop was measured to work (STOP_SPEEDS).
 
 A course that asks the bicycle to turn harder than ``MAX_LEAN`` of lean at its speed is refused
-before anything runs, naming the limit.
+before anything runs, naming the limit; so is a request outside the limits measured by the random
+audit of the panel (the table's min_speed, min_gear, max_cadence, max_hill_grade,
+max_hill_grade_gear, and a new heading's max_heading_turn_speed and min_heading_turn_gear).
 """
 from __future__ import annotations
 
@@ -129,9 +131,9 @@ def _check_heading_turn(p: dict, fastest: float) -> None:
 
 
 def _check_pedalling(p: dict, speeds: list[float], start_speed: float) -> None:
-    """The gear is at least the table's ``min_gear``; every speed a course commands is at least its ``min_speed`` and asks a cadence
-    v / (2 pi r gear) of at most its ``max_cadence`` (the rolling start's too): both measured
-    (docs/bicycle.md, random requests over the panel)."""
+    """The gear is at least the table's ``min_gear``; every speed a course commands is at least its
+    ``min_speed`` and asks a cadence v / (2 pi r gear) of at most its ``max_cadence`` (the rolling
+    start's too): all measured (docs/bicycle.md, random requests over the panel)."""
     slowest = min(speeds)
     if slowest < p["min_speed"]:
         raise ParameterError(f"the bicycle is ridden at speed >= {p['min_speed']:g} m/s (asked: {slowest:g} m/s): "
@@ -150,12 +152,12 @@ def _check_pedalling(p: dict, speeds: list[float], start_speed: float) -> None:
 
 
 def _check_hill(grade: float, gear: float, steepest: float, most: float) -> None:
-    """Hills up to the table's ``max_hill_grade`` (steeper, a toe touched the road), and since the
+    """Hills up to the table's ``max_hill_grade`` (steeper ones fell or lost the speed), and since the
     climb's crank torque goes as hill_grade x gear (m g grade r gear), up to its ``max_hill_grade_gear``,
     measured to hold the speed within 15 % up and down (docs/bicycle.md, random requests over the panel)."""
     if grade > steepest:
-        raise ParameterError(f"the hill is ridden up to hill_grade {steepest:g} (asked: {grade:g}): on steeper hills "
-                             f"a toe was measured to touch the road (docs/bicycle.md, random requests over the panel)")
+        raise ParameterError(f"the hill is ridden up to hill_grade {steepest:g} (asked: {grade:g}): steeper hills were "
+                             f"measured to fall or to lose more than 15 % of the speed (docs/bicycle.md, random requests over the panel)")
     if grade * gear > most:
         raise ParameterError(f"the hill is ridden with hill_grade x gear <= {most:g} (asked: {grade:g} x {gear:g} = "
                              f"{grade * gear:.3f}); above it the climb was measured to lose more than 15 % of the speed: "
