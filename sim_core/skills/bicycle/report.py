@@ -9,7 +9,11 @@
   ending in a stop) and stops from speeds drawn at random (``--stops``; ``--stand`` S: each asked to
   stand S s after rest), run in ``--workers`` processes;
 * speed: simulated seconds per wall-clock second of a ride beside raw ``mj_step`` of the same
-  model with the controls held.
+  model with the controls held;
+* instead, ``--random N --seed S``: N requests drawn from the panel (a course and its parameters
+  uniformly over their ranges), each refused before simulating or ridden and judged by TARGETS.md's
+  checks, one line each (docs/bicycle.md, random requests over the panel); exit status 1 if one
+  was ridden and failed.
 """
 from __future__ import annotations
 
