@@ -12,12 +12,14 @@ from sim_core.errors import ParameterError
 from sim_core.simulate import RunRequest, run
 from sim_core.skills.bicycle.behaviour import Bicycling
 from sim_core.skills.bicycle.course import MAX_LEAN, course_for, gate_passes, slalom
-from sim_core.skills.bicycle.report import slalom_request, slalom_seconds
+from sim_core.skills.bicycle.report import (audit_draw, audit_line, audit_request, audit_seconds, slalom_request,
+                                            slalom_seconds)
 from sim_core.world import World, add_world
 from sim_core.world.hill import check_hill, hill_height
 from sim_core.character.model import new_spec
 
 RANDOM = np.random.default_rng(30)
+SLOWEST = Bicycling.settings_schema.by_name["min_speed"].default     # the table's slowest speed offered
 
 
 def params(**values):
@@ -69,7 +71,7 @@ def test_bad_courses_are_refused_in_one_line(values, words):
 
 
 def test_a_turn_within_the_lean_limit_is_accepted():
-    speed = float(RANDOM.uniform(1.0, 8.0))
+    speed = float(RANDOM.uniform(SLOWEST, 8.0))
     radius = speed ** 2 / (9.81 * math.tan(MAX_LEAN)) * 1.01
     assert course_for(params(course="turn", speed=speed, turn_radius=max(radius, 3.0))).path is not None
 
@@ -95,8 +97,8 @@ def test_hill_road_is_continuous_and_at_its_grade():
 # --- rides ---------------------------------------------------------------------------------------
 @pytest.mark.slow
 def test_a_random_speed_rides_straight_without_a_fall():
-    """Any speed the panel offers (1-8 m/s): 20 s straight, no fall, speed within 5 %, roll < 20 deg."""
-    speed = round(float(RANDOM.uniform(1.0, 8.0)), 2)
+    """Any speed offered (the table's min_speed to 8 m/s): 20 s straight, no fall, speed within 5 %, roll < 20 deg."""
+    speed = round(float(RANDOM.uniform(SLOWEST, 8.0)), 2)
     m = ride(20.0, speed=speed).meta["metrics"]
     assert not m["fell"], f"speed {speed}: fell at {m['fall_time']}"
     assert m["mean_speed_last_10s"] == pytest.approx(speed, rel=0.05) and m["max_abs_roll_deg"] < 20.0
@@ -139,3 +141,32 @@ def test_turn_and_a_start_from_a_slow_roll():
     start = round(float(RANDOM.uniform(1.5, 3.0)), 2)
     m = ride(12.0, course="start", start_speed=start, speed=4.0).meta["metrics"]
     assert not m["fell"] and m["mean_speed_last_5s"] == pytest.approx(4.0, rel=0.05), start
+
+
+# --- random requests over the panel (issue 30; python -m sim_core report bicycle --random N --seed S) ---
+DRAWS = np.random.default_rng(3030)
+AUDIT = [audit_draw(DRAWS) for _ in range(12)]      # twelve requests drawn from the panel
+
+
+def test_random_requests_are_refused_in_one_line_or_offered():
+    """Each drawn request is either refused before anything runs, in one line naming the limit, or
+    offered; both kinds are drawn."""
+    refused = 0
+    for values in AUDIT:
+        try:
+            course_for(params(**values))
+        except ParameterError as err:
+            refused += 1
+            assert "\n" not in str(err) and any(ch.isdigit() for ch in str(err)), values
+    assert 0 < refused < len(AUDIT)
+
+
+@pytest.mark.slow
+def test_random_requests_are_refused_or_pass():
+    """The drawn requests as the audit runs them, the short ones (<= 17 s ridden): refused before
+    simulating, or ridden without a fall and passing TARGETS.md's checks (audit_checks)."""
+    short = [values for values in AUDIT if audit_seconds(values) <= 17.0]
+    assert short
+    for values in short:
+        result = audit_request(values)
+        assert "refused" in result or result["passed"], audit_line(0, result)

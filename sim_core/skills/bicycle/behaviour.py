@@ -70,10 +70,18 @@ BICYCLE_RANGES = Schema(
     Parameter("roll_rate_gain", "s", 0.0, 0.0, 5.0, "eq. 11 k_alpha-dot at reference_speed"),
     Parameter("yaw_gain", "1", 0.0, 0.0, 10.0, "eq. 11 k_beta at reference_speed"),
     Parameter("yaw_rate_gain", "s", 0.0, 0.0, 5.0, "eq. 11 k_beta-dot at reference_speed"),
+    Parameter("heading_acceleration", "m/s^2", 0.1, 0.1, 10.0, "a commanded heading (no path) is approached as a turn asking this lateral acceleration: the desired heading turns at this / v rad/s"),
+    Parameter("max_heading_turn_speed", "m/s", 0.5, 0.5, 10.0, "a commanded heading other than the start's (no path) is offered up to this speed (faster, the turn to it fell or leaned past 20 deg; course.py refuses it)"),
+    Parameter("min_heading_turn_gear", "1", 0.5, 0.5, 5.0, "a commanded heading other than the start's (no path) is offered from this gear (in lower gears the heading was left 5-10 deg off or the bicycle weaved; course.py refuses it)"),
     Parameter("lean_feedforward", "1", 0.0, 0.0, 1.0, "share of a steady turn's lean (tan = v^2 kappa / g) asked for ahead of a path's curve (0: the seed's eq. 11)"),
     Parameter("curvature_preview", "s", 0.0, 0.0, 3.0, "the path's curvature is read this many seconds of travel ahead"),
     Parameter("reference_speed", "m/s", 0.5, 0.5, 10.0, "speed at which the four steering gains are these (steering.py scales them with speed)"),
     Parameter("max_fork_angle", "rad", 0.0, 0.0, 1.0, "limit of the commanded fork angle"),
+    Parameter("min_speed", "m/s", 0.5, 0.5, 8.0, "the slowest speed a course may command (slower rides were measured to fall; course.py refuses them)"),
+    Parameter("max_cadence", "rev/s", 0.5, 0.5, 10.0, "the fastest cadence v / (2 pi r gear) a course may ask (faster, the legs do not turn the crank at the wheel's pace; course.py refuses it)"),
+    Parameter("min_gear", "1", 0.5, 0.5, 5.0, "the lowest gear offered (lower, the legs lost more than 5 % of the speed at 1.9-2.4 rev/s; course.py refuses it)"),
+    Parameter("max_hill_grade", "1", 0.0, 0.0, 0.2, "the steepest hill_grade offered (steeper hills fell, a toe on the road, or lost more than 15 % of the speed; course.py refuses them)"),
+    Parameter("max_hill_grade_gear", "1", 0.0, 0.0, 1.0, "the largest hill_grade x gear a hill may ask (the climb's crank torque goes with it; steeper or higher-geared climbs lost more than 15 % of the speed; course.py refuses them)"),
     Parameter("coast_min_speed", "m/s", 0.5, 0.5, 8.0, "coast course: below this speed the rider brakes to a stop (steering needs speed)"),
     Parameter("crank_level_rate", "rad/s", 0.1, 0.1, 20.0, "coasting: the legs turn the crank to level (pedals horizontal) at most this fast"),
     Parameter("brake_deceleration", "m/s^2", 0.1, 0.1, 5.0, "stop: eq. 7's desired speed falls to 0 at this rate; its braking torque goes to the rim brakes"),
@@ -227,7 +235,9 @@ class Bicycling(Behaviour):
         self.bike = BicycleView.of(model)
         self.pairs = SitePairs(model, ctx.actor.prefix)
         self.scratch = mujoco.MjData(model)
-        self.desired_yaw = self.params["heading"] + self.bike.state(ctx.data)["yaw"]
+        yaw = self.bike.state(ctx.data)["yaw"]
+        self.heading_goal = self.params["heading"] + yaw     # the commanded heading, approached as a turn
+        self.desired_yaw = yaw
         self.course = course_for(self.params)
         self.follower = None
         if self.course.path is not None:      # the path is from where the bicycle starts
@@ -277,6 +287,8 @@ class Bicycling(Behaviour):
         state = bike.state(data)
         c = self.params
         desired_roll = -c["stop_lean"] if self.coasting and self.stopping else 0.0
+        if self.follower is None and self.desired_yaw != self.heading_goal:
+            self._turn_to_heading(state["speed"])
         if self.follower is not None:      # pure pursuit: head for the point lookahead_time ahead
             x, y = data.qpos[bike.free_qpos], data.qpos[bike.free_qpos + 1]
             moving = max(state["speed"], MIN_LOOKAHEAD_SPEED)
@@ -292,6 +304,17 @@ class Bicycling(Behaviour):
                               *steering_gains(state["speed"], c), desired_roll)
             self.fork_command = min(max(fork, -c["max_fork_angle"]), c["max_fork_angle"])
         self._pedal(t, state, self._crank_torque(t, state))
+
+    def _turn_to_heading(self, speed: float) -> None:
+        """Eq. 11's desired heading turns towards the commanded one at the rate of a turn asking
+        heading_acceleration of lateral acceleration (omega = a / v). Stepped at once, a 172 deg
+        heading change threw the bicycle over within 1.4 s at 3 m/s; asking the turn's lean ahead as
+        well (lean_feedforward, as along a path) left weaves of 14-21 deg that did not die out, or fell,
+        at 3.1 and 4.4 m/s (docs/bicycle.md, random requests over the panel)."""
+        rate = self.params["heading_acceleration"] / max(speed, MIN_LOOKAHEAD_SPEED)
+        error = math.remainder(self.heading_goal - self.desired_yaw, 2 * math.pi)
+        step = rate * self.ctx.control_dt
+        self.desired_yaw = self.heading_goal if abs(error) <= step else self.desired_yaw + math.copysign(step, error)
 
     def _crank_torque(self, t, state) -> float:
         """Eq. 7 on the desired speed, which follows the course's command at speed_ramp. Coasting

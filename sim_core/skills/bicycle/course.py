@@ -16,7 +16,9 @@ Courses (the ``course`` parameter; a ``path`` given replaces the course's path):
     (behaviour.py), offered from the speeds at which the stop was measured to work (STOP_SPEEDS).
 
 A course that asks the bicycle to turn harder than ``MAX_LEAN`` of lean at its speed is refused
-before anything runs, naming the limit.
+before anything runs, naming the limit; so is a request outside the limits measured by the random
+audit of the panel (the table's min_speed, min_gear, max_cadence, max_hill_grade,
+max_hill_grade_gear, and a new heading's max_heading_turn_speed and min_heading_turn_gear).
 """
 from __future__ import annotations
 
@@ -29,6 +31,8 @@ from ...ballistics import GRAVITY
 from ...control.path import tightest_radius, turn_path, validate_path
 from ...errors import ParameterError
 from ...schema import Choice
+from ...world.bicycle import WHEEL_RADIUS
+from ...world.hill import HILL_WIDTH
 
 COURSES = ("straight", "turn", "slalom", "speed_steps", "hill", "start", "coast", "stop")
 COURSE = Choice("course", COURSES, "straight",
@@ -87,6 +91,9 @@ def course_for(p: dict) -> Course:
         speeds = ((0.0, p["speed"]), (p["step_time"], p["second_speed"]), (2 * p["step_time"], p["third_speed"]))
     elif name == "hill":
         hill = (p["hill_after"], p["hill_grade"], p["hill_length"], p["hill_top"], p["hill_length"])
+        if p["heading"] != 0.0:
+            raise ParameterError(f"the hill lies across the start's heading ({HILL_WIDTH:g} m wide): the hill course is "
+                                 f"ridden with heading 0 (asked: {p['heading']:g} rad)")
     elif name == "start":
         start_speed = p["start_speed"]
     elif name == "stop":
@@ -99,8 +106,62 @@ def course_for(p: dict) -> Course:
         radius, where = tightest_radius(np.vstack([[-lookahead, 0.0], path]), lookahead)
         if math.isfinite(radius):
             _check_turn(max(speed for _, speed in speeds), radius, f"path, {max(where - lookahead, 0.0):.1f} m along it")
+    _check_pedalling(p, [speed for _, speed in speeds], start_speed)
+    fastest = max(speed for _, speed in speeds)
+    if path is None and p["heading"] != 0.0:
+        _check_heading_turn(p, fastest)
+    if hill:
+        _check_hill(p["hill_grade"], p["gear"], p["max_hill_grade"], p["max_hill_grade_gear"])
     coast_from = p["coast_after"] if name in FREEWHEEL_COURSES else None
     return Course(name, path, speeds, start_speed, gates, p["gate_width"], hill, coast_from, name == "stop")
+
+
+def _check_heading_turn(p: dict, fastest: float) -> None:
+    """A commanded heading (no path) is turned to (behaviour._turn_to_heading) at the speeds and gears
+    where the turn was measured to settle within 5 deg without a fall (docs/bicycle.md, random
+    requests over the panel); the turn course rides turns elsewhere."""
+    if fastest > p["max_heading_turn_speed"]:
+        raise ParameterError(f"a new heading is turned to at speed <= {p['max_heading_turn_speed']:g} m/s (asked: heading "
+                             f"{p['heading']:g} rad at {fastest:g} m/s); faster, the turn was measured to fall: the turn "
+                             f"course rides a turn at speed")
+    if p["gear"] < p["min_heading_turn_gear"]:
+        raise ParameterError(f"a new heading is turned to at gear >= {p['min_heading_turn_gear']:g} (asked: heading "
+                             f"{p['heading']:g} rad at gear {p['gear']:g}); in lower gears the heading was measured to stay "
+                             f"5-10 deg off or to weave: the turn course rides a turn in any gear offered")
+
+
+def _check_pedalling(p: dict, speeds: list[float], start_speed: float) -> None:
+    """The gear is at least the table's ``min_gear``; every speed a course commands is at least its
+    ``min_speed`` and asks a cadence v / (2 pi r gear) of at most its ``max_cadence`` (the rolling
+    start's too): all measured (docs/bicycle.md, random requests over the panel)."""
+    slowest = min(speeds)
+    if slowest < p["min_speed"]:
+        raise ParameterError(f"the bicycle is ridden at speed >= {p['min_speed']:g} m/s (asked: {slowest:g} m/s): "
+                             f"slower rides were measured to fall (docs/bicycle.md, random requests over the panel)")
+    if p["gear"] < p["min_gear"]:
+        raise ParameterError(f"the bicycle is ridden at gear >= {p['min_gear']:g} (asked: {p['gear']:g}): in lower gears the "
+                             f"legs were measured to lose more than 5 % of the speed (docs/bicycle.md, random requests over the panel)")
+    fastest = max(*speeds, start_speed)
+    cadence = fastest / (2 * math.pi * WHEEL_RADIUS * p["gear"])
+    if cadence > p["max_cadence"]:
+        raise ParameterError(f"the cadence v / (2 pi r gear) is ridden up to {p['max_cadence']:g} rev/s (asked: {cadence:.2f} "
+                             f"rev/s at {fastest:g} m/s in gear {p['gear']:g}); faster, the legs were measured to lose more "
+                             f"than 5 % of the speed: a gear >= "
+                             f"{fastest / (2 * math.pi * WHEEL_RADIUS * p['max_cadence']):.2f} or a speed <= "
+                             f"{2 * math.pi * WHEEL_RADIUS * p['gear'] * p['max_cadence']:.2f} m/s would do")
+
+
+def _check_hill(grade: float, gear: float, steepest: float, most: float) -> None:
+    """Hills up to the table's ``max_hill_grade`` (steeper ones fell or lost the speed), and since the
+    climb's crank torque goes as hill_grade x gear (m g grade r gear), up to its ``max_hill_grade_gear``,
+    measured to hold the speed within 15 % up and down (docs/bicycle.md, random requests over the panel)."""
+    if grade > steepest:
+        raise ParameterError(f"the hill is ridden up to hill_grade {steepest:g} (asked: {grade:g}): steeper hills were "
+                             f"measured to fall or to lose more than 15 % of the speed (docs/bicycle.md, random requests over the panel)")
+    if grade * gear > most:
+        raise ParameterError(f"the hill is ridden with hill_grade x gear <= {most:g} (asked: {grade:g} x {gear:g} = "
+                             f"{grade * gear:.3f}); above it the climb was measured to lose more than 15 % of the speed: "
+                             f"at gear {gear:g} a hill_grade <= {most / gear:.3f}, or a gear <= {most / grade:.2f}, would do")
 
 
 def _check_coast(speed: float, slowest: float) -> None:
