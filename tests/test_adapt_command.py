@@ -79,6 +79,7 @@ def test_a_refused_skill_leaves_no_table_behind(tables, tmp_path, monkeypatch):
     """The scaled landing table is written for its check; the check fails and no budget is left for
     a search, so the skill is refused and the child has no landing table afterwards."""
     (tables / "landing_child.json").unlink(missing_ok=True)     # as before the child's landing was adapted
+    (tables / "landing_imaginary_runner.json").unlink(missing_ok=True)  # the woman is the nearest source
     monkeypatch.setattr(ADAPTERS["land"], "check", lambda character, rng: Check(False, "measured: fell", 6))
     results = command.adapt("child", ["land"], tmp_path / "out", minutes=0, workers=1, seed=1, redo=None,
                             say=lambda line: None)
@@ -96,6 +97,7 @@ def test_a_table_that_was_there_is_put_back_byte_for_byte(tables, tmp_path, monk
     assert (tables / "running_child.json").read_bytes() == before
 
     (tables / "landing_child.json").unlink(missing_ok=True)     # as before the child's landing was adapted
+    (tables / "landing_imaginary_runner.json").unlink(missing_ok=True)  # the woman is the nearest source
 
     def stopped(character, rng):
         assert (tables / "landing_child.json").exists()       # the scaled table, written for the check
@@ -162,6 +164,7 @@ def test_a_search_that_fails_where_the_scaled_table_failed_is_kept_and_narrowed(
     """Neither the scaled nor the searched landing table passes; the search's is the body's own
     calibration, so it is kept and cut to the speeds inside the failing draws, then checked again."""
     (tables / "landing_child.json").unlink(missing_ok=True)
+    (tables / "landing_imaginary_runner.json").unlink(missing_ok=True)  # the woman is the nearest source
     woman = tuned.load("landing", "woman")
     searched = {k: woman[k] for k in ("foot_delta", "fast_touchdown")}
     checks = iter([Check(False, "2/6", 6, failed=(-0.6, 1.0)), Check(False, "3/6", 6, covers=False, failed=(0.7,)),
@@ -194,6 +197,8 @@ def test_the_landing_of_a_body_without_a_leap_table_is_checked_with_the_leaps_sc
     from sim_core.control.leap import CONSTANTS, leap_constants
     (tables / "landing_child.json").unlink(missing_ok=True)     # as before the child was adapted
     (tables / "leap_child.json").unlink(missing_ok=True)
+    for skill in ("landing", "leap"):                           # the woman is the nearest source
+        (tables / f"{skill}_imaginary_runner.json").unlink(missing_ok=True)
     child, woman = load_character("child"), load_character("woman")
     expected = LeapAdapter().scaled_constants(woman, child, tuned.load("leap", "woman"))
     seen = []

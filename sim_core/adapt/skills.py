@@ -89,8 +89,11 @@ def nearest_source(target: CharacterSpec, candidates: list[str]) -> str | None:
 
 
 def _run(behaviour: str, character: str, **request):
+    """A check's run, as the user's runs go: planned first where the skill plans (a landing's foot
+    placement, planning.planned_request), then simulated."""
+    from ..planning import planned_request
     from ..simulate import RunRequest, run
-    return run(RunRequest(behaviour, character, **request))
+    return run(planned_request(RunRequest(behaviour, character, **request))[0])
 
 
 class BalanceAdapter(Adapter):
@@ -129,7 +132,7 @@ class LandingAdapter(Adapter):
             rows.append({"drop": m(r["drop"]), "touchdown_speed": v(r["touchdown_speed"]),
                          "speed": [s for s, _ in kept], "delta": [d for _, d in kept]})
         out = {"script": f"python -m sim_core adapt (scaled from the {source.name}'s landing table by Fig. 6)",
-               "foot_delta": rows}
+               "foot_delta": rows, "offered_speeds": [round(v, 3) for v in self.wanted_speeds(target)]}
         fast = body.get("fast_touchdown")
         if fast:
             out["fast_touchdown"] = {"speed": v(fast["speed"]), "ramp": v(fast["ramp"]), "delta": m(fast["delta"])}
@@ -156,6 +159,12 @@ class LandingAdapter(Adapter):
                        strengths=["human"])
             yield
 
+    @staticmethod
+    def wanted_speeds(spec: CharacterSpec) -> tuple[float, float]:
+        """The horizontal speeds (m/s) the body is adapted for and its check draws: LANDING_SPEEDS x L^1/2."""
+        L = leg_length_ratio(load_character("man"), spec)
+        return (LANDING_SPEEDS[0] * L ** 0.5, LANDING_SPEEDS[1] * L ** 0.5)
+
     def check(self, character: str, rng) -> Check:
         from ..control.leap import landing_speeds
         from ..simulate import StartState
@@ -163,7 +172,7 @@ class LandingAdapter(Adapter):
         spec = load_character(character)
         table = tuned.load("landing", spec.name)
         L = leg_length_ratio(load_character("man"), spec)
-        wanted = (LANDING_SPEEDS[0] * L ** 0.5, LANDING_SPEEDS[1] * L ** 0.5)
+        wanted = self.wanted_speeds(spec)
         served = landing_speeds(table)
         low, high = max(wanted[0], served[0]), min(wanted[1], served[1])
         drops = rng.uniform(LANDING_DROPS[0] * L, LANDING_DROPS[1] * L, size=CHECKS)
@@ -205,6 +214,7 @@ class LandingAdapter(Adapter):
         table = calibrate(character, workers)
         table["fast_touchdown"] = fast_touchdown(character, table)
         table["script"] = "python -m sim_core adapt (calibrate land's sweep, its grid scaled to the body by Fig. 6)"
+        table["offered_speeds"] = [round(v, 3) for v in self.wanted_speeds(load_character(character))]
         return table, grid(character).trials
 
 

@@ -550,9 +550,13 @@ def foot_delta_row(table: dict, horizontal_speed: float, touchdown_speed: float)
 
 
 def landing_speeds(table: dict) -> tuple[float, float]:
-    """The horizontal speeds every drop's row of a landing table serves (its rows' common span)."""
+    """The horizontal speeds a landing table offers: its rows' common span (every drop's row serves
+    them), within the table's ``offered_speeds`` if it names them (``adapt`` writes the span its
+    check measured, so a body is offered no speed its rows reach unchecked)."""
     rows = [row for row in table["foot_delta"] if row["speed"]]
-    return max(min(row["speed"]) for row in rows), min(max(row["speed"]) for row in rows)
+    low, high = max(min(row["speed"]) for row in rows), min(max(row["speed"]) for row in rows)
+    offered = table.get("offered_speeds")
+    return (low, high) if offered is None else (max(low, offered[0]), min(high, offered[1]))
 
 
 LANDING_TABLE = register_table(TableType("landing", with_constants(LANDING_SETTINGS, LANDING_CONSTANTS), _landing_rows,
