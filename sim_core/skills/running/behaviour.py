@@ -81,12 +81,15 @@ STATE_NAMES = ("flight", "loading", "heel", "heel_toe", "toe", "unloading", "sta
 TUNED = -1.0                # the value of a tuned parameter that means "as tuned for the running speed"
 
 
-STEERED_RUNNERS = ("man",)      # criterion: the runners measured to turn, follow a path and face another way
 # criterion: where the man was measured to steer (docs/running.md, "Where steering is offered": a grid of
 # circles and figure eights, radii 6-50 m, 2.5-5 m/s): at 3.75 m/s and faster every curve fell, even a
 # circle of radius 50 m at 5 m/s; up to 3.5 m/s every curve asking at most 0.625 m/s^2 (v^2 / r) was run
 STEER_MAX_SPEED = 3.5
 STEER_MAX_ACCELERATION = 0.625
+# criterion: the lateral acceleration (m/s^2) each runner was measured to turn at, up to STEER_MAX_SPEED
+# (the woman: random curves at her 2.5-3.5 m/s, docs/running.md, the woman)
+STEER_LIMITS = {"man": STEER_MAX_ACCELERATION, "woman": 0.4}
+STEERED_RUNNERS = tuple(STEER_LIMITS)      # criterion: the runners measured to turn, follow a path and face another way
 MORPH_TARGETS = ("none", "woman")   # criterion: the characters of the man's skeleton with a running table
 MORPH_FROM = ("man",)               # criterion: the runners measured morphing (docs/bodies.md, the morph)
 
@@ -210,6 +213,7 @@ SETTING_RANGES = Schema(
     constant("heading_gain", "1/s", 0.0, 20.0, "heading rate per radian of heading error"),
     constant("turn_accel", "rad/s^2", 0.0, 10.0, "the heading rate changes at most this fast"),
     constant("yaw_error_limit", "rad", 0.0, 3.14, "yaw error the stance hip acts on (limits the yaw change asked of one stance)"),
+    constant("turn_lean", "1", 0.0, 1.0, "share of the lean parameter's lean this body takes (the woman: 0, she runs upright: docs/running.md, the woman)"),
     constant("roll_filter", "1", 0.0, 0.5, "share per control tick by which the turn rate and roll goal follow their targets (low-pass)"),
     constant("start_ankle_lean", "rad", 0.0, 2.0, "ankle dorsiflexion while leaning into the start"),
     constant("start_knee", "rad", 0.0, 2.0, "knee flexion while leaning"),
@@ -356,12 +360,11 @@ class Running(Behaviour):
                                      f"speed is [{speeds[0]:g}, {speeds[-1]:g}] m/s (the speeds of the {name}'s running table)")
             path = path_for(self.params)
             if path is not None and name in STEERED_RUNNERS:
-                check_steering(speed, path, self.params["lookahead"])
+                check_steering(speed, path, self.params["lookahead"], name)
             if path is not None and name not in STEERED_RUNNERS:
                 raise ParameterError(f"the {name} runs only straight ahead (course=straight, facing=0, no path): turning "
-                                     f"is calibrated for {', '.join(STEERED_RUNNERS)} only (the woman fell 1.6 s into "
-                                     f"a run at facing=1 and 4.1 s into the turn, circle and figure-eight courses at "
-                                     f"3 m/s; docs/running.md, the woman)")
+                                     f"is calibrated for the {' and the '.join(STEERED_RUNNERS)} only (docs/running.md, "
+                                     f"where steering is offered)")
         target = self.morph_target(self.params)
         if target is not None:
             self._check_morph(target)
@@ -651,7 +654,7 @@ class Running(Behaviour):
         self.heading_rate += max(-step, min(step, wanted - self.heading_rate))
         self.heading_goal = wrap_angle(self.heading_goal + self.heading_rate / self.control_rate)
         self.turn_rate += c.roll_filter * (self.heading_rate - self.turn_rate)
-        roll_target = -p["lean"] * math.atan(speed_now * self.turn_rate / GRAVITY)
+        roll_target = -c.turn_lean * p["lean"] * math.atan(speed_now * self.turn_rate / GRAVITY)
         self.roll_goal += c.roll_filter * (roll_target - self.roll_goal)
         heading = self.heading_goal
         ch, sh = math.cos(heading), math.sin(heading)
@@ -947,11 +950,11 @@ class Running(Behaviour):
         targets[ji["mt"]] = 0.0
 
 
-def check_steering(speed: float, path: np.ndarray, lookahead: float) -> None:
+def check_steering(speed: float, path: np.ndarray, lookahead: float, name: str = "man") -> None:
     """A run along ``path`` (in the runner's frame: it starts at the origin facing +X) is offered
     where the man was measured to steer: a path with a bend (the turn from +X onto the path's first
     direction included) at most STEER_MAX_SPEED, its tightest bend (at the look-ahead's scale, as
-    pure pursuit cuts it) asking at most STEER_MAX_ACCELERATION of lateral acceleration; else
+    pure pursuit cuts it) asking at most the runner's STEER_LIMITS of lateral acceleration; else
     refused, naming what would do."""
     radius, where = tightest_radius(np.vstack([[-lookahead, 0.0], path]), lookahead)
     if not math.isfinite(radius):
@@ -960,12 +963,13 @@ def check_steering(speed: float, path: np.ndarray, lookahead: float) -> None:
         raise ParameterError(f"a course, a path or a facing other than 0 is run at speed <= {STEER_MAX_SPEED:g} m/s "
                              f"(asked: {speed:g} m/s): faster, every curve measured fell, even a circle of radius "
                              f"50 m at 5 m/s (docs/running.md, where steering is offered); run straight or slower")
-    if speed * speed / radius > STEER_MAX_ACCELERATION * 1.01:    # definition: a polyline measures its arcs up to 0.2 % tight
-        widest = speed * speed / STEER_MAX_ACCELERATION
-        slowest = math.sqrt(STEER_MAX_ACCELERATION * radius)
+    limit = STEER_LIMITS[name]
+    if speed * speed / radius > limit * 1.01:    # definition: a polyline measures its arcs up to 0.2 % tight
+        widest = speed * speed / limit
+        slowest = math.sqrt(limit * radius)
         raise ParameterError(f"the path bends on a radius of {radius:.2f} m ({max(where - lookahead, 0.0):.1f} m along "
                              f"it), which at speed {speed:g} m/s asks {speed * speed / radius:.2f} m/s^2 of lateral "
-                             f"acceleration; at most {STEER_MAX_ACCELERATION:g} m/s^2 is run: a radius >= {widest:.1f} m"
+                             f"acceleration; at most {limit:g} m/s^2 is run (the {name}): a radius >= {widest:.1f} m"
                              + (f" or speed <= {slowest:.2f} m/s" if slowest >= Running.schema.by_name["speed"].minimum else "")
                              + " (docs/running.md, where steering is offered)")
 
