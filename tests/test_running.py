@@ -156,7 +156,8 @@ def test_steering_along_a_path(course, params, duration):
         assert y.max() > 1.8 * params["turn_radius"] and y.min() < -1.8 * params["turn_radius"]
 
 
-def steering_draws(seed: int, count: int, limit: float = STEER_MAX_ACCELERATION) -> list[tuple[str, dict, float]]:
+def steering_draws(seed: int, count: int, fastest: float = STEER_MAX_SPEED, limit: float = STEER_MAX_ACCELERATION
+                   ) -> list[tuple[str, dict, float]]:
     """Requests drawn inside the region where steering is offered (docs/running.md): a speed of
     2.5-3.5 m/s, a radius from the tightest offered at that speed to 1.6 times it, and by turns a
     turn by a random angle, a figure eight, a circle and a random facing; the run's duration takes
@@ -164,7 +165,7 @@ def steering_draws(seed: int, count: int, limit: float = STEER_MAX_ACCELERATION)
     rng = np.random.default_rng(seed)
     draws = []
     for k in range(count):
-        v = round(float(rng.uniform(2.5, STEER_MAX_SPEED)), 2)
+        v = round(float(rng.uniform(2.5, fastest)), 2)
         tightest = v * v / limit
         params = dict(speed=v, turn_radius=round(float(rng.uniform(tightest, 1.6 * tightest)), 1), turn_after=15.0)
         kind = ("turn", "figure_eight", "circle", "facing")[k % 4]
@@ -443,24 +444,29 @@ def test_a_scaled_character_runs_100_s_at_its_tables_speed(character, speed, ref
 
 
 @pytest.mark.parametrize("character, values, words", [
-    ("woman", {"course": "turn", "turn_radius": 15.0}, ["radius of 14.9", f"at most {STEER_LIMITS['woman']:g} m/s^2", "(the woman)"]),
+    ("woman", {"course": "turn", "turn_radius": 15.0}, ["radius of 14.9", f"at most {STEER_LIMITS['woman'][1]:g} m/s^2", "(the woman)"]),
     ("woman", {"facing": 1.0, "turn_radius": 10.0}, ["radius of 9.98 m", "radius >= 22.5 m", "(the woman)"]),
-    ("child", {"course": "turn", "speed": 2.5}, ["straight ahead"]),
+    ("woman", {"course": "circle", "speed": 3.5, "turn_radius": 50.0}, ["by the woman at speed <= 3.35 m/s", "asked: 3.5 m/s"]),
+    ("child", {"course": "circle", "speed": 2.5, "turn_radius": 5.0}, ["at most 0.9 m/s^2", "(the child)"]),
+    ("imaginary_runner", {"course": "turn"}, ["straight ahead"]),
 ])
 def test_a_turn_beyond_the_runners_limit_is_refused_in_one_line(character, values, words):
-    """The woman turns up to her measured lateral acceleration; the child runs straight ahead only:
-    anything else is refused before anything runs."""
+    """The woman and the child turn up to their measured lateral accelerations; the imaginary runner
+    runs straight ahead only: anything else is refused before anything runs."""
     with pytest.raises(ParameterError) as error:
         run(RunRequest("running", character, params={"speed": 3.0, **values}, duration=0.05))
     text = str(error.value)
     assert "\n" not in text and all(word in text for word in words), text
 
 
-@pytest.mark.parametrize("kind, params, duration", steering_draws(29, 2, STEER_LIMITS["woman"]))
-def test_the_woman_runs_a_random_curve_inside_her_limit(kind, params, duration):
-    """Curves drawn inside her offered region (a fixed seed; runs cut to 25 s: the lead-in, where she
-    used to fall at 4.1 s, and the curve's entry): no fall, on the path (docs/running.md, the woman)."""
-    traj = run(RunRequest("running", "woman", params=params, duration=min(duration, 25.0)))
+@pytest.mark.parametrize("character, kind, params, duration",
+                         [("woman", *draw) for draw in steering_draws(28, 2, *STEER_LIMITS["woman"])]
+                         + [("child", *draw) for draw in steering_draws(28, 1, *STEER_LIMITS["child"])])
+def test_a_scaled_runner_runs_a_random_curve_inside_its_limit(character, kind, params, duration):
+    """Curves drawn inside the woman's and the child's offered regions (a fixed seed; runs cut to 25 s:
+    the lead-in, where the woman used to fall at 4.1 s, and the curve's entry): no fall, on the path
+    (docs/running.md, the woman, the child)."""
+    traj = run(RunRequest("running", character, params=params, duration=min(duration, 25.0)))
     m = traj.meta["metrics"]
     assert not_fallen(traj), f"{kind} {params}: fell at {m['fall_time']:.1f} s"
     assert m["path_deviation_mean"] < PATH_DEVIATION_GOAL, (kind, params, m["path_deviation_mean"])

@@ -86,9 +86,11 @@ TUNED = -1.0                # the value of a tuned parameter that means "as tune
 # circle of radius 50 m at 5 m/s; up to 3.5 m/s every curve asking at most 0.625 m/s^2 (v^2 / r) was run
 STEER_MAX_SPEED = 3.5
 STEER_MAX_ACCELERATION = 0.625
-# criterion: the lateral acceleration (m/s^2) each runner was measured to turn at, up to STEER_MAX_SPEED
-# (the woman: random curves at her 2.5-3.5 m/s, docs/running.md, the woman)
-STEER_LIMITS = {"man": STEER_MAX_ACCELERATION, "woman": 0.4}
+# criterion: (speed m/s, lateral acceleration m/s^2) up to which each runner was measured to turn (the
+# woman: random curves at 2.5-3.5 m/s; near 3.5 m/s curves of 0.29-0.36 m/s^2 fell at their entry,
+# none at 3.36 m/s or slower asking at most 0.41 did: docs/running.md, the woman; the child at her one speed:
+# curves up to 0.96 m/s^2 ran, from 1.10 m/s^2 most fell: docs/running.md, the child)
+STEER_LIMITS = {"man": (STEER_MAX_SPEED, STEER_MAX_ACCELERATION), "woman": (3.35, 0.4), "child": (2.5, 0.9)}
 STEERED_RUNNERS = tuple(STEER_LIMITS)      # criterion: the runners measured to turn, follow a path and face another way
 MORPH_TARGETS = ("none", "woman")   # criterion: the characters of the man's skeleton with a running table
 MORPH_FROM = ("man",)               # criterion: the runners measured morphing (docs/bodies.md, the morph)
@@ -953,17 +955,18 @@ class Running(Behaviour):
 def check_steering(speed: float, path: np.ndarray, lookahead: float, name: str = "man") -> None:
     """A run along ``path`` (in the runner's frame: it starts at the origin facing +X) is offered
     where the man was measured to steer: a path with a bend (the turn from +X onto the path's first
-    direction included) at most STEER_MAX_SPEED, its tightest bend (at the look-ahead's scale, as
-    pure pursuit cuts it) asking at most the runner's STEER_LIMITS of lateral acceleration; else
+    direction included) at most the runner's STEER_LIMITS speed, its tightest bend (at the look-ahead's
+    scale, as pure pursuit cuts it) asking at most its STEER_LIMITS lateral acceleration; else
     refused, naming what would do."""
     radius, where = tightest_radius(np.vstack([[-lookahead, 0.0], path]), lookahead)
     if not math.isfinite(radius):
         return                                              # a straight line along the runner's heading
-    if speed > STEER_MAX_SPEED:
-        raise ParameterError(f"a course, a path or a facing other than 0 is run at speed <= {STEER_MAX_SPEED:g} m/s "
-                             f"(asked: {speed:g} m/s): faster, every curve measured fell, even a circle of radius "
-                             f"50 m at 5 m/s (docs/running.md, where steering is offered); run straight or slower")
-    limit = STEER_LIMITS[name]
+    fastest, limit = STEER_LIMITS[name]
+    if speed > fastest:
+        raise ParameterError(f"a course, a path or a facing other than 0 is run by the {name} at speed <= {fastest:g} m/s "
+                             f"(asked: {speed:g} m/s): faster, curves measured fell"
+                             + (", even a circle of radius 50 m at 5 m/s" if name == "man" else "")
+                             + " (docs/running.md, where steering is offered); run straight or slower")
     if speed * speed / radius > limit * 1.01:    # definition: a polyline measures its arcs up to 0.2 % tight
         widest = speed * speed / limit
         slowest = math.sqrt(limit * radius)
