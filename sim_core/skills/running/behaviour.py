@@ -319,8 +319,9 @@ class Running(Behaviour):
                "built-in path when no path is given: straight along facing, a turn by turn_angle, a figure eight, a circle"),
         Parameter("turn_angle", "rad", math.pi / 2, -math.pi, math.pi, "course 1: angle of the turn (left positive)"),
         Parameter("turn_radius", "m", 20.0, 1.5, 50.0,
-                  "course 1-3 and facing: radius of the turn, of each loop of the eight, of the circle (the man: "
-                  "v^2 / r at most 0.625 m/s^2, up to 3.5 m/s; docs/running.md)"),
+                  "course 1-3 and facing: radius of the turn, of each loop of the eight, of the circle (v^2 / r "
+                  "at most 0.625 m/s^2 up to 3.5 m/s for the man, 0.4 up to 3.35 m/s for the woman, 0.9 for the child; "
+                  "docs/running.md)"),
         Parameter("turn_after", "m", 15.0, 2.0, 200.0, "course 1-3: distance run straight before the turn or the loops"),
         Parameter("lean", "1", 1.0, 0.0, 1.5, "share of the lean into a turn that balances the centripetal force (atan(v^2 / (g r)))"),
         Points("path", "the path to run along, [x, y] points in metres from the start (in Blender: a curve "
