@@ -81,12 +81,17 @@ STATE_NAMES = ("flight", "loading", "heel", "heel_toe", "toe", "unloading", "sta
 TUNED = -1.0                # the value of a tuned parameter that means "as tuned for the running speed"
 
 
-STEERED_RUNNERS = ("man",)      # criterion: the runners measured to turn, follow a path and face another way
 # criterion: where the man was measured to steer (docs/running.md, "Where steering is offered": a grid of
 # circles and figure eights, radii 6-50 m, 2.5-5 m/s): at 3.75 m/s and faster every curve fell, even a
 # circle of radius 50 m at 5 m/s; up to 3.5 m/s every curve asking at most 0.625 m/s^2 (v^2 / r) was run
 STEER_MAX_SPEED = 3.5
 STEER_MAX_ACCELERATION = 0.625
+# criterion: (speed m/s, lateral acceleration m/s^2) up to which each runner was measured to turn (the
+# woman: random curves at 2.5-3.5 m/s; near 3.5 m/s curves of 0.29-0.36 m/s^2 fell at their entry,
+# none at 3.36 m/s or slower asking at most 0.41 did: docs/running.md, the woman; the child at her one speed:
+# curves up to 0.96 m/s^2 ran, from 1.10 m/s^2 most fell: docs/running.md, the child)
+STEER_LIMITS = {"man": (STEER_MAX_SPEED, STEER_MAX_ACCELERATION), "woman": (3.35, 0.4), "child": (2.5, 0.9)}
+STEERED_RUNNERS = tuple(STEER_LIMITS)      # criterion: the runners measured to turn, follow a path and face another way
 MORPH_TARGETS = ("none", "woman")   # criterion: the characters of the man's skeleton with a running table
 MORPH_FROM = ("man",)               # criterion: the runners measured morphing (docs/bodies.md, the morph)
 
@@ -210,6 +215,7 @@ SETTING_RANGES = Schema(
     constant("heading_gain", "1/s", 0.0, 20.0, "heading rate per radian of heading error"),
     constant("turn_accel", "rad/s^2", 0.0, 10.0, "the heading rate changes at most this fast"),
     constant("yaw_error_limit", "rad", 0.0, 3.14, "yaw error the stance hip acts on (limits the yaw change asked of one stance)"),
+    constant("turn_lean", "1", 0.0, 1.0, "share of the lean parameter's lean this body takes (the woman: 0, she runs upright: docs/running.md, the woman)"),
     constant("roll_filter", "1", 0.0, 0.5, "share per control tick by which the turn rate and roll goal follow their targets (low-pass)"),
     constant("start_ankle_lean", "rad", 0.0, 2.0, "ankle dorsiflexion while leaning into the start"),
     constant("start_knee", "rad", 0.0, 2.0, "knee flexion while leaning"),
@@ -313,8 +319,9 @@ class Running(Behaviour):
                "built-in path when no path is given: straight along facing, a turn by turn_angle, a figure eight, a circle"),
         Parameter("turn_angle", "rad", math.pi / 2, -math.pi, math.pi, "course 1: angle of the turn (left positive)"),
         Parameter("turn_radius", "m", 20.0, 1.5, 50.0,
-                  "course 1-3 and facing: radius of the turn, of each loop of the eight, of the circle (the man: "
-                  "v^2 / r at most 0.625 m/s^2, up to 3.5 m/s; docs/running.md)"),
+                  "course 1-3 and facing: radius of the turn, of each loop of the eight, of the circle (v^2 / r "
+                  "at most 0.625 m/s^2 up to 3.5 m/s for the man, 0.4 up to 3.35 m/s for the woman, 0.9 for the child; "
+                  "docs/running.md)"),
         Parameter("turn_after", "m", 15.0, 2.0, 200.0, "course 1-3: distance run straight before the turn or the loops"),
         Parameter("lean", "1", 1.0, 0.0, 1.5, "share of the lean into a turn that balances the centripetal force (atan(v^2 / (g r)))"),
         Points("path", "the path to run along, [x, y] points in metres from the start (in Blender: a curve "
@@ -356,12 +363,11 @@ class Running(Behaviour):
                                      f"speed is [{speeds[0]:g}, {speeds[-1]:g}] m/s (the speeds of the {name}'s running table)")
             path = path_for(self.params)
             if path is not None and name in STEERED_RUNNERS:
-                check_steering(speed, path, self.params["lookahead"])
+                check_steering(speed, path, self.params["lookahead"], name)
             if path is not None and name not in STEERED_RUNNERS:
                 raise ParameterError(f"the {name} runs only straight ahead (course=straight, facing=0, no path): turning "
-                                     f"is calibrated for {', '.join(STEERED_RUNNERS)} only (the woman fell 1.6 s into "
-                                     f"a run at facing=1 and 4.1 s into the turn, circle and figure-eight courses at "
-                                     f"3 m/s; docs/running.md, the woman)")
+                                     f"is calibrated for the {' and the '.join(STEERED_RUNNERS)} only (docs/running.md, "
+                                     f"where steering is offered)")
         target = self.morph_target(self.params)
         if target is not None:
             self._check_morph(target)
@@ -651,7 +657,7 @@ class Running(Behaviour):
         self.heading_rate += max(-step, min(step, wanted - self.heading_rate))
         self.heading_goal = wrap_angle(self.heading_goal + self.heading_rate / self.control_rate)
         self.turn_rate += c.roll_filter * (self.heading_rate - self.turn_rate)
-        roll_target = -p["lean"] * math.atan(speed_now * self.turn_rate / GRAVITY)
+        roll_target = -c.turn_lean * p["lean"] * math.atan(speed_now * self.turn_rate / GRAVITY)
         self.roll_goal += c.roll_filter * (roll_target - self.roll_goal)
         heading = self.heading_goal
         ch, sh = math.cos(heading), math.sin(heading)
@@ -947,25 +953,27 @@ class Running(Behaviour):
         targets[ji["mt"]] = 0.0
 
 
-def check_steering(speed: float, path: np.ndarray, lookahead: float) -> None:
+def check_steering(speed: float, path: np.ndarray, lookahead: float, name: str = "man") -> None:
     """A run along ``path`` (in the runner's frame: it starts at the origin facing +X) is offered
     where the man was measured to steer: a path with a bend (the turn from +X onto the path's first
-    direction included) at most STEER_MAX_SPEED, its tightest bend (at the look-ahead's scale, as
-    pure pursuit cuts it) asking at most STEER_MAX_ACCELERATION of lateral acceleration; else
+    direction included) at most the runner's STEER_LIMITS speed, its tightest bend (at the look-ahead's
+    scale, as pure pursuit cuts it) asking at most its STEER_LIMITS lateral acceleration; else
     refused, naming what would do."""
     radius, where = tightest_radius(np.vstack([[-lookahead, 0.0], path]), lookahead)
     if not math.isfinite(radius):
         return                                              # a straight line along the runner's heading
-    if speed > STEER_MAX_SPEED:
-        raise ParameterError(f"a course, a path or a facing other than 0 is run at speed <= {STEER_MAX_SPEED:g} m/s "
-                             f"(asked: {speed:g} m/s): faster, every curve measured fell, even a circle of radius "
-                             f"50 m at 5 m/s (docs/running.md, where steering is offered); run straight or slower")
-    if speed * speed / radius > STEER_MAX_ACCELERATION * 1.01:    # definition: a polyline measures its arcs up to 0.2 % tight
-        widest = speed * speed / STEER_MAX_ACCELERATION
-        slowest = math.sqrt(STEER_MAX_ACCELERATION * radius)
+    fastest, limit = STEER_LIMITS[name]
+    if speed > fastest:
+        raise ParameterError(f"a course, a path or a facing other than 0 is run by the {name} at speed <= {fastest:g} m/s "
+                             f"(asked: {speed:g} m/s): faster, curves measured fell"
+                             + (", even a circle of radius 50 m at 5 m/s" if name == "man" else "")
+                             + " (docs/running.md, where steering is offered); run straight or slower")
+    if speed * speed / radius > limit * 1.01:    # definition: a polyline measures its arcs up to 0.2 % tight
+        widest = speed * speed / limit
+        slowest = math.sqrt(limit * radius)
         raise ParameterError(f"the path bends on a radius of {radius:.2f} m ({max(where - lookahead, 0.0):.1f} m along "
                              f"it), which at speed {speed:g} m/s asks {speed * speed / radius:.2f} m/s^2 of lateral "
-                             f"acceleration; at most {STEER_MAX_ACCELERATION:g} m/s^2 is run: a radius >= {widest:.1f} m"
+                             f"acceleration; at most {limit:g} m/s^2 is run (the {name}): a radius >= {widest:.1f} m"
                              + (f" or speed <= {slowest:.2f} m/s" if slowest >= Running.schema.by_name["speed"].minimum else "")
                              + " (docs/running.md, where steering is offered)")
 
