@@ -162,8 +162,9 @@ def plan_jump(character: str, target, air_time: float, windup_time: float, stren
     target = tuple(float(v) for v in target) + ((0.0,) if len(target) == 3 else ())
     if not isinstance(budget, int) or budget < 1:
         raise_budget(budget)
-    if target[2] == 0 and not obstacle_of(target) and strength == "human" and not restart and start is None \
-            and model(character) is not None:        # on flat ground: from the measured jumps (jump_model)
+    if not obstacle_of(target) and strength == "human" and not restart and start is None \
+            and model(character) is not None and (target[2] == 0 or nearest_balanced(character, target, air_time)):
+        # on flat ground, or onto / down from a box a measured jump serves: from the measured jumps (jump_model)
         trial = JumpTrial(character, target, air_time, windup_time, strength, cancelled)
         return plan_from_model(character, target, air_time, trial, budget, progress, cancelled)
     space = Space(knobs_for(target))
