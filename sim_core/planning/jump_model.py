@@ -168,7 +168,7 @@ def measure_high(character: str, points: list[dict], sink=None) -> list[dict]:
     family = high_bases(character)
 
     def run(stage: str, todo: list[dict]) -> None:
-        todo = [s for k, s in enumerate(todo) if s not in todo[:k] and not any(p["settings"] == s for p in points + added)]
+        todo = [s for k, s in enumerate(todo) if s not in todo[:k] and not any(p["settings"] == s for p in flat(points + added))]
         for k, settings in enumerate(todo):
             added.append(_logged(measure(character, settings), sink))
             if (k + 1) % 20 == 0 or k + 1 == len(todo):
@@ -176,14 +176,14 @@ def measure_high(character: str, points: list[dict], sink=None) -> list[dict]:
                       f"{time.perf_counter() - began:.0f} s", file=sys.stderr, flush=True)
 
     run("high family", family)
-    run("arms back", [{**p["settings"], **HIGH_ARMS_BACK} for p in points + added
+    run("arms back", [{**p["settings"], **HIGH_ARMS_BACK} for p in flat(points + added)
                       if p["settings"] in family and p["measured"]["outcome"] != "success"])
     family += [{**s, **HIGH_ARMS_BACK} for s in family]
-    sideways = [s for p in balanced_points(points + added) if p["settings"] in family
+    sideways = [s for p in balanced_points(flat(points + added)) if p["settings"] in family
                 for s in nudged(p["settings"], HIGH_SIDEWAYS)]
     run("sideways", sideways)
     # and outward from those that landed at a side (extend's OUTWARD steps only: they fly long already)
-    added += extend(character, points + added, sink, start=[p for p in points + added if p["settings"] in sideways],
+    added += extend(character, points + added, sink, start=[p for p in flat(points + added) if p["settings"] in sideways],
                     longer=False)
     return added
 
@@ -365,7 +365,7 @@ def extend(character: str, points: list[dict], sink=None, rounds: int = EXTEND_R
     added (the first from all, or from the balanced ones of ``start``). Returns the new jumps
     (balanced or not)."""
     ranges = {p.name: (p.minimum, p.maximum) for p in LEAP_SETTINGS.parameters}
-    added, edge = [], balanced_points(points if start is None else start)
+    added, edge = [], balanced_points(flat(points if start is None else start))
     for _ in range(rounds):
         new = []
         for p in edge:
@@ -379,12 +379,21 @@ def extend(character: str, points: list[dict], sink=None, rounds: int = EXTEND_R
                 settings = dict(p["settings"])
                 for n, c in step:
                     settings[n] = min(max(settings[n] + c, ranges[n][0]), ranges[n][1])
-                if not any(q["settings"] == settings for q in points + added + new):
+                if not any(q["settings"] == settings for q in flat(points + added + new)):
                     new.append(_logged(measure(character, settings), sink))
         added += new
         edge = balanced_points(new)
         print(f"{character}: extended by {len(new)} jumps, {len(edge)} balanced", file=sys.stderr, flush=True)
     return added
+
+
+def flat(points: list[dict]) -> list[dict]:
+    """The jumps measured on flat ground (the boxes' record their surface)."""
+    return [p for p in points if not p["measured"].get("surface")]
+
+
+def same_surface(p: dict, q: dict) -> bool:
+    return p["measured"].get("surface", 0.0) == q["measured"].get("surface", 0.0)
 
 
 def balanced_points(points: list[dict]) -> list[dict]:
@@ -394,7 +403,7 @@ def balanced_points(points: list[dict]) -> list[dict]:
 def gaps(points: list[dict]) -> list[tuple[dict, dict]]:
     """Neighbouring balanced landings (in forward distance) further apart than the tolerance's
     diameter: the jumps on either side of a stretch no measured jump serves."""
-    ranked = sorted((p for p in points if p["measured"]["outcome"] == "success"),
+    ranked = sorted((p for p in flat(points) if p["measured"]["outcome"] == "success"),
                     key=lambda p: p["measured"]["landing"][0])
     return [(a, b) for a, b in zip(ranked, ranked[1:])
             if b["measured"]["landing"][0] - a["measured"]["landing"][0] > 2 * LANDING_TOLERANCE]
@@ -410,7 +419,7 @@ def fill(character: str, points: list[dict], sink=None, rounds: int = FILL_ROUND
         for a, b in todo:
             for w in FILL_STEPS:
                 settings = blend_rows(a["settings"], b["settings"], w)
-                if not any(p["settings"] == settings for p in points + added):     # measured already: the same
+                if not any(p["settings"] == settings for p in flat(points + added)):     # measured already: the same
                     added.append(_logged(measure(character, settings), sink))
         print(f"{character}: filled {len(todo)} gaps, {len(added)} jumps, "
               f"{sum(p['measured']['outcome'] == 'success' for p in added)} balanced", file=sys.stderr, flush=True)
@@ -418,8 +427,9 @@ def fill(character: str, points: list[dict], sink=None, rounds: int = FILL_ROUND
 
 
 def store(character: str, points: list[dict], directory: Path | None = None) -> Path:
-    """Write the table, each jump once (the first of any with the same settings)."""
-    points = [p for k, p in enumerate(points) if not any(q["settings"] == p["settings"] for q in points[:k])]
+    """Write the table, each jump once (the first of any with the same settings onto the same surface)."""
+    points = [p for k, p in enumerate(points) if not any(q["settings"] == p["settings"] and same_surface(p, q)
+                                                         for q in points[:k])]
     return tuned.save("jump_model", character, {"script": "python -m sim_core.planning.jump_model", "points": points},
                       strengths=["human"], directory=directory)
 
