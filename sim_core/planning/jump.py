@@ -38,7 +38,7 @@ from .. import tuned
 from ..errors import Cancelled, ParameterError
 from ..simulate import RunRequest, run
 from ..tuning import SerialExecutor, Space, minimize
-from ..skills.jump_to_target.region import model, nearest_balanced
+from ..skills.jump_to_target.region import REACH, model, nearest_balanced
 
 PLAN_MARGIN = 0.6                   # the search aims inside this share of the tolerances
 
@@ -212,9 +212,15 @@ def candidates(near: list[tuple[float, dict]], target, air_time: float):
     """The settings a request's trials run, in order: the measured balanced jump nearest the request,
     then that jump blended (control.leap.blend_rows) towards each other near one that landed on the
     other side of the target, by the share of the way that puts the landing on the target if the
-    landing is linear in the settings between them (interpolation of the measured data)."""
+    landing is linear in the settings between them (interpolation of the measured data), then the
+    other measured jumps within REACH of the request; onto or down from a box those before the
+    blends (a jump moved from the height it was measured for lands balanced or not: another is a
+    fresh chance)."""
     first = near[0][1]
     yield first["settings"]
+    others = [p["settings"] for d, p in near[1:] if d <= REACH]     # other measured jumps doing the request
+    if len(target) > 2 and float(target[2]):
+        yield from others         # a box: each moved from another height is a fresh chance (a knife edge in height)
     x0, t0 = first["measured"]["landing"][0], first["measured"]["air_time"]
     for _, other in near[1:]:
         x1, t1 = other["measured"]["landing"][0], other["measured"]["air_time"]
@@ -222,6 +228,8 @@ def candidates(near: list[tuple[float, dict]], target, air_time: float):
             continue
         w = min(max((float(target[0]) - x0) / (x1 - x0), 0.0), 1.0)
         yield blend_rows(first["settings"], other["settings"], w)
+    if not (len(target) > 2 and float(target[2])):
+        yield from others
 
 
 def plan_from_model(character: str, target, air_time: float, trial, budget: int, progress=None,
@@ -235,6 +243,8 @@ def plan_from_model(character: str, target, air_time: float, trial, budget: int,
     for settings in candidates(near, target, air_time):
         if len(tried) >= min(budget, MODEL_TRIALS):
             break
+        if any(settings == t[2] for t in tried):       # the same jump measured at two heights: run once
+            continue
         if cancelled is not None and cancelled():
             raise Cancelled("planning cancelled")
         cost, measured = trial(settings)
