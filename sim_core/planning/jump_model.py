@@ -4,7 +4,9 @@ Calibration data: the leap's settings of every calibrated broad jump (control.le
 and of every stored ground plan straight ahead, each run as a jump to a target and also with its
 forward lean, lift-off hip angle, crouch depth and arm swing nudged (``NUDGES``); and a second
 family for the long air times, the vertical leaps blended with the broad rows (``high_bases``,
-``measure_high``); each trial measured as the planner measures one (landing point of the middle of
+``measure_high``); and the jumps onto and down from boxes (``measure_boxes``: those settings run at
+each of BOX_HEIGHTS, ``measure_box_nudges``: around the balanced ones, each recording the surface it
+was measured for); each trial measured as the planner measures one (landing point of the middle of
 the feet, air time, balanced or not). They are kept in ``sim_core/tuned/tables/jump_model_<character>.json``
 (``python -m sim_core.planning.jump_model --characters man,woman`` measures and writes them).
 
@@ -330,7 +332,8 @@ def measure_boxes(character: str, points: list[dict], sink=None, heights=BOX_HEI
 def calibrate(character: str, out: Path | None = None, directory: Path | None = None, only: tuple = ()) -> list[dict]:
     """Measure every base and its nudges (one process; about 1.5 s a jump), step outward from the
     edge (extend), fill the gaps between the balanced landings (fill), measure the second family
-    (measure_high, which steps outward from its own sideways landings), and store the table.
+    (measure_high, which steps outward from its own sideways landings), the jumps onto and down from
+    boxes (measure_boxes, measure_box_nudges), and store the table.
     ``only``: measure just the nudges that change every one of these settings and add them to the
     stored table's jumps."""
     points = list(model(character)["points"]) if only else []
