@@ -211,8 +211,9 @@ def crouch_time(windup_time: float) -> float:
 
 def check_request(character, p: dict, strength: str) -> None:
     """The refusals of a jump that need no simulation (the box to clear, the direction, the
-    take-off speed against the character's strongest, and on flat ground a target outside the
-    region its measured jumps offer, region.region_refusal, unless a stored plan found it), for the
+    take-off speed against the character's strongest, and on flat ground or a box (no obstacle) a
+    target outside the region its measured jumps offer, region.region_refusal, unless a stored plan
+    found it), for the
     behaviour and for the planner before it searches; ``strength``: "human" or "unlimited"
     (leap.run_strength)."""
     require_calibrated("leap", character.name, "leap")        # a jump to a target takes off as the leap does
