@@ -18,6 +18,7 @@ import math
 
 import numpy as np
 
+from ...ballistics import GRAVITY
 from ...control.leap import LEAP_SETTINGS
 from ...tuned import TableType, load, register as register_table, table_path
 
@@ -30,7 +31,6 @@ HEIGHT_REACH = 0.05     # m: a box request is served by a jump that landed balan
                         # one height is a knife edge (the man's 0.5 m box plan onto 0.4 m landed balanced,
                         # onto 0.55 m fell; a jump moved 2.5 cm from the one height it was measured for,
                         # ballistically, landed 31 / 40 random box requests of seed 29)
-GRAVITY = 9.81
 
 
 def _model_rows(body: dict):
