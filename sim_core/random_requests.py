@@ -326,8 +326,8 @@ def main(argv=None) -> int:
             f"({SHARE_DRAWS} uniform draws). "
             + (f"Box targets (--boxes) are drawn straight ahead, forward as above, onto a box 0.25-0.75 m high or down "
                f"from one (either equally likely), air time 0.4-0.7 s, and drawn again until they lie in the region "
-               f"offered (its measured jumps onto and down from boxes, served within "
-               f"{HEIGHT_REACH * 100:.1f} cm of the height they were measured for): {box_text} of those targets "
+               f"offered (where one of its measured jumps landed balanced at the measured heights on both sides, "
+               f"{HEIGHT_REACH * 100:.0f} cm apart, within the tolerances interpolated): {box_text} of those targets "
                f"({SHARE_DRAWS} uniform draws). " if box_shares else "")
             + "A target without a stored plan is planned first (into a temporary "
             "plan store; on flat ground or a box from the measured jumps, at most "
