@@ -5,7 +5,7 @@ sim_core.planning, into a temporary plan store), and print for each one line wit
 simulation did and whether it passed TARGETS.md's check, then the pass rate and the time to a
 result per skill and character. Writes docs/random_requests.md:
 
-    python -m sim_core report random --seed 1 [--jumps 30 --leaps 20 --broad 20
+    python -m sim_core report random --seed 1 [--jumps 30 --leaps 20 --broad 20 --boxes 20
                                       --characters man,woman --budget 24 --workers 2]
 
 It is its own module, not a skill room's report.py, because it spans the jump_to_target and leap
@@ -29,24 +29,29 @@ import numpy as np
 from .control.leap import commandable_heights, load_mapping, rise_tolerance
 from .errors import ParameterError
 from .planning.jump import MODEL_TRIALS
+from .skills.jump_to_target.region import HEIGHT_REACH
 from .tuning import executor_for
 
 # the ranges issue 29 names for a jump to a target on the ground
 JUMP_FORWARD = {"man": (0.5, 1.9), "woman": (0.5, 1.6)}     # m forward of the start
 JUMP_LATERAL = 0.6                                          # m: lateral offset within +-this
 JUMP_AIR_TIME = (0.4, 0.7)                                  # s
+BOX_HEIGHT = (0.25, 0.75)                                   # m: onto a box this high, or down from one (issue 29)
+BOX_STREAM = 29                                             # the box draws' own random stream (seed, this): the other
+                                                            # draws of a seed stay as they were without them
 BROAD_TOLERANCE = 0.1                                       # TARGETS.md: broad jump travel within 10 %
 DRAW_DECIMALS = 3                                           # requests are drawn to the millimetre / millisecond
 DEFAULT_BUDGET = 24                                         # trials of a plan: two of the planner's batches
-SKILLS = ("jump", "leap", "broad")
+SKILLS = ("jump", "box", "leap", "broad")
 REGION_DRAWS = 1_000_000                                    # box draws tried for one target in the region offered
 SHARE_DRAWS = 20_000                                        # box draws that measure the region's share of the box
 
 
 @dataclass(frozen=True)
 class Draw:
-    """One random request: ``skill`` "jump" (target_x, target_y, air_time), "leap" (height) or
-    "broad" (distance), with its numbers in ``values``."""
+    """One random request: ``skill`` "jump" (target_x, target_y, air_time), "box" (target_x,
+    target_z, air_time: onto a box target_z high, or down from one -target_z high, straight ahead),
+    "leap" (height) or "broad" (distance), with its numbers in ``values``."""
     skill: str
     character: str
     values: tuple
@@ -55,6 +60,9 @@ class Draw:
         if self.skill == "jump":
             x, y, t = self.values
             return f"jump to ({x:.3f}, {y:+.3f}) m in {t:.3f} s"
+        if self.skill == "box":
+            x, z, t = self.values
+            return f"jump {'onto' if z > 0 else 'down'} {abs(z):.3f} m box, {x:.3f} m in {t:.3f} s"
         if self.skill == "leap":
             return f"leap {self.values[0]:.3f} m"
         return f"broad jump {self.values[0]:.3f} m"
@@ -75,9 +83,10 @@ def broad_range(character: str) -> tuple[float, float]:
     return float(min(travels)), float(max(travels))
 
 
-def draw_requests(seed: int, characters, jumps: int, leaps: int, broads: int) -> list[Draw]:
+def draw_requests(seed: int, characters, jumps: int, leaps: int, broads: int, boxes: int = 0) -> list[Draw]:
     """The random requests of ``seed`` (NumPy's default generator), per character: ``jumps`` jump
-    targets, ``leaps`` leap heights and ``broads`` broad-jump distances, uniform in their ranges."""
+    targets, ``leaps`` leap heights and ``broads`` broad-jump distances, uniform in their ranges;
+    then ``boxes`` box targets per character (draw_box_jump, from their own stream)."""
     rng = np.random.default_rng(seed)
     drawn = []
     for character in characters:
@@ -91,7 +100,31 @@ def draw_requests(seed: int, characters, jumps: int, leaps: int, broads: int) ->
             drawn.append(Draw("leap", character, (round(float(rng.uniform(*heights)), DRAW_DECIMALS),)))
         for _ in range(broads):
             drawn.append(Draw("broad", character, (round(float(rng.uniform(*distances)), DRAW_DECIMALS),)))
+    boxes_rng = np.random.default_rng((seed, BOX_STREAM))
+    for character in characters:
+        drawn += [Draw("box", character, draw_box_jump(boxes_rng, character)) for _ in range(boxes)]
     return drawn
+
+
+def box_target_draw(rng, character: str) -> tuple:
+    """A box target uniform in issue 29's span: forward JUMP_FORWARD, straight ahead, onto a box
+    BOX_HEIGHT high or down from one (either way equally likely), air time JUMP_AIR_TIME; as
+    (target_x, target_z, air_time)."""
+    x, h, t = rng.uniform(*JUMP_FORWARD[character]), rng.uniform(*BOX_HEIGHT), rng.uniform(*JUMP_AIR_TIME)
+    z = h if rng.uniform() < 0.5 else -h
+    return tuple(round(float(v), DRAW_DECIMALS) for v in (x, z, t))
+
+
+def draw_box_jump(rng, character: str) -> tuple:
+    """A box target (box_target_draw) drawn again until it lies in the region the character is
+    offered (region.offered, its measured jumps onto and down from boxes)."""
+    from .skills.jump_to_target.region import offered
+    for _ in range(REGION_DRAWS // 10):
+        x, z, t = box_target_draw(rng, character)
+        if offered(character, (x, 0.0, z), t):
+            return x, z, t
+    raise ParameterError(f"no box target of the {character} in {REGION_DRAWS // 10} draws lies in the region offered "
+                         f"(python -m sim_core.planning.jump_model --boxes-only)")
 
 
 def box_draw(rng, character: str) -> tuple:
@@ -126,6 +159,20 @@ def region_share(character: str, seed: int, draws: int = SHARE_DRAWS) -> float:
     return hits / draws
 
 
+def box_region_share(character: str, seed: int, draws: int = SHARE_DRAWS) -> tuple[float, float, float]:
+    """The share of issue 29's box targets (box_target_draw, uniform) the character is offered: all,
+    onto boxes, down from them."""
+    from .skills.jump_to_target.region import offered
+    rng = np.random.default_rng((seed, BOX_STREAM, 1))
+    hits = {True: [0, 0], False: [0, 0]}
+    for _ in range(draws):
+        x, z, t = box_target_draw(rng, character)
+        hits[z > 0][0] += offered(character, (x, 0.0, z), t)
+        hits[z > 0][1] += 1
+    share = lambda a, b: a / b if b else 0.0       # noqa: E731
+    return (share(hits[True][0] + hits[False][0], draws), share(*hits[True]), share(*hits[False]))
+
+
 def evaluate(draw: Draw, budget: int, store: str) -> dict:
     """Run one request as a user's would and judge it by TARGETS.md; a module-level function so a
     process pool can run it. ``store``: the plan store a jump is planned into."""
@@ -135,7 +182,7 @@ def evaluate(draw: Draw, budget: int, store: str) -> dict:
     began = time.perf_counter()
     result = {"draw": draw}
     try:
-        result.update(_jump(draw, budget) if draw.skill == "jump" else _leap(draw))
+        result.update(_jump(draw, budget) if draw.skill in ("jump", "box") else _leap(draw))
     except ParameterError as exc:
         result.update(refused=str(exc), passed=False)
     finally:
@@ -152,8 +199,12 @@ def _jump(draw: Draw, budget: int) -> dict:
     from .planning.jump import within_tolerance
     from .simulate import RunRequest, run
     from .skills.jump_to_target.behaviour import landing_measures
-    x, y, air_time = draw.values
-    params = {"target_x": x, "target_y": y, "air_time": air_time}
+    if draw.skill == "box":
+        x, z, air_time = draw.values
+        y = 0.0
+    else:
+        (x, y, air_time), z = draw.values, 0.0
+    params = {"target_x": x, "target_y": y, "target_z": z, "air_time": air_time}
     out = {"plan_seconds": 0.0, "planned_trials": 0}
     if planned(draw.character, params) is None:
         began = time.perf_counter()
@@ -163,7 +214,7 @@ def _jump(draw: Draw, budget: int) -> dict:
             return {**out, "measured": plan["measured"], "passed": False,
                     "refused": f"no plan found in {plan['trials']} trials (nearest trial shown)"}
     measured = landing_measures(run(RunRequest("jump_to_target", draw.character, params=params)))
-    return {**out, "measured": measured, "passed": bool(within_tolerance(measured, (x, y, 0.0), air_time))}
+    return {**out, "measured": measured, "passed": bool(within_tolerance(measured, (x, y, z), air_time))}
 
 
 def _leap(draw: Draw) -> dict:
@@ -186,9 +237,10 @@ def result_line(r: dict) -> str:
     verdict = "PASS" if r["passed"] else "MISS"
     if "measured" in r:
         m = r["measured"]
-        x, y, _ = draw.values
+        x, y = (draw.values[0], 0.0) if draw.skill == "box" else draw.values[:2]
         error = float(np.hypot(m["landing"][0] - x, m["landing"][1] - y))
-        what = (f"landed at ({m['landing'][0]:.3f}, {m['landing'][1]:+.3f}) m, {error * 100:.1f} cm off, air "
+        on = (f" on {m.get('landing_height', float('nan')):+.2f} m" if draw.skill == "box" else "")
+        what = (f"landed at ({m['landing'][0]:.3f}, {m['landing'][1]:+.3f}) m{on}, {error * 100:.1f} cm off, air "
                 f"{m['air_time']:.3f} s ({m['air_time'] - draw.values[2]:+.3f}), {m['outcome']}")
         if "refused" in r:
             what = f"refused: {r['refused']}: {what}"
@@ -222,21 +274,22 @@ def main(argv=None) -> int:
     parser.add_argument("--jumps", type=int, default=30, help="jump targets per character")
     parser.add_argument("--leaps", type=int, default=20, help="leap heights per character")
     parser.add_argument("--broad", type=int, default=20, help="broad-jump distances per character")
+    parser.add_argument("--boxes", type=int, default=0, help="box targets per character (onto or down from a box)")
     parser.add_argument("--characters", default="man,woman")
     parser.add_argument("--budget", type=int, default=DEFAULT_BUDGET, help="trials of each unplanned jump's plan")
     parser.add_argument("--workers", type=int, default=2, help="requests run at once, one process each")
     parser.add_argument("--store", help="plan store for the jumps' plans (default: a temporary one, removed after)")
     parser.add_argument("--out", default="docs/random_requests.md")
     args = parser.parse_args(argv)
-    for name in ("jumps", "leaps", "broad"):
+    for name in ("jumps", "leaps", "broad", "boxes"):
         if getattr(args, name) < 0:
             parser.error(f"--{name}={getattr(args, name)}: must be 0 or more")
     if args.budget < 1:
         parser.error(f"--budget={args.budget}: must be at least 1 trial")
     characters = [c.strip() for c in args.characters.split(",") if c.strip()]
-    draws = draw_requests(args.seed, characters, args.jumps, args.leaps, args.broad)
+    draws = draw_requests(args.seed, characters, args.jumps, args.leaps, args.broad, args.boxes)
     command = (f"python -m sim_core report random --seed {args.seed} --jumps {args.jumps} --leaps {args.leaps} "
-               f"--broad {args.broad} --characters {','.join(characters)} --budget {args.budget} "
+               f"--broad {args.broad}{f' --boxes {args.boxes}' if args.boxes else ''} --characters {','.join(characters)} --budget {args.budget} "
                f"--workers {args.workers}")
     print(command, flush=True)
     began = time.perf_counter()
@@ -253,6 +306,11 @@ def main(argv=None) -> int:
     print("\n".join(summary))
     shares = ", ".join(f"{100 * region_share(c, args.seed):.1f} % ({c})" for c in characters) if args.jumps else "not drawn"
     print(f"region offered: {shares} of issue 29's box")
+    box_shares = {c: box_region_share(c, args.seed) for c in characters} if args.boxes else {}
+    box_text = "; ".join(f"{c} {100 * a:.1f} % (onto {100 * u:.1f} %, down {100 * d:.1f} %)"
+                         for c, (a, u, d) in box_shares.items())
+    if box_shares:
+        print(f"box region offered: {box_text} of issue 29's box targets")
     print(f"{len(results)} requests in {total:.0f} s")
     text = ["# Random requests (issue 29)", "",
             "Generated by", "", "```", command, "```", "",
@@ -265,8 +323,14 @@ def main(argv=None) -> int:
             "the character is offered (sim_core.skills.jump_to_target.region: where one of its measured balanced "
             "jumps, python -m sim_core.planning.jump_model, lands within the tolerances; any other target is "
             f"refused before simulating, naming the limit). The region offered is {shares} of the box "
-            f"({SHARE_DRAWS} uniform draws). A target without a stored plan is planned first (into a temporary "
-            "plan store; on flat ground from the measured jumps, at most "
+            f"({SHARE_DRAWS} uniform draws). "
+            + (f"Box targets (--boxes) are drawn straight ahead, forward as above, onto a box 0.25-0.75 m high or down "
+               f"from one (either equally likely), air time 0.4-0.7 s, and drawn again until they lie in the region "
+               f"offered (where one of its measured jumps landed balanced at the measured heights on both sides, "
+               f"{HEIGHT_REACH * 100:.0f} cm apart, within the tolerances interpolated): {box_text} of those targets "
+               f"({SHARE_DRAWS} uniform draws). " if box_shares else "")
+            + "A target without a stored plan is planned first (into a temporary "
+            "plan store; on flat ground or a box from the measured jumps, at most "
             f"{min(args.budget, MODEL_TRIALS)} trials) and then simulated; a plan that found nothing within the "
             "tolerances is a miss, shown with its nearest trial. Leap heights within each character's "
             "commandable range (human torque limits); broad jumps within the calibrated distances. Times are "

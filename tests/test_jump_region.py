@@ -55,7 +55,37 @@ def test_the_second_family_is_measured_and_lands_long_flights(character):
     assert all(ranges[n][0] <= s[n] <= ranges[n][1] for s in family for n in s if n in ranges)
     assert all(s[n] == v for s in family for n, v in HIGH_LANDING.items())
     points = model(character)["points"]
-    measured = [p for p in points if p["settings"] in family]
+    measured = [p for p in points if p["settings"] in family and "surface" not in p["measured"]]   # on flat ground
     assert len(measured) == len(family)
     assert any(p["measured"]["outcome"] == "success" and p["measured"]["air_time"] >= 0.55
                and 0.5 <= p["measured"]["landing"][0] <= 1.0 for p in measured)
+
+
+BOX_TARGETS = 3     # random box targets per character (onto or down from a box)
+
+
+@pytest.mark.parametrize("character", ["man", "woman"])
+def test_random_box_targets_in_the_region_land_on_target_balanced(character, tmp_path):
+    """Box targets drawn as the report draws them (--boxes: onto a box 0.25-0.75 m high or down from
+    one, straight ahead, inside the region offered) land within the tolerances on the box's height."""
+    from sim_core.random_requests import BOX_HEIGHT
+    draws = draw_requests(SEED, [character], 0, 0, 0, BOX_TARGETS)
+    assert len(draws) == BOX_TARGETS and all(d.skill == "box" for d in draws)
+    assert all(BOX_HEIGHT[0] <= abs(d.values[1]) <= BOX_HEIGHT[1] and offered(character, (d.values[0], 0.0, d.values[1]),
+                                                                              d.values[2]) for d in draws)
+    results = [evaluate(draw, 24, str(tmp_path)) for draw in draws]
+    lines = [result_line(r) for r in results]
+    assert sum(r["passed"] for r in results) >= BOX_TARGETS - 1, "\n".join(lines)
+    assert max(r["seconds"] for r in results) <= 60, "\n".join(lines)
+
+
+def test_a_box_target_outside_the_region_is_refused_in_one_line_before_simulating(monkeypatch):
+    import sim_core.simulate as simulate
+    monkeypatch.setattr(simulate, "Recorder", None)         # a run that started would fail differently
+    params = {"target_x": 1.0, "target_y": 0.0, "target_z": -0.9, "air_time": 0.6, "plan_trials": 24}
+    with pytest.raises(ParameterError) as refused:
+        run(RunRequest("jump_to_target", "man", params=params))
+    text = str(refused.value)
+    assert "\n" not in text and "outside the region" in text and "no balanced jump down from a 0.9 m box" in text
+    assert "measured down from: 0.25," in text
+    assert region_refusal("man", (1.0, 0.0, -0.9), 0.6) == text

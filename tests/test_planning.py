@@ -17,7 +17,8 @@ from sim_core.skills.jump_to_target.behaviour import GROUND_AIR_TIME, stored_pla
 
 ROOT = Path(__file__).resolve().parents[1]
 UNPLANNED = {"target_x": 1.17, "air_time": GROUND_AIR_TIME}     # no shipped plan has this request
-SLOW_TO_PLAN = {"target_x": 0.9, "target_z": 0.6, "air_time": 0.6}   # onto a box no plan is for: its search runs on
+SLOW_TO_PLAN = {"target_x": 1.3, "target_z": -0.4, "obstacle_height": 0.3, "air_time": 0.6}   # down over a box, no
+                                    # plan is for (an obstacle: no measured jumps, the search runs on)
 WINDUP_TIME = 1.25
 
 

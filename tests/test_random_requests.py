@@ -64,3 +64,21 @@ def test_the_cli_runs_it_as_report_random(tmp_path):
     assert done.returncode == 0, done.stderr
     assert re.search(r"woman leap \d\.\d{3} m +(PASS|MISS) +rose \d\.\d{3} m", done.stdout)
     assert out.exists()
+
+
+def test_box_draws_are_in_range_in_the_region_and_leave_the_other_draws_as_they_were():
+    from sim_core.random_requests import BOX_HEIGHT, box_region_share
+    plain = draw_requests(1, ["man", "woman"], 2, 1, 1)
+    drawn = draw_requests(1, ["man", "woman"], 2, 1, 1, 2)
+    assert drawn[:len(plain)] == plain                       # their own stream: the other draws unchanged
+    boxes = drawn[len(plain):]
+    assert [d.character for d in boxes] == ["man", "man", "woman", "woman"] and all(d.skill == "box" for d in boxes)
+    assert boxes != draw_requests(2, ["man", "woman"], 2, 1, 1, 2)[len(plain):]
+    for d in boxes:
+        x, z, t = d.values
+        lo, hi = JUMP_FORWARD[d.character]
+        assert lo <= x <= hi and BOX_HEIGHT[0] <= abs(z) <= BOX_HEIGHT[1] and JUMP_AIR_TIME[0] <= t <= JUMP_AIR_TIME[1]
+        assert offered(d.character, (x, 0.0, z), t)
+        assert "box" in d.describe()
+    every, onto, down = box_region_share("man", 1, 2000)
+    assert 0.0 < every < 1.0 and 0.0 < onto and 0.0 < down

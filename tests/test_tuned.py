@@ -188,7 +188,8 @@ ALLOWED = {
                                                "SIDEWAYS_AIR_TIME", "BOX_DISTANCE", "BOX_AIR_TIME", "BOX_LENGTH",
                                                "BOX_WIDTH", "START_BOX_LENGTH", "START_BOX_EDGE", "OBSTACLE_LENGTH",
                                                "OBSTACLE_ROOM")},
-    "skills.jump_to_target.region": {n: "criterion" for n in ("LANDING_TOLERANCE", "AIR_TIME_TOLERANCE", "REACH")},
+    "skills.jump_to_target.region": {n: "criterion" for n in ("LANDING_TOLERANCE", "AIR_TIME_TOLERANCE", "REACH",
+                                                                          "HEIGHT_REACH")},
     # the bicycle's inverse-kinematics solver settings (numerics, not control) and its judging threshold
     "skills.bicycle.mount": {n: "definition" for n in ("IK_DAMPING", "IK_POSTURE_WEIGHT", "IK_ITERATIONS",
                                                        "IK_ITERATIONS_PER_TICK", "IK_TOLERANCE")},

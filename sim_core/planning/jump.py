@@ -38,7 +38,7 @@ from .. import tuned
 from ..errors import Cancelled, ParameterError
 from ..simulate import RunRequest, run
 from ..tuning import SerialExecutor, Space, minimize
-from ..skills.jump_to_target.region import model, nearest_balanced
+from ..skills.jump_to_target.region import REACH, model, nearest_balanced
 
 PLAN_MARGIN = 0.6                   # the search aims inside this share of the tolerances
 
@@ -162,8 +162,9 @@ def plan_jump(character: str, target, air_time: float, windup_time: float, stren
     target = tuple(float(v) for v in target) + ((0.0,) if len(target) == 3 else ())
     if not isinstance(budget, int) or budget < 1:
         raise_budget(budget)
-    if target[2] == 0 and not obstacle_of(target) and strength == "human" and not restart and start is None \
-            and model(character) is not None:        # on flat ground: from the measured jumps (jump_model)
+    if not obstacle_of(target) and strength == "human" and not restart and start is None \
+            and model(character) is not None and (target[2] == 0 or nearest_balanced(character, target, air_time)):
+        # on flat ground, or onto / down from a box a measured jump serves: from the measured jumps (jump_model)
         trial = JumpTrial(character, target, air_time, windup_time, strength, cancelled)
         return plan_from_model(character, target, air_time, trial, budget, progress, cancelled)
     space = Space(knobs_for(target))
@@ -211,9 +212,15 @@ def candidates(near: list[tuple[float, dict]], target, air_time: float):
     """The settings a request's trials run, in order: the measured balanced jump nearest the request,
     then that jump blended (control.leap.blend_rows) towards each other near one that landed on the
     other side of the target, by the share of the way that puts the landing on the target if the
-    landing is linear in the settings between them (interpolation of the measured data)."""
+    landing is linear in the settings between them (interpolation of the measured data), then the
+    other measured jumps within REACH of the request; onto or down from a box those before the
+    blends (a jump moved from the height it was measured for lands balanced or not: another is a
+    fresh chance)."""
     first = near[0][1]
     yield first["settings"]
+    others = [p["settings"] for d, p in near[1:] if d <= REACH]     # other measured jumps doing the request
+    if len(target) > 2 and float(target[2]):
+        yield from others         # a box: each moved from another height is a fresh chance (a knife edge in height)
     x0, t0 = first["measured"]["landing"][0], first["measured"]["air_time"]
     for _, other in near[1:]:
         x1, t1 = other["measured"]["landing"][0], other["measured"]["air_time"]
@@ -221,6 +228,8 @@ def candidates(near: list[tuple[float, dict]], target, air_time: float):
             continue
         w = min(max((float(target[0]) - x0) / (x1 - x0), 0.0), 1.0)
         yield blend_rows(first["settings"], other["settings"], w)
+    if not (len(target) > 2 and float(target[2])):
+        yield from others
 
 
 def plan_from_model(character: str, target, air_time: float, trial, budget: int, progress=None,
@@ -234,6 +243,8 @@ def plan_from_model(character: str, target, air_time: float, trial, budget: int,
     for settings in candidates(near, target, air_time):
         if len(tried) >= min(budget, MODEL_TRIALS):
             break
+        if any(settings == t[2] for t in tried):       # the same jump measured at two heights: run once
+            continue
         if cancelled is not None and cancelled():
             raise Cancelled("planning cancelled")
         cost, measured = trial(settings)

@@ -4,7 +4,9 @@ Calibration data: the leap's settings of every calibrated broad jump (control.le
 and of every stored ground plan straight ahead, each run as a jump to a target and also with its
 forward lean, lift-off hip angle, crouch depth and arm swing nudged (``NUDGES``); and a second
 family for the long air times, the vertical leaps blended with the broad rows (``high_bases``,
-``measure_high``); each trial measured as the planner measures one (landing point of the middle of
+``measure_high``); and the jumps onto and down from boxes (``measure_boxes``: those settings run at
+each of BOX_HEIGHTS, ``measure_box_nudges``: around the balanced ones, each recording the surface it
+was measured for); each trial measured as the planner measures one (landing point of the middle of
 the feet, air time, balanced or not). They are kept in ``sim_core/tuned/tables/jump_model_<character>.json``
 (``python -m sim_core.planning.jump_model --characters man,woman`` measures and writes them).
 
@@ -84,6 +86,19 @@ HIGH_LANDING = {"foot_delta": 0.0,       # the landing as calibrated (calibrate 
                 "landing_foot_lead_time": Landing.schema.by_name["foot_lead_time"].default,   # its lead,
                 "landing_swing_arms": 0.0,                                                   # arms held
                 "landing_arm_flexion": Landing.schema.by_name["arm_flexion"].default}
+# boxes (issue 29: onto boxes 0.25-0.75 m and down from them): the same settings measured onto a box at
+# each of BOX_HEIGHTS (a box centred where the jump is predicted to land, region.at_height) or down
+# from one; the region serves a box request from those measured within region.HEIGHT_REACH of it
+BOX_HEIGHTS = tuple(round(0.25 + 0.05 * k, 2) for k in range(11)) + tuple(round(-0.25 - 0.05 * k, 2) for k in range(11))
+BOX_PER_HEIGHT = 9                      # bases measured at each height (the most spread of those predicted in span)
+BOX_SPAN_X = (0.45, 1.95)               # m: predicted landings measured (issue 29's 0.5-1.9 m, and a tolerance)
+BOX_SPAN_T = (0.35, 0.75)               # s: predicted air times measured (0.4-0.7 s, and a tolerance)
+BOX_NUDGES = tuple(((name, change),) for name, change in (    # around a balanced box jump (straight ahead): lean
+    ("com_offset", 0.01), ("com_offset", -0.01), ("com_offset", 0.02), ("com_offset", -0.02),   # both ways
+    ("liftoff_hip", 0.1), ("liftoff_hip", -0.1), ("crouch_height", -0.02), ("crouch_height", 0.02)))
+BOX_HEIGHT_STEP = 0.05                  # m: a balanced box jump is also measured this much higher and lower
+BOX_NUDGE_ROUNDS = 1
+BOX_MIN_X = 0.45                        # m: a box centred nearer would sit on the toes (its front edge 0.3 m before)
 WINDUP_TIME = JumpToTarget.schema.by_name["windup_time"].default   # s: the wind-up the calibration jumps ran with
 PLAN_KEYS = ("crouch_height", "crouch_pitch", "com_offset", "liftoff_hip", "arm_swing", "thrust_damping",
              "foot_delta", "vertical_thrust", "landing_swing_arms", "landing_arm_flexion", "landing_foot_lead_time")
@@ -155,7 +170,7 @@ def measure_high(character: str, points: list[dict], sink=None) -> list[dict]:
     family = high_bases(character)
 
     def run(stage: str, todo: list[dict]) -> None:
-        todo = [s for k, s in enumerate(todo) if s not in todo[:k] and not any(p["settings"] == s for p in points + added)]
+        todo = [s for k, s in enumerate(todo) if s not in todo[:k] and not any(p["settings"] == s for p in flat(points + added))]
         for k, settings in enumerate(todo):
             added.append(_logged(measure(character, settings), sink))
             if (k + 1) % 20 == 0 or k + 1 == len(todo):
@@ -163,14 +178,14 @@ def measure_high(character: str, points: list[dict], sink=None) -> list[dict]:
                       f"{time.perf_counter() - began:.0f} s", file=sys.stderr, flush=True)
 
     run("high family", family)
-    run("arms back", [{**p["settings"], **HIGH_ARMS_BACK} for p in points + added
+    run("arms back", [{**p["settings"], **HIGH_ARMS_BACK} for p in flat(points + added)
                       if p["settings"] in family and p["measured"]["outcome"] != "success"])
     family += [{**s, **HIGH_ARMS_BACK} for s in family]
-    sideways = [s for p in balanced_points(points + added) if p["settings"] in family
+    sideways = [s for p in balanced_points(flat(points + added)) if p["settings"] in family
                 for s in nudged(p["settings"], HIGH_SIDEWAYS)]
     run("sideways", sideways)
     # and outward from those that landed at a side (extend's OUTWARD steps only: they fly long already)
-    added += extend(character, points + added, sink, start=[p for p in points + added if p["settings"] in sideways],
+    added += extend(character, points + added, sink, start=[p for p in flat(points + added) if p["settings"] in sideways],
                     longer=False)
     return added
 
@@ -190,18 +205,135 @@ def nudged(settings: dict, only: tuple = ()) -> list[dict]:
     return out
 
 
-def measure(character: str, settings: dict, log=None) -> dict:
+def measure(character: str, settings: dict, log=None, height: float = 0.0, box_x: float = 1.0) -> dict:
     """One calibration jump: the settings run as a jump to the point they were planned for (the
-    target only names the broad thrust; the landing is measured)."""
-    measured = measure_settings(character, settings, (1.0, 0.0, 0.0, 0.0), 0.45, WINDUP_TIME)
+    target only names the broad thrust; the landing is measured). ``height`` > 0: onto a box that
+    high centred ``box_x`` m ahead (scene_for builds it under the target); < 0: down from a box
+    that high; the measured jump then records its ``surface`` (and ``box_x`` onto a box)."""
+    measured = measure_settings(character, settings, (box_x if height > 0 else 1.0, 0.0, height, 0.0), 0.45, WINDUP_TIME)
     keep = {k: measured[k] for k in ("landing", "air_time", "outcome")}
+    if height:
+        keep["surface"] = float(height)
+        if height > 0:
+            keep["box_x"] = float(box_x)
+        if abs(measured.get("landing_height", height) - height) > 0.01:    # landed beside the box: not on it
+            keep["outcome"] = "off the surface"
     return {"settings": settings, "measured": keep}
+
+
+def box_bases(character: str, points: list[dict]) -> list[tuple[dict, dict]]:
+    """The settings measured onto and down from boxes, each with a measured jump of them (flat or
+    on a box) to predict where it lands at another height (region.at_height): every stored box plan
+    (no obstacle to clear), the flat bases (as measured in the table) and the balanced jumps of the
+    second family straight ahead (high_bases, with and without HIGH_ARMS_BACK), without repeats."""
+    out = []
+    for plan in read_plans(character):
+        r = plan["request"]
+        if r["target_z"] != 0 and r.get("strength", "human") == "human" and abs(r["windup_time"] - WINDUP_TIME) < 1e-6 \
+                and plan["measured"]["outcome"] == "success":
+            settings = {**plan_settings(plan["settings"]), "vertical_thrust": float(plan["settings"]["vertical_thrust"])}
+            out.append((settings, {"landing": plan["measured"]["landing"], "air_time": plan["measured"]["air_time"],
+                                   "outcome": "success", "surface": float(r["target_z"])}))
+    flat = bases(character)
+    family = high_bases(character)
+    family += [{**s, **HIGH_ARMS_BACK} for s in family]
+    for p in points:
+        m = p["measured"]
+        if "surface" in m or m["outcome"] != "success" or abs(m["landing"][1]) > LATERAL_EDGE:
+            continue
+        if p["settings"] in flat or p["settings"] in family:
+            out.append((p["settings"], m))
+    unique = []
+    for s, m in out:
+        if not any(s == u for u, _ in unique):
+            unique.append((s, m))
+    return unique
+
+
+def box_plan(character: str, points: list[dict], heights=BOX_HEIGHTS, per_height: int = BOX_PER_HEIGHT) -> list[tuple]:
+    """What measure_boxes runs: for each height, up to ``per_height`` of box_bases whose landing moved
+    there (region.at_height) falls in issue 29's span (BOX_SPAN_X, BOX_SPAN_T), the most spread
+    (each next the farthest, in tolerances, from those picked), as (settings, height, predicted x)."""
+    from ..skills.jump_to_target.region import at_height, request_distance
+    found = box_bases(character, points)
+    todo = []
+    for h in heights:
+        fits = []
+        for s, m in found:
+            moved = at_height(m, h)
+            if moved and BOX_SPAN_X[0] <= moved["landing"][0] <= BOX_SPAN_X[1] \
+                    and BOX_SPAN_T[0] <= moved["air_time"] <= BOX_SPAN_T[1]:
+                fits.append((s, moved, abs(m.get("surface", 0.0) - h)))
+        fits.sort(key=lambda e: e[2])           # those measured nearest this height first
+        picked = fits[:1]
+        while fits and len(picked) < per_height:
+            rest = [f for f in fits if not any(f[0] == q[0] for q in picked)]
+            if not rest:
+                break
+            far = max(rest, key=lambda f: min(request_distance(q[1], (*f[1]["landing"], h), f[1]["air_time"])
+                                              for q in picked))
+            picked.append(far)
+        todo += [(s, h, max(moved["landing"][0], BOX_MIN_X)) for s, moved, _ in picked]
+    return todo
+
+
+def measure_box_nudges(character: str, points: list[dict], sink=None, rounds: int = BOX_NUDGE_ROUNDS) -> list[dict]:
+    """Around the balanced jumps onto and down from boxes: each of BOX_NUDGES at the height it was
+    measured for, and the jump itself at the heights BOX_HEIGHT_STEP above and below (within
+    BOX_HEIGHTS' span), each where not measured already; ``rounds`` times, each round around the
+    balanced ones the round before added. Returns the new jumps."""
+    ranges = {p.name: (p.minimum, p.maximum) for p in LEAP_SETTINGS.parameters}
+    low, high = min(abs(h) for h in BOX_HEIGHTS), max(abs(h) for h in BOX_HEIGHTS)
+    began, added = time.perf_counter(), []
+    around = [p for p in balanced_points(points) if p["measured"].get("surface")]
+    for r in range(rounds):
+        todo = []
+        for p in around:
+            h, x = p["measured"]["surface"], p["measured"]["landing"][0]
+            for nudge in BOX_NUDGES:
+                changed = dict(p["settings"])
+                for name, change in nudge:
+                    changed[name] = min(max(changed[name] + change, ranges[name][0]), ranges[name][1])
+                todo.append((changed, h, x))
+            for dh in (-BOX_HEIGHT_STEP, BOX_HEIGHT_STEP):
+                h2 = round(h + dh, 3)
+                if low - 1e-9 <= abs(h2) <= high + 1e-9 and h2 * h > 0:
+                    todo.append((p["settings"], h2, x))
+        new = []
+        for k, (settings, h, x) in enumerate(todo):
+            if any(q["settings"] == settings and q["measured"].get("surface") == h for q in points + added + new):
+                continue
+            new.append(_logged(measure(character, settings, height=h, box_x=max(x, BOX_MIN_X)), sink))
+            if len(new) % 20 == 0:
+                print(f"{character}: box nudges round {r + 1}, {k + 1} / {len(todo)}, {len(balanced_points(new))} "
+                      f"balanced, {time.perf_counter() - began:.0f} s", file=sys.stderr, flush=True)
+        added += new
+        around = balanced_points(new)
+        print(f"{character}: box nudges round {r + 1}: {len(new)} jumps, {len(around)} balanced", file=sys.stderr, flush=True)
+    return added
+
+
+def measure_boxes(character: str, points: list[dict], sink=None, heights=BOX_HEIGHTS,
+                  per_height: int = BOX_PER_HEIGHT) -> list[dict]:
+    """Measure jumps onto and down from boxes (box_plan: each base run onto a box centred where it is
+    predicted to land, or down from one), each where not measured already. Returns the new jumps."""
+    began, added = time.perf_counter(), []
+    todo = box_plan(character, points, heights, per_height)
+    for k, (settings, h, x) in enumerate(todo):
+        if any(p["settings"] == settings and p["measured"].get("surface") == h for p in points + added):
+            continue
+        added.append(_logged(measure(character, settings, height=h, box_x=x), sink))
+        if (k + 1) % 10 == 0 or k + 1 == len(todo):
+            print(f"{character}: boxes {k + 1} / {len(todo)}, {len(balanced_points(added))} balanced, "
+                  f"{time.perf_counter() - began:.0f} s", file=sys.stderr, flush=True)
+    return added
 
 
 def calibrate(character: str, out: Path | None = None, directory: Path | None = None, only: tuple = ()) -> list[dict]:
     """Measure every base and its nudges (one process; about 1.5 s a jump), step outward from the
     edge (extend), fill the gaps between the balanced landings (fill), measure the second family
-    (measure_high, which steps outward from its own sideways landings), and store the table.
+    (measure_high, which steps outward from its own sideways landings), the jumps onto and down from
+    boxes (measure_boxes, measure_box_nudges), and store the table.
     ``only``: measure just the nudges that change every one of these settings and add them to the
     stored table's jumps."""
     points = list(model(character)["points"]) if only else []
@@ -215,6 +347,8 @@ def calibrate(character: str, out: Path | None = None, directory: Path | None = 
     points += extend(character, points, sink)
     points += fill(character, points, sink)
     points += measure_high(character, points, sink)
+    points += measure_boxes(character, points, sink)
+    points += measure_box_nudges(character, points, sink)
     store(character, points, directory)
     return points
 
@@ -234,7 +368,7 @@ def extend(character: str, points: list[dict], sink=None, rounds: int = EXTEND_R
     added (the first from all, or from the balanced ones of ``start``). Returns the new jumps
     (balanced or not)."""
     ranges = {p.name: (p.minimum, p.maximum) for p in LEAP_SETTINGS.parameters}
-    added, edge = [], balanced_points(points if start is None else start)
+    added, edge = [], balanced_points(flat(points if start is None else start))
     for _ in range(rounds):
         new = []
         for p in edge:
@@ -248,12 +382,21 @@ def extend(character: str, points: list[dict], sink=None, rounds: int = EXTEND_R
                 settings = dict(p["settings"])
                 for n, c in step:
                     settings[n] = min(max(settings[n] + c, ranges[n][0]), ranges[n][1])
-                if not any(q["settings"] == settings for q in points + added + new):
+                if not any(q["settings"] == settings for q in flat(points + added + new)):
                     new.append(_logged(measure(character, settings), sink))
         added += new
         edge = balanced_points(new)
         print(f"{character}: extended by {len(new)} jumps, {len(edge)} balanced", file=sys.stderr, flush=True)
     return added
+
+
+def flat(points: list[dict]) -> list[dict]:
+    """The jumps measured on flat ground (the boxes' record their surface)."""
+    return [p for p in points if not p["measured"].get("surface")]
+
+
+def same_surface(p: dict, q: dict) -> bool:
+    return p["measured"].get("surface", 0.0) == q["measured"].get("surface", 0.0)
 
 
 def balanced_points(points: list[dict]) -> list[dict]:
@@ -263,7 +406,7 @@ def balanced_points(points: list[dict]) -> list[dict]:
 def gaps(points: list[dict]) -> list[tuple[dict, dict]]:
     """Neighbouring balanced landings (in forward distance) further apart than the tolerance's
     diameter: the jumps on either side of a stretch no measured jump serves."""
-    ranked = sorted((p for p in points if p["measured"]["outcome"] == "success"),
+    ranked = sorted((p for p in flat(points) if p["measured"]["outcome"] == "success"),
                     key=lambda p: p["measured"]["landing"][0])
     return [(a, b) for a, b in zip(ranked, ranked[1:])
             if b["measured"]["landing"][0] - a["measured"]["landing"][0] > 2 * LANDING_TOLERANCE]
@@ -279,7 +422,7 @@ def fill(character: str, points: list[dict], sink=None, rounds: int = FILL_ROUND
         for a, b in todo:
             for w in FILL_STEPS:
                 settings = blend_rows(a["settings"], b["settings"], w)
-                if not any(p["settings"] == settings for p in points + added):     # measured already: the same
+                if not any(p["settings"] == settings for p in flat(points + added)):     # measured already: the same
                     added.append(_logged(measure(character, settings), sink))
         print(f"{character}: filled {len(todo)} gaps, {len(added)} jumps, "
               f"{sum(p['measured']['outcome'] == 'success' for p in added)} balanced", file=sys.stderr, flush=True)
@@ -287,8 +430,9 @@ def fill(character: str, points: list[dict], sink=None, rounds: int = FILL_ROUND
 
 
 def store(character: str, points: list[dict], directory: Path | None = None) -> Path:
-    """Write the table, each jump once (the first of any with the same settings)."""
-    points = [p for k, p in enumerate(points) if not any(q["settings"] == p["settings"] for q in points[:k])]
+    """Write the table, each jump once (the first of any with the same settings onto the same surface)."""
+    points = [p for k, p in enumerate(points) if not any(q["settings"] == p["settings"] and same_surface(p, q)
+                                                         for q in points[:k])]
     return tuned.save("jump_model", character, {"script": "python -m sim_core.planning.jump_model", "points": points},
                       strengths=["human"], directory=directory)
 
@@ -304,6 +448,13 @@ def main(argv=None) -> int:
     parser.add_argument("--high-only", action="store_true",
                         help="only measure the second family (vertical leaps blended with broad jumps, "
                              "measure_high), adding to the stored table")
+    parser.add_argument("--boxes-only", action="store_true",
+                        help="only measure jumps onto and down from boxes (measure_boxes), adding to the stored table")
+    parser.add_argument("--heights", default="", help="with --boxes-only: comma-separated surface heights (m; "
+                                                      "default BOX_HEIGHTS)")
+    parser.add_argument("--box-nudges-only", action="store_true",
+                        help="only measure around the stored table's balanced box jumps (measure_box_nudges)")
+    parser.add_argument("--per-height", type=int, default=BOX_PER_HEIGHT, help="with --boxes-only: bases per height")
     parser.add_argument("--fill-only", action="store_true",
                         help="only fill the gaps of the stored table's jumps (fill), adding to it")
     args = parser.parse_args(argv)
@@ -314,6 +465,14 @@ def main(argv=None) -> int:
         elif args.high_only:
             points = list(model(character)["points"])
             store(character, points + measure_high(character, points, open(args.log, "a") if args.log else None))
+        elif args.boxes_only:
+            points = list(model(character)["points"])
+            heights = tuple(float(h) for h in args.heights.split(",") if h.strip()) or BOX_HEIGHTS
+            sink = open(args.log, "a") if args.log else None
+            store(character, points + measure_boxes(character, points, sink, heights, args.per_height))
+        elif args.box_nudges_only:
+            points = list(model(character)["points"])
+            store(character, points + measure_box_nudges(character, points, open(args.log, "a") if args.log else None))
         elif args.fill_only:
             points = list(model(character)["points"])
             sink = open(args.log, "a") if args.log else None

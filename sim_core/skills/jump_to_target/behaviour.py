@@ -211,8 +211,9 @@ def crouch_time(windup_time: float) -> float:
 
 def check_request(character, p: dict, strength: str) -> None:
     """The refusals of a jump that need no simulation (the box to clear, the direction, the
-    take-off speed against the character's strongest, and on flat ground a target outside the
-    region its measured jumps offer, region.region_refusal, unless a stored plan found it), for the
+    take-off speed against the character's strongest, and on flat ground or a box (no obstacle) a
+    target outside the region its measured jumps offer, region.region_refusal, unless a stored plan
+    found it), for the
     behaviour and for the planner before it searches; ``strength``: "human" or "unlimited"
     (leap.run_strength)."""
     require_calibrated("leap", character.name, "leap")        # a jump to a target takes off as the leap does
@@ -238,10 +239,10 @@ def check_request(character, p: dict, strength: str) -> None:
             f"needs a take-off at {speed:.2f} m/s (path estimate: {velocity[0]:.2f} forward, "
             f"{velocity[2]:.2f} up); the strongest take-off of {character.name} is {capacity:.2f} m/s - "
             f"allow a longer or shorter air time, or a nearer target")
-    if p["target_z"] == 0.0 and p["obstacle_height"] == 0.0 and strength == "human":
+    if p["obstacle_height"] == 0.0 and strength == "human":
         plan = stored_plan(character.name, {**{k: float(p[k]) for k in REQUEST_KEYS}, "strength": strength})
-        refusal = None if plan and plan["found"] else region_refusal(character.name, target[:2], p["air_time"])
-        if refusal:        # on flat ground: only where a measured balanced jump does it (region.py)
+        refusal = None if plan and plan["found"] else region_refusal(character.name, target[:3], p["air_time"])
+        if refusal:        # on flat ground or a box: only where a measured balanced jump does it (region.py)
             raise ParameterError(refusal)
 
 

@@ -3,10 +3,14 @@
 The measured jumps are the jump_model table (sim_core/tuned/tables/jump_model_<character>.json,
 written by ``python -m sim_core.planning.jump_model``): the leap's settings of every calibrated
 broad jump and stored straight-ahead plan and of nudges of them, each with where it landed the
-middle of the feet, its air time and whether it ended balanced. A request (x, y, air time) is
-offered where a measured balanced jump does it within ``REACH`` of TARGETS.md's tolerances
-(``request_distance``); anything else is refused before simulating, in one line naming the limit
-(``region_refusal``). Only reads the table: the measuring is planning's.
+middle of the feet, its air time and whether it ended balanced, and the height of the surface it
+was measured landing on (``surface``: a box top above the start, or the ground below a box it
+started on; no entry = flat ground). A request (x, y[, z], air time) is offered where a measured
+balanced jump does it within ``REACH`` of TARGETS.md's tolerances (``request_distance``; a box
+request at a height between two measured ones by a jump that landed balanced at both, its landing
+and air time interpolated between the two, ``served``); anything else is refused before
+simulating, in one line naming the limit (``region_refusal``). Only reads the table: the measuring
+is planning's.
 """
 from __future__ import annotations
 
@@ -14,6 +18,7 @@ import math
 
 import numpy as np
 
+from ...ballistics import GRAVITY
 from ...control.leap import LEAP_SETTINGS
 from ...tuned import TableType, load, register as register_table, table_path
 
@@ -21,6 +26,11 @@ LANDING_TOLERANCE = 0.05            # m: TARGETS.md: the landing point within th
 AIR_TIME_TOLERANCE = 0.05           # s: TARGETS.md: the air time within this of the one asked
 REACH = 1.0             # tolerances: a request is offered where a measured balanced jump is this near
                         # (request_distance): replayed, the same settings land the same (one simulation)
+HEIGHT_REACH = 0.05     # m: a box request is served by a jump that landed balanced at measured heights this
+                        # far apart on either side of it (jump_model.BOX_HEIGHTS' step): landing balanced at
+                        # one height is a knife edge (the man's 0.5 m box plan onto 0.4 m landed balanced,
+                        # onto 0.55 m fell; a jump moved 2.5 cm from the one height it was measured for,
+                        # ballistically, landed 31 / 40 random box requests of seed 29)
 
 
 def _model_rows(body: dict):
@@ -37,12 +47,92 @@ def nearest_point_row(body: dict, target, air_time: float) -> dict | None:
 JUMP_MODEL_TABLE = register_table(TableType("jump_model", LEAP_SETTINGS, _model_rows, (nearest_point_row,)))
 
 
+def surface(measured: dict) -> float:
+    """The height of the surface a jump was measured landing on (0: flat ground, the tables before boxes)."""
+    return float(measured.get("surface", 0.0))
+
+
+def height_of(target) -> float:
+    return float(target[2]) if len(target) > 2 else 0.0
+
+
+def serves(measured: dict, z: float) -> bool:
+    """Whether a jump measured for its surface may serve a request landing at height ``z``: flat
+    ground only by flat-ground jumps, a box by jumps measured within HEIGHT_REACH of it."""
+    h = surface(measured)
+    return h == z if (h == 0.0 or z == 0.0) else abs(h - z) <= HEIGHT_REACH + 1e-9
+
+
+def at_height(measured: dict, z: float) -> dict:
+    """The measured jump with its landing moved to a surface at height ``z`` (ballistics: the same
+    take-off velocity, from the landing point, air time and surface measured, lands where the path
+    crosses z on the way down); unchanged on its own surface; None if the path does not reach z."""
+    h = surface(measured)
+    if abs(h - z) < 1e-9:
+        return measured
+    t, (x, y) = measured["air_time"], measured["landing"][:2]
+    up = (h + 0.5 * GRAVITY * t * t) / t
+    disc = up * up - 2.0 * GRAVITY * z
+    if disc < 0.0 or t <= 0.0:
+        return None
+    t2 = (up + math.sqrt(disc)) / GRAVITY
+    return {**measured, "landing": [x * t2 / t, y * t2 / t], "air_time": t2, "surface": z}
+
+
 def request_distance(measured: dict, target, air_time: float) -> float:
     """How far a measured jump is from a request, in units of TARGETS.md's tolerances: the larger of
-    the landing-point miss / 5 cm and the air-time miss / 0.05 s (<= 1: the jump does the request)."""
+    the landing-point miss / 5 cm and the air-time miss / 0.05 s (<= 1: the jump does the request);
+    infinite for a jump on another surface than the request's (a box request's jumps: served)."""
+    if abs(surface(measured) - height_of(target)) > 1e-9:
+        return math.inf
     landing = measured["landing"]
     miss = math.hypot(landing[0] - float(target[0]), landing[1] - float(target[1])) / LANDING_TOLERANCE
     return max(miss, abs(measured["air_time"] - air_time) / AIR_TIME_TOLERANCE)
+
+
+def _key(settings: dict) -> tuple:
+    return tuple(sorted(settings.items()))
+
+
+def brackets(character: str) -> list[tuple[dict, dict, dict]]:
+    """The measured box jumps as (point, lower, upper): the same settings landing balanced at two
+    neighbouring measured heights HEIGHT_REACH apart (lower and upper measured), or at one (lower is
+    upper); ``point`` the lower one's jump."""
+    body = model(character)
+    stamp = _LOADED[character][0]
+    if _BRACKETS.get(character, (None,))[0] != stamp or stamp is None:
+        by_settings = {}
+        for p in balanced(body):
+            if surface(p["measured"]):
+                by_settings.setdefault(_key(p["settings"]), []).append(p)
+        out = []
+        for same in by_settings.values():
+            same.sort(key=lambda p: surface(p["measured"]))
+            for k, p in enumerate(same):
+                out.append((p, p["measured"], p["measured"]))
+                if k + 1 < len(same) and abs(surface(same[k + 1]["measured"]) - surface(p["measured"])) <= HEIGHT_REACH + 1e-6:
+                    out.append((p, p["measured"], same[k + 1]["measured"]))
+        _BRACKETS[character] = (stamp, out)
+    return _BRACKETS[character][1]
+
+
+_BRACKETS: dict = {}
+
+
+def served(character: str, z: float) -> list[dict]:
+    """The character's measured jumps that serve a box request at height ``z``: each that landed
+    balanced at measured heights on both sides of z (brackets; or at z itself), with "measured" its
+    landing and air time interpolated to z (linear in the height) and "as_measured" the lower one."""
+    out = []
+    for p, low, high in brackets(character):
+        h0, h1 = surface(low), surface(high)
+        if not (h0 - 1e-9 <= z <= h1 + 1e-9) or (h0 == h1 and abs(z - h0) > 1e-9):
+            continue
+        w = 0.0 if h1 == h0 else (z - h0) / (h1 - h0)
+        moved = {**low, "surface": z, "air_time": low["air_time"] + w * (high["air_time"] - low["air_time"]),
+                 "landing": [a + w * (b - a) for a, b in zip(low["landing"], high["landing"])]}
+        out.append({**p, "measured": moved, "as_measured": low})
+    return out
 
 
 def balanced(body: dict | None) -> list[dict]:
@@ -63,10 +153,13 @@ def model(character: str) -> dict | None:
 
 
 def nearest_balanced(character: str, target, air_time: float, count: int = 1) -> list[tuple[float, dict]]:
-    """The ``count`` measured balanced jumps nearest the request, as (request_distance, point)."""
-    points = balanced(model(character))
+    """The ``count`` measured balanced jumps nearest the request that serve its height, as
+    (request_distance, point); a point measured for another surface with its "measured" moved to
+    the request's height (at_height) and the measured one as "as_measured"."""
+    z = height_of(target)
+    points = served(character, z) if z else balanced(model(character))
     ranked = sorted(((request_distance(p["measured"], target, air_time), p) for p in points), key=lambda e: e[0])
-    return ranked[:count]
+    return [e for e in ranked if math.isfinite(e[0])][:count]
 
 
 def offered(character: str, target, air_time: float) -> bool:
@@ -74,9 +167,13 @@ def offered(character: str, target, air_time: float) -> bool:
     body = model(character)
     stamp = _LOADED[character][0]
     if stamp is None or stamp != _ARRAYS.get(character, (None,))[0]:
-        rows = [(*p["measured"]["landing"], p["measured"]["air_time"]) for p in balanced(body)]
-        _ARRAYS[character] = (stamp, np.asarray(rows, dtype=float).reshape(-1, 3))
+        rows = [(*p["measured"]["landing"], p["measured"]["air_time"], surface(p["measured"])) for p in balanced(body)]
+        _ARRAYS[character] = (stamp, np.asarray(rows, dtype=float).reshape(-1, 4))
     points = _ARRAYS[character][1]
+    z = height_of(target)
+    if z:
+        return any(request_distance(p["measured"], target, air_time) <= REACH for p in served(character, z))
+    points = points[points[:, 3] == 0.0]
     if not len(points):
         return False
     miss = np.hypot(points[:, 0] - float(target[0]), points[:, 1] - float(target[1])) / LANDING_TOLERANCE
@@ -91,31 +188,41 @@ def region_refusal(character: str, target, air_time: float) -> str | None:
     naming the limit it breaks: the forward distances measured (no balanced jump lands near x), the
     air times offered at x, or the lateral offsets offered at x in that air time; and the nearest
     measured balanced jump."""
-    points = balanced(model(character))
-    if not points:          # not measured (python -m sim_core.planning.jump_model): the planner searches
-        return None
+    z = height_of(target)
+    every = balanced(model(character))
+    if not any((surface(p["measured"]) != 0.0) == (z != 0.0) for p in every):
+        return None         # not measured (python -m sim_core.planning.jump_model): the planner searches
+    x, y = float(target[0]), float(target[1])
+    on = "" if not z else (f" onto a {z:g} m box" if z > 0 else f" down from a {-z:g} m box")
+    points = served(character, z) if z else [p for p in every if not surface(p["measured"])]
+    if not points:
+        heights = sorted({round(abs(surface(p["measured"])), 3) for p in every if surface(p["measured"]) * z > 0})
+        return (f"target ({x:g}, {y:g}, {z:g}) m is outside the region the {character}'s measured jumps offer: "
+                f"no balanced jump{on} was measured at the heights around it (a box is offered where a jump "
+                f"landed balanced at the measured heights on both sides, {HEIGHT_REACH * 100:.0f} cm apart; "
+                f"measured {'onto' if z > 0 else 'down from'}: {', '.join(f'{h:g}' for h in heights) or 'none'} m)")
     d, nearest = nearest_balanced(character, target, air_time)[0]
     if d <= REACH:
         return None
-    x, y = float(target[0]), float(target[1])
     reach, window = REACH * LANDING_TOLERANCE, REACH * AIR_TIME_TOLERANCE
     here = [p["measured"] for p in points if abs(p["measured"]["landing"][0] - x) <= reach]
     timed = [h for h in here if abs(h["air_time"] - air_time) <= window]
     if not here:
         xs = sorted(p["measured"]["landing"][0] for p in points)
         gap = next(((a, b) for a, b in zip(xs, xs[1:]) if a < x < b), None)
-        limit = (f"no balanced jump of the {character} lands within {reach * 100:.0f} cm of {x:.2f} m forward"
+        limit = (f"no balanced jump{on} of the {character} lands within {reach * 100:.0f} cm of {x:.2f} m forward"
                  + (f" (measured landings go from {gap[0]:.2f} to {gap[1]:.2f} m)" if gap
                     else f" (measured landings: {xs[0]:.2f}-{xs[-1]:.2f} m)"))
     elif not timed:
-        limit = (f"air_time at {x:.2f} m forward is offered only in "
+        limit = (f"air_time at {x:.2f} m forward{on} is offered only in "
                  f"{intervals([(max(h['air_time'] - window, 0.0), h['air_time'] + window) for h in here])} s")
     else:
         spans = [(h["landing"][1] - math.sqrt(max(reach ** 2 - (h["landing"][0] - x) ** 2, 0.0)),
                   h["landing"][1] + math.sqrt(max(reach ** 2 - (h["landing"][0] - x) ** 2, 0.0))) for h in timed]
         limit = f"target_y at {x:.2f} m forward in {air_time:g} s is offered only in {intervals(spans)} m"
     m = nearest["measured"]
-    return (f"target ({x:g}, {y:g}) m in air_time={air_time:g} s is outside the region the {character}'s measured "
+    where = f"({x:g}, {y:g})" if not z else f"({x:g}, {y:g}, {z:g})"
+    return (f"target {where} m in air_time={air_time:g} s is outside the region the {character}'s measured "
             f"jumps offer: {limit}; the nearest balanced one lands at ({m['landing'][0]:.2f}, "
             f"{m['landing'][1]:+.2f}) m in {m['air_time']:.2f} s")
 
