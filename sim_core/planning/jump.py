@@ -32,13 +32,14 @@ from typing import Callable
 import numpy as np
 
 from ..character.spec import load_character
-from ..control.leap import blend_rows, load_mapping
+from ..control.leap import LEAP_SETTINGS, blend_rows, load_mapping
 from ..skills.jump_to_target.behaviour import AIR_TIME_TOLERANCE, KNOB_DEFAULTS, LANDING_TOLERANCE, REQUEST_KEYS, JumpToTarget, check_request, landing_measures, leap_params, obstacle_of, plan_store_dir, read_plans, same_request, scene_for, stored_plan, stored_plans
 from .. import tuned
 from ..errors import Cancelled, ParameterError
 from ..simulate import RunRequest, run
 from ..tuning import SerialExecutor, Space, minimize
 from ..skills.jump_to_target.region import REACH, model, nearest_balanced
+from .land import candidates as foot_candidates, foot_step
 
 PLAN_MARGIN = 0.6                   # the search aims inside this share of the tolerances
 
@@ -76,6 +77,8 @@ LANDING_PRIOR = {"foot_delta": 0.0, "landing_swing_arms": 0.0, "landing_arm_flex
 
 MODEL_TRIALS = 6                    # at most this many trials a flat-ground request planned from the measured
                                     # jumps runs (about 1.5 s each)
+FOOT_TRIALS = 12                    # definition: then at most this many more, the feet of the trial that landed
+                                    # on the target and fell placed a step (planning.land.foot_step) more and less
 NEIGHBOURS = 8                      # measured balanced jumps its trials start from or blend towards
 REFINE_SHARE = 0.4                  # share of a search's trials kept for refining the best balanced trial
 POPULATION = 12                     # trials per batch of the first stage (CMA-ES's population)
@@ -136,8 +139,13 @@ def trial_cost(measured: dict, target, air_time: float) -> float:
 
 
 def within_tolerance(measured: dict, target, air_time: float, margin: float = 1.0) -> bool:
+    return measured["outcome"] == "success" and lands_on(measured, target, air_time, margin)
+
+
+def lands_on(measured: dict, target, air_time: float, margin: float = 1.0) -> bool:
+    """Whether a trial landed on the target in the air time asked, within the tolerances (balanced or not)."""
     landing = np.asarray(measured["landing"], dtype=float)
-    return (measured["outcome"] == "success" and np.isfinite(landing).all()
+    return (np.isfinite(landing).all()
             and float(np.linalg.norm(landing - np.asarray(target[:2], dtype=float))) <= LANDING_TOLERANCE * margin
             and abs(measured["air_time"] - air_time) <= AIR_TIME_TOLERANCE * margin
             and abs(measured.get("landing_height", 0.0) - float(target[2])) < 0.01)
@@ -234,25 +242,43 @@ def candidates(near: list[tuple[float, dict]], target, air_time: float):
 
 def plan_from_model(character: str, target, air_time: float, trial, budget: int, progress=None,
                     cancelled=None) -> dict:
-    """Plan a jump on flat ground from the measured jumps: run candidates() one by one (``trial``:
+    """Plan a jump from the measured jumps: run candidates() one by one (``trial``:
     planning.jump.JumpTrial for the request) until one lands within the tolerances and balanced, at
-    most min(budget, MODEL_TRIALS) of them. Returns the planner's {"settings", "measured",
-    "trials", "found"} (the best trial, found or not)."""
+    most min(budget, MODEL_TRIALS) of them; if none did but one landed on the target and fell, its
+    feet placed a step more and less, two steps, ... (``foot_delta``; the landing's balanced window is
+    a few centimetres of foot placement wide, as a landing's plan finds: planning.land), at most
+    FOOT_TRIALS more. Returns the planner's {"settings", "measured", "trials", "found"} (the best
+    trial, found or not)."""
     near = nearest_balanced(character, target, air_time, NEIGHBOURS)
     tried = []
-    for settings in candidates(near, target, air_time):
-        if len(tried) >= min(budget, MODEL_TRIALS):
-            break
-        if any(settings == t[2] for t in tried):       # the same jump measured at two heights: run once
-            continue
+    bound = min(budget, MODEL_TRIALS + FOOT_TRIALS)
+
+    def run_trial(settings) -> bool:
         if cancelled is not None and cancelled():
             raise Cancelled("planning cancelled")
         cost, measured = trial(settings)
         tried.append((cost, len(tried), settings, measured))
         if progress is not None:
-            progress(len(tried), min(budget, MODEL_TRIALS), min(tried, key=lambda e: (e[0], e[1]))[3])
-        if within_tolerance(measured, target, air_time):
+            progress(len(tried), bound, min(tried, key=lambda e: (e[0], e[1]))[3])
+        return within_tolerance(measured, target, air_time)
+
+    found = False
+    for settings in candidates(near, target, air_time):
+        if len(tried) >= min(budget, MODEL_TRIALS):
             break
+        if any(settings == t[2] for t in tried):       # the same jump measured at two heights: run once
+            continue
+        if found := run_trial(settings):
+            break
+    fell_on_target = [e for e in tried if lands_on(e[3], target, air_time)]
+    if not found and fell_on_target:
+        _, _, base, _ = min(fell_on_target, key=lambda e: (e[0], e[1]))
+        knob = LEAP_SETTINGS.by_name["foot_delta"]
+        steps = foot_candidates(base["foot_delta"], foot_step(load_character(character)), FOOT_TRIALS + 1,
+                                knob.minimum, knob.maximum)[1:]
+        for delta in steps[:max(bound - len(tried), 0)]:
+            if run_trial({**base, "foot_delta": delta}):
+                break
     cost, _, settings, measured = min(tried, key=lambda e: (e[0], e[1]))
     return {"settings": settings, "measured": measured, "trials": len(tried),
             "found": bool(within_tolerance(measured, target, air_time))}

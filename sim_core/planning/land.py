@@ -55,6 +55,12 @@ def with_foot_delta(request: RunRequest, foot_delta: float) -> RunRequest:
     return dataclasses.replace(request, params={**request.params, "foot_delta": foot_delta})
 
 
+def foot_step(character) -> float:
+    """The step (m) a plan moves ``character``'s (a spec) feet by: landing_any.json's ``plan_step_share``
+    of calibrate land's delta step for the body (the man's 2 cm x L)."""
+    return round(CONSTANTS.plan_step_share * grid(character).delta_step, 4)
+
+
 def candidates(asked: float, step: float, trials: int, low: float, high: float) -> list[float]:
     """``asked``, then asked +- 1, 2, ... steps (more first), inside [low, high], ``trials`` in all."""
     out, k = [asked], 1
@@ -74,7 +80,7 @@ def plan_landing(request: RunRequest, progress: Callable | None = None, cancelle
     if request.behaviour != "land" or not params["landing_table"] or params["plan_trials"] < 1:
         return request, None
     knob = cls.schema.by_name["foot_delta"]
-    step = round(CONSTANTS.plan_step_share * grid(character).delta_step, 4)
+    step = foot_step(character)
     asked = float(params["foot_delta"])
     points = candidates(asked, step, int(params["plan_trials"]), knob.minimum, knob.maximum)
     space = Space({"foot_delta": (knob.minimum, knob.maximum)}, decimals=4)
