@@ -108,3 +108,15 @@ def test_a_child_landing_faster_than_her_table_is_refused_before_a_plan_runs(cap
                  f"{high + 0.3:.2f},0,0", "--workers", "1"]) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert err[-1].startswith("error: ") and "landing range" in err[-1] and not any("landing plan" in e for e in err)
+
+
+def test_a_landing_table_that_serves_no_speed_is_refused_in_one_line_not_a_crash():
+    """A body whose calibration balanced no landing (the imaginary cyclist's sweep) has rows with no
+    speed: the land skill refuses it in one line, and the fast-touchdown scan has nothing to add to."""
+    from sim_core.control.leap import landing_speeds
+    from sim_core.errors import ParameterError
+    from sim_core.skills.land.calibrate import fast_touchdown
+    empty = {"foot_delta": [{"drop": 0.2, "touchdown_speed": 2.0, "speed": [], "delta": []}]}
+    with pytest.raises(ParameterError, match="serves no horizontal speed"):
+        landing_speeds(empty)
+    assert fast_touchdown("man", empty) is None

@@ -29,6 +29,7 @@ from .scaling import ScaleFactors, Units, scale
 from .settings import GEOMETRIC, MASS, CharacterPair, scale_constants, scale_settings
 from ..character.dimensions import leg_length_ratio
 from ..character.spec import CharacterSpec, load_character
+from ..errors import ParameterError
 
 VELOCITY, LENGTH = Units.parse("m/s"), Units.parse("m")
 CHECKS = 6                   # definition: random requests a check draws (balance: 3 knee bends, running: every row)
@@ -173,7 +174,10 @@ class LandingAdapter(Adapter):
         table = tuned.load("landing", spec.name)
         L = leg_length_ratio(load_character("man"), spec)
         wanted = self.wanted_speeds(spec)
-        served = landing_speeds(table)
+        try:
+            served = landing_speeds(table)
+        except ParameterError as exc:          # no landing of the table balanced
+            return Check(False, str(exc), 0)
         low, high = max(wanted[0], served[0]), min(wanted[1], served[1])
         drops = rng.uniform(LANDING_DROPS[0] * L, LANDING_DROPS[1] * L, size=CHECKS)
         speeds = rng.uniform(low, high, size=CHECKS) if high > low else np.full(CHECKS, low)
@@ -212,7 +216,9 @@ class LandingAdapter(Adapter):
         """calibrate land's sweep (every drop, speed and delta), then its fast-touchdown scan."""
         from ..skills.land.calibrate import calibrate, fast_touchdown, grid
         table = calibrate(character, workers)
-        table["fast_touchdown"] = fast_touchdown(character, table)
+        fast = fast_touchdown(character, table)
+        if fast is not None:
+            table["fast_touchdown"] = fast
         table["script"] = "python -m sim_core adapt (calibrate land's sweep, its grid scaled to the body by Fig. 6)"
         table["offered_speeds"] = [round(v, 3) for v in self.wanted_speeds(load_character(character))]
         return table, grid(character).trials

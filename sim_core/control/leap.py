@@ -27,6 +27,7 @@ import numpy as np
 
 from ..analysis import feet_above_surface, standard_metrics
 from ..ballistics import GRAVITY
+from ..errors import ParameterError
 from .balance import Balance, LegGeometry, standing_hip_height
 from .crouch import CrouchTable
 from .behaviour import Behaviour, ControlContext
@@ -554,6 +555,9 @@ def landing_speeds(table: dict) -> tuple[float, float]:
     them), within the table's ``offered_speeds`` if it names them (``adapt`` writes the span its
     check measured, so a body is offered no speed its rows reach unchecked)."""
     rows = [row for row in table["foot_delta"] if row["speed"]]
+    if not rows:
+        raise ParameterError("the landing table serves no horizontal speed: no landing of its calibration ended "
+                             "balanced (python -m sim_core calibrate land)")
     low, high = max(min(row["speed"]) for row in rows), min(max(row["speed"]) for row in rows)
     offered = table.get("offered_speeds")
     return (low, high) if offered is None else (max(low, offered[0]), min(high, offered[1]))

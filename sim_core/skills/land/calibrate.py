@@ -71,8 +71,11 @@ def grid(character) -> Grid:
                 length(FAST_DELTAS), length(HIGH_DROPS), length([DELTA_STEP])[0])
 
 
-def fast_touchdown(character: str, table: dict) -> dict:
-    """Scan the extra delta for fast touchdowns one value at a time (each trial reads the table)."""
+def fast_touchdown(character: str, table: dict) -> dict | None:
+    """Scan the extra delta for fast touchdowns one value at a time (each trial reads the table);
+    None if the sweep's table serves no speed (no landing of it balanced: nothing to add to)."""
+    if not any(row["speed"] for row in table["foot_delta"]):
+        return None
     landed, name, g = {}, character_name(character), grid(character)
     for extra in g.fast_deltas:
         tuned.save("landing", name, dict(table, fast_touchdown={"speed": g.fast_from, "ramp": g.fast_ramp, "delta": extra}),
@@ -139,7 +142,9 @@ def main(argv=None) -> int:
         # the fast-touchdown scan runs its trials with the candidate as the character's table; a
         # stopped scan leaves the table that was there, byte for byte
         with tuned.provisional("landing", character_name(character)) as stored:
-            table["fast_touchdown"] = fast_touchdown(character, table)
+            fast = fast_touchdown(character, table)
+            if fast is not None:
+                table["fast_touchdown"] = fast
             path = tuned.save("landing", character_name(character), table, strengths=["human"])
             stored.keep()
         for row in table["foot_delta"]:
