@@ -87,7 +87,7 @@ ADDON_EXCLUDE = {"__pycache__"}         # build-time code lives in tools/, outsi
 # Wheels of sim_core's dependencies (and theirs), Linux x86-64, CPython 3.11 (Blender 3.4-5.0).
 # scipy 1.15 is the newest that accepts the numpy 1.23 of the legacy bundle; Blender 4.2+ ships
 # its own numpy, so the extension bundles everything but numpy.
-BUNDLED = ["mujoco==4.0.0", "scipy==1.15.3"]
+BUNDLED = ["mujoco==4.0.0", "scipy==1.15.3", "cma==4.5.0"]   # cma: the search service (planning a jump or a landing)
 LEGACY_NUMPY = "numpy==1.23.5"     # Blender 3.4's glTF importer still uses numpy.bool (< 1.24)
 PLATFORM_TAGS = {"linux-x64": ["manylinux_2_28_x86_64", "manylinux_2_27_x86_64",
                                "manylinux_2_17_x86_64", "manylinux2014_x86_64",

@@ -78,7 +78,7 @@ BICYCLE_RANGES = Schema(
     Parameter("reference_speed", "m/s", 0.5, 0.5, 10.0, "speed at which the four steering gains are these (steering.py scales them with speed)"),
     Parameter("max_fork_angle", "rad", 0.0, 0.0, 1.0, "limit of the commanded fork angle"),
     Parameter("min_speed", "m/s", 0.5, 0.5, 8.0, "the slowest speed a course may command (slower rides were measured to fall; course.py refuses them)"),
-    Parameter("max_cadence", "rev/s", 0.5, 0.5, 10.0, "the fastest cadence v / (2 pi r gear) a course may ask (faster, the legs do not turn the crank at the wheel's pace; course.py refuses it)"),
+    Parameter("max_cadence", "1/s", 0.5, 0.5, 10.0, "the fastest cadence v / (2 pi r gear), in revolutions per second, a course may ask (faster, the legs do not turn the crank at the wheel's pace; course.py refuses it)"),
     Parameter("min_gear", "1", 0.5, 0.5, 5.0, "the lowest gear offered (lower, the legs lost more than 5 % of the speed at 1.9-2.4 rev/s; course.py refuses it)"),
     Parameter("max_hill_grade", "1", 0.0, 0.0, 0.2, "the steepest hill_grade offered (steeper hills fell, a toe on the road, or lost more than 15 % of the speed; course.py refuses them)"),
     Parameter("max_hill_grade_gear", "1", 0.0, 0.0, 1.0, "the largest hill_grade x gear a hill may ask (the climb's crank torque goes with it; steeper or higher-geared climbs lost more than 15 % of the speed; course.py refuses them)"),
