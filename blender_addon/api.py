@@ -19,19 +19,14 @@ from .core.jobs import planned_request
 from .core.simcore import sim
 
 
-def parse_params(behaviour: str, params) -> dict:
+def parse_params(behaviour: str, params, character: str | None = None) -> dict:
     """A dict, a list of ``"name=value"`` strings, or one text ``"name=value name=value"``
     (commas or spaces), validated by the behaviour's schema: the full parameter dict, with the
-    defaults filled in (a choice by its option name or number)."""
-    schema = sim("skills").behaviour_class(behaviour).schema
-    if params is None:
-        return schema.validate({})
+    defaults filled in (a choice by its option name or number): ``character``'s where it has its
+    own (sim_core.request.behaviour_params), else the schema's."""
     if isinstance(params, str):
-        items = [item for item in params.replace(",", " ").split() if item]
-        return schema.parse_assignments(items)
-    if isinstance(params, (list, tuple)):
-        return schema.parse_assignments([str(item) for item in params])
-    return schema.validate(dict(params))
+        params = [item for item in params.replace(",", " ").split() if item]
+    return sim("request").behaviour_params(behaviour, character, params)
 
 
 def make_request(character: str, behaviour: str, params, duration: float | None = None, strength: str | None = None,
@@ -45,7 +40,8 @@ def make_request(character: str, behaviour: str, params, duration: float | None 
     if strength is not None:
         values.pop("strength_factor", None)
         values["strength"] = strength
-    run_request = sim("request").build_request(behaviour, character, parse_params(behaviour, params), values, pushes)
+    run_request = sim("request").build_request(behaviour, character, parse_params(behaviour, params, character),
+                                               values, pushes)
     run_request.validated()
     return run_request
 
@@ -108,7 +104,8 @@ def simulate_and_bake(context, *, behaviour: str, params=None, duration: float |
     if target:
         if target not in bpy.data.objects:
             raise rig.RigError(f"target object {target!r} is not in this file")
-        params = {**parse_params(behaviour, params), **target_from_object(obj, bpy.data.objects[target])}
+        params = {**parse_params(behaviour, params, str(obj[rig.CHARACTER_KEY])),
+                  **target_from_object(obj, bpy.data.objects[target])}
     run_request = make_request(str(obj[rig.CHARACTER_KEY]), behaviour, params, duration, strength, request, pushes)
     run_request, _ = planned_request(run_request, cancelled=cancelled)     # a landing's foot placement, planned
     trajectory = sim("simulate").run(run_request, progress=progress, cancelled=cancelled)

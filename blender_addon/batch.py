@@ -106,7 +106,7 @@ def run(argv: list[str]) -> int:
         args = parse_args(argv, sim("request").add_request_arguments)
         if args.scene:
             return run_scene(args, pkg)
-        params = api.parse_params(args.behaviour, args.assignments)
+        params = api.parse_params(args.behaviour, args.assignments, args.character)
         request, pushes = sim("request").request_values(args)
         api.make_request(args.character, args.behaviour, params, request=request, pushes=pushes)   # validate all first
     except (BatchError, SimAthleticsError) as exc:

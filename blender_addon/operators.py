@@ -43,7 +43,9 @@ class SIMATHLETICS_OT_add_character(bpy.types.Operator):
         except _user_errors() as exc:
             self.report({"ERROR"}, str(exc))
             return {"CANCELLED"}
-        self.report({"INFO"}, f"Added {arm.name} ({len(arm.data.bones)} bones)")
+        changed = props.use_character_defaults(settings, character)
+        self.report({"INFO"}, f"Added {arm.name} ({len(arm.data.bones)} bones)"
+                    + (f"; the panel now offers its own defaults ({', '.join(changed)})" if changed else ""))
         return {"FINISHED"}
 
 

@@ -159,6 +159,22 @@ def panel_tuned_overrides(settings, behaviour: str) -> dict:
     return {k: v for k, v in panel_settings(settings, behaviour).items() if v != defaults.get(k)}
 
 
+def use_character_defaults(settings, character: str) -> list[str]:
+    """Put ``character``'s own defaults (Behaviour.character_defaults: the child's leap height,
+    a runner's speed) into the panel's parameters that still show their schema default, so the
+    panel offers what that body can do; a value the user set is kept. Returns what changed, as
+    "behaviour: name=value"."""
+    behaviours, changed = sim("skills"), []
+    for name in behaviours.available_behaviours():
+        cls, group = behaviours.behaviour_class(name), getattr(settings, group_attr(name), None)
+        for knob, value in cls.character_defaults(character).items():
+            p = cls.schema.by_name[knob]
+            if group is not None and knob_value(p, getattr(group, knob)) == knob_value(p, p.default):
+                setattr(group, knob, value)
+                changed.append(f"{name}: {knob}={value:g}")
+    return changed
+
+
 def panel_request(settings) -> dict:
     """The run request's values from the panel (the request schema's knobs)."""
     return _values(settings.request, request_schema())

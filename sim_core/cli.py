@@ -39,10 +39,9 @@ def _finite(text: str, name: str) -> float:
 def build_request(args):
     """The RunRequest of ``simulate``'s flags: the behaviour's --set values by its schema, the
     rest by the request schema (sim_core.request), as the panel and batch bakes do."""
-    from .skills import behaviour_class
-    from .request import build_request as request_from_values, request_values
+    from .request import behaviour_params, build_request as request_from_values, request_values
 
-    params = behaviour_class(args.behaviour).schema.parse_assignments(args.set or [])
+    params = behaviour_params(args.behaviour, args.character, args.set or [])
     values, pushes = request_values(args)
     return request_from_values(args.behaviour, args.character, params, values, pushes)
 
@@ -137,7 +136,7 @@ def cmd_simulate(args) -> int:
 
 
 def cmd_plan(args) -> int:
-    from .skills import behaviour_class
+    from .request import behaviour_params
     from .planning import PLANNED_BEHAVIOURS, plan_and_store
     from .tuning import executor_for
     if args.behaviour not in PLANNED_BEHAVIOURS:
@@ -145,7 +144,7 @@ def cmd_plan(args) -> int:
                              f"{', '.join(PLANNED_BEHAVIOURS)}")
     if args.budget < 1:
         raise ParameterError(f"--budget {args.budget}: must be at least 1 trial (a simulated jump, ~0.5 s)")
-    params = behaviour_class(args.behaviour).schema.parse_assignments(args.set or [])
+    params = behaviour_params(args.behaviour, args.character, args.set or [])
     strength = args.strength if args.strength in ("human", "unlimited") else _finite(args.strength, "--strength")
     _use_store(args)
     with executor_for(args.workers) as executor:
@@ -197,8 +196,8 @@ def cmd_replay(args) -> int:
 
 def cmd_bench(args) -> int:
     from .bench import bench
-    from .skills import behaviour_class
-    params = behaviour_class(args.behaviour).schema.parse_assignments(args.set or [])
+    from .request import behaviour_params
+    params = behaviour_params(args.behaviour, args.character, args.set or [])
     result = bench(behaviour=args.behaviour, character=args.character, params=params,
                    duration=_finite(args.duration, "--duration"), repeats=args.repeats)
     print(f"controller in the loop: {result['controller_in_loop_sim_s_per_wall_s']:.2f} sim s / wall s")

@@ -52,6 +52,25 @@ def _flipped(axis: str) -> str:
     return axis[0] + ("-" if axis[1] == "+" else "+")
 
 
+def behaviour_params(behaviour: str, character, values=None) -> dict:
+    """The behaviour's full, validated parameters for ``character`` (a name, a spec file, a
+    CharacterSpec, or None: the schema's defaults alone): ``values`` (a dict, or the CLI's "name=value" strings) over the character's
+    defaults (Behaviour.character_defaults: the child leaps, unless told, to a height it is
+    offered) over the schema's. The CLI, batch bakes and the add-on's script API all take their
+    parameters from here."""
+    from .character.spec import CharacterSpec, load_character
+    from .skills import behaviour_class
+    cls = behaviour_class(behaviour)
+    if character is None:
+        defaults = {}
+    else:
+        defaults = cls.character_defaults(character.name if isinstance(character, CharacterSpec)
+                                          else load_character(character).name)
+    if isinstance(values, (list, tuple)):
+        return cls.schema.parse_assignments([str(v) for v in values], defaults)
+    return cls.schema.validate(dict(values or {}), defaults)
+
+
 def build_request(behaviour: str, character, params: dict, values: dict | None = None, pushes=()):
     """A RunRequest from the behaviour's validated ``params`` and the request ``values``
     (validated here by REQUEST_SCHEMA; missing ones take its defaults); ``pushes`` are further

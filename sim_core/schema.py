@@ -252,9 +252,10 @@ class Schema:
     def defaults(self) -> dict:
         return {p.name: p.default for p in self.parameters if p.default is not None}
 
-    def validate(self, values: dict) -> dict:
-        """Full, validated parameter dict: defaults overridden by ``values``."""
-        result = self.defaults()
+    def validate(self, values: dict, defaults: dict | None = None) -> dict:
+        """Full, validated parameter dict: defaults overridden by ``values``. ``defaults``: some
+        knobs' defaults replaced (a character's, Behaviour.character_defaults)."""
+        result = {**self.defaults(), **(defaults or {})}
         for name, value in values.items():
             if name not in self.by_name:
                 raise ParameterError(f"unknown parameter {name!r}; known: {', '.join(self.by_name)}")
@@ -265,15 +266,15 @@ class Schema:
             result[name] = knob.validate(value)
         return result
 
-    def parse_assignments(self, assignments: list[str]) -> dict:
-        """Parse CLI ``name=value`` strings and validate them."""
+    def parse_assignments(self, assignments: list[str], defaults: dict | None = None) -> dict:
+        """Parse CLI ``name=value`` strings and validate them (``defaults`` as in validate)."""
         values = {}
         for item in assignments:
             name, sep, value = item.partition("=")
             if not sep:
                 raise ParameterError(f"--set {item!r} must look like name=value")
             values[name.strip()] = value
-        return self.validate(values)
+        return self.validate(values, defaults)
 
     def to_json_dict(self) -> list[dict]:
         rows = []

@@ -58,3 +58,33 @@ def test_a_landing_starting_faster_than_its_table_serves_is_refused_in_one_line(
         run(RunRequest("land", "child", start=StartState(height=0.2, velocity=(high + 0.5, 0.0, 0.0)), duration=0.05))
     message = str(error.value)
     assert "\n" not in message and f"[{low:+.2f}, {high:+.2f}] m/s" in message
+
+
+@pytest.mark.parametrize("skill, character", [("leap", "child"), ("running", "child"), ("running", "imaginary_runner")])
+def test_a_body_not_offered_a_skills_default_runs_at_its_own(skill, character):
+    """The schema's default (a 0.3 m leap, running at 3.5 m/s) is outside what the child and the
+    imaginary runner are offered: a request that does not set it takes the body's own default
+    (Behaviour.character_defaults), which its check accepts; a value the user sets is kept."""
+    from sim_core.request import behaviour_params
+    from sim_core.skills import behaviour_class
+    knob = {"leap": "height", "running": "speed"}[skill]
+    schema_default = behaviour_class(skill).schema.by_name[knob].default
+    params = behaviour_params(skill, character)
+    assert params[knob] != schema_default
+    assert behaviour_params(skill, "man")[knob] == schema_default
+    run(RunRequest(skill, character, params=params, duration=0.05))          # not refused
+    assert behaviour_params(skill, character, [f"{knob}={schema_default}"])[knob] == schema_default
+    with pytest.raises(ParameterError):
+        run(RunRequest(skill, character, params={knob: schema_default}, duration=0.05))
+
+
+def test_a_jump_to_a_target_is_refused_for_a_body_whose_jumps_are_not_measured():
+    """The child leaps (its leap table) but has no measured jumps to a target (no jump_model
+    table): a jump is refused in one line naming who is measured, not searched (the search started
+    from broad-jump rows the child does not have, and crashed)."""
+    character = next(c for c in characters_of("leap") if not exists("jump_model", c))
+    with pytest.raises(ParameterError) as error:
+        run(RunRequest("jump_to_target", character, params={"target_x": 0.5}, duration=0.05))
+    message = str(error.value)
+    assert "\n" not in message and character in message
+    assert all(c in message for c in characters_of("jump_model"))

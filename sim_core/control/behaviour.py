@@ -114,6 +114,14 @@ class Behaviour:
         """Raise ParameterError before simulating if the request cannot be done."""
 
     @classmethod
+    def character_defaults(cls, character: str) -> dict:
+        """The animator parameters whose schema default ``character`` is not offered, moved into
+        what it is offered (the child's leap height, a runner's speed): what a run takes for the
+        knobs the user did not set (CLI, batch; the add-on's panel on adding the character).
+        Default: none ({})."""
+        return {}
+
+    @classmethod
     def assess(cls, trajectory) -> tuple[str, dict]:
         """Outcome and metrics read off a finished run. The default judges a standing skill
         (TARGETS.md "stable"); behaviours that end in motion override it."""

@@ -428,3 +428,15 @@ def test_a_landing_is_planned_before_it_is_baked(empty_scene):
                                                                                 "start_velocity_x": 2.11})
     assert trajectory.meta["outcome"] == "success"
     assert trajectory.meta["params"]["foot_delta"] == result["params"]["foot_delta"]
+
+
+def test_adding_a_body_puts_its_own_defaults_in_the_panel_where_the_schemas_are_not_offered(empty_scene):
+    """The child is not offered the leap's 0.3 m or running's 3.5 m/s: adding her sets the panel's
+    leap height and running speed to her own defaults (sim_core Behaviour.character_defaults); a
+    value the user set stays."""
+    from sim_core.request import behaviour_params
+    settings = empty_scene.scene.sim_athletics
+    props.params_group(settings, "running").speed = 3.0
+    assert bpy.ops.sim_athletics.add_character(character="child") == {"FINISHED"}
+    assert props.params_group(settings, "leap").height == pytest.approx(behaviour_params("leap", "child")["height"])
+    assert props.params_group(settings, "running").speed == pytest.approx(3.0)

@@ -148,8 +148,8 @@ class DiveSchema(SkillSchema):
     position (fina.parse; the free position D by CONSTANTS.free_tuck_twists), so that a run's
     parameters, its replay log and its assessment hold the dive as numbers like any other."""
 
-    def validate(self, values: dict) -> dict:
-        result = super().validate(values)
+    def validate(self, values: dict, defaults: dict | None = None) -> dict:
+        result = super().validate(values, defaults)
         number = self.by_name["dive"].option(result["dive"])
         if number != CUSTOM:
             result.update(dive_parameters(number))

@@ -35,8 +35,8 @@ from ...control.leap import AIRBORNE_HEIGHT, LEAP_SETTINGS, leap_assess, load_ma
 from ..leap.behaviour import Leap
 from ...errors import ParameterError
 from ...schema import Parameter, Schema
-from ...tuned import TableType, load, register as register_table, require_calibrated, table_path
-from .region import AIR_TIME_TOLERANCE, LANDING_TOLERANCE, region_refusal
+from ...tuned import TableType, characters_of, load, register as register_table, require_calibrated, table_path
+from .region import AIR_TIME_TOLERANCE, LANDING_TOLERANCE, model, region_refusal
 
 # where the COM is, relative to the middle of the feet, at take-off and at touchdown of a broad
 # jump (measured on the man's calibrated 1.0 m jump; used only for the path estimate)
@@ -217,6 +217,12 @@ def check_request(character, p: dict, strength: str) -> None:
     behaviour and for the planner before it searches; ``strength``: "human" or "unlimited"
     (leap.run_strength)."""
     require_calibrated("leap", character.name, "leap")        # a jump to a target takes off as the leap does
+    if model(character.name) is None:
+        raise ParameterError(
+            f"the jump to a target is not measured for the {character.name}: it is offered where measured jumps "
+            f"land (sim_core/tuned/tables/jump_model_<character>.json, measured for: "
+            f"{', '.join(characters_of('jump_model')) or 'nobody'}); python -m sim_core.planning.jump_model "
+            f"--characters {character.name} measures them")
     target = np.array([p["target_x"], p["target_y"], p["target_z"], p["obstacle_height"]])
     if p["obstacle_height"] > 0.0:
         gap = p["target_x"] - (toe_tip(character) - start_feet_centre(character)[0])
@@ -347,6 +353,12 @@ class JumpToTarget(Leap):
     def scene(cls, params, world, character=None):
         return scene_for(character, (params["target_x"], params["target_y"], params["target_z"],
                                      params["obstacle_height"]), world)
+
+    @classmethod
+    def character_defaults(cls, character: str) -> dict:
+        """The schema's (the leap's height is not a knob here): a target a body is not offered is
+        refused naming its region (check_request)."""
+        return {}
 
     def run_params(self) -> dict:
         return self.params

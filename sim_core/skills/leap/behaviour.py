@@ -7,11 +7,11 @@ import math
 
 from ...control.balance import Balance, standing_hip_height
 from ...control.behaviour import register
-from ...control.leap import LOW_LEVEL_SETTINGS, Landing, LeapThrust, balance_after_landing, broad_distances, broad_row, broad_rows, commandable_heights, leap_assess, leap_constants, load_mapping, vertical_key, vertical_row
+from ...control.leap import LOW_LEVEL_SETTINGS, Landing, LeapThrust, balance_after_landing, broad_distances, broad_row, broad_rows, commandable_heights, leap_assess, leap_constants, load_mapping, vertical_key, vertical_row, vertical_table
 from ...control.sequencer import Sequence, Step
 from ...errors import ParameterError
 from ...schema import Parameter
-from ...tuned import require_calibrated
+from ...tuned import load, require_calibrated
 from ...tuned.settings import SkillSchema
 
 
@@ -48,6 +48,17 @@ class Leap(Sequence):
                   "landing: the feet land this many seconds of horizontal COM travel ahead of the COM"),
         settings=LOW_LEVEL_SETTINGS,
     )
+
+    @classmethod
+    def character_defaults(cls, character: str) -> dict:
+        """A body whose calibrated leaps do not reach the schema's height (the child's 0.03-0.27 m
+        against 0.3 m) leaps, unless told, to the middle of what it is offered."""
+        rises = (load("leap", character) or {}).get(vertical_table("human"), {}).get("com_rise", [])
+        if not rises:
+            return {}
+        low, high = commandable_heights(rises)
+        height = cls.schema.by_name["height"].default
+        return {} if low <= height <= high else {"height": round((low + high) / 2, 2)}
 
     def run_params(self) -> dict:
         """The parameters the leap runs with: the user's, or for a broad jump (distance > 0) the

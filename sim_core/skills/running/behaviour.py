@@ -275,11 +275,11 @@ class RunningSchema(SkillSchema):
     table's rows; and ``morph_ramps``: the five tuned parameters' offsets at the morph's end (a
     tuner's candidate), each within plus or minus its range's width."""
 
-    def validate(self, values: dict) -> dict:
+    def validate(self, values: dict, defaults: dict | None = None) -> dict:
         values = dict(values)
         table = values.pop("table", None)
         ramps = values.pop("morph_ramps", None)
-        result = super().validate(values)
+        result = super().validate(values, defaults)
         if table is not None:
             check_rows("the table parameter", "running", table)
             result["table"] = table
@@ -344,6 +344,16 @@ class Running(Behaviour):
     def morph_target(cls, params: dict) -> str | None:
         target = cls.schema.by_name["morph_to"].option(params.get("morph_to", 0.0))
         return None if target == "none" else target
+
+    @classmethod
+    def character_defaults(cls, character: str) -> dict:
+        """A runner whose table does not cover the schema's speed (the child's 2.5 m/s, the
+        imaginary runner's 3 m/s) runs, unless told, at the nearest speed of its table."""
+        if load("running", character) is None:
+            return {}
+        speeds = SpeedTable.load(character).speeds
+        speed = cls.schema.by_name["speed"].default
+        return {} if speeds[0] <= speed <= speeds[-1] else {"speed": float(min(max(speed, speeds[0]), speeds[-1]))}
 
     def morph_fraction(self, t: float) -> float:
         p = self.params
