@@ -45,8 +45,9 @@ class Units:
     @classmethod
     def parse(cls, text: str, rotational: bool | None = None) -> "Units":
         """Units from a unit string as the behaviour schemas write them: 'm', 's', 'rad/m',
-        'rad s/m', 'kg m²/s', 'N m/rad', 'N m s/rad', 'm/s^2', '1', 'bool', 'count'.
-        'rad', '1', 'bool' and 'count' are dimensionless; 'N' is kg m s^-2. ``rotational`` None:
+        'rad s/m', 'kg m²/s', 'N m/rad', 'N m s/rad', 'm/s^2', '1', 'bool', 'count', 'share'.
+        'rad', '1', 'bool', 'count' and 'share' (a share of a servo's default gains, which
+        adapt.settings scales by the bodies its state moves) are dimensionless; 'N' is kg m s^-2. ``rotational`` None:
         rotational when the mass can be read as a moment of inertia (a length power at least
         twice the mass power, with the same sign), i.e. torques, torsional gains, angular momenta
         and their inverses."""
@@ -60,7 +61,8 @@ class Units:
 
 
 _BASE_UNITS = {"m": {"length": 1}, "s": {"time": 1}, "kg": {"mass": 1},
-               "N": {"mass": 1, "length": 1, "time": -2}, "rad": {}, "1": {}, "bool": {}, "count": {}}
+               "N": {"mass": 1, "length": 1, "time": -2}, "rad": {}, "1": {}, "bool": {}, "count": {},
+               "share": {}}
 _SUPERSCRIPTS = str.maketrans("²³⁻¹", "23-1")
 
 

@@ -23,6 +23,15 @@ the code (``gain_target``):
   rotational one the ratio of the body's inertia about its own centre of mass (the mean over the
   three axes, in the standing pose). This is the documented fallback, not a measured choice.
 
+A per-state gain given as a **share** of its servo's default gains (unit ``share``, e.g. the
+idle knee's ``idle_knee_gain``) is dimensionless, but the default it multiplies is mass-scaled by
+the bodies the seed's rule picks in the standing pose (servos.mass_scaled_servos: the body above a
+grounded leg), while the state's gain moves its own state's bodies (``swing``/``flight``/``idle``:
+the limb). In mass mode such a share is multiplied by the ratio of the two inertia ratios
+(``CharacterPair.share_factor``), so the state's kp and kv come out as Fig. 6's per-state rule
+says ([B] 204-206: "the bodies it moves in each state"). Measured on the Fig. 5/8 bodies
+(docs/bodies.md): the idle knee's share x 0.90 at 25 %, x 0.70 at 70 % of the way to the woman.
+
 L is the leg-length ratio, the seed's L for runners ([B] 144). A value equal to a setting's
 ``special`` (e.g. -1 = "as tuned") is a flag, not a quantity, and is kept.
 """
@@ -45,6 +54,7 @@ MODES = (GEOMETRIC, MASS)
 ATTITUDE_AXES = {"pitch": "y", "roll": "x", "yaw": "z", "twist": "z"}   # the stance hip's DOF per attitude
 JOINT_WORDS = ("hip", "knee", "ankle", "mt", "spine", "neck", "clav", "shoulder", "elbow", "wrist")
 SIDE_WORDS = {"stance": "rule", "swing": "outboard", "flight": "outboard", "idle": "outboard"}
+SHARE = "share"                             # the unit of a share of a servo's default gains
 NOT_NUMBERS = ("choice", "points")          # knob kinds whose values are not quantities
 
 
@@ -96,6 +106,20 @@ class CharacterPair:
                             inertia=_central_inertia(self.new) / _central_inertia(self.old))
 
 
+    def share_factor(self, name: str, mode: str) -> float:
+        """The factor of the gain share ``name`` (unit ``share``, module docstring): in mass mode,
+        I'/I of the bodies its state moves over I'/I of those its servo's default was scaled by;
+        1 in geometric mode, and where the two are the same bodies."""
+        if mode == GEOMETRIC:
+            return 1.0
+        target = gain_target(name, self.dof_names)
+        if target.dof is None or target.side == "rule":
+            return 1.0
+        own = gain_factors(self.old, self.new, target.dof, self.length, target.side)
+        servo = gain_factors(self.old, self.new, target.dof, self.length)
+        return own.inertia / servo.inertia
+
+
 def _central_inertia(standing: StandingBody) -> float:
     """The whole body's moment of inertia about its centre of mass, mean over the three axes."""
     com = standing.data.subtree_com[0]                  # the world body's subtree: the whole character
@@ -120,6 +144,8 @@ def scale_settings(row: dict, schema: Schema, pair: CharacterPair, mode: str) ->
         special = getattr(schema.by_name[name], "special", None)
         if units is None or isinstance(value, bool) or (special is not None and value == special):
             out[name] = value
+        elif schema.by_name[name].unit == SHARE:
+            out[name] = float(value) * pair.share_factor(name, mode)
         else:
             out[name] = scale(float(value), units, pair.factors(name, mode))
     return out
