@@ -100,6 +100,9 @@ VAULT_SETTINGS = Schema(
     setting("board_arm", "rad", -1.0, 3.14, "the arms swing to this shoulder flexion on the board"),
     setting("board_arm_time", "s", 0.02, 0.5, "the board's arm swing takes this long"),
     setting("push_time", "s", 0.01, 0.3, "at maximum deflection the knees, hips and ankles extend in this time"),
+    setting("push_after", "s", -1.0, 0.3,
+            "the push starts this long after the board touchdown, while the deck is still going down (-1: at the "
+            "deck's maximum deflection, the seed's)"),
     setting("push_ankle", "rad", -0.7, 0.9, "ankle angle the push extends to (- plantarflexion)"),
     setting("push_hip", "rad", -1.5, 0.5, "hip angle the push extends to"),
     setting("hand_ahead", "m", -0.5, 1.2, "the desired hand position: this far beyond the horse's near edge"),
@@ -122,6 +125,10 @@ VAULT_SETTINGS = Schema(
             "the horse state ends once no hand has pushed on the horse for this long (0: at the first tick without, "
             "so a bounce of the hands ends it and the second flight's servos act while the arms are still on it)"),
     setting("horse_hip", "rad", -1.0, 0.5, "hip angle on the horse (0: the layout)"),
+    setting("horse_shoulder_gain", "1", 0.0, 10.0,
+            "gain factor of the shoulder flexion servos on the horse (0: limp, the seed's 'no shoulder torque'); "
+            "above 0 they servo the arms toward horse_shoulder, blocking (the trunk held open over the hands)"),
+    setting("horse_shoulder", "rad", 0.0, 3.14, "... the shoulder flexion they servo to on the horse (3.14: in line with the trunk)"),
     setting("layout_arm", "rad", 0.0, 3.14, "shoulder flexion in the second flight's layout"),
     setting("second_pike", "rad", -2.0, 0.0,
             "hip flexion (-) the second flight starts in; it opens to the layout once the rotation the laid-out body "
@@ -239,9 +246,10 @@ class PoseLaw(PoseMove):
     called every tick with t, for targets that follow the measured state (eq. 12, the board's push)."""
 
     def __init__(self, ctx: ControlContext, goals: dict[str, float], move_time: float, gain: float = 1.0,
-                 gain_joints: list[str] | None = None, limp: tuple[str, ...] = (), law=None):
+                 gain_joints: list[str] | None = None, limp: tuple[str, ...] = (), law=None,
+                 gains: dict[str, float] | None = None):
         super().__init__(ctx, goals, move_time, gain, gain_joints=[] if gain_joints is None else gain_joints)
-        self.limp, self.law = limp, law
+        self.limp, self.law, self.gains = limp, law, gains or {}
 
     def start(self, t: float) -> None:
         super().start(t)
@@ -249,6 +257,9 @@ class PoseLaw(PoseMove):
         for name in self.limp:
             i = s.indices([name])
             s.set_gains(i, 0.0, 0.0)
+        for name, factor in self.gains.items():          # some servos with their own gain factor
+            i = s.indices([name])
+            s.set_gains(i, s.default_kp[i] * factor, s.default_kv[i] * factor)
 
     def update(self, t: float) -> None:
         if self.law is not None:
@@ -541,6 +552,7 @@ class Vault(Sequence):
         self.hands_off_since = None
 
         def board(t):
+            self.board_t0 = t
             return PoseLaw(ctx, both_sides({"shoulder_*_z": c["board_arm"]}), c["board_arm_time"], c["board_gain"],
                            list(legs), law=lambda t: self.board_law(t))
 
@@ -553,8 +565,14 @@ class Vault(Sequence):
                            c["arm_gain"], arms_z, law=lambda t: (self.reach_law(t), self.palm_law(t)))
 
         def horse(t):
-            return PoseLaw(ctx, both_sides({"hip_*_y": c["horse_hip"], "elbow_*_z": 0.0}), CONSTANTS.servo_move,
-                           c["elbow_gain"], ["elbow_r_z", "elbow_l_z"], limp=limp)
+            if not c["horse_shoulder_gain"]:
+                return PoseLaw(ctx, both_sides({"hip_*_y": c["horse_hip"], "elbow_*_z": 0.0}), CONSTANTS.servo_move,
+                               c["elbow_gain"], ["elbow_r_z", "elbow_l_z"], limp=limp)
+            # blocking: the shoulders' flexion servos act (toward horse_shoulder), the rest of the arm limp
+            return PoseLaw(ctx, both_sides({"hip_*_y": c["horse_hip"], "elbow_*_z": 0.0,
+                                            "shoulder_*_z": c["horse_shoulder"]}), CONSTANTS.servo_move,
+                           c["elbow_gain"], ["elbow_r_z", "elbow_l_z"], limp=tuple(j for j in limp if j not in arms_z),
+                           gains={j: c["horse_shoulder_gain"] for j in arms_z})
 
         def second_flight(t):
             s.set_gains(np.arange(len(s.names)), s.default_kp, s.default_kv)
@@ -644,13 +662,17 @@ class Vault(Sequence):
         return t - self.hands_off_since >= self.cfg["horse_release"]
 
     def board_law(self, t: float) -> None:
-        """At the board's maximum deflection (its deck stops going down) the legs extend."""
+        """At the board's maximum deflection (its deck stops going down) the legs extend; with push_after
+        set, that long after the board touchdown instead (while the deck still goes down: the hips' push on
+        the loaded legs then deflects the board further, event ``push``)."""
         if self.deck_velocity() < 0.0:
             self.deck_going_down = True
-        if self.pushed or not self.deck_going_down or self.deck_velocity() < 0.0:
+        timed = self.cfg["push_after"] >= 0.0 and t - self.board_t0 >= self.cfg["push_after"]
+        if self.pushed or not timed and (self.cfg["push_after"] >= 0.0 or not self.deck_going_down
+                                         or self.deck_velocity() < 0.0):
             return
         self.pushed = True
-        self.event(t, "max_deflection")
+        self.event(t, "push" if timed else "max_deflection")
         c, s = self.cfg, self.ctx.servos
         goals = both_sides({"knee_*_y": 0.0, "hip_*_y": c["push_hip"], "ankle_*_y": c["push_ankle"]})
         s.move_to(s.indices(list(goals)), np.array(list(goals.values())), c["push_time"], t)
