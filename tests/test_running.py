@@ -405,11 +405,16 @@ def test_the_woman_is_refused_outside_her_tables_speeds():
 def test_the_womans_constants_are_the_mans_mass_scaled_and_the_man_keeps_his():
     """Her table's constants of the laws are running_any's (the man's) scaled by Fig. 6 (mass), but
     for the lean's hip damping (kept: she chatters without it) and the lean into a turn (0: she runs
-    turns upright); the man runs with running_any's."""
+    turns upright); the man runs with running_any's. Her table was written before mass scaling
+    scaled the per-state gain shares (unit ``share``: docs/bodies.md), so her shares are the man's,
+    which her rows were searched with."""
     from sim_core.skills.running.calibrate import scaled_table
     stored = SpeedTable.load("woman")
     scaled = scaled_table("man", "woman", stored.speeds, {"start_hip_damping": 1.0, "turn_lean": 0.0})
-    assert stored.constants == pytest.approx(scaled.constants, rel=1e-9)
+    shares = {n for n in stored.constants if Running.settings_schema.by_name[n].unit == "share"}
+    assert shares and all(stored.constants[n] == Running.settings_schema.by_name[n].default for n in shares)
+    assert ({n: v for n, v in stored.constants.items() if n not in shares}
+            == pytest.approx({n: v for n, v in scaled.constants.items() if n not in shares}, rel=1e-9))
     assert stored.constants["start_hip_damping"] == 1.0 and stored.constants["pitch_kd"] < 0.5 * 149.0
     assert SpeedTable.load("man").constants == {}
     assert Running.settings_schema.by_name["start_hip_damping"].default == 0.0

@@ -94,6 +94,8 @@ STEER_LIMITS = {"man": (STEER_MAX_SPEED, STEER_MAX_ACCELERATION), "woman": (3.35
 STEERED_RUNNERS = tuple(STEER_LIMITS)      # criterion: the runners measured to turn, follow a path and face another way
 MORPH_TARGETS = ("none", "woman")   # criterion: the characters of the man's skeleton with a running table
 MORPH_FROM = ("man",)               # criterion: the runners measured morphing (docs/bodies.md, the morph)
+MORPH_SPEEDS = (2.5, 3.5)           # criterion: m/s, the speeds measured morphing without a fall (docs/bodies.md, the
+                                    # morph: 2.5-3.5 m/s; with the woman's 4.0 m/s row, a morph at 4.0 m/s fell at 9.8 s)
 
 class SpeedTable:
     """Tuned values of some parameters as functions of the running speed (piecewise linear,
@@ -395,12 +397,12 @@ class Running(Behaviour):
             ends = (self.table.start.speeds, SpeedTable.load(target).speeds)
         else:
             ends = (SpeedTable.load(name).speeds, SpeedTable.load(target).speeds)
-        low, high = max(e[0] for e in ends), min(e[-1] for e in ends)
+        low, high = max(e[0] for e in ends + (MORPH_SPEEDS,)), min(e[-1] for e in ends + (MORPH_SPEEDS,))
         speed = self.params["speed"]
         if not low <= speed <= high:
             raise ParameterError(f"parameter speed={speed:g} m/s is out of range for a morph from the {name} to the "
                                  f"{target}; allowed range for speed is [{low:g}, {high:g}] m/s (the speeds both "
-                                 f"running tables cover)")
+                                 f"running tables cover where a morph was measured)")
         if path_for(self.params) is not None:
             raise ParameterError(f"a morph into the {target} runs only straight ahead (course=straight, facing=0, "
                                  f"no path): the {target} is not calibrated to turn")
