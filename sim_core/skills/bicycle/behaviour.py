@@ -72,8 +72,10 @@ BICYCLE_RANGES = Schema(
     Parameter("yaw_rate_gain", "s", 0.0, 0.0, 5.0, "eq. 11 k_beta-dot at reference_speed"),
     Parameter("heading_acceleration", "m/s^2", 0.1, 0.1, 10.0, "a commanded heading (no path) is approached as a turn asking this lateral acceleration: the desired heading turns at this / v rad/s"),
     Parameter("max_heading_turn_speed", "m/s", 0.5, 0.5, 10.0, "a commanded heading other than the start's (no path) is offered up to this speed (faster, the turn to it fell or leaned past 20 deg; course.py refuses it)"),
+    Parameter("heading_rate_feedforward", "1", 0.0, 0.0, 1.0, "share of the desired heading's turning rate (to a commanded heading) eq. 11's yaw-rate term damps the yaw rate relative to (0: the seed's, relative to 0; without it the heading lags the turn by k_bd/k_b times its rate)"),
     Parameter("min_heading_turn_gear", "1", 0.5, 0.5, 5.0, "a commanded heading other than the start's (no path) is offered from this gear (in lower gears the heading was left 5-10 deg off or the bicycle weaved; course.py refuses it)"),
     Parameter("lean_feedforward", "1", 0.0, 0.0, 1.0, "share of a steady turn's lean (tan = v^2 kappa / g) asked for ahead of a path's curve (0: the seed's eq. 11)"),
+    Parameter("min_heading_turn_cadence", "1/s", 0.0, 0.0, 5.0, "a commanded heading other than the start's (no path) is offered from this cadence v / (2 pi r gear), in revolutions per second (slower, the turn fell; course.py refuses it)"),
     Parameter("curvature_preview", "s", 0.0, 0.0, 3.0, "the path's curvature is read this many seconds of travel ahead"),
     Parameter("reference_speed", "m/s", 0.5, 0.5, 10.0, "speed at which the four steering gains are these (steering.py scales them with speed)"),
     Parameter("max_fork_angle", "rad", 0.0, 0.0, 1.0, "limit of the commanded fork angle"),
@@ -261,6 +263,7 @@ class Bicycling(Behaviour):
         self.stopping = self.course.stop        # braking to a stop (the stop course; a coast that got too slow)
         self.foot_down = None               # stop: (time the foot left its pedal, where it left it from the left hip)
         self.planted = None                 # stop: the left leg's servo targets once the foot is on the ground
+        self.desired_yaw_rate = 0.0          # rad/s: the rate the desired heading turns at (eq. 11's yaw-rate term)
         self.knee_integral = 0.0            # stop: the planted knee's integral term (rad)
         self.rest_since = None              # stop: when the bicycle came to rest with the foot down
         self.foot_site = model.site(ctx.actor.prefix + "rider_foot_l").id
@@ -296,12 +299,13 @@ class Bicycling(Behaviour):
             self.desired_yaw = self.follower.heading(x, y)
             curvature = self.follower.curvature_ahead(x, y, c["curvature_preview"] * moving)
             desired_roll = lean_ahead(state["speed"], curvature, c["lean_feedforward"])
+        self.desired_yaw_rate = 0.0
         if self.planted is not None:      # once the foot is on the ground the arms turn the bars straight
             step = c["fork_straighten_rate"] * ctx.control_dt
             self.fork_command -= min(max(self.fork_command, -step), step)
         else:
             fork = fork_angle(state["roll"], state["roll_rate"], state["yaw"], state["yaw_rate"], self.desired_yaw,
-                              *steering_gains(state["speed"], c), desired_roll)
+                              *steering_gains(state["speed"], c), desired_roll, self.desired_yaw_rate)
             self.fork_command = min(max(fork, -c["max_fork_angle"]), c["max_fork_angle"])
         self._pedal(t, state, self._crank_torque(t, state))
 
@@ -314,7 +318,11 @@ class Bicycling(Behaviour):
         rate = self.params["heading_acceleration"] / max(speed, MIN_LOOKAHEAD_SPEED)
         error = math.remainder(self.heading_goal - self.desired_yaw, 2 * math.pi)
         step = rate * self.ctx.control_dt
-        self.desired_yaw = self.heading_goal if abs(error) <= step else self.desired_yaw + math.copysign(step, error)
+        if abs(error) <= step:
+            self.desired_yaw = self.heading_goal
+        else:
+            self.desired_yaw += math.copysign(step, error)
+            self.desired_yaw_rate = self.params["heading_rate_feedforward"] * math.copysign(rate, error)
 
     def _crank_torque(self, t, state) -> float:
         """Eq. 7 on the desired speed, which follows the course's command at speed_ramp. Coasting

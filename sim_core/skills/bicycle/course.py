@@ -109,17 +109,17 @@ def course_for(p: dict) -> Course:
     _check_pedalling(p, [speed for _, speed in speeds], start_speed)
     fastest = max(speed for _, speed in speeds)
     if path is None and p["heading"] != 0.0:
-        _check_heading_turn(p, fastest)
+        _check_heading_turn(p, fastest, min(*(speed for _, speed in speeds), start_speed))
     if hill:
         _check_hill(p["hill_grade"], p["gear"], p["max_hill_grade"], p["max_hill_grade_gear"])
     coast_from = p["coast_after"] if name in FREEWHEEL_COURSES else None
     return Course(name, path, speeds, start_speed, gates, p["gate_width"], hill, coast_from, name == "stop")
 
 
-def _check_heading_turn(p: dict, fastest: float) -> None:
-    """A commanded heading (no path) is turned to (behaviour._turn_to_heading) at the speeds and gears
-    where the turn was measured to settle within 5 deg without a fall (docs/bicycle.md, random
-    requests over the panel); the turn course rides turns elsewhere."""
+def _check_heading_turn(p: dict, fastest: float, slowest: float) -> None:
+    """A commanded heading (no path) is turned to (behaviour._turn_to_heading) at the speeds, gears
+    and cadences where the turn was measured to settle within 5 deg without a fall (docs/bicycle.md,
+    random requests over the panel; the heading step); the turn course rides turns elsewhere."""
     if fastest > p["max_heading_turn_speed"]:
         raise ParameterError(f"a new heading is turned to at speed <= {p['max_heading_turn_speed']:g} m/s (asked: heading "
                              f"{p['heading']:g} rad at {fastest:g} m/s); faster, the turn was measured to fall: the turn "
@@ -133,6 +133,12 @@ def _check_heading_turn(p: dict, fastest: float) -> None:
 def _check_pedalling(p: dict, speeds: list[float], start_speed: float) -> None:
     """The gear is at least the table's ``min_gear``; every speed a course commands is at least its
     ``min_speed`` and asks a cadence v / (2 pi r gear) of at most its ``max_cadence`` (the rolling
+    cadence = slowest / (2 * math.pi * WHEEL_RADIUS * p["gear"])
+    if cadence < p["min_heading_turn_cadence"]:
+        raise ParameterError(f"a new heading is turned to at a cadence v / (2 pi r gear) >= {p['min_heading_turn_cadence']:g} "
+                             f"rev/s (asked: heading {p['heading']:g} rad at {slowest:g} m/s in gear {p['gear']:g}, "
+                             f"{cadence:.2f} rev/s); slower, the pedal strokes rocked the turning bicycle over: a gear <= "
+                             f"{slowest / (2 * math.pi * WHEEL_RADIUS * p['min_heading_turn_cadence']):.2f} would do")
     start's too): all measured (docs/bicycle.md, random requests over the panel)."""
     slowest = min(speeds)
     if slowest < p["min_speed"]:

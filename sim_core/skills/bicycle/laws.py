@@ -44,13 +44,16 @@ def ankle_angle(phase: float, mean: float, swing: float, shift: float) -> float:
 
 
 def fork_angle(roll: float, roll_rate: float, yaw: float, yaw_rate: float, desired_yaw: float,
-               k_roll: float, k_roll_rate: float, k_yaw: float, k_yaw_rate: float, desired_roll: float = 0.0) -> float:
-    """Eq. 11: ``theta_fork = -k_a (a - a_d) - k_ad a' + k_b (b - b_d) + k_bd b'`` (the seed's
-    a_d = 0; ``desired_roll`` is a lean asked for ahead of a curve, lean_ahead).
+               k_roll: float, k_roll_rate: float, k_yaw: float, k_yaw_rate: float, desired_roll: float = 0.0,
+               desired_yaw_rate: float = 0.0) -> float:
+    """Eq. 11: ``theta_fork = -k_a (a - a_d) - k_ad a' + k_b (b - b_d) + k_bd (b' - b'_d)`` (the seed's
+    a_d = 0 and b'_d = 0; ``desired_roll`` is a lean asked for ahead of a curve, lean_ahead;
+    ``desired_yaw_rate`` the rate at which the desired heading is turning: without it the yaw-rate
+    term holds the heading k_bd b'_d / k_b behind a turning desired heading).
     A right lean steers right (into the fall); a heading left of the desired one first steers
     left, which leans the bicycle right, and the roll term then turns it right: counter-steer."""
     heading_error = math.remainder(yaw - desired_yaw, 2 * math.pi)
-    return -k_roll * (roll - desired_roll) - k_roll_rate * roll_rate + k_yaw * heading_error + k_yaw_rate * yaw_rate
+    return -k_roll * (roll - desired_roll) - k_roll_rate * roll_rate + k_yaw * heading_error + k_yaw_rate * (yaw_rate - desired_yaw_rate)
 
 
 def lean_ahead(speed: float, curvature: float, share: float) -> float:
