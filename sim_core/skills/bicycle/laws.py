@@ -8,10 +8,18 @@ import math
 from ...ballistics import GRAVITY
 
 
-def crank_torque(speed: float, desired_speed: float, gain: float, limit: float) -> float:
+def crank_torque(speed: float, desired_speed: float, gain: float, limit: float, feedforward: float = 0.0) -> float:
     """Eq. 7 with the sign fix: ``tau = k_v (v_d - v)``, k_v > 0; positive drives forward; held
-    within +-``limit`` (the seed gives none: unlimited, a 2.4 m/s error asks 1.2 kN m of the legs)."""
-    return min(max(gain * (desired_speed - speed), -limit), limit)
+    within +-``limit`` (the seed gives none: unlimited, a 2.4 m/s error asks 1.2 kN m of the legs).
+    ``feedforward`` (N m, slope_torque's) is added before the limit."""
+    return min(max(gain * (desired_speed - speed) + feedforward, -limit), limit)
+
+
+def slope_torque(mass: float, slope_sine: float, wheel_radius: float, gear: float, share: float) -> float:
+    """The crank torque (N m) that holds ``mass`` (rider and bicycle, kg) against gravity on a slope
+    whose sine along the frame is ``slope_sine`` (uphill positive), through a wheel of
+    ``wheel_radius`` in ``gear`` (wheel turns per crank turn), times ``share``: share m g sin r / gear."""
+    return share * mass * GRAVITY * slope_sine * wheel_radius / gear
 
 
 def leg_weight(phase: float) -> float:
