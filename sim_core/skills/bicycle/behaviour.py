@@ -73,6 +73,7 @@ BICYCLE_RANGES = Schema(
     Parameter("yaw_rate_gain", "s", 0.0, 0.0, 5.0, "eq. 11 k_beta-dot at reference_speed"),
     Parameter("heading_acceleration", "m/s^2", 0.1, 0.1, 10.0, "a commanded heading (no path) is approached as a turn asking this lateral acceleration: the desired heading turns at this / v rad/s"),
     Parameter("heading_rate_feedforward", "1", 0.0, 0.0, 1.0, "share of the desired heading's turning rate (to a commanded heading) eq. 11's yaw-rate term damps the yaw rate relative to (0: the seed's, relative to 0; without it the heading lags the turn by k_bd/k_b times its rate)"),
+    Parameter("heading_rate_filter", "s", 0.0, 0.0, 2.0, "time constant of the low-pass on that turning rate before eq. 11 uses it (0: unfiltered)"),
     Parameter("max_heading_turn_speed", "m/s", 0.5, 0.5, 10.0, "a commanded heading other than the start's (no path) is offered up to this speed (faster, the turn to it fell or leaned past 20 deg; course.py refuses it)"),
     Parameter("min_heading_turn_gear", "1", 0.5, 0.5, 5.0, "a commanded heading other than the start's (no path) is offered from this gear (in lower gears the heading was left 5-10 deg off or the bicycle weaved; course.py refuses it)"),
     Parameter("min_heading_turn_cadence", "1/s", 0.0, 0.0, 5.0, "a commanded heading other than the start's (no path) is offered from this cadence v / (2 pi r gear), in revolutions per second (slower, the turn fell; course.py refuses it)"),
@@ -263,7 +264,8 @@ class Bicycling(Behaviour):
         self.previous_ik = None
         self.ik_velocity = np.zeros(len(self.limb_servos))
         self.fork_command = 0.0
-        self.desired_yaw_rate = 0.0          # rad/s: the rate the desired heading turns at (eq. 11's yaw-rate term)
+        self.desired_yaw_rate = 0.0          # rad/s: the rate the desired heading turns at
+        self.yaw_rate_feedforward = 0.0      # rad/s: its low-pass, eq. 11's yaw-rate term is relative to
         self.desired_speed = self.course.start_speed
         self.jac = np.zeros((3, model.nv))
         rider_root = model.jnt_bodyid[model.joint(ctx.actor.prefix + "root").id]
@@ -302,6 +304,10 @@ class Bicycling(Behaviour):
         self.desired_yaw_rate = 0.0
         if self.follower is None and self.desired_yaw != self.heading_goal:
             self._turn_to_heading(state["speed"])
+        # eq. 11's yaw rate is damped relative to the desired heading's rate, low-passed: a short turn's step
+        # of it (0.03 rad at 4.42 m/s: 0.45 rad/s for 66 ms) set off a weave of 20 deg (docs/bicycle.md)
+        blend = ctx.control_dt / (c["heading_rate_filter"] + ctx.control_dt)
+        self.yaw_rate_feedforward += blend * (self.desired_yaw_rate - self.yaw_rate_feedforward)
         if self.follower is not None:      # pure pursuit: head for the point lookahead_time ahead
             x, y = data.qpos[bike.free_qpos], data.qpos[bike.free_qpos + 1]
             moving = max(state["speed"], MIN_LOOKAHEAD_SPEED)
@@ -314,7 +320,7 @@ class Bicycling(Behaviour):
             self.fork_command -= min(max(self.fork_command, -step), step)
         else:
             fork = fork_angle(state["roll"], state["roll_rate"], state["yaw"], state["yaw_rate"], self.desired_yaw,
-                              *steering_gains(state["speed"], c), desired_roll, self.desired_yaw_rate)
+                              *steering_gains(state["speed"], c), desired_roll, self.yaw_rate_feedforward)
             self.fork_command = min(max(fork, -c["max_fork_angle"]), c["max_fork_angle"])
         self._pedal(t, state, self._crank_torque(t, state))
 

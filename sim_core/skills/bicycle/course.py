@@ -166,8 +166,8 @@ def _check_hill(p: dict, speeds: list[float]) -> None:
     """Hills up to the table's ``max_hill_grade`` with hill_grade x gear (the climb's crank torque goes
     with it: m g grade r gear) up to its ``max_hill_grade_gear``; steeper ones, up to ``steep_hill_grade``,
     only in gears ``steep_hill_min_gear``-``steep_hill_max_gear`` at speeds ``steep_hill_min_speed``-
-    ``steep_hill_max_speed`` after at least ``steep_hill_min_lead`` m of flat: where the speed was measured to hold within 15 % up and down
-    (docs/bicycle.md, hills)."""
+    ``steep_hill_max_speed`` after at least ``steep_hill_min_lead`` m of flat: where the speed was measured
+    to hold within 15 % up and down (docs/bicycle.md, hills)."""
     grade, gear = p["hill_grade"], p["gear"]
     if grade > p["steep_hill_grade"]:
         raise ParameterError(f"the hill is ridden up to hill_grade {p['steep_hill_grade']:g} (asked: {grade:g}): steeper "
@@ -175,15 +175,13 @@ def _check_hill(p: dict, speeds: list[float]) -> None:
     if grade > p["max_hill_grade"]:
         low, high = p["steep_hill_min_gear"], p["steep_hill_max_gear"]
         slow, fast = p["steep_hill_min_speed"], p["steep_hill_max_speed"]
-        if p["hill_after"] < p["steep_hill_min_lead"]:
-            raise ParameterError(f"a hill steeper than hill_grade {p['max_hill_grade']:g} (asked: {grade:g}) is ridden with "
-                                 f"hill_after >= {p['steep_hill_min_lead']:g} m (asked: {p['hill_after']:g} m): a climb begun "
-                                 f"while the rolling start settles was measured to lose more than 15 % of the speed")
-        if not low <= gear <= high or not all(slow <= v <= fast for v in speeds):
+        lead = p["steep_hill_min_lead"]
+        if not low <= gear <= high or not all(slow <= v <= fast for v in speeds) or p["hill_after"] < lead:
             raise ParameterError(f"a hill steeper than hill_grade {p['max_hill_grade']:g} (asked: {grade:g}) is ridden in gear "
-                                 f"{low:g}-{high:g} at speed {slow:g}-{fast:g} m/s (asked: gear {gear:g} at "
-                                 f"{', '.join(f'{v:g}' for v in speeds)} m/s); elsewhere the climb was measured to lose "
-                                 f"more than 15 % of the speed or to fall (docs/bicycle.md, hills)")
+                                 f"{low:g}-{high:g} at speed {slow:g}-{fast:g} m/s after hill_after >= {lead:g} m of flat "
+                                 f"(asked: gear {gear:g} at {', '.join(f'{v:g}' for v in speeds)} m/s after {p['hill_after']:g} m); "
+                                 f"elsewhere the climb was measured to lose more than 15 % of the speed or to fall, and a climb "
+                                 f"begun while the rolling start settles lost 16 % (docs/bicycle.md, hills)")
         return
     most = p["max_hill_grade_gear"]
     if grade * gear > most:
