@@ -57,6 +57,12 @@ def test_speed_steps_and_slow_start():
     ({"course": "slalom", "speed": 4.0, "gate_spacing": 20.0, "gate_offset": 1.5}, "gate_offset <= 1.00 m"),
     ({"course": "slalom", "speed": 4.0, "gate_width": 1.0}, "gate_width >= 1.5 m"),
     ({"course": "hill", "hill_grade": 0.5}, "hill_grade=0.5"),
+    ({"speed": 3.0, "gear": 4.0, "heading": 1.0}, "cadence v / (2 pi r gear) >= 0.5 rev/s"),
+    ({"course": "hill", "hill_grade": 0.12}, "ridden up to hill_grade 0.1 "),
+    ({"course": "hill", "hill_grade": 0.1, "gear": 2.6}, "is ridden in gear 1.9-2 at speed 4-6 m/s"),
+    ({"course": "hill", "hill_grade": 0.1, "gear": 2.0, "speed": 3.0}, "is ridden in gear 1.9-2 at speed 4-6 m/s"),
+    ({"course": "hill", "hill_grade": 0.1, "gear": 2.0, "hill_after": 4.0}, "hill_after >= 10 m"),
+    ({"course": "hill", "hill_grade": 0.05, "gear": 4.0}, "hill_grade x gear <= 0.16"),
     ({"course": "roundabout"}, "course"),
     ({"path": [[0, 0], [0.01, 0]]}, "degenerate"),
     ({"speed": 4.0, "path": [[0, 0], [10, 0], [10, 10]]}, "radius of 2.48 m (from path, 9.9 m along it)"),
@@ -105,6 +111,16 @@ def test_a_random_speed_rides_straight_without_a_fall():
 
 
 @pytest.mark.slow
+@pytest.mark.parametrize("speed", [3.0, 5.5])
+def test_a_30_deg_heading_step_settles_with_margin_at_the_ends_of_the_speeds_offered(speed):
+    """The +30 deg step at the slowest and fastest speed a new heading is offered at: counter-steer
+    (the fork first turns right), within 5 deg well inside TARGETS.md's 3 s (1.7 and 2.4 s measured)."""
+    m = ride(6.0, speed=speed, heading=math.radians(30.0)).meta["metrics"]
+    assert not m["fell"] and m["first_fork_motion"] == -1.0
+    assert m["heading_within_5deg_from"] is not None and m["heading_within_5deg_from"] <= 2.6
+
+
+@pytest.mark.slow
 def test_speed_steps_3_5_4_are_tracked():
     """B6: mean |v - v_d| over the last 5 s of each step < 10 % of v_d."""
     m = ride(45.0, course="speed_steps", speed=3.0, second_speed=5.0, third_speed=4.0, step_time=15.0).meta["metrics"]
@@ -121,6 +137,15 @@ def test_hill_5_percent_up_and_down_at_4_m_s_and_a_lower_gear_pedals_faster():
         assert m["hill_climb_worst_error"] < 0.15 and m["hill_descent_worst_error"] < 0.15
         assert m["hill_climb_cadence_hz"] == pytest.approx(m["hill_climb_cadence_expected_hz"], rel=0.05)
     assert rides[2.0]["hill_climb_cadence_hz"] > rides[2.6]["hill_climb_cadence_hz"]
+
+
+@pytest.mark.slow
+def test_hill_10_percent_up_and_down_at_4_m_s_in_gear_2():
+    """Issue 30: a 10 % hill (offered in gears 1.9-2.0 at 4-6 m/s): speed within 15 % on the climb and the
+    descent, no fall (13.8 % and 5.6 % measured: the climb's worst is the front wheel leaving the sharp crest)."""
+    m = ride(27.0, course="hill", hill_grade=0.1, gear=2.0).meta["metrics"]
+    assert not m["fell"]
+    assert m["hill_climb_worst_error"] < 0.15 and m["hill_descent_worst_error"] < 0.15
 
 
 @pytest.mark.slow

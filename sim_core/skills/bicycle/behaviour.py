@@ -43,7 +43,7 @@ from ...world.bicycle import BRAKE_MAX_TORQUE, WHEEL_RADIUS, CRANK_LENGTH, DEFAU
 from .assess import STOPPED_SPEED
 from .course import COURSE, FREEWHEEL_COURSES, course_for
 from .steering import steering_gains
-from .laws import ankle_angle, crank_torque, fork_angle, lean_ahead, pedal_forces
+from .laws import ankle_angle, crank_torque, fork_angle, lean_ahead, pedal_forces, slope_torque
 from .mount import IK_ITERATIONS_PER_TICK, SitePairs, match_velocities, solve
 
 FOOT_IK_ITERATIONS = 5              # definition: damped least-squares steps a tick for the foot going down
@@ -64,6 +64,7 @@ ARM_JOINTS = {"r": ("shoulder_r_x", "shoulder_r_y", "shoulder_r_z", "elbow_r_y",
 BICYCLE_RANGES = Schema(
     Parameter("speed_gain", "N m s/m", 0.0, 0.0, 5000.0, "eq. 7 k_v: crank torque per m/s of speed error"),
     Parameter("max_crank_torque", "N m", 0.0, 0.0, 1000.0, "limit of eq. 7's crank torque, driving or braking (a rider's strength)"),
+    Parameter("slope_feedforward", "1", 0.0, 0.0, 2.0, "share of the crank torque that holds rider and bicycle on the slope the frame is on (m g sin r / gear) added to eq. 7 (0: the seed's eq. 7)"),
     Parameter("ik_velocity_filter", "s", 0.0, 0.0, 0.5, "time constant of the low-pass on the limb targets' velocity that leads the servos (0: unfiltered)"),
     Parameter("speed_ramp", "m/s^2", 0.1, 0.1, 10.0, "eq. 7's desired speed moves to a newly commanded one at this rate (a start, a speed step)"),
     Parameter("roll_gain", "1", 0.0, 0.0, 20.0, "eq. 11 k_alpha at reference_speed"),
@@ -71,8 +72,11 @@ BICYCLE_RANGES = Schema(
     Parameter("yaw_gain", "1", 0.0, 0.0, 10.0, "eq. 11 k_beta at reference_speed"),
     Parameter("yaw_rate_gain", "s", 0.0, 0.0, 5.0, "eq. 11 k_beta-dot at reference_speed"),
     Parameter("heading_acceleration", "m/s^2", 0.1, 0.1, 10.0, "a commanded heading (no path) is approached as a turn asking this lateral acceleration: the desired heading turns at this / v rad/s"),
+    Parameter("heading_rate_feedforward", "1", 0.0, 0.0, 1.0, "share of the desired heading's turning rate (to a commanded heading) eq. 11's yaw-rate term damps the yaw rate relative to (0: the seed's, relative to 0; without it the heading lags the turn by k_bd/k_b times its rate)"),
+    Parameter("heading_rate_filter", "s", 0.0, 0.0, 2.0, "time constant of the low-pass on that turning rate before eq. 11 uses it (0: unfiltered)"),
     Parameter("max_heading_turn_speed", "m/s", 0.5, 0.5, 10.0, "a commanded heading other than the start's (no path) is offered up to this speed (faster, the turn to it fell or leaned past 20 deg; course.py refuses it)"),
     Parameter("min_heading_turn_gear", "1", 0.5, 0.5, 5.0, "a commanded heading other than the start's (no path) is offered from this gear (in lower gears the heading was left 5-10 deg off or the bicycle weaved; course.py refuses it)"),
+    Parameter("min_heading_turn_cadence", "1/s", 0.0, 0.0, 5.0, "a commanded heading other than the start's (no path) is offered from this cadence v / (2 pi r gear), in revolutions per second (slower, the turn fell; course.py refuses it)"),
     Parameter("lean_feedforward", "1", 0.0, 0.0, 1.0, "share of a steady turn's lean (tan = v^2 kappa / g) asked for ahead of a path's curve (0: the seed's eq. 11)"),
     Parameter("curvature_preview", "s", 0.0, 0.0, 3.0, "the path's curvature is read this many seconds of travel ahead"),
     Parameter("reference_speed", "m/s", 0.5, 0.5, 10.0, "speed at which the four steering gains are these (steering.py scales them with speed)"),
@@ -80,8 +84,14 @@ BICYCLE_RANGES = Schema(
     Parameter("min_speed", "m/s", 0.5, 0.5, 8.0, "the slowest speed a course may command (slower rides were measured to fall; course.py refuses them)"),
     Parameter("max_cadence", "1/s", 0.5, 0.5, 10.0, "the fastest cadence v / (2 pi r gear), in revolutions per second, a course may ask (faster, the legs do not turn the crank at the wheel's pace; course.py refuses it)"),
     Parameter("min_gear", "1", 0.5, 0.5, 5.0, "the lowest gear offered (lower, the legs lost more than 5 % of the speed at 1.9-2.4 rev/s; course.py refuses it)"),
-    Parameter("max_hill_grade", "1", 0.0, 0.0, 0.2, "the steepest hill_grade offered (steeper hills fell, a toe on the road, or lost more than 15 % of the speed; course.py refuses them)"),
+    Parameter("max_hill_grade", "1", 0.0, 0.0, 0.2, "the steepest hill_grade offered in any gear (up to max_hill_grade_gear); steeper, up to steep_hill_grade, in the steep_hill_ gears and speeds only (course.py refuses the rest)"),
     Parameter("max_hill_grade_gear", "1", 0.0, 0.0, 1.0, "the largest hill_grade x gear a hill may ask (the climb's crank torque goes with it; steeper or higher-geared climbs lost more than 15 % of the speed; course.py refuses them)"),
+    Parameter("steep_hill_grade", "1", 0.0, 0.0, 0.2, "the steepest hill_grade offered; above max_hill_grade only in the steep_hill_ gears and speeds (course.py refuses the rest)"),
+    Parameter("steep_hill_min_gear", "1", 0.5, 0.5, 5.0, "a hill steeper than max_hill_grade is offered from this gear"),
+    Parameter("steep_hill_max_gear", "1", 0.5, 0.5, 5.0, "and up to this gear"),
+    Parameter("steep_hill_min_speed", "m/s", 0.5, 0.5, 8.0, "and from this speed"),
+    Parameter("steep_hill_max_speed", "m/s", 0.5, 0.5, 8.0, "and up to this speed"),
+    Parameter("steep_hill_min_lead", "m", 0.0, 0.0, 200.0, "and after at least this much flat (hill_after) before the climb"),
     Parameter("coast_min_speed", "m/s", 0.5, 0.5, 8.0, "coast course: below this speed the rider brakes to a stop (steering needs speed)"),
     Parameter("crank_level_rate", "rad/s", 0.1, 0.1, 20.0, "coasting: the legs turn the crank to level (pedals horizontal) at most this fast"),
     Parameter("brake_deceleration", "m/s^2", 0.1, 0.1, 5.0, "stop: eq. 7's desired speed falls to 0 at this rate; its braking torque goes to the rim brakes"),
@@ -254,8 +264,12 @@ class Bicycling(Behaviour):
         self.previous_ik = None
         self.ik_velocity = np.zeros(len(self.limb_servos))
         self.fork_command = 0.0
+        self.desired_yaw_rate = 0.0          # rad/s: the rate the desired heading turns at
+        self.yaw_rate_feedforward = 0.0      # rad/s: its low-pass, eq. 11's yaw-rate term is relative to
         self.desired_speed = self.course.start_speed
         self.jac = np.zeros((3, model.nv))
+        rider_root = model.jnt_bodyid[model.joint(ctx.actor.prefix + "root").id]
+        self.mass = float(model.body_subtreemass[rider_root] + model.body_subtreemass[self.bike.frame])   # kg, rider and bicycle
         self.crank_command = None            # coasting: the crank angle the legs hold (None: the pedals as they are)
         self.coasting = self.coasted = False
         self.stopping = self.course.stop        # braking to a stop (the stop course; a coast that got too slow)
@@ -287,8 +301,13 @@ class Bicycling(Behaviour):
         state = bike.state(data)
         c = self.params
         desired_roll = -c["stop_lean"] if self.coasting and self.stopping else 0.0
+        self.desired_yaw_rate = 0.0
         if self.follower is None and self.desired_yaw != self.heading_goal:
             self._turn_to_heading(state["speed"])
+        # eq. 11's yaw rate is damped relative to the desired heading's rate, low-passed: a short turn's step
+        # of it (0.03 rad at 4.42 m/s: 0.45 rad/s for 66 ms) set off a weave of 20 deg (docs/bicycle.md)
+        blend = ctx.control_dt / (c["heading_rate_filter"] + ctx.control_dt)
+        self.yaw_rate_feedforward += blend * (self.desired_yaw_rate - self.yaw_rate_feedforward)
         if self.follower is not None:      # pure pursuit: head for the point lookahead_time ahead
             x, y = data.qpos[bike.free_qpos], data.qpos[bike.free_qpos + 1]
             moving = max(state["speed"], MIN_LOOKAHEAD_SPEED)
@@ -301,7 +320,7 @@ class Bicycling(Behaviour):
             self.fork_command -= min(max(self.fork_command, -step), step)
         else:
             fork = fork_angle(state["roll"], state["roll_rate"], state["yaw"], state["yaw_rate"], self.desired_yaw,
-                              *steering_gains(state["speed"], c), desired_roll)
+                              *steering_gains(state["speed"], c), desired_roll, self.yaw_rate_feedforward)
             self.fork_command = min(max(fork, -c["max_fork_angle"]), c["max_fork_angle"])
         self._pedal(t, state, self._crank_torque(t, state))
 
@@ -314,7 +333,11 @@ class Bicycling(Behaviour):
         rate = self.params["heading_acceleration"] / max(speed, MIN_LOOKAHEAD_SPEED)
         error = math.remainder(self.heading_goal - self.desired_yaw, 2 * math.pi)
         step = rate * self.ctx.control_dt
-        self.desired_yaw = self.heading_goal if abs(error) <= step else self.desired_yaw + math.copysign(step, error)
+        if abs(error) <= step:
+            self.desired_yaw = self.heading_goal
+        else:
+            self.desired_yaw += math.copysign(step, error)
+            self.desired_yaw_rate = self.params["heading_rate_feedforward"] * math.copysign(rate, error)
 
     def _crank_torque(self, t, state) -> float:
         """Eq. 7 on the desired speed, which follows the course's command at speed_ramp. Coasting
@@ -334,7 +357,9 @@ class Bicycling(Behaviour):
         if not self.coasting:
             step = c["speed_ramp"] * dt
             self.desired_speed += min(max(course.speed_at(t) - self.desired_speed, -step), step)
-            return crank_torque(state["speed"], self.desired_speed, c["speed_gain"], c["max_crank_torque"])
+            slope = float(self.ctx.data.xmat[self.bike.frame].reshape(3, 3)[2, 0])   # the frame's forward axis: its rise
+            uphill = slope_torque(self.mass, slope, WHEEL_RADIUS, c["gear"], c["slope_feedforward"])
+            return crank_torque(state["speed"], self.desired_speed, c["speed_gain"], c["max_crank_torque"], uphill)
         level = math.pi / 2 + math.pi * math.ceil((self.crank_command - math.pi / 2) / math.pi)   # the next level crank
         self.crank_command = min(self.crank_command + c["crank_level_rate"] * dt, level)
         if self.stopping:

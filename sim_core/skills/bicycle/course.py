@@ -8,7 +8,8 @@ Courses (the ``course`` parameter; a ``path`` given replaces the course's path):
     right of the start line (the first to the left), ridden along a sine through their centres;
   * speed_steps: ``speed`` until ``step_time``, ``second_speed`` until twice it, then ``third_speed``;
   * hill: ``hill_after`` m of flat, a climb of ``hill_length`` m at ``hill_grade``, ``hill_top`` m
-    of flat top and a descent like the climb (the hill is a world prop, sim_core.world.hill);
+    of flat top and a descent like the climb (the hill is a world prop, sim_core.world.hill), ridden
+    along its centre line (a straight path);
   * start: the rolling start is at ``start_speed``; the rider pedals up to ``speed``;
   * coast: a freewheel bicycle; from ``coast_after`` s the rider stops pedalling and holds the cranks
     level, steering on, until the speed falls to the table's ``coast_min_speed``, then stops as below;
@@ -18,7 +19,8 @@ Courses (the ``course`` parameter; a ``path`` given replaces the course's path):
 A course that asks the bicycle to turn harder than ``MAX_LEAN`` of lean at its speed is refused
 before anything runs, naming the limit; so is a request outside the limits measured by the random
 audit of the panel (the table's min_speed, min_gear, max_cadence, max_hill_grade,
-max_hill_grade_gear, and a new heading's max_heading_turn_speed and min_heading_turn_gear).
+max_hill_grade_gear and the steep_hill_ limits, and a new heading's max_heading_turn_speed,
+min_heading_turn_gear and min_heading_turn_cadence).
 """
 from __future__ import annotations
 
@@ -91,6 +93,9 @@ def course_for(p: dict) -> Course:
         speeds = ((0.0, p["speed"]), (p["step_time"], p["second_speed"]), (2 * p["step_time"], p["third_speed"]))
     elif name == "hill":
         hill = (p["hill_after"], p["hill_grade"], p["hill_length"], p["hill_top"], p["hill_length"])
+        # ridden along the hill's centre line: held to a heading alone, low gears left it 5-10 deg off
+        # and the rider ran off the side of the 8 m wide hill (docs/bicycle.md, hills)
+        path = validate_path([[0.0, 0.0], [p["hill_after"] + 2 * p["hill_length"] + p["hill_top"] + RUN_OUT, 0.0]])
         if p["heading"] != 0.0:
             raise ParameterError(f"the hill lies across the start's heading ({HILL_WIDTH:g} m wide): the hill course is "
                                  f"ridden with heading 0 (asked: {p['heading']:g} rad)")
@@ -109,17 +114,17 @@ def course_for(p: dict) -> Course:
     _check_pedalling(p, [speed for _, speed in speeds], start_speed)
     fastest = max(speed for _, speed in speeds)
     if path is None and p["heading"] != 0.0:
-        _check_heading_turn(p, fastest)
+        _check_heading_turn(p, fastest, min(*(speed for _, speed in speeds), start_speed))
     if hill:
-        _check_hill(p["hill_grade"], p["gear"], p["max_hill_grade"], p["max_hill_grade_gear"])
+        _check_hill(p, [speed for _, speed in speeds])
     coast_from = p["coast_after"] if name in FREEWHEEL_COURSES else None
     return Course(name, path, speeds, start_speed, gates, p["gate_width"], hill, coast_from, name == "stop")
 
 
-def _check_heading_turn(p: dict, fastest: float) -> None:
-    """A commanded heading (no path) is turned to (behaviour._turn_to_heading) at the speeds and gears
-    where the turn was measured to settle within 5 deg without a fall (docs/bicycle.md, random
-    requests over the panel); the turn course rides turns elsewhere."""
+def _check_heading_turn(p: dict, fastest: float, slowest: float) -> None:
+    """A commanded heading (no path) is turned to (behaviour._turn_to_heading) at the speeds, gears
+    and cadences where the turn was measured to settle within 5 deg without a fall (docs/bicycle.md,
+    random requests over the panel; the heading step); the turn course rides turns elsewhere."""
     if fastest > p["max_heading_turn_speed"]:
         raise ParameterError(f"a new heading is turned to at speed <= {p['max_heading_turn_speed']:g} m/s (asked: heading "
                              f"{p['heading']:g} rad at {fastest:g} m/s); faster, the turn was measured to fall: the turn "
@@ -128,6 +133,12 @@ def _check_heading_turn(p: dict, fastest: float) -> None:
         raise ParameterError(f"a new heading is turned to at gear >= {p['min_heading_turn_gear']:g} (asked: heading "
                              f"{p['heading']:g} rad at gear {p['gear']:g}); in lower gears the heading was measured to stay "
                              f"5-10 deg off or to weave: the turn course rides a turn in any gear offered")
+    cadence = slowest / (2 * math.pi * WHEEL_RADIUS * p["gear"])
+    if cadence < p["min_heading_turn_cadence"]:
+        raise ParameterError(f"a new heading is turned to at a cadence v / (2 pi r gear) >= {p['min_heading_turn_cadence']:g} "
+                             f"rev/s (asked: heading {p['heading']:g} rad at {slowest:g} m/s in gear {p['gear']:g}, "
+                             f"{cadence:.2f} rev/s); slower, the pedal strokes rocked the turning bicycle over: a gear <= "
+                             f"{slowest / (2 * math.pi * WHEEL_RADIUS * p['min_heading_turn_cadence']):.2f} would do")
 
 
 def _check_pedalling(p: dict, speeds: list[float], start_speed: float) -> None:
@@ -151,13 +162,28 @@ def _check_pedalling(p: dict, speeds: list[float], start_speed: float) -> None:
                              f"{2 * math.pi * WHEEL_RADIUS * p['gear'] * p['max_cadence']:.2f} m/s would do")
 
 
-def _check_hill(grade: float, gear: float, steepest: float, most: float) -> None:
-    """Hills up to the table's ``max_hill_grade`` (steeper ones fell or lost the speed), and since the
-    climb's crank torque goes as hill_grade x gear (m g grade r gear), up to its ``max_hill_grade_gear``,
-    measured to hold the speed within 15 % up and down (docs/bicycle.md, random requests over the panel)."""
-    if grade > steepest:
-        raise ParameterError(f"the hill is ridden up to hill_grade {steepest:g} (asked: {grade:g}): steeper hills were "
-                             f"measured to fall or to lose more than 15 % of the speed (docs/bicycle.md, random requests over the panel)")
+def _check_hill(p: dict, speeds: list[float]) -> None:
+    """Hills up to the table's ``max_hill_grade`` with hill_grade x gear (the climb's crank torque goes
+    with it: m g grade r gear) up to its ``max_hill_grade_gear``; steeper ones, up to ``steep_hill_grade``,
+    only in gears ``steep_hill_min_gear``-``steep_hill_max_gear`` at speeds ``steep_hill_min_speed``-
+    ``steep_hill_max_speed`` after at least ``steep_hill_min_lead`` m of flat: where the speed was measured
+    to hold within 15 % up and down (docs/bicycle.md, hills)."""
+    grade, gear = p["hill_grade"], p["gear"]
+    if grade > p["steep_hill_grade"]:
+        raise ParameterError(f"the hill is ridden up to hill_grade {p['steep_hill_grade']:g} (asked: {grade:g}): steeper "
+                             f"hills were measured to fall or to lose more than 15 % of the speed (docs/bicycle.md, hills)")
+    if grade > p["max_hill_grade"]:
+        low, high = p["steep_hill_min_gear"], p["steep_hill_max_gear"]
+        slow, fast = p["steep_hill_min_speed"], p["steep_hill_max_speed"]
+        lead = p["steep_hill_min_lead"]
+        if not low <= gear <= high or not all(slow <= v <= fast for v in speeds) or p["hill_after"] < lead:
+            raise ParameterError(f"a hill steeper than hill_grade {p['max_hill_grade']:g} (asked: {grade:g}) is ridden in gear "
+                                 f"{low:g}-{high:g} at speed {slow:g}-{fast:g} m/s after hill_after >= {lead:g} m of flat "
+                                 f"(asked: gear {gear:g} at {', '.join(f'{v:g}' for v in speeds)} m/s after {p['hill_after']:g} m); "
+                                 f"elsewhere the climb was measured to lose more than 15 % of the speed or to fall, and a climb "
+                                 f"begun while the rolling start settles lost 16 % (docs/bicycle.md, hills)")
+        return
+    most = p["max_hill_grade_gear"]
     if grade * gear > most:
         raise ParameterError(f"the hill is ridden with hill_grade x gear <= {most:g} (asked: {grade:g} x {gear:g} = "
                              f"{grade * gear:.3f}); above it the climb was measured to lose more than 15 % of the speed: "

@@ -8,10 +8,18 @@ import math
 from ...ballistics import GRAVITY
 
 
-def crank_torque(speed: float, desired_speed: float, gain: float, limit: float) -> float:
+def crank_torque(speed: float, desired_speed: float, gain: float, limit: float, feedforward: float = 0.0) -> float:
     """Eq. 7 with the sign fix: ``tau = k_v (v_d - v)``, k_v > 0; positive drives forward; held
-    within +-``limit`` (the seed gives none: unlimited, a 2.4 m/s error asks 1.2 kN m of the legs)."""
-    return min(max(gain * (desired_speed - speed), -limit), limit)
+    within +-``limit`` (the seed gives none: unlimited, a 2.4 m/s error asks 1.2 kN m of the legs).
+    ``feedforward`` (N m, slope_torque's) is added before the limit."""
+    return min(max(gain * (desired_speed - speed) + feedforward, -limit), limit)
+
+
+def slope_torque(mass: float, slope_sine: float, wheel_radius: float, gear: float, share: float) -> float:
+    """The crank torque (N m) that holds ``mass`` (rider and bicycle, kg) against gravity on a slope
+    whose sine along the frame is ``slope_sine`` (uphill positive), through a wheel of
+    ``wheel_radius`` in ``gear`` (wheel turns per crank turn), times ``share``: share m g sin r / gear."""
+    return share * mass * GRAVITY * slope_sine * wheel_radius / gear
 
 
 def leg_weight(phase: float) -> float:
@@ -44,13 +52,16 @@ def ankle_angle(phase: float, mean: float, swing: float, shift: float) -> float:
 
 
 def fork_angle(roll: float, roll_rate: float, yaw: float, yaw_rate: float, desired_yaw: float,
-               k_roll: float, k_roll_rate: float, k_yaw: float, k_yaw_rate: float, desired_roll: float = 0.0) -> float:
-    """Eq. 11: ``theta_fork = -k_a (a - a_d) - k_ad a' + k_b (b - b_d) + k_bd b'`` (the seed's
-    a_d = 0; ``desired_roll`` is a lean asked for ahead of a curve, lean_ahead).
+               k_roll: float, k_roll_rate: float, k_yaw: float, k_yaw_rate: float, desired_roll: float = 0.0,
+               desired_yaw_rate: float = 0.0) -> float:
+    """Eq. 11: ``theta_fork = -k_a (a - a_d) - k_ad a' + k_b (b - b_d) + k_bd (b' - b'_d)`` (the seed's
+    a_d = 0 and b'_d = 0; ``desired_roll`` is a lean asked for ahead of a curve, lean_ahead;
+    ``desired_yaw_rate`` the rate at which the desired heading is turning: without it the yaw-rate
+    term holds the heading k_bd b'_d / k_b behind a turning desired heading).
     A right lean steers right (into the fall); a heading left of the desired one first steers
     left, which leans the bicycle right, and the roll term then turns it right: counter-steer."""
     heading_error = math.remainder(yaw - desired_yaw, 2 * math.pi)
-    return -k_roll * (roll - desired_roll) - k_roll_rate * roll_rate + k_yaw * heading_error + k_yaw_rate * yaw_rate
+    return -k_roll * (roll - desired_roll) - k_roll_rate * roll_rate + k_yaw * heading_error + k_yaw_rate * (yaw_rate - desired_yaw_rate)
 
 
 def lean_ahead(speed: float, curvature: float, share: float) -> float:

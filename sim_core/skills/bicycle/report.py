@@ -5,8 +5,8 @@
 * rides at 3, 4 and 5 m/s and a +30 deg heading step (metrics of ``assess``);
 * the courses (``--courses``): a turn, the slalom at speeds drawn at random (``--seed``) with the
   gates spaced for the same time between gates, speed steps 3 -> 5 -> 4 m/s, the hill at 5 %
-  (gears 2.6 and 2.0; steeper hills are refused), a start from a slow roll, a coast from 4 m/s (its decay fitted,
-  ending in a stop) and stops from speeds drawn at random (``--stops``; ``--stand`` S: each asked to
+  (gears 2.6 and 2.0) and at 10 % (gear 2.0, the steep hills' gear), a start from a slow roll, a
+  coast from 4 m/s (its decay fitted, ending in a stop) and stops from speeds drawn at random (``--stops``; ``--stand`` S: each asked to
   stand S s after rest), run in ``--workers`` processes;
 * speed: simulated seconds per wall-clock second of a ride beside raw ``mj_step`` of the same
   model with the controls held;
@@ -97,6 +97,7 @@ COURSE_RIDES = {      # name: (parameters, seconds)
     "speed_steps_3_5_4": ({"course": "speed_steps", "speed": 3.0, "second_speed": 5.0, "third_speed": 4.0}, 45.0),
     "hill_5pct_gear_2.6": ({"course": "hill", "hill_grade": 0.05}, 28.0),
     "hill_5pct_gear_2.0": ({"course": "hill", "hill_grade": 0.05, "gear": 2.0}, 28.0),
+    "hill_10pct_gear_2.0": ({"course": "hill", "hill_grade": 0.1, "gear": 2.0}, 28.0),
     "start_from_1.5ms": ({"course": "start", "start_speed": 1.5}, 12.0),
     "coast_from_4ms": ({"course": "coast", "speed": 4.0}, 32.0),     # coasts to coast_min_speed, then stops
 }
