@@ -313,6 +313,26 @@ def measure_box_nudges(character: str, points: list[dict], sink=None, rounds: in
     return added
 
 
+def measure_box_edges(character: str, points: list[dict], sink=None) -> list[dict]:
+    """Each balanced jump onto a box again with its box centred LANDING_TOLERANCE short of where it
+    landed (not nearer than BOX_MIN_X): the nearest box a request it serves may stand on (the box stands
+    centred on the target; region.clears serves a request only with its box no nearer than a measured
+    one), where no measurement of those settings at that height had a box as near. Returns the new jumps."""
+    began, added = time.perf_counter(), []
+    onto = [p for p in balanced_points(points) if p["measured"].get("surface", 0.0) > 0]
+    for k, p in enumerate(onto):
+        h = p["measured"]["surface"]
+        x = round(max(p["measured"]["landing"][0] - LANDING_TOLERANCE, BOX_MIN_X), 3)
+        if any(q["settings"] == p["settings"] and q["measured"].get("surface") == h
+               and q["measured"].get("box_x", math.inf) <= x + 1e-9 for q in points + added):
+            continue
+        added.append(_logged(measure(character, p["settings"], height=h, box_x=x), sink))
+        if len(added) % 10 == 0 or k + 1 == len(onto):
+            print(f"{character}: box edges {k + 1} / {len(onto)}, {len(balanced_points(added))} of {len(added)} "
+                  f"balanced, {time.perf_counter() - began:.0f} s", file=sys.stderr, flush=True)
+    return added
+
+
 def measure_boxes(character: str, points: list[dict], sink=None, heights=BOX_HEIGHTS,
                   per_height: int = BOX_PER_HEIGHT) -> list[dict]:
     """Measure jumps onto and down from boxes (box_plan: each base run onto a box centred where it is
@@ -349,6 +369,7 @@ def calibrate(character: str, out: Path | None = None, directory: Path | None = 
     points += measure_high(character, points, sink)
     points += measure_boxes(character, points, sink)
     points += measure_box_nudges(character, points, sink)
+    points += measure_box_edges(character, points, sink)
     store(character, points, directory)
     return points
 
@@ -396,7 +417,8 @@ def flat(points: list[dict]) -> list[dict]:
 
 
 def same_surface(p: dict, q: dict) -> bool:
-    return p["measured"].get("surface", 0.0) == q["measured"].get("surface", 0.0)
+    """Measured on the same surface (and onto a box, with the box in the same place)."""
+    return all(p["measured"].get(k, 0.0) == q["measured"].get(k, 0.0) for k in ("surface", "box_x"))
 
 
 def balanced_points(points: list[dict]) -> list[dict]:
@@ -452,6 +474,9 @@ def main(argv=None) -> int:
                         help="only measure jumps onto and down from boxes (measure_boxes), adding to the stored table")
     parser.add_argument("--heights", default="", help="with --boxes-only: comma-separated surface heights (m; "
                                                       "default BOX_HEIGHTS)")
+    parser.add_argument("--box-edges-only", action="store_true",
+                        help="only measure the stored table's balanced jumps onto boxes again with the box nearer "
+                             "(measure_box_edges)")
     parser.add_argument("--box-nudges-only", action="store_true",
                         help="only measure around the stored table's balanced box jumps (measure_box_nudges)")
     parser.add_argument("--per-height", type=int, default=BOX_PER_HEIGHT, help="with --boxes-only: bases per height")
@@ -470,6 +495,9 @@ def main(argv=None) -> int:
             heights = tuple(float(h) for h in args.heights.split(",") if h.strip()) or BOX_HEIGHTS
             sink = open(args.log, "a") if args.log else None
             store(character, points + measure_boxes(character, points, sink, heights, args.per_height))
+        elif args.box_edges_only:
+            points = list(model(character)["points"])
+            store(character, points + measure_box_edges(character, points, open(args.log, "a") if args.log else None))
         elif args.box_nudges_only:
             points = list(model(character)["points"])
             store(character, points + measure_box_nudges(character, points, open(args.log, "a") if args.log else None))
