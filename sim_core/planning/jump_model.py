@@ -313,6 +313,59 @@ def measure_box_nudges(character: str, points: list[dict], sink=None, rounds: in
     return added
 
 
+LANDING_STEP = 0.5 * LANDING_TOLERANCE     # m: a landing variant's feet placed this much nearer or further (the man's
+                                        # 1.64 m jump in 0.59 s fell; with the feet 2.5 cm nearer: 1.61 m, balanced)
+ARMS_UP = {"landing_swing_arms": 1.0, "landing_arm_flexion": 2.0,    # in flight the arms swing forward and up and
+           "landing_right_time": 0.4}  # after touchdown the trunk is righted over 0.4 s: the long flights touch down
+                                        # with the trunk pitched 45-57 deg forward, the hands met the ground (the man's
+                                        # 1.75 m in 0.57 s), and righted at once the hips threw him back into the air
+LANDING_VARIANTS = ((("foot_delta", -LANDING_STEP),), (("foot_delta", LANDING_STEP),),
+                    tuple(ARMS_UP.items()), tuple(ARMS_UP.items()) + (("foot_delta", -LANDING_STEP),))
+
+
+def landing_candidates(character: str, points: list[dict]) -> list[dict]:
+    """The flat-ground jumps whose flight lands inside issue 29's span (random_requests' box) where the
+    region offers nothing, that did not end balanced: one per cell of half the tolerances (the first
+    measured), the flights a different landing might keep."""
+    from ..random_requests import JUMP_AIR_TIME, JUMP_FORWARD, JUMP_LATERAL
+    from ..skills.jump_to_target.region import AIR_TIME_TOLERANCE, offered
+    low, high = JUMP_FORWARD.get(character, (0.5, 1.9))
+    cells = {}
+    for p in flat(points):
+        m = p["measured"]
+        (x, y), t = m["landing"][:2], m["air_time"]
+        if m["outcome"] == "success" or not (math.isfinite(x) and math.isfinite(y)) \
+                or not (low - LANDING_TOLERANCE <= x <= high + LANDING_TOLERANCE) or abs(y) > JUMP_LATERAL + LANDING_TOLERANCE \
+                or not (JUMP_AIR_TIME[0] - AIR_TIME_TOLERANCE <= t <= JUMP_AIR_TIME[1] + AIR_TIME_TOLERANCE) \
+                or offered(character, (x, y), t):
+            continue
+        cells.setdefault((round(2 * x / LANDING_TOLERANCE), round(2 * y / LANDING_TOLERANCE),
+                          round(2 * t / AIR_TIME_TOLERANCE)), p)
+    return list(cells.values())
+
+
+def measure_landings(character: str, points: list[dict], sink=None) -> list[dict]:
+    """Each of landing_candidates with each of LANDING_VARIANTS (the landing's settings only: the same
+    take-off and flight, the feet placed a step nearer or further, the arms swung up in flight and
+    the trunk righted slowly), where not measured already. Returns the new jumps."""
+    ranges = {p.name: (p.minimum, p.maximum) for p in LEAP_SETTINGS.parameters}
+    began, added = time.perf_counter(), []
+    todo = landing_candidates(character, points)
+    for k, p in enumerate(todo):
+        for variant in LANDING_VARIANTS:
+            settings = dict(p["settings"])
+            for name, value in variant:
+                value = settings.get(name, 0.0) + value if name == "foot_delta" else value
+                settings[name] = min(max(value, ranges[name][0]), ranges[name][1])
+            if any(q["settings"] == settings for q in flat(points + added)):
+                continue
+            added.append(_logged(measure(character, settings), sink))
+        if (k + 1) % 10 == 0 or k + 1 == len(todo):
+            print(f"{character}: landings {k + 1} / {len(todo)}, {len(balanced_points(added))} of {len(added)} balanced, "
+                  f"{time.perf_counter() - began:.0f} s", file=sys.stderr, flush=True)
+    return added
+
+
 def measure_box_edges(character: str, points: list[dict], sink=None) -> list[dict]:
     """Each balanced jump onto a box again with its box centred LANDING_TOLERANCE short of where it
     landed (not nearer than BOX_MIN_X): the nearest box a request it serves may stand on (the box stands
@@ -370,6 +423,7 @@ def calibrate(character: str, out: Path | None = None, directory: Path | None = 
     points += measure_boxes(character, points, sink)
     points += measure_box_nudges(character, points, sink)
     points += measure_box_edges(character, points, sink)
+    points += measure_landings(character, points, sink)
     store(character, points, directory)
     return points
 
@@ -477,6 +531,9 @@ def main(argv=None) -> int:
     parser.add_argument("--box-edges-only", action="store_true",
                         help="only measure the stored table's balanced jumps onto boxes again with the box nearer "
                              "(measure_box_edges)")
+    parser.add_argument("--landings-only", action="store_true",
+                        help="only measure landing variants of the stored table's fallen flights outside the region "
+                             "(measure_landings), adding to it")
     parser.add_argument("--box-nudges-only", action="store_true",
                         help="only measure around the stored table's balanced box jumps (measure_box_nudges)")
     parser.add_argument("--per-height", type=int, default=BOX_PER_HEIGHT, help="with --boxes-only: bases per height")
@@ -495,6 +552,9 @@ def main(argv=None) -> int:
             heights = tuple(float(h) for h in args.heights.split(",") if h.strip()) or BOX_HEIGHTS
             sink = open(args.log, "a") if args.log else None
             store(character, points + measure_boxes(character, points, sink, heights, args.per_height))
+        elif args.landings_only:
+            points = list(model(character)["points"])
+            store(character, points + measure_landings(character, points, open(args.log, "a") if args.log else None))
         elif args.box_edges_only:
             points = list(model(character)["points"])
             store(character, points + measure_box_edges(character, points, open(args.log, "a") if args.log else None))
