@@ -236,6 +236,11 @@ class Landing(Behaviour):
                   "landing a somersault: the feet land this factor x (somersault angular momentum / mass) "
                   "behind the COM for a backward spin, ahead for a forward one, so the ground force at "
                   "touchdown turns the spin back (0 = no spin term)"),
+        Parameter("right_time", "s", 0.0, 0.0, 1.0,
+                  "after touchdown the hips bring the trunk from its touchdown pitch to the balanced crouch's "
+                  "over this time, along an ease (a long flight lands with the trunk pitched forward: righted "
+                  "at once, the hips' push threw the man's 1.64 m jump back into the air, spinning backward); "
+                  "0 = at once"),
         Parameter("blend_time", "s", 0.0, 0.0, 0.3,
                   "the joint targets blend from where the landing started to the landing's own over this "
                   "time (opening from a tuck: a gentler move keeps the flight's angular momentum constant "
@@ -370,6 +375,7 @@ class Landing(Behaviour):
             self.knees_touched_at = angles[self.knees].copy()
             s.set_gains(self.knees, s.default_kp[self.knees] * self.constants.soft_knee_kp, s.default_kv[self.knees] * self.constants.soft_knee_kv)
             self.touchdown_at = t
+            self.touchdown_pitch = pelvis_pitch
             self.event(t, "touchdown")
         elif self.stage == "absorb" and abs(float(velocities[self.knees].mean())) < self.constants.knee_restore * self.touchdown_knee_speed:
             self.stage = "settle"
@@ -418,9 +424,13 @@ class Landing(Behaviour):
                 targets[j["hip_y"]] = thigh_pitch - pelvis_pitch + correction
                 targets[j["hip_x"]] = self._sideways_hip(k, d, com, vel, c, sn) if p["place_sideways"] else 0.0
             else:
-                # hips keep the pelvis upright while the knees give; the knees are pure dampers
-                # while absorbing, then hold where they stopped
-                targets[j["hip_y"]] = angles[j["hip_y"]] + (pelvis_pitch - crouch_pitch)
+                # hips keep the pelvis upright while the knees give (from the touchdown pitch over
+                # right_time, if set); the knees are pure dampers while absorbing, then hold where they stopped
+                wanted_pitch = crouch_pitch
+                if p["right_time"]:
+                    share = hermite_scalar((t - self.touchdown_at) / p["right_time"])
+                    wanted_pitch = self.touchdown_pitch + (crouch_pitch - self.touchdown_pitch) * share
+                targets[j["hip_y"]] = angles[j["hip_y"]] + (pelvis_pitch - wanted_pitch)
                 if self.stage == "absorb":
                     targets[j["knee"]] = self.knees_touched_at[k]
                 else:
@@ -650,6 +660,7 @@ LEAP_SETTINGS = Schema(
     Parameter("landing_swing_arms", "1", 0.0, 0.0, 1.0, "landing: above 0.5 the arms swing to landing_arm_flexion in flight"),
     Parameter("landing_arm_flexion", "rad", 0.6, -1.0, 3.0, "landing: shoulder flexion"),
     Parameter("landing_foot_lead_time", "s", 0.2, 0.0, 0.6, "landing: the feet land this long of COM travel ahead"),
+    Parameter("landing_right_time", "s", 0.0, 0.0, 1.0, "landing: the trunk righted over this time after touchdown (0 = at once)"),
     Parameter("crouch_arms", "rad", 0.0, -0.8, 0.0, "shoulder flexion in the crouch (back: -)"),
     Parameter("thrust_lean", "m", 0.0, -0.2, 0.1, "COM ahead (+) of the feet along the thrust's extension"),
     Parameter("spin_hold", "rad/(kg m²/s)", 0.0, 0.0, 0.5, "the hips turn against the spin about the vertical"),

@@ -313,6 +313,79 @@ def measure_box_nudges(character: str, points: list[dict], sink=None, rounds: in
     return added
 
 
+LANDING_STEP = 0.5 * LANDING_TOLERANCE     # m: a landing variant's feet placed this much nearer or further (the man's
+                                        # 1.64 m jump in 0.59 s fell; with the feet 2.5 cm nearer: 1.61 m, balanced)
+ARMS_UP = {"landing_swing_arms": 1.0, "landing_arm_flexion": 2.0,    # in flight the arms swing forward and up and
+           "landing_right_time": 0.4}  # after touchdown the trunk is righted over 0.4 s: the long flights touch down
+                                        # with the trunk pitched 45-57 deg forward, the hands met the ground (the man's
+                                        # 1.75 m in 0.57 s), and righted at once the hips threw him back into the air
+LANDING_VARIANTS = ((("foot_delta", -LANDING_STEP),), (("foot_delta", LANDING_STEP),),
+                    tuple(ARMS_UP.items()), tuple(ARMS_UP.items()) + (("foot_delta", -LANDING_STEP),))
+
+
+def landing_candidates(character: str, points: list[dict]) -> list[dict]:
+    """The flat-ground jumps whose flight lands inside issue 29's span (random_requests' box) where the
+    region offers nothing, that did not end balanced: one per cell of half the tolerances (the first
+    measured), the flights a different landing might keep."""
+    from ..random_requests import JUMP_AIR_TIME, JUMP_FORWARD, JUMP_LATERAL
+    from ..skills.jump_to_target.region import AIR_TIME_TOLERANCE, offered
+    low, high = JUMP_FORWARD.get(character, (0.5, 1.9))
+    cells = {}
+    for p in flat(points):
+        m = p["measured"]
+        (x, y), t = m["landing"][:2], m["air_time"]
+        if m["outcome"] == "success" or not (math.isfinite(x) and math.isfinite(y)) \
+                or not (low - LANDING_TOLERANCE <= x <= high + LANDING_TOLERANCE) or abs(y) > JUMP_LATERAL + LANDING_TOLERANCE \
+                or not (JUMP_AIR_TIME[0] - AIR_TIME_TOLERANCE <= t <= JUMP_AIR_TIME[1] + AIR_TIME_TOLERANCE) \
+                or offered(character, (x, y), t):
+            continue
+        cells.setdefault((round(2 * x / LANDING_TOLERANCE), round(2 * y / LANDING_TOLERANCE),
+                          round(2 * t / AIR_TIME_TOLERANCE)), p)
+    return list(cells.values())
+
+
+def measure_landings(character: str, points: list[dict], sink=None) -> list[dict]:
+    """Each of landing_candidates with each of LANDING_VARIANTS (the landing's settings only: the same
+    take-off and flight, the feet placed a step nearer or further, the arms swung up in flight and
+    the trunk righted slowly), where not measured already. Returns the new jumps."""
+    ranges = {p.name: (p.minimum, p.maximum) for p in LEAP_SETTINGS.parameters}
+    began, added = time.perf_counter(), []
+    todo = landing_candidates(character, points)
+    for k, p in enumerate(todo):
+        for variant in LANDING_VARIANTS:
+            settings = dict(p["settings"])
+            for name, value in variant:
+                value = settings.get(name, 0.0) + value if name == "foot_delta" else value
+                settings[name] = min(max(value, ranges[name][0]), ranges[name][1])
+            if any(q["settings"] == settings for q in flat(points + added)):
+                continue
+            added.append(_logged(measure(character, settings), sink))
+        if (k + 1) % 10 == 0 or k + 1 == len(todo):
+            print(f"{character}: landings {k + 1} / {len(todo)}, {len(balanced_points(added))} of {len(added)} balanced, "
+                  f"{time.perf_counter() - began:.0f} s", file=sys.stderr, flush=True)
+    return added
+
+
+def measure_box_edges(character: str, points: list[dict], sink=None) -> list[dict]:
+    """Each balanced jump onto a box again with its box centred LANDING_TOLERANCE short of where it
+    landed (not nearer than BOX_MIN_X): the nearest box a request it serves may stand on (the box stands
+    centred on the target; region.clears serves a request only with its box no nearer than a measured
+    one), where no measurement of those settings at that height had a box as near. Returns the new jumps."""
+    began, added = time.perf_counter(), []
+    onto = [p for p in balanced_points(points) if p["measured"].get("surface", 0.0) > 0]
+    for k, p in enumerate(onto):
+        h = p["measured"]["surface"]
+        x = round(max(p["measured"]["landing"][0] - LANDING_TOLERANCE, BOX_MIN_X), 3)
+        if any(q["settings"] == p["settings"] and q["measured"].get("surface") == h
+               and q["measured"].get("box_x", math.inf) <= x + 1e-9 for q in points + added):
+            continue
+        added.append(_logged(measure(character, p["settings"], height=h, box_x=x), sink))
+        if len(added) % 10 == 0 or k + 1 == len(onto):
+            print(f"{character}: box edges {k + 1} / {len(onto)}, {len(balanced_points(added))} of {len(added)} "
+                  f"balanced, {time.perf_counter() - began:.0f} s", file=sys.stderr, flush=True)
+    return added
+
+
 def measure_boxes(character: str, points: list[dict], sink=None, heights=BOX_HEIGHTS,
                   per_height: int = BOX_PER_HEIGHT) -> list[dict]:
     """Measure jumps onto and down from boxes (box_plan: each base run onto a box centred where it is
@@ -349,6 +422,8 @@ def calibrate(character: str, out: Path | None = None, directory: Path | None = 
     points += measure_high(character, points, sink)
     points += measure_boxes(character, points, sink)
     points += measure_box_nudges(character, points, sink)
+    points += measure_box_edges(character, points, sink)
+    points += measure_landings(character, points, sink)
     store(character, points, directory)
     return points
 
@@ -396,7 +471,8 @@ def flat(points: list[dict]) -> list[dict]:
 
 
 def same_surface(p: dict, q: dict) -> bool:
-    return p["measured"].get("surface", 0.0) == q["measured"].get("surface", 0.0)
+    """Measured on the same surface (and onto a box, with the box in the same place)."""
+    return all(p["measured"].get(k, 0.0) == q["measured"].get(k, 0.0) for k in ("surface", "box_x"))
 
 
 def balanced_points(points: list[dict]) -> list[dict]:
@@ -452,6 +528,12 @@ def main(argv=None) -> int:
                         help="only measure jumps onto and down from boxes (measure_boxes), adding to the stored table")
     parser.add_argument("--heights", default="", help="with --boxes-only: comma-separated surface heights (m; "
                                                       "default BOX_HEIGHTS)")
+    parser.add_argument("--box-edges-only", action="store_true",
+                        help="only measure the stored table's balanced jumps onto boxes again with the box nearer "
+                             "(measure_box_edges)")
+    parser.add_argument("--landings-only", action="store_true",
+                        help="only measure landing variants of the stored table's fallen flights outside the region "
+                             "(measure_landings), adding to it")
     parser.add_argument("--box-nudges-only", action="store_true",
                         help="only measure around the stored table's balanced box jumps (measure_box_nudges)")
     parser.add_argument("--per-height", type=int, default=BOX_PER_HEIGHT, help="with --boxes-only: bases per height")
@@ -470,6 +552,12 @@ def main(argv=None) -> int:
             heights = tuple(float(h) for h in args.heights.split(",") if h.strip()) or BOX_HEIGHTS
             sink = open(args.log, "a") if args.log else None
             store(character, points + measure_boxes(character, points, sink, heights, args.per_height))
+        elif args.landings_only:
+            points = list(model(character)["points"])
+            store(character, points + measure_landings(character, points, open(args.log, "a") if args.log else None))
+        elif args.box_edges_only:
+            points = list(model(character)["points"])
+            store(character, points + measure_box_edges(character, points, open(args.log, "a") if args.log else None))
         elif args.box_nudges_only:
             points = list(model(character)["points"])
             store(character, points + measure_box_nudges(character, points, open(args.log, "a") if args.log else None))

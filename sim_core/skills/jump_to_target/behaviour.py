@@ -202,7 +202,8 @@ def landing_settings(settings: dict) -> dict:
     return {"landing_swing_arms": float(settings["landing_swing_arms"] > 0.5),
             "landing_arm_flexion": settings["landing_arm_flexion"],
             "landing_foot_lead_time": settings["landing_foot_lead_time"],
-            "landing_place_sideways": float(abs(settings.get("com_offset_y", 0.0)) > 0.0)}
+            "landing_place_sideways": float(abs(settings.get("com_offset_y", 0.0)) > 0.0),
+            "landing_right_time": float(settings.get("landing_right_time", 0.0))}
 
 
 def crouch_time(windup_time: float) -> float:

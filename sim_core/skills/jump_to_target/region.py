@@ -104,10 +104,11 @@ def brackets(character: str) -> list[tuple[dict, dict, dict]]:
         by_settings = {}
         for p in balanced(body):
             if surface(p["measured"]):
-                by_settings.setdefault(_key(p["settings"]), []).append(p)
+                by_settings.setdefault(_key(p["settings"]), {}).setdefault(surface(p["measured"]), []).append(p)
         out = []
-        for same in by_settings.values():
-            same.sort(key=lambda p: surface(p["measured"]))
+        for heights in by_settings.values():
+            # at each height the one measured with the nearest box (box_edge: it serves the most requests)
+            same = sorted((min(at, key=box_centre) for at in heights.values()), key=lambda p: surface(p["measured"]))
             for k, p in enumerate(same):
                 out.append((p, p["measured"], p["measured"]))
                 if k + 1 < len(same) and abs(surface(same[k + 1]["measured"]) - surface(p["measured"])) <= HEIGHT_REACH + 1e-6:
@@ -119,14 +120,31 @@ def brackets(character: str) -> list[tuple[dict, dict, dict]]:
 _BRACKETS: dict = {}
 
 
-def served(character: str, z: float) -> list[dict]:
-    """The character's measured jumps that serve a box request at height ``z``: each that landed
-    balanced at measured heights on both sides of z (brackets; or at z itself), with "measured" its
-    landing and air time interpolated to z (linear in the height) and "as_measured" the lower one."""
+def box_centre(point: dict) -> float:
+    """Where the box a jump onto a box was measured on stood (its middle, m ahead of the start's feet;
+    -inf for a jump on flat ground or down from a box: no box ahead)."""
+    return float(point["measured"].get("box_x", -math.inf))
+
+
+def clears(low: dict, high: dict, x: float) -> bool:
+    """Whether a jump measured onto boxes (low, high: its measurements at the two heights) serves a
+    request whose box stands centred on x: the box no nearer than either measured one. A nearer box
+    edge meets the feet on the way up (the man's jump onto 0.6 m measured with the box at 0.86 m
+    landed balanced with it at 0.82 and 0.90 m, and hit its front at 0.79 m and fell)."""
+    return x >= max(low.get("box_x", -math.inf), high.get("box_x", -math.inf)) - 1e-9
+
+
+def served(character: str, z: float, x: float | None = None) -> list[dict]:
+    """The character's measured jumps that serve a box request at height ``z`` (and, onto a box, with
+    the box centred ``x`` m ahead: clears): each that landed balanced at measured heights on both
+    sides of z (brackets; or at z itself), with "measured" its landing and air time interpolated to z
+    (linear in the height) and "as_measured" the lower one."""
     out = []
     for p, low, high in brackets(character):
         h0, h1 = surface(low), surface(high)
         if not (h0 - 1e-9 <= z <= h1 + 1e-9) or (h0 == h1 and abs(z - h0) > 1e-9):
+            continue
+        if x is not None and not clears(low, high, x):
             continue
         w = 0.0 if h1 == h0 else (z - h0) / (h1 - h0)
         moved = {**low, "surface": z, "air_time": low["air_time"] + w * (high["air_time"] - low["air_time"]),
@@ -157,7 +175,7 @@ def nearest_balanced(character: str, target, air_time: float, count: int = 1) ->
     (request_distance, point); a point measured for another surface with its "measured" moved to
     the request's height (at_height) and the measured one as "as_measured"."""
     z = height_of(target)
-    points = served(character, z) if z else balanced(model(character))
+    points = served(character, z, float(target[0])) if z else balanced(model(character))
     ranked = sorted(((request_distance(p["measured"], target, air_time), p) for p in points), key=lambda e: e[0])
     return [e for e in ranked if math.isfinite(e[0])][:count]
 
@@ -172,7 +190,7 @@ def offered(character: str, target, air_time: float) -> bool:
     points = _ARRAYS[character][1]
     z = height_of(target)
     if z:
-        return any(request_distance(p["measured"], target, air_time) <= REACH for p in served(character, z))
+        return any(request_distance(p["measured"], target, air_time) <= REACH for p in served(character, z, float(target[0])))
     points = points[points[:, 3] == 0.0]
     if not len(points):
         return False
@@ -201,6 +219,13 @@ def region_refusal(character: str, target, air_time: float) -> str | None:
                 f"no balanced jump{on} was measured at the heights around it (a box is offered where a jump "
                 f"landed balanced at the measured heights on both sides, {HEIGHT_REACH * 100:.0f} cm apart; "
                 f"measured {'onto' if z > 0 else 'down from'}: {', '.join(f'{h:g}' for h in heights) or 'none'} m)")
+    if z > 0 and not served(character, z, x):
+        nearest_box = min(box_centre(p) for p in points)
+        return (f"target ({x:g}, {y:g}, {z:g}) m is outside the region the {character}'s measured jumps offer: "
+                f"the {z:g} m box stands centred on the target, {x:.2f} m ahead, and no balanced jump onto it was "
+                f"measured with its box that near (its front edge meets the feet on the way up; the nearest "
+                f"measured at that height is centred {nearest_box:.2f} m ahead)")
+    points = served(character, z, x) if z > 0 else points
     d, nearest = nearest_balanced(character, target, air_time)[0]
     if d <= REACH:
         return None

@@ -46,6 +46,8 @@ class Leap(Sequence):
                   "which pitches the trunk back so the feet reach forward)"),
         Parameter("landing_foot_lead_time", "s", 0.2, 0.0, 0.6,
                   "landing: the feet land this many seconds of horizontal COM travel ahead of the COM"),
+        Parameter("landing_right_time", "s", 0.0, 0.0, 1.0,
+                  "landing: after touchdown the hips right the trunk over this time (0 = at once)"),
         settings=LOW_LEVEL_SETTINGS,
     )
 
@@ -166,7 +168,8 @@ class Leap(Sequence):
             # the calibrated leap's own correction of the landing's foot servo delta, plus the user's
             delta = min(max(p.get("foot_delta", 0.0) + cfg.get("foot_delta", 0.0), -0.3), 0.3)  # definition: the foot_delta range
             landing = {k: cfg.get("landing_" + k, p.get("landing_" + k, Landing.schema.defaults()[k]))
-                       for k in ("swing_arms", "arm_flexion", "foot_lead_time", "place_sideways", "knee_flexion")}
+                       for k in ("swing_arms", "arm_flexion", "foot_lead_time", "place_sideways", "knee_flexion",
+                                 "right_time")}
             landing["fast_knee_flexion"] = landing["knee_flexion"]     # calibrated with one knee bend
             return Landing(Landing.schema.validate(dict(foot_delta=delta, **landing)), ctx)
 
