@@ -1,7 +1,7 @@
 """The vault's board phase, measured off a run (issue 31: why the COM leaves the board low).
 
     python tools/vault_board.py [--set block_hip=-0.5 ...] [--duration 0.9]
-                                [--board-friction 1.5] [--board-tilt 0.08]
+                                [--board-friction 1.5] [--board-tilt 0.08] [--horse-gap 1.113]
 
 Runs the woman's vault for ``--duration`` seconds (her table's row; ``--set`` replaces settings of
 it, run with low_level 1) and prints, per 5 ms frame of the board contact, the deck's deflection,
@@ -12,7 +12,8 @@ energy at the touchdown, at the deepest deflection and at the liftoff; the work 
 the deck over the contact by each source (the servos of the legs, arms and the rest, the passive
 forces - the deck's spring-damper -, the contacts), integrated over every physics step (MuJoCo's
 mj_step is wrapped to step one at a time, which is the same simulation); how far the right toe slid
-along the board; and Table 1.
+along the board; and Table 1; the horse state's COM velocity and height at its start and end, and the work over it
+by the same sources (the clavicles' servos, ``girdle``, apart: the shoulder-girdle push).
 
 --board-friction and --board-tilt are what-ifs of the apparatus, not the shipped board: the deck's
 friction coefficient (the shipped 1.0, FOOT_FRICTION), and the deck tilted by this angle (rad) about
@@ -28,7 +29,7 @@ import numpy as np
 
 import sim_core.world.apparatus as apparatus
 from sim_core.simulate import RunRequest, run
-from sim_core.skills.vault.behaviour import DEFLECTION_JOINT, calibrated
+from sim_core.skills.vault.behaviour import CONSTANTS, DEFLECTION_JOINT, calibrated
 from sim_core.skills.vault.report import format_table_1
 
 
@@ -46,7 +47,7 @@ class WorkBySource:
     """mujoco.mj_step wrapped: per physics step, the power of the actuators (by joint group), of the
     passive forces and of the constraints (contacts; joint limits), times the step, summed."""
 
-    GROUPS = {"legs": ("hip", "knee", "ankle"), "arms": ("shoulder", "elbow", "wrist")}
+    GROUPS = {"legs": ("hip", "knee", "ankle"), "arms": ("shoulder", "elbow", "wrist"), "girdle": ("clav",)}
 
     def __init__(self):
         self.step, self.rows, self.masks = mujoco.mj_step, [], None
@@ -62,7 +63,7 @@ class WorkBySource:
         if self.masks is None:
             names = [model.joint(model.dof_jntid[i]).name for i in range(model.nv)]
             self.masks = {g: np.array([any(k in n for k in keys) for n in names]) for g, keys in self.GROUPS.items()}
-            self.total = dict.fromkeys(("legs", "arms", "other servos", "passive", "contacts", "limits"), 0.0)
+            self.total = dict.fromkeys((*self.GROUPS, "other servos", "passive", "contacts", "limits"), 0.0)
         for _ in range(nstep):
             v = data.qvel
             power = {g: float(data.qfrc_actuator[m] @ v[m]) for g, m in self.masks.items()}
@@ -116,7 +117,11 @@ def main() -> None:
     parser.add_argument("--duration", type=float, default=0.9)
     parser.add_argument("--board-friction", type=float, default=None)
     parser.add_argument("--board-tilt", type=float, default=None)
+    parser.add_argument("--horse-gap", type=float, default=None,
+                        help="the board this far from the horse (m; vault_any.json's horse_gap, a probe)")
     args = parser.parse_args()
+    if args.horse_gap is not None:
+        CONSTANTS.horse_gap = args.horse_gap
     if args.board_friction is not None or args.board_tilt:
         what_if_board(args.board_friction, args.board_tilt)
     with WorkBySource() as work:
@@ -197,6 +202,10 @@ def main() -> None:
             j = int(np.searchsorted(time, off - 1e-9))
             print(f"L_y at the hand touchdown {a['angmom'][k, 1]:.1f}, at the horse liftoff ({off:.3f} s) "
                   f"{a['angmom'][j, 1]:.1f} kg m^2/s")
+            print(f"the horse state {horse:.3f}-{off:.3f} s: COM (v_x, v_z) ({a['com_vel'][k, 0]:.2f}, "
+                  f"{a['com_vel'][k, 2]:+.2f}) -> ({a['com_vel'][j, 0]:.2f}, {a['com_vel'][j, 2]:+.2f}) m/s, height "
+                  f"{a['com'][k, 2]:.3f} -> {a['com'][j, 2]:.3f} m; work over it (J): "
+                  + ", ".join(f"{name} {value:+.0f}" for name, value in work.between(horse, off).items()))
     metrics = meta["metrics"]
     print(f"outcome {meta['outcome']} (the run's {args.duration:g} s), rotation {metrics['rotation']:.2f} rad, "
           f"fell at {metrics.get('fall_time')}")

@@ -129,6 +129,16 @@ VAULT_SETTINGS = Schema(
             "gain factor of the shoulder flexion servos on the horse (0: limp, the seed's 'no shoulder torque'); "
             "above 0 they servo the arms toward horse_shoulder, blocking (the trunk held open over the hands)"),
     setting("horse_shoulder", "rad", 0.0, 3.14, "... the shoulder flexion they servo to on the horse (3.14: in line with the trunk)"),
+    setting("flight_clav", "rad", -0.52, 0.26,
+            "shoulder-girdle elevation (+: the shoulders toward the ears, clav_*_x; -: depressed) the clavicles move to "
+            "in the first flight, so the horse's push has travel (0: as standing; used only with horse_clav_after >= 0)"),
+    setting("horse_clav", "rad", -0.52, 0.26,
+            "... the elevation the clavicles push to on the horse: the shrug moves the shoulders away from the hands "
+            "along the arms, lengthening the hand-to-trunk chain"),
+    setting("horse_clav_after", "s", -1.0, 0.3,
+            "the shoulder-girdle push starts this long after the hand touchdown (-1: none, the clavicles held as standing)"),
+    setting("horse_clav_time", "s", 0.01, 0.3, "... and takes this long"),
+    setting("clav_gain", "1", 1.0, 10.0, "gain factor of the clavicle servos in the first flight and on the horse"),
     setting("layout_arm", "rad", 0.0, 3.14, "shoulder flexion in the second flight's layout"),
     setting("second_pike", "rad", -2.0, 0.0,
             "hip flexion (-) the second flight starts in; it opens to the layout once the rotation the laid-out body "
@@ -556,23 +566,35 @@ class Vault(Sequence):
             return PoseLaw(ctx, both_sides({"shoulder_*_z": c["board_arm"]}), c["board_arm_time"], c["board_gain"],
                            list(legs), law=lambda t: self.board_law(t))
 
+        clav = ["clav_r_x", "clav_l_x"]
+        girdle = c["horse_clav_after"] >= 0.0            # the shoulder-girdle push on the horse
+
+        def clav_goals(elevation: float) -> dict[str, float]:
+            # elevation raises the right shoulder at clav_r_x < 0 and the left at clav_l_x > 0
+            return {"clav_r_x": -elevation, "clav_l_x": elevation}
+
         def first_flight(t):
             s.set_gains(s.indices(list(legs)), s.default_kp[s.indices(list(legs))], s.default_kv[s.indices(list(legs))])
             return PoseLaw(ctx, both_sides({"hip_*_y": c["flight_hip"], "knee_*_y": 0.0, "ankle_*_y": 0.5,
                                             "elbow_*_z": 0.0, "elbow_*_y": c["forearm_twist"],
                                             "wrist_*_x": c["wrist_extension"],
-                                            "shoulder_*_x": c["reach_shoulder_x"]}), CONSTANTS.servo_move,
-                           c["arm_gain"], arms_z, law=lambda t: (self.reach_law(t), self.palm_law(t)))
+                                            "shoulder_*_x": c["reach_shoulder_x"]})
+                           | (clav_goals(c["flight_clav"]) if girdle else {}), CONSTANTS.servo_move,
+                           c["arm_gain"], arms_z, law=lambda t: (self.reach_law(t), self.palm_law(t)),
+                           gains={j: c["clav_gain"] for j in clav} if girdle else None)
 
         def horse(t):
+            self.horse_t0, self.girdle_pushed = t, not girdle
+            law = (lambda t: self.girdle_law(t, clav_goals(c["horse_clav"]))) if girdle else None
+            clav_gains = {j: c["clav_gain"] for j in clav} if girdle else {}
             if not c["horse_shoulder_gain"]:
                 return PoseLaw(ctx, both_sides({"hip_*_y": c["horse_hip"], "elbow_*_z": 0.0}), CONSTANTS.servo_move,
-                               c["elbow_gain"], ["elbow_r_z", "elbow_l_z"], limp=limp)
+                               c["elbow_gain"], ["elbow_r_z", "elbow_l_z"], limp=limp, law=law, gains=clav_gains)
             # blocking: the shoulders' flexion servos act (toward horse_shoulder), the rest of the arm limp
             return PoseLaw(ctx, both_sides({"hip_*_y": c["horse_hip"], "elbow_*_z": 0.0,
                                             "shoulder_*_z": c["horse_shoulder"]}), CONSTANTS.servo_move,
                            c["elbow_gain"], ["elbow_r_z", "elbow_l_z"], limp=tuple(j for j in limp if j not in arms_z),
-                           gains={j: c["horse_shoulder_gain"] for j in arms_z})
+                           gains={j: c["horse_shoulder_gain"] for j in arms_z} | clav_gains, law=law)
 
         def second_flight(t):
             s.set_gains(np.arange(len(s.names)), s.default_kp, s.default_kv)
@@ -676,6 +698,17 @@ class Vault(Sequence):
         c, s = self.cfg, self.ctx.servos
         goals = both_sides({"knee_*_y": 0.0, "hip_*_y": c["push_hip"], "ankle_*_y": c["push_ankle"]})
         s.move_to(s.indices(list(goals)), np.array(list(goals.values())), c["push_time"], t)
+
+    def girdle_law(self, t: float, goals: dict[str, float]) -> None:
+        """The shoulder-girdle push on the horse: horse_clav_after after the hand touchdown the
+        clavicles elevate to horse_clav in horse_clav_time (event ``girdle``), the shoulders moving away
+        from the hands along the straight arms (a shrug; the clavicle servos, within their torque limits)."""
+        if self.girdle_pushed or t - self.horse_t0 < self.cfg["horse_clav_after"]:
+            return
+        self.girdle_pushed = True
+        self.event(t, "girdle")
+        s = self.ctx.servos
+        s.move_to(s.indices(list(goals)), np.array(list(goals.values())), self.cfg["horse_clav_time"], t)
 
     def reach_law(self, t: float) -> None:
         """Eq. 12: each shoulder at gamma = lambda + phi (the arm along the line to the hand goal)."""
