@@ -434,18 +434,22 @@ def test_the_woman_runs_a_random_speed_of_her_range():
 
 
 @pytest.mark.slow
-@pytest.mark.parametrize("character, speed, refused", [("child", 2.5, 2.7), ("imaginary_runner", 3.0, 2.8)])
-def test_a_scaled_character_runs_100_s_at_its_tables_speed(character, speed, refused):
-    """The child (Fig. 3, 1.08 m, 26 kg: the man's row mass-scaled, then searched) and the imaginary
-    runner (1.61 m, 46.5 kg: reached through bodies between the woman and it; docs/running.md): 100 s
-    from a stand at the one speed of the table, no fall, speed within 5 %; any other speed is refused."""
-    assert SpeedTable.load(character).speeds == [speed]
+@pytest.mark.parametrize("character", ["child", "imaginary_runner"])
+def test_a_scaled_character_runs_100_s_at_a_speed_of_its_table(character):
+    """The child (Fig. 3, 1.08 m, 26 kg: the man's row mass-scaled, then searched; 2.5-3.0 m/s) and
+    the imaginary runner (1.61 m, 46.5 kg: reached through bodies between the woman and it; 3.0 m/s;
+    docs/running.md): 100 s from a stand at a speed drawn in the table's range, no fall, speed within
+    5 %; a speed beyond the range is refused."""
+    speeds = SpeedTable.load(character).speeds
+    low, high = speeds[0], speeds[-1]
+    speed = float(np.random.default_rng(28).uniform(low, high))
     traj = run(RunRequest("running", character, params={"speed": speed}, duration=100.0))
     m = traj.meta["metrics"]
+    print(f"the {character} at {speed:.3f} m/s: mean speed over the last 10 s {m['gait']['mean_speed']:.3f} m/s")
     assert not_fallen(traj), f"fell at {m['fall_time']:.1f} s"
     assert abs(m["gait"]["mean_speed"] - speed) <= SPEED_TOLERANCE * speed
-    with pytest.raises(ParameterError, match=rf"\[{speed:g}, {speed:g}\]"):
-        run(RunRequest("running", character, params={"speed": refused}, duration=0.05))
+    with pytest.raises(ParameterError, match=rf"\[{low:g}, {high:g}\]"):
+        run(RunRequest("running", character, params={"speed": high + 0.2}, duration=0.05))
 
 
 @pytest.mark.parametrize("character, values, words", [
