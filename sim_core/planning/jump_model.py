@@ -540,31 +540,16 @@ def main(argv=None) -> int:
     parser.add_argument("--fill-only", action="store_true",
                         help="only fill the gaps of the stored table's jumps (fill), adding to it")
     args = parser.parse_args(argv)
+    heights = tuple(float(h) for h in args.heights.split(",") if h.strip()) or BOX_HEIGHTS
+    # each --*-only flag: the measurement that adds to the stored table's points
+    adders = {"extend_only": extend, "high_only": measure_high, "landings_only": measure_landings,
+              "box_edges_only": measure_box_edges, "box_nudges_only": measure_box_nudges, "fill_only": fill,
+              "boxes_only": lambda c, points, sink: measure_boxes(c, points, sink, heights, args.per_height)}
+    adder = next((adders[flag] for flag in adders if getattr(args, flag)), None)
     for character in [c.strip() for c in args.characters.split(",") if c.strip()]:
-        if args.extend_only:
+        if adder is not None:
             points = list(model(character)["points"])
-            store(character, points + extend(character, points, open(args.log, "a") if args.log else None))
-        elif args.high_only:
-            points = list(model(character)["points"])
-            store(character, points + measure_high(character, points, open(args.log, "a") if args.log else None))
-        elif args.boxes_only:
-            points = list(model(character)["points"])
-            heights = tuple(float(h) for h in args.heights.split(",") if h.strip()) or BOX_HEIGHTS
-            sink = open(args.log, "a") if args.log else None
-            store(character, points + measure_boxes(character, points, sink, heights, args.per_height))
-        elif args.landings_only:
-            points = list(model(character)["points"])
-            store(character, points + measure_landings(character, points, open(args.log, "a") if args.log else None))
-        elif args.box_edges_only:
-            points = list(model(character)["points"])
-            store(character, points + measure_box_edges(character, points, open(args.log, "a") if args.log else None))
-        elif args.box_nudges_only:
-            points = list(model(character)["points"])
-            store(character, points + measure_box_nudges(character, points, open(args.log, "a") if args.log else None))
-        elif args.fill_only:
-            points = list(model(character)["points"])
-            sink = open(args.log, "a") if args.log else None
-            store(character, points + fill(character, points, sink))
+            store(character, points + adder(character, points, open(args.log, "a") if args.log else None))
         else:
             calibrate(character, Path(args.log) if args.log else None,
                       only=tuple(n.strip() for n in args.only.split(",") if n.strip()))
