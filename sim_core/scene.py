@@ -192,7 +192,7 @@ def _actor(raw, k: int) -> Actor:
         params = raw.get("params", {})
         if not isinstance(params, dict):
             raise SceneError(f"params must be an object of name: value, not {params!r}")
-        params = cls.schema.validate(params)
+        params = cls.schema.validate(params, cls.character_defaults(character.name))
     except SimAthleticsError as exc:
         raise SceneError(f"{where}: {exc}") from None
     position = raw.get("position", [0.0, 0.0])

@@ -88,3 +88,11 @@ def test_a_jump_to_a_target_is_refused_for_a_body_whose_jumps_are_not_measured()
     message = str(error.value)
     assert "\n" not in message and character in message
     assert all(c in message for c in characters_of("jump_model"))
+
+
+def test_a_scenes_actor_takes_its_bodys_own_defaults():
+    """A scene's child who runs without a speed runs at hers, as a one-character request does."""
+    from sim_core.request import behaviour_params
+    from sim_core.scene import scene_from_dict
+    scene = scene_from_dict({"duration": 1, "actors": [{"name": "c", "character": "child", "behaviour": "running"}]})
+    assert scene.actors[0].params["speed"] == behaviour_params("running", "child")["speed"] != 3.5
