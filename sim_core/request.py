@@ -54,10 +54,10 @@ def _flipped(axis: str) -> str:
 
 def behaviour_params(behaviour: str, character, values=None) -> dict:
     """The behaviour's full, validated parameters for ``character`` (a name, a spec file, a
-    CharacterSpec, or None: the schema's defaults alone): ``values`` (a dict, or the CLI's "name=value" strings) over the character's
-    defaults (Behaviour.character_defaults: the child leaps, unless told, to a height it is
-    offered) over the schema's. The CLI, batch bakes and the add-on's script API all take their
-    parameters from here."""
+    CharacterSpec, or None: the schema's defaults alone): ``values`` (a dict, or the CLI's
+    "name=value" strings) over the character's defaults (Behaviour.character_defaults: the child
+    leaps, unless told, to a height it is offered) over the schema's. The CLI, batch bakes and the
+    add-on's script API all take their parameters from here."""
     from .character.spec import CharacterSpec, load_character
     from .skills import behaviour_class
     cls = behaviour_class(behaviour)
