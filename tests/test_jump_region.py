@@ -102,25 +102,6 @@ def test_a_box_nearer_than_any_measured_one_is_refused_naming_it():
     assert clears({"box_x": 0.8}, {"box_x": 0.82}, 0.83) and not clears({"box_x": 0.8}, {"box_x": 0.82}, 0.81)
 
 
-def test_the_local_model_steps_a_missed_flight_towards_the_request():
-    """local_model's Jacobian, fitted to the nudges measured around a box jump, predicts the nudges'
-    own landings; a step from the jump's measured flight asks for a landing on the request."""
-    import numpy as np
-    from sim_core.planning.jump import local_model, local_step
-    from sim_core.skills.jump_to_target.region import nearest_balanced
-    target, air_time = (0.876, 0.0, 0.495), 0.639
-    point = nearest_balanced("man", target, air_time)[0][1]
-    fit = local_model("man", point["settings"], target[2])
-    assert fit and set(fit["names"]) >= {"com_offset", "crouch_height"}
-    measured = {**point["measured"], "landing_height": target[2]}
-    stepped = local_step(fit, point["settings"], measured, target, air_time)
-    change = np.array([stepped[n] - point["settings"][n] for n in fit["names"]]) / fit["scale"]
-    predicted = np.array([*measured["landing"][:2], measured["air_time"]]) / [0.05, 0.05, 0.05] + fit["jacobian"] @ change
-    miss = np.array([target[0], target[1], air_time]) / 0.05 - predicted
-    assert np.linalg.norm(miss) < np.linalg.norm(np.array([target[0], target[1], air_time]) / 0.05
-                                                  - np.array([*measured["landing"][:2], measured["air_time"]]) / 0.05)
-
-
 def test_landing_variants_of_fallen_flights_are_measured_and_land_beyond_the_first_region():
     """jump_model.measure_landings: the man's fallen flights in issue 29's span outside the region, again
     with the landing's settings varied (LANDING_VARIANTS: the take-off unchanged); some end balanced,

@@ -38,7 +38,7 @@ from .. import tuned
 from ..errors import Cancelled, ParameterError
 from ..simulate import RunRequest, run
 from ..tuning import SerialExecutor, Space, minimize
-from ..skills.jump_to_target.region import HEIGHT_REACH, REACH, at_height, model, nearest_balanced, surface
+from ..skills.jump_to_target.region import REACH, model, nearest_balanced
 from .land import candidates as foot_candidates, foot_step
 
 PLAN_MARGIN = 0.6                   # the search aims inside this share of the tolerances
@@ -79,8 +79,6 @@ MODEL_TRIALS = 6                    # at most this many trials a flat-ground req
                                     # jumps runs (about 1.5 s each)
 FOOT_TRIALS = 12                    # definition: then at most this many more, the feet of the trial that landed
                                     # on the target and fell placed a step (planning.land.foot_step) more and less
-STEP_TRIALS = 2                     # definition: after a candidate whose flight missed the request, at most this many
-                                    # steps of the local model (local_step) from it, within MODEL_TRIALS
 NEIGHBOURS = 8                      # measured balanced jumps its trials start from or blend towards
 REFINE_SHARE = 0.4                  # share of a search's trials kept for refining the best balanced trial
 POPULATION = 12                     # trials per batch of the first stage (CMA-ES's population)
@@ -242,78 +240,6 @@ def candidates(near: list[tuple[float, dict]], target, air_time: float):
         yield from others
 
 
-STEP_NEIGHBOURS = 16                # measured jumps (any outcome: the flight is measured either way) nearest a trial's
-                                    # settings that local_step fits its linear model to (the nudges of a calibrated
-                                    # jump: 4-8 per setting nudged, at the height and 5 cm above and below)
-STEP_CHANGES = 2                    # of those, only jumps that differ from the trial's settings in at most this many
-                                    # (the nudges, jump_model.NUDGES / BOX_NUDGES: one or two settings each): a fit to
-                                    # jumps of other families, differing in every setting, stepped the man's 0.495 m
-                                    # box jump 0.12 m deeper and fell off the box
-
-
-def local_model(character: str, settings: dict, z: float = 0.0) -> dict | None:
-    """A linear model of where jumps near ``settings`` land on a surface ``z`` high: the Jacobian of
-    (landing x, y, air time), in units of the tolerances, in the settings (scaled by their ranges),
-    fitted (least squares, affine) to the measured jumps that differ from ``settings`` in at most
-    STEP_CHANGES settings (the nudges around a measured jump), STEP_NEIGHBOURS of them nearest, on
-    the request's surface (within region.HEIGHT_REACH of it, each moved to its height ballistically,
-    region.at_height; their outcome does not matter: the flight is measured either way). None if
-    fewer than three such jumps or none varies."""
-    ranges = {p.name: (p.minimum, p.maximum) for p in LEAP_SETTINGS.parameters}
-    names = [n for n in settings if n in ranges and ranges[n][1] > ranges[n][0]]
-    scale = np.array([ranges[n][1] - ranges[n][0] for n in names])
-    base = np.array([float(settings[n]) for n in names])
-    rows = []
-    for p in (model(character) or {}).get("points", []):
-        m = p["measured"]
-        if m["outcome"] == "off the surface" or not all(math.isfinite(v) for v in m["landing"]) \
-                or (abs(surface(m) - z) > HEIGHT_REACH + 1e-9 if z else surface(m) != 0.0):
-            continue
-        s = np.array([float(p["settings"].get(n, KNOB_DEFAULTS.get(n, 0.0))) for n in names])
-        if np.count_nonzero(np.abs(s - base) > 1e-9) > STEP_CHANGES:
-            continue
-        moved = at_height(m, z)
-        if moved is not None:
-            rows.append((float(np.linalg.norm((s - base) / scale)), s, (*moved["landing"][:2], moved["air_time"])))
-    rows.sort(key=lambda r: r[0])
-    rows = rows[:STEP_NEIGHBOURS]
-    if len(rows) < 3:
-        return None
-    ds = np.array([(r[1] - base) / scale for r in rows])
-    varied = np.flatnonzero(np.ptp(ds, axis=0) > 1e-9)
-    if not len(varied):
-        return None
-    ys = np.array([r[2] for r in rows]) / _UNITS
-    coef = np.linalg.lstsq(np.hstack([np.ones((len(rows), 1)), ds[:, varied]]), ys, rcond=None)[0]
-    return {"names": [names[j] for j in varied], "scale": scale[varied], "jacobian": coef[1:].T,
-            "reach": max(r[0] for r in rows), "ranges": ranges}
-
-
-_UNITS = np.array([LANDING_TOLERANCE, LANDING_TOLERANCE, AIR_TIME_TOLERANCE])
-
-
-def local_step(fit: dict, settings: dict, measured: dict, target, air_time: float) -> dict | None:
-    """Settings that move a trial (``settings``, ``measured`` simulated for the request) onto the
-    request: a Gauss-Newton step with local_model's Jacobian ``fit`` on the trial's own miss of
-    (landing x, y, air time) in units of the tolerances, kept inside the neighbourhood the fit saw
-    (no longer than its farthest jump, settings scaled by their ranges). None if the trial did not
-    fly onto the request's surface."""
-    z = float(target[2]) if len(target) > 2 else 0.0
-    landing = measured.get("landing", [math.nan])
-    if not all(math.isfinite(v) for v in landing) or abs(measured.get("landing_height", z) - z) > 0.01:
-        return None
-    miss = (np.array([float(target[0]), float(target[1]), air_time])
-            - np.array([*landing[:2], measured["air_time"]])) / _UNITS
-    step = np.linalg.lstsq(fit["jacobian"], miss, rcond=None)[0]
-    if np.linalg.norm(step) > fit["reach"]:
-        step *= fit["reach"] / np.linalg.norm(step)
-    moved = dict(settings)
-    for n, d, scale in zip(fit["names"], step, fit["scale"]):
-        lo, hi = fit["ranges"][n]
-        moved[n] = float(min(max(float(settings[n]) + d * scale, lo), hi))
-    return moved
-
-
 def plan_from_model(character: str, target, air_time: float, trial, budget: int, progress=None,
                     cancelled=None) -> dict:
     """Plan a jump from the measured jumps: run candidates() one by one (``trial``:
@@ -343,19 +269,6 @@ def plan_from_model(character: str, target, air_time: float, trial, budget: int,
         if any(settings == t[2] for t in tried):       # the same jump measured at two heights: run once
             continue
         if found := run_trial(settings):
-            break
-        fit = None
-        for _ in range(STEP_TRIALS):          # a flight that missed: steps of the local model from it
-            measured = tried[-1][3]
-            if len(tried) >= min(budget, MODEL_TRIALS) or lands_on(measured, target, air_time):
-                break
-            fit = fit or local_model(character, settings, float(target[2]))
-            stepped = local_step(fit, tried[-1][2], measured, target, air_time) if fit else None
-            if stepped is None or any(stepped == t[2] for t in tried):
-                break
-            if found := run_trial(stepped):
-                break
-        if found:
             break
     fell_on_target = [e for e in tried if lands_on(e[3], target, air_time)]
     if not found and fell_on_target:
