@@ -439,7 +439,8 @@ class Vault(Sequence):
         Choice("apparatus", APPARATUS, "horse_1987",
                "what she vaults: the 1987 women's horse of Takei's data (sideways, 1.20 m) or the FIG table"),
         Parameter("low_level", "bool", 0.0, 0.0, 1.0,
-                  "1 = run the tuned settings as set (--set block_hip=...) instead of the character's table"),
+                  "1 = run the tuned settings as set (--set block_hip=...) instead of the character's table, "
+                  "at any run-up speed (unchecked)"),
         settings=VAULT_SETTINGS,
     )
 
@@ -503,13 +504,13 @@ class Vault(Sequence):
                 "pitch": lean, "spin": spin, "com_above_board": CONSTANTS.start_com_height}
 
     def check_feasible(self) -> None:
+        if self.params["low_level"]:
+            return                  # the settings as set, at any run-up speed (how handled_speed is measured)
         speed = self.params["runup_speed"]
         low, high = CONSTANTS.handled_speed
         if not low <= speed <= high:
             raise ParameterError(f"parameter runup_speed={speed:g} m/s is outside what the vault controller handles; "
                                  f"allowed range is [{low:g}, {high:g}] m/s")
-        if self.params["low_level"]:
-            return
         name, strength = self.ctx.character.name, run_strength(self.ctx)
         if calibrated(name, strength) is None:
             limits = "unlimited strength" if strength == "unlimited" else "human torque limits"

@@ -9,7 +9,6 @@ m (dv_z / T + g) beside it."""
 from __future__ import annotations
 
 import argparse
-import math
 
 import numpy as np
 
@@ -41,22 +40,23 @@ def format_table_1(trajectory) -> str:
 
 
 def speed_scan(speeds, character: str = "woman", apparatus: str = "horse_1987") -> list[dict]:
-    """Runs the whole vault at each run-up speed - also outside the offered range (vault_any.json's
-    handled_speed), since the scan is how that range is measured - and returns per speed its
-    outcome, the fall time, the rotation and the bodies on the horse."""
+    """Runs the whole vault with the character's row at each run-up speed - also outside the offered
+    range (vault_any.json's handled_speed), since the scan is how that range is measured: the row's
+    settings as set (``low_level``) - and returns per speed its outcome, the fall time, the rotation
+    and the bodies on the horse."""
     from ...simulate import RunRequest, run
-    from .behaviour import CONSTANTS
-    offered = CONSTANTS.handled_speed
+    from ...errors import ParameterError
+    from .behaviour import calibrated
+    row = calibrated(character, "human")
+    if row is None:
+        raise ParameterError(f"the {character} has no vault settings with human torque limits to scan")
     rows = []
-    try:
-        CONSTANTS.handled_speed = [0.0, math.inf]
-        for speed in speeds:
-            trajectory = run(RunRequest("vault", character, params={"runup_speed": float(speed), "apparatus": apparatus}))
-            m = trajectory.meta["metrics"]
-            rows.append({"speed": float(speed), "outcome": trajectory.meta["outcome"], "fall_time": m.get("fall_time"),
-                         "rotation": m["rotation"], "horse_fault": m.get("horse_fault")})
-    finally:
-        CONSTANTS.handled_speed = offered
+    for speed in speeds:
+        params = {**row["settings"], "low_level": 1.0, "runup_speed": float(speed), "apparatus": apparatus}
+        trajectory = run(RunRequest("vault", character, params=params))
+        m = trajectory.meta["metrics"]
+        rows.append({"speed": float(speed), "outcome": trajectory.meta["outcome"], "fall_time": m.get("fall_time"),
+                     "rotation": m["rotation"], "horse_fault": m.get("horse_fault")})
     return rows
 
 
