@@ -235,7 +235,8 @@ def test_a_rider_not_measured_is_refused_in_one_line(character):
 
 @pytest.mark.parametrize("character, params, limit", [
     ("woman", {"course": "turn"}, "straight, slalom"), ("woman", {"speed": 5.5}, "<= 5 m/s"),
-    ("woman", {"gear": 3.0}, "gear <= 2.6"), ("woman", {"course": "slalom", "speed": 4.5}, "3-4 m/s"),
+    ("woman", {"gear": 3.0}, "gear <= 2.6"), ("woman", {"course": "slalom", "speed": 4.5}, "3.3-4 m/s"),
+    ("woman", {"course": "slalom", "speed": 4.0}, "gate_offset <= 0.76 m"),
     ("woman", {"speed": 5.0, "heading": 0.5}, "<= 4.5 m/s"), ("imaginary_cyclist", {"speed": 5.5}, "<= 5 m/s"),
     ("imaginary_cyclist", {"course": "coast"}, "straight, slalom")])
 def test_a_rider_is_offered_only_what_was_measured_for_it(character, params, limit):
@@ -245,6 +246,20 @@ def test_a_rider_is_offered_only_what_was_measured_for_it(character, params, lim
     with pytest.raises(ParameterError) as error:
         run(RunRequest("bicycle", character, params=params, duration=0.05))
     assert "\n" not in str(error.value) and limit in str(error.value)
+
+
+def test_a_riders_table_gives_its_own_knobs_and_constants():
+    """The woman's table replaces what a request left at the schema's defaults (her steering gains,
+    her look-ahead); what the user set is kept; the man's are bicycle_any.json's."""
+    from sim_core.character.spec import load_character
+    from sim_core.request import behaviour_params
+    from sim_core.skills.bicycle.behaviour import Bicycling, rider_settings
+    assert behaviour_params("bicycle", "woman")["lookahead_time"] == 1.2
+    assert behaviour_params("bicycle", "man")["lookahead_time"] == Bicycling.schema.by_name["lookahead_time"].default
+    params = Bicycling.schema.validate({"roll_gain": 3.0})
+    hers = rider_settings(params, load_character("woman"))
+    assert hers["roll_gain"] == 3.0 and hers["yaw_gain"] < params["yaw_gain"] and hers["lookahead_time"] == 1.2
+    assert rider_settings(params, load_character("man")) is params
 
 
 @pytest.mark.parametrize("character", ["woman", "imaginary_cyclist"])

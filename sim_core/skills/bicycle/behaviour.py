@@ -65,7 +65,9 @@ BICYCLE_RANGES = Schema(
     Parameter("arm_gain_scale", "1", 1.0, 0.2, 5.0, "the arms' servo gains (kp and kv) while riding are the rider's times this (the arms steer the bicycle's fork through the hands, a load that does not shrink with the rider; 1: the rider's own)"),
     Parameter("max_speed", "m/s", 0.5, 0.5, 8.0, "the fastest speed a course may command (faster was not measured for the rider; course.py refuses it)"),
     Parameter("max_gear", "1", 0.5, 0.5, 5.0, "the highest gear offered (higher was not measured for the rider; course.py refuses it)"),
+    Parameter("min_slalom_speed", "m/s", 0.5, 0.5, 8.0, "the slalom is offered from this speed (and course.py's measured region; slower, the rider fell)"),
     Parameter("max_slalom_speed", "m/s", 0.5, 0.5, 8.0, "the slalom is offered up to this speed (and course.py's measured region; faster, the rider missed gates)"),
+    Parameter("max_slalom_acceleration", "m/s^2", 0.1, 0.1, 10.0, "the slalom is offered up to this peak lateral acceleration of its sine (and course.py's; more, the rider fell or missed gates)"),
     Parameter("speed_gain", "N m s/m", 0.0, 0.0, 5000.0, "eq. 7 k_v: crank torque per m/s of speed error"),
     Parameter("max_crank_torque", "N m", 0.0, 0.0, 1000.0, "limit of eq. 7's crank torque, driving or braking (a rider's strength)"),
     Parameter("slope_feedforward", "1", 0.0, 0.0, 2.0, "share of the crank torque that holds rider and bicycle on the slope the frame is on (m g sin r / gear) added to eq. 7 (0: the seed's eq. 7)"),
@@ -140,12 +142,21 @@ def riders() -> list[str]:
     return sorted({SIZED_FOR, *characters_of("bicycle")})
 
 
+def rider_knobs(character: str) -> dict:
+    """The animator parameters whose default the rider's table replaces (its "knobs": the woman's
+    look-ahead), checked against the schema; {} for the man or a rider with no table."""
+    table = load("bicycle", character) if character != SIZED_FOR else None
+    return {n: Bicycling.schema.by_name[n].validate(v) for n, v in (table or {}).get("knobs", {}).items()}
+
+
 def rider_settings(params: dict, character) -> dict:
-    """``params`` with the rider's own constants (bicycle_<rider>.json) for the settings the request
-    left at bicycle_any.json's (a value the user set is kept, as running does); the man's unchanged."""
+    """``params`` with the rider's own constants and knobs (bicycle_<rider>.json) for those the
+    request left at the schema's defaults (bicycle_any.json's; a value the user set is kept, as
+    running does); the man's unchanged."""
     if character is None or character.name == SIZED_FOR or load("bicycle", character.name) is None:
         return params
-    defaults, own = load("bicycle", "any")["constants"], bicycle_constants(character.name)
+    defaults = Bicycling.schema.defaults()
+    own = {**bicycle_constants(character.name), **rider_knobs(character.name)}
     return {**params, **{n: v for n, v in own.items() if params.get(n, defaults[n]) == defaults[n]}}
 
 
@@ -281,6 +292,11 @@ class Bicycling(Behaviour):
         match_velocities(model, data, pairs, rider_dofs)
         return {"mounted": True, "rolling_speed": course.start_speed, "crank_angle": MOUNT_CRANK_ANGLE,
                 "attachment_gaps": {n: float(g) for n, g in zip(pairs.names, gaps)}}
+
+    @classmethod
+    def character_defaults(cls, character: str) -> dict:
+        """The rider's table's knobs (rider_knobs)."""
+        return rider_knobs(character)
 
     def __init__(self, params, ctx):
         super().__init__(rider_settings(params, ctx.character), ctx)
