@@ -222,14 +222,62 @@ def test_a_cyclist_rides_beside_a_runner_in_a_scene_and_replays_bit_for_bit(tmp_
     assert largest_difference(loaded, replay(loaded)) == 0.0
 
 
-@pytest.mark.parametrize("character", ["woman", "child", "imaginary_cyclist", "imaginary_runner"])
-def test_a_rider_who_falls_is_refused_in_one_line(character):
-    """The woman falls at 3 m/s on a frame sized for her with Fig. 6's gains, the others fell sooner
-    on the man's: refused before anything runs."""
+@pytest.mark.parametrize("character", ["child", "imaginary_runner"])
+def test_a_rider_not_measured_is_refused_in_one_line(character):
+    """Riders with no bicycle table (the child fell at 4 m/s on the 26-inch bicycle) are refused
+    before anything runs, naming the riders who ride."""
     with pytest.raises(ParameterError) as error:
         run(RunRequest("bicycle", character, duration=0.05))
     message = str(error.value)
-    assert "\n" not in message and character in message and "not calibrated" in message and "man" in message
+    assert "\n" not in message and character in message and "not calibrated" in message
+    assert all(rider in message for rider in ("man", "woman", "imaginary_cyclist"))
+
+
+@pytest.mark.parametrize("character, params, limit", [
+    ("woman", {"course": "turn"}, "straight, slalom"), ("woman", {"speed": 5.5}, "<= 5 m/s"),
+    ("woman", {"gear": 3.0}, "gear <= 2.6"), ("woman", {"course": "slalom", "speed": 4.5}, "3.3-4 m/s"),
+    ("woman", {"course": "slalom", "speed": 4.0}, "gate_offset <= 0.76 m"),
+    ("woman", {"speed": 5.0, "heading": 0.5}, "<= 4.5 m/s"), ("imaginary_cyclist", {"speed": 5.5}, "<= 5 m/s"),
+    ("imaginary_cyclist", {"course": "coast"}, "straight, slalom")])
+def test_a_rider_is_offered_only_what_was_measured_for_it(character, params, limit):
+    """The woman and the imaginary cyclist ride the straight and the slalom in gear 2.6 at 3-5 m/s
+    (the woman's slalom to 4 m/s, her new headings to 4.5 m/s): the rest is refused in one line
+    naming the limit of the rider's table."""
+    with pytest.raises(ParameterError) as error:
+        run(RunRequest("bicycle", character, params=params, duration=0.05))
+    assert "\n" not in str(error.value) and limit in str(error.value)
+
+
+def test_a_riders_table_gives_its_own_knobs_and_constants():
+    """The woman's table replaces what a request left at the schema's defaults (her steering gains,
+    her look-ahead); what the user set is kept; the man's are bicycle_any.json's."""
+    from sim_core.character.spec import load_character
+    from sim_core.request import behaviour_params
+    from sim_core.skills.bicycle.behaviour import Bicycling, rider_settings
+    assert behaviour_params("bicycle", "woman")["lookahead_time"] == 1.2
+    assert behaviour_params("bicycle", "man")["lookahead_time"] == Bicycling.schema.by_name["lookahead_time"].default
+    params = Bicycling.schema.validate({"roll_gain": 3.0})
+    hers = rider_settings(params, load_character("woman"))
+    assert hers["roll_gain"] == 3.0 and hers["yaw_gain"] < params["yaw_gain"] and hers["lookahead_time"] == 1.2
+    assert rider_settings(params, load_character("man")) is params
+
+
+@pytest.mark.parametrize("character", ["woman", "imaginary_cyclist"])
+def test_a_rider_with_a_table_rides_on_a_frame_sized_for_it(character):
+    """Issue 30's checks, read off a short ride at 4 m/s (docs/bicycle.md, riders other than the man:
+    60 s rides at 3, 4, 5 m/s, the heading step and the slalom): no fall, |roll| < 20 deg, the speed
+    within 5 %, hands and feet within 3 cm of grips and pedals, the seat pivot within 1 mm; the
+    rider's own steering gains, arm gains and feet attachments are on."""
+    from sim_core.skills.bicycle.behaviour import foot_time
+    from sim_core.character.spec import load_character
+    trajectory = run(RunRequest("bicycle", character, params={"speed": 4.0}, duration=6.0))
+    m = trajectory.meta["metrics"]
+    assert not m["fell"] and m["max_abs_roll_deg"] < 20.0
+    assert m["mean_speed_last_5s"] == pytest.approx(4.0, rel=0.05)
+    assert m["max_hand_gap"] < 0.03 and m["max_foot_gap"] < 0.03 and m["max_seat_gap"] < 0.001
+    assert trajectory.meta["world"]["bicycle"]["foot_time"] == foot_time(load_character(character)) < 0.02
+    audit(trajectory)
+    assert largest_difference(trajectory, replay(trajectory)) == 0.0     # the arms' gains are in the edit log
 
 
 def test_a_curve_ahead_asks_for_its_steady_lean():

@@ -132,7 +132,8 @@ class Bicycle:
     the bicycle stands (rear contact at (x, y), facing ``heading`` rad from +X) and the prefix of
     the rider attached to it (None: riderless); ``freewheel``: the chain drives through a freewheel
     instead of the fixed gear; ``fit``: the saddle's height above the bottom bracket and the grips'
-    place from the saddle as a share of the man's (a smaller rider's frame size: his leg length ratio)."""
+    place from the saddle as a share of the man's (a smaller rider's frame size: his leg length ratio);
+    ``foot_time``: the feet's attachments' time constant (s; None: LIMB_SOLREF's, the man's)."""
     gear: float = DEFAULT_GEAR
     x: float = 0.0
     y: float = 0.0
@@ -140,10 +141,12 @@ class Bicycle:
     rider: str | None = None
     freewheel: bool = False
     fit: float = 1.0
+    foot_time: float | None = None
 
     def to_dict(self) -> dict:
         return {"gear": self.gear, "x": self.x, "y": self.y, "heading": self.heading, "rider": self.rider,
-                "freewheel": self.freewheel, **({"fit": self.fit} if self.fit != 1.0 else {})}
+                "freewheel": self.freewheel, **({"fit": self.fit} if self.fit != 1.0 else {}),
+                **({"foot_time": self.foot_time} if self.foot_time is not None else {})}
 
 
 @dataclass(frozen=True)
@@ -420,7 +423,7 @@ def attach_rider(spec: mujoco.MjSpec, bicycle: Bicycle, character) -> None:
         spec.body(prefix + body).add_site(name=rider_site, pos=list(points[name] - body_origin(character, body)))
         eq = spec.add_equality(name=f"{prefix}attach_{name}", type=mujoco.mjtEq.mjEQ_CONNECT,
                                objtype=mujoco.mjtObj.mjOBJ_SITE, name1=rider_site, name2=bike_site)
-        eq.solref = list(solref)
+        eq.solref = [bicycle.foot_time, solref[1]] if bicycle.foot_time is not None and name.startswith("foot") else list(solref)
     for b in character.bodies:
         for part in ("frame", "fork", "front", "rear", "crank"):
             spec.add_exclude(bodyname1=prefix + b["name"], bodyname2=NAMES[part])

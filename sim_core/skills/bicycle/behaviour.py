@@ -34,12 +34,13 @@ import numpy as np
 from ...control.behaviour import Behaviour, register
 from ...control.path import MAX_POINTS, PathFollower, validate_path
 from ...schema import Parameter, Points, Schema
-from ...tuned import TableType, load, register as register_table
+from ...tuned import TableType, characters_of, load, register as register_table
 from ...tuned.settings import SkillSchema, with_defaults
 from ...character.dimensions import fig3_measures
 from ...character.spec import load_character
 from ...errors import ParameterError
-from ...world.bicycle import BRAKE_MAX_TORQUE, WHEEL_RADIUS, CRANK_LENGTH, DEFAULT_GEAR, NAMES, Bicycle, BicycleView
+from ...world.bicycle import (BRAKE_MAX_TORQUE, WHEEL_RADIUS, CRANK_LENGTH, DEFAULT_GEAR, LIMB_SOLREF, NAMES, Bicycle,
+                              BicycleView)
 from .assess import STOPPED_SPEED
 from .course import COURSE, FREEWHEEL_COURSES, course_for
 from .steering import steering_gains
@@ -50,7 +51,6 @@ FOOT_IK_ITERATIONS = 5              # definition: damped least-squares steps a t
 FOOT_IK_DAMPING = 1e-3              # definition: lambda^2 of that solve
 HIP_Y, KNEE = 0, 3                  # definition: the hip's flexion and the knee's places in the left leg's servos below
 SIZED_FOR = "man"                   # definition: the rider the bicycle's saddle and bar are set for (world/bicycle.py)
-RIDERS = ("man",)                   # criterion: the riders measured to ride (docs/bicycle.md: the others fall)
 MIN_LOOKAHEAD_SPEED = 1.0           # definition: m/s, the speed below which the look-ahead distance stops shrinking
 MOUNT_CRANK_ANGLE = math.pi / 2      # the start's crank: right pedal forward, left back (horizontal)
 LEG_JOINTS = {"r": ("hip_r_y", "knee_r_y"), "l": ("hip_l_y", "knee_l_y")}
@@ -62,6 +62,12 @@ ARM_JOINTS = {"r": ("shoulder_r_x", "shoulder_r_y", "shoulder_r_z", "elbow_r_y",
 # the constants of the bicycling laws: their values are data (bicycle_any.json "constants", the
 # defaults below are replaced by them); each range is a sanity bound a table row is checked against
 BICYCLE_RANGES = Schema(
+    Parameter("arm_gain_scale", "1", 1.0, 0.2, 5.0, "the arms' servo gains (kp and kv) while riding are the rider's times this (the arms steer the bicycle's fork through the hands, a load that does not shrink with the rider; 1: the rider's own)"),
+    Parameter("max_speed", "m/s", 0.5, 0.5, 8.0, "the fastest speed a course may command (faster was not measured for the rider; course.py refuses it)"),
+    Parameter("max_gear", "1", 0.5, 0.5, 5.0, "the highest gear offered (higher was not measured for the rider; course.py refuses it)"),
+    Parameter("min_slalom_speed", "m/s", 0.5, 0.5, 8.0, "the slalom is offered from this speed (and course.py's measured region; slower, the rider fell)"),
+    Parameter("max_slalom_speed", "m/s", 0.5, 0.5, 8.0, "the slalom is offered up to this speed (and course.py's measured region; faster, the rider missed gates)"),
+    Parameter("max_slalom_acceleration", "m/s^2", 0.1, 0.1, 10.0, "the slalom is offered up to this peak lateral acceleration of its sine (and course.py's; more, the rider fell or missed gates)"),
     Parameter("speed_gain", "N m s/m", 0.0, 0.0, 5000.0, "eq. 7 k_v: crank torque per m/s of speed error"),
     Parameter("max_crank_torque", "N m", 0.0, 0.0, 1000.0, "limit of eq. 7's crank torque, driving or braking (a rider's strength)"),
     Parameter("slope_feedforward", "1", 0.0, 0.0, 2.0, "share of the crank torque that holds rider and bicycle on the slope the frame is on (m g sin r / gear) added to eq. 7 (0: the seed's eq. 7)"),
@@ -125,9 +131,52 @@ def _bicycle_rows(body: dict):
 
 
 def bicycle_constants(character: str = "any") -> dict:
-    """The constants of the bicycling laws: bicycle_any.json's for every rider (no per-character
-    table yet)."""
-    return load("bicycle", "any")["constants"]
+    """The constants of the bicycling laws: bicycle_any.json's (the man's), with the rider's own
+    table's (bicycle_<rider>.json, a subset) over them."""
+    own = load("bicycle", character) if character != "any" else None
+    return {**load("bicycle", "any")["constants"], **(own["constants"] if own else {})}
+
+
+def riders() -> list[str]:
+    """The riders measured to ride: the man (bicycle_any.json is his) and every rider with a table."""
+    return sorted({SIZED_FOR, *characters_of("bicycle")})
+
+
+def rider_knobs(character: str) -> dict:
+    """The animator parameters whose default the rider's table replaces (its "knobs": the woman's
+    look-ahead), checked against the schema; {} for the man or a rider with no table."""
+    table = load("bicycle", character) if character != SIZED_FOR else None
+    return {n: Bicycling.schema.by_name[n].validate(v) for n, v in (table or {}).get("knobs", {}).items()}
+
+
+def rider_settings(params: dict, character) -> dict:
+    """``params`` with the rider's own constants and knobs (bicycle_<rider>.json) for those the
+    request left at the schema's defaults (bicycle_any.json's; a value the user set is kept, as
+    running does); the man's unchanged."""
+    if character is None or character.name == SIZED_FOR or load("bicycle", character.name) is None:
+        return params
+    defaults = Bicycling.schema.defaults()
+    own = {**bicycle_constants(character.name), **rider_knobs(character.name)}
+    return {**params, **{n: v for n, v in own.items() if params.get(n, defaults[n]) == defaults[n]}}
+
+
+def check_rider(params: dict, character) -> None:
+    """Only the riders measured to ride (riders), on the courses measured for them (the rider's
+    table's "courses"; its speeds and gears are course.py's checks of its constants); refused in one
+    line naming what is offered."""
+    name = SIZED_FOR if character is None else character.name
+    offered = riders()
+    if name not in offered:
+        raise ParameterError(f"bicycle is not calibrated for the {name} (calibrated for: {', '.join(offered)}): "
+                             f"not measured to ride; the child, on the 26-inch bicycle with its frame sized to her "
+                             f"0.39 m legs, fell 2.6 s into a ride at 4 m/s (docs/bicycle.md, riders other than the man)")
+    table = load("bicycle", name) if name != SIZED_FOR else None
+    if table is None:
+        return
+    course = COURSE.option(params["course"])
+    if course not in table["courses"]:
+        raise ParameterError(f"the {name} rides the bicycle's {', '.join(table['courses'])} course(s) only (asked: "
+                             f"{course}); the others were not measured for the {name} (docs/bicycle.md)")
 
 
 
@@ -141,6 +190,19 @@ def frame_fit(character) -> float:
     if character is None or character.name == SIZED_FOR:
         return 1.0
     return fig3_measures(character)["leg length"] / fig3_measures(load_character(SIZED_FOR))["leg length"]
+
+
+def foot_time(character) -> float | None:
+    """The feet's attachments' time constant for ``character`` (Bicycle.foot_time): the man's
+    (LIMB_SOLREF) times the square root of its leg mass over the man's (Fig. 3's), so that a
+    lighter leg's attachment holds the same pedal force with the same stretch (MuJoCo's soft
+    constraint is as stiff as the effective mass over its time constant squared); None for the man.
+    At the man's 20 ms the imaginary cyclist's 5 kg legs left their pedals by 3.1-5.3 cm at the top
+    of the stroke (docs/bicycle.md, riders other than the man)."""
+    if character is None or character.name == SIZED_FOR:
+        return None
+    legs = fig3_measures(character)["leg mass"] / fig3_measures(load_character(SIZED_FOR))["leg mass"]
+    return LIMB_SOLREF[0] * math.sqrt(legs)
 
 
 def mount_posture(c: dict) -> dict[str, float]:
@@ -191,9 +253,11 @@ class Bicycling(Behaviour):
     def scene(cls, params, world, character=None):
         """The requested world with the bicycle (at the origin facing +X, its gear, the rider
         attached) and the course's hill, if it has one."""
+        params = rider_settings(params, character)
+        check_rider(params, character)
         course = course_for(params)
         bicycle = Bicycle(gear=params["gear"], rider="", freewheel=course.name in FREEWHEEL_COURSES,
-                          fit=frame_fit(character))
+                          fit=frame_fit(character), foot_time=foot_time(character))
         return dataclasses.replace(world, bicycle=bicycle, hill=course.hill)
 
     @classmethod
@@ -202,6 +266,7 @@ class Bicycling(Behaviour):
         the saddle and the palms and balls of the feet on the grips and pedals (crank
         horizontal), then the rolling start at the commanded speed. ``prefix``: the rider's (a
         scene's actor); nobody else is moved."""
+        params = rider_settings(params, character)
         bike = BicycleView.of(model)
         bike.set_crank(data, MOUNT_CRANK_ANGLE)
         mujoco.mj_kinematics(model, data)
@@ -228,14 +293,17 @@ class Bicycling(Behaviour):
         return {"mounted": True, "rolling_speed": course.start_speed, "crank_angle": MOUNT_CRANK_ANGLE,
                 "attachment_gaps": {n: float(g) for n, g in zip(pairs.names, gaps)}}
 
+    @classmethod
+    def character_defaults(cls, character: str) -> dict:
+        """The rider's table's knobs (rider_knobs)."""
+        return rider_knobs(character)
+
+    def __init__(self, params, ctx):
+        super().__init__(rider_settings(params, ctx.character), ctx)
+
     def check_feasible(self):
-        """Only the riders measured to ride are offered."""
-        rider = self.ctx.character.name
-        if rider not in RIDERS:
-            raise ParameterError(f"bicycle is not calibrated for the {rider} (calibrated for: {', '.join(RIDERS)}): "
-                                 f"its steering gains are set for the man; the woman, on a frame sized to her leg "
-                                 f"length with the gains scaled by Fig. 6, fell 7.2 s into a ride at 3 m/s and "
-                                 f"leaned 24 deg at 5 m/s (docs/bicycle.md)")
+        """Only the riders measured to ride are offered (check_rider)."""
+        check_rider(self.params, self.ctx.character)
 
     def start(self, t):
         """Look the bicycle and the limbs up; the targets start at the mounted pose."""
@@ -261,6 +329,11 @@ class Bicycling(Behaviour):
         self.leg_dofs = {side: servos.dof_adr[i] for side, i in self.leg_servos.items()}
         self.kp = servos.default_kp
         self.lag = servos.default_kv / servos.default_kp          # s: a PD servo's lag behind its target
+        if self.params["arm_gain_scale"] != 1.0:      # the arms steer the fork: their gains for the bicycle, not the rider
+            arms = np.concatenate(list(self.arm_servos.values()))
+            self.kp = self.kp.copy()
+            self.kp[arms] *= self.params["arm_gain_scale"]
+            servos.set_gains(arms, self.kp[arms], servos.default_kv[arms] * self.params["arm_gain_scale"])
         self.previous_ik = None
         self.ik_velocity = np.zeros(len(self.limb_servos))
         self.fork_command = 0.0

@@ -87,7 +87,8 @@ def course_for(p: dict) -> Course:
         path = turn_path(p["turn_angle"], p["turn_after"], p["turn_radius"], RUN_OUT)
         _check_turn(p["speed"], p["turn_radius"], "turn_radius")
     elif name == "slalom":
-        _check_slalom(p["speed"], p["gate_spacing"], p["gate_offset"], p["gate_width"])
+        _check_slalom(p["speed"], p["gate_spacing"], p["gate_offset"], p["gate_width"],
+                      (p["min_slalom_speed"], p["max_slalom_speed"]), p["max_slalom_acceleration"])
         path, gates = slalom(p["gate_count"], p["gate_spacing"], p["gate_offset"], p["turn_after"])
     elif name == "speed_steps":
         speeds = ((0.0, p["speed"]), (p["step_time"], p["second_speed"]), (2 * p["step_time"], p["third_speed"]))
@@ -149,10 +150,16 @@ def _check_pedalling(p: dict, speeds: list[float], start_speed: float) -> None:
     if slowest < p["min_speed"]:
         raise ParameterError(f"the bicycle is ridden at speed >= {p['min_speed']:g} m/s (asked: {slowest:g} m/s): "
                              f"slower rides were measured to fall (docs/bicycle.md, random requests over the panel)")
+    if p["gear"] > p["max_gear"]:
+        raise ParameterError(f"the bicycle is ridden at gear <= {p['max_gear']:g} (asked: {p['gear']:g}): higher gears were "
+                             f"not measured for this rider (docs/bicycle.md, riders other than the man)")
     if p["gear"] < p["min_gear"]:
         raise ParameterError(f"the bicycle is ridden at gear >= {p['min_gear']:g} (asked: {p['gear']:g}): in lower gears the "
                              f"legs were measured to lose more than 5 % of the speed (docs/bicycle.md, random requests over the panel)")
     fastest = max(*speeds, start_speed)
+    if fastest > p["max_speed"]:
+        raise ParameterError(f"the bicycle is ridden at speed <= {p['max_speed']:g} m/s (asked: {fastest:g} m/s): faster "
+                             f"was not measured for this rider (docs/bicycle.md, riders other than the man)")
     cadence = fastest / (2 * math.pi * WHEEL_RADIUS * p["gear"])
     if cadence > p["max_cadence"]:
         raise ParameterError(f"the cadence v / (2 pi r gear) is ridden up to {p['max_cadence']:g} rev/s (asked: {cadence:.2f} "
@@ -229,30 +236,33 @@ def slalom_acceleration(speed: float, spacing: float, offset: float) -> float:
     return offset * (math.pi * speed / spacing) ** 2
 
 
-def slalom_widest_offset(speed: float, spacing: float) -> float:
-    """The largest gate offset (m) ridden through the gates at this speed and spacing."""
-    return min(SLALOM_MAX_OFFSET, SLALOM_MAX_ACCELERATION / slalom_acceleration(speed, spacing, 1.0))
+def slalom_widest_offset(speed: float, spacing: float, most: float = SLALOM_MAX_ACCELERATION) -> float:
+    """The largest gate offset (m) ridden through the gates at this speed and spacing (``most``: the
+    sine's largest lateral acceleration, a rider's table may ask less)."""
+    return min(SLALOM_MAX_OFFSET, min(most, SLALOM_MAX_ACCELERATION) / slalom_acceleration(speed, spacing, 1.0))
 
 
-def _check_slalom(speed: float, spacing: float, offset: float, width: float) -> None:
+def _check_slalom(speed: float, spacing: float, offset: float, width: float, speeds: tuple, most: float) -> None:
     """The slalom is offered where its gates were measured to be passed (docs/bicycle.md, courses:
     54 slaloms on a grid from 2.5 to 7 m/s and 24 drawn at random): at 3-5.5 m/s every sine with
     offsets up to 1 m asking for at most SLALOM_MAX_ACCELERATION was ridden through gates 1.5 m wide;
     sines asking for more, offsets of 1.5 m, 2.5 and 6-7 m/s missed gates or fell. Outside it the
-    request is refused before it runs, naming what would do."""
-    low, high = SLALOM_SPEEDS
+    request is refused before it runs, naming what would do. ``speeds``, ``most``: the rider's table's
+    min_slalom_speed, max_slalom_speed and max_slalom_acceleration (the woman fell below 3.3 m/s and
+    missed gates at 5 m/s)."""
+    low, high = max(SLALOM_SPEEDS[0], speeds[0]), min(SLALOM_SPEEDS[1], speeds[1])
     if not low <= speed <= high:
         raise ParameterError(f"the slalom is ridden at speed {low:g}-{high:g} m/s (asked: {speed:g} m/s); "
                              f"elsewhere the rider misses gates (docs/bicycle.md, courses)")
     if width < SLALOM_MIN_WIDTH:
         raise ParameterError(f"the slalom's gates are ridden through with gate_width >= {SLALOM_MIN_WIDTH:g} m "
                              f"(asked: {width:g} m): the rider crosses a gate up to 0.6 m from its centre")
-    widest = slalom_widest_offset(speed, spacing)
+    widest = slalom_widest_offset(speed, spacing, most)
     if offset > widest:
         raise ParameterError(f"the slalom at speed {speed:g} m/s with gate_spacing {spacing:g} m is ridden through its "
                              f"gates with gate_offset <= {widest:.2f} m (asked: {offset:g} m): offsets up to "
                              f"{SLALOM_MAX_OFFSET:g} m whose sine's lateral acceleration stays within "
-                             f"{SLALOM_MAX_ACCELERATION:g} m/s^2; a wider gate_spacing or a lower speed would do")
+                             f"{min(most, SLALOM_MAX_ACCELERATION):g} m/s^2; a wider gate_spacing or a lower speed would do")
 
 
 def _check_turn(speed: float, radius: float, names: str) -> None:
