@@ -677,8 +677,9 @@ LEAP_SETTINGS = Schema(
     Parameter("crouch_arms", "rad", 0.0, -0.8, 0.0, "shoulder flexion in the crouch (back: -)"),
     Parameter("thrust_lean", "m", 0.0, -0.2, 0.1, "COM ahead (+) of the feet along the thrust's extension"),
     Parameter("spin_hold", "rad/(kg m²/s)", 0.0, 0.0, 0.5, "the hips turn against the spin about the vertical"),
-    Parameter("turn_first", "1", 0.0, -1.0, 1.0,
-              "above 0.5 the leap first turns a quarter to the right by hops (turn.py), below -0.5 to the left"),
+    Parameter("turn_first", "1", 0.0, -1.5, 1.5,
+              "above 0.5 the leap first turns a quarter to the right by hops (turn.py; 1: the measured turn, "
+              "each hop's hip rotation scaled by it), below -0.5 to the left"),
 )
 LEAP_MEASURED = ("com_rise", "com_travel", "peak_thrust_grf_body_weights")   # columns a calibration measured
 
@@ -820,10 +821,10 @@ LOW_LEVEL_SETTINGS = Schema(
               "the hips turn against the body's angular momentum about the vertical in the crouch and the "
               "thrust, this much hip rotation per kg m²/s (0 = not held): a sideways jump's push at the "
               "forefeet, ahead of the COM, twists the body (low_level only)"),
-    Parameter("turn_first", "1", 0.0, -1.0, 1.0,
+    Parameter("turn_first", "1", 0.0, -1.5, 1.5,
               "above 0.5 the leap first turns a quarter to the right (clockwise from above) by hops that turn, "
-              "below -0.5 to the left, then leaps forward in its new heading: a sideways jump made a forward one "
-              "(0 = no turn; low_level only)"),
+              "below -0.5 to the left (1: the measured quarter turn, more or less turns each hop more or less), "
+              "then leaps forward in its new heading: a sideways jump made a forward one (0 = no turn; low_level only)"),
     Parameter("arm_swing", "rad", 1.0, 0.0, 3.2, "forward arm swing during the thrust (low_level only)"),
     Parameter("crouch_arms", "rad", 0.0, -0.8, 0.0,
               "arms swung back (-) in the crouch, to swing forward in the thrust; keeps the hands off "

@@ -41,13 +41,13 @@ STEP_PREFIX = "turn_"        # the hops' steps are named turn_crouch, turn_thrus
 
 def turn_steps(ctx: ControlContext, direction: float, sequence) -> list[Step]:
     """The steps of a quarter turn by hops, to the right for ``direction`` > 0.5, to the left below
-    -0.5, none else; ``sequence`` is the Sequence running them (its ``previous``, the landing just
+    -0.5 (each hop's hip rotation ``direction`` x hop_turn), none else; ``sequence`` is the Sequence running them (its ``previous``, the landing just
     ended, starts each balance)."""
     if abs(direction) <= 0.5:                 # definition: the setting is a switch, its sign the side
         return []
     c, leap = CONSTANTS, leap_constants(ctx.character.name)
     hop = SimpleNamespace(**vertical_row(load_mapping(ctx.character.name)[vertical_key(ctx)], c.hop_height))
-    turn = c.hop_turn if direction > 0 else -c.hop_turn
+    turn = direction * c.hop_turn             # +-1: the measured quarter turn; more or less turns more or less
     stand = standing_hip_height(ctx.character)
 
     def crouch(t):
