@@ -89,7 +89,7 @@ class RunRequest:
         character = self.character if isinstance(self.character, CharacterSpec) else load_character(self.character)
         cls = behaviour_class(self.behaviour)
         params = cls.schema.validate(self.params)
-        duration = cls.default_duration if self.duration is None else self.duration
+        duration = cls.duration_for(params, character.name, self.strength) if self.duration is None else self.duration
         if not (isinstance(duration, (int, float)) and math.isfinite(duration) and 0.01 <= duration <= 3600):
             raise ParameterError(f"duration={duration!r} s is out of range; allowed range is [0.01, 3600] s")
         if not (self.strength in ("human", "unlimited") or

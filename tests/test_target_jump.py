@@ -146,6 +146,18 @@ def test_sideways_jump_lands_on_the_target(character, y):
     _planned_jump(character, f"{y} m sideways", target_y=y, air_time=SIDEWAYS_AIR_TIME)
 
 
+@pytest.mark.parametrize("y, air_time", ((-1.3, 0.5), (1.3, 0.45)))
+def test_a_jump_that_turns_first_lands_sideways_as_a_forward_one(y, air_time):
+    """turn_first: two hops turn the man a quarter toward the target (control/turn.py), then the leap
+    runs forward; the run is longer by the turn (JumpToTarget.duration_for) and measured from the
+    jump's own crouch, so its flight is the jump's, not a hop's."""
+    trajectory = _planned_jump("man", f"{y} m sideways after a turn", target_y=y, air_time=air_time)
+    names = [name for _, name in trajectory.meta["phase_events"]]
+    assert names.count("turn_thrust") == 2 and names.index("crouch") > names.index("turn_settle")
+    q = trajectory.arrays["qpos"][-1, 3:7]
+    assert abs(np.degrees(2 * np.arctan2(q[3], q[0])) - np.copysign(90, y)) < 15, "it ends facing the target"
+
+
 def test_a_restarted_search_starts_from_the_stored_plan_nearest_the_target():
     """plan_jump(restart=N) does not continue the request's own earlier search: it starts from the
     stored plan found nearest the target (here the target's own, so its first trial repeats it),

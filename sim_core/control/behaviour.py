@@ -80,6 +80,11 @@ class Behaviour:
         self.phase_events.append((float(t), name))
 
     @classmethod
+    def duration_for(cls, params: dict, character: str, strength) -> float:
+        """How long a run of these parameters lasts when its request names no duration."""
+        return cls.default_duration
+
+    @classmethod
     def morph_target(cls, params: dict) -> str | None:
         """The character the body turns into during the run (None: it stays itself)."""
         return None

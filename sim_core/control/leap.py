@@ -134,11 +134,13 @@ class LeapThrust(Behaviour):
     to send the force past the COM and set the somersault rate (§4.3); ``liftoff_roll`` likewise
     abducts them sideways (a sideways jump: + swings the feet to the left, pushing the body right),
     which sets the roll rate; ``spin_hold`` turns the hips against the body's angular momentum about
-    the vertical while the feet are down, as the crouch's Balance ``spin_kp`` does (a sideways jump)."""
+    the vertical while the feet are down, as the crouch's Balance ``spin_kp`` does (a sideways jump);
+    ``liftoff_turn`` rotates both hips alike by lift-off, which turns the body about the vertical
+    against the planted feet (+ to the right, clockwise from above: a hop that turns, turn.py)."""
 
     def __init__(self, params, ctx: ControlContext, crouch_height: float, timing=None,
                  ankle_gain=None, liftoff_hip=0.0, arm_swing=None, stand_height=None,
-                 thrust_damping=None, thrust_lean=0.0, liftoff_roll=0.0, spin_hold=0.0):
+                 thrust_damping=None, thrust_lean=0.0, liftoff_roll=0.0, spin_hold=0.0, liftoff_turn=0.0):
         super().__init__(params, ctx)
         self.constants = leap_constants(ctx.character.name)
         c = self.constants
@@ -153,6 +155,7 @@ class LeapThrust(Behaviour):
         self.thrust_lean = thrust_lean
         self.liftoff_roll = liftoff_roll
         self.spin_hold = spin_hold
+        self.liftoff_turn = liftoff_turn
 
     def start(self, t: float) -> None:
         s = self.ctx.servos
@@ -167,7 +170,7 @@ class LeapThrust(Behaviour):
         t_hip, t_knee, t_ankle = self.timing
         for side, sign in (("r", 1.0), ("l", -1.0)):
             s.move_to(s.indices([f"hip_{side}_x", f"hip_{side}_z", f"ankle_{side}_x"]),
-                      np.array([self.liftoff_roll, 0.0, 0.0]), t_hip, t)
+                      np.array([self.liftoff_roll, self.liftoff_turn, 0.0]), t_hip, t)
             s.move_to(s.indices([f"shoulder_{side}_z"]), sign * self.arm_swing, t_knee, t)
             s.move_to(s.indices([f"elbow_{side}_z"]), sign * self.constants.thrust_elbow, t_knee, t)
         spine = [n for n in s.names if n.startswith("spine") and n.endswith("_y")]
@@ -241,6 +244,9 @@ class Landing(Behaviour):
                   "over this time, along an ease (a long flight lands with the trunk pitched forward: righted "
                   "at once, the hips' push threw the man's 1.64 m jump back into the air, spinning backward); "
                   "0 = at once"),
+        Parameter("untwist", "bool", 0.0, 0.0, 1.0,
+                  "1 = the hips' rotation goes back to 0 in flight, turning the legs under a pelvis that a "
+                  "turning take-off (liftoff_turn) left rotated against them; 0 = held as the take-off left it"),
         Parameter("blend_time", "s", 0.0, 0.0, 0.3,
                   "the joint targets blend from where the landing started to the landing's own over this "
                   "time (opening from a tuck: a gentler move keeps the flight's angular momentum constant "
@@ -266,6 +272,7 @@ class Landing(Behaviour):
                      {"hip_y": ("hip", "y"), "hip_x": ("hip", "x"), "knee": ("knee", "y"),
                       "ankle_y": ("ankle", "y"), "ankle_x": ("ankle", "x")}.items()} for side in "rl"]
         self.knees = s.indices(["knee_r_y", "knee_l_y"])
+        self.hip_rotation = s.indices(["hip_r_z", "hip_l_z"])
         self.stage = "flight"
         self.calibrated_delta = None
         self.last_fx = [None, None]
@@ -435,6 +442,8 @@ class Landing(Behaviour):
                     targets[j["knee"]] = self.knees_touched_at[k]
                 else:
                     targets[j["knee"]] = self.knees_stopped_at[k]
+        if p["untwist"]:
+            targets[self.hip_rotation] = 0.0
         if p["blend_time"] and t - self.started_at < p["blend_time"]:
             share = hermite_scalar((t - self.started_at) / p["blend_time"])
             targets = self.blend_from + (targets - self.blend_from) * share
@@ -468,14 +477,18 @@ def balance_after_landing(ctx: ControlContext, landing: Landing) -> Balance:
                    from_height=height)
 
 
-def leap_assess(trajectory, squat_floor: float | None = None) -> tuple[str, dict]:
+def leap_assess(trajectory, squat_floor: float | None = None, start: float = 0.0) -> tuple[str, dict]:
     """Outcome of a skill with a flight phase: no fall, the feet stay where they touched down
     (``landing_skid``: the middle of the feet moves at most LANDING_SKID_LIMIT until they settle),
     ends still and standing; measured COM rise and travel, flight time, peak vertical ground
     reaction force (body weights). ``squat_floor``: the pelvis height the crouch before the take-off
-    may go down to (a deliberate squat; see standard_metrics); None = half its standing height."""
+    may go down to (a deliberate squat; see standard_metrics); None = half its standing height.
+    ``start``: the leap's own crouch began then (s; a run that turned first by hops, turn.jump_start):
+    the flights before it are not the leap's."""
     a = trajectory.arrays
     flying = feet_above_surface(trajectory).min(axis=1) > AIRBORNE_HEIGHT
+    if start:
+        flying &= a["time"] >= start
     first = int(np.argmax(flying))                      # the take-off frame (0 when it never flies)
     metrics = standard_metrics(trajectory, squat=(first, squat_floor) if squat_floor is not None else None)
     t = a["time"]
@@ -664,6 +677,9 @@ LEAP_SETTINGS = Schema(
     Parameter("crouch_arms", "rad", 0.0, -0.8, 0.0, "shoulder flexion in the crouch (back: -)"),
     Parameter("thrust_lean", "m", 0.0, -0.2, 0.1, "COM ahead (+) of the feet along the thrust's extension"),
     Parameter("spin_hold", "rad/(kg m²/s)", 0.0, 0.0, 0.5, "the hips turn against the spin about the vertical"),
+    Parameter("turn_first", "1", 0.0, -1.5, 1.5,
+              "above 0.5 the leap first turns a quarter to the right by hops (turn.py; 1: the measured turn, "
+              "each hop's hip rotation scaled by it), below -0.5 to the left"),
 )
 LEAP_MEASURED = ("com_rise", "com_travel", "peak_thrust_grf_body_weights")   # columns a calibration measured
 
@@ -805,6 +821,10 @@ LOW_LEVEL_SETTINGS = Schema(
               "the hips turn against the body's angular momentum about the vertical in the crouch and the "
               "thrust, this much hip rotation per kg m²/s (0 = not held): a sideways jump's push at the "
               "forefeet, ahead of the COM, twists the body (low_level only)"),
+    Parameter("turn_first", "1", 0.0, -1.5, 1.5,
+              "above 0.5 the leap first turns a quarter to the right (clockwise from above) by hops that turn, "
+              "below -0.5 to the left (1: the measured quarter turn, more or less turns each hop more or less), "
+              "then leaps forward in its new heading: a sideways jump made a forward one (0 = no turn; low_level only)"),
     Parameter("arm_swing", "rad", 1.0, 0.0, 3.2, "forward arm swing during the thrust (low_level only)"),
     Parameter("crouch_arms", "rad", 0.0, -0.8, 0.0,
               "arms swung back (-) in the crouch, to swing forward in the thrust; keeps the hands off "

@@ -33,6 +33,7 @@ import numpy as np
 
 from ..character.spec import load_character
 from ..control.leap import LEAP_SETTINGS, blend_rows, load_mapping
+from ..control.turn import turn_duration
 from ..skills.jump_to_target.behaviour import AIR_TIME_TOLERANCE, KNOB_DEFAULTS, LANDING_TOLERANCE, REQUEST_KEYS, JumpToTarget, check_request, landing_measures, leap_params, obstacle_of, plan_store_dir, read_plans, same_request, scene_for, stored_plan, stored_plans
 from .. import tuned
 from ..errors import Cancelled, ParameterError
@@ -330,7 +331,7 @@ def measure_settings(character: str, settings: dict, target, air_time: float, wi
     the landing off it (landing_measures): one trial of the planner, or a stored plan measured
     again. Judged over the run's whole default duration, as the final run is (a foot still creeping
     after the landing passed at 3.85 s and stepped past 5 cm by 5 s)."""
-    duration = max(windup_time + air_time + 2.0, JumpToTarget.default_duration)
+    duration = max(windup_time + air_time + 2.0, JumpToTarget.default_duration) + turn_duration(settings.get("turn_first", 0.0))
     trajectory = run(RunRequest("leap", character, params=leap_params(settings, target, windup_time),
                                 duration=duration, strength=strength, world=scene_for(character, target)),
                      cancelled=cancelled)

@@ -32,6 +32,7 @@ from ...analysis import feet_above_surface, surface_under_points
 from ...ballistics import GRAVITY
 from ...control.behaviour import register
 from ...control.leap import AIRBORNE_HEIGHT, LEAP_SETTINGS, leap_assess, load_mapping, run_strength, vertical_table
+from ...control.turn import jump_start, turn_duration
 from ..leap.behaviour import Leap
 from ...errors import ParameterError
 from ...schema import Parameter, Schema
@@ -158,7 +159,10 @@ def landing_measures(trajectory) -> dict:
     a = trajectory.arrays
     feet = a["support_points"]
     flying = feet_above_surface(trajectory).min(axis=1) > AIRBORNE_HEIGHT
-    outcome, metrics = leap_assess(trajectory)
+    begun = jump_start(trajectory)          # a jump that turned first (turn.py): its hops are not the jump
+    if begun:
+        flying &= a["time"] >= begun
+    outcome, metrics = leap_assess(trajectory, start=begun)
     start = feet[0, :, :2].mean(axis=0)
     result = {"outcome": outcome, "air_time": 0.0, "landing": [float("nan")] * 2, "landing_height": float("nan"),
               "windup_time": float("nan"), "capture_error": float("nan"),
@@ -170,7 +174,7 @@ def landing_measures(trajectory) -> dict:
         touchdown = first + int(np.argmax(down)) if down.any() else len(flying) - 1
         result["landing"] = (feet[touchdown, :, :2].mean(axis=0) - start).tolist()
         result["landing_height"] = float(surface_under_points(trajectory, feet[touchdown, :, :2].mean(axis=0)))
-        result["windup_time"] = float(metrics["liftoff_time"])
+        result["windup_time"] = float(metrics["liftoff_time"] - begun)
         result["air_time"] = float(a["time"][touchdown] - a["time"][first])
         middle = feet[touchdown].mean(axis=0)
         com, velocity = a["com"][touchdown], a["com_vel"][touchdown]
@@ -185,7 +189,7 @@ def leap_params(settings: dict, target, windup_time: float) -> dict:
     vertical = settings["vertical_thrust"] > 0.5
     return {"low_level": 1, "distance": 0.0 if vertical else max(float(target[0]), MIN_BROAD_DISTANCE),
             "crouch_height": settings["crouch_height"], "crouch_pitch": settings["crouch_pitch"],
-            "com_offset": settings["com_offset"], **optional_knobs(settings),
+            "com_offset": settings["com_offset"], **optional_knobs(settings), **turn_of(settings),
             "liftoff_hip": settings["liftoff_hip"],
             "arm_swing": settings["arm_swing"], "thrust_damping": settings["thrust_damping"],
             "foot_delta": settings["foot_delta"], "crouch_time": crouch_time(windup_time),
@@ -195,6 +199,12 @@ def leap_params(settings: dict, target, windup_time: float) -> dict:
 def optional_knobs(settings: dict) -> dict:
     """The knobs that a plan may not name (KNOB_DEFAULTS), with their defaults where it does not."""
     return {name: settings.get(name, default) for name, default in KNOB_DEFAULTS.items()}
+
+
+def turn_of(settings: dict) -> dict:
+    """The turn before the jump (the leap's ``turn_first``, control/turn.py) of a plan that turns
+    first; none for any other (a plan without it runs as it always did)."""
+    return {"turn_first": settings["turn_first"]} if settings.get("turn_first") else {}
 
 
 def landing_settings(settings: dict) -> dict:
@@ -361,6 +371,14 @@ class JumpToTarget(Leap):
         refused naming its region (check_request)."""
         return {}
 
+    @classmethod
+    def duration_for(cls, params: dict, character: str, strength) -> float:
+        """Longer by the turn's time when the request's stored plan turns first (turn.py)."""
+        request = {**{k: float(params[k]) for k in REQUEST_KEYS},
+                   "strength": "unlimited" if strength == "unlimited" else "human"}
+        plan = stored_plan(character, request)
+        return cls.default_duration + (turn_duration(plan["settings"].get("turn_first", 0.0)) if plan else 0.0)
+
     def run_params(self) -> dict:
         return self.params
 
@@ -390,13 +408,14 @@ class JumpToTarget(Leap):
         settings = {k: self.plan["settings"][k] for k in ("crouch_height", "crouch_pitch", "com_offset", "arm_swing",
                                                           "thrust_damping", "liftoff_hip", "foot_delta")}
         settings.update(optional_knobs(self.plan["settings"]))
+        settings.update(turn_of(self.plan["settings"]))
         settings["crouch_time"] = crouch_time(self.params["windup_time"])
         settings.update(landing_settings(self.plan["settings"]))
         return settings
 
     @classmethod
     def assess(cls, trajectory):
-        outcome, metrics = leap_assess(trajectory)
+        outcome, metrics = leap_assess(trajectory, start=jump_start(trajectory))
         measured = landing_measures(trajectory)
         p = trajectory.meta["params"]
         metrics["landing_x"], metrics["landing_y"] = measured["landing"]

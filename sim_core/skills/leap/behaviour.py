@@ -9,6 +9,7 @@ from ...control.balance import Balance, standing_hip_height
 from ...control.behaviour import register
 from ...control.leap import LOW_LEVEL_SETTINGS, Landing, LeapThrust, balance_after_landing, broad_distances, broad_row, broad_rows, commandable_heights, leap_assess, leap_constants, load_mapping, vertical_key, vertical_row, vertical_table
 from ...control.sequencer import Sequence, Step
+from ...control.turn import jump_start, turn_steps
 from ...errors import ParameterError
 from ...schema import Parameter
 from ...tuned import load, require_calibrated
@@ -82,7 +83,7 @@ class Leap(Sequence):
         if p["low_level"]:
             settings = {k: p[k] for k in ("crouch_height", "crouch_pitch", "com_offset", "com_offset_y",
                                           "liftoff_roll", "arm_swing", "crouch_arms", "thrust_damping",
-                                          "thrust_lean", "spin_hold")}
+                                          "thrust_lean", "spin_hold", "turn_first")}
             settings["liftoff_hip"] = p["liftoff_hip"]
             return settings
         row = vertical_row(load_mapping(self.ctx.character.name)[vertical_key(self.ctx)], p["height"])
@@ -176,11 +177,12 @@ class Leap(Sequence):
         def stand(t):
             return balance_after_landing(ctx, self.previous)
 
-        return [Step("crouch", crouch, crouched),
+        return turn_steps(ctx, cfg.get("turn_first", 0.0), self) + [
+                Step("crouch", crouch, crouched),
                 Step("thrust", thrust, lambda b, t: b.lifted_off()),
                 Step("land", land, lambda b, t: b.finished),
                 Step("balance", stand)]
 
     @classmethod
     def assess(cls, trajectory):
-        return leap_assess(trajectory)
+        return leap_assess(trajectory, start=jump_start(trajectory))
