@@ -62,7 +62,7 @@ def test_a_cyclist_scene_bakes_the_bicycle_with_its_rider(addon, tmp_path):
     scene_file = tmp_path / "cyclist.json"
     scene_file.write_text(json.dumps({"duration": 0.5, "actors": [
         {"name": "cyclist", "character": "man", "behaviour": "bicycle", "params": {"speed": 4}},
-        {"name": "runner", "character": "man", "behaviour": "running", "params": {"speed": 4}, "position": [0, 1.5]}]}))
+        {"name": "runner", "character": "man", "behaviour": "running", "params": {"speed": 3.5}, "position": [0, 1.5]}]}))
     out = tmp_path / "cyclist.blend"
     assert batch.run(["--scene", str(scene_file), "--fps", "25", "--out", str(out)]) == 0
     bpy.ops.wm.open_mainfile(filepath=str(out))

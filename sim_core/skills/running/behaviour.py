@@ -308,12 +308,14 @@ def check_ramps(ramps: dict) -> dict[str, float]:
 @register
 class Running(Behaviour):
     name = "running"
-    summary = "Run at 2.5-5 m/s from a stand, facing a direction or along a path (Hodgins et al. 1995)."
+    summary = ("Run from a stand at the speeds of the runner's table (the man's: 2.5-3.7 m/s), facing a direction or "
+               "along a path (Hodgins et al. 1995).")
     default_duration = 20.0
     control_rate = 200.0
     settings_schema = RUNNING_SETTINGS
     schema = RunningSchema(
-        Parameter("speed", "m/s", 3.5, 2.5, 5.0, "desired running speed on the ground plane"),
+        Parameter("speed", "m/s", 3.5, 2.5, 5.0, "desired running speed on the ground plane; each runner runs at the "
+                  "speeds of its table only (the man 2.5-3.7 m/s, the woman 2.5-4, the child 2.5-3; docs/running.md)"),
         Parameter("facing", "rad", 0.0, -math.pi, math.pi,
                   "direction to run in (0 = +X, counter-clockwise) when no path or course is given: the runner starts "
                   "straight ahead and turns to it after turn_after m on turn_radius"),
@@ -363,7 +365,7 @@ class Running(Behaviour):
 
     def check_feasible(self) -> None:
         """A runner needs its own running table, and runs only at the speeds it covers (the man's:
-        the schema's 2.5-5 m/s); a ``table`` parameter (a tuner's or a scaled candidate, checked
+        2.5-3.7 m/s, where 100 s runs from a stand were measured not to fall); a ``table`` parameter (a tuner's or a scaled candidate, checked
         like a stored one) is its own."""
         if "table" not in self.params:
             name = self.ctx.character.name
