@@ -119,7 +119,7 @@ def scene_from_dict(data) -> Scene:
         if names.count(name) > 1:
             raise SceneError(f"actor name {name!r} is used twice; every actor needs its own name")
     check_start_clearance(actors)
-    duration = data.get("duration", max(a.behaviour.default_duration for a in actors))
+    duration = data.get("duration", max(a.behaviour.duration_for(a.params, a.character.name, a.strength) for a in actors))
     if isinstance(duration, bool) or not isinstance(duration, (int, float)) or not (
             math.isfinite(duration) and 0.01 <= duration <= 3600):
         raise SceneError(f"duration={duration!r} s is out of range; allowed range is [0.01, 3600] s")
