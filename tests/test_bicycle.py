@@ -234,15 +234,18 @@ def test_a_rider_not_measured_is_refused_in_one_line(character):
 
 
 @pytest.mark.parametrize("character, params, limit", [
-    ("woman", {"course": "turn"}, "straight, slalom"), ("woman", {"speed": 5.5}, "<= 5 m/s"),
+    ("woman", {"course": "speed_steps"}, "straight, slalom, turn, hill"), ("woman", {"speed": 5.5}, "<= 5 m/s"),
+    ("woman", {"course": "turn", "speed": 3.0, "turn_radius": 3.0}, "at most 15 deg"),
+    ("imaginary_cyclist", {"course": "turn", "speed": 5.0, "turn_radius": 8.0}, "at most 15 deg"),
     ("woman", {"gear": 3.0}, "gear <= 2.6"), ("woman", {"course": "slalom", "speed": 4.5}, "3.3-4 m/s"),
     ("woman", {"course": "slalom", "speed": 4.0}, "gate_offset <= 0.76 m"),
     ("woman", {"speed": 5.0, "heading": 0.5}, "<= 4.5 m/s"), ("imaginary_cyclist", {"speed": 5.5}, "<= 5 m/s"),
-    ("imaginary_cyclist", {"course": "coast"}, "straight, slalom")])
+    ("imaginary_cyclist", {"course": "coast"}, "straight, slalom, turn, speed_steps, hill")])
 def test_a_rider_is_offered_only_what_was_measured_for_it(character, params, limit):
-    """The woman and the imaginary cyclist ride the straight and the slalom in gear 2.6 at 3-5 m/s
-    (the woman's slalom to 4 m/s, her new headings to 4.5 m/s): the rest is refused in one line
-    naming the limit of the rider's table."""
+    """The woman and the imaginary cyclist ride the straight, the slalom, the turn and the hill (the
+    cyclist the speed steps too) in gear 2.6 at 3-5 m/s (the woman's slalom to 4 m/s, her new headings to
+    4.5 m/s, turns asking up to 15 deg of lean): the rest is refused in one line naming the limit of the
+    rider's table."""
     with pytest.raises(ParameterError) as error:
         run(RunRequest("bicycle", character, params=params, duration=0.05))
     assert "\n" not in str(error.value) and limit in str(error.value)
@@ -278,6 +281,16 @@ def test_a_rider_with_a_table_rides_on_a_frame_sized_for_it(character):
     assert trajectory.meta["world"]["bicycle"]["foot_time"] == foot_time(load_character(character)) < 0.02
     audit(trajectory)
     assert largest_difference(trajectory, replay(trajectory)) == 0.0     # the arms' gains are in the edit log
+
+
+@pytest.mark.parametrize("character", ["woman", "imaginary_cyclist"])
+def test_a_rider_with_a_table_rides_a_turn_within_its_lean(character):
+    """A 90 deg turn at 4 m/s on a 6.1 m radius (15 deg of lean asked, the riders' max_turn_lean;
+    docs/bicycle.md, riders other than the man): no fall, |roll| < 20 deg, the path kept within 1.5 m."""
+    m = run(RunRequest("bicycle", character, params={"speed": 4.0, "course": "turn", "turn_radius": 6.1},
+                       duration=6.0)).meta["metrics"]
+    assert not m["fell"] and m["max_abs_roll_deg"] < 20.0 and m["path_deviation_max"] < 1.5
+    assert m["final_heading_deg"] > 60.0
 
 
 def test_a_curve_ahead_asks_for_its_steady_lean():
