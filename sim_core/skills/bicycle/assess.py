@@ -61,7 +61,10 @@ def ride_metrics(trajectory) -> dict:
     others[[body_names.index(n) for n in WHEEL_BODIES]] = False
 
     from .course import course_for
-    course = course_for(meta["params"])
+    from .behaviour import rider_settings          # here: the behaviour imports this module
+    from ...character.spec import load_character
+    rider = meta.get("character")
+    course = course_for(rider_settings(meta["params"], load_character(rider) if rider else None))   # the rider's limits
     if course.coast_from is not None:        # a stop ends on the left foot: its sole on the ground is no fall
         others[[body_names.index(prefix + n) for n in STOP_FOOT_BODIES]] = False
     touching = a["ground_contact"][:, others].any(axis=1)

@@ -73,6 +73,7 @@ BICYCLE_RANGES = Schema(
     Parameter("speed_gain", "N m s/m", 0.0, 0.0, 5000.0, "eq. 7 k_v: crank torque per m/s of speed error"),
     Parameter("max_crank_torque", "N m", 0.0, 0.0, 1000.0, "limit of eq. 7's crank torque, driving or braking (a rider's strength)"),
     Parameter("slope_feedforward", "1", 0.0, 0.0, 2.0, "share of the crank torque that holds rider and bicycle on the slope the frame is on (m g sin r / gear) added to eq. 7 (0: the seed's eq. 7)"),
+    Parameter("hold_seat_pitch", "1", 0.0, 0.0, 1.0, "1: while riding, the limbs' targets hold the pelvis at its mounted pitch on the saddle (``_seat_pelvis``, as the stop does once the foot is down); 0: the pelvis pitches as the limbs let it (the man's: 56 deg forward at the top of a stroke)"),
     Parameter("ik_velocity_filter", "s", 0.0, 0.0, 0.5, "time constant of the low-pass on the limb targets' velocity that leads the servos (0: unfiltered)"),
     Parameter("speed_ramp", "m/s^2", 0.1, 0.1, 10.0, "eq. 7's desired speed moves to a newly commanded one at this rate (a start, a speed step)"),
     Parameter("roll_gain", "1", 0.0, 0.0, 20.0, "eq. 11 k_alpha at reference_speed"),
@@ -170,8 +171,8 @@ def check_rider(params: dict, character) -> None:
     offered = riders()
     if name not in offered:
         raise ParameterError(f"bicycle is not calibrated for the {name} (calibrated for: {', '.join(offered)}): "
-                             f"not measured to ride; the child, on the 26-inch bicycle with its frame sized to her "
-                             f"0.39 m legs, fell 2.6 s into a ride at 4 m/s (docs/bicycle.md, riders other than the man)")
+                             f"not measured to ride: a rider rides with a table of its own, bicycle_{name}.json, and a "
+                             f"bicycle its size (docs/bicycle.md, riders other than the man)")
     table = load("bicycle", name) if name != SIZED_FOR else None
     if table is None:
         return
@@ -361,6 +362,8 @@ class Bicycling(Behaviour):
         self.pelvis = model.body(ctx.actor.prefix + "PELVIS").id
         self.root_qpos = int(model.joint(ctx.actor.prefix + "root").qposadr[0])
         self.pelvis_pitch = None            # stop: the pelvis's pitch on the saddle held once the foot is down (rad)
+        if self.params["hold_seat_pitch"]:  # held from the mount (the child's hip met its flexion limit at the top)
+            self.pelvis_pitch = self._pelvis_pitch(ctx.data)
         left_leg = ("hip_l_y", "hip_l_x", "hip_l_z", "knee_l_y")
         self.left_leg_servos = servos.indices(left_leg)
         self.left_leg_dofs = servos.dof_adr[self.left_leg_servos]
@@ -570,7 +573,7 @@ class Bicycling(Behaviour):
             scratch.qpos[bike.crank_qpos] = self.crank_command
         for side, value in (ankles or {}).items():
             scratch.qpos[servos.qpos_adr[self.ankle_servos[side]]] = value
-        if self.planted is not None:
+        if self.planted is not None or self.params["hold_seat_pitch"]:
             self._seat_pelvis(scratch)
         solve(ctx.model, scratch, self.pairs, which, servos.dof_adr[servo_rows], ctx.data.qpos, IK_ITERATIONS_PER_TICK)
         goal = self.target.copy()
