@@ -222,27 +222,32 @@ def test_a_cyclist_rides_beside_a_runner_in_a_scene_and_replays_bit_for_bit(tmp_
     assert largest_difference(loaded, replay(loaded)) == 0.0
 
 
-@pytest.mark.parametrize("character", ["child", "imaginary_runner"])
+@pytest.mark.parametrize("character", ["imaginary_runner"])
 def test_a_rider_not_measured_is_refused_in_one_line(character):
-    """Riders with no bicycle table (the child fell at 4 m/s on the 26-inch bicycle) are refused
+    """Riders with no bicycle table (the imaginary runner) are refused
     before anything runs, naming the riders who ride."""
     with pytest.raises(ParameterError) as error:
         run(RunRequest("bicycle", character, duration=0.05))
     message = str(error.value)
     assert "\n" not in message and character in message and "not calibrated" in message
-    assert all(rider in message for rider in ("man", "woman", "imaginary_cyclist"))
+    assert all(rider in message for rider in ("man", "woman", "imaginary_cyclist", "child"))
 
 
 @pytest.mark.parametrize("character, params, limit", [
-    ("woman", {"course": "turn"}, "straight, slalom"), ("woman", {"speed": 5.5}, "<= 5 m/s"),
+    ("woman", {"course": "speed_steps"}, "straight, slalom, turn, hill"), ("woman", {"speed": 5.5}, "<= 5 m/s"),
+    ("woman", {"course": "turn", "speed": 3.0, "turn_radius": 3.0}, "at most 15 deg"),
+    ("imaginary_cyclist", {"course": "turn", "speed": 5.0, "turn_radius": 8.0}, "at most 15 deg"),
     ("woman", {"gear": 3.0}, "gear <= 2.6"), ("woman", {"course": "slalom", "speed": 4.5}, "3.3-4 m/s"),
     ("woman", {"course": "slalom", "speed": 4.0}, "gate_offset <= 0.76 m"),
     ("woman", {"speed": 5.0, "heading": 0.5}, "<= 4.5 m/s"), ("imaginary_cyclist", {"speed": 5.5}, "<= 5 m/s"),
-    ("imaginary_cyclist", {"course": "coast"}, "straight, slalom")])
+    ("imaginary_cyclist", {"course": "coast"}, "straight, slalom, turn, speed_steps, hill"),
+    ("child", {"course": "turn"}, "straight, hill course(s) only"), ("child", {"speed": 4.5}, "<= 4 m/s"),
+    ("child", {"speed": 1.5}, ">= 2 m/s"), ("child", {"gear": 2.0}, "gear >= 2.6")])
 def test_a_rider_is_offered_only_what_was_measured_for_it(character, params, limit):
-    """The woman and the imaginary cyclist ride the straight and the slalom in gear 2.6 at 3-5 m/s
-    (the woman's slalom to 4 m/s, her new headings to 4.5 m/s): the rest is refused in one line
-    naming the limit of the rider's table."""
+    """The woman and the imaginary cyclist ride the straight, the slalom, the turn and the hill (the
+    cyclist the speed steps too) in gear 2.6 at 3-5 m/s (the woman's slalom to 4 m/s, her new headings to
+    4.5 m/s, turns asking up to 15 deg of lean): the rest is refused in one line naming the limit of the
+    rider's table."""
     with pytest.raises(ParameterError) as error:
         run(RunRequest("bicycle", character, params=params, duration=0.05))
     assert "\n" not in str(error.value) and limit in str(error.value)
@@ -262,12 +267,14 @@ def test_a_riders_table_gives_its_own_knobs_and_constants():
     assert rider_settings(params, load_character("man")) is params
 
 
-@pytest.mark.parametrize("character", ["woman", "imaginary_cyclist"])
+@pytest.mark.parametrize("character", ["woman", "imaginary_cyclist", "child"])
 def test_a_rider_with_a_table_rides_on_a_frame_sized_for_it(character):
     """Issue 30's checks, read off a short ride at 4 m/s (docs/bicycle.md, riders other than the man:
     60 s rides at 3, 4, 5 m/s, the heading step and the slalom): no fall, |roll| < 20 deg, the speed
     within 5 %, hands and feet within 3 cm of grips and pedals, the seat pivot within 1 mm; the
-    rider's own steering gains, arm gains and feet attachments are on."""
+    rider's own steering gains, arm gains and feet attachments are on; the child rides a 16-inch bicycle
+    (bicycle_size 0.6) with her pelvis held at its mounted pitch, and her crank turns at the wheel's pace
+    (on it with the pelvis free, the crank stalled at the top of each stroke and the rear wheel skidded)."""
     from sim_core.skills.bicycle.behaviour import foot_time
     from sim_core.character.spec import load_character
     trajectory = run(RunRequest("bicycle", character, params={"speed": 4.0}, duration=6.0))
@@ -276,8 +283,21 @@ def test_a_rider_with_a_table_rides_on_a_frame_sized_for_it(character):
     assert m["mean_speed_last_5s"] == pytest.approx(4.0, rel=0.05)
     assert m["max_hand_gap"] < 0.03 and m["max_foot_gap"] < 0.03 and m["max_seat_gap"] < 0.001
     assert trajectory.meta["world"]["bicycle"]["foot_time"] == foot_time(load_character(character)) < 0.02
+    if character == "child":
+        assert trajectory.meta["world"]["bicycle"]["size"] == 0.6
+        assert m["cadence_last_5s_hz"] == pytest.approx(m["cadence_expected_hz"], rel=0.02)
     audit(trajectory)
     assert largest_difference(trajectory, replay(trajectory)) == 0.0     # the arms' gains are in the edit log
+
+
+@pytest.mark.parametrize("character", ["woman", "imaginary_cyclist"])
+def test_a_rider_with_a_table_rides_a_turn_within_its_lean(character):
+    """A 90 deg turn at 4 m/s on a 6.1 m radius (15 deg of lean asked, the riders' max_turn_lean;
+    docs/bicycle.md, riders other than the man): no fall, |roll| < 20 deg, the path kept within 1.5 m."""
+    m = run(RunRequest("bicycle", character, params={"speed": 4.0, "course": "turn", "turn_radius": 6.1},
+                       duration=6.0)).meta["metrics"]
+    assert not m["fell"] and m["max_abs_roll_deg"] < 20.0 and m["path_deviation_max"] < 1.5
+    assert m["final_heading_deg"] > 60.0
 
 
 def test_a_curve_ahead_asks_for_its_steady_lean():
@@ -310,3 +330,34 @@ def test_a_frame_is_sized_by_the_riders_leg_length():
     assert np.allclose(bar(hers) - hers.saddle, fit * (bar(mans) - mans.saddle))
     assert np.array_equal(hers.front_axle, mans.front_axle) and Bicycle(fit=fit).to_dict()["fit"] == fit
     assert "fit" not in Bicycle().to_dict()
+
+
+def test_a_smaller_bicycle_scales_its_lengths_and_masses_and_its_cadence():
+    """Bicycle.size (a rider's table's bicycle_size): every length and mass times it, the angles kept;
+    the compiled bicycle's wheel radius and crank length (BicycleView) are the scaled ones, and the
+    cadence a course asks, v / (2 pi r gear), is the smaller wheel's (the man's bicycle: size 1, exactly)."""
+    from sim_core.character.model import new_spec
+    from sim_core.skills.bicycle.behaviour import Bicycling
+    from sim_core.skills.bicycle.course import course_for
+    from sim_core.world import World, add_world
+    from sim_core.world.bicycle import Layout
+    size = 0.6
+    models = []
+    for k in (1.0, size):
+        spec = new_spec("bicycle")
+        add_world(spec, World(bicycle=Bicycle(size=k)), None)
+        models.append(spec.compile())
+    mans, small = (BicycleView.of(m) for m in models)
+    assert mans.wheel_radius == WHEEL_RADIUS and mans.crank_length == CRANK_LENGTH
+    assert small.wheel_radius == pytest.approx(size * WHEEL_RADIUS) and small.crank_length == pytest.approx(size * CRANK_LENGTH)
+    frame = lambda m: m.body_subtreemass[m.body("bicycle_frame").id]
+    assert frame(models[1]) == pytest.approx(size * frame(models[0]))
+    big, little = Layout(), Layout(1.0, size)
+    assert np.allclose(little.saddle - little.bottom_bracket, size * (big.saddle - big.bottom_bracket))
+    assert np.allclose(little.front_axle, size * big.front_axle)
+    assert Bicycle(size=size).to_dict()["size"] == size and "size" not in Bicycle().to_dict()
+    request = {"speed": 5.0, "gear": 1.5}
+    course_for(Bicycling.schema.validate(request))            # 1.59 rev/s on the 26-inch wheels
+    with pytest.raises(ParameterError) as error:              # 2.65 rev/s on wheels 0.6 as large
+        course_for(Bicycling.schema.validate({**request, "bicycle_size": size}))
+    assert "2.65 rev/s" in str(error.value) and "\n" not in str(error.value)

@@ -133,7 +133,9 @@ class Bicycle:
     the rider attached to it (None: riderless); ``freewheel``: the chain drives through a freewheel
     instead of the fixed gear; ``fit``: the saddle's height above the bottom bracket and the grips'
     place from the saddle as a share of the man's (a smaller rider's frame size: his leg length ratio);
-    ``foot_time``: the feet's attachments' time constant (s; None: LIMB_SOLREF's, the man's)."""
+    ``foot_time``: the feet's attachments' time constant (s; None: LIMB_SOLREF's, the man's); ``size``: the
+    bicycle's every length (wheels, crank, frame, bar) and every mass as a share of the 26-inch one's, its
+    angles kept (a child's bicycle; 1: the 26-inch one, exactly)."""
     gear: float = DEFAULT_GEAR
     x: float = 0.0
     y: float = 0.0
@@ -142,18 +144,21 @@ class Bicycle:
     freewheel: bool = False
     fit: float = 1.0
     foot_time: float | None = None
+    size: float = 1.0
 
     def to_dict(self) -> dict:
         return {"gear": self.gear, "x": self.x, "y": self.y, "heading": self.heading, "rider": self.rider,
                 "freewheel": self.freewheel, **({"fit": self.fit} if self.fit != 1.0 else {}),
-                **({"foot_time": self.foot_time} if self.foot_time is not None else {})}
+                **({"foot_time": self.foot_time} if self.foot_time is not None else {}),
+                **({"size": self.size} if self.size != 1.0 else {})}
 
 
 @dataclass(frozen=True)
 class Layout:
     """Derived points in the frame's axes (origin at the rear axle, X forward, Z up), for a frame
-    sized by ``fit`` (Bicycle.fit; 1: the man's)."""
+    sized by ``fit`` (Bicycle.fit; 1: the man's) on a bicycle of ``size`` (Bicycle.size)."""
     fit: float = 1.0
+    size: float = 1.0
     steer_axis: np.ndarray = field(init=False)   # unit, pointing up (and back)
     front_axle: np.ndarray = field(init=False)
     head_top: np.ndarray = field(init=False)     # the fork body's origin, on the steering axis
@@ -163,17 +168,18 @@ class Layout:
     pedals: tuple = field(init=False)             # (right, left) offsets from the crank axle at crank angle 0
 
     def __post_init__(self):
-        r = WHEEL_RADIUS
+        k = self.size
+        r = WHEEL_RADIUS * k
         tilt = math.pi / 2 - HEAD_ANGLE
         axis = np.array([-math.sin(tilt), 0.0, math.cos(tilt)])
-        front_axle = np.array([WHEELBASE, 0.0, 0.0])
-        ground_point = np.array([WHEELBASE + trail(), 0.0, -r])          # axis meets the ground
-        head_top = ground_point + axis * (HEAD_TUBE_TOP / axis[2])
-        bb = np.array([CHAINSTAY, 0.0, BOTTOM_BRACKET_HEIGHT - r])
+        front_axle = np.array([WHEELBASE * k, 0.0, 0.0])
+        ground_point = np.array([WHEELBASE * k + trail(r, HEAD_ANGLE, FORK_OFFSET * k), 0.0, -r])   # axis meets the ground
+        head_top = ground_point + axis * (HEAD_TUBE_TOP * k / axis[2])
+        bb = np.array([CHAINSTAY * k, 0.0, BOTTOM_BRACKET_HEIGHT * k - r])
         seat_tube = np.array([-math.cos(SEAT_TUBE_ANGLE), 0, math.sin(SEAT_TUBE_ANGLE)])
-        saddle = bb + self.fit * SADDLE_FROM_BOTTOM_BRACKET * seat_tube
-        mans_saddle = bb + SADDLE_FROM_BOTTOM_BRACKET * seat_tube
-        mans_bar = head_top + np.array([-GRIP_BACK, 0.0, STEM_RISE])
+        saddle = bb + self.fit * SADDLE_FROM_BOTTOM_BRACKET * k * seat_tube
+        mans_saddle = bb + SADDLE_FROM_BOTTOM_BRACKET * k * seat_tube
+        mans_bar = head_top + np.array([-GRIP_BACK * k, 0.0, STEM_RISE * k])
         bar = mans_bar + (saddle - mans_saddle) + (self.fit - 1.0) * (mans_bar - mans_saddle)   # fit 1: the man's, exactly
         set_ = object.__setattr__
         set_(self, "steer_axis", axis)
@@ -181,10 +187,10 @@ class Layout:
         set_(self, "head_top", head_top)
         set_(self, "bottom_bracket", bb)
         set_(self, "saddle", saddle)
-        set_(self, "grips", (bar + [0, -GRIP_HALF_WIDTH, 0], bar + [0, GRIP_HALF_WIDTH, 0]))
+        set_(self, "grips", (bar + [0, -GRIP_HALF_WIDTH * k, 0], bar + [0, GRIP_HALF_WIDTH * k, 0]))
         # crank angle 0: the right arm up (Hodgins' theta_crank = 0, right foot higher), left arm down
-        set_(self, "pedals", (np.array([0.0, -PEDAL_HALF_SPACING, CRANK_LENGTH]),
-                              np.array([0.0, PEDAL_HALF_SPACING, -CRANK_LENGTH])))
+        set_(self, "pedals", (np.array([0.0, -PEDAL_HALF_SPACING * k, CRANK_LENGTH * k]),
+                              np.array([0.0, PEDAL_HALF_SPACING * k, -CRANK_LENGTH * k])))
 
 
 
@@ -202,8 +208,7 @@ def _tube(body, name: str, a, b, radius: float = 0.016, colour=FRAME_COLOUR, con
     return g
 
 
-def _wheel(parent, name: str, joint: str, pos, mass: float, contact: int):
-    r = WHEEL_RADIUS
+def _wheel(parent, name: str, joint: str, pos, mass: float, contact: int, r: float = WHEEL_RADIUS):
     wheel = parent.add_body(name=name, pos=list(map(float, pos)))
     axial = WHEEL_RIM_SHARE * mass * r * r
     _inertia(wheel, mass, [axial / 2, axial, axial / 2])
@@ -225,14 +230,15 @@ def _wheel(parent, name: str, joint: str, pos, mass: float, contact: int):
 def add_bicycle(spec: mujoco.MjSpec, bicycle: Bicycle, contact_group: int) -> None:
     """The bicycle's five bodies, four hinges, chain tendon and sites (grips, pedals, saddle) into
     ``spec``, standing upright on the ground (z = 0) as ``bicycle`` places it."""
-    lay, r, n = Layout(bicycle.fit), WHEEL_RADIUS, NAMES
+    k = bicycle.size                          # lengths x k, masses x k, inertias x k^3
+    lay, r, n = Layout(bicycle.fit, k), WHEEL_RADIUS * k, NAMES
     c, s = math.cos(bicycle.heading), math.sin(bicycle.heading)
     frame = spec.worldbody.add_body(name=n["frame"], pos=[bicycle.x, bicycle.y, r],
                                     quat=[math.cos(bicycle.heading / 2), 0, 0, math.sin(bicycle.heading / 2)])
     frame.add_freejoint(name=n["free"])
-    _inertia(frame, FRAME_MASS, [0.35, 0.85, 0.55], pos=[0.45, 0.0, 0.25])
+    _inertia(frame, FRAME_MASS * k, [0.35 * k ** 3, 0.85 * k ** 3, 0.55 * k ** 3], pos=[0.45 * k, 0.0, 0.25 * k])
     bb, seat, head = lay.bottom_bracket, lay.saddle, lay.head_top
-    head_low = head - lay.steer_axis * 0.15
+    head_low = head - lay.steer_axis * 0.15 * k
     for name, a, b in (("chainstay_r", [0, -0.06, 0], bb), ("chainstay_l", [0, 0.06, 0], bb),
                        ("seatstay_r", [0, -0.05, 0], seat - [0, 0.05, 0.12]),
                        ("seatstay_l", [0, 0.05, 0], seat - [0, -0.05, 0.12]),
@@ -245,12 +251,13 @@ def add_bicycle(spec: mujoco.MjSpec, bicycle: Bicycle, contact_group: int) -> No
     frame.add_site(name="bicycle_saddle", pos=list(seat + [0.0, 0, 0.05]))
 
     fork = frame.add_body(name=n["fork"], pos=list(head))
-    _inertia(fork, FORK_MASS, [0.08, 0.07, 0.03], pos=list(lay.steer_axis * -0.15 + [-0.02, 0, 0.05]))
+    _inertia(fork, FORK_MASS * k, [0.08 * k ** 3, 0.07 * k ** 3, 0.03 * k ** 3],
+             pos=list((lay.steer_axis * -0.15 + [-0.02, 0, 0.05]) * k))
     steer = fork.add_joint(name=n["steer"], type=mujoco.mjtJoint.mjJNT_HINGE, axis=list(lay.steer_axis),
                            range=[-STEER_RANGE, STEER_RANGE], limited=mujoco.mjtLimited.mjLIMITED_TRUE)
     steer.armature = 0.01
     axle = lay.front_axle - head
-    crown = -lay.steer_axis * (head[2] - 0.30) / lay.steer_axis[2]
+    crown = -lay.steer_axis * (head[2] - 0.30 * k) / lay.steer_axis[2]
     for side in (-1, 1):
         _tube(fork, f"bicycle_fork_blade_{'rl'[side > 0]}", crown + [0, side * 0.05, 0], axle + [0, side * 0.05, 0],
               radius=0.012, contact=contact_group)
@@ -260,11 +267,11 @@ def add_bicycle(spec: mujoco.MjSpec, bicycle: Bicycle, contact_group: int) -> No
           contact=contact_group)
     for side, grip in zip("rl", lay.grips):
         fork.add_site(name=f"bicycle_grip_{side}", pos=list(grip - head))
-    _wheel(fork, n["front"], n["front_spin"], axle, FRONT_WHEEL_MASS, contact_group)
-    _wheel(frame, n["rear"], n["rear_spin"], [0, 0, 0], REAR_WHEEL_MASS, contact_group)
+    _wheel(fork, n["front"], n["front_spin"], axle, FRONT_WHEEL_MASS * k, contact_group, r)
+    _wheel(frame, n["rear"], n["rear_spin"], [0, 0, 0], REAR_WHEEL_MASS * k, contact_group, r)
 
     crank = frame.add_body(name=n["crank"], pos=list(bb))
-    _inertia(crank, CRANK_MASS, [0.01, 0.01, 0.01])
+    _inertia(crank, CRANK_MASS * k, [0.01 * k ** 3, 0.01 * k ** 3, 0.01 * k ** 3])
     spin = crank.add_joint(name=n["crank_spin"], type=mujoco.mjtJoint.mjJNT_HINGE, axis=[0, 1, 0])
     spin.armature = CRANK_ARMATURE
     for side, pedal in zip("rl", lay.pedals):
@@ -322,6 +329,8 @@ class BicycleView:
     crank_dof: int
     chain: int
     crank_body: int
+    wheel_radius: float      # m, this bicycle's (Bicycle.size x WHEEL_RADIUS)
+    crank_length: float      # m, this bicycle's crank arm (Bicycle.size x CRANK_LENGTH)
 
     @classmethod
     def of(cls, model: mujoco.MjModel) -> "BicycleView":
@@ -331,7 +340,8 @@ class BicycleView:
                    int(j(n["steer"]).qposadr[0]), int(j(n["steer"]).dofadr[0]), int(j(n["front_spin"]).dofadr[0]),
                    int(j(n["rear_spin"]).qposadr[0]), int(j(n["rear_spin"]).dofadr[0]),
                    int(j(n["crank_spin"]).qposadr[0]), int(j(n["crank_spin"]).dofadr[0]), model.tendon(n["chain"]).id,
-                   model.body(n["crank"]).id)
+                   model.body(n["crank"]).id, float(model.geom(n["rear"] + "_tyre").size[0]),
+                   float(model.site("bicycle_pedal_r").pos[2]))
 
     @property
     def gear(self) -> float:
@@ -350,8 +360,8 @@ class BicycleView:
         quat = data.qpos[self.free_qpos + 3:self.free_qpos + 7]
         heading = 2.0 * math.atan2(quat[3], quat[0])
         data.qvel[self.free_dof:self.free_dof + 3] = [speed * math.cos(heading), speed * math.sin(heading), 0.0]
-        data.qvel[self.front_dof] = data.qvel[self.rear_dof] = speed / WHEEL_RADIUS
-        data.qvel[self.crank_dof] = speed / (WHEEL_RADIUS * self.gear)
+        data.qvel[self.front_dof] = data.qvel[self.rear_dof] = speed / self.wheel_radius
+        data.qvel[self.crank_dof] = speed / (self.wheel_radius * self.gear)
 
     def state(self, data: mujoco.MjData) -> dict:
         """Forward speed, roll (positive: right side down, about the heading axis), yaw (heading),
@@ -416,7 +426,7 @@ def attach_rider(spec: mujoco.MjSpec, bicycle: Bicycle, character) -> None:
     prefix = bicycle.rider
     frame = spec.body(NAMES["frame"])
     for side, dy in (("r", -SEAT_PIVOT_HALF_WIDTH), ("l", SEAT_PIVOT_HALF_WIDTH)):
-        frame.add_site(name=f"bicycle_seat_{side}", pos=list(Layout(bicycle.fit).saddle + [0, dy, 0]))
+        frame.add_site(name=f"bicycle_seat_{side}", pos=list(Layout(bicycle.fit, bicycle.size).saddle + [0, dy, 0]))
     points = rider_points(character)
     for name, body, bike_site, solref in ATTACHMENTS:
         rider_site = f"{prefix}rider_{name}"

@@ -8,7 +8,7 @@ import mujoco
 import numpy as np
 
 from ...control.path import path_deviation
-from ...world.bicycle import NAMES, WHEEL_BODIES, WHEEL_RADIUS, frame_state
+from ...world.bicycle import NAMES, WHEEL_BODIES, BicycleView, frame_state
 from ...world.hill import hill_height
 
 
@@ -61,7 +61,10 @@ def ride_metrics(trajectory) -> dict:
     others[[body_names.index(n) for n in WHEEL_BODIES]] = False
 
     from .course import course_for
-    course = course_for(meta["params"])
+    from .behaviour import rider_settings          # here: the behaviour imports this module
+    from ...character.spec import load_character
+    rider = meta.get("character")
+    course = course_for(rider_settings(meta["params"], load_character(rider) if rider else None))   # the rider's limits
     if course.coast_from is not None:        # a stop ends on the left foot: its sole on the ground is no fall
         others[[body_names.index(prefix + n) for n in STOP_FOOT_BODIES]] = False
     touching = a["ground_contact"][:, others].any(axis=1)
@@ -92,6 +95,7 @@ def ride_metrics(trajectory) -> dict:
     moved = np.nonzero(np.abs(steer_path - steer_path[0]) > FIRST_FORK_MOTION)[0]
     last5 = (t >= t[end - 1] - 5.0) & (np.arange(len(t)) < end)     # criterion: the mean speed and cadence reported over the last 5 s
     gear = float(model.wrap_prm[model.tendon_adr[model.tendon(NAMES["chain"]).id]])
+    radius = BicycleView.of(model).wheel_radius
     rear = model.jnt_qposadr[model.joint(NAMES["rear_spin"]).id]
     driven = end if course.coast_from is None else min(end, int(np.searchsorted(t, course.coast_from)) + 1)
     stretch = gear * a["qpos"][:driven, crank] - a["qpos"][:driven, rear]     # a freewheel's slack is no stretch
@@ -105,7 +109,7 @@ def ride_metrics(trajectory) -> dict:
         "max_seat_gap": float(gaps[:, 0:2].max()),
         "max_chain_stretch": float(np.abs(stretch - stretch[0]).max()),
         "cadence_last_5s_hz": float(crank_rate[last5[:end]].mean() / (2 * math.pi)),
-        "cadence_expected_hz": float(speed[last5].mean() / (2 * math.pi * WHEEL_RADIUS * gear)),
+        "cadence_expected_hz": float(speed[last5].mean() / (2 * math.pi * radius * gear)),
         "fall_time": None if fall_frame is None else float(t[fall_frame]),
         "mean_speed_last_10s": float(speed[last10].mean()),
         "max_abs_roll_deg": float(np.degrees(np.abs(roll[:end]).max())),
@@ -113,7 +117,7 @@ def ride_metrics(trajectory) -> dict:
         "distance": float(np.linalg.norm(a["qpos"][end - 1, q:q + 2] - a["qpos"][0, q:q + 2])),
     }
     xy = a["qpos"][:end, q:q + 2] - a["qpos"][0, q:q + 2]          # from the start, as the course is given
-    metrics.update(course_metrics(course, t[:end], xy, speed[:end], crank_rate, gear))
+    metrics.update(course_metrics(course, t[:end], xy, speed[:end], crank_rate, gear, radius))
     if course.coast_from is not None and not course.stop:
         again = [float(when) for when, name in meta["phase_events"] if name == "brake_to_stop"]
         coast_end = min([float(t[end - 1])] + again)
@@ -155,7 +159,7 @@ def coast_metrics(model: mujoco.MjModel, t: np.ndarray, speed: np.ndarray, start
         return {"coast_seconds": 0.0}
     slope, intercept = np.polyfit(t[on], np.log(speed[on]), 1)
     residual = np.log(speed[on]) - (slope * t[on] + intercept)
-    spin = sum(model.body_inertia[model.body(b).id][1] for b in WHEEL_BODIES) / WHEEL_RADIUS ** 2
+    spin = sum(model.body_inertia[model.body(b).id][1] for b in WHEEL_BODIES) / BicycleView.of(model).wheel_radius ** 2
     effective_mass = float(model.body_subtreemass[0]) + spin
     return {"coast_seconds": float(t[on][-1] - t[on][0]), "coast_speed_start": float(speed[on][0]),
             "coast_speed_end": float(speed[on][-1]), "coast_time_constant_s": float(-1.0 / slope),
@@ -166,7 +170,7 @@ def coast_metrics(model: mujoco.MjModel, t: np.ndarray, speed: np.ndarray, start
 
 
 def course_metrics(course, t: np.ndarray, xy: np.ndarray, speed: np.ndarray, crank_rate: np.ndarray,
-                   gear: float) -> dict:
+                   gear: float, radius: float) -> dict:
     """What each course is judged by: the path deviation and the gates passed, each speed step's
     mean error over its last SEGMENT_TAIL s, the speeds (and the cadence against v / (2 pi r g))
     on the hill's climb and descent."""
@@ -197,7 +201,7 @@ def course_metrics(course, t: np.ndarray, xy: np.ndarray, speed: np.ndarray, cra
                 out[f"hill_{name}_mean_speed"] = float(speed[on].mean())
                 out[f"hill_{name}_worst_error"] = float(np.abs(speed[on] - wanted).max() / wanted)
                 out[f"hill_{name}_cadence_hz"] = float(crank_rate[on].mean() / (2 * math.pi))
-                out[f"hill_{name}_cadence_expected_hz"] = float(speed[on].mean() / (2 * math.pi * WHEEL_RADIUS * gear))
+                out[f"hill_{name}_cadence_expected_hz"] = float(speed[on].mean() / (2 * math.pi * radius * gear))
         out["hill_top_height"] = float(hill_height(course.hill, start + climb))
     return out
 

@@ -39,7 +39,7 @@ from ...tuned.settings import SkillSchema, with_defaults
 from ...character.dimensions import fig3_measures
 from ...character.spec import load_character
 from ...errors import ParameterError
-from ...world.bicycle import (BRAKE_MAX_TORQUE, WHEEL_RADIUS, CRANK_LENGTH, DEFAULT_GEAR, LIMB_SOLREF, NAMES, Bicycle,
+from ...world.bicycle import (BRAKE_MAX_TORQUE, DEFAULT_GEAR, LIMB_SOLREF, NAMES, Bicycle,
                               BicycleView)
 from .assess import STOPPED_SPEED
 from .course import COURSE, FREEWHEEL_COURSES, course_for
@@ -62,15 +62,18 @@ ARM_JOINTS = {"r": ("shoulder_r_x", "shoulder_r_y", "shoulder_r_z", "elbow_r_y",
 # the constants of the bicycling laws: their values are data (bicycle_any.json "constants", the
 # defaults below are replaced by them); each range is a sanity bound a table row is checked against
 BICYCLE_RANGES = Schema(
+    Parameter("bicycle_size", "1", 1.0, 0.3, 1.0, "the bicycle the rider rides: its every length (wheels, crank, frame, bar) and mass as a share of the 26-inch bicycle's, its angles kept (world/bicycle.py, Bicycle.size; 1: the 26-inch one, a child's is smaller)"),
     Parameter("arm_gain_scale", "1", 1.0, 0.2, 5.0, "the arms' servo gains (kp and kv) while riding are the rider's times this (the arms steer the bicycle's fork through the hands, a load that does not shrink with the rider; 1: the rider's own)"),
     Parameter("max_speed", "m/s", 0.5, 0.5, 8.0, "the fastest speed a course may command (faster was not measured for the rider; course.py refuses it)"),
     Parameter("max_gear", "1", 0.5, 0.5, 5.0, "the highest gear offered (higher was not measured for the rider; course.py refuses it)"),
     Parameter("min_slalom_speed", "m/s", 0.5, 0.5, 8.0, "the slalom is offered from this speed (and course.py's measured region; slower, the rider fell)"),
     Parameter("max_slalom_speed", "m/s", 0.5, 0.5, 8.0, "the slalom is offered up to this speed (and course.py's measured region; faster, the rider missed gates)"),
+    Parameter("max_turn_lean", "rad", 0.0, 0.0, 0.5, "a turn (the turn course, a given path's bends) is offered asking a steady lean (tan = v^2 / (g r)) up to this (and course.py's MAX_LEAN); more, the rider fell or leaned past 20 deg"),
     Parameter("max_slalom_acceleration", "m/s^2", 0.1, 0.1, 10.0, "the slalom is offered up to this peak lateral acceleration of its sine (and course.py's; more, the rider fell or missed gates)"),
     Parameter("speed_gain", "N m s/m", 0.0, 0.0, 5000.0, "eq. 7 k_v: crank torque per m/s of speed error"),
     Parameter("max_crank_torque", "N m", 0.0, 0.0, 1000.0, "limit of eq. 7's crank torque, driving or braking (a rider's strength)"),
     Parameter("slope_feedforward", "1", 0.0, 0.0, 2.0, "share of the crank torque that holds rider and bicycle on the slope the frame is on (m g sin r / gear) added to eq. 7 (0: the seed's eq. 7)"),
+    Parameter("hold_seat_pitch", "1", 0.0, 0.0, 1.0, "1: while riding, the limbs' targets hold the pelvis at its mounted pitch on the saddle (``_seat_pelvis``, as the stop does once the foot is down); 0: the pelvis pitches as the limbs let it (the man's: 56 deg forward at the top of a stroke)"),
     Parameter("ik_velocity_filter", "s", 0.0, 0.0, 0.5, "time constant of the low-pass on the limb targets' velocity that leads the servos (0: unfiltered)"),
     Parameter("speed_ramp", "m/s^2", 0.1, 0.1, 10.0, "eq. 7's desired speed moves to a newly commanded one at this rate (a start, a speed step)"),
     Parameter("roll_gain", "1", 0.0, 0.0, 20.0, "eq. 11 k_alpha at reference_speed"),
@@ -168,8 +171,8 @@ def check_rider(params: dict, character) -> None:
     offered = riders()
     if name not in offered:
         raise ParameterError(f"bicycle is not calibrated for the {name} (calibrated for: {', '.join(offered)}): "
-                             f"not measured to ride; the child, on the 26-inch bicycle with its frame sized to her "
-                             f"0.39 m legs, fell 2.6 s into a ride at 4 m/s (docs/bicycle.md, riders other than the man)")
+                             f"not measured to ride: a rider rides with a table of its own, bicycle_{name}.json, and a "
+                             f"bicycle its size (docs/bicycle.md, riders other than the man)")
     table = load("bicycle", name) if name != SIZED_FOR else None
     if table is None:
         return
@@ -184,12 +187,14 @@ BICYCLE_TABLE = register_table(TableType("bicycle", BICYCLE_RANGES, _bicycle_row
 BICYCLE_SETTINGS = with_defaults(BICYCLE_RANGES, bicycle_constants())
 
 
-def frame_fit(character) -> float:
-    """The bicycle's frame size for ``character`` (Bicycle.fit): its leg length over the man's, for
-    whom the saddle and the bar were set (Fig. 3's leg length); 1 for the man or no character."""
+def frame_fit(character, size: float = 1.0) -> float:
+    """The bicycle's frame size for ``character`` (Bicycle.fit) on a bicycle of ``size`` (Bicycle.size):
+    its leg length over the man's, for whom the saddle and the bar were set (Fig. 3's leg length),
+    over the bicycle's size; 1 for the man or no character."""
     if character is None or character.name == SIZED_FOR:
         return 1.0
-    return fig3_measures(character)["leg length"] / fig3_measures(load_character(SIZED_FOR))["leg length"]
+    legs = fig3_measures(character)["leg length"] / fig3_measures(load_character(SIZED_FOR))["leg length"]
+    return legs if size == 1.0 else legs / size
 
 
 def foot_time(character) -> float | None:
@@ -257,7 +262,8 @@ class Bicycling(Behaviour):
         check_rider(params, character)
         course = course_for(params)
         bicycle = Bicycle(gear=params["gear"], rider="", freewheel=course.name in FREEWHEEL_COURSES,
-                          fit=frame_fit(character), foot_time=foot_time(character))
+                          fit=frame_fit(character, params["bicycle_size"]), foot_time=foot_time(character),
+                          size=params["bicycle_size"])
         return dataclasses.replace(world, bicycle=bicycle, hill=course.hill)
 
     @classmethod
@@ -356,6 +362,8 @@ class Bicycling(Behaviour):
         self.pelvis = model.body(ctx.actor.prefix + "PELVIS").id
         self.root_qpos = int(model.joint(ctx.actor.prefix + "root").qposadr[0])
         self.pelvis_pitch = None            # stop: the pelvis's pitch on the saddle held once the foot is down (rad)
+        if self.params["hold_seat_pitch"]:  # held from the mount (the child's hip met its flexion limit at the top)
+            self.pelvis_pitch = self._pelvis_pitch(ctx.data)
         left_leg = ("hip_l_y", "hip_l_x", "hip_l_z", "knee_l_y")
         self.left_leg_servos = servos.indices(left_leg)
         self.left_leg_dofs = servos.dof_adr[self.left_leg_servos]
@@ -431,7 +439,7 @@ class Bicycling(Behaviour):
             step = c["speed_ramp"] * dt
             self.desired_speed += min(max(course.speed_at(t) - self.desired_speed, -step), step)
             slope = float(self.ctx.data.xmat[self.bike.frame].reshape(3, 3)[2, 0])   # the frame's forward axis: its rise
-            uphill = slope_torque(self.mass, slope, WHEEL_RADIUS, c["gear"], c["slope_feedforward"])
+            uphill = slope_torque(self.mass, slope, self.bike.wheel_radius, c["gear"], c["slope_feedforward"])
             return crank_torque(state["speed"], self.desired_speed, c["speed_gain"], c["max_crank_torque"], uphill)
         level = math.pi / 2 + math.pi * math.ceil((self.crank_command - math.pi / 2) / math.pi)   # the next level crank
         self.crank_command = min(self.crank_command + c["crank_level_rate"] * dt, level)
@@ -475,7 +483,7 @@ class Bicycling(Behaviour):
         forward, left = np.array([math.cos(heading), math.sin(heading), 0.0]), np.array([-math.sin(heading), math.cos(heading), 0.0])
         hip = data.xpos[self.left_hip]
         mid = data.xpos[bike.frame].copy()
-        mid[:2] += left[:2] * WHEEL_RADIUS * math.sin(bike.state(data)["roll"])   # the wheels' contact line
+        mid[:2] += left[:2] * bike.wheel_radius * math.sin(bike.state(data)["roll"])   # the wheels' contact line
         ground = mid + forward * (float(np.dot(hip - mid, forward)) + self.params["foot_ahead"]) + left * self.params["foot_out"]
         ground[2] = 0.0
         return ground
@@ -565,7 +573,7 @@ class Bicycling(Behaviour):
             scratch.qpos[bike.crank_qpos] = self.crank_command
         for side, value in (ankles or {}).items():
             scratch.qpos[servos.qpos_adr[self.ankle_servos[side]]] = value
-        if self.planted is not None:
+        if self.planted is not None or self.params["hold_seat_pitch"]:
             self._seat_pelvis(scratch)
         solve(ctx.model, scratch, self.pairs, which, servos.dof_adr[servo_rows], ctx.data.qpos, IK_ITERATIONS_PER_TICK)
         goal = self.target.copy()
@@ -621,7 +629,7 @@ class Bicycling(Behaviour):
         if self.foot_down is not None:
             self._left_leg_goal(t, goal)
         # eqs. 7-10: pedal forces, through each leg's Jacobian to joint torques (servo offsets)
-        forces = dict(zip("rl", pedal_forces(torque, state["crank"], CRANK_LENGTH)))
+        forces = dict(zip("rl", pedal_forces(torque, state["crank"], bike.crank_length)))
         offset = np.zeros(len(goal))
         axle = data.xpos[bike.crank_body]
         crank_axis = data.xmat[bike.crank_body].reshape(3, 3)[:, 1]

@@ -85,7 +85,7 @@ def course_for(p: dict) -> Course:
     path, gates, hill, start_speed = None, np.zeros((0, 2)), (), p["speed"]
     if name == "turn":
         path = turn_path(p["turn_angle"], p["turn_after"], p["turn_radius"], RUN_OUT)
-        _check_turn(p["speed"], p["turn_radius"], "turn_radius")
+        _check_turn(p["speed"], p["turn_radius"], "turn_radius", p["max_turn_lean"])
     elif name == "slalom":
         _check_slalom(p["speed"], p["gate_spacing"], p["gate_offset"], p["gate_width"],
                       (p["min_slalom_speed"], p["max_slalom_speed"]), p["max_slalom_acceleration"])
@@ -111,7 +111,8 @@ def course_for(p: dict) -> Course:
         lookahead = p["lookahead_time"] * max(speed for _, speed in speeds)
         radius, where = tightest_radius(np.vstack([[-lookahead, 0.0], path]), lookahead)
         if math.isfinite(radius):
-            _check_turn(max(speed for _, speed in speeds), radius, f"path, {max(where - lookahead, 0.0):.1f} m along it")
+            _check_turn(max(speed for _, speed in speeds), radius, f"path, {max(where - lookahead, 0.0):.1f} m along it",
+                        p["max_turn_lean"])
     _check_pedalling(p, [speed for _, speed in speeds], start_speed)
     fastest = max(speed for _, speed in speeds)
     if path is None and p["heading"] != 0.0:
@@ -120,6 +121,12 @@ def course_for(p: dict) -> Course:
         _check_hill(p, [speed for _, speed in speeds])
     coast_from = p["coast_after"] if name in FREEWHEEL_COURSES else None
     return Course(name, path, speeds, start_speed, gates, p["gate_width"], hill, coast_from, name == "stop")
+
+
+def wheel_radius(p: dict) -> float:
+    """The radius (m) of the wheels of the bicycle a request rides (its table's bicycle_size: a child's
+    bicycle is smaller)."""
+    return WHEEL_RADIUS * p["bicycle_size"]
 
 
 def _check_heading_turn(p: dict, fastest: float, slowest: float) -> None:
@@ -134,12 +141,12 @@ def _check_heading_turn(p: dict, fastest: float, slowest: float) -> None:
         raise ParameterError(f"a new heading is turned to at gear >= {p['min_heading_turn_gear']:g} (asked: heading "
                              f"{p['heading']:g} rad at gear {p['gear']:g}); in lower gears the heading was measured to stay "
                              f"5-10 deg off or to weave: the turn course rides a turn in any gear offered")
-    cadence = slowest / (2 * math.pi * WHEEL_RADIUS * p["gear"])
+    cadence = slowest / (2 * math.pi * wheel_radius(p) * p["gear"])
     if cadence < p["min_heading_turn_cadence"]:
         raise ParameterError(f"a new heading is turned to at a cadence v / (2 pi r gear) >= {p['min_heading_turn_cadence']:g} "
                              f"rev/s (asked: heading {p['heading']:g} rad at {slowest:g} m/s in gear {p['gear']:g}, "
                              f"{cadence:.2f} rev/s); slower, the pedal strokes rocked the turning bicycle over: a gear <= "
-                             f"{slowest / (2 * math.pi * WHEEL_RADIUS * p['min_heading_turn_cadence']):.2f} would do")
+                             f"{slowest / (2 * math.pi * wheel_radius(p) * p['min_heading_turn_cadence']):.2f} would do")
 
 
 def _check_pedalling(p: dict, speeds: list[float], start_speed: float) -> None:
@@ -160,13 +167,13 @@ def _check_pedalling(p: dict, speeds: list[float], start_speed: float) -> None:
     if fastest > p["max_speed"]:
         raise ParameterError(f"the bicycle is ridden at speed <= {p['max_speed']:g} m/s (asked: {fastest:g} m/s): faster "
                              f"was not measured for this rider (docs/bicycle.md, riders other than the man)")
-    cadence = fastest / (2 * math.pi * WHEEL_RADIUS * p["gear"])
+    cadence = fastest / (2 * math.pi * wheel_radius(p) * p["gear"])
     if cadence > p["max_cadence"]:
         raise ParameterError(f"the cadence v / (2 pi r gear) is ridden up to {p['max_cadence']:g} rev/s (asked: {cadence:.2f} "
                              f"rev/s at {fastest:g} m/s in gear {p['gear']:g}); faster, the legs were measured to lose more "
                              f"than 5 % of the speed: a gear >= "
-                             f"{fastest / (2 * math.pi * WHEEL_RADIUS * p['max_cadence']):.2f} or a speed <= "
-                             f"{2 * math.pi * WHEEL_RADIUS * p['gear'] * p['max_cadence']:.2f} m/s would do")
+                             f"{fastest / (2 * math.pi * wheel_radius(p) * p['max_cadence']):.2f} or a speed <= "
+                             f"{2 * math.pi * wheel_radius(p) * p['gear'] * p['max_cadence']:.2f} m/s would do")
 
 
 def _check_hill(p: dict, speeds: list[float]) -> None:
@@ -265,14 +272,17 @@ def _check_slalom(speed: float, spacing: float, offset: float, width: float, spe
                              f"{min(most, SLALOM_MAX_ACCELERATION):g} m/s^2; a wider gate_spacing or a lower speed would do")
 
 
-def _check_turn(speed: float, radius: float, names: str) -> None:
-    lean = math.atan(speed * speed / (GRAVITY * radius))
-    if lean > MAX_LEAN:
-        slowest = math.sqrt(GRAVITY * radius * math.tan(MAX_LEAN))
+def _check_turn(speed: float, radius: float, names: str, most: float) -> None:
+    """A turn asking a steady lean (tan = v^2 / (g r)) of more than MAX_LEAN, or than the rider's table's
+    ``most`` (max_turn_lean: the woman fell on a tighter turn at 3 m/s, the imaginary cyclist leaned past
+    20 deg; docs/bicycle.md, riders other than the man), is refused naming the speed or radius that would do."""
+    lean, limit = math.atan(speed * speed / (GRAVITY * radius)), min(MAX_LEAN, most)
+    if lean > limit:
+        slowest = math.sqrt(GRAVITY * radius * math.tan(limit))
         raise ParameterError(f"the course turns on a radius of {radius:.2f} m (from {names}), which at "
                              f"speed {speed:g} m/s needs a lean of {math.degrees(lean):.1f} deg; at most "
-                             f"{math.degrees(MAX_LEAN):g} deg is ridden: slow to <= {slowest:.2f} m/s or "
-                             f"widen the turn to >= {speed * speed / (GRAVITY * math.tan(MAX_LEAN)):.2f} m")
+                             f"{math.degrees(limit):g} deg is ridden: slow to <= {slowest:.2f} m/s or "
+                             f"widen the turn to >= {speed * speed / (GRAVITY * math.tan(limit)):.2f} m")
 
 
 def gate_passes(gates: np.ndarray, width: float, xy: np.ndarray) -> list[dict]:
