@@ -211,7 +211,10 @@ def _tube(body, name: str, a, b, radius: float = 0.016, colour=FRAME_COLOUR, con
 def _wheel(parent, name: str, joint: str, pos, mass: float, contact: int, r: float = WHEEL_RADIUS):
     wheel = parent.add_body(name=name, pos=list(map(float, pos)))
     axial = WHEEL_RIM_SHARE * mass * r * r
-    _inertia(wheel, mass, [axial / 2, axial, axial / 2])
+    diametral = axial / 2                  # a flat wheel: A + C = B exactly, and the model's XML keeps 6 digits
+    if 2 * float(f"{diametral:g}") < float(f"{axial:g}"):      # (%g), which can round A + C below B: the
+        diametral *= 1 + 2e-5                                  # compiler refuses it; raised by < 2 of the 6th digit
+    _inertia(wheel, mass, [diametral, axial, diametral])
     hinge = wheel.add_joint(name=joint, type=mujoco.mjtJoint.mjJNT_HINGE, axis=[0, 1, 0])
     hinge.damping = [ROLLING_RESISTANCE / 2 * r * r, 0.0, 0.0]     # linear viscous term only
     hinge.solref_friction = list(BRAKE_SOLREF)                        # the rim brake's dry friction holds
