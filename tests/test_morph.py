@@ -125,7 +125,8 @@ def test_the_ramps_offsets_are_checked_and_ride_on_the_interpolated_rows():
     assert table.at("thrust_time", 3.0) == bounds["thrust_time"][1]
     assert table.at("speed_gain", 3.0) == pytest.approx(woman.at("speed_gain", 3.0), abs=1e-12)
     for ramps, message in (({"speed_gain": 0.1}, "unknown parameter 'speed_gain'"),
-                           ({"stance_pitch": 0.6}, r"allowed range is \[-0.5, 0.5\] rad")):
+                           ({"stance_pitch": 0.6}, r"allowed range is \[-0.5, 0.5\] rad"),
+                           ("3", "must be an object of parameter offsets")):
         with pytest.raises(ParameterError, match=message):
             Running.schema.validate({"morph_to": "woman", "morph_ramps": ramps})
 

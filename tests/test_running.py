@@ -508,3 +508,11 @@ def test_the_fig12_table_has_a_row_per_runner_of_the_figure():
     from sim_core.gait import HUMAN_FIG12
     nearest = [min(SpeedTable.load(c).speeds, key=lambda v: abs(v - HUMAN_FIG12[c]["speed"])) for c in ("man", "woman", "child")]
     assert [r.split(" | ")[2] for r in rows] == [f"{v:g}" for v in nearest]
+
+
+@pytest.mark.parametrize("table", ["foo", 1, {"speeds": 3.5}])
+def test_a_table_parameter_that_is_not_a_table_is_refused_in_one_line(table):
+    """``table`` is a tuner's parameter; given by hand as something else (``--set table=foo``) it is
+    refused naming what it must be, not a traceback."""
+    with pytest.raises(ParameterError, match="is not a running table"):
+        Running.schema.validate({"table": table})

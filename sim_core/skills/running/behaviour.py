@@ -283,6 +283,11 @@ class RunningSchema(SkillSchema):
         ramps = values.pop("morph_ramps", None)
         result = super().validate(values, defaults)
         if table is not None:
+            if not (isinstance(table, dict) and isinstance(table.get("speeds"), list)
+                    and isinstance(table.get("parameters"), dict)):
+                raise ParameterError(f"table={str(table)[:60]!r} is not a running table: an object with 'speeds' (a "
+                                     f"list) and 'parameters' (an object of columns), as SpeedTable.to_table gives; it "
+                                     f"is a tuner's parameter (scripts pass it, not --set)")
             check_rows("the table parameter", "running", table)
             result["table"] = table
         if ramps is not None:
@@ -292,8 +297,11 @@ class RunningSchema(SkillSchema):
 
 def check_ramps(ramps: dict) -> dict[str, float]:
     """A morph's ramp offsets: names among the five, finite, within their ranges' widths."""
+    if not isinstance(ramps, dict):
+        raise ParameterError(f"morph_ramps={str(ramps)[:60]!r} must be an object of parameter offsets, e.g. "
+                             f"{{\"{RAMPED[0]}\": 0.01}}; allowed names: {', '.join(RAMPED)}")
     out = {}
-    for name, value in dict(ramps).items():
+    for name, value in ramps.items():
         if name not in RAMPED:
             raise ParameterError(f"morph_ramps: unknown parameter {name!r}; allowed: {', '.join(RAMPED)}")
         setting = SETTING_RANGES.by_name[name]
