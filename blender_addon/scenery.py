@@ -1,7 +1,7 @@
 """The simulated world's fixed objects in the Blender scene, so a baked skill is seen where it
 happened: a dive's platform and water surface, the boxes a jump lands on, starts from or clears,
 the ground below when a jump starts on a box, a vault's springboard, table and landing mat, and a
-bicycle course's hill (its climb, top and descent). Objects are made once per scene and named
+bicycle course's hill (its climb, top and descent, and the chords of its vertical curves if rounded). Objects are made once per scene and named
 ``SimAthletics platform`` / ``SimAthletics water`` / ``SimAthletics ground`` / ``SimAthletics box 0``...;
 an existing object of that name is reused, never replaced (the user may have moved or restyled
 it)."""
@@ -19,6 +19,7 @@ APPARATUS_NAMES = {"springboard": "SimAthletics springboard", "vault_table": "Si
                    "landing_mat": "SimAthletics landing mat"}     # geom -> object (sim_core.world.apparatus)
 HILL_NAMES = {"hill_up": "SimAthletics hill climb", "hill_top": "SimAthletics hill top",
               "hill_down": "SimAthletics hill descent"}              # geom -> object (sim_core.world.hill)
+HILL_CURVE_NAME = "SimAthletics hill curve {} {}"   # a rounded hill's vertical curve's chord (corner, chord)
 
 
 def add_scenery(context, armature, trajectory) -> list:
@@ -38,7 +39,7 @@ def add_scenery(context, armature, trajectory) -> list:
     if platform <= 0 and not any(name in world for name in (*APPARATUS_NAMES, "hill")):
         return made
     model = mujoco.MjModel.from_xml_string(trajectory.meta["model_xml"])
-    made += _world_boxes(context, armature, model, {**APPARATUS_NAMES, **HILL_NAMES})
+    made += _world_boxes(context, armature, model, {**APPARATUS_NAMES, **HILL_NAMES, **hill_curve_names(model)})
     if platform <= 0:
         return made
     ground = model.geom("ground").id
@@ -48,6 +49,13 @@ def add_scenery(context, armature, trajectory) -> list:
         made.append(_box(context, WATER_NAME, np.array([0.0, 0.0, -platform - 0.005]),
                          np.array([20.0, 20.0, 0.005]), armature))
     return made
+
+
+def hill_curve_names(model: mujoco.MjModel) -> dict:
+    """A rounded hill's vertical curves: each chord's box geom ("hill_curve_<corner>_<k>") -> its object
+    ("SimAthletics hill curve <corner> <k>"), so the scenery's road bends where the simulation's did."""
+    names = (mujoco.mj_id2name(model, mujoco.mjtObj.mjOBJ_GEOM, g) or "" for g in range(model.ngeom))
+    return {name: HILL_CURVE_NAME.format(*name.split("_")[2:4]) for name in names if name.startswith("hill_curve_")}
 
 
 def _world_boxes(context, armature, model: mujoco.MjModel, names: dict) -> list:

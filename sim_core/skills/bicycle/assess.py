@@ -193,7 +193,7 @@ def course_metrics(course, t: np.ndarray, xy: np.ndarray, speed: np.ndarray, cra
     out["speed_steps"] = steps
 
     if course.hill:
-        start, grade, climb, top, descent = course.hill
+        start, grade, climb, top, descent = course.hill[:5]
         for name, low, high in (("climb", start, start + climb), ("descent", start + climb + top, start + climb + top + descent)):
             on = (xy[:, 0] >= low + HILL_SETTLE) & (xy[:, 0] <= high)
             if on.any():

@@ -243,6 +243,7 @@ class Bicycling(Behaviour):
         Parameter("hill_after", "m", 10.0, 0.0, 200.0, "hill: flat ground before the climb"),
         Parameter("hill_length", "m", 40.0, 5.0, 300.0, "hill: length (along the ground) of the climb and of the descent"),
         Parameter("hill_top", "m", 10.0, 1.0, 100.0, "hill: length of its flat top"),
+        Parameter("hill_curve", "m", 0.0, 0.0, 100.0, "hill: length of the vertical curves (parabolas) that round its foot and crest corners, at most hill_top and hill_length (0: sharp corners)"),
         Parameter("start_speed", "m/s", 1.5, 1.5, 8.0, "start: the rolling start's speed, from which the rider pedals up to speed"),
         Parameter("coast_after", "s", 2.0, 0.5, 100.0, "coast, stop: time from which the rider stops pedalling (coast) or brakes to a stop (stop)"),
         Points("path", "the path to ride along, [x, y] points in metres from the start (in Blender: a curve "

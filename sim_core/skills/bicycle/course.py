@@ -9,7 +9,8 @@ Courses (the ``course`` parameter; a ``path`` given replaces the course's path):
   * speed_steps: ``speed`` until ``step_time``, ``second_speed`` until twice it, then ``third_speed``;
   * hill: ``hill_after`` m of flat, a climb of ``hill_length`` m at ``hill_grade``, ``hill_top`` m
     of flat top and a descent like the climb (the hill is a world prop, sim_core.world.hill), ridden
-    along its centre line (a straight path);
+    along its centre line (a straight path); ``hill_curve`` > 0 rounds its four corners with vertical
+    curves of that length (0, the default: the sharp hill);
   * start: the rolling start is at ``start_speed``; the rider pedals up to ``speed``;
   * coast: a freewheel bicycle; from ``coast_after`` s the rider stops pedalling and holds the cranks
     level, steering on, until the speed falls to the table's ``coast_min_speed``, then stops as below;
@@ -34,7 +35,7 @@ from ...control.path import tightest_radius, turn_path, validate_path
 from ...errors import ParameterError
 from ...schema import Choice
 from ...world.bicycle import WHEEL_RADIUS
-from ...world.hill import HILL_WIDTH
+from ...world.hill import HILL_WIDTH, check_hill
 
 COURSES = ("straight", "turn", "slalom", "speed_steps", "hill", "start", "coast", "stop")
 COURSE = Choice("course", COURSES, "straight",
@@ -94,6 +95,9 @@ def course_for(p: dict) -> Course:
         speeds = ((0.0, p["speed"]), (p["step_time"], p["second_speed"]), (2 * p["step_time"], p["third_speed"]))
     elif name == "hill":
         hill = (p["hill_after"], p["hill_grade"], p["hill_length"], p["hill_top"], p["hill_length"])
+        if p["hill_curve"] > 0.0:              # its corners rounded by vertical curves (0: the sharp hill)
+            hill += (p["hill_curve"],)
+            check_hill(hill)
         # ridden along the hill's centre line: held to a heading alone, low gears left it 5-10 deg off
         # and the rider ran off the side of the 8 m wide hill (docs/bicycle.md, hills)
         path = validate_path([[0.0, 0.0], [p["hill_after"] + 2 * p["hill_length"] + p["hill_top"] + RUN_OUT, 0.0]])
