@@ -229,3 +229,14 @@ def test_random_requests_are_refused_or_pass():
     for values in short:
         result = audit_request(values)
         assert "refused" in result or result["passed"], audit_line(0, result)
+
+
+def test_the_audit_rides_as_the_rider_asked_and_refuses_what_it_is_not_offered():
+    """``report bicycle --random N --character C``: the draw is asked of that rider; a course not in
+    the rider's table is refused in one line naming it (the child: straight and hills only)."""
+    from sim_core.skills.bicycle.behaviour import Bicycling
+    from sim_core.skills.bicycle.report import AUDIT_PARAMETERS
+    defaults = Bicycling.schema.defaults()
+    draw = {"course": "slalom", "speed": 3.5, "gear": 2.6, **{n: defaults[n] for n in AUDIT_PARAMETERS["slalom"]}}
+    result = audit_request(draw, "child")
+    assert "refused" in result and "the child rides" in result["refused"] and "\n" not in result["refused"]

@@ -169,9 +169,10 @@ def main(argv=None) -> int:
     parser.add_argument("--workers", type=int, default=None, help="processes for the course rides (default: one per CPU)")
     parser.add_argument("--random", type=int, default=None, metavar="N",
                         help="instead: N requests drawn from the panel with --seed, each refused or ridden and judged")
+    parser.add_argument("--character", default="man", help="with --random: the rider (default: the man)")
     args = parser.parse_args(argv)
     if args.random is not None:
-        results = audit(args.random, args.seed, args.workers or 1)
+        results = audit(args.random, args.seed, args.workers or 1, args.character)
         return 0 if all("refused" in r or r["passed"] for r in results) else 1
     model = riderless_model()
     rows, fell = coast(model, 4.0, 12.0)
@@ -288,13 +289,14 @@ def audit_checks(p: dict, m: dict, seconds: float) -> list[tuple[str, bool, str]
     return out
 
 
-def audit_request(params: dict) -> dict:
-    """Run one drawn request as a user's would: refused before simulating (ParameterError), or ridden
-    for audit_seconds and judged (audit_checks). A module-level function so a process pool can run it."""
+def audit_request(params: dict, character: str = "man") -> dict:
+    """Run one drawn request as a user's would, by ``character``: refused before simulating
+    (ParameterError), or ridden for audit_seconds and judged (audit_checks). A module-level function
+    so a process pool can run it."""
     seconds = audit_seconds(params)
     began = time.perf_counter()
     try:
-        trajectory = run(RunRequest("bicycle", "man", params=params, duration=seconds))
+        trajectory = run(RunRequest("bicycle", character, params=params, duration=seconds))
     except ParameterError as exc:
         return {"params": params, "refused": str(exc), "wall": time.perf_counter() - began}
     checks = audit_checks(params, trajectory.meta["metrics"], seconds)
@@ -315,28 +317,28 @@ def audit_line(k: int, r: dict) -> str:
     return f"{head}: {verdict} {r['seconds']:g} s: {', '.join(text for _, _, text in r['checks'])}; {r['wall']:.0f} s wall"
 
 
-def _audit_results(draws: list[dict], workers: int | None):
+def _audit_results(draws: list[dict], workers: int | None, character: str = "man"):
     """The draws' results in order, each as soon as it is done (one worker: in this process)."""
     if workers == 1:
-        yield from map(audit_request, draws)
+        yield from (audit_request(draw, character) for draw in draws)
         return
     with executor_for(workers) as executor:
-        futures = [executor.submit(audit_request, draw) for draw in draws]
+        futures = [executor.submit(audit_request, draw, character) for draw in draws]
         for future in futures:
             yield future.result()
 
 
-def audit(count: int, seed: int, workers: int | None = 1) -> list[dict]:
-    """``count`` requests drawn from the panel with ``seed``, each refused or ridden and judged; a line
-    printed for each as it comes, then the tally."""
+def audit(count: int, seed: int, workers: int | None = 1, character: str = "man") -> list[dict]:
+    """``count`` requests drawn from the panel with ``seed``, each refused or ridden by ``character``
+    and judged; a line printed for each as it comes, then the tally."""
     rng = np.random.default_rng(seed)
     draws = [audit_draw(rng) for _ in range(count)]
     results = []
-    for k, result in enumerate(_audit_results(draws, workers)):
+    for k, result in enumerate(_audit_results(draws, workers, character)):
         results.append(result)
         print(audit_line(k, result), flush=True)
     refused = sum("refused" in r for r in results)
     passed = sum(r.get("passed", False) for r in results)
-    print(f"seed {seed}: {count} draws, {refused} refused, {passed} ridden and passed, "
+    print(f"{character}, seed {seed}: {count} draws, {refused} refused, {passed} ridden and passed, "
           f"{count - refused - passed} ridden and failed; {sum(r['wall'] for r in results):.0f} s wall", flush=True)
     return results
