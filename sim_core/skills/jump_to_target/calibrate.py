@@ -354,7 +354,10 @@ balanced landings were all 0.225-0.425 s in the air and at most 1.19 m away - he
 are short and low - nearest (0.066, -1.191) m after 0.305 s) found her **1.0 m right in 0.3 s: (0.031,
 -1.024) m after 0.295 s, balanced, 3.9 cm off** (98 trials) - stored (`--character woman --set
 target_y=-1.0 --set air_time=0.3`), her first sideways jump within the tolerances; run again through the
-skill it lands the same to the last digit.
+skill it lands the same to the last digit. To the left, `turn_first` -1.14 (104.5°, the feet at (0.265,
+0.042) m; from -0.96 to -1.12 her two hops turned her 25-105°) and a search started from the right plan's
+forward settings found her **1.0 m left in 0.3 s: (0.024, 1.000) m after 0.325 s, balanced, 2.4 cm off**
+(88 trials) - stored.
 
 Whether the forward region turned a quarter is the turned jumps' region (measured, scratch scripts): not
 as things are. A measured forward jump run after the turn starts from the balance's stance, not the
