@@ -35,7 +35,7 @@ from .measure import SupportGeometry, roll_of
 from .servo import hermite_scalar
 from ..schema import Parameter, Schema
 from ..tuned import TableType, load, register as register_table
-from ..tuned.constants import as_constants, constant, constant_rows, read_constants, with_constants
+from ..tuned.constants import constant, constant_rows, own_constants, read_constants, with_constants
 
 # the leap's thrust and landing's hand-set constants: data, leap_any.json's "constants", shared by
 # every skill that composes them (docs/tables.md)
@@ -91,8 +91,7 @@ def leap_constants(character: str) -> SimpleNamespace:
     """The thrust's and the landing's constants for ``character``: leap_any's (tuned on the man and
     used as they are by the woman), or the character's own where its leap table holds a "constants"
     section (a body ``adapt`` scaled by Fig. 6: times by L^1/2, lengths by L, ...; docs/bodies.md)."""
-    own = (load("leap", character) or {}).get("constants")
-    return CONSTANTS if not own else SimpleNamespace(**{**vars(CONSTANTS), **vars(as_constants({"constants": own}))})
+    return own_constants("leap", character, CONSTANTS)
 
 
 AIRBORNE_HEIGHT = 0.01          # m: every foot site this high above the ground = flight

@@ -19,7 +19,7 @@ from .behaviour import ControlContext
 from .leap import Landing, LeapThrust, balance_after_landing, leap_constants, load_mapping, vertical_key, vertical_row
 from .sequencer import Step
 from ..schema import Schema
-from ..tuned.constants import constant, read_constants, register_constants
+from ..tuned.constants import constant, own_constants, read_constants, register_constants
 
 # the turn's hand-set constants: data, turn_any.json's "constants" (docs/tables.md)
 TURN_CONSTANTS = Schema(
@@ -36,6 +36,12 @@ TURN_CONSTANTS = Schema(
 register_constants("turn", TURN_CONSTANTS)
 CONSTANTS = read_constants("turn", TURN_CONSTANTS)
 
+
+def turn_constants(character: str):
+    """The turn's constants for ``character``: turn_any's (measured on the man), or the character's
+    own where a ``turn_<character>.json`` holds them (the woman's hops turn her further: her own hop_turn)."""
+    return own_constants("turn", character, CONSTANTS)
+
 STEP_PREFIX = "turn_"        # the hops' steps are named turn_crouch, turn_thrust, turn_land, turn_settle
 
 
@@ -45,7 +51,7 @@ def turn_steps(ctx: ControlContext, direction: float, sequence) -> list[Step]:
     ended, starts each balance)."""
     if abs(direction) <= 0.5:                 # definition: the setting is a switch, its sign the side
         return []
-    c, leap = CONSTANTS, leap_constants(ctx.character.name)
+    c, leap = turn_constants(ctx.character.name), leap_constants(ctx.character.name)
     hop = SimpleNamespace(**vertical_row(load_mapping(ctx.character.name)[vertical_key(ctx)], c.hop_height))
     turn = direction * c.hop_turn             # +-1: the measured quarter turn; more or less turns more or less
     stand = standing_hip_height(ctx.character)

@@ -18,9 +18,10 @@ from typing import Iterable
 
 from ..schema import Schema
 from .settings import ranged as constant   # a constant's schema entry: unit, sanity range, help
-from .store import TableError, TableType, check_header, check_row, read, register, table_path
+from .store import TableError, TableType, check_header, check_row, load, read, register, table_path
 
-__all__ = ["as_constants", "constant", "constant_rows", "read_constants", "register_constants", "with_constants"]
+__all__ = ["as_constants", "constant", "constant_rows", "own_constants", "read_constants", "register_constants",
+           "with_constants"]
 
 
 def constant_rows(body: dict) -> Iterable[tuple[str, dict]]:
@@ -70,6 +71,13 @@ def read_constants(table: str, schema: Schema) -> SimpleNamespace:
     for where, row in constant_rows({"constants": stored}):
         check_row(name, where, schema, row)
     return as_constants({"constants": stored})
+
+
+def own_constants(table: str, character: str, shared: SimpleNamespace) -> SimpleNamespace:
+    """A controller's constants for ``character``: ``shared`` (its ``<table>_any.json``'s), each one
+    the character's own table ``<table>_<character>.json`` holds in its "constants" section replaced."""
+    own = (load(table, character) or {}).get("constants")
+    return shared if not own else SimpleNamespace(**{**vars(shared), **vars(as_constants({"constants": own}))})
 
 
 def with_constants(settings: Schema, constants: Schema) -> Schema:
