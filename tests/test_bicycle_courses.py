@@ -82,20 +82,25 @@ def test_a_turn_within_the_lean_limit_is_accepted():
     assert course_for(params(course="turn", speed=speed, turn_radius=max(radius, 3.0))).path is not None
 
 
-def test_hill_road_is_continuous_and_at_its_grade():
-    hill = (10.0, 0.05, 40.0, 10.0, 40.0)
+def road_heights(hill, xs) -> np.ndarray:
+    """The compiled hill's road height at each x: a ray cast straight down onto its boxes from 10 m."""
     spec = new_spec("hill")
     add_world(spec, World(hill=hill), None)
     model = mujoco.MjModel.from_xml_string(spec.to_xml())
     data = mujoco.MjData(model)
     mujoco.mj_forward(model, data)
+    geomid = np.zeros(1, dtype=np.int32)
+    return np.array([10.0 - mujoco.mj_ray(model, data, np.array([x, 0.0, 10.0]), np.array([0.0, 0.0, -1.0]), None, 1,
+                                          -1, geomid) for x in xs])
+
+
+def test_hill_road_is_continuous_and_at_its_grade():
+    hill = (10.0, 0.05, 40.0, 10.0, 40.0)
     assert hill_height(hill, [0.0, 10.0, 30.0, 50.0, 55.0, 80.0, 100.0, 120.0]) == pytest.approx(
         [0.0, 0.0, 1.0, 2.0, 2.0, 1.0, 0.0, 0.0])
     # the road surface: a ray cast down onto the boxes meets hill_height everywhere along the hill
-    geomid = np.zeros(1, dtype=np.int32)
-    for x in np.linspace(10.5, 99.5, 40):
-        distance = mujoco.mj_ray(model, data, np.array([x, 0.0, 10.0]), np.array([0.0, 0.0, -1.0]), None, 1, -1, geomid)
-        assert 10.0 - distance == pytest.approx(float(hill_height(hill, x)), abs=1e-6)
+    xs = np.linspace(10.5, 99.5, 40)
+    assert road_heights(hill, xs) == pytest.approx(hill_height(hill, xs), abs=1e-6)
     with pytest.raises(ParameterError, match="hill grade = 0.3"):
         check_hill((0.0, 0.3, 10.0, 1.0, 10.0))
 
@@ -105,17 +110,10 @@ def test_a_rounded_hill_bends_evenly_through_its_vertical_curves():
     (a ray cast onto the boxes) is hill_height, and no chord turns by more than CURVE_CHORD / curve of the
     corner's grade change. The course refuses curves longer than its top or climb."""
     hill = (10.0, 0.1, 40.0, 10.0, 40.0, 10.0)
-    spec = new_spec("hill")
-    add_world(spec, World(hill=hill), None)
-    model = mujoco.MjModel.from_xml_string(spec.to_xml())
-    data = mujoco.MjData(model)
-    mujoco.mj_forward(model, data)
     assert hill_height(hill, [0.0, 5.0, 15.0, 45.0, 50.0, 55.0, 60.0, 105.0]) == pytest.approx(
         [0.0, 0.0, 0.5, 3.5, 3.875, 4.0, 3.875, 0.0])
-    geomid = np.zeros(1, dtype=np.int32)
-    for x in np.linspace(0.3, 105.3, 211):          # between the chords' ends
-        distance = mujoco.mj_ray(model, data, np.array([x, 0.0, 10.0]), np.array([0.0, 0.0, -1.0]), None, 1, -1, geomid)
-        assert 10.0 - distance == pytest.approx(float(hill_height(hill, x)), abs=5e-5)   # the XML's digits, boxes 4.5 m deep
+    xs = np.linspace(0.3, 105.3, 211)              # between the chords' ends
+    assert road_heights(hill, xs) == pytest.approx(hill_height(hill, xs), abs=5e-5)   # the XML's digits, boxes 4.5 m deep
     points = np.array([point for _, vertices in hill_profile(hill) for point in vertices])
     keep = np.concatenate([[True], np.diff(points[:, 0]) > 1e-9])
     grades = np.diff(points[keep, 1]) / np.diff(points[keep, 0])
