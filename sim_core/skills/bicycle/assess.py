@@ -48,10 +48,11 @@ def attachment_gaps(model: mujoco.MjModel, qpos: np.ndarray, prefix: str = "") -
     return out
 
 
-def ride_metrics(trajectory) -> dict:
+def ride_metrics(trajectory, params: dict) -> dict:
     """Fall (anything but a tyre on the ground), speed, roll, heading (the time from which it
     stays within 5 deg of the commanded one, the fork's first move: -1 right, +1 left) and the
-    attachments' largest stretch."""
+    attachments' largest stretch. ``params``: the run's, with the rider's own limits (the behaviour's
+    rider_settings), for the course it judges."""
     meta = trajectory.meta
     a, prefix = ride_arrays(trajectory)
     model = mujoco.MjModel.from_xml_string(meta["model_xml"])
@@ -61,10 +62,7 @@ def ride_metrics(trajectory) -> dict:
     others[[body_names.index(n) for n in WHEEL_BODIES]] = False
 
     from .course import course_for
-    from .behaviour import rider_settings          # here: the behaviour imports this module
-    from ...character.spec import load_character
-    rider = meta.get("character")
-    course = course_for(rider_settings(meta["params"], load_character(rider) if rider else None))   # the rider's limits
+    course = course_for(params)
     if course.coast_from is not None:        # a stop ends on the left foot: its sole on the ground is no fall
         others[[body_names.index(prefix + n) for n in STOP_FOOT_BODIES]] = False
     touching = a["ground_contact"][:, others].any(axis=1)

@@ -649,5 +649,7 @@ class Bicycling(Behaviour):
     @classmethod
     def assess(cls, trajectory):
         from .assess import ride_metrics
-        metrics = ride_metrics(trajectory)
+        rider = trajectory.meta.get("character")
+        params = rider_settings(trajectory.meta["params"], load_character(rider) if rider else None)   # its limits
+        metrics = ride_metrics(trajectory, params)
         return ("success" if not metrics["fell"] else "fell"), metrics
