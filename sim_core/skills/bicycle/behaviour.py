@@ -44,7 +44,7 @@ from ...world.bicycle import (BRAKE_MAX_TORQUE, DEFAULT_GEAR, LIMB_SOLREF, NAMES
 from .assess import STOPPED_SPEED
 from .course import COURSE, FREEWHEEL_COURSES, course_for
 from .steering import steering_gains
-from .laws import ankle_angle, crank_torque, fork_angle, lean_ahead, pedal_forces, slope_torque
+from .laws import ankle_angle, crank_torque, speed_integral, fork_angle, lean_ahead, pedal_forces, slope_torque
 from .mount import IK_ITERATIONS_PER_TICK, SitePairs, match_velocities, solve
 
 FOOT_IK_ITERATIONS = 5              # definition: damped least-squares steps a tick for the foot going down
@@ -72,6 +72,7 @@ BICYCLE_RANGES = Schema(
     Parameter("max_slalom_acceleration", "m/s^2", 0.1, 0.1, 10.0, "the slalom is offered up to this peak lateral acceleration of its sine (and course.py's; more, the rider fell or missed gates)"),
     Parameter("speed_gain", "N m s/m", 0.0, 0.0, 5000.0, "eq. 7 k_v: crank torque per m/s of speed error"),
     Parameter("max_crank_torque", "N m", 0.0, 0.0, 1000.0, "limit of eq. 7's crank torque, driving or braking (a rider's strength)"),
+    Parameter("speed_integral_gain", "N m/m", 0.0, 0.0, 2000.0, "eq. 7's integral term: crank torque per m of accumulated speed error (laws.speed_integral: held while the desired speed ramps to a new command and while the torque is at max_crank_torque, not used coasting or stopping; 0: the seed's eq. 7)"),
     Parameter("slope_feedforward", "1", 0.0, 0.0, 2.0, "share of the crank torque that holds rider and bicycle on the slope the frame is on (m g sin r / gear) added to eq. 7 (0: the seed's eq. 7)"),
     Parameter("hold_seat_pitch", "1", 0.0, 0.0, 1.0, "1: while riding, the limbs' targets hold the pelvis at its mounted pitch on the saddle (``_seat_pelvis``, as the stop does once the foot is down); 0: the pelvis pitches as the limbs let it (the man's: 56 deg forward at the top of a stroke)"),
     Parameter("ik_velocity_filter", "s", 0.0, 0.0, 0.5, "time constant of the low-pass on the limb targets' velocity that leads the servos (0: unfiltered)"),
@@ -350,6 +351,7 @@ class Bicycling(Behaviour):
         self.jac = np.zeros((3, model.nv))
         rider_root = model.jnt_bodyid[model.joint(ctx.actor.prefix + "root").id]
         self.mass = float(model.body_subtreemass[rider_root] + model.body_subtreemass[self.bike.frame])   # kg, rider and bicycle
+        self.speed_error_integral = 0.0     # eq. 7's accumulated speed error (m; speed_integral_gain)
         self.crank_command = None            # coasting: the crank angle the legs hold (None: the pedals as they are)
         self.coasting = self.coasted = False
         self.stopping = self.course.stop        # braking to a stop (the stop course; a coast that got too slow)
@@ -441,7 +443,12 @@ class Bicycling(Behaviour):
             self.desired_speed += min(max(course.speed_at(t) - self.desired_speed, -step), step)
             slope = float(self.ctx.data.xmat[self.bike.frame].reshape(3, 3)[2, 0])   # the frame's forward axis: its rise
             uphill = slope_torque(self.mass, slope, self.bike.wheel_radius, c["gear"], c["slope_feedforward"])
-            return crank_torque(state["speed"], self.desired_speed, c["speed_gain"], c["max_crank_torque"], uphill)
+            ki = c["speed_integral_gain"]
+            if ki and self.desired_speed == course.speed_at(t):     # held while the desired speed ramps
+                self.speed_error_integral = speed_integral(self.speed_error_integral, state["speed"], self.desired_speed, dt,
+                                                           c["speed_gain"], c["max_crank_torque"], uphill, ki)
+            return crank_torque(state["speed"], self.desired_speed, c["speed_gain"], c["max_crank_torque"], uphill,
+                                self.speed_error_integral, ki)
         level = math.pi / 2 + math.pi * math.ceil((self.crank_command - math.pi / 2) / math.pi)   # the next level crank
         self.crank_command = min(self.crank_command + c["crank_level_rate"] * dt, level)
         if self.stopping:

@@ -8,11 +8,30 @@ import math
 from ...ballistics import GRAVITY
 
 
-def crank_torque(speed: float, desired_speed: float, gain: float, limit: float, feedforward: float = 0.0) -> float:
+def crank_torque(speed: float, desired_speed: float, gain: float, limit: float, feedforward: float = 0.0,
+                 integral: float = 0.0, integral_gain: float = 0.0) -> float:
     """Eq. 7 with the sign fix: ``tau = k_v (v_d - v)``, k_v > 0; positive drives forward; held
     within +-``limit`` (the seed gives none: unlimited, a 2.4 m/s error asks 1.2 kN m of the legs).
-    ``feedforward`` (N m, slope_torque's) is added before the limit."""
-    return min(max(gain * (desired_speed - speed) + feedforward, -limit), limit)
+    ``feedforward`` (N m, slope_torque's) is added before the limit, and so is an integral term
+    ``integral_gain`` (N m per m) times ``integral`` (m, the accumulated speed error, speed_integral);
+    with ``integral_gain`` 0 the seed's eq. 7, bit for bit."""
+    torque = gain * (desired_speed - speed) + feedforward
+    if integral_gain:
+        torque += integral_gain * integral
+    return min(max(torque, -limit), limit)
+
+
+def speed_integral(integral: float, speed: float, desired_speed: float, dt: float, gain: float, limit: float,
+                   feedforward: float, integral_gain: float) -> float:
+    """The accumulated speed error (m) of eq. 7's integral term one control step on: ``integral +
+    (v_d - v) dt``, with conditional anti-windup: the step is not taken when the unclamped torque
+    already lies beyond +-``limit`` in the direction the error would push it (the integral then
+    holds; the limit, not the integral, is what the legs give)."""
+    error = desired_speed - speed
+    torque = gain * error + feedforward + integral_gain * integral
+    if (torque >= limit and error > 0) or (torque <= -limit and error < 0):
+        return integral
+    return integral + error * dt
 
 
 def slope_torque(mass: float, slope_sine: float, wheel_radius: float, gear: float, share: float) -> float:

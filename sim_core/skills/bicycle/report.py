@@ -105,7 +105,8 @@ STOP_STAND = 6.0       # definition: s ridden after the stop's expected standsti
 SLALOM_DRAW_PERIODS = (2.0, 4.5)     # s between gates in the drawn slaloms (the measured grid's periods)
 COURSE_KEYS = ("fell", "fall_time", "max_abs_roll_deg", "mean_speed_last_5s", "path_deviation_mean", "path_deviation_max",
                "gates_passed", "gate_count", "gate_misses", "speed_steps", "hill_climb_mean_speed", "hill_climb_worst_error",
-               "hill_descent_mean_speed", "hill_descent_worst_error", "hill_climb_cadence_hz",
+               "hill_descent_mean_speed", "hill_descent_worst_error", "hill_climb_worst_revolution_error",
+               "hill_descent_worst_revolution_error", "hill_climb_cadence_hz",
                "hill_climb_cadence_expected_hz", "max_hand_gap", "max_foot_gap", "max_seat_gap", "pedal_pull_r_max",
                "pedal_pull_r_share", "pedal_force_r_min", "pedal_force_r_max", "coast_seconds", "coast_speed_start",
                "coast_speed_end", "coast_time_constant_s", "coast_predicted_time_constant_s", "coast_r2_of_ln_v",
