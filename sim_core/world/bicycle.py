@@ -112,6 +112,11 @@ NAMES = dict(frame="bicycle_frame", fork="bicycle_fork", front="bicycle_front_wh
 WHEEL_BODIES = (NAMES["front"], NAMES["rear"])
 
 
+def wheel_radius(size: float = 1.0) -> float:
+    """The wheels' radius (m) of a bicycle of ``size`` (Bicycle.size: every length x size)."""
+    return WHEEL_RADIUS * size
+
+
 def trail(radius: float = WHEEL_RADIUS, head_angle: float = HEAD_ANGLE, offset: float = FORK_OFFSET) -> float:
     """Ground distance from the front contact back to where the steering axis meets the ground."""
     return (radius * math.cos(head_angle) - offset) / math.sin(head_angle)
@@ -169,7 +174,7 @@ class Layout:
 
     def __post_init__(self):
         k = self.size
-        r = WHEEL_RADIUS * k
+        r = wheel_radius(k)
         tilt = math.pi / 2 - HEAD_ANGLE
         axis = np.array([-math.sin(tilt), 0.0, math.cos(tilt)])
         front_axle = np.array([WHEELBASE * k, 0.0, 0.0])
@@ -234,7 +239,7 @@ def add_bicycle(spec: mujoco.MjSpec, bicycle: Bicycle, contact_group: int) -> No
     """The bicycle's five bodies, four hinges, chain tendon and sites (grips, pedals, saddle) into
     ``spec``, standing upright on the ground (z = 0) as ``bicycle`` places it."""
     k = bicycle.size                          # lengths x k, masses x k, inertias x k^3
-    lay, r, n = Layout(bicycle.fit, k), WHEEL_RADIUS * k, NAMES
+    lay, r, n = Layout(bicycle.fit, k), wheel_radius(k), NAMES
     c, s = math.cos(bicycle.heading), math.sin(bicycle.heading)
     frame = spec.worldbody.add_body(name=n["frame"], pos=[bicycle.x, bicycle.y, r],
                                     quat=[math.cos(bicycle.heading / 2), 0, 0, math.sin(bicycle.heading / 2)])

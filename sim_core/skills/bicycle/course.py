@@ -34,7 +34,7 @@ from ...ballistics import GRAVITY
 from ...control.path import tightest_radius, turn_path, validate_path
 from ...errors import ParameterError
 from ...schema import Choice
-from ...world.bicycle import WHEEL_RADIUS
+from ...world.bicycle import wheel_radius as sized_wheel_radius
 from ...world.hill import HILL_WIDTH, check_hill
 
 COURSES = ("straight", "turn", "slalom", "speed_steps", "hill", "start", "coast", "stop")
@@ -130,7 +130,7 @@ def course_for(p: dict) -> Course:
 def wheel_radius(p: dict) -> float:
     """The radius (m) of the wheels of the bicycle a request rides (its table's bicycle_size: a child's
     bicycle is smaller)."""
-    return WHEEL_RADIUS * p["bicycle_size"]
+    return sized_wheel_radius(p["bicycle_size"])
 
 
 def _check_heading_turn(p: dict, fastest: float, slowest: float) -> None:

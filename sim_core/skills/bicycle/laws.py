@@ -15,9 +15,7 @@ def crank_torque(speed: float, desired_speed: float, gain: float, limit: float, 
     ``feedforward`` (N m, slope_torque's) is added before the limit, and so is an integral term
     ``integral_gain`` (N m per m) times ``integral`` (m, the accumulated speed error, speed_integral);
     with ``integral_gain`` 0 the seed's eq. 7, bit for bit."""
-    torque = gain * (desired_speed - speed) + feedforward
-    if integral_gain:
-        torque += integral_gain * integral
+    torque = gain * (desired_speed - speed) + feedforward + integral_gain * integral   # + 0.0 exactly when off
     return min(max(torque, -limit), limit)
 
 
