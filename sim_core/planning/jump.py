@@ -25,7 +25,7 @@ where later runs find it; ``store_plan`` writes the shipped table (python -m sim
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Callable
 
@@ -34,7 +34,7 @@ import numpy as np
 from ..character.spec import load_character
 from ..control.leap import LEAP_SETTINGS, blend_rows, load_mapping
 from ..control.turn import turn_duration
-from ..skills.jump_to_target.behaviour import AIR_TIME_TOLERANCE, KNOB_DEFAULTS, LANDING_TOLERANCE, REQUEST_KEYS, JumpToTarget, check_request, landing_measures, leap_params, obstacle_of, plan_store_dir, read_plans, same_request, scene_for, stored_plan, stored_plans
+from ..skills.jump_to_target.behaviour import AIR_TIME_TOLERANCE, KNOB_DEFAULTS, LANDING_TOLERANCE, REQUEST_KEYS, JumpToTarget, check_request, landing_measures, leap_params, obstacle_of, plan_store_dir, read_plans, same_request, scene_for, stored_plan, stored_plans, turn_of
 from .. import tuned
 from ..errors import Cancelled, ParameterError
 from ..simulate import RunRequest, run
@@ -171,7 +171,8 @@ def plan_jump(character: str, target, air_time: float, windup_time: float, stren
     target = tuple(float(v) for v in target) + ((0.0,) if len(target) == 3 else ())
     if not isinstance(budget, int) or budget < 1:
         raise_budget(budget)
-    if not obstacle_of(target) and strength == "human" and not restart and start is None \
+    turned = turned_start(character, target, strength) if not restart and start is None else None
+    if not obstacle_of(target) and strength == "human" and not restart and start is None and turned is None \
             and model(character) is not None and (target[2] == 0 or nearest_balanced(character, target, air_time)):
         # on flat ground, or onto / down from a box a measured jump serves: from the measured jumps (jump_model)
         trial = JumpTrial(character, target, air_time, windup_time, strength, cancelled)
@@ -186,11 +187,14 @@ def plan_jump(character: str, target, air_time: float, windup_time: float, stren
         prior = search_start(character, target, previous, strength) or fallback
     if start:      # settings as a plan stores them: a knob they do not name is its default, as when the plan runs
         prior = {**prior, **KNOB_DEFAULTS, **start}
+    fixed = turn_of(prior)          # a plan that turns first is searched turning as it did (the turn is not searched),
+    if fixed:                       # from the jump it ran: a knob it does not name at its default, not the prior's
+        prior = {**KNOB_DEFAULTS, **prior}
     first = {n: min(max(float(prior.get(n, fallback[n])), lo), hi) for n, (lo, hi) in space.bounds().items()}
     seed = _stable_seed(target, air_time, windup_time) + 7919 * restart
     executor = executor or SerialExecutor()
     trial = JumpTrial(character, target, air_time, windup_time, strength,
-                      cancelled if getattr(executor, "in_process", False) else None)
+                      cancelled if getattr(executor, "in_process", False) else None, fixed)
 
     def good_enough(evaluation) -> bool:
         return within_tolerance(evaluation.extra, target, air_time, PLAN_MARGIN)
@@ -210,7 +214,7 @@ def plan_jump(character: str, target, air_time: float, windup_time: float, stren
                                  sigma=REFINE_STEP, population=REFINE_POPULATION, progress=report(len(tried)),
                                  cancelled=cancelled, stop=good_enough, executor=executor).evaluations
     best = _best(tried)
-    settings, measured = best.settings, best.extra
+    settings, measured = {**best.settings, **fixed}, best.extra
     if previous and trial_cost(previous["measured"], target, air_time) <= best.score:
         settings, measured = previous["settings"], previous["measured"]     # the earlier search did better
     return {"settings": settings, "measured": measured, "trials": len(tried) + (previous or {}).get("trials", 0),
@@ -315,10 +319,11 @@ class JumpTrial:
     windup_time: float
     strength: str
     cancelled: Callable[[], bool] | None = None
+    fixed: dict = field(default_factory=dict)     # settings every trial runs with, not searched (turn_of)
 
     def __call__(self, settings: dict) -> tuple[float, dict]:
-        measured = measure_settings(self.character, settings, self.target, self.air_time, self.windup_time,
-                                    self.strength, cancelled=self.cancelled)
+        measured = measure_settings(self.character, {**settings, **self.fixed}, self.target, self.air_time,
+                                    self.windup_time, self.strength, cancelled=self.cancelled)
         return trial_cost(measured, self.target, self.air_time), measured
 
     def __getstate__(self):
@@ -354,8 +359,8 @@ def plan_and_store(character: str, params: dict, strength="human", budget: int =
     spec = load_character(character) if isinstance(character, str) else character
     p = JumpToTarget.schema.validate(params)
     strength = strength_name(strength)
-    check_request(spec, p, strength)
     target = tuple(p[k] for k in ("target_x", "target_y", "target_z", "obstacle_height"))
+    check_request(spec, p, strength, turned_search=turned_start(spec.name, target, strength) is not None)
     plan = plan_jump(spec.name, target, p["air_time"], p["windup_time"], strength, budget, progress=progress,
                      cancelled=cancelled, executor=executor)
     store_user_plan(spec.name, request_of(target, p["air_time"], p["windup_time"], strength), plan)
@@ -419,6 +424,16 @@ def search_start(character: str, target, previous: dict | None, strength="human"
         return found[1] if found else (previous or {}).get("settings")
     miss = math.dist(previous["measured"]["landing"], [float(v) for v in target[:2]])
     return found[1] if found and found[0] < miss else previous["settings"]
+
+
+def turned_start(character: str, target, strength="human") -> dict | None:
+    """For a target on the ground more to the side than ahead, the settings of the stored plan found
+    nearest it to that side if that plan turns first (turn_of): such a target is searched from it,
+    turning as it does, not planned from the measured jumps (none of which turns). None otherwise."""
+    if float(target[2]) or obstacle_of(target) or _side(float(target[0]), float(target[1])) == 0:
+        return None
+    found = nearest_found_plan(character, target, strength)
+    return found[1] if found and turn_of(found[1]) else None
 
 
 def nearest_start_plan(character: str, target, strength="human") -> tuple[float, dict] | None:
