@@ -15,7 +15,7 @@ from sim_core.simulate import RunRequest, largest_difference, replay, run
 from sim_core.skills.vault.behaviour import CONSTANTS
 from sim_core.skills.vault.assess import (BALANCED_TIME, BOW_BODIES, HORSE_BODIES, NO_STEP, PEAK_LANDING_LIMIT,
                                           ROTATION_TOLERANCE, TABLE_1, table_1, trunk_pitch)
-from sim_core.skills.vault.report import format_table_1
+from sim_core.skills.vault.report import format_table_1, landing_trace, parting
 from sim_core.world.apparatus import BOARD_TOP
 
 STATES = ["hurdle", "board", "first_flight", "horse", "second_flight", "landing", "absorb", "rise", "balance",
@@ -181,6 +181,20 @@ def test_a_run_up_speed_outside_the_handled_range_is_refused(speed):
     low, high = CONSTANTS.handled_speed
     with pytest.raises(ParameterError, match=rf"runup_speed={speed:g} m/s is outside .* allowed range is \[{low:g}, {high:g}\]"):
         run(RunRequest("vault", "woman", params={"runup_speed": speed}, duration=0.1))
+
+
+def test_the_landing_trace_reads_where_the_run_goes(vault):
+    """`report vault --landing`: the board touchdown at the board's centre, the hands on the horse's near
+    face with the head after them (the fault), the mat touchdown with the COM behind the feet, the
+    landing's absorb, rise and balance in order; a run does not part from itself."""
+    r = landing_trace(vault)
+    assert r["outcome"] == "success" and r["fall_time"] is None
+    assert abs(r["board"][1] - vault.meta["world"]["springboard"][0]) < 0.05, r["board"]
+    hand_time, _, _, head_time = r["horse"][:4]
+    assert head_time is not None and head_time > hand_time, r["horse"]
+    assert r["mat"][1] < 0.0 < r["mat"][4], r["mat"]
+    assert r["events"]["absorb"] < r["events"]["rise"] < r["events"]["balance"], r["events"]
+    assert parting(vault, vault) == [None, None, None]
 
 
 def test_the_feet_stay_in_the_mat(vault):

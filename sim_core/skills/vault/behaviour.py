@@ -158,10 +158,16 @@ VAULT_SETTINGS = Schema(
     setting("absorb_kp", "1", 0.0, 2.0, "after the touchdown: gain factor of the knee and hip servos (they give)"),
     setting("absorb_kv", "1", 0.0, 10.0, "after the touchdown: damping factor of the knee and hip servos"),
     setting("absorb_knee", "rad", 0.0, 1.5, "the knees' targets this much deeper than at the touchdown"),
+    setting("absorb_stick", "bool", 0.0, 1.0,
+            "1 = the knees stick the landing: their targets follow the measured knees (the servos only damp) while the "
+            "COM still goes down, and hold where they are once it stops (no spring back up); 0 = absorb_knee deeper"),
     setting("absorb_hip_gain", "1", 0.0, 5.0, "after the touchdown: gain factor of the hip servos (the waist)"),
     setting("absorb_trunk", "rad", -0.5, 1.5, "after the touchdown the hips servo the pelvis to lean this far forward"),
     setting("absorb_trunk_kp", "rad/m", -10.0, 10.0,
             "... less this much per metre of the capture point ahead of the feet's middle"),
+    setting("capture_spin", "bool", 0.0, 1.0,
+            "1 = the absorb's capture point takes the speed from the angular momentum about the feet's middle (the "
+            "spin about the COM included: H_f / (m h)); 0 = the COM's forward speed"),
     setting("absorb_min_height", "m", 0.05, 1.0, "the capture point's COM height is at least this (a guard)"),
     setting("settled_spin", "kg m²/s", 0.0, 50.0, "... and its angular momentum about the lateral axis is below this"),
     setting("absorb_com_kp", "rad/m", -20.0, 20.0, "ankle offset per metre of the COM ahead of the feet's middle while absorbing"),
@@ -300,6 +306,7 @@ class MatAbsorb(Behaviour):
         self.hips = s.indices(["hip_r_y", "hip_l_y"])
         self.ankle_front, self.ankle_back = landing.ankle_front, landing.ankle_back
         self.over_feet = False
+        self.stuck = None                       # absorb_stick: the knees where the fall stopped
 
     def start(self, t: float) -> None:
         s, c = self.ctx.servos, self.cfg
@@ -332,7 +339,15 @@ class MatAbsorb(Behaviour):
         # the capture point (the COM's place plus its speed times sqrt(h / g)) ahead of the feet's
         # middle leans the trunk back, behind it forward
         height = float(d.subtree_com[self.pelvis][2]) - float(self.landing.airborne.support.points(d)[:, 2].min())
-        capture = ahead + speed * math.sqrt(max(height, self.cfg["absorb_min_height"]) / GRAVITY)
+        height = max(height, self.cfg["absorb_min_height"])
+        if c["capture_spin"]:
+            # the angular momentum about the feet's middle (the spin about the COM with the COM's own) as
+            # the speed a point mass at the COM's height would carry: the trunk's rotation counts too
+            v = d.subtree_linvel[self.pelvis]
+            mass = float(self.ctx.model.body_subtreemass[self.pelvis])
+            about_feet = float(d.subtree_angmom[self.pelvis][1]) + mass * (height * float(v[0]) - ahead * float(v[2]))
+            speed = about_feet / (mass * height)
+        capture = ahead + speed * math.sqrt(height / GRAVITY)
         trunk_error = (math.atan2(-float(p[6]), float(p[8]))                        # the pelvis's forward pitch
                        - (self.trunk_lean(t) - c["absorb_trunk_kp"] * capture))
         self.knee_base(t, targets)
@@ -359,7 +374,17 @@ class MatAbsorb(Behaviour):
         return self.cfg["absorb_trunk"]
 
     def knee_base(self, t: float, targets: np.ndarray) -> None:
-        """The knees' targets: where they touched down, a little deeper (set in start)."""
+        """The knees' targets: where they touched down, a little deeper (set in start); with
+        absorb_stick, the measured knees while the COM goes down (the servos damp the fall and
+        store nothing), then held where the fall stopped."""
+        if not self.cfg["absorb_stick"]:
+            return
+        if self.stuck is None:
+            if float(self.ctx.data.subtree_linvel[self.pelvis][2]) < 0.0:
+                targets[self.knees] = self.ctx.servos.angles()[self.knees]
+                return
+            self.stuck = self.ctx.servos.angles()[self.knees].copy()
+        targets[self.knees] = self.stuck
 
     @property
     def finished(self) -> bool:

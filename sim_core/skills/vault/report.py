@@ -39,25 +39,96 @@ def format_table_1(trajectory) -> str:
     return "\n".join(lines)
 
 
-def speed_scan(speeds, character: str = "woman", apparatus: str = "horse_1987") -> list[dict]:
-    """Runs the whole vault with the character's row at each run-up speed - also outside the offered
-    range (vault_any.json's handled_speed), since the scan is how that range is measured: the row's
-    settings as set (``low_level``) - and returns per speed its outcome, the fall time, the rotation
-    and the bodies on the horse."""
+def run_at(speed: float, character: str = "woman", apparatus: str = "horse_1987", duration: float | None = None):
+    """The whole vault (or its first ``duration`` s) with the character's row at one run-up speed - also
+    outside the offered range (vault_any.json's handled_speed), since this is how that range is
+    measured: the row's settings as set (``low_level``)."""
     from ...simulate import RunRequest, run
     from ...errors import ParameterError
     from .behaviour import calibrated
     row = calibrated(character, "human")
     if row is None:
         raise ParameterError(f"the {character} has no vault settings with human torque limits to scan")
+    params = {**row["settings"], "low_level": 1.0, "runup_speed": float(speed), "apparatus": apparatus}
+    return run(RunRequest("vault", character, params=params, duration=duration))
+
+
+def speed_scan(speeds, character: str = "woman", apparatus: str = "horse_1987") -> list[dict]:
+    """Runs the whole vault at each run-up speed (``run_at``) and returns per speed its outcome, the
+    fall time, the rotation and the bodies on the horse."""
     rows = []
     for speed in speeds:
-        params = {**row["settings"], "low_level": 1.0, "runup_speed": float(speed), "apparatus": apparatus}
-        trajectory = run(RunRequest("vault", character, params=params))
+        trajectory = run_at(speed, character, apparatus)
         m = trajectory.meta["metrics"]
         rows.append({"speed": float(speed), "outcome": trajectory.meta["outcome"], "fall_time": m.get("fall_time"),
                      "rotation": m["rotation"], "horse_fault": m.get("horse_fault")})
     return rows
+
+
+def landing_trace(trajectory) -> dict:
+    """Where a run goes, read off the trajectory: the board touchdown (time, the feet's x), the board and
+    horse liftoff (COM velocity, angular momentum L_y about the COM), the hand touchdown (time, the hands'
+    x and z), the head's first push on the horse, the mat touchdown (the COM's distance ahead of the middle
+    of the feet, its velocity, L_y) and the controller's landing events (absorb, rise, balance)."""
+    from .assess import vault_phases
+    a, meta = trajectory.arrays, trajectory.meta
+    t, names = a["time"], list(a["body_names"])
+    phases = vault_phases(trajectory)
+    trace = {"outcome": meta["outcome"], "fall_time": meta["metrics"].get("fall_time")}
+    if "board" in phases:
+        b0, b1 = phases["board"]
+        trace["board"] = (float(t[b0]), float(a["body_pos"][b0, names.index("FOOTR"), 0]),
+                          *a["com_vel"][b1, [0, 2]], float(a["angmom"][b1, 1]))
+    if "horse" in phases:
+        h0, h1 = phases["horse"]
+        hands = a["body_pos"][h0, [names.index("HANDR"), names.index("HANDL")]]
+        head = np.flatnonzero(a["contact_force"][:, names.index("HEAD"), meta["world_geoms"].index("vault_table"), 2] > 0)
+        trace["horse"] = (float(t[h0]), float(hands[:, 0].mean()), float(hands[:, 2].mean()),
+                          float(t[head[0]]) if len(head) else None, *a["com_vel"][h1, [0, 2]], float(a["angmom"][h1, 1]))
+    if "mat" in phases:
+        k = phases["mat"][0] - 1
+        trace["mat"] = (float(t[k + 1]), float(a["com"][k, 0] - a["support_points"][k, :, 0].mean()),
+                        *a["com_vel"][k, [0, 2]], float(a["angmom"][k, 1]))
+    trace["events"] = {}
+    for when, name in meta["phase_events"]:
+        if name in ("absorb", "rise", "balance") and name not in trace["events"]:
+            trace["events"][name] = float(when)
+    return trace
+
+
+def parting(first, second, thresholds=(1e-3, 1e-2, 5e-2)) -> list[float | None]:
+    """The times at which two runs' COMs are first further apart than each threshold (m)."""
+    a, b = first.arrays, second.arrays
+    n = min(len(a["time"]), len(b["time"]))
+    apart = np.abs(a["com"][:n] - b["com"][:n]).max(axis=1)
+    return [float(a["time"][int(np.argmax(apart > d))]) if (apart > d).any() else None for d in thresholds]
+
+
+def landing_main(args) -> int:
+    """--landing: per run-up speed where the run goes (``landing_trace``), and where each speed's run
+    parts from the first one's."""
+    speeds = [float(x) for x in args.landing.split(",")]
+    runs = [run_at(speed, args.character, args.apparatus) for speed in speeds]
+    for speed, trajectory in zip(speeds, runs):
+        r = landing_trace(trajectory)
+        fell = "" if r["fall_time"] is None else f" at {r['fall_time']:.2f} s"
+        print(f"runup_speed {speed:.4f} m/s: {r['outcome']}{fell}")
+        if "board" in r:
+            print("  board: touchdown at {:.3f} s, the right foot at x = {:.3f} m; liftoff v = ({:.3f}, {:.3f}) m/s, "
+                  "L_y {:.2f} kg m2/s".format(*r["board"]))
+        if "horse" in r:
+            h = r["horse"]
+            head = "none" if h[3] is None else f"{h[3]:.3f} s"
+            print(f"  horse: hands at {h[0]:.3f} s, x = {h[1]:.3f} m, z = {h[2]:.3f} m; the head from {head}; liftoff v = "
+                  f"({h[4]:.3f}, {h[5]:.3f}) m/s, L_y {h[6]:.2f} kg m2/s")
+        if "mat" in r:
+            print("  mat: touchdown at {:.3f} s, the COM {:+.3f} m ahead of the feet's middle, v = ({:.3f}, {:.3f}) m/s, "
+                  "L_y {:.2f} kg m2/s".format(*r["mat"]))
+        print("  landing: " + ", ".join(f"{name} at {when:.3f} s" for name, when in r["events"].items()))
+    for speed, trajectory in zip(speeds[1:], runs[1:]):
+        apart = ", ".join("never" if when is None else f"{when:.3f} s" for when in parting(runs[0], trajectory))
+        print(f"{speed:.4f} against {speeds[0]:.4f} m/s: the COMs 1 mm, 1 cm, 5 cm apart at {apart}")
+    return 0
 
 
 def scan_main(args) -> int:
@@ -99,9 +170,14 @@ def main(argv=None) -> int:
                              "and print which succeed (how handled_speed is measured)")
     parser.add_argument("--draws", type=int, default=0, help="with --scan: this many random speeds in [LOW, HIGH]")
     parser.add_argument("--seed", type=int, default=0, help="with --scan: the random draws' seed")
+    parser.add_argument("--landing", default=None, metavar="SPEEDS",
+                        help="instead: run the vault at these run-up speeds (comma-separated) and print where each run goes "
+                             "(board, horse, mat touchdown, the landing's events) and where it parts from the first")
     args = parser.parse_args(argv)
     if args.scan:
         return scan_main(args)
+    if args.landing:
+        return landing_main(args)
     trajectory = run(RunRequest("vault", args.character, params={"apparatus": args.apparatus}))
     if args.out:
         trajectory.save(args.out)
