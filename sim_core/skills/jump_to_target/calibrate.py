@@ -375,8 +375,15 @@ distance and time (1.201 m, 0.655 s) but fell; her others landed 2-20 cm off and
 6), the man's 1.0 m landed at its distance 0.08 s longer in the air (balanced) and his 1.3 m 0.23 m
 short. So the forward region turned is not offered (the region is as before: a sideways target beyond
 it is refused unless a plan is stored); measuring turned jumps in `jump_model` over a sideways grid is
-not done. Not done either: the planner searching `turn_first`, the woman's 1.3 m left, 1.6 m, and the jumps
-asked in 0.6 s.
+not done. The planner now searches a sideways target from the stored plan found nearest it to that side
+when that plan turns first, turning as it does (`planning.jump.turned_start`; before, every trial of such a
+search ran without the turn, and the region of the measured jumps, none of which turns, refused it before
+planning); it does not search the turn's angle. Four such searches (120 trials each, tenth session,
+`python -m sim_core plan jump_to_target --set target_y=Y --set air_time=T --budget 120 --workers 1`) found
+none: the woman's 1.3 m left in 0.4 s (nearest balanced (0.080, 1.059) m after 0.355 s), the man's 1.45 m
+right in 0.5 s (none better than his 1.3 m plan it started from), his 1.6 m left in 0.45 s ((0.128, 1.262) m
+after 0.42 s), the woman's 1.6 m right in 0.4 s (none better than her 1.3 m plan). Not done either: the
+woman's 1.3 m left, 1.6 m, and the jumps asked in 0.6 s.
 
 With the thesis's unlimited strength (`--strength unlimited`, 300 trials each, started from the
 nearest human plan; the table at the end) the take-off reaches the targets the human legs do not,
@@ -384,6 +391,31 @@ but the landings still fall: the man's 1.3 m left lands on the target, (-0.002, 
 0.595 s, and falls (his 1.3 m right found nothing balanced nearer than (-0.18, -0.73) m), the
 woman's 1.9 m forward lands at (1.91, 0.03) m after 0.45 s and falls. The landing holds its leg
 torques to the human limits at any strength (`LANDING_TORQUE_LIMIT`), so strength does not help it.
+
+**Beyond the region, tenth session: two planners from the measured jumps, measured and not kept.** The
+whole flat box passes the take-off speed check (the path estimate's speed against the strongest
+measured take-off, 4.21 m/s man / 4.30 m/s woman: 4,000 of 4,000 draws), so what limits the region is
+the planning, not the legs' speed. Had the region been twice as wide (the nearest measured balanced jump
+within 2 tolerances, 10 cm and 0.1 s, instead of 1) it would cover 36 % of the box for each character
+(reach 3: 55 % / 51 %; straight ahead, |y| < 0.1 m, today's region covers 22-60 % by distance). Targets
+drawn in that ring (outside today's region, 1-2 tolerances from a measured balanced jump; seed 7, scratch
+scripts, 6 trials each unless said):
+- today's planner (`plan_from_model`, then CMA-ES up to 24 trials): **2 of 24** (man 0 / 12, woman
+  2 / 12); most nearest trials are the measured jump itself, 5-10 cm off;
+- a convex blend of the measured balanced jumps whose landings surround the target (non-negative
+  weights, `scipy.optimize.nnls`, in tolerance units, nearer jumps preferred; each miss added as a secant
+  point): **1 of 7** (man): a blend of neighbours in landing space lands far away (0.86 m asked, 1.03 m
+  landed, fell) - jumps that land close together have settings far apart;
+- the nearest measured jump and a Newton step on three flight settings (`com_offset`, `com_offset_y`,
+  `crouch_height`) with a Jacobian from 5 %-of-range nudges measured at request time: **0 of 8** (man):
+  the nudged jumps land 0.2-0.7 m off or fall.
+
+The landing point and the balance are not smooth in the leap's settings near the measured jumps (a
+balanced jump's 5 % nudge lands elsewhere or falls), so no model fit to the measured settings will carry
+a request between them. Growing the region needs a jump whose flight is set by what it commands: a
+take-off that servoes the lift-off COM velocity to the ballistic one (`path_estimate`) and a landing that
+reads the arriving state (the landing planner's approach, `planning/land.py`), so that nearby targets
+are nearby settings. Not started.
 
 ![commanded vs achieved landing point](jump_to_target.png)
 
