@@ -241,7 +241,9 @@ def test_a_rider_not_measured_is_refused_in_one_line(character):
     ("woman", {"course": "slalom", "speed": 4.0}, "gate_offset <= 0.76 m"),
     ("woman", {"speed": 5.0, "heading": 0.5}, "<= 4.5 m/s"), ("imaginary_cyclist", {"speed": 5.5}, "<= 5 m/s"),
     ("imaginary_cyclist", {"course": "coast"}, "straight, slalom, turn, speed_steps, hill"),
-    ("child", {"course": "turn"}, "straight, hill course(s) only"), ("child", {"speed": 4.5}, "<= 4 m/s"),
+    ("child", {"course": "slalom"}, "straight, turn, hill course(s) only"), ("child", {"speed": 4.5}, "<= 4 m/s"),
+    ("child", {"course": "turn", "speed": 3.0, "turn_radius": 4.5}, "radius of at least 5 m"),
+    ("child", {"course": "turn", "speed": 4.0, "turn_radius": 5.0}, "at most 15 deg"),
     ("child", {"speed": 1.5}, ">= 2 m/s"), ("child", {"gear": 2.0}, "gear >= 2.6")])
 def test_a_rider_is_offered_only_what_was_measured_for_it(character, params, limit):
     """The woman and the imaginary cyclist ride the straight, the slalom, the turn and the hill (the

@@ -231,7 +231,7 @@ def test_random_requests_are_refused_or_pass():
 
 def test_the_audit_rides_as_the_rider_asked_and_refuses_what_it_is_not_offered():
     """``report bicycle --random N --character C``: the draw is asked of that rider; a course not in
-    the rider's table is refused in one line naming it (the child: straight and hills only)."""
+    the rider's table is refused in one line naming it (the child: the straight, turns and hills only)."""
     from sim_core.skills.bicycle.behaviour import Bicycling
     from sim_core.skills.bicycle.report import AUDIT_PARAMETERS
     defaults = Bicycling.schema.defaults()

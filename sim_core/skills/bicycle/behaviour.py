@@ -69,6 +69,7 @@ BICYCLE_RANGES = Schema(
     Parameter("min_slalom_speed", "m/s", 0.5, 0.5, 8.0, "the slalom is offered from this speed (and course.py's measured region; slower, the rider fell)"),
     Parameter("max_slalom_speed", "m/s", 0.5, 0.5, 8.0, "the slalom is offered up to this speed (and course.py's measured region; faster, the rider missed gates)"),
     Parameter("max_turn_lean", "rad", 0.0, 0.0, 0.5, "a turn (the turn course, a given path's bends) is offered asking a steady lean (tan = v^2 / (g r)) up to this (and course.py's MAX_LEAN); more, the rider fell or leaned past 20 deg"),
+    Parameter("min_turn_radius", "m", 3.0, 3.0, 100.0, "a turn (the turn course, a given path's bends) is offered on a radius of at least this (course.py), whatever its lean; tighter, the rider fell (3: the schema's tightest turn, no limit beyond it)"),
     Parameter("max_slalom_acceleration", "m/s^2", 0.1, 0.1, 10.0, "the slalom is offered up to this peak lateral acceleration of its sine (and course.py's; more, the rider fell or missed gates)"),
     Parameter("speed_gain", "N m s/m", 0.0, 0.0, 5000.0, "eq. 7 k_v: crank torque per m/s of speed error"),
     Parameter("max_crank_torque", "N m", 0.0, 0.0, 1000.0, "limit of eq. 7's crank torque, driving or braking (a rider's strength)"),

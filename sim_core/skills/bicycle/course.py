@@ -86,7 +86,7 @@ def course_for(p: dict) -> Course:
     path, gates, hill, start_speed = None, np.zeros((0, 2)), (), p["speed"]
     if name == "turn":
         path = turn_path(p["turn_angle"], p["turn_after"], p["turn_radius"], RUN_OUT)
-        _check_turn(p["speed"], p["turn_radius"], "turn_radius", p["max_turn_lean"])
+        _check_turn(p["speed"], p["turn_radius"], "turn_radius", p["max_turn_lean"], p["min_turn_radius"])
     elif name == "slalom":
         _check_slalom(p["speed"], p["gate_spacing"], p["gate_offset"], p["gate_width"],
                       (p["min_slalom_speed"], p["max_slalom_speed"]), p["max_slalom_acceleration"])
@@ -116,7 +116,7 @@ def course_for(p: dict) -> Course:
         radius, where = tightest_radius(np.vstack([[-lookahead, 0.0], path]), lookahead)
         if math.isfinite(radius):
             _check_turn(max(speed for _, speed in speeds), radius, f"path, {max(where - lookahead, 0.0):.1f} m along it",
-                        p["max_turn_lean"])
+                        p["max_turn_lean"], p["min_turn_radius"])
     _check_pedalling(p, [speed for _, speed in speeds], start_speed)
     fastest = max(speed for _, speed in speeds)
     if path is None and p["heading"] != 0.0:
@@ -276,10 +276,16 @@ def _check_slalom(speed: float, spacing: float, offset: float, width: float, spe
                              f"{min(most, SLALOM_MAX_ACCELERATION):g} m/s^2; a wider gate_spacing or a lower speed would do")
 
 
-def _check_turn(speed: float, radius: float, names: str, most: float) -> None:
+def _check_turn(speed: float, radius: float, names: str, most: float, tightest: float) -> None:
     """A turn asking a steady lean (tan = v^2 / (g r)) of more than MAX_LEAN, or than the rider's table's
     ``most`` (max_turn_lean: the woman fell on a tighter turn at 3 m/s, the imaginary cyclist leaned past
-    20 deg; docs/bicycle.md, riders other than the man), is refused naming the speed or radius that would do."""
+    20 deg; docs/bicycle.md, riders other than the man), is refused naming the speed or radius that would do;
+    so is one tighter than the table's ``tightest`` radius at any speed (min_turn_radius: the child fell on
+    3.0-3.43 m turns at 2-3 m/s whatever the lean)."""
+    if radius < tightest:
+        raise ParameterError(f"the course turns on a radius of {radius:.2f} m (from {names}); this rider's turns "
+                             f"are ridden on a radius of at least {tightest:g} m (allowed range of turn_radius "
+                             f"for this rider: [{tightest:g}, 100] m)")
     lean, limit = math.atan(speed * speed / (GRAVITY * radius)), min(MAX_LEAN, most)
     if lean > limit:
         slowest = math.sqrt(GRAVITY * radius * math.tan(limit))
