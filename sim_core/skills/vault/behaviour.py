@@ -481,15 +481,16 @@ class MatRise(MatAbsorb):
 
 
 class MatCatch(MatAbsorb):
-    """The landing that takes the momentum in the impact (``catch``): from the touchdown the knees and
-    the waist are pure dampers while the COM falls - their targets follow the measured joints (the
-    waist up to ``catch_lean_max`` of forward lean), so the impact's energy goes into their damping
-    and nothing is stored to throw the trunk back up - and once the fall has stopped they hold where
-    it stopped. Throughout, the ankles servo the capture point (the COM's place plus its speed times
-    sqrt(h / g), the spin about the COM counted with ``capture_spin``) to ``catch_target`` ahead of the
-    feet's middle, within what the feet can take; a continuous servo, not a switch. Once the fall has
-    stopped, the capture point is within ``catch_within`` and ``catch_min`` has passed, the rise
-    (``MatCatchRise``) straightens the legs with the same ankle servo."""
+    """The landing meant to take the momentum in the impact (``catch``): from the touchdown the knees and
+    the waist are pure dampers while the COM falls - their targets follow the measured joints (the knees
+    down to ``catch_knee_max``, the waist up to ``catch_lean_max`` of forward lean) - and once the fall has
+    stopped they hold where it stopped (she still rebounds off the mat: docs/vault.md). Throughout, the
+    ankles servo the capture point (the COM's place plus its speed times sqrt(h / g), the spin about the
+    COM counted with ``capture_spin``) to ``catch_target`` ahead of the feet's middle, within
+    ``catch_ankle``; a continuous servo, not a switch. The held lean moves by ``catch_lean_kp`` per metre
+    of the capture point's error, and sideways the hips' abduction joins the ankles' roll
+    (``catch_side_hip``). Once the fall has stopped, ``catch_min`` has passed and the capture point is
+    within ``catch_within``, the rise (``MatCatchRise``) stands her up with the same servos."""
 
     def start(self, t: float) -> None:
         super().start(t)
