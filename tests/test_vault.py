@@ -15,7 +15,7 @@ from sim_core.simulate import RunRequest, largest_difference, replay, run
 from sim_core.skills.vault.behaviour import CONSTANTS
 from sim_core.skills.vault.assess import (BALANCED_TIME, BOW_BODIES, HORSE_BODIES, NO_STEP, PEAK_LANDING_LIMIT,
                                           ROTATION_TOLERANCE, TABLE_1, table_1, trunk_pitch)
-from sim_core.skills.vault.report import format_table_1, landing_trace, parting
+from sim_core.skills.vault.report import format_table_1, landing_trace, parting, run_at
 from sim_core.world.apparatus import BOARD_TOP
 
 STATES = ["hurdle", "board", "first_flight", "horse", "second_flight", "landing", "absorb", "rise", "balance",
@@ -195,6 +195,16 @@ def test_the_landing_trace_reads_where_the_run_goes(vault):
     assert r["mat"][1] < 0.0 < r["mat"][4], r["mat"]
     assert r["events"]["absorb"] < r["events"]["rise"] < r["events"]["balance"], r["events"]
     assert parting(vault, vault) == [None, None, None]
+
+
+def test_report_settings_go_over_her_row_and_are_checked():
+    """`report vault --landing/--scan --set NAME=VALUE`: the settings go over her row (how the catch
+    landing, off in her table, is measured: docs/vault.md); a bad value is refused in one line."""
+    trajectory = run_at(6.75, duration=0.05, overrides=["catch=1", "place_capture=1"])
+    params = trajectory.meta["params"]
+    assert params["catch"] == 1.0 and params["place_capture"] == 1.0 and params["low_level"] == 1.0
+    with pytest.raises(ParameterError, match=r"catch_kp=99 rad/m is out of range; allowed range for catch_kp is \[0, 20\]"):
+        run_at(6.75, duration=0.05, overrides=["catch_kp=99"])
 
 
 def test_the_feet_stay_in_the_mat(vault):

@@ -319,6 +319,12 @@ class Landing(Behaviour):
         share = hermite_scalar((abs(vx) - low) / (high - low))
         return p["knee_flexion"] + (p["fast_knee_flexion"] - p["knee_flexion"]) * share
 
+    def foot_wanted(self, vx: float, spin_offset: float) -> float:
+        """Where the sole's centre is placed ahead of the COM in flight (eq. 6.1's goal): the foot lead
+        time's worth of the horizontal speed, the calibrated and requested deltas and the spin term."""
+        p = self.params
+        return vx * p["foot_lead_time"] + self.calibrated_delta + p["foot_delta"] + spin_offset
+
     def _sideways_hip(self, k: int, d, com, vel, c: float, sn: float) -> float:
         """Hip abduction target for foot ``k``: eq. 6.1's servo across the body. The leading foot
         goes beside the COM where its sideways speed will be used up (the foot lead time's worth
@@ -421,7 +427,7 @@ class Landing(Behaviour):
                 if self.calibrated_delta is None:          # the horizontal and touchdown speeds of this flight
                     self.calibrated_delta = (calibrated_foot_delta(self.ctx.character.name, vx, touchdown_speed)
                                              if p.get("landing_table", 1.0) else 0.0)
-                wanted = vx * p["foot_lead_time"] + self.calibrated_delta + p["foot_delta"] + spin_offset
+                wanted = self.foot_wanted(vx, spin_offset)
                 hip = d.xpos[self.hips[k]]
                 hip_from_com = c * (hip[0] - com[0]) + sn * (hip[1] - com[1])
                 thigh_pitch = self.leg.thigh_pitch_for(wanted - self.sole_centre - hip_from_com, knee)

@@ -184,6 +184,33 @@ VAULT_SETTINGS = Schema(
     setting("stand_time", "s", 0.2, 5.0, "the balance stands up from the landed crouch in this time"),
     setting("stand_com_offset", "m", -0.25, 0.25, "... with the COM this far ahead (+) of the feet's middle"),
     setting("landing_blend", "s", 0.0, 0.3, "landing: the joint targets blend in from the layout over this time"),
+    setting("catch", "bool", 0.0, 1.0,
+            "1 = the landing catches the momentum in the impact (MatCatch): the knees and the waist give as pure "
+            "dampers while the COM falls and hold where it stopped (nothing stored to throw the trunk back up), and "
+            "the ankles servo the capture point over the feet from the touchdown on, through the rise; 0 = MatAbsorb"),
+    setting("catch_kp", "rad/m", 0.0, 20.0, "catch: ankle offset per metre of the capture point ahead of catch_target"),
+    setting("catch_target", "m", -0.15, 0.15, "catch: the capture point is servoed this far ahead of the feet's middle"),
+    setting("catch_lean_max", "rad", 0.0, 1.5, "catch: the waist gives at most to this forward lean of the pelvis"),
+    setting("catch_lean_kp", "rad/m", -10.0, 10.0,
+            "catch: once the fall has stopped, the held lean less this much per metre of the capture point ahead of "
+            "catch_target (the trunk's place moves the COM)"),
+    setting("catch_knee_max", "rad", 0.5, 2.5, "catch: the knees give at most to this flexion, then hold there"),
+    setting("catch_ankle", "rad", 0.0, 0.6,
+            "catch: the ankles' capture-point offset is limited to this either way (0: to what the balance's feet "
+            "take standing, the landing's ankle limits)"),
+    setting("place_capture", "bool", 0.0, 1.0,
+            "1 = the landing places the feet from the predicted touchdown (MatLanding): so that the capture point "
+            "of the angular momentum about the feet at the touchdown is place_target ahead of them; 0 = the leap's "
+            "placement (foot_delta, landing_foot_lead_time, spin_placement)"),
+    setting("place_target", "m", -0.3, 0.3,
+            "... the capture point at the touchdown, H_f / (m sqrt(g h)) ahead of the COM's place, this far ahead "
+            "of the feet (H_f the angular momentum about the feet, kept through the impact)"),
+    setting("catch_side_hip", "1", 0.0, 2.0,
+            "catch: the hips' abduction offset per radian of the ankles' sideways command (the hips shift the pelvis "
+            "over the feet, as the balance's eq. 7.2 does; 0: the ankles alone)"),
+    setting("catch_rise_time", "s", 0.1, 5.0, "catch: the rise along the crouch table takes this long"),
+    setting("catch_within", "m", 0.0, 0.3, "catch: the rise starts once the capture point is this close to catch_target ..."),
+    setting("catch_min", "s", 0.0, 2.0, "... and at least this long after the touchdown"),
 )
 
 
@@ -282,6 +309,33 @@ class PoseLaw(PoseMove):
             self.law(t)
 
 
+class MatLanding(Landing):
+    """The leap's landing with the feet placed from the predicted touchdown (``place_capture``): the
+    angular momentum about the feet, H_f = L_y + m (h v_x - dx v_z), is what the contact forces at the
+    feet leave through the impact, and the capture point it carries, dx + H_f / (m sqrt(g h)), is where
+    the COM will come to rest. With the touchdown's v_z (from the feet's height and the fall) and h =
+    ``touchdown_com``, the COM's place dx that puts that point ``place_target`` ahead of the feet is solved
+    every tick of the flight (it is linear in dx), and the feet are servoed (eq. 6.1) to -dx ahead of the
+    COM. (The servo lags: the feet land ~8 cm short of the goal, so place_target is below the point aimed at.)"""
+
+    def __init__(self, params, ctx: ControlContext, cfg: dict):
+        super().__init__(params, ctx)
+        self.cfg = cfg
+
+    def foot_wanted(self, vx: float, spin_offset: float) -> float:
+        if not self.cfg["place_capture"]:
+            return super().foot_wanted(vx, spin_offset)
+        d = self.ctx.data
+        v = d.subtree_linvel[self.pelvis]
+        drop = max(float(self.airborne.feet_heights(d).min()), 0.0)
+        vz = -math.sqrt(float(v[2]) ** 2 + 2.0 * GRAVITY * drop)      # at the touchdown
+        h = self.cfg["touchdown_com"]                  # the COM above the feet at the touchdown (the flight's aim)
+        reach = math.sqrt(GRAVITY * h)
+        spin = float(d.subtree_angmom[self.pelvis][1]) / self.mass
+        dx = (self.cfg["place_target"] - (spin + h * float(v[0])) / reach) / (1.0 - vz / reach)
+        return -dx
+
+
 class MatAbsorb(Behaviour):
     """The landing on the mat after the touchdown ([A] 162): the knees and the waist (hips) give
     as dampers - their servos softened (``absorb_kp``) and damped (``absorb_kv``), their targets a
@@ -300,7 +354,7 @@ class MatAbsorb(Behaviour):
         s = ctx.servos
         self.joints = {side: {k: s.index[f"{j}_{side}_{a}"] for k, (j, a) in
                               {"hip": ("hip", "y"), "knee": ("knee", "y"), "ankle": ("ankle", "y"),
-                               "ankle_x": ("ankle", "x")}.items()}
+                               "ankle_x": ("ankle", "x"), "hip_x": ("hip", "x")}.items()}
                        for side in "rl"}
         self.knees = s.indices(["knee_r_y", "knee_l_y"])
         self.hips = s.indices(["hip_r_y", "hip_l_y"])
@@ -329,17 +383,13 @@ class MatAbsorb(Behaviour):
         middle = 0.5 * (points[:, axis].min() + points[:, axis].max())
         return float(com[axis] - middle), float(d.subtree_linvel[self.pelvis][axis])
 
-    def update(self, t: float) -> None:
-        d, s, c = self.ctx.data, self.ctx.servos, self.cfg
+    def capture_point(self) -> tuple[float, float]:
+        """The capture point (the COM's place plus its speed times sqrt(h / g)) ahead of the feet's middle,
+        and the speed it takes (with capture_spin, from the angular momentum about the feet's middle)."""
+        d, c = self.ctx.data, self.cfg
         ahead, speed = self.com_from_feet()
-        ankle = min(max(c["absorb_com_kp"] * ahead + c["absorb_com_kv"] * speed, -self.ankle_back), self.ankle_front)
-        targets = self.base.copy()
-        angles = s.angles()
-        p = d.xmat[self.pelvis]
-        # the capture point (the COM's place plus its speed times sqrt(h / g)) ahead of the feet's
-        # middle leans the trunk back, behind it forward
         height = float(d.subtree_com[self.pelvis][2]) - float(self.landing.airborne.support.points(d)[:, 2].min())
-        height = max(height, self.cfg["absorb_min_height"])
+        height = max(height, c["absorb_min_height"])
         if c["capture_spin"]:
             # the angular momentum about the feet's middle (the spin about the COM with the COM's own) as
             # the speed a point mass at the COM's height would carry: the trunk's rotation counts too
@@ -347,9 +397,22 @@ class MatAbsorb(Behaviour):
             mass = float(self.ctx.model.body_subtreemass[self.pelvis])
             about_feet = float(d.subtree_angmom[self.pelvis][1]) + mass * (height * float(v[0]) - ahead * float(v[2]))
             speed = about_feet / (mass * height)
-        capture = ahead + speed * math.sqrt(height / GRAVITY)
-        trunk_error = (math.atan2(-float(p[6]), float(p[8]))                        # the pelvis's forward pitch
-                       - (self.trunk_lean(t) - c["absorb_trunk_kp"] * capture))
+        return ahead + speed * math.sqrt(height / GRAVITY), speed
+
+    def pelvis_lean(self) -> float:
+        """The pelvis's forward pitch."""
+        p = self.ctx.data.xmat[self.pelvis]
+        return math.atan2(-float(p[6]), float(p[8]))
+
+    def update(self, t: float) -> None:
+        d, s, c = self.ctx.data, self.ctx.servos, self.cfg
+        ahead, speed = self.com_from_feet()
+        ankle = min(max(c["absorb_com_kp"] * ahead + c["absorb_com_kv"] * speed, -self.ankle_back), self.ankle_front)
+        targets = self.base.copy()
+        angles = s.angles()
+        # the capture point ahead of the feet's middle leans the trunk back, behind it forward
+        capture, speed = self.capture_point()
+        trunk_error = self.pelvis_lean() - (self.trunk_lean(t) - c["absorb_trunk_kp"] * capture)
         self.knee_base(t, targets)
         left, left_speed = self.com_from_feet(1)
         sideways = c["absorb_side_kp"] * left + c["absorb_side_kv"] * left_speed
@@ -401,7 +464,7 @@ class MatRise(MatAbsorb):
         super().start(t)
         s = self.ctx.servos
         self.knees_from = s.angles()[self.knees].copy()
-        self.lean_from = float(math.atan2(-float(self.ctx.data.xmat[self.pelvis][6]), float(self.ctx.data.xmat[self.pelvis][8])))
+        self.lean_from = float(self.pelvis_lean())
 
     def share(self, t: float) -> float:
         return hermite_scalar((t - self.t0) / self.cfg["rise_time"])
@@ -411,6 +474,111 @@ class MatRise(MatAbsorb):
 
     def knee_base(self, t: float, targets: np.ndarray) -> None:
         targets[self.knees] = self.knees_from + (self.cfg["rise_knee"] - self.knees_from) * self.share(t)
+
+    @property
+    def finished(self) -> bool:
+        return self.share(self.ctx.data.time) >= 1.0
+
+
+class MatCatch(MatAbsorb):
+    """The landing meant to take the momentum in the impact (``catch``): from the touchdown the knees and
+    the waist are pure dampers while the COM falls - their targets follow the measured joints (the knees
+    down to ``catch_knee_max``, the waist up to ``catch_lean_max`` of forward lean) - and once the fall has
+    stopped they hold where it stopped (she still rebounds off the mat: docs/vault.md). Throughout, the
+    ankles servo the capture point (the COM's place plus its speed times sqrt(h / g), the spin about the
+    COM counted with ``capture_spin``) to ``catch_target`` ahead of the feet's middle, within
+    ``catch_ankle``; a continuous servo, not a switch. The held lean moves by ``catch_lean_kp`` per metre
+    of the capture point's error, and sideways the hips' abduction joins the ankles' roll
+    (``catch_side_hip``). Once the fall has stopped, ``catch_min`` has passed and the capture point is
+    within ``catch_within``, the rise (``MatCatchRise``) stands her up with the same servos."""
+
+    def start(self, t: float) -> None:
+        super().start(t)
+        self.fallen = False                         # the COM's fall stopped
+        self.held_knees = None
+        self.held_lean = None
+        self.capture = 0.0
+
+    def ankle_limits(self, t: float) -> tuple[float, float]:
+        """How far back and forward the ankles' capture-point offset may go (catch_ankle, or the balance's)."""
+        c = self.cfg
+        return (c["catch_ankle"], c["catch_ankle"]) if c["catch_ankle"] else (self.ankle_back, self.ankle_front)
+
+    def posture(self, t: float, targets: np.ndarray, angles: np.ndarray) -> float:
+        """The knees' targets (set in ``targets``) and the pelvis lean the hips servo: the measured ones
+        while the COM falls (the waist up to catch_lean_max), held where the fall stopped, the held lean
+        moved by the capture point's error (catch_lean_kp)."""
+        c, d = self.cfg, self.ctx.data
+        lean = self.pelvis_lean()
+        if not self.fallen and float(d.subtree_linvel[self.pelvis][2]) >= 0.0 and t - self.t0 > 0.0:
+            self.fallen = True
+            self.held_knees = np.minimum(angles[self.knees], c["catch_knee_max"])
+            self.held_lean = min(lean, c["catch_lean_max"])
+        if not self.fallen:
+            targets[self.knees] = np.minimum(angles[self.knees], c["catch_knee_max"])
+            return min(lean, c["catch_lean_max"])
+        targets[self.knees] = self.held_knees
+        return self.held_lean - c["catch_lean_kp"] * (self.capture - c["catch_target"])
+
+    def update(self, t: float) -> None:
+        d, s, c = self.ctx.data, self.ctx.servos, self.cfg
+        targets = self.base.copy()
+        angles = s.angles()
+        self.capture, _ = self.capture_point()
+        back, front = self.ankle_limits(t)
+        ankle = min(max(c["catch_kp"] * (self.capture - c["catch_target"]), -back), front)
+        trunk_error = self.pelvis_lean() - self.posture(t, targets, angles)
+        left, left_speed = self.com_from_feet(1)
+        sideways = c["absorb_side_kp"] * left + c["absorb_side_kv"] * left_speed
+        for k, side in enumerate("rl"):
+            f = d.xmat[self.feet[k]]
+            foot_pitch = math.atan2(-float(f[6]), float(f[8]))
+            targets[self.joints[side]["ankle"]] = angles[self.joints[side]["ankle"]] - foot_pitch + ankle
+            foot_roll = math.atan2(float(f[7]), float(f[8]))
+            targets[self.joints[side]["ankle_x"]] = angles[self.joints[side]["ankle_x"]] - foot_roll - sideways
+            targets[self.joints[side]["hip"]] = angles[self.joints[side]["hip"]] + trunk_error
+            targets[self.joints[side]["hip_x"]] = self.base[self.joints[side]["hip_x"]] + c["catch_side_hip"] * sideways
+        s.hold(targets, t)
+        if (self.fallen and t - self.t0 >= c["catch_min"]
+                and abs(self.capture - c["catch_target"]) < c["catch_within"]):
+            self.over_feet = True
+
+
+class MatCatchRise(MatCatch):
+    """The catch's rise, along the landing's crouch table (balanced crouches, the COM over the feet): over
+    ``catch_rise_time`` (Hermite) the knees go to the crouch of a height rising from where the rise began to
+    standing, and the hips lean the pelvis as the crouch of the height she is at leans (less catch_lean_kp
+    per metre of the capture point ahead of catch_target), while the ankles go on servoing the capture
+    point, their limits going over to the balance's; then the balance. (Straightening the knees with the
+    lean going to upright, as ``MatRise`` does, carried the COM back behind the heels: docs/vault.md.)"""
+
+    def start(self, t: float) -> None:
+        super().start(t)
+        self.fallen = True
+        self.height_from = self.pelvis_height()
+
+    def share(self, t: float) -> float:
+        return hermite_scalar((t - self.t0) / self.cfg["catch_rise_time"])
+
+    def ankle_limits(self, t: float) -> tuple[float, float]:
+        """From the catch's to the balance's over the rise, so the feet meet the balance as it holds them."""
+        back, front = super().ankle_limits(t)
+        share = self.share(t)
+        return back + (self.ankle_back - back) * share, front + (self.ankle_front - front) * share
+
+    def pelvis_height(self) -> float:
+        """The mid-hip point's height above the feet, with the ankles' own height (the crouch table's measure)."""
+        d, landing = self.ctx.data, self.landing
+        hips = 0.5 * (d.xpos[landing.hips[0]] + d.xpos[landing.hips[1]])
+        feet = 0.5 * (d.xpos[landing.feet[0]] + d.xpos[landing.feet[1]])
+        return float(hips[2] - feet[2]) + landing.ankle_height
+
+    def posture(self, t: float, targets: np.ndarray, angles: np.ndarray) -> float:
+        table = self.landing.crouch
+        top = float(table.heights[-1])
+        targets[self.knees] = table.at(self.height_from + (top - self.height_from) * self.share(t))[0]
+        lean = float(table.at(self.pelvis_height())[3])
+        return lean - self.cfg["catch_lean_kp"] * (self.capture - self.cfg["catch_target"])
 
     @property
     def finished(self) -> bool:
@@ -639,10 +807,10 @@ class Vault(Sequence):
                                            ) and float(d.subtree_linvel[ctx.actor.root][2]) < 0
 
         def land(t):
-            return Landing(Landing.schema.validate(dict(
+            return MatLanding(Landing.schema.validate(dict(
                 knee_flexion=c["landing_knee_flexion"], fast_knee_flexion=c["landing_knee_flexion"],
                 foot_delta=c["foot_delta"], foot_lead_time=c["landing_foot_lead_time"],
-                spin_placement=c["spin_placement"], blend_time=c["landing_blend"])), ctx)
+                spin_placement=c["spin_placement"], blend_time=c["landing_blend"])), ctx, c)
 
         def hurdle(t):
             swing = both_sides({"shoulder_*_z": c["board_arm"]}) if c["hurdle_swing"] > 0 else {}
@@ -656,9 +824,10 @@ class Vault(Sequence):
             Step("horse", horse, lambda b, t: self.off_horse(t)),
             Step("second_flight", second_flight, ready_to_land),
             Step("landing", land, lambda b, t: b.stage != "flight"),
-            Step("absorb", lambda t: MatAbsorb(ctx, c, self.previous),
+            Step("absorb", lambda t: (MatCatch if c["catch"] else MatAbsorb)(ctx, c, self.previous),
                  lambda b, t: b.finished or t - b.t0 > c["absorb_max"]),
-            Step("rise", lambda t: MatRise(ctx, c, self.previous.landing), lambda b, t: b.finished),
+            Step("rise", lambda t: (MatCatchRise if c["catch"] else MatRise)(ctx, c, self.previous.landing),
+                 lambda b, t: b.finished),
             Step("balance", lambda t: self.stand_up(),
                  lambda b, t: b.posture_reached(t) and t - b.t0 >= c["stand_time"] + CONSTANTS.stand_settle),
             Step("gesture", lambda t: ArmGesture(ctx, self.previous),

@@ -39,10 +39,12 @@ def format_table_1(trajectory) -> str:
     return "\n".join(lines)
 
 
-def run_at(speed: float, character: str = "woman", apparatus: str = "horse_1987", duration: float | None = None):
+def run_at(speed: float, character: str = "woman", apparatus: str = "horse_1987", duration: float | None = None,
+           overrides: list[str] = ()):
     """The whole vault (or its first ``duration`` s) with the character's row at one run-up speed - also
     outside the offered range (vault_any.json's handled_speed), since this is how that range is
-    measured: the row's settings as set (``low_level``)."""
+    measured: the row's settings as set (``low_level``), with ``overrides`` (``name=value``, the CLI's
+    --set) over them."""
     from ...simulate import RunRequest, run
     from ...errors import ParameterError
     from .behaviour import calibrated
@@ -50,15 +52,18 @@ def run_at(speed: float, character: str = "woman", apparatus: str = "horse_1987"
     if row is None:
         raise ParameterError(f"the {character} has no vault settings with human torque limits to scan")
     params = {**row["settings"], "low_level": 1.0, "runup_speed": float(speed), "apparatus": apparatus}
+    if overrides:
+        from .behaviour import Vault
+        params = Vault.schema.parse_assignments(list(overrides), params)
     return run(RunRequest("vault", character, params=params, duration=duration))
 
 
-def speed_scan(speeds, character: str = "woman", apparatus: str = "horse_1987") -> list[dict]:
+def speed_scan(speeds, character: str = "woman", apparatus: str = "horse_1987", overrides: list[str] = ()) -> list[dict]:
     """Runs the whole vault at each run-up speed (``run_at``) and returns per speed its outcome, the
     fall time, the rotation and the bodies on the horse."""
     rows = []
     for speed in speeds:
-        trajectory = run_at(speed, character, apparatus)
+        trajectory = run_at(speed, character, apparatus, overrides=overrides)
         m = trajectory.meta["metrics"]
         rows.append({"speed": float(speed), "outcome": trajectory.meta["outcome"], "fall_time": m.get("fall_time"),
                      "rotation": m["rotation"], "horse_fault": m.get("horse_fault")})
@@ -108,7 +113,7 @@ def landing_main(args) -> int:
     """--landing: per run-up speed where the run goes (``landing_trace``), and where each speed's run
     parts from the first one's."""
     speeds = [float(x) for x in args.landing.split(",")]
-    runs = [run_at(speed, args.character, args.apparatus) for speed in speeds]
+    runs = [run_at(speed, args.character, args.apparatus, overrides=args.set) for speed in speeds]
     for speed, trajectory in zip(speeds, runs):
         r = landing_trace(trajectory)
         fell = "" if r["fall_time"] is None else f" at {r['fall_time']:.2f} s"
@@ -139,7 +144,7 @@ def scan_main(args) -> int:
     low, high, step = args.scan
     grid = list(np.round(np.arange(low, high + step / 2, step), 4))
     draws = list(np.round(np.random.default_rng(args.seed).uniform(low, high, args.draws), 4))
-    rows = sorted(speed_scan(sorted(set(grid + draws)), args.character, args.apparatus), key=lambda r: r["speed"])
+    rows = sorted(speed_scan(sorted(set(grid + draws)), args.character, args.apparatus, args.set), key=lambda r: r["speed"])
     for r in rows:
         fell = "" if r["fall_time"] is None else f", fell at {r['fall_time']:.2f} s"
         print(f"runup_speed {r['speed']:.4f} m/s: {r['outcome']}{fell}; rotation {r['rotation']:.2f} rad; "
@@ -173,6 +178,8 @@ def main(argv=None) -> int:
     parser.add_argument("--landing", default=None, metavar="SPEEDS",
                         help="instead: run the vault at these run-up speeds (comma-separated) and print where each run goes "
                              "(board, horse, mat touchdown, the landing's events) and where it parts from the first")
+    parser.add_argument("--set", action="append", default=[], metavar="NAME=VALUE",
+                        help="with --scan or --landing: a setting over the character's row (repeatable), e.g. --set catch=1")
     args = parser.parse_args(argv)
     if args.scan:
         return scan_main(args)
