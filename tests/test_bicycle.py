@@ -63,7 +63,8 @@ def test_riderless_bicycle_at_4_m_s_weaves_and_falls():
 # --- the control laws (SEEDS-WAVE2 B5, eq. 11) ------------------------------------------------
 from sim_core.errors import ParameterError
 from sim_core.simulate import RunRequest, largest_difference, replay, run
-from sim_core.skills.bicycle.laws import crank_torque, fork_angle, lean_ahead, leg_weight, pedal_forces
+from sim_core.skills.bicycle.laws import (crank_torque, fork_angle, lean_ahead, leg_weight, load_torque, pedal_forces,
+                                          speed_integral)
 from sim_core.world.bicycle import CRANK_LENGTH
 
 
@@ -79,6 +80,22 @@ def test_crank_torque_split_eqs_7_to_10():
     assert right * CRANK_LENGTH >= 0.99 * 30.0
     right, left = pedal_forces(-30.0, math.pi / 2, CRANK_LENGTH)      # braking: the rising (left) leg
     assert left * CRANK_LENGTH <= 0.99 * -30.0
+
+
+def test_the_load_feed_forward_and_the_bounded_integral():
+    """The crank torque that holds the load: gear x the wheel's (the crank turns 1/gear as fast), uphill
+    positive, downhill negative (the legs brake through the fixed gear); the integral term within its bound."""
+    mass, r = 111.5, 0.3335
+    uphill = load_torque(mass, 0.05, 1.5, 4.0, r, 2.6, 1.0, 0.0)
+    assert uphill == pytest.approx(2.6 * r * mass * 9.81 * 0.05, rel=1e-3)          # ~47 N m at 5 % in gear 2.6
+    assert load_torque(mass, -0.05, 1.5, 4.0, r, 2.6, 1.0, 0.0) == pytest.approx(-uphill)
+    assert load_torque(mass, 0.05, 1.5, 4.0, r, 2.0, 1.0, 0.0) == pytest.approx(uphill * 2.0 / 2.6)
+    assert load_torque(mass, 0.0, 1.5, 4.0, r, 2.6, 0.0, 1.0) == pytest.approx(2.6 * r * 1.5 * 4.0)
+    assert load_torque(mass, 0.05, 1.5, 4.0, r, 2.6, 0.0, 0.0) == 0.0
+    integral = 0.0
+    for _ in range(1000):            # a steady 0.5 m/s shortfall for 5 s: 2.5 m unbounded, 40 N m / 100 bounded
+        integral = speed_integral(integral, 3.5, 4.0, 0.005, 500.0, 1000.0, 0.0, 100.0, 40.0)
+    assert integral == pytest.approx(0.4)
 
 
 def test_eq_11_steers_into_a_lean_and_counter_steers_a_turn():

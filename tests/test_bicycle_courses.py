@@ -153,10 +153,14 @@ def test_speed_steps_3_5_4_are_tracked():
 
 @pytest.mark.slow
 def test_hill_5_percent_up_and_down_at_4_m_s_and_a_lower_gear_pedals_faster():
-    """B8: speed within 15 % on the climb and the descent, no fall; cadence v / (2 pi r g)."""
+    """TARGETS.md: the commanded speed held within 5 % on the climb and the descent, judged by the speed's
+    mean over each crank revolution (the load's feed-forward and eq. 7's integral term; measured 2.1 / 2.3 %
+    in gear 2.6, 1.5 / 1.8 % in gear 2.0, docs/bicycle.md), the instantaneous worst within issue 30's 15 %;
+    no fall; cadence v / (2 pi r g)."""
     rides = {gear: ride(28.0, course="hill", hill_grade=0.05, gear=gear).meta["metrics"] for gear in (2.0, 2.6)}
     for gear, m in rides.items():
         assert not m["fell"]
+        assert m["hill_climb_worst_revolution_error"] < 0.05 and m["hill_descent_worst_revolution_error"] < 0.05
         assert m["hill_climb_worst_error"] < 0.15 and m["hill_descent_worst_error"] < 0.15
         assert m["hill_climb_cadence_hz"] == pytest.approx(m["hill_climb_cadence_expected_hz"], rel=0.05)
     assert rides[2.0]["hill_climb_cadence_hz"] > rides[2.6]["hill_climb_cadence_hz"]
@@ -165,7 +169,8 @@ def test_hill_5_percent_up_and_down_at_4_m_s_and_a_lower_gear_pedals_faster():
 @pytest.mark.slow
 def test_hill_10_percent_up_and_down_at_4_m_s_in_gear_2():
     """Issue 30: a 10 % hill (offered in gears 1.9-2.0 at 4-6 m/s): speed within 15 % on the climb and the
-    descent, no fall (13.8 % and 5.6 % measured: the climb's worst is the front wheel leaving the sharp crest)."""
+    descent, no fall (13.8 % and 4.7 % measured: the climb's worst is the front wheel leaving the sharp crest; ridden
+    by eq. 7 alone, the load's feed-forward and the integral term off beyond max_hill_grade)."""
     m = ride(27.0, course="hill", hill_grade=0.1, gear=2.0).meta["metrics"]
     assert not m["fell"]
     assert m["hill_climb_worst_error"] < 0.15 and m["hill_descent_worst_error"] < 0.15

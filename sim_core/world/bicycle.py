@@ -355,6 +355,21 @@ class BicycleView:
     def gear(self) -> float:
         return float(self.model.wrap_prm[self.model.tendon_adr[self.chain]])
 
+    @property
+    def rolling_resistance(self) -> float:
+        """N s/m: the ground force per m/s of both wheels' hinge damping (b = (c/2) r^2 each: c)."""
+        damping = self.model.dof_damping[self.front_dof] + self.model.dof_damping[self.rear_dof]
+        return float(damping) / self.wheel_radius ** 2
+
+    def road_sine(self, data: mujoco.MjData) -> float:
+        """The sine of the road's grade under the bicycle (uphill ahead positive): the rise of the
+        line from the rear to the front wheel's axle, which lies at the wheels' radius above the road
+        at both ends (level on flat ground whatever the frame's pitch on its tyres)."""
+        rear = data.xpos[self.model.dof_bodyid[self.rear_dof]]
+        front = data.xpos[self.model.dof_bodyid[self.front_dof]]
+        axle_line = front - rear
+        return float(axle_line[2] / np.linalg.norm(axle_line))
+
     def set_crank(self, data: mujoco.MjData, angle: float) -> None:
         """Turn the crank to ``angle`` (0: right pedal up) and the rear wheel with it, so that the
         chain spring stays unstretched."""

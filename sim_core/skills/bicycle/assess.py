@@ -198,12 +198,14 @@ def course_metrics(course, t: np.ndarray, xy: np.ndarray, speed: np.ndarray, cra
                 wanted = course.speed_at(float(t[on][0]))
                 out[f"hill_{name}_mean_speed"] = float(speed[on].mean())
                 out[f"hill_{name}_worst_error"] = float(np.abs(speed[on] - wanted).max() / wanted)
-                # the speed's mean over one crank revolution (both legs' strokes), its worst window along the part
+                # TARGETS.md's "commanded speed held within 5 %" on a hill is judged by this: the speed's mean over
+                # one crank revolution (both legs' strokes: the speed swings within every stroke, 3.6-3.9 m/s at
+                # 4 m/s on the 5 % climb), its worst window along the part (a part shorter than one revolution: its
+                # mean); the instantaneous worst above is reported beside it
                 revolution = 2 * math.pi / max(float(np.abs(crank_rate[on]).mean()), 1e-9)
                 frames = max(int(round(revolution / float(np.median(np.diff(t))))), 1) if len(t) > 1 else 1
-                if on.sum() >= frames:
-                    means = np.convolve(speed[on], np.ones(frames) / frames, mode="valid")
-                    out[f"hill_{name}_worst_revolution_error"] = float(np.abs(means - wanted).max() / wanted)
+                means = np.convolve(speed[on], np.ones(min(frames, int(on.sum()))) / min(frames, int(on.sum())), mode="valid")
+                out[f"hill_{name}_worst_revolution_error"] = float(np.abs(means - wanted).max() / wanted)
                 out[f"hill_{name}_cadence_hz"] = float(crank_rate[on].mean() / (2 * math.pi))
                 out[f"hill_{name}_cadence_expected_hz"] = float(speed[on].mean() / (2 * math.pi * radius * gear))
         out["hill_top_height"] = float(hill_height(course.hill, start + climb))

@@ -44,7 +44,7 @@ from ...world.bicycle import (BRAKE_MAX_TORQUE, DEFAULT_GEAR, LIMB_SOLREF, NAMES
 from .assess import STOPPED_SPEED
 from .course import COURSE, FREEWHEEL_COURSES, course_for
 from .steering import steering_gains
-from .laws import ankle_angle, crank_torque, speed_integral, fork_angle, lean_ahead, pedal_forces, slope_torque
+from .laws import ankle_angle, crank_torque, speed_integral, fork_angle, lean_ahead, load_torque, pedal_forces
 from .mount import IK_ITERATIONS_PER_TICK, SitePairs, match_velocities, solve
 
 FOOT_IK_ITERATIONS = 5              # definition: damped least-squares steps a tick for the foot going down
@@ -74,7 +74,10 @@ BICYCLE_RANGES = Schema(
     Parameter("speed_gain", "N m s/m", 0.0, 0.0, 5000.0, "eq. 7 k_v: crank torque per m/s of speed error"),
     Parameter("max_crank_torque", "N m", 0.0, 0.0, 1000.0, "limit of eq. 7's crank torque, driving or braking (a rider's strength)"),
     Parameter("speed_integral_gain", "N m/m", 0.0, 0.0, 2000.0, "eq. 7's integral term: crank torque per m of accumulated speed error (laws.speed_integral: held while the desired speed ramps to a new command and while the torque is at max_crank_torque, not used coasting or stopping; 0: the seed's eq. 7)"),
-    Parameter("slope_feedforward", "1", 0.0, 0.0, 2.0, "share of the crank torque that holds rider and bicycle on the slope the frame is on (m g sin r / gear) added to eq. 7 (0: the seed's eq. 7)"),
+    Parameter("speed_integral_limit", "N m", 0.0, 0.0, 1000.0, "the integral term's crank torque is kept within +- this (laws.speed_integral; 1000: unbounded within max_crank_torque)"),
+    Parameter("slope_feedforward", "1", 0.0, 0.0, 2.0, "share of the crank torque that holds rider and bicycle on the road's grade under the wheels (gear r m g sin, laws.load_torque; the grade sensed from the wheels' axle line, BicycleView.road_sine; negative downhill: the legs brake) added to eq. 7 (0: the seed's eq. 7)"),
+    Parameter("grade_filter", "s", 0.0, 0.0, 5.0, "time constant of the low-pass on the road's grade the load's feed-forward feels (BicycleView.road_sine; 0: as sensed each tick)"),
+    Parameter("rolling_feedforward", "1", 0.0, 0.0, 2.0, "share of the crank torque that holds the rolling resistance at the desired speed (gear r c v_d, laws.load_torque) added to eq. 7 (0: the seed's eq. 7)"),
     Parameter("hold_seat_pitch", "1", 0.0, 0.0, 1.0, "1: while riding, the limbs' targets hold the pelvis at its mounted pitch on the saddle (``_seat_pelvis``, as the stop does once the foot is down); 0: the pelvis pitches as the limbs let it (the man's: 56 deg forward at the top of a stroke)"),
     Parameter("ik_velocity_filter", "s", 0.0, 0.0, 0.5, "time constant of the low-pass on the limb targets' velocity that leads the servos (0: unfiltered)"),
     Parameter("speed_ramp", "m/s^2", 0.1, 0.1, 10.0, "eq. 7's desired speed moves to a newly commanded one at this rate (a start, a speed step)"),
@@ -353,6 +356,12 @@ class Bicycling(Behaviour):
         rider_root = model.jnt_bodyid[model.joint(ctx.actor.prefix + "root").id]
         self.mass = float(model.body_subtreemass[rider_root] + model.body_subtreemass[self.bike.frame])   # kg, rider and bicycle
         self.speed_error_integral = 0.0     # eq. 7's accumulated speed error (m; speed_integral_gain)
+        # the hill's speed law: the load's feed-forward and the integral term ride hill courses up to max_hill_grade;
+        # elsewhere eq. 7 alone, as measured before: on the steep hills (up to steep_hill_grade, the legs near their
+        # limit) either threw the rider on the 10 % climb at 4 m/s in gear 2.0, and on flat ground the integral
+        # upset a stop (3.2 m/s, gear 4.51) and a long turn at 7 m/s (docs/bicycle.md, the hill's speed law)
+        self.load_law = bool(self.course.hill) and self.params["hill_grade"] <= self.params["max_hill_grade"]
+        self.road_sine = self.bike.road_sine(ctx.data)     # the grade the rider feels (low-passed, grade_filter)
         self.crank_command = None            # coasting: the crank angle the legs hold (None: the pedals as they are)
         self.coasting = self.coasted = False
         self.stopping = self.course.stop        # braking to a stop (the stop course; a coast that got too slow)
@@ -442,12 +451,17 @@ class Bicycling(Behaviour):
         if not self.coasting:
             step = c["speed_ramp"] * dt
             self.desired_speed += min(max(course.speed_at(t) - self.desired_speed, -step), step)
-            slope = float(self.ctx.data.xmat[self.bike.frame].reshape(3, 3)[2, 0])   # the frame's forward axis: its rise
-            uphill = slope_torque(self.mass, slope, self.bike.wheel_radius, c["gear"], c["slope_feedforward"])
-            ki = c["speed_integral_gain"]
+            uphill, ki = 0.0, 0.0
+            if self.load_law:
+                self.road_sine += dt / (c["grade_filter"] + dt) * (self.bike.road_sine(self.ctx.data) - self.road_sine)
+                uphill = load_torque(self.mass, self.road_sine, self.bike.rolling_resistance,
+                                     self.desired_speed, self.bike.wheel_radius, c["gear"], c["slope_feedforward"],
+                                     c["rolling_feedforward"])
+                ki = c["speed_integral_gain"]
             if ki and self.desired_speed == course.speed_at(t):     # held while the desired speed ramps
                 self.speed_error_integral = speed_integral(self.speed_error_integral, state["speed"], self.desired_speed, dt,
-                                                           c["speed_gain"], c["max_crank_torque"], uphill, ki)
+                                                           c["speed_gain"], c["max_crank_torque"], uphill, ki,
+                                                           c["speed_integral_limit"])
             return crank_torque(state["speed"], self.desired_speed, c["speed_gain"], c["max_crank_torque"], uphill,
                                 self.speed_error_integral, ki)
         level = math.pi / 2 + math.pi * math.ceil((self.crank_command - math.pi / 2) / math.pi)   # the next level crank

@@ -12,7 +12,7 @@ def crank_torque(speed: float, desired_speed: float, gain: float, limit: float, 
                  integral: float = 0.0, integral_gain: float = 0.0) -> float:
     """Eq. 7 with the sign fix: ``tau = k_v (v_d - v)``, k_v > 0; positive drives forward; held
     within +-``limit`` (the seed gives none: unlimited, a 2.4 m/s error asks 1.2 kN m of the legs).
-    ``feedforward`` (N m, slope_torque's) is added before the limit, and so is an integral term
+    ``feedforward`` (N m, load_torque's) is added before the limit, and so is an integral term
     ``integral_gain`` (N m per m) times ``integral`` (m, the accumulated speed error, speed_integral);
     with ``integral_gain`` 0 the seed's eq. 7, bit for bit."""
     torque = gain * (desired_speed - speed) + feedforward + integral_gain * integral   # + 0.0 exactly when off
@@ -20,23 +20,31 @@ def crank_torque(speed: float, desired_speed: float, gain: float, limit: float, 
 
 
 def speed_integral(integral: float, speed: float, desired_speed: float, dt: float, gain: float, limit: float,
-                   feedforward: float, integral_gain: float) -> float:
+                   feedforward: float, integral_gain: float, integral_limit: float = math.inf) -> float:
     """The accumulated speed error (m) of eq. 7's integral term one control step on: ``integral +
     (v_d - v) dt``, with conditional anti-windup: the step is not taken when the unclamped torque
     already lies beyond +-``limit`` in the direction the error would push it (the integral then
-    holds; the limit, not the integral, is what the legs give)."""
+    holds; the limit, not the integral, is what the legs give); and the term's torque is kept within
+    +-``integral_limit`` (N m): the integral trims what the feed-forward and eq. 7 leave, it does not
+    climb."""
     error = desired_speed - speed
     torque = gain * error + feedforward + integral_gain * integral
     if (torque >= limit and error > 0) or (torque <= -limit and error < 0):
         return integral
-    return integral + error * dt
+    bound = integral_limit / integral_gain
+    return min(max(integral + error * dt, -bound), bound)
 
 
-def slope_torque(mass: float, slope_sine: float, wheel_radius: float, gear: float, share: float) -> float:
-    """The crank torque (N m) that holds ``mass`` (rider and bicycle, kg) against gravity on a slope
-    whose sine along the frame is ``slope_sine`` (uphill positive), through a wheel of
-    ``wheel_radius`` in ``gear`` (wheel turns per crank turn), times ``share``: share m g sin r / gear."""
-    return share * mass * GRAVITY * slope_sine * wheel_radius / gear
+def load_torque(mass: float, slope_sine: float, resistance: float, speed: float, wheel_radius: float, gear: float,
+                slope_share: float, rolling_share: float) -> float:
+    """The crank torque (N m) that holds the bicycle's speed against its load: gravity on ``mass``
+    (rider and bicycle, kg) on a road whose grade has sine ``slope_sine`` (uphill positive) times
+    ``slope_share``, and the rolling resistance ``resistance`` (N s/m) at ``speed`` times
+    ``rolling_share``; the ground force through a wheel of ``wheel_radius`` in ``gear`` (wheel turns
+    per crank turn: the crank turns 1/gear as fast, so it needs gear times the wheel's torque):
+    gear r (share m g sin + share c v). Negative downhill: the legs brake through the fixed gear."""
+    force = slope_share * mass * GRAVITY * slope_sine + rolling_share * resistance * speed
+    return gear * wheel_radius * force
 
 
 def leg_weight(phase: float) -> float:
