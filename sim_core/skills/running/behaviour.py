@@ -68,7 +68,7 @@ SCHEDULED = {
     "yaw_first": ("1", 0.0, 1.0, "share of the roll torque given up to keep the hip's rotation axis in range"),
     "yaw_gain": ("1", 0.5, 1.5, "scale of the stance hip's yaw servo gains"),
     "twist_damping": ("N m s/rad", 0.0, 30.0, "the stance hip's rotation damped about its own rate (the foot's pivot)"),
-    "yaw_twist": ("rad", 0.0, 0.3, "the stance hip's yaw goal turned this much with the stride's pelvis rotation (right stance: left)"),
+    "yaw_twist": ("rad", 0.0, 0.3, "the stance hip's yaw goal turned this much with the stride's pelvis rotation (its hip forward)"),
     "thrust_gain": ("1", 1.0, 4.0, "the knee's and ankle's position gain in the thrust, as a multiple of the default"),
     "toe_push": ("rad", 0.0, 0.7, "the toe joint's plantarflexion target in the thrust (0 = held flat)"),
 }
@@ -796,8 +796,9 @@ class Running(Behaviour):
             e_roll = roll - self.roll_goal
             yaw_goal = heading
             if p["yaw_twist"] > 0:
-                # the pelvis turns with the stride (toward the stance leg's side, measured): the
-                # goal follows that twist instead of the heading, so the servo does not fight it
+                # the pelvis turns with the stride (its stance hip forward: in the right leg's stance to
+                # the left, measured): the goal follows that twist instead of the heading, so the servo
+                # does not fight it
                 yaw_goal = heading + (p["yaw_twist"] if a == 0 else -p["yaw_twist"])
             e_yaw = max(-c.yaw_error_limit, min(c.yaw_error_limit, wrap_angle(yaw - yaw_goal)))
             share = hermite_scalar((t - self.t_touchdown) / c.attitude_onset) if state != UNLOADING else \
