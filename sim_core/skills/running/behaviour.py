@@ -68,6 +68,7 @@ SCHEDULED = {
     "yaw_first": ("1", 0.0, 1.0, "share of the roll torque given up to keep the hip's rotation axis in range"),
     "yaw_gain": ("1", 0.5, 1.5, "scale of the stance hip's yaw servo gains"),
     "twist_damping": ("N m s/rad", 0.0, 30.0, "the stance hip's rotation damped about its own rate (the foot's pivot)"),
+    "yaw_twist": ("rad", 0.0, 0.3, "the stance hip's yaw goal turned this much with the stride's pelvis rotation (its hip forward)"),
     "thrust_gain": ("1", 1.0, 4.0, "the knee's and ankle's position gain in the thrust, as a multiple of the default"),
     "toe_push": ("rad", 0.0, 0.7, "the toe joint's plantarflexion target in the thrust (0 = held flat)"),
 }
@@ -91,11 +92,29 @@ STEER_MAX_ACCELERATION = 0.625
 # none at 3.36 m/s or slower asking at most 0.41 did: docs/running.md, the woman; the child at her one speed:
 # curves up to 0.96 m/s^2 ran, from 1.10 m/s^2 most fell: docs/running.md, the child)
 STEER_LIMITS = {"man": (STEER_MAX_SPEED, STEER_MAX_ACCELERATION), "woman": (3.35, 0.4), "child": (2.5, 0.9)}
+# criterion: speeds inside a runner's table that are refused, (low, high) open intervals, where 100 s runs from
+# a stand fell with every row measured between (the man: 3.74-3.94 m/s fell, 4.05-4.48 ran with the 4.5 m/s
+# row held from 4.0 m/s and the yaw goal turned with the stride; docs/running.md, Limitations, issue 28)
+SPEED_GAPS = {"man": ((3.7, 4.05),)}
 STEERED_RUNNERS = tuple(STEER_LIMITS)      # criterion: the runners measured to turn, follow a path and face another way
 MORPH_TARGETS = ("none", "woman")   # criterion: the characters of the man's skeleton with a running table
 MORPH_FROM = ("man",)               # criterion: the runners measured morphing (docs/bodies.md, the morph)
 MORPH_SPEEDS = (2.5, 3.5)           # criterion: m/s, the speeds measured morphing without a fall (docs/bodies.md, the
                                     # morph: 2.5-3.5 m/s; with the woman's 4.0 m/s row, a morph at 4.0 m/s fell at 9.8 s)
+
+def offered_ranges(character: str, speeds: list[float]) -> list[tuple[float, float]]:
+    """The speed ranges a runner is offered: its table's, less its refused gaps (SPEED_GAPS)."""
+    ranges = [(speeds[0], speeds[-1])]
+    for low, high in SPEED_GAPS.get(character, ()):
+        ranges = [part for a, b in ranges for part in ((a, min(b, low)), (max(a, high), b)) if part[0] <= part[1]]
+    return ranges
+
+
+def offered_speeds(character: str) -> list[float]:
+    """The rows of a runner's table at speeds it is offered (not inside a refused gap)."""
+    speeds = SpeedTable.load(character).speeds
+    return [v for v in speeds if any(a <= v <= b for a, b in offered_ranges(character, speeds))]
+
 
 class SpeedTable:
     """Tuned values of some parameters as functions of the running speed (piecewise linear,
@@ -316,14 +335,14 @@ def check_ramps(ramps: dict) -> dict[str, float]:
 @register
 class Running(Behaviour):
     name = "running"
-    summary = ("Run from a stand at the speeds of the runner's table (the man's: 2.5-3.7 m/s), facing a direction or "
+    summary = ("Run from a stand at the speeds of the runner's table (the man's: 2.5-3.7 and 4.05-4.5 m/s), facing a direction or "
                "along a path (Hodgins et al. 1995).")
     default_duration = 20.0
     control_rate = 200.0
     settings_schema = RUNNING_SETTINGS
     schema = RunningSchema(
         Parameter("speed", "m/s", 3.5, 2.5, 5.0, "desired running speed on the ground plane; each runner runs at the "
-                  "speeds of its table only (the man 2.5-3.7 m/s, the woman 2.5-4, the child 2.5-3; docs/running.md)"),
+                  "speeds of its table only (the man 2.5-3.7 and 4.05-4.5 m/s, the woman 2.5-4, the child 2.5-3; docs/running.md)"),
         Parameter("facing", "rad", 0.0, -math.pi, math.pi,
                   "direction to run in (0 = +X, counter-clockwise) when no path or course is given: the runner starts "
                   "straight ahead and turns to it after turn_after m on turn_radius"),
@@ -372,17 +391,20 @@ class Running(Behaviour):
         return min(1.0, max(0.0, (t - p["morph_start"]) / p["morph_time"]))
 
     def check_feasible(self) -> None:
-        """A runner needs its own running table, and runs only at the speeds it covers (the man's:
-        2.5-3.7 m/s, where 100 s runs from a stand were measured not to fall); a ``table`` parameter (a tuner's or a scaled candidate, checked
+        """A runner needs its own running table, and runs only at the speeds it covers less its refused
+        gaps (the man's: 2.5-3.7 and 4.05-4.5 m/s, where 100 s runs from a stand were measured not to fall); a ``table`` parameter (a tuner's or a scaled candidate, checked
         like a stored one) is its own."""
         if "table" not in self.params:
             name = self.ctx.character.name
             require_calibrated("running", name, self.name)
             speeds = SpeedTable.load(name).speeds
             speed = self.params["speed"]
-            if not speeds[0] <= speed <= speeds[-1]:
+            ranges = offered_ranges(name, speeds)
+            if not any(low <= speed <= high for low, high in ranges):
+                allowed = " or ".join(f"[{low:g}, {high:g}]" for low, high in ranges)
                 raise ParameterError(f"parameter speed={speed:g} m/s is out of range for the {name}; allowed range for "
-                                     f"speed is [{speeds[0]:g}, {speeds[-1]:g}] m/s (the speeds of the {name}'s running table)")
+                                     f"speed is {allowed} m/s (the speeds of the {name}'s running table"
+                                     f"{', less those where 100 s runs fell' if len(ranges) > 1 else ''})")
             path = path_for(self.params)
             if path is not None and name in STEERED_RUNNERS:
                 check_steering(speed, path, self.params["lookahead"], name)
@@ -772,7 +794,13 @@ class Running(Behaviour):
             # pelvis, net of the idle hip's torque (so the swinging leg does not tip the body)
             e_pitch = pitch - p["stance_pitch"]
             e_roll = roll - self.roll_goal
-            e_yaw = max(-c.yaw_error_limit, min(c.yaw_error_limit, wrap_angle(yaw - heading)))
+            yaw_goal = heading
+            if p["yaw_twist"] > 0:
+                # the pelvis turns with the stride (its stance hip forward: in the right leg's stance to
+                # the left, measured): the goal follows that twist instead of the heading, so the servo
+                # does not fight it
+                yaw_goal = heading + (p["yaw_twist"] if a == 0 else -p["yaw_twist"])
+            e_yaw = max(-c.yaw_error_limit, min(c.yaw_error_limit, wrap_angle(yaw - yaw_goal)))
             share = hermite_scalar((t - self.t_touchdown) / c.attitude_onset) if state != UNLOADING else \
                 1.0 - hermite_scalar((t - self.t_state) / c.attitude_onset)
             # restoring torque on the pelvis (world frame): roll about its x axis, pitch about

@@ -28,9 +28,9 @@ DOC = ROOT / "docs" / "running.md"
 
 
 def speeds() -> list[float]:
-    """The speeds of the man's running table: its rows, the ends of his offered range."""
-    from .behaviour import SpeedTable
-    return SpeedTable.load("man").speeds
+    """The speeds of the man's running table he is offered: its rows, the ends of his offered ranges."""
+    from .behaviour import offered_speeds
+    return offered_speeds("man")
 HIP_ROTATION_NEAR_RANGE = 0.75     # rad: the stance hip's rotation counted as at its range (+-0.785 rad)
 
 
