@@ -416,21 +416,29 @@ class MatAbsorb(Behaviour):
         self.knee_base(t, targets)
         left, left_speed = self.com_from_feet(1)
         sideways = c["absorb_side_kp"] * left + c["absorb_side_kv"] * left_speed
-        for k, side in enumerate("rl"):
-            f = d.xmat[self.feet[k]]
-            foot_pitch = math.atan2(-float(f[6]), float(f[8]))
-            targets[self.joints[side]["ankle"]] = angles[self.joints[side]["ankle"]] - foot_pitch + ankle
-            # sideways the ankles roll the feet flat and servo the COM between them the same way
-            foot_roll = math.atan2(float(f[7]), float(f[8]))
-            targets[self.joints[side]["ankle_x"]] = angles[self.joints[side]["ankle_x"]] - foot_roll - sideways
-            # the waist gives: the hips servo the trunk to lean absorb_trunk forward, whatever the legs do
-            targets[self.joints[side]["hip"]] = angles[self.joints[side]["hip"]] + trunk_error
+        self.feet_and_hips(targets, angles, ankle, sideways, trunk_error)
         s.hold(targets, t)
         spin = float(d.subtree_angmom[self.pelvis][1])
         if (ahead >= -self.cfg["over_feet"] and abs(speed) < self.cfg["settled_speed"]
                 and abs(spin) < self.cfg["settled_spin"]) or (
                 t - self.t0 > self.cfg["capture_after"] and abs(capture) < self.cfg["capture_within"]):
             self.over_feet = True
+
+    def feet_and_hips(self, targets: np.ndarray, angles: np.ndarray, ankle: float, sideways: float,
+                      trunk_error: float, side_hip: float | None = None) -> None:
+        """Both legs' targets: each ankle turns its foot flat and offsets it by ``ankle`` (the COM's or the
+        capture point's servo); sideways the ankles roll the feet flat and servo the COM between them the
+        same way (``sideways``), and given ``side_hip`` the hips' abduction (from the base pose) shifts the pelvis with them; the
+        waist gives: the hips servo the trunk by ``trunk_error``, whatever the legs do."""
+        d = self.ctx.data
+        for k, side in enumerate("rl"):
+            f = d.xmat[self.feet[k]]
+            joints = self.joints[side]
+            targets[joints["ankle"]] = angles[joints["ankle"]] - math.atan2(-float(f[6]), float(f[8])) + ankle
+            targets[joints["ankle_x"]] = angles[joints["ankle_x"]] - math.atan2(float(f[7]), float(f[8])) - sideways
+            targets[joints["hip"]] = angles[joints["hip"]] + trunk_error
+            if side_hip is not None:
+                targets[joints["hip_x"]] = self.base[joints["hip_x"]] + side_hip * sideways
 
     def trunk_lean(self, t: float) -> float:
         """The pelvis's forward pitch the hips servo (the waist gives this far)."""
@@ -521,7 +529,7 @@ class MatCatch(MatAbsorb):
         return self.held_lean - c["catch_lean_kp"] * (self.capture - c["catch_target"])
 
     def update(self, t: float) -> None:
-        d, s, c = self.ctx.data, self.ctx.servos, self.cfg
+        s, c = self.ctx.servos, self.cfg
         targets = self.base.copy()
         angles = s.angles()
         self.capture, _ = self.capture_point()
@@ -530,14 +538,7 @@ class MatCatch(MatAbsorb):
         trunk_error = self.pelvis_lean() - self.posture(t, targets, angles)
         left, left_speed = self.com_from_feet(1)
         sideways = c["absorb_side_kp"] * left + c["absorb_side_kv"] * left_speed
-        for k, side in enumerate("rl"):
-            f = d.xmat[self.feet[k]]
-            foot_pitch = math.atan2(-float(f[6]), float(f[8]))
-            targets[self.joints[side]["ankle"]] = angles[self.joints[side]["ankle"]] - foot_pitch + ankle
-            foot_roll = math.atan2(float(f[7]), float(f[8]))
-            targets[self.joints[side]["ankle_x"]] = angles[self.joints[side]["ankle_x"]] - foot_roll - sideways
-            targets[self.joints[side]["hip"]] = angles[self.joints[side]["hip"]] + trunk_error
-            targets[self.joints[side]["hip_x"]] = self.base[self.joints[side]["hip_x"]] + c["catch_side_hip"] * sideways
+        self.feet_and_hips(targets, angles, ankle, sideways, trunk_error, c["catch_side_hip"])
         s.hold(targets, t)
         if (self.fallen and t - self.t0 >= c["catch_min"]
                 and abs(self.capture - c["catch_target"]) < c["catch_within"]):
