@@ -31,7 +31,7 @@ def speed_integral(integral: float, speed: float, desired_speed: float, dt: floa
     torque = gain * error + feedforward + integral_gain * integral
     if (torque >= limit and error > 0) or (torque <= -limit and error < 0):
         return integral
-    bound = integral_limit / integral_gain
+    bound = integral_limit / integral_gain if integral_gain else math.inf
     return min(max(integral + error * dt, -bound), bound)
 
 
