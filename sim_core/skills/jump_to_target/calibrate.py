@@ -315,7 +315,7 @@ own crouch (the hops' flights are not its flight). The forward jump after the tu
 every forward jump is: 12 of the man's measured balanced jumps nearest 1.23 m in 0.6 s, run after the
 turn, all fell (his 1.07 m in 0.695 s landed 0.91 m from where it left, balanced with the feet 2.5-5 cm
 nearer). Searches of the forward settings with the turn (the planner's two CMA-ES stages over its forward
-settings, run by a scratch script - the planner does not search `turn_first` - 150 trials each, ~3 s a trial): 1.0 m right in 0.6 s -
+settings, run by a scratch script - the planner did not then carry `turn_first` - 150 trials each, ~3 s a trial): 1.0 m right in 0.6 s -
 one balanced landing, (0.051, -1.221) m after 0.49 s, the on-target ones fell ((0.041, -1.072) m after
 0.60 s); 1.3 m right in 0.6 s (started there) - balanced at (0.039, -1.164), (0.044, -1.143) and (0.054,
 -1.205) m after 0.50-0.545 s, none nearer. Asked in 0.5 s (the forward jumps' own
