@@ -44,7 +44,8 @@ from ...ballistics import GRAVITY, time_to_fall_to
 from ...control.behaviour import Behaviour, ControlContext, register
 from ...control.servo import hermite_scalar
 from ...control.balance import Balance
-from ...control.leap import Landing, balance_after_landing, run_strength
+from ...control.leap import UP, Landing, balance_after_landing, run_strength
+from ...control.measure import pitch_of, roll_of
 from ...control.sequencer import Sequence, Step
 from ...analysis import FOOT_BODIES
 from ..handspring.behaviour import HAND_BODIES, PoseMove
@@ -383,11 +384,11 @@ class MatAbsorb(Behaviour):
         middle = 0.5 * (points[:, axis].min() + points[:, axis].max())
         return float(com[axis] - middle), float(d.subtree_linvel[self.pelvis][axis])
 
-    def capture_point(self) -> tuple[float, float]:
+    def capture_point(self, ahead: float, speed: float) -> tuple[float, float]:
         """The capture point (the COM's place plus its speed times sqrt(h / g)) ahead of the feet's middle,
-        and the speed it takes (with capture_spin, from the angular momentum about the feet's middle)."""
+        and the speed it takes (with capture_spin, from the angular momentum about the feet's middle);
+        ``ahead``, ``speed``: com_from_feet's."""
         d, c = self.ctx.data, self.cfg
-        ahead, speed = self.com_from_feet()
         height = float(d.subtree_com[self.pelvis][2]) - float(self.landing.airborne.support.points(d)[:, 2].min())
         height = max(height, c["absorb_min_height"])
         if c["capture_spin"]:
@@ -401,8 +402,7 @@ class MatAbsorb(Behaviour):
 
     def pelvis_lean(self) -> float:
         """The pelvis's forward pitch."""
-        p = self.ctx.data.xmat[self.pelvis]
-        return math.atan2(-float(p[6]), float(p[8]))
+        return pitch_of(self.ctx.data.xmat[self.pelvis], UP)
 
     def update(self, t: float) -> None:
         d, s, c = self.ctx.data, self.ctx.servos, self.cfg
@@ -411,7 +411,7 @@ class MatAbsorb(Behaviour):
         targets = self.base.copy()
         angles = s.angles()
         # the capture point ahead of the feet's middle leans the trunk back, behind it forward
-        capture, speed = self.capture_point()
+        capture, speed = self.capture_point(ahead, speed)
         trunk_error = self.pelvis_lean() - (self.trunk_lean(t) - c["absorb_trunk_kp"] * capture)
         self.knee_base(t, targets)
         left, left_speed = self.com_from_feet(1)
@@ -434,8 +434,8 @@ class MatAbsorb(Behaviour):
         for k, side in enumerate("rl"):
             f = d.xmat[self.feet[k]]
             joints = self.joints[side]
-            targets[joints["ankle"]] = angles[joints["ankle"]] - math.atan2(-float(f[6]), float(f[8])) + ankle
-            targets[joints["ankle_x"]] = angles[joints["ankle_x"]] - math.atan2(float(f[7]), float(f[8])) - sideways
+            targets[joints["ankle"]] = angles[joints["ankle"]] - pitch_of(f, UP) + ankle
+            targets[joints["ankle_x"]] = angles[joints["ankle_x"]] - roll_of(f, UP) - sideways
             targets[joints["hip"]] = angles[joints["hip"]] + trunk_error
             if side_hip is not None:
                 targets[joints["hip_x"]] = self.base[joints["hip_x"]] + side_hip * sideways
@@ -532,7 +532,7 @@ class MatCatch(MatAbsorb):
         s, c = self.ctx.servos, self.cfg
         targets = self.base.copy()
         angles = s.angles()
-        self.capture, _ = self.capture_point()
+        self.capture, _ = self.capture_point(*self.com_from_feet())
         back, front = self.ankle_limits(t)
         ankle = min(max(c["catch_kp"] * (self.capture - c["catch_target"]), -back), front)
         trunk_error = self.pelvis_lean() - self.posture(t, targets, angles)
@@ -865,8 +865,7 @@ class Vault(Sequence):
         upright trunk snapped the leaning one up and threw the COM, and one started from the
         standing pose lost her within a second."""
         balance = balance_after_landing(self.ctx, self.landing)
-        m = self.ctx.data.xmat[self.pelvis]
-        balance.from_pitch = math.atan2(-float(m[6]), float(m[8]))
+        balance.from_pitch = pitch_of(self.ctx.data.xmat[self.pelvis], UP)
         balance.params = dict(balance.params, **params)
         return balance
 
