@@ -79,6 +79,28 @@ LEAP_CONSTANTS = Schema(
     constant("crouch_settle_time", "s", 0.0, 1.0, "a vertical leap's crouch posture must have been reached this long before the thrust"),
     constant("thrust_elbow", "rad", 0.0, 1.5, "elbow flexion the arms swing with in the thrust (mirrored for the left)"),
     constant("balance_handover_time", "s", 0.05, 5.0, "the balance after a landing moves from the landed height to its posture in this time"),
+    constant("commanded_touchdown_height", "1", 0.3, 1.5,
+             "commanded take-off (commanded_thrust.py): the COM's height above the feet at touchdown, as a share of "
+             "the standing hip height"),
+    constant("commanded_liftoff_height", "1", 0.5, 1.5,
+             "commanded take-off: the COM's height above the feet at lift-off, as a share of the standing hip height"),
+    constant("commanded_lean_wait", "s", 0.2, 2.0,
+             "commanded take-off: after the crouch the COM moves ahead to commanded_lean_offset over this time; the "
+             "thrust starts when the lean will give the flight's horizontal speed"),
+    constant("commanded_lean_offset", "m", 0.0, 0.25, "commanded take-off: the furthest lean (COM ahead of the feet)"),
+    constant("commanded_lean_push", "1", 0.0, 10.0,
+             "commanded take-off: horizontal speed the push adds per m/s of vertical speed still to come per unit "
+             "of the lean's slope (1: along the line from the feet to the COM)"),
+    constant("commanded_servo_time", "s", 0.005, 1.0,
+             "commanded take-off: the legs' correction asks the velocity and spin error back within this time"),
+    constant("commanded_correction_limit", "rad", 0.0, 2.0, "commanded take-off: each leg joint corrected by at most this"),
+    constant("commanded_start_share", "1", 0.0, 1.0,
+             "commanded take-off: the even push's reference at its start, as the square root of this share of the wanted"),
+    constant("commanded_spin", "kg m²/s", -30.0, 30.0,
+             "commanded take-off: the angular momentum about the lateral axis at lift-off (-: backward, the trunk "
+             "kept upright while the legs swing ahead for the landing)"),
+    constant("commanded_spin_gain", "rad/(kg m²/s)", 0.0, 0.5,
+             "commanded take-off: hip extension per kg m²/s of spin forward of the commanded"),
     constant("landing_torque_limit", "1", 0.1, 10.0,
              "landing joints use at most this share of the human torque limits, whatever the model's strength "
              "(stiffer legs land harder, not better)"),
@@ -685,6 +707,9 @@ LEAP_SETTINGS = Schema(
     Parameter("turn_first", "1", 0.0, -1.5, 1.5,
               "above 0.5 the leap first turns a quarter to the right by hops (turn.py; 1: the measured turn, "
               "each hop's hip rotation scaled by it), below -0.5 to the left"),
+    Parameter("commanded_takeoff", "1", 0.0, 0.0, 1.0,
+              "above 0.5 the thrust servoes the COM velocity to the commanded flight's lift-off velocity and "
+              "ends on reaching it (control/commanded_thrust.py)"),
 )
 LEAP_MEASURED = ("com_rise", "com_travel", "peak_thrust_grf_body_weights")   # columns a calibration measured
 
@@ -830,6 +855,9 @@ LOW_LEVEL_SETTINGS = Schema(
               "above 0.5 the leap first turns a quarter to the right (clockwise from above) by hops that turn, "
               "below -0.5 to the left (1: the measured quarter turn, more or less turns each hop more or less), "
               "then leaps forward in its new heading: a sideways jump made a forward one (0 = no turn; low_level only)"),
+    Parameter("commanded_takeoff", "bool", 0.0, 0.0, 1.0,
+              "1 = the thrust servoes the COM velocity to the lift-off velocity of the flight to flight_target_x/y/z "
+              "in flight_air_time and ends on reaching it (control/commanded_thrust.py; low_level only)"),
     Parameter("arm_swing", "rad", 1.0, 0.0, 3.2, "forward arm swing during the thrust (low_level only)"),
     Parameter("crouch_arms", "rad", 0.0, -0.8, 0.0,
               "arms swung back (-) in the crouch, to swing forward in the thrust; keeps the hands off "

@@ -183,9 +183,10 @@ def landing_measures(trajectory) -> dict:
     return result
 
 
-def leap_params(settings: dict, target, windup_time: float) -> dict:
+def leap_params(settings: dict, target, windup_time: float, air_time: float | None = None) -> dict:
     """The leap's low-level parameters for these settings (the planner's trials run the leap; a
-    vertical-leap thrust when ``vertical_thrust``, else the broad jump's)."""
+    vertical-leap thrust when ``vertical_thrust``, else the broad jump's; with the commanded take-off,
+    the flight to ``target`` in ``air_time``)."""
     vertical = settings["vertical_thrust"] > 0.5
     return {"low_level": 1, "distance": 0.0 if vertical else max(float(target[0]), MIN_BROAD_DISTANCE),
             "crouch_height": settings["crouch_height"], "crouch_pitch": settings["crouch_pitch"],
@@ -193,7 +194,17 @@ def leap_params(settings: dict, target, windup_time: float) -> dict:
             "liftoff_hip": settings["liftoff_hip"],
             "arm_swing": settings["arm_swing"], "thrust_damping": settings["thrust_damping"],
             "foot_delta": settings["foot_delta"], "crouch_time": crouch_time(windup_time),
-            **landing_settings(settings)}
+            **landing_settings(settings), **commanded_flight(settings, target, air_time)}
+
+
+def commanded_flight(settings: dict, target, air_time: float | None) -> dict:
+    """A plan with the commanded take-off (``commanded_takeoff``, control/commanded_thrust.py): the
+    switch and the flight it commands, the request's target and air time; none for any other plan
+    (which runs as it always did)."""
+    if settings.get("commanded_takeoff", 0.0) <= 0.5 or air_time is None:
+        return {}
+    return {"commanded_takeoff": 1.0, "flight_target_x": float(target[0]), "flight_target_y": float(target[1]),
+            "flight_target_z": float(target[2]), "flight_air_time": float(air_time)}
 
 
 def optional_knobs(settings: dict) -> dict:
@@ -387,6 +398,10 @@ class JumpToTarget(Leap):
     def is_broad(self, p: dict) -> bool:
         return self.plan["settings"].get("vertical_thrust", 0.0) <= 0.5
 
+    def flight_target(self, p: dict) -> tuple[tuple, float]:
+        """The commanded take-off's flight (a plan with ``commanded_takeoff``): the request's."""
+        return (p["target_x"], p["target_y"], p["target_z"]), p["air_time"]
+
     def check_feasible(self) -> None:
         """Refuses what no plan can do, then looks the plan up (planning runs above the loop)."""
         p, name = self.params, self.ctx.character.name
@@ -412,6 +427,8 @@ class JumpToTarget(Leap):
                                                           "thrust_damping", "liftoff_hip", "foot_delta")}
         settings.update(optional_knobs(self.plan["settings"]))
         settings.update(turn_of(self.plan["settings"]))
+        if self.plan["settings"].get("commanded_takeoff", 0.0) > 0.5:
+            settings["commanded_takeoff"] = 1.0
         settings["crouch_time"] = crouch_time(self.params["windup_time"])
         settings.update(landing_settings(self.plan["settings"]))
         return settings

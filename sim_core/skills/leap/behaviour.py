@@ -5,9 +5,13 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
+
 from ...control.balance import Balance, standing_hip_height
 from ...control.behaviour import register
-from ...control.leap import LOW_LEVEL_SETTINGS, Landing, LeapThrust, balance_after_landing, broad_distances, broad_row, broad_rows, commandable_heights, leap_assess, leap_constants, load_mapping, vertical_key, vertical_row, vertical_table
+from ...control.commanded_thrust import CommandedThrust, FlightCommand, thrust_due
+from ...control.measure import SupportGeometry
+from ...control.leap import LOW_LEVEL_SETTINGS, Landing, LeapThrust, balance_after_landing, calibrated_foot_delta, broad_distances, broad_row, broad_rows, commandable_heights, leap_assess, leap_constants, load_mapping, vertical_key, vertical_row, vertical_table
 from ...control.sequencer import Sequence, Step
 from ...control.turn import jump_start, turn_steps
 from ...errors import ParameterError
@@ -35,6 +39,12 @@ class Leap(Sequence):
         Parameter("low_level", "bool", 0.0, 0.0, 1.0,
                   "1 = run the low-level settings as set (--set crouch_height=...) instead of the calibrated leap"),
         Parameter("crouch_time", "s", 0.8, 0.3, 3.0, "time to sink into the crouch"),
+        Parameter("flight_target_x", "m", 1.0, -2.5, 2.5,
+                  "commanded take-off (low_level, commanded_takeoff=1): the feet land this far forward of the "
+                  "middle of the feet at the start"),
+        Parameter("flight_target_y", "m", 0.0, -2.0, 2.0, "commanded take-off: ... this far to the left"),
+        Parameter("flight_target_z", "m", 0.0, -1.0, 1.0, "commanded take-off: ... on a surface this high"),
+        Parameter("flight_air_time", "s", 0.45, 0.05, 1.5, "commanded take-off: ... after this long in the air"),
         Parameter("foot_delta", "m", 0.0, -0.3, 0.3, "landing: foot servo delta (see the land behaviour)"),
         Parameter("landing_knee_flexion", "rad", 0.9, 0.0, 1.5,
                   "landing: knee bend held in flight (less: the feet reach further forward)"),
@@ -83,7 +93,7 @@ class Leap(Sequence):
         if p["low_level"]:
             settings = {k: p[k] for k in ("crouch_height", "crouch_pitch", "com_offset", "com_offset_y",
                                           "liftoff_roll", "arm_swing", "crouch_arms", "thrust_damping",
-                                          "thrust_lean", "spin_hold", "turn_first")}
+                                          "thrust_lean", "spin_hold", "turn_first", "commanded_takeoff")}
             settings["liftoff_hip"] = p["liftoff_hip"]
             return settings
         row = vertical_row(load_mapping(self.ctx.character.name)[vertical_key(self.ctx)], p["height"])
@@ -124,6 +134,24 @@ class Leap(Sequence):
                 raise ParameterError(f"parameter height={p['height']:g} m is infeasible for "
                                      f"{self.ctx.character.name} with {strength}; {allowed}")
 
+    def flight_target(self, p: dict) -> tuple[tuple, float]:
+        """The commanded take-off's flight: the middle of the feet's landing point (x, y, z m from the
+        middle of the feet at the start) and the air time (s)."""
+        return (p["flight_target_x"], p["flight_target_y"], p["flight_target_z"]), p["flight_air_time"]
+
+    def flight_command(self, p: dict, constants, delta: float, lead: float) -> FlightCommand:
+        """The commanded take-off's flight (control.commanded_thrust), landed by this leap's landing
+        (its foot lead, its delta and the landing table's own delta)."""
+        target, air_time = self.flight_target(p)
+        name = self.ctx.character.name
+        hip = standing_hip_height(self.ctx.character)
+        return FlightCommand(tuple(float(v) for v in target), float(air_time), float(lead), float(delta),
+                             constants.commanded_touchdown_height * hip, constants.commanded_liftoff_height * hip,
+                             constants.commanded_lean_push, constants.commanded_servo_time,
+                             constants.commanded_correction_limit, constants.commanded_start_share,
+                             constants.commanded_spin, constants.commanded_spin_gain,
+                             lambda speed, touchdown: calibrated_foot_delta(name, speed, touchdown))
+
     def is_broad(self, p: dict) -> bool:
         """The broad jump's thrust (0.15/0.20/0.45 s extension, triggered by the leaning COM) for
         the run parameters ``p``."""
@@ -147,7 +175,37 @@ class Leap(Sequence):
                                                 else p["crouch_time"],
                                                 hold_time=0.0, return_to_stand=0)), ctx)
 
+        def landing_settings():
+            # the calibrated leap's own correction of the landing's foot servo delta, plus the user's
+            delta = min(max(p.get("foot_delta", 0.0) + cfg.get("foot_delta", 0.0), -0.3), 0.3)  # definition: the foot_delta range
+            landing = {k: cfg.get("landing_" + k, p.get("landing_" + k, Landing.schema.defaults()[k]))
+                       for k in ("swing_arms", "arm_flexion", "foot_lead_time", "place_sideways", "knee_flexion",
+                                 "right_time")}
+            return delta, landing
+
+        commanded = cfg.get("commanded_takeoff", 0.0) > 0.5
+        if commanded:
+            delta, landing = landing_settings()
+            command = self.flight_command(p, constants, delta, landing["foot_lead_time"])
+            support = SupportGeometry(ctx.model, prefix=ctx.actor.prefix)
+            origin = support.points(ctx.data)
+            origin = np.array([*origin[:, :2].mean(axis=0), float(origin[:, 2].min())])
+
+        def lean(t):
+            # the commanded take-off leans on from the crouch until the lean will give the flight's
+            # horizontal speed (thrust_due), or the lean is at its furthest
+            return Balance(schema.validate(dict(pelvis_height=cfg["crouch_height"], torso_pitch=cfg["crouch_pitch"],
+                                                com_offset_x=constants.commanded_lean_offset,
+                                                arm_flexion=cfg.get("crouch_arms", 0.0), move_start=0.0,
+                                                move_time=constants.commanded_lean_wait, hold_time=0.0,
+                                                return_to_stand=0)), ctx, from_height=cfg["crouch_height"])
+
+        def leaned(b, t):
+            return b.posture_reached(t) or thrust_due(command, ctx.data, b.pelvis, support, origin)
+
         def crouched(b, t):
+            if commanded:
+                return b.posture_reached(t)
             if broad:
                 # broad jump: thrust once the COM, leaning forward, has left the middle of the
                 # feet by the requested offset (Wooten §4.2: it would fall out of the support next)
@@ -159,18 +217,18 @@ class Leap(Sequence):
             return b.posture_reached(t - constants.crouch_settle_time)
 
         def thrust(t):
-            return LeapThrust({}, ctx, cfg["crouch_height"], constants.broad_timing if broad else constants.vertical_timing,
-                              constants.ankle_gain_broad if broad else constants.ankle_gain_vertical, cfg["liftoff_hip"],
-                              cfg["arm_swing"], stand_height=standing_hip_height(ctx.character), thrust_damping=cfg["thrust_damping"],
-                              liftoff_roll=cfg.get("liftoff_roll", 0.0), thrust_lean=cfg.get("thrust_lean", 0.0),
-                              spin_hold=cfg.get("spin_hold", 0.0))
+            settings = dict(timing=constants.broad_timing if broad else constants.vertical_timing,
+                            ankle_gain=constants.ankle_gain_broad if broad else constants.ankle_gain_vertical,
+                            liftoff_hip=cfg["liftoff_hip"], arm_swing=cfg["arm_swing"],
+                            stand_height=standing_hip_height(ctx.character), thrust_damping=cfg["thrust_damping"],
+                            liftoff_roll=cfg.get("liftoff_roll", 0.0), thrust_lean=cfg.get("thrust_lean", 0.0),
+                            spin_hold=cfg.get("spin_hold", 0.0))
+            if commanded:
+                return CommandedThrust({}, ctx, cfg["crouch_height"], command, **settings)
+            return LeapThrust({}, ctx, cfg["crouch_height"], **settings)
 
         def land(t):
-            # the calibrated leap's own correction of the landing's foot servo delta, plus the user's
-            delta = min(max(p.get("foot_delta", 0.0) + cfg.get("foot_delta", 0.0), -0.3), 0.3)  # definition: the foot_delta range
-            landing = {k: cfg.get("landing_" + k, p.get("landing_" + k, Landing.schema.defaults()[k]))
-                       for k in ("swing_arms", "arm_flexion", "foot_lead_time", "place_sideways", "knee_flexion",
-                                 "right_time")}
+            delta, landing = landing_settings()
             landing["fast_knee_flexion"] = landing["knee_flexion"]     # calibrated with one knee bend
             return Landing(Landing.schema.validate(dict(foot_delta=delta, **landing)), ctx)
 
@@ -178,7 +236,7 @@ class Leap(Sequence):
             return balance_after_landing(ctx, self.previous)
 
         return turn_steps(ctx, cfg.get("turn_first", 0.0), self) + [
-                Step("crouch", crouch, crouched),
+                Step("crouch", crouch, crouched)] + ([Step("lean", lean, leaned)] if commanded else []) + [
                 Step("thrust", thrust, lambda b, t: b.lifted_off()),
                 Step("land", land, lambda b, t: b.finished),
                 Step("balance", stand)]
