@@ -282,3 +282,30 @@ def test_a_sideways_target_beyond_the_region_is_searched_turning_as_the_nearest_
                           progress=lambda done, total, best: first.append(dict(best)) if done == 1 else None)
     assert first[0]["landing"] == pytest.approx(stored["measured"]["landing"], abs=1e-6)
     assert plan["settings"]["turn_first"] == start["turn_first"]
+
+
+def test_the_commanded_take_off_flies_further_for_a_further_target():
+    """The leap's commanded take-off (commanded_takeoff; control/commanded_thrust.py): the same
+    settings - the woman's stored 1.3 m plan with her crouch at 0.5 m and 0.03 m ahead - with the
+    commanded flight to 0.7 and 1.2 m in 0.45 s leave faster forward for the further target, and
+    both fly their air time within the tolerance (measured: 0.64 / 1.02 m, 0.76 / 1.24 m/s forward,
+    air 0.480 / 0.450 s; docs/jump_to_target.md "A commanded take-off"). A stored plan without it runs
+    as before."""
+    from sim_core.skills.jump_to_target.behaviour import commanded_flight, landing_measures, leap_params, scene_for
+    plan = _stored("woman", dict(target_x=1.3, target_y=0.0, target_z=0.0, obstacle_height=0.0,
+                                 air_time=GROUND_AIR_TIME, windup_time=WINDUP_TIME))
+    assert commanded_flight(plan["settings"], (1.3, 0.0, 0.0), GROUND_AIR_TIME) == {}
+    settings = dict(plan["settings"], commanded_takeoff=1.0, crouch_height=0.5, com_offset=0.03)
+    landed, speeds = [], []
+    for x in (0.7, 1.2):
+        target = (x, 0.0, 0.0, 0.0)
+        traj = run(RunRequest("leap", "woman", params=leap_params(settings, target, WINDUP_TIME, GROUND_AIR_TIME),
+                              duration=2.6, world=scene_for("woman", target)))
+        measured = landing_measures(traj)
+        liftoff = int(np.searchsorted(traj.arrays["time"], traj.meta["metrics"]["liftoff_time"]))
+        landed.append(measured["landing"][0])
+        speeds.append(float(traj.arrays["com_vel"][liftoff, 0]))
+        print(f"commanded {x} m in {GROUND_AIR_TIME} s: landed {measured['landing'][0]:.3f} m after "
+              f"{measured['air_time']:.3f} s, left at {speeds[-1]:.2f} m/s forward")
+        assert abs(measured["air_time"] - GROUND_AIR_TIME) <= AIR_TIME_TOLERANCE
+    assert speeds[1] > speeds[0] + 0.3 and landed[1] > landed[0] + 0.3

@@ -1,0 +1,149 @@
+"""Measure the leap's commanded take-off (sim_core/control/commanded_thrust.py) with no search: each
+jump runs one stored plan's crouch, thrust and landing settings (``--base``: the plan for that
+forward target in 0.45 s; ``--set`` overrides) with ``commanded_takeoff`` on and the request's
+target and air time as the commanded flight, once. Prints every jump and the summary figures of
+docs/jump_to_target.md ("A commanded take-off"):
+
+    tools/commanded_jumps.py --character man --base 1.3 --set com_offset=0.03 --sweep 0.5,1.9,0.05
+    tools/commanded_jumps.py --character man --base 1.3 --set com_offset=0.03 --random 30 --seed 29
+    tools/commanded_jumps.py ... --random 10 --seed 30 --fixed-air-time 0.45 --aim 5   # aim moved by a secant
+    tools/commanded_jumps.py ... --landings 0.8,1.0,1.3,1.6,1.9      # landing variants per target
+
+``--const name=value`` overrides a leap constant (leap_any.json's ``commanded_*``) for the run."""
+from __future__ import annotations
+
+import argparse
+import math
+import sys
+import time
+
+import numpy as np
+
+from sim_core.analysis import feet_above_surface
+from sim_core.control import leap
+from sim_core.simulate import RunRequest, run
+from sim_core.skills.jump_to_target.behaviour import GROUND_AIR_TIME, landing_measures, leap_params, read_plans, scene_for
+
+WINDUP = 1.25                       # s: the requests' wind-up time (the report's)
+FORWARD = {"man": 1.9, "woman": 1.6}    # m: issue 29's forward range ends here (from 0.5 m)
+AIR_TIMES = (0.4, 0.7)              # s: issue 29's air times
+AIM_TOLERANCE = 0.03                # m: a secant on the commanded target stops this near the target
+AIM_SLOPE = (0.2, 0.7)              # landing per commanded metre: a secant slope below the first is replaced by the second
+AIM_RANGE = (0.05, 2.5)             # m: the commanded target stays in the leap's flight_target_x range
+LANDING_VARIANTS = ([{"foot_delta": d, "landing_foot_lead_time": lead} for d in (-0.15, -0.05, 0.05, 0.15)
+                     for lead in (0.15, 0.3)]
+                    + [{"foot_delta": d, "landing_swing_arms": 1.0, "landing_arm_flexion": 2.5, "landing_right_time": 0.4}
+                       for d in (-0.1, 0.0, 0.1)])     # the landings tried on each flight (jump_model's kinds)
+
+
+def base_settings(character: str, forward: float, overrides: list[str]) -> dict:
+    plan = next(p for p in read_plans(character)
+                if abs(p["request"]["target_x"] - forward) < 1e-6 and p["request"]["target_y"] == 0
+                and p["request"]["target_z"] == 0 and p["request"].get("obstacle_height", 0) == 0
+                and p["request"]["air_time"] == GROUND_AIR_TIME)
+    settings = dict(plan["settings"], commanded_takeoff=1.0)
+    for item in overrides:
+        name, value = item.split("=")
+        settings[name] = float(value)
+    return settings
+
+
+def jump(character: str, settings: dict, x: float, air_time: float) -> tuple[dict, np.ndarray, float]:
+    """One commanded jump: the landing measures, the COM velocity and spin at lift-off."""
+    target = (x, 0.0, 0.0, 0.0)
+    trajectory = run(RunRequest("leap", character, params=leap_params(settings, target, WINDUP, air_time),
+                                duration=5.0, world=scene_for(character, target)))
+    flying = feet_above_surface(trajectory).min(axis=1) > leap.AIRBORNE_HEIGHT
+    k = int(np.argmax(flying))
+    return landing_measures(trajectory), trajectory.arrays["com_vel"][k], float(trajectory.arrays["angmom"][k][1])
+
+
+def describe(x: float, air_time: float, measured: dict, velocity, spin: float) -> str:
+    error = math.hypot(measured["landing"][0] - x, measured["landing"][1])
+    return (f"  {x:.2f} m in {air_time:.2f} s: landed {measured['landing'][0]:.3f} m ({error * 100:4.1f} cm off), air "
+            f"{measured['air_time']:.3f} s ({measured['air_time'] - air_time:+.3f}), {measured['outcome']}; lift-off "
+            f"COM velocity ({velocity[0]:.2f}, {velocity[2]:.2f}) m/s, spin {spin:+.1f} kg m2/s")
+
+
+def main(argv=None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--character", default="man")
+    parser.add_argument("--base", type=float, default=1.3)
+    parser.add_argument("--set", action="append", default=[])
+    parser.add_argument("--const", action="append", default=[])
+    parser.add_argument("--sweep", help="first,last,step m of forward targets")
+    parser.add_argument("--air-time", type=float, default=GROUND_AIR_TIME)
+    parser.add_argument("--fixed-air-time", type=float, help="random targets: all in this air time (else drawn)")
+    parser.add_argument("--random", type=int, default=0, help="this many seeded random forward targets and air times")
+    parser.add_argument("--seed", type=int, default=29)
+    parser.add_argument("--aim", type=int, default=1,
+                        help="random targets: at most this many trials, the commanded target moved by a secant on the "
+                             "landing point after each (1 = the commanded take-off alone)")
+    parser.add_argument("--landings", help="targets (m, comma-separated) whose flights try LANDING_VARIANTS")
+    args = parser.parse_args(argv)
+    for item in args.const:
+        name, value = item.split("=")
+        setattr(leap.CONSTANTS, name, float(value))
+    settings = base_settings(args.character, args.base, args.set)
+    started = time.time()
+    if args.sweep:
+        first, last, step = (float(v) for v in args.sweep.split(","))
+        xs = [round(first + step * k, 4) for k in range(int(round((last - first) / step)) + 1)]
+        rows = [(x, *jump(args.character, settings, x, args.air_time)) for x in xs]
+        for x, measured, velocity, spin in rows:
+            print(describe(x, args.air_time, measured, velocity, spin))
+        landed = np.array([m["landing"][0] for _, m, _, _ in rows])
+        errors = np.abs(landed - np.array(xs))
+        late = np.array([m["air_time"] - args.air_time for _, m, _, _ in rows])
+        steps = np.diff(landed) if len(xs) > 1 else np.zeros(1)
+        speeds = np.diff([v[0] for _, _, v, _ in rows]) if len(xs) > 1 else np.zeros(1)
+        print(f"sweep {args.character} {first:g}-{last:g} m every {step * 100:g} cm in {args.air_time:g} s ({len(xs)} jumps): "
+              f"landing error median {np.median(errors) * 100:.1f} cm (max {errors.max() * 100:.1f}), within 5 cm "
+              f"{int((errors <= 0.05).sum())}; air time error median {np.median(np.abs(late)):.3f} s ({late.min():+.3f} .. "
+              f"{late.max():+.3f}); landing moved per step {np.median(steps) * 100:.1f} cm median ({steps.min() * 100:+.1f} .. "
+              f"{steps.max() * 100:+.1f}), {int((steps < 0).sum())} steps back; lift-off speed forward per step "
+              f"{speeds.min():+.2f} .. {speeds.max():+.2f} m/s; landed {landed.min():.2f}-{landed.max():.2f} m; balanced "
+              f"{sum(m['outcome'] == 'success' for _, m, _, _ in rows)}")
+    if args.random:
+        rng = np.random.default_rng(args.seed)
+        draws = [(float(rng.uniform(0.5, FORWARD[args.character])),
+                  float(rng.uniform(*AIR_TIMES)) if args.fixed_air_time is None else args.fixed_air_time)
+                 for _ in range(args.random)]
+        errors, late, hits, balanced = [], [], 0, 0
+        trials = []
+        for x, air_time in draws:
+            aims, landed = [x], []
+            while True:
+                measured, velocity, spin = jump(args.character, settings, aims[-1], air_time)
+                landed.append(measured["landing"][0])
+                miss = landed[-1] - x
+                if abs(miss) <= AIM_TOLERANCE or len(aims) >= args.aim:
+                    break
+                slope = (landed[-1] - landed[-2]) / (aims[-1] - aims[-2]) if len(aims) > 1 and aims[-1] != aims[-2] else 0.0
+                slope = slope if slope > AIM_SLOPE[0] else AIM_SLOPE[1]
+                aims.append(min(max(aims[-1] - miss / slope, AIM_RANGE[0]), AIM_RANGE[1]))
+            trials.append(len(aims))
+            print(describe(x, air_time, measured, velocity, spin)
+                  + (f"; {len(aims)} trials, aimed at {', '.join(f'{a:.2f}' for a in aims)} m" if args.aim > 1 else ""))
+            errors.append(abs(measured["landing"][0] - x))
+            late.append(measured["air_time"] - air_time)
+            hits += errors[-1] <= 0.05 and abs(late[-1]) <= 0.05
+            balanced += measured["outcome"] == "success"
+        times = f"{AIR_TIMES[0]:g}-{AIR_TIMES[1]:g}" if args.fixed_air_time is None else f"{args.fixed_air_time:g}"
+        print(f"random {args.character} seed {args.seed} ({args.random} forward targets 0.5-{FORWARD[args.character]:g} m, "
+              f"air time {times} s): landing error median {np.median(errors) * 100:.1f} cm (max "
+              f"{max(errors) * 100:.1f}); air time error median {np.median(np.abs(late)):.3f} s ({min(late):+.3f} .. "
+              f"{max(late):+.3f}); within 5 cm and 0.05 s: {hits}; balanced {balanced}"
+              + (f"; trials median {np.median(trials):.0f}, most {max(trials)}" if args.aim > 1 else ""))
+    if args.landings:
+        for x in (float(v) for v in args.landings.split(",")):
+            outcomes = [jump(args.character, {**settings, **variant}, x, args.air_time)[0] for variant in LANDING_VARIANTS]
+            landed = ", ".join(f"{m['landing'][0]:.2f}" for m in outcomes)
+            print(f"  {x:.2f} m: {sum(m['outcome'] == 'success' for m in outcomes)} of {len(outcomes)} landings balanced "
+                  f"(landed {landed} m)")
+    print(f"({time.time() - started:.0f} s)")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
