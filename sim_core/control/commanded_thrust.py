@@ -68,7 +68,7 @@ def liftoff_velocity(command: FlightCommand, com: np.ndarray, origin: np.ndarray
     ahead = along / distance if distance > 1e-9 else np.array([1.0, 0.0])
     up = (origin[2] + command.target[2] + command.touchdown_height - com[2]) / T + 0.5 * GRAVITY * T
     speed = distance / (T + command.lead)
-    for _ in range(3):      # the landing table's delta depends on the speed (definition: converged in 3)
+    for _ in range(3):      # definition: a fixed-point solve (the landing table's delta depends on the speed), converged in 3
         speed = (distance - command.delta - command.calibrated_delta(speed, abs(up))) / (T + command.lead)
     return np.array([speed * ahead[0], speed * ahead[1], up])
 
