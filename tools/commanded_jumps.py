@@ -28,6 +28,7 @@ WINDUP = 1.25                       # s: the requests' wind-up time (the report'
 FORWARD = {"man": 1.9, "woman": 1.6}    # m: issue 29's forward range ends here (from 0.5 m)
 AIR_TIMES = (0.4, 0.7)              # s: issue 29's air times
 AIM_TOLERANCE = 0.03                # m: a secant on the commanded target stops this near the target
+AIM_TIME_TOLERANCE = 0.03           # s: ... and (with --crouch-by-air-time) this near the air time
 AIM_SLOPE = (0.2, 0.7)              # landing per commanded metre: a secant slope below the first is replaced by the second
 AIM_RANGE = (0.05, 2.5)             # m: the commanded target stays in the leap's flight_target_x range
 LANDING_VARIANTS = ([{"foot_delta": d, "landing_foot_lead_time": lead} for d in (-0.15, -0.05, 0.05, 0.15)
@@ -46,6 +47,15 @@ def base_settings(character: str, forward: float, overrides: list[str]) -> dict:
         name, value = item.split("=")
         settings[name] = float(value)
     return settings
+
+
+def crouch_for(crouches: str | None, air_time: float) -> dict:
+    """The crouch height for an air time from measured ``crouch:air time`` pairs (``--crouch-by-air-time``;
+    none given: the settings' own)."""
+    if not crouches:
+        return {}
+    pairs = sorted((float(b), float(a)) for a, b in (item.split(":") for item in crouches.split(",")))
+    return {"crouch_height": float(np.interp(air_time, [p[0] for p in pairs], [p[1] for p in pairs]))}
 
 
 def jump(character: str, settings: dict, x: float, air_time: float) -> tuple[dict, np.ndarray, float]:
@@ -79,6 +89,9 @@ def main(argv=None) -> int:
     parser.add_argument("--aim", type=int, default=1,
                         help="random targets: at most this many trials, the commanded target moved by a secant on the "
                              "landing point after each (1 = the commanded take-off alone)")
+    parser.add_argument("--crouch-by-air-time",
+                        help="crouch:air time pairs (m:s, comma-separated) measured with this take-off: each jump's crouch "
+                             "is interpolated at its air time (with --aim, at an air time moved by a secant too)")
     parser.add_argument("--landings", help="targets (m, comma-separated) whose flights try LANDING_VARIANTS")
     args = parser.parse_args(argv)
     for item in args.const:
@@ -112,16 +125,25 @@ def main(argv=None) -> int:
         errors, late, hits, balanced = [], [], 0, 0
         trials = []
         for x, air_time in draws:
-            aims, landed = [x], []
+            aims, landed, air_aims, flown = [x], [], [air_time], []
             while True:
-                measured, velocity, spin = jump(args.character, settings, aims[-1], air_time)
+                measured, velocity, spin = jump(args.character, {**settings, **crouch_for(args.crouch_by_air_time, air_aims[-1])},
+                                                aims[-1], air_time)
                 landed.append(measured["landing"][0])
-                miss = landed[-1] - x
-                if abs(miss) <= AIM_TOLERANCE or len(aims) >= args.aim:
+                flown.append(measured["air_time"])
+                miss, late_by = landed[-1] - x, flown[-1] - air_time
+                if (abs(miss) <= AIM_TOLERANCE and abs(late_by) <= AIM_TIME_TOLERANCE) or len(aims) >= args.aim:
                     break
                 slope = (landed[-1] - landed[-2]) / (aims[-1] - aims[-2]) if len(aims) > 1 and aims[-1] != aims[-2] else 0.0
                 slope = slope if slope > AIM_SLOPE[0] else AIM_SLOPE[1]
                 aims.append(min(max(aims[-1] - miss / slope, AIM_RANGE[0]), AIM_RANGE[1]))
+                if args.crouch_by_air_time:
+                    rate = ((flown[-1] - flown[-2]) / (air_aims[-1] - air_aims[-2])
+                            if len(air_aims) > 1 and air_aims[-1] != air_aims[-2] else 0.0)
+                    rate = rate if rate > AIM_SLOPE[0] else 1.0     # definition: first step, flown as asked
+                    air_aims.append(air_aims[-1] - late_by / rate)
+                else:
+                    air_aims.append(air_aims[-1])
             trials.append(len(aims))
             print(describe(x, air_time, measured, velocity, spin)
                   + (f"; {len(aims)} trials, aimed at {', '.join(f'{a:.2f}' for a in aims)} m" if args.aim > 1 else ""))
