@@ -500,7 +500,9 @@ hundreds. What does not, yet: the landing (the man's commanded flights balance a
 about a third: the man's aimed 1.38 m in 0.46 s leaves with the trunk pitched 35 deg and a spin of -3.5
 kg m²/s, and 0.1 s later, as the landing swings the legs ahead, the trunk is at 89 deg - the stored jumps
 leave spinning -5 to -13 and keep it near 40; asking -18 or -25 kg m²/s with twice the hips' gain leaves
-at -5, the hips at their limits in the lean), the man's near targets (he cannot leave slower than ~1.5 m/s forward: below 1.1 m his map
+at -5, the hips at their limits in the lean; the thrust's arm swing at 2.5 rad instead of the plan's
+0.75 took it to -7.5 and, with the arms swung back in flight, the trunk to 26 deg at touchdown, but it
+landed 24 cm long and fell; over 1.0-1.9 m every 10 cm in 0.45 s none of 10 balanced either way), the man's near targets (he cannot leave slower than ~1.5 m/s forward: below 1.1 m his map
 is flat and not monotone), the woman's longer air times (>0.62 s) and farther targets (>1.35 m). Nothing
 of it is offered: the region and the stored plans are unchanged. Next: (1) the landing planned from the
 arriving state (planning/land.py's foot steps, and the foot lead and arm swing), now that nearby targets
