@@ -519,3 +519,19 @@ def test_a_table_parameter_that_is_not_a_table_is_refused_in_one_line(table):
     refused naming what it must be, not a traceback."""
     with pytest.raises(ParameterError, match="is not a running table"):
         Running.schema.validate({"table": table})
+
+
+def test_the_refused_speeds_are_data_of_the_runners_table():
+    """The man's refused range (3.7, 4.05) m/s is his table's ``refused_speeds`` (docs/running.md, issue 28),
+    carried by the reader, ``to_table`` (a tuner's candidate) and ``with_row`` (the calibration writer's table);
+    a malformed range is refused in one line."""
+    man = SpeedTable.load("man")
+    assert man.refused == [(3.7, 4.05)] and man.offered() == [(2.5, 3.7), (4.05, 4.5)]
+    assert not man.offers(3.8) and man.offers(3.7) and man.offers(4.05)
+    again = SpeedTable.from_table(man.with_row(3.85, {}).to_table())
+    assert again.refused == man.refused and again.to_table()["refused_speeds"] == [[3.7, 4.05]]
+    assert "refused_speeds" not in SpeedTable.load("woman").to_table()       # she has none: every speed of hers runs
+    for bad in ([[4.0, 3.8]], [[2.0, 3.0]], [3.8], "3.8-3.9"):
+        with pytest.raises(ParameterError) as err:
+            Running.schema.validate({"table": dict(man.to_table(), refused_speeds=bad)})
+        assert "refused_speeds" in str(err.value) and "\n" not in str(err.value)

@@ -92,42 +92,35 @@ STEER_MAX_ACCELERATION = 0.625
 # none at 3.36 m/s or slower asking at most 0.41 did: docs/running.md, the woman; the child at her one speed:
 # curves up to 0.96 m/s^2 ran, from 1.10 m/s^2 most fell: docs/running.md, the child)
 STEER_LIMITS = {"man": (STEER_MAX_SPEED, STEER_MAX_ACCELERATION), "woman": (3.35, 0.4), "child": (2.5, 0.9)}
-# criterion: speeds inside a runner's table that are refused, (low, high) open intervals, where 100 s runs from
-# a stand fell with every row measured between (the man: 3.74-3.94 m/s fell, 4.05-4.48 ran with the 4.5 m/s
-# row held from 4.0 m/s and the yaw goal turned with the stride; docs/running.md, Limitations, issue 28)
-SPEED_GAPS = {"man": ((3.7, 4.05),)}
 STEERED_RUNNERS = tuple(STEER_LIMITS)      # criterion: the runners measured to turn, follow a path and face another way
 MORPH_TARGETS = ("none", "woman")   # criterion: the characters of the man's skeleton with a running table
 MORPH_FROM = ("man",)               # criterion: the runners measured morphing (docs/bodies.md, the morph)
 MORPH_SPEEDS = (2.5, 3.5)           # criterion: m/s, the speeds measured morphing without a fall (docs/bodies.md, the
                                     # morph: 2.5-3.5 m/s; with the woman's 4.0 m/s row, a morph at 4.0 m/s fell at 9.8 s)
 
-def offered_ranges(character: str, speeds: list[float]) -> list[tuple[float, float]]:
-    """The speed ranges a runner is offered: its table's, less its refused gaps (SPEED_GAPS)."""
-    ranges = [(speeds[0], speeds[-1])]
-    for low, high in SPEED_GAPS.get(character, ()):
-        ranges = [part for a, b in ranges for part in ((a, min(b, low)), (max(a, high), b)) if part[0] <= part[1]]
-    return ranges
-
-
 def offered_speeds(character: str) -> list[float]:
-    """The rows of a runner's table at speeds it is offered (not inside a refused gap)."""
-    speeds = SpeedTable.load(character).speeds
-    return [v for v in speeds if any(a <= v <= b for a, b in offered_ranges(character, speeds))]
+    """The rows of a runner's table at speeds it is offered (not inside a refused range)."""
+    table = SpeedTable.load(character)
+    return [v for v in table.speeds if table.offers(v)]
 
 
 class SpeedTable:
     """Tuned values of some parameters as functions of the running speed (piecewise linear,
     held constant beyond the ends): Hodgins et al. tune the thrust timing "30-50 % depending on
-    forward speed"; this is where such schedules live, as data."""
+    forward speed"; this is where such schedules live, as data. ``refused``: speed ranges inside the
+    table that a run is refused (open intervals (low, high), the table's ``refused_speeds``: where
+    100 s runs from a stand fell with every row measured between, docs/running.md), next to the rows
+    they qualify."""
 
-    def __init__(self, speeds: list[float], values: dict[str, list[float] | float], constants: dict | None = None):
+    def __init__(self, speeds: list[float], values: dict[str, list[float] | float], constants: dict | None = None,
+                 refused=None):
         self.speeds = [float(v) for v in speeds]
         self.values = {k: ([float(x) for x in v] if isinstance(v, (list, tuple)) else [float(v)] * len(self.speeds))
                        for k, v in values.items()}
         # the character's own values of constants of the laws (running_any's are the man's), e.g. the
         # woman's gains mass-scaled from the man's by Fig. 6 (docs/running.md, "The woman")
         self.constants = {k: float(v) for k, v in (constants or {}).items()}
+        self.refused = [(float(low), float(high)) for low, high in _refused_ranges(refused, self.speeds)]
 
     @classmethod
     def load(cls, character: str = "man") -> "SpeedTable":
@@ -139,21 +132,36 @@ class SpeedTable:
             data = load("running", name)
             if data is not None:
                 return cls(data.get("speeds", fallback["speeds"]), {**fallback["parameters"], **data.get("parameters", {})},
-                           data.get("constants") if name == character else None)
+                           data.get("constants") if name == character else None, data.get("refused_speeds"))
         return cls(fallback["speeds"], fallback["parameters"])
 
     @classmethod
     def from_table(cls, table: dict) -> "SpeedTable":
         """A table as ``to_table`` gives it (a run's ``table`` parameter)."""
-        return cls(table["speeds"], table["parameters"], table.get("constants"))
+        return cls(table["speeds"], table["parameters"], table.get("constants"), table.get("refused_speeds"))
 
     def to_table(self) -> dict:
         """The table's speeds and columns (and its constants, if any) as a running table stores them
-        (and a tuner passes a candidate to a run: the ``table`` parameter)."""
-        table = {"speeds": list(self.speeds), "parameters": {n: list(v) for n, v in self.values.items()}}
+        (and a tuner passes a candidate to a run: the ``table`` parameter), with its refused speed ranges."""
+        table = {"speeds": list(self.speeds), **self.refused_entry(),
+                 "parameters": {n: list(v) for n, v in self.values.items()}}
         if self.constants:
             table["constants"] = dict(self.constants)
         return table
+
+    def refused_entry(self) -> dict:
+        """The table file's ``refused_speeds`` entry ({} when none): what a writer of the table carries."""
+        return {"refused_speeds": [[low, high] for low, high in self.refused]} if self.refused else {}
+
+    def offered(self) -> list[tuple[float, float]]:
+        """The speed ranges a run is offered: the table's, less its refused ranges."""
+        ranges = [(self.speeds[0], self.speeds[-1])]
+        for low, high in self.refused:
+            ranges = [part for a, b in ranges for part in ((a, min(b, low)), (max(a, high), b)) if part[0] <= part[1]]
+        return ranges
+
+    def offers(self, speed: float) -> bool:
+        return any(low <= speed <= high for low, high in self.offered())
 
     def with_row(self, speed: float, row: dict[str, float]) -> "SpeedTable":
         """A copy with the values of ``row`` at ``speed`` (a new row if the speed is new; the
@@ -166,7 +174,7 @@ class SpeedTable:
             if v in self.speeds:                   # a stored row's value as it is (interpolating at a
                 return self.values[n][self.speeds.index(v)]     # knot could change it in the last bit)
             return self.at(n, v)
-        return SpeedTable(speeds, {n: [value(n, v) for v in speeds] for n in self.values}, self.constants)
+        return SpeedTable(speeds, {n: [value(n, v) for v in speeds] for n in self.values}, self.constants, self.refused)
 
     def at(self, name: str, speed: float) -> float:
         """A column's value at the speed: piecewise linear between the rows, held beyond the ends."""
@@ -178,6 +186,20 @@ class SpeedTable:
                 f = (speed - xs[k - 1]) / (xs[k] - xs[k - 1])
                 return ys[k - 1] + f * (ys[k] - ys[k - 1])
         return ys[-1]
+
+
+def _refused_ranges(refused, speeds: list[float]) -> list:
+    """A table's ``refused_speeds`` checked: a list of [low, high] pairs, low < high, inside the table's speeds."""
+    if refused is None:
+        return []
+    ok = bool(speeds) and isinstance(refused, (list, tuple)) and all(
+        isinstance(r, (list, tuple)) and len(r) == 2 and all(isinstance(x, (int, float)) and math.isfinite(x) for x in r)
+        and speeds[0] <= r[0] < r[1] <= speeds[-1] for r in refused)
+    if not ok:
+        raise ParameterError(f"refused_speeds={str(refused)[:60]} must be a list of [low, high] speed ranges (m/s), "
+                             f"low < high, inside the table's speeds"
+                             + (f" [{speeds[0]:g}, {speeds[-1]:g}]" if speeds else ""))
+    return list(refused)
 
 
 def _tuned_parameter(name, unit, minimum, maximum, help_text) -> Parameter:
@@ -278,6 +300,7 @@ SETTING_RANGES = Schema(
 
 def _running_rows(body: dict):
     speeds = body.get("speeds", [])
+    _refused_ranges(body.get("refused_speeds"), speeds)      # checked with the rows: on load, save and as a run's table
     columns = body.get("parameters", {})
     for k, speed in enumerate(speeds):
         yield f"row {speed:g} m/s", {n: (v[k] if isinstance(v, list) else v) for n, v in columns.items()}
@@ -397,10 +420,10 @@ class Running(Behaviour):
         if "table" not in self.params:
             name = self.ctx.character.name
             require_calibrated("running", name, self.name)
-            speeds = SpeedTable.load(name).speeds
+            table = SpeedTable.load(name)
             speed = self.params["speed"]
-            ranges = offered_ranges(name, speeds)
-            if not any(low <= speed <= high for low, high in ranges):
+            ranges = table.offered()
+            if not table.offers(speed):
                 allowed = " or ".join(f"[{low:g}, {high:g}]" for low, high in ranges)
                 raise ParameterError(f"parameter speed={speed:g} m/s is out of range for the {name}; allowed range for "
                                      f"speed is {allowed} m/s (the speeds of the {name}'s running table"

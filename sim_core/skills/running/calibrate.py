@@ -480,7 +480,8 @@ def main(argv=None) -> int:
     values = {n: list(table.values[n]) for n in COLUMNS}
     elapsed = time.monotonic() - started
     path = tuned.save("running", name, {
-        "speeds": speeds, "parameters": values, **({"constants": table.constants} if table.constants else {}),
+        "speeds": speeds, **table.refused_entry(), "parameters": values,
+        **({"constants": table.constants} if table.constants else {}),
         **({"note": stored["note"]} if "note" in stored else {}),
         "evaluation": {"weights": {"fall": W_FALL, "speed": W_SPEED, "speed_beyond_band": W_BAND,
                                    "speed_band": BAND, "head_acceleration": W_HEAD,
