@@ -66,11 +66,14 @@ BICYCLE_RANGES = Schema(
     Parameter("arm_gain_scale", "1", 1.0, 0.2, 5.0, "the arms' servo gains (kp and kv) while riding are the rider's times this (the arms steer the bicycle's fork through the hands, a load that does not shrink with the rider; 1: the rider's own)"),
     Parameter("max_speed", "m/s", 0.5, 0.5, 8.0, "the fastest speed a course may command (faster was not measured for the rider; course.py refuses it)"),
     Parameter("max_gear", "1", 0.5, 0.5, 5.0, "the highest gear offered (higher was not measured for the rider; course.py refuses it)"),
-    Parameter("min_slalom_speed", "m/s", 0.5, 0.5, 8.0, "the slalom is offered from this speed (and course.py's measured region; slower, the rider fell)"),
-    Parameter("max_slalom_speed", "m/s", 0.5, 0.5, 8.0, "the slalom is offered up to this speed (and course.py's measured region; faster, the rider missed gates)"),
+    Parameter("min_slalom_speed", "m/s", 0.5, 0.5, 8.0, "the slalom is offered from this speed (course.py; slower, the rider fell or missed gates)"),
+    Parameter("max_slalom_speed", "m/s", 0.5, 0.5, 8.0, "the slalom is offered up to this speed (course.py; faster, the rider missed gates)"),
+    Parameter("max_slalom_offset", "m", 0.2, 0.2, 3.0, "the slalom is offered with gate offsets up to this (course.py; wider, the rider missed gates)"),
+    Parameter("min_slalom_lead", "m", 2.0, 2.0, 200.0, "the slalom is offered with at least this much straight (turn_after) before it (course.py; shorter, the rider missed the first gate or fell)"),
+    Parameter("min_slalom_gate_width", "m", 0.5, 0.5, 5.0, "the slalom is offered with gates at least this wide (course.py; the rider crosses a gate up to 0.6 m from its centre)"),
     Parameter("max_turn_lean", "rad", 0.0, 0.0, 0.5, "a turn (the turn course, a given path's bends) is offered asking a steady lean (tan = v^2 / (g r)) up to this (and course.py's MAX_LEAN); more, the rider fell or leaned past 20 deg"),
     Parameter("min_turn_radius", "m", 3.0, 3.0, 100.0, "a turn (the turn course, a given path's bends) is offered on a radius of at least this (course.py), whatever its lean; tighter, the rider fell (3: the schema's tightest turn, no limit beyond it)"),
-    Parameter("max_slalom_acceleration", "m/s^2", 0.1, 0.1, 10.0, "the slalom is offered up to this peak lateral acceleration of its sine (and course.py's; more, the rider fell or missed gates)"),
+    Parameter("max_slalom_acceleration", "m/s^2", 0.1, 0.1, 10.0, "the slalom is offered up to this peak lateral acceleration of its sine, offset (pi v / spacing)^2 (course.py; more, the rider fell or missed gates)"),
     Parameter("speed_gain", "N m s/m", 0.0, 0.0, 5000.0, "eq. 7 k_v: crank torque per m/s of speed error"),
     Parameter("max_crank_torque", "N m", 0.0, 0.0, 1000.0, "limit of eq. 7's crank torque, driving or braking (a rider's strength)"),
     Parameter("speed_integral_gain", "N m/m", 0.0, 0.0, 2000.0, "eq. 7's integral term: crank torque per m of accumulated speed error (laws.speed_integral: held while the desired speed ramps to a new command and while the torque is at max_crank_torque, not used coasting or stopping; 0: the seed's eq. 7)"),
@@ -91,6 +94,7 @@ BICYCLE_RANGES = Schema(
     Parameter("max_heading_turn_speed", "m/s", 0.5, 0.5, 10.0, "a commanded heading other than the start's (no path) is offered up to this speed (faster, the turn to it fell or leaned past 20 deg; course.py refuses it)"),
     Parameter("min_heading_turn_gear", "1", 0.5, 0.5, 5.0, "a commanded heading other than the start's (no path) is offered from this gear (in lower gears the heading was left 5-10 deg off or the bicycle weaved; course.py refuses it)"),
     Parameter("min_heading_turn_cadence", "1/s", 0.0, 0.0, 5.0, "a commanded heading other than the start's (no path) is offered from this cadence v / (2 pi r gear), in revolutions per second (slower, the turn fell; course.py refuses it)"),
+    Parameter("path_rate_feedforward", "1", 0.0, 0.0, 1.0, "along a path, share of the path's turning rate (v times its curvature read curvature_preview ahead) eq. 11's yaw-rate term damps the yaw rate relative to (0: relative to 0, which holds the heading back from the path's bends)"),
     Parameter("lean_feedforward", "1", 0.0, 0.0, 1.0, "share of a steady turn's lean (tan = v^2 kappa / g) asked for ahead of a path's curve (0: the seed's eq. 11)"),
     Parameter("curvature_preview", "s", 0.0, 0.0, 3.0, "the path's curvature is read this many seconds of travel ahead"),
     Parameter("reference_speed", "m/s", 0.5, 0.5, 10.0, "speed at which the four steering gains are these (steering.py scales them with speed)"),
@@ -398,10 +402,6 @@ class Bicycling(Behaviour):
         self.desired_yaw_rate = 0.0
         if self.follower is None and self.desired_yaw != self.heading_goal:
             self._turn_to_heading(state["speed"])
-        # eq. 11's yaw rate is damped relative to the desired heading's rate, low-passed: a short turn's step
-        # of it (0.03 rad at 4.42 m/s: 0.45 rad/s for 66 ms) set off a weave of 20 deg (docs/bicycle.md)
-        blend = ctx.control_dt / (c["heading_rate_filter"] + ctx.control_dt)
-        self.yaw_rate_feedforward += blend * (self.desired_yaw_rate - self.yaw_rate_feedforward)
         if self.follower is not None:      # pure pursuit: head for the point lookahead_time ahead
             x, y = data.qpos[bike.free_qpos], data.qpos[bike.free_qpos + 1]
             moving = max(state["speed"], MIN_LOOKAHEAD_SPEED)
@@ -409,6 +409,11 @@ class Bicycling(Behaviour):
             self.desired_yaw = self.follower.heading(x, y)
             curvature = self.follower.curvature_ahead(x, y, c["curvature_preview"] * moving)
             desired_roll = lean_ahead(state["speed"], curvature, c["lean_feedforward"])
+            self.desired_yaw_rate = c["path_rate_feedforward"] * state["speed"] * curvature
+        # eq. 11's yaw rate is damped relative to the desired heading's (or the path's) rate, low-passed: a short turn's step
+        # of it (0.03 rad at 4.42 m/s: 0.45 rad/s for 66 ms) set off a weave of 20 deg (docs/bicycle.md)
+        blend = ctx.control_dt / (c["heading_rate_filter"] + ctx.control_dt)
+        self.yaw_rate_feedforward += blend * (self.desired_yaw_rate - self.yaw_rate_feedforward)
         if self.planted is not None:      # once the foot is on the ground the arms turn the bars straight
             step = c["fork_straighten_rate"] * ctx.control_dt
             self.fork_command -= min(max(self.fork_command, -step), step)
