@@ -5,7 +5,8 @@ Courses (the ``course`` parameter; a ``path`` given replaces the course's path):
   * straight: hold ``heading`` at ``speed``;
   * turn: straight for ``turn_after`` m, an arc of ``turn_radius`` turning by ``turn_angle``;
   * slalom: ``gate_count`` gates ``gate_spacing`` m apart, alternately ``gate_offset`` m left and
-    right of the start line (the first to the left), ridden along a sine through their centres;
+    right of the start line (the first to the left), ridden along a sine through their centres that
+    leaves and rejoins the line tangentially (``slalom``);
   * speed_steps: ``speed`` until ``step_time``, ``second_speed`` until twice it, then ``third_speed``;
   * hill: ``hill_after`` m of flat, a climb of ``hill_length`` m at ``hill_grade``, ``hill_top`` m
     of flat top and a descent like the climb (the hill is a world prop, sim_core.world.hill), ridden
@@ -20,8 +21,9 @@ Courses (the ``course`` parameter; a ``path`` given replaces the course's path):
 A course that asks the bicycle to turn harder than ``MAX_LEAN`` of lean at its speed is refused
 before anything runs, naming the limit; so is a request outside the limits measured by the random
 audit of the panel (the table's min_speed, min_gear, max_cadence, max_hill_grade,
-max_hill_grade_gear and the steep_hill_ limits, and a new heading's max_heading_turn_speed,
-min_heading_turn_gear and min_heading_turn_cadence).
+max_hill_grade_gear and the steep_hill_ limits, a new heading's max_heading_turn_speed,
+min_heading_turn_gear and min_heading_turn_cadence, and the slalom's region: min_slalom_speed,
+max_slalom_speed, max_slalom_acceleration, max_slalom_offset, min_slalom_gate_width, min_slalom_lead).
 """
 from __future__ import annotations
 
