@@ -73,6 +73,7 @@ def test_speed_steps_and_slow_start():
     ({"course": "slalom", "speed": 4.0, "gate_spacing": 20.0, "gate_offset": 1.5}, "gate_offset <= 1.00 m"),
     ({"course": "slalom", "speed": 4.0, "gate_width": 1.0}, "gate_width >= 1.5 m"),
     ({"course": "slalom", "speed": 4.0, "turn_after": 4.0}, "turn_after >= 5 m"),
+    ({"course": "start", "speed": 7.05, "gear": 1.75, "start_speed": 4.41}, "ridden in gear >= 2 (asked: gear 1.75 at 7.05 m/s)"),
     ({"course": "hill", "hill_grade": 0.5}, "hill_grade=0.5"),
     ({"speed": 3.0, "gear": 4.0, "heading": 1.0}, "cadence v / (2 pi r gear) >= 0.5 rev/s"),
     ({"course": "hill", "hill_grade": 0.12}, "ridden up to hill_grade 0.1 "),

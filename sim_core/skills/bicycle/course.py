@@ -151,9 +151,10 @@ def _check_heading_turn(p: dict, fastest: float, slowest: float) -> None:
 
 
 def _check_pedalling(p: dict, speeds: list[float], start_speed: float) -> None:
-    """The gear is at least the table's ``min_gear``; every speed a course commands is at least its
-    ``min_speed`` and asks a cadence v / (2 pi r gear) of at most its ``max_cadence`` (the rolling
-    start's too): all measured (docs/bicycle.md, random requests over the panel)."""
+    """The gear is at least the table's ``min_gear``, and at least its ``min_fast_gear`` if any speed a course
+    commands (the rolling start's too) reaches its ``fast_speed``; every speed is at least its ``min_speed`` and
+    asks a cadence v / (2 pi r gear) of at most its ``max_cadence``: all measured (docs/bicycle.md, random
+    requests over the panel; the fast gears: issue 30's checklist, seventh session)."""
     slowest = min(speeds)
     if slowest < p["min_speed"]:
         raise ParameterError(f"the bicycle is ridden at speed >= {p['min_speed']:g} m/s (asked: {slowest:g} m/s): "
@@ -168,6 +169,11 @@ def _check_pedalling(p: dict, speeds: list[float], start_speed: float) -> None:
     if fastest > p["max_speed"]:
         raise ParameterError(f"the bicycle is ridden at speed <= {p['max_speed']:g} m/s (asked: {fastest:g} m/s): faster "
                              f"was not measured for this rider (docs/bicycle.md, riders other than the man)")
+    if fastest >= p["fast_speed"] and p["gear"] < p["min_fast_gear"]:
+        raise ParameterError(f"at speed >= {p['fast_speed']:g} m/s the bicycle is ridden in gear >= {p['min_fast_gear']:g} "
+                             f"(asked: gear {p['gear']:g} at {fastest:g} m/s): in lower gears it was measured to weave (roll "
+                             f"to 18 deg, the heading 11 deg off) and a start to 7.05 m/s in gear 1.75 fell; a gear >= "
+                             f"{p['min_fast_gear']:g} or a speed < {p['fast_speed']:g} m/s would do")
     cadence = fastest / (2 * math.pi * wheel_radius(p) * p["gear"])
     if cadence > p["max_cadence"]:
         raise ParameterError(f"the cadence v / (2 pi r gear) is ridden up to {p['max_cadence']:g} rev/s (asked: {cadence:.2f} "
