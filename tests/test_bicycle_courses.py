@@ -10,7 +10,7 @@ import pytest
 
 from sim_core.errors import ParameterError
 from sim_core.simulate import RunRequest, run
-from sim_core.skills.bicycle.behaviour import Bicycling
+from sim_core.skills.bicycle.behaviour import Bicycling, bicycle_constants
 from sim_core.skills.bicycle.course import MAX_LEAN, course_for, gate_passes, slalom
 from sim_core.skills.bicycle.report import (audit_draw, audit_line, audit_request, audit_seconds, slalom_request,
                                             slalom_seconds)
@@ -43,6 +43,22 @@ def test_slalom_gates_alternate_on_the_sine_through_them():
     assert not gate_passes(gates, 1.5, np.column_stack([path[:, 0], np.zeros(len(path))]))[0]["passed"]
 
 
+def test_slalom_path_leaves_and_rejoins_the_line_without_a_kink():
+    """The slalom's path turns by well under a degree from one point to the next, the entry and exit
+    included (the sine alone met the line at a kink of atan(pi offset / spacing): the lean it asked
+    made the man at 5 m/s, 14 m, 1 m lean 21.6 deg and miss the first gate; docs/bicycle.md)."""
+    rng = np.random.default_rng(3032)
+    for _ in range(6):
+        speed, spacing, offset = slalom_request(rng)
+        lead = float(rng.uniform(2.0, 20.0))
+        path, gates = slalom(int(rng.integers(1, 9)), spacing, offset, lead)
+        heading = np.arctan2(*np.diff(path, axis=0).T[::-1])
+        assert np.degrees(np.abs(np.diff(heading))).max() < 2.0, (speed, spacing, offset, lead)
+        for gx, gy in gates:
+            k = np.argmin(np.abs(path[:, 0] - gx))
+            assert path[k, 1] == pytest.approx(gy, abs=0.01)
+
+
 def test_speed_steps_and_slow_start():
     c = course_for(params(course="speed_steps", speed=3.0, second_speed=5.0, third_speed=4.0, step_time=15.0))
     assert [c.speed_at(t) for t in (0.0, 14.9, 15.0, 29.9, 30.0, 100.0)] == [3, 3, 5, 5, 4, 4]
@@ -56,6 +72,8 @@ def test_speed_steps_and_slow_start():
     ({"course": "slalom", "speed": 4.0, "gate_spacing": 8.0, "gate_offset": 1.0}, "gate_offset <= 0.65 m"),
     ({"course": "slalom", "speed": 4.0, "gate_spacing": 20.0, "gate_offset": 1.5}, "gate_offset <= 1.00 m"),
     ({"course": "slalom", "speed": 4.0, "gate_width": 1.0}, "gate_width >= 1.5 m"),
+    ({"course": "slalom", "speed": 4.0, "turn_after": 4.0}, "turn_after >= 5 m"),
+    ({"course": "start", "speed": 7.05, "gear": 1.75, "start_speed": 4.41}, "ridden in gear >= 2 (asked: gear 1.75 at 7.05 m/s)"),
     ({"course": "hill", "hill_grade": 0.5}, "hill_grade=0.5"),
     ({"speed": 3.0, "gear": 4.0, "heading": 1.0}, "cadence v / (2 pi r gear) >= 0.5 rev/s"),
     ({"course": "hill", "hill_grade": 0.12}, "ridden up to hill_grade 0.1 "),
@@ -194,6 +212,20 @@ def test_slalom_of_8_gates_and_a_two_sided_pedal():
     assert not m["fell"] and m["gates_passed"] == m["gate_count"] == 8, (speed, spacing, offset, m["gate_misses"])
     assert m["pedal_pull_r_max"] > 0.0 and m["pedal_pull_l_max"] > 0.0
     assert m["max_hand_gap"] < 0.03 and m["max_foot_gap"] < 0.03 and m["max_seat_gap"] < 0.001
+
+
+def test_a_slalom_at_the_edge_of_its_region_passes_its_gates():
+    """The hole of issue 30's audit (the man's 5 m/s slalom at 14 m passed 7 of 8 gates): a speed drawn
+    over the slalom's offered speeds, the widest offset offered, the gates as close as the sine's
+    lateral acceleration allows (the region's corner) - every gate passed, no fall, |roll| < 20 deg."""
+    c = bicycle_constants()
+    speed = round(float(np.random.default_rng(3033).uniform(c["min_slalom_speed"], c["max_slalom_speed"])), 2)
+    offset = c["max_slalom_offset"]
+    spacing = math.ceil(math.pi * speed * math.sqrt(offset / c["max_slalom_acceleration"]) * 100) / 100
+    m = ride(slalom_seconds(speed, spacing, 3), course="slalom", speed=speed, gate_spacing=spacing, gate_offset=offset,
+             gate_count=3).meta["metrics"]
+    assert not m["fell"] and m["gates_passed"] == m["gate_count"] == 3, (speed, spacing, m["gate_misses"])
+    assert m["max_abs_roll_deg"] < 20.0
 
 
 @pytest.mark.slow

@@ -205,8 +205,7 @@ ALLOWED = {
                                                      "KNEELING_HEIGHT", "FALLEN_PELVIS", "BALANCED_TIME", "NO_STEP",
                                                      "TABLE_1", "TAKEI_MASS", "TAKEI_HEIGHT")},
     "skills.bicycle.course": {"SLALOM_POINT_SPACING": "definition", "RUN_OUT": "definition",
-                              **{n: "criterion" for n in ("SLALOM_SPEEDS", "SLALOM_MAX_ACCELERATION", "SLALOM_MAX_OFFSET", "SLALOM_MIN_WIDTH",
-                                                       "COAST_SPEEDS", "STOP_SPEEDS")}},
+                              **{n: "criterion" for n in ("COAST_SPEEDS", "STOP_SPEEDS")}},
 }
 
 

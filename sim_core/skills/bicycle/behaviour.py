@@ -25,6 +25,7 @@ Control, every tick (laws.py for the equations):
 """
 from __future__ import annotations
 
+import collections
 import dataclasses
 import math
 
@@ -44,7 +45,8 @@ from ...world.bicycle import (BRAKE_MAX_TORQUE, DEFAULT_GEAR, LIMB_SOLREF, NAMES
 from .assess import STOPPED_SPEED
 from .course import COURSE, FREEWHEEL_COURSES, course_for
 from .steering import steering_gains
-from .laws import ankle_angle, crank_torque, speed_integral, fork_angle, lean_ahead, load_torque, pedal_forces
+from .laws import (ankle_angle, crank_torque, speed_integral, fork_angle, lean_ahead, load_torque, pedal_forces,
+                   stroke_bin, stroke_learn)
 from .mount import IK_ITERATIONS_PER_TICK, SitePairs, match_velocities, solve
 
 FOOT_IK_ITERATIONS = 5              # definition: damped least-squares steps a tick for the foot going down
@@ -66,11 +68,14 @@ BICYCLE_RANGES = Schema(
     Parameter("arm_gain_scale", "1", 1.0, 0.2, 5.0, "the arms' servo gains (kp and kv) while riding are the rider's times this (the arms steer the bicycle's fork through the hands, a load that does not shrink with the rider; 1: the rider's own)"),
     Parameter("max_speed", "m/s", 0.5, 0.5, 8.0, "the fastest speed a course may command (faster was not measured for the rider; course.py refuses it)"),
     Parameter("max_gear", "1", 0.5, 0.5, 5.0, "the highest gear offered (higher was not measured for the rider; course.py refuses it)"),
-    Parameter("min_slalom_speed", "m/s", 0.5, 0.5, 8.0, "the slalom is offered from this speed (and course.py's measured region; slower, the rider fell)"),
-    Parameter("max_slalom_speed", "m/s", 0.5, 0.5, 8.0, "the slalom is offered up to this speed (and course.py's measured region; faster, the rider missed gates)"),
+    Parameter("min_slalom_speed", "m/s", 0.5, 0.5, 8.0, "the slalom is offered from this speed (course.py; slower, the rider fell or missed gates)"),
+    Parameter("max_slalom_speed", "m/s", 0.5, 0.5, 8.0, "the slalom is offered up to this speed (course.py; faster, the rider missed gates)"),
+    Parameter("max_slalom_offset", "m", 0.2, 0.2, 3.0, "the slalom is offered with gate offsets up to this (course.py; wider, the rider missed gates)"),
+    Parameter("min_slalom_lead", "m", 2.0, 2.0, 200.0, "the slalom is offered with at least this much straight (turn_after) before it (course.py; shorter, the rider missed the first gate or fell)"),
+    Parameter("min_slalom_gate_width", "m", 0.5, 0.5, 5.0, "the slalom is offered with gates at least this wide (course.py; the rider crosses a gate up to 0.6 m from its centre)"),
     Parameter("max_turn_lean", "rad", 0.0, 0.0, 0.5, "a turn (the turn course, a given path's bends) is offered asking a steady lean (tan = v^2 / (g r)) up to this (and course.py's MAX_LEAN); more, the rider fell or leaned past 20 deg"),
     Parameter("min_turn_radius", "m", 3.0, 3.0, 100.0, "a turn (the turn course, a given path's bends) is offered on a radius of at least this (course.py), whatever its lean; tighter, the rider fell (3: the schema's tightest turn, no limit beyond it)"),
-    Parameter("max_slalom_acceleration", "m/s^2", 0.1, 0.1, 10.0, "the slalom is offered up to this peak lateral acceleration of its sine (and course.py's; more, the rider fell or missed gates)"),
+    Parameter("max_slalom_acceleration", "m/s^2", 0.1, 0.1, 10.0, "the slalom is offered up to this peak lateral acceleration of its sine, offset (pi v / spacing)^2 (course.py; more, the rider fell or missed gates)"),
     Parameter("speed_gain", "N m s/m", 0.0, 0.0, 5000.0, "eq. 7 k_v: crank torque per m/s of speed error"),
     Parameter("max_crank_torque", "N m", 0.0, 0.0, 1000.0, "limit of eq. 7's crank torque, driving or braking (a rider's strength)"),
     Parameter("speed_integral_gain", "N m/m", 0.0, 0.0, 2000.0, "eq. 7's integral term: crank torque per m of accumulated speed error (laws.speed_integral: held while the desired speed ramps to a new command and while the torque is at max_crank_torque, not used coasting or stopping; 0: the seed's eq. 7)"),
@@ -78,6 +83,11 @@ BICYCLE_RANGES = Schema(
     Parameter("slope_feedforward", "1", 0.0, 0.0, 2.0, "share of the crank torque that holds rider and bicycle on the road's grade under the wheels (gear r m g sin, laws.load_torque; the grade sensed from the wheels' axle line, BicycleView.road_sine; negative downhill: the legs brake) added to eq. 7 (0: the seed's eq. 7)"),
     Parameter("grade_filter", "s", 0.0, 0.0, 5.0, "time constant of the low-pass on the road's grade the load's feed-forward feels (BicycleView.road_sine; 0: as sensed each tick)"),
     Parameter("rolling_feedforward", "1", 0.0, 0.0, 2.0, "share of the crank torque that holds the rolling resistance at the desired speed (gear r c v_d, laws.load_torque) added to eq. 7 (0: the seed's eq. 7)"),
+    Parameter("stroke_feedforward_gain", "1", 0.0, 0.0, 2.0, "the stroke's shape (laws.stroke_learn): share of the crank-angle bin's torque surplus (gear r m times the acceleration above its mean over a stroke) taken off that bin's feed-forward at each pass (0: off, the seed's eq. 7)"),
+    Parameter("stroke_feedforward_limit", "N m", 0.0, 0.0, 500.0, "the stroke's shape: each bin's feed-forward within +- this"),
+    Parameter("stroke_bins", "count", 12.0, 2.0, 72.0, "the stroke's shape: bins over a half revolution of the crank (the two legs' strokes alike)"),
+    Parameter("stroke_filter", "s", 0.0, 0.0, 5.0, "the stroke's shape: time constant of the low-pass that gives the acceleration's mean over a stroke"),
+    Parameter("speed_stroke_mean", "1", 0.0, 0.0, 1.0, "1: eq. 7's proportional term reads the speed's mean over the crank's last half revolution (one leg's stroke) instead of the speed each tick, so it does not answer the ripple within a stroke (0: the seed's eq. 7)"),
     Parameter("hold_seat_pitch", "1", 0.0, 0.0, 1.0, "1: while riding, the limbs' targets hold the pelvis at its mounted pitch on the saddle (``_seat_pelvis``, as the stop does once the foot is down); 0: the pelvis pitches as the limbs let it (the man's: 56 deg forward at the top of a stroke)"),
     Parameter("ik_velocity_filter", "s", 0.0, 0.0, 0.5, "time constant of the low-pass on the limb targets' velocity that leads the servos (0: unfiltered)"),
     Parameter("speed_ramp", "m/s^2", 0.1, 0.1, 10.0, "eq. 7's desired speed moves to a newly commanded one at this rate (a start, a speed step)"),
@@ -91,12 +101,15 @@ BICYCLE_RANGES = Schema(
     Parameter("max_heading_turn_speed", "m/s", 0.5, 0.5, 10.0, "a commanded heading other than the start's (no path) is offered up to this speed (faster, the turn to it fell or leaned past 20 deg; course.py refuses it)"),
     Parameter("min_heading_turn_gear", "1", 0.5, 0.5, 5.0, "a commanded heading other than the start's (no path) is offered from this gear (in lower gears the heading was left 5-10 deg off or the bicycle weaved; course.py refuses it)"),
     Parameter("min_heading_turn_cadence", "1/s", 0.0, 0.0, 5.0, "a commanded heading other than the start's (no path) is offered from this cadence v / (2 pi r gear), in revolutions per second (slower, the turn fell; course.py refuses it)"),
+    Parameter("path_rate_feedforward", "1", 0.0, 0.0, 1.0, "along a path, share of the path's turning rate (v times its curvature read curvature_preview ahead) eq. 11's yaw-rate term damps the yaw rate relative to (0: relative to 0, which holds the heading back from the path's bends)"),
     Parameter("lean_feedforward", "1", 0.0, 0.0, 1.0, "share of a steady turn's lean (tan = v^2 kappa / g) asked for ahead of a path's curve (0: the seed's eq. 11)"),
     Parameter("curvature_preview", "s", 0.0, 0.0, 3.0, "the path's curvature is read this many seconds of travel ahead"),
     Parameter("reference_speed", "m/s", 0.5, 0.5, 10.0, "speed at which the four steering gains are these (steering.py scales them with speed)"),
     Parameter("max_fork_angle", "rad", 0.0, 0.0, 1.0, "limit of the commanded fork angle"),
     Parameter("min_speed", "m/s", 0.5, 0.5, 8.0, "the slowest speed a course may command (slower rides were measured to fall; course.py refuses them)"),
     Parameter("max_cadence", "1/s", 0.5, 0.5, 10.0, "the fastest cadence v / (2 pi r gear), in revolutions per second, a course may ask (faster, the legs do not turn the crank at the wheel's pace; course.py refuses it)"),
+    Parameter("min_fast_gear", "1", 0.5, 0.5, 5.0, "the lowest gear offered when a course commands fast_speed or more (lower, the rider weaved and fell; course.py refuses it)"),
+    Parameter("fast_speed", "m/s", 8.0, 0.5, 10.0, "from this speed the gear is at least min_fast_gear (course.py)"),
     Parameter("min_gear", "1", 0.5, 0.5, 5.0, "the lowest gear offered (lower, the legs lost more than 5 % of the speed at 1.9-2.4 rev/s; course.py refuses it)"),
     Parameter("max_hill_grade", "1", 0.0, 0.0, 0.2, "the steepest hill_grade offered in any gear (up to max_hill_grade_gear); steeper, up to steep_hill_grade, in the steep_hill_ gears and speeds only (course.py refuses the rest)"),
     Parameter("max_hill_grade_gear", "1", 0.0, 0.0, 1.0, "the largest hill_grade x gear a hill may ask (the climb's crank torque goes with it; steeper or higher-geared climbs lost more than 15 % of the speed; course.py refuses them)"),
@@ -362,6 +375,10 @@ class Bicycling(Behaviour):
         # upset a stop (3.2 m/s, gear 4.51) and a long turn at 7 m/s (docs/bicycle.md, the hill's speed law)
         self.load_law = bool(self.course.hill) and self.params["hill_grade"] <= self.params["max_hill_grade"]
         self.road_sine = self.bike.road_sine(ctx.data)     # the grade the rider feels (low-passed, grade_filter)
+        self.stroke_table = [0.0] * int(self.params["stroke_bins"])   # N m per crank-angle bin (stroke_feedforward_gain)
+        self.stroke_last = None              # (speed, crank) of the previous control step
+        self.mean_acceleration = 0.0         # m/s^2, low-passed over a stroke (stroke_filter)
+        self.stroke_speeds = collections.deque()   # (crank angle, speed) over the crank's last half revolution (speed_stroke_mean)
         self.crank_command = None            # coasting: the crank angle the legs hold (None: the pedals as they are)
         self.coasting = self.coasted = False
         self.stopping = self.course.stop        # braking to a stop (the stop course; a coast that got too slow)
@@ -398,10 +415,6 @@ class Bicycling(Behaviour):
         self.desired_yaw_rate = 0.0
         if self.follower is None and self.desired_yaw != self.heading_goal:
             self._turn_to_heading(state["speed"])
-        # eq. 11's yaw rate is damped relative to the desired heading's rate, low-passed: a short turn's step
-        # of it (0.03 rad at 4.42 m/s: 0.45 rad/s for 66 ms) set off a weave of 20 deg (docs/bicycle.md)
-        blend = ctx.control_dt / (c["heading_rate_filter"] + ctx.control_dt)
-        self.yaw_rate_feedforward += blend * (self.desired_yaw_rate - self.yaw_rate_feedforward)
         if self.follower is not None:      # pure pursuit: head for the point lookahead_time ahead
             x, y = data.qpos[bike.free_qpos], data.qpos[bike.free_qpos + 1]
             moving = max(state["speed"], MIN_LOOKAHEAD_SPEED)
@@ -409,6 +422,11 @@ class Bicycling(Behaviour):
             self.desired_yaw = self.follower.heading(x, y)
             curvature = self.follower.curvature_ahead(x, y, c["curvature_preview"] * moving)
             desired_roll = lean_ahead(state["speed"], curvature, c["lean_feedforward"])
+            self.desired_yaw_rate = c["path_rate_feedforward"] * state["speed"] * curvature
+        # eq. 11's yaw rate is damped relative to the desired heading's (or the path's) rate, low-passed: a short turn's step
+        # of it (0.03 rad at 4.42 m/s: 0.45 rad/s for 66 ms) set off a weave of 20 deg (docs/bicycle.md)
+        blend = ctx.control_dt / (c["heading_rate_filter"] + ctx.control_dt)
+        self.yaw_rate_feedforward += blend * (self.desired_yaw_rate - self.yaw_rate_feedforward)
         if self.planted is not None:      # once the foot is on the ground the arms turn the bars straight
             step = c["fork_straighten_rate"] * ctx.control_dt
             self.fork_command -= min(max(self.fork_command, -step), step)
@@ -462,6 +480,10 @@ class Bicycling(Behaviour):
                 self.speed_error_integral = speed_integral(self.speed_error_integral, state["speed"], self.desired_speed, dt,
                                                            c["speed_gain"], c["max_crank_torque"], uphill, ki,
                                                            c["speed_integral_limit"])
+            if c["stroke_feedforward_gain"]:
+                uphill += self._stroke_torque(state)
+            if c["speed_stroke_mean"]:
+                state = dict(state, speed=self._stroke_mean_speed(state))
             return crank_torque(state["speed"], self.desired_speed, c["speed_gain"], c["max_crank_torque"], uphill,
                                 self.speed_error_integral, ki)
         level = math.pi / 2 + math.pi * math.ceil((self.crank_command - math.pi / 2) / math.pi)   # the next level crank
@@ -477,6 +499,30 @@ class Bicycling(Behaviour):
                 self.rest_since = t
                 self.event(t, "at_rest")
         return 0.0
+
+    def _stroke_mean_speed(self, state) -> float:
+        """The speed's mean over the crank's last half revolution (speed_stroke_mean): the ripple within a
+        stroke (both legs' strokes alike) averages out of what eq. 7 reads."""
+        samples = self.stroke_speeds
+        samples.append((state["crank"], state["speed"]))
+        while len(samples) > 1 and abs(state["crank"] - samples[0][0]) > math.pi:
+            samples.popleft()
+        return sum(speed for _, speed in samples) / len(samples)
+
+    def _stroke_torque(self, state) -> float:
+        """The stroke's shape (stroke_feedforward_gain): a feed-forward per crank-angle bin over the half
+        revolution, learnt from the bicycle's acceleration above its mean over a stroke (the legs deliver
+        eq. 7's torque unevenly over the stroke: the speed ripples at twice the cadence), added to eq. 7."""
+        c, dt = self.params, self.ctx.control_dt
+        if self.stroke_last is not None:
+            speed, crank = self.stroke_last
+            acceleration = (state["speed"] - speed) / dt
+            self.mean_acceleration += dt / (c["stroke_filter"] + dt) * (acceleration - self.mean_acceleration)
+            surplus = c["gear"] * self.bike.wheel_radius * self.mass * (acceleration - self.mean_acceleration)
+            stroke_learn(self.stroke_table, crank, abs(state["crank"] - crank), surplus, c["stroke_feedforward_gain"],
+                         c["stroke_feedforward_limit"])
+        self.stroke_last = (state["speed"], state["crank"])
+        return self.stroke_table[stroke_bin(state["crank"], len(self.stroke_table))]
 
     @property
     def run_complete(self) -> bool:

@@ -32,7 +32,7 @@ from ...tuning import executor_for
 from ...world import World, add_world
 from ...world.bicycle import Bicycle, BicycleView, DEFAULT_GEAR
 from .behaviour import Bicycling, bicycle_constants
-from .course import SLALOM_SPEEDS, STOP_SPEEDS, slalom_widest_offset
+from .course import STOP_SPEEDS, slalom_widest_offset
 
 
 def riderless_model(gear: float = DEFAULT_GEAR) -> mujoco.MjModel:
@@ -122,12 +122,12 @@ def course_ride(item) -> tuple[str, dict]:
 
 def slalom_request(rng: np.random.Generator) -> tuple[float, float, float]:
     """(speed m/s, gate spacing m, gate offset m) drawn uniformly inside the region the slalom is
-    offered in for the default gate width (course.py), gate periods of SLALOM_DRAW_PERIODS s (long enough to be a slalom,
+    offered in to the man for the default gate width (bicycle_any.json, course.py), gate periods of SLALOM_DRAW_PERIODS s (long enough to be a slalom,
     short enough for a test's ride)."""
-    schema = Bicycling.schema.by_name
-    speed = round(float(rng.uniform(*SLALOM_SPEEDS)), 2)
+    schema, c = Bicycling.schema.by_name, bicycle_constants()
+    speed = round(float(rng.uniform(c["min_slalom_speed"], c["max_slalom_speed"])), 2)
     spacing = round(float(rng.uniform(*SLALOM_DRAW_PERIODS)) * speed, 2)
-    widest = slalom_widest_offset(speed, spacing)
+    widest = slalom_widest_offset(speed, spacing, c["max_slalom_acceleration"], c["max_slalom_offset"])
     return speed, spacing, float(np.floor(rng.uniform(schema["gate_offset"].minimum, widest) * 100) / 100)
 
 
