@@ -71,6 +71,7 @@ SCHEDULED = {
     "yaw_twist": ("rad", 0.0, 0.3, "the stance hip's yaw goal turned this much with the stride's pelvis rotation (its hip forward)"),
     "thrust_gain": ("1", 1.0, 4.0, "the knee's and ankle's position gain in the thrust, as a multiple of the default"),
     "toe_push": ("rad", 0.0, 0.7, "the toe joint's plantarflexion target in the thrust (0 = held flat)"),
+    "idle_roll": ("1", 0.0, 1.0, "weight of the idle hip's abduction in the stance attitude torque (0: the stance hip alone)"),
 }
 SCHEDULED_CONSTANTS = {name: (low, high) for name, (_, low, high, _) in SCHEDULED.items()}   # the search's space
 
@@ -597,6 +598,7 @@ class Running(Behaviour):
         self.stance_time = c.initial_stance_time     # expected stance duration t_s (the last stance's)
         self.flight_time = c.initial_flight_time
         self.idle_lo = [0.0, 0.0]            # idle hip (y, x) at the last lift-off
+        self.idle_extra = 0.0                # the idle hip abduction's share of the attitude torque (N m, idle_roll)
         self.active_lo = [0.0, 0.0]          # active hip (y, x) at the last lift-off
         self.blend_from = None
         self.knee_touchdown = c.initial_touchdown_knee
@@ -795,6 +797,7 @@ class Running(Behaviour):
         i = 1 - a
         ja, ji = self.j[a], self.j[i]
         kp, kv = self.kp, self.kv
+        idle_extra = 0.0
 
         # ---- active leg
         if state == START:
@@ -840,11 +843,15 @@ class Running(Behaviour):
             sa, ia = axes[:3], axes[3:]
             if a == 1:
                 sa, ia = ia, sa
-            fi = (force[ji["hy"]], force[ji["hx"]], force[ji["hz"]])
+            fi = (force[ji["hy"]], force[ji["hx"]] - self.idle_extra, force[ji["hz"]])
             bx = -bx - (ia[0][0] * fi[0] + ia[1][0] * fi[1] + ia[2][0] * fi[2])
             by = -by - (ia[0][1] * fi[0] + ia[1][1] * fi[1] + ia[2][1] * fi[2])
             bz = -bz - (ia[0][2] * fi[0] + ia[1][2] * fi[1] + ia[2][2] * fi[2])
-            taus = _solve3(sa[0], sa[1], sa[2], bx, by, bz)
+            if p["idle_roll"] > 0:
+                taus, extra = self._allocate(sa, ia[1], bx, by, bz, ja, ji, p["idle_roll"])
+                idle_extra = extra * share
+            else:
+                taus = _solve3(sa[0], sa[1], sa[2], bx, by, bz)
             if p["yaw_first"] > 0:
                 taus = self._yaw_first(taus, sa, m, bx, by, bz, share, ja, p["yaw_first"])
             for key, tau in zip(("hy", "hx", "hz"), taus):
@@ -909,7 +916,23 @@ class Running(Behaviour):
             v_ = c.ff_max if v_ > c.ff_max else -c.ff_max if v_ < -c.ff_max else v_
             command[ji["hy"]] -= c.start_hip_damping * kv[ji["hy"]] / kp[ji["hy"]] * v_
         self.previous_goal = {j_: targets[j_] for j_ in tracked}
+        if idle_extra != 0.0:
+            # the idle hip's share of the attitude torque, on top of its position servo
+            command[ji["hx"]] += idle_extra / kp[ji["hx"]]
+        self.idle_extra = idle_extra
         servos.hold(np.array(command), t)
+
+    def _allocate(self, sa, idle_x, bx, by, bz, ja, ji, weight):
+        """The attitude torque shared by the stance hip's three axes and the idle hip's abduction:
+        the least-squares allocation with each torque scaled by its servo's limit (the idle hip's
+        by ``weight`` more), i.e. the solution of A tau = b that minimises sum (tau_j / w_j)^2; the
+        stance hip's rotation axis no longer has to carry all the roll the others cannot."""
+        limits = self.ctx.model.actuator_forcerange[self.ctx.servos.actuators][:, 1]
+        w = np.array([limits[ja["hy"]], limits[ja["hx"]], limits[ja["hz"]], weight * limits[ji["hx"]]]) ** 2
+        a = np.array([sa[0], sa[1], sa[2], idle_x]).T            # 3 x 4: columns are the axes
+        lam = np.linalg.solve((a * w) @ a.T, np.array([bx, by, bz]))
+        tau = w * (a.T @ lam)
+        return (float(tau[0]), float(tau[1]), float(tau[2])), float(tau[3])
 
     def _yaw_first(self, taus, sa, m, bx, by, bz, share, ja, given_up):
         """The hip's rotation axis runs along the thigh, so with the thigh swept forward or back it
