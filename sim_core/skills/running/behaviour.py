@@ -71,7 +71,7 @@ SCHEDULED = {
     "yaw_twist": ("rad", 0.0, 0.3, "the stance hip's yaw goal turned this much with the stride's pelvis rotation (its hip forward)"),
     "thrust_gain": ("1", 1.0, 4.0, "the knee's and ankle's position gain in the thrust, as a multiple of the default"),
     "toe_push": ("rad", 0.0, 0.7, "the toe joint's plantarflexion target in the thrust (0 = held flat)"),
-    "idle_roll": ("1", 0.0, 1.0, "weight of the idle hip's abduction in the stance attitude torque (0: the stance hip alone)"),
+    "idle_roll": ("1", 0.0, 1.0, "share of the stance hip rotation's torque past its limit moved to the idle hip's abduction (0: none)"),
 }
 SCHEDULED_CONSTANTS = {name: (low, high) for name, (_, low, high, _) in SCHEDULED.items()}   # the search's space
 
@@ -848,7 +848,7 @@ class Running(Behaviour):
             by = -by - (ia[0][1] * fi[0] + ia[1][1] * fi[1] + ia[2][1] * fi[2])
             bz = -bz - (ia[0][2] * fi[0] + ia[1][2] * fi[1] + ia[2][2] * fi[2])
             if p["idle_roll"] > 0:
-                taus, extra = self._allocate(sa, ia[1], bx, by, bz, ja, ji, p["idle_roll"])
+                taus, extra = self._allocate(sa, ia[1], bx, by, bz, share, ja, ji, p["idle_roll"])
                 idle_extra = extra * share
             else:
                 taus = _solve3(sa[0], sa[1], sa[2], bx, by, bz)
@@ -922,17 +922,22 @@ class Running(Behaviour):
         self.idle_extra = idle_extra
         servos.hold(np.array(command), t)
 
-    def _allocate(self, sa, idle_x, bx, by, bz, ja, ji, weight):
-        """The attitude torque shared by the stance hip's three axes and the idle hip's abduction:
-        the least-squares allocation with each torque scaled by its servo's limit (the idle hip's
-        by ``weight`` more), i.e. the solution of A tau = b that minimises sum (tau_j / w_j)^2; the
-        stance hip's rotation axis no longer has to carry all the roll the others cannot."""
+    def _allocate(self, sa, idle_x, bx, by, bz, share, ja, ji, given):
+        """The hip's rotation axis runs along the thigh, so with the thigh swept it carries part of the
+        roll torque; where Cramer's rule would take it past its torque limit, a share ``given`` of the
+        excess is taken off it and the attitude torque solved again with the stance hip's flexion and
+        abduction and the idle hip's abduction (its reaction on the pelvis) carrying the rest."""
+        taus = _solve3(sa[0], sa[1], sa[2], bx, by, bz)
+        limit = self.ctx.model.actuator_forcerange[self.ctx.servos.actuators][ja["hz"], 1] * self.constants.hip_yaw_headroom
+        hz = taus[2] * share
+        if abs(hz) <= limit or share <= 0.0:
+            return taus, 0.0
+        hz = taus[2] - given * (taus[2] - math.copysign(limit, hz) / share)
+        hy, hx, extra = _solve3(sa[0], sa[1], idle_x, bx - hz * sa[2][0], by - hz * sa[2][1], bz - hz * sa[2][2])
         limits = self.ctx.model.actuator_forcerange[self.ctx.servos.actuators][:, 1]
-        w = np.array([limits[ja["hy"]], limits[ja["hx"]], limits[ja["hz"]], weight * limits[ji["hx"]]]) ** 2
-        a = np.array([sa[0], sa[1], sa[2], idle_x]).T            # 3 x 4: columns are the axes
-        lam = np.linalg.solve((a * w) @ a.T, np.array([bx, by, bz]))
-        tau = w * (a.T @ lam)
-        return (float(tau[0]), float(tau[1]), float(tau[2])), float(tau[3])
+        if abs(extra * share) > limits[ji["hx"]] or abs(hx * share) > limits[ja["hx"]] or abs(hy * share) > limits[ja["hy"]]:
+            return taus, 0.0            # the idle hip's abduction near parallel to the stance hip's: no help there
+        return (hy, hx, hz), extra
 
     def _yaw_first(self, taus, sa, m, bx, by, bz, share, ja, given_up):
         """The hip's rotation axis runs along the thigh, so with the thigh swept forward or back it
