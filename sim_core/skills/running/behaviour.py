@@ -71,7 +71,6 @@ SCHEDULED = {
     "yaw_twist": ("rad", 0.0, 0.3, "the stance hip's yaw goal turned this much with the stride's pelvis rotation (its hip forward)"),
     "thrust_gain": ("1", 1.0, 4.0, "the knee's and ankle's position gain in the thrust, as a multiple of the default"),
     "toe_push": ("rad", 0.0, 0.7, "the toe joint's plantarflexion target in the thrust (0 = held flat)"),
-    "idle_roll": ("1", 0.0, 1.0, "share of the stance hip rotation's torque past its limit moved to the idle hip's abduction (0: none)"),
 }
 SCHEDULED_CONSTANTS = {name: (low, high) for name, (_, low, high, _) in SCHEDULED.items()}   # the search's space
 
@@ -598,7 +597,6 @@ class Running(Behaviour):
         self.stance_time = c.initial_stance_time     # expected stance duration t_s (the last stance's)
         self.flight_time = c.initial_flight_time
         self.idle_lo = [0.0, 0.0]            # idle hip (y, x) at the last lift-off
-        self.idle_extra = 0.0                # the idle hip abduction's share of the attitude torque (N m, idle_roll)
         self.active_lo = [0.0, 0.0]          # active hip (y, x) at the last lift-off
         self.blend_from = None
         self.knee_touchdown = c.initial_touchdown_knee
@@ -797,7 +795,6 @@ class Running(Behaviour):
         i = 1 - a
         ja, ji = self.j[a], self.j[i]
         kp, kv = self.kp, self.kv
-        idle_extra = 0.0
 
         # ---- active leg
         if state == START:
@@ -843,15 +840,11 @@ class Running(Behaviour):
             sa, ia = axes[:3], axes[3:]
             if a == 1:
                 sa, ia = ia, sa
-            fi = (force[ji["hy"]], force[ji["hx"]] - self.idle_extra, force[ji["hz"]])
+            fi = (force[ji["hy"]], force[ji["hx"]], force[ji["hz"]])
             bx = -bx - (ia[0][0] * fi[0] + ia[1][0] * fi[1] + ia[2][0] * fi[2])
             by = -by - (ia[0][1] * fi[0] + ia[1][1] * fi[1] + ia[2][1] * fi[2])
             bz = -bz - (ia[0][2] * fi[0] + ia[1][2] * fi[1] + ia[2][2] * fi[2])
-            if p["idle_roll"] > 0:
-                taus, extra = self._allocate(sa, ia[1], bx, by, bz, share, ja, ji, p["idle_roll"])
-                idle_extra = extra * share
-            else:
-                taus = _solve3(sa[0], sa[1], sa[2], bx, by, bz)
+            taus = _solve3(sa[0], sa[1], sa[2], bx, by, bz)
             if p["yaw_first"] > 0:
                 taus = self._yaw_first(taus, sa, m, bx, by, bz, share, ja, p["yaw_first"])
             for key, tau in zip(("hy", "hx", "hz"), taus):
@@ -916,28 +909,7 @@ class Running(Behaviour):
             v_ = c.ff_max if v_ > c.ff_max else -c.ff_max if v_ < -c.ff_max else v_
             command[ji["hy"]] -= c.start_hip_damping * kv[ji["hy"]] / kp[ji["hy"]] * v_
         self.previous_goal = {j_: targets[j_] for j_ in tracked}
-        if idle_extra != 0.0:
-            # the idle hip's share of the attitude torque, on top of its position servo
-            command[ji["hx"]] += idle_extra / kp[ji["hx"]]
-        self.idle_extra = idle_extra
         servos.hold(np.array(command), t)
-
-    def _allocate(self, sa, idle_x, bx, by, bz, share, ja, ji, given):
-        """The hip's rotation axis runs along the thigh, so with the thigh swept it carries part of the
-        roll torque; where Cramer's rule would take it past its torque limit, a share ``given`` of the
-        excess is taken off it and the attitude torque solved again with the stance hip's flexion and
-        abduction and the idle hip's abduction (its reaction on the pelvis) carrying the rest."""
-        taus = _solve3(sa[0], sa[1], sa[2], bx, by, bz)
-        limit = self.ctx.model.actuator_forcerange[self.ctx.servos.actuators][ja["hz"], 1] * self.constants.hip_yaw_headroom
-        hz = taus[2] * share
-        if abs(hz) <= limit or share <= 0.0:
-            return taus, 0.0
-        hz = taus[2] - given * (taus[2] - math.copysign(limit, hz) / share)
-        hy, hx, extra = _solve3(sa[0], sa[1], idle_x, bx - hz * sa[2][0], by - hz * sa[2][1], bz - hz * sa[2][2])
-        limits = self.ctx.model.actuator_forcerange[self.ctx.servos.actuators][:, 1]
-        if abs(extra * share) > limits[ji["hx"]] or abs(hx * share) > limits[ja["hx"]] or abs(hy * share) > limits[ja["hy"]]:
-            return taus, 0.0            # the idle hip's abduction near parallel to the stance hip's: no help there
-        return (hy, hx, hz), extra
 
     def _yaw_first(self, taus, sa, m, bx, by, bz, share, ja, given_up):
         """The hip's rotation axis runs along the thigh, so with the thigh swept forward or back it
