@@ -309,3 +309,31 @@ def test_the_commanded_take_off_flies_further_for_a_further_target():
               f"{measured['air_time']:.3f} s, left at {speeds[-1]:.2f} m/s forward")
         assert abs(measured["air_time"] - GROUND_AIR_TIME) <= AIR_TIME_TOLERANCE
     assert speeds[1] > speeds[0] + 0.3 and landed[1] > landed[0] + 0.3
+
+
+def test_the_landings_arm_feedback_turns_the_trunk_back_on_a_commanded_flight():
+    """The landing's arms fed back on the pelvis pitch (landing_arm_pitch_gain; control/leap.py's
+    Landing): the man's commanded flight to 1.38 m in 0.46 s (his stored 1.3 m plan, crouch 0.61 m, 0.03 m
+    ahead) lands with the trunk pitched less with the arms fed back than with the arms swung to 0.75 rad
+    alone (measured: 66 / 70 deg; docs/jump_to_target.md, "twelfth session"). A stored plan names no
+    feedback, so its landing runs as before."""
+    import math
+    from sim_core.skills.jump_to_target.behaviour import ARM_FEEDBACK, landing_measures, landing_settings, leap_params, scene_for
+    plan = _stored("man", dict(target_x=1.3, target_y=0.0, target_z=0.0, obstacle_height=0.0,
+                               air_time=GROUND_AIR_TIME, windup_time=WINDUP_TIME))
+    assert not set(ARM_FEEDBACK) & set(landing_settings(plan["settings"]))
+    target, air_time = (1.384, 0.0, 0.0, 0.0), 0.4559
+    pitches = []
+    for gain in (0.0, 4.0):
+        settings = dict(plan["settings"], commanded_takeoff=1.0, crouch_height=0.61, com_offset=0.03,
+                        landing_swing_arms=1.0, landing_arm_flexion=0.75, landing_arm_pitch_gain=gain,
+                        landing_arm_pitch=0.6)
+        traj = run(RunRequest("leap", "man", params=leap_params(settings, target, WINDUP_TIME, air_time),
+                              duration=2.6, world=scene_for("man", target)))
+        measured = landing_measures(traj)
+        touchdown = int(np.searchsorted(traj.arrays["time"], traj.meta["metrics"]["liftoff_time"] + measured["air_time"]))
+        w, qx, qy, qz = traj.arrays["qpos"][touchdown, 3:7]
+        pitches.append(math.degrees(math.atan2(2 * (qx * qz + w * qy), 1 - 2 * (qx * qx + qy * qy))))
+        print(f"arm feedback gain {gain}: trunk pitched {pitches[-1]:.0f} deg at touchdown, landed "
+              f"{measured['landing'][0]:.3f} m after {measured['air_time']:.3f} s ({measured['outcome']})")
+    assert pitches[1] < pitches[0] - 2.0

@@ -21,6 +21,7 @@ import numpy as np
 
 from sim_core.analysis import feet_above_surface
 from sim_core.control import leap
+from sim_core.planning.land import candidates, foot_step
 from sim_core.simulate import RunRequest, run
 from sim_core.skills.jump_to_target.behaviour import GROUND_AIR_TIME, landing_measures, leap_params, read_plans, scene_for
 
@@ -92,6 +93,10 @@ def main(argv=None) -> int:
     parser.add_argument("--crouch-by-air-time",
                         help="crouch:air time pairs (m:s, comma-separated) measured with this take-off: each jump's crouch "
                              "is interpolated at its air time (with --aim, at an air time moved by a secant too)")
+    parser.add_argument("--plan-landing", type=int, default=0,
+                        help="random targets: a hit that falls is planned as planning/land.py plans a drop - foot_delta "
+                             "one step (land's plan step) more and less, two, ..., this many runs in all, the aimed "
+                             "command kept; the first that ends balanced and still hits is taken")
     parser.add_argument("--landings", help="targets (m, comma-separated) whose flights try LANDING_VARIANTS")
     args = parser.parse_args(argv)
     for item in args.const:
@@ -122,7 +127,7 @@ def main(argv=None) -> int:
         draws = [(float(rng.uniform(0.5, FORWARD[args.character])),
                   float(rng.uniform(*AIR_TIMES)) if args.fixed_air_time is None else args.fixed_air_time)
                  for _ in range(args.random)]
-        errors, late, hits, balanced = [], [], 0, 0
+        errors, late, hits, balanced, hits_balanced, planned = [], [], 0, 0, 0, []
         trials = []
         for x, air_time in draws:
             aims, landed, air_aims, flown = [x], [], [air_time], []
@@ -145,17 +150,32 @@ def main(argv=None) -> int:
                 else:
                     air_aims.append(air_aims[-1])
             trials.append(len(aims))
+            hit = lambda m: abs(m["landing"][0] - x) <= 0.05 and abs(m["air_time"] - air_time) <= 0.05
+            if args.plan_landing > 1 and hit(measured) and measured["outcome"] != "success":
+                aimed = {**settings, **crouch_for(args.crouch_by_air_time, air_aims[-1])}
+                deltas = candidates(aimed.get("foot_delta", 0.0), foot_step(args.character), args.plan_landing, -0.3, 0.3)
+                for delta in deltas[1:]:
+                    tried, velocity_t, spin_t = jump(args.character, {**aimed, "foot_delta": delta}, aims[-1], air_time)
+                    if tried["outcome"] == "success" and hit(tried):
+                        measured, velocity, spin = tried, velocity_t, spin_t
+                        planned.append(delta)
+                        print(f"    landing plan: foot_delta {delta:+.4f} m ends balanced")
+                        break
+                else:
+                    print(f"    landing plan: none of {len(deltas) - 1} foot placements ends balanced and hits")
             print(describe(x, air_time, measured, velocity, spin)
                   + (f"; {len(aims)} trials, aimed at {', '.join(f'{a:.2f}' for a in aims)} m" if args.aim > 1 else ""))
             errors.append(abs(measured["landing"][0] - x))
             late.append(measured["air_time"] - air_time)
             hits += errors[-1] <= 0.05 and abs(late[-1]) <= 0.05
             balanced += measured["outcome"] == "success"
+            hits_balanced += hit(measured) and measured["outcome"] == "success"
         times = f"{AIR_TIMES[0]:g}-{AIR_TIMES[1]:g}" if args.fixed_air_time is None else f"{args.fixed_air_time:g}"
         print(f"random {args.character} seed {args.seed} ({args.random} forward targets 0.5-{FORWARD[args.character]:g} m, "
               f"air time {times} s): landing error median {np.median(errors) * 100:.1f} cm (max "
               f"{max(errors) * 100:.1f}); air time error median {np.median(np.abs(late)):.3f} s ({min(late):+.3f} .. "
-              f"{max(late):+.3f}); within 5 cm and 0.05 s: {hits}; balanced {balanced}"
+              f"{max(late):+.3f}); within 5 cm and 0.05 s: {hits}, {hits_balanced} of them balanced; balanced {balanced}"
+              + (f"; landings planned {len(planned)}" if args.plan_landing > 1 else "")
               + (f"; trials median {np.median(trials):.0f}, most {max(trials)}" if args.aim > 1 else ""))
     if args.landings:
         for x in (float(v) for v in args.landings.split(",")):

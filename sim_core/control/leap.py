@@ -256,6 +256,11 @@ class Landing(Behaviour):
                   "forward raise of the arms they swing to in flight (from a high take-off swing, down "
                   "and back to below 0 pitches the trunk back, so the feet can reach forward)"),
         Parameter("arm_time", "s", 0.3, 0.1, 1.0, "duration of that arm swing"),
+        Parameter("arm_pitch_gain", "1", 0.0, 0.0, 10.0,
+                  "with swing_arms: in flight the arms swing to arm_flexion less this many rad per rad the pelvis is "
+                  "pitched forward of arm_pitch (and its pitch rate x arm_time), within -1..3 rad: swung down and back "
+                  "as the landing's leg swing pitches the trunk forward, the arms turn it back (0 = arm_flexion alone)"),
+        Parameter("arm_pitch", "rad", 0.6, -0.5, 1.5, "the pelvis pitch the arms' feedback (arm_pitch_gain) holds"),
         Parameter("spin_placement", "s/m", 0.0, 0.0, 0.5,
                   "landing a somersault: the feet land this factor x (somersault angular momentum / mass) "
                   "behind the COM for a backward spin, ahead for a forward one, so the ground force at "
@@ -323,6 +328,9 @@ class Landing(Behaviour):
         self.shoulders = s.indices(["shoulder_r_z", "shoulder_l_z"])
         self.arm_from = s.smoothed_target(t)[self.shoulders].copy()
         self.arm_to = np.array([1.0, -1.0]) * self.params["arm_flexion"]
+        arm = Landing.schema.by_name["arm_flexion"]
+        self.arm_range = (arm.minimum, arm.maximum)        # the feedback's flexion stays in the parameter's range
+        self.arm_held, self.last_pitch = None, None
         self.started_at = t
         self.blend_from = s.smoothed_target(t).copy()
         self.event(t, "flight")
@@ -484,7 +492,17 @@ class Landing(Behaviour):
             targets[legs] = q + (torque + kv * dq) / kp - s.offset[legs]
         if p["swing_arms"]:
             swing = hermite_scalar((t - self.started_at) / p["arm_time"])
-            targets[self.shoulders] = self.arm_from + (self.arm_to - self.arm_from) * swing
+            arm_to = self.arm_to
+            if p["arm_pitch_gain"] and self.stage == "flight":
+                pitch_rate = 0.0 if self.last_pitch is None else (pelvis_pitch - self.last_pitch) / self.ctx.control_dt
+                ahead = pelvis_pitch + pitch_rate * p["arm_time"] - p["arm_pitch"]
+                flexion = min(max(p["arm_flexion"] - p["arm_pitch_gain"] * ahead, self.arm_range[0]), self.arm_range[1])
+                arm_to = np.array([1.0, -1.0]) * flexion
+                self.arm_held = arm_to
+            elif self.arm_held is not None:
+                arm_to = self.arm_held          # on the ground the arms stay where the flight's feedback left them
+            targets[self.shoulders] = self.arm_from + (arm_to - self.arm_from) * swing
+        self.last_pitch = pelvis_pitch
         s.hold(targets, t)
 
 

@@ -218,13 +218,17 @@ def turn_of(settings: dict) -> dict:
     return {"turn_first": settings["turn_first"]} if settings.get("turn_first") else {}
 
 
+ARM_FEEDBACK = ("landing_arm_pitch_gain", "landing_arm_pitch")    # the arms' pitch feedback: only plans that name it
+
+
 def landing_settings(settings: dict) -> dict:
     """The landing's settings among the planner's (the leap passes them to its landing)."""
     return {"landing_swing_arms": float(settings["landing_swing_arms"] > 0.5),
             "landing_arm_flexion": settings["landing_arm_flexion"],
             "landing_foot_lead_time": settings["landing_foot_lead_time"],
             "landing_place_sideways": float(abs(settings.get("com_offset_y", 0.0)) > 0.0),
-            "landing_right_time": float(settings.get("landing_right_time", 0.0))}
+            "landing_right_time": float(settings.get("landing_right_time", 0.0)),
+            **{k: float(settings[k]) for k in ARM_FEEDBACK if k in settings}}
 
 
 def crouch_time(windup_time: float) -> float:

@@ -57,6 +57,10 @@ class Leap(Sequence):
         Parameter("landing_arm_flexion", "rad", 0.6, -1.0, 3.0,
                   "landing: forward raise of the arms they swing to in flight (below 0: down and back, "
                   "which pitches the trunk back so the feet reach forward)"),
+        Parameter("landing_arm_pitch_gain", "1", 0.0, 0.0, 10.0,
+                  "landing: with landing_swing_arms, the arms swing this many rad further down and back per rad the "
+                  "pelvis is (about to be) pitched forward of landing_arm_pitch (0 = to landing_arm_flexion alone)"),
+        Parameter("landing_arm_pitch", "rad", 0.6, -0.5, 1.5, "landing: the pelvis pitch the arms' feedback holds"),
         Parameter("landing_foot_lead_time", "s", 0.2, 0.0, 0.6,
                   "landing: the feet land this many seconds of horizontal COM travel ahead of the COM"),
         Parameter("landing_right_time", "s", 0.0, 0.0, 1.0,
@@ -182,7 +186,7 @@ class Leap(Sequence):
             delta = min(max(p.get("foot_delta", 0.0) + cfg.get("foot_delta", 0.0), -0.3), 0.3)  # definition: the foot_delta range
             landing = {k: cfg.get("landing_" + k, p.get("landing_" + k, Landing.schema.defaults()[k]))
                        for k in ("swing_arms", "arm_flexion", "foot_lead_time", "place_sideways", "knee_flexion",
-                                 "right_time")}
+                                 "right_time", "arm_pitch_gain", "arm_pitch")}
             return delta, landing
 
         commanded = cfg.get("commanded_takeoff", 0.0) > 0.5
