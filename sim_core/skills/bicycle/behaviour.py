@@ -108,6 +108,7 @@ BICYCLE_RANGES = Schema(
     Parameter("max_fork_angle", "rad", 0.0, 0.0, 1.0, "limit of the commanded fork angle"),
     Parameter("min_speed", "m/s", 0.5, 0.5, 8.0, "the slowest speed a course may command (slower rides were measured to fall; course.py refuses them)"),
     Parameter("max_cadence", "1/s", 0.5, 0.5, 10.0, "the fastest cadence v / (2 pi r gear), in revolutions per second, a course may ask (faster, the legs do not turn the crank at the wheel's pace; course.py refuses it)"),
+    Parameter("min_cadence", "1/s", 0.0, 0.0, 5.0, "the slowest cadence v / (2 pi r gear), in revolutions per second, a course may ask at any of its commanded speeds (slower, the rider weaved to 19 deg, the heading wandered 71 deg, and fell; course.py refuses it)"),
     Parameter("min_fast_gear", "1", 0.5, 0.5, 5.0, "the lowest gear offered when a course commands fast_speed or more (lower, the rider weaved and fell; course.py refuses it)"),
     Parameter("fast_speed", "m/s", 8.0, 0.5, 10.0, "from this speed the gear is at least min_fast_gear (course.py)"),
     Parameter("min_gear", "1", 0.5, 0.5, 5.0, "the lowest gear offered (lower, the legs lost more than 5 % of the speed at 1.9-2.4 rev/s; course.py refuses it)"),

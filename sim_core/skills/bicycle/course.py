@@ -20,7 +20,7 @@ Courses (the ``course`` parameter; a ``path`` given replaces the course's path):
 
 A course that asks the bicycle to turn harder than ``MAX_LEAN`` of lean at its speed is refused
 before anything runs, naming the limit; so is a request outside the limits measured by the random
-audit of the panel (the table's min_speed, min_gear, max_cadence, max_hill_grade,
+audit of the panel (the table's min_speed, min_gear, min_cadence, max_cadence, max_hill_grade,
 max_hill_grade_gear and the steep_hill_ limits, a new heading's max_heading_turn_speed,
 min_heading_turn_gear and min_heading_turn_cadence, and the slalom's region: min_slalom_speed,
 max_slalom_speed, max_slalom_acceleration, max_slalom_offset, min_slalom_gate_width, min_slalom_lead).
@@ -153,7 +153,8 @@ def _check_heading_turn(p: dict, fastest: float, slowest: float) -> None:
 def _check_pedalling(p: dict, speeds: list[float], start_speed: float) -> None:
     """The gear is at least the table's ``min_gear``, and at least its ``min_fast_gear`` if any speed a course
     commands (the rolling start's too) reaches its ``fast_speed``; every speed is at least its ``min_speed`` and
-    asks a cadence v / (2 pi r gear) of at most its ``max_cadence``: all measured (docs/bicycle.md, random
+    asks a cadence v / (2 pi r gear) of at most its ``max_cadence``; every commanded speed (not the rolling
+    start's) asks at least its ``min_cadence`` (issue 30, eighth session): all measured (docs/bicycle.md, random
     requests over the panel; the fast gears: issue 30's checklist, seventh session)."""
     slowest = min(speeds)
     if slowest < p["min_speed"]:
@@ -174,6 +175,13 @@ def _check_pedalling(p: dict, speeds: list[float], start_speed: float) -> None:
                              f"(asked: gear {p['gear']:g} at {fastest:g} m/s): in lower gears it was measured to weave (roll "
                              f"to 18 deg, the heading 11 deg off) and a start to 7.05 m/s in gear 1.75 fell; a gear >= "
                              f"{p['min_fast_gear']:g} or a speed < {p['fast_speed']:g} m/s would do")
+    slow_cadence = slowest / (2 * math.pi * wheel_radius(p) * p["gear"])
+    if slow_cadence < p["min_cadence"]:
+        raise ParameterError(f"the cadence v / (2 pi r gear) is ridden from {p['min_cadence']:g} rev/s (asked: {slow_cadence:.2f} "
+                             f"rev/s at {slowest:g} m/s in gear {p['gear']:g}); slower, the pedal strokes were measured to "
+                             f"set the bicycle weaving (roll to 19 deg, the heading 71 deg off) or to fall: a gear <= "
+                             f"{slowest / (2 * math.pi * wheel_radius(p) * p['min_cadence']):.2f} or a speed >= "
+                             f"{2 * math.pi * wheel_radius(p) * p['gear'] * p['min_cadence']:.2f} m/s would do")
     cadence = fastest / (2 * math.pi * wheel_radius(p) * p["gear"])
     if cadence > p["max_cadence"]:
         raise ParameterError(f"the cadence v / (2 pi r gear) is ridden up to {p['max_cadence']:g} rev/s (asked: {cadence:.2f} "
