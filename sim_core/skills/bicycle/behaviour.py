@@ -25,7 +25,6 @@ Control, every tick (laws.py for the equations):
 """
 from __future__ import annotations
 
-import collections
 import dataclasses
 import math
 
@@ -45,8 +44,7 @@ from ...world.bicycle import (BRAKE_MAX_TORQUE, DEFAULT_GEAR, LIMB_SOLREF, NAMES
 from .assess import STOPPED_SPEED
 from .course import COURSE, FREEWHEEL_COURSES, course_for
 from .steering import steering_gains
-from .laws import (ankle_angle, crank_torque, speed_integral, fork_angle, lean_ahead, load_torque, pedal_forces,
-                   stroke_bin, stroke_learn)
+from .laws import ankle_angle, crank_torque, speed_integral, fork_angle, lean_ahead, load_torque, pedal_forces
 from .mount import IK_ITERATIONS_PER_TICK, SitePairs, match_velocities, solve
 
 FOOT_IK_ITERATIONS = 5              # definition: damped least-squares steps a tick for the foot going down
@@ -83,11 +81,6 @@ BICYCLE_RANGES = Schema(
     Parameter("slope_feedforward", "1", 0.0, 0.0, 2.0, "share of the crank torque that holds rider and bicycle on the road's grade under the wheels (gear r m g sin, laws.load_torque; the grade sensed from the wheels' axle line, BicycleView.road_sine; negative downhill: the legs brake) added to eq. 7 (0: the seed's eq. 7)"),
     Parameter("grade_filter", "s", 0.0, 0.0, 5.0, "time constant of the low-pass on the road's grade the load's feed-forward feels (BicycleView.road_sine; 0: as sensed each tick)"),
     Parameter("rolling_feedforward", "1", 0.0, 0.0, 2.0, "share of the crank torque that holds the rolling resistance at the desired speed (gear r c v_d, laws.load_torque) added to eq. 7 (0: the seed's eq. 7)"),
-    Parameter("stroke_feedforward_gain", "1", 0.0, 0.0, 2.0, "the stroke's shape (laws.stroke_learn): share of the crank-angle bin's torque surplus (gear r m times the acceleration above its mean over a stroke) taken off that bin's feed-forward at each pass (0: off, the seed's eq. 7)"),
-    Parameter("stroke_feedforward_limit", "N m", 0.0, 0.0, 500.0, "the stroke's shape: each bin's feed-forward within +- this"),
-    Parameter("stroke_bins", "count", 12.0, 2.0, 72.0, "the stroke's shape: bins over a half revolution of the crank (the two legs' strokes alike)"),
-    Parameter("stroke_filter", "s", 0.0, 0.0, 5.0, "the stroke's shape: time constant of the low-pass that gives the acceleration's mean over a stroke"),
-    Parameter("speed_stroke_mean", "1", 0.0, 0.0, 1.0, "1: eq. 7's proportional term reads the speed's mean over the crank's last half revolution (one leg's stroke) instead of the speed each tick, so it does not answer the ripple within a stroke (0: the seed's eq. 7)"),
     Parameter("hold_seat_pitch", "1", 0.0, 0.0, 1.0, "1: while riding, the limbs' targets hold the pelvis at its mounted pitch on the saddle (``_seat_pelvis``, as the stop does once the foot is down); 0: the pelvis pitches as the limbs let it (the man's: 56 deg forward at the top of a stroke)"),
     Parameter("ik_velocity_filter", "s", 0.0, 0.0, 0.5, "time constant of the low-pass on the limb targets' velocity that leads the servos (0: unfiltered)"),
     Parameter("speed_ramp", "m/s^2", 0.1, 0.1, 10.0, "eq. 7's desired speed moves to a newly commanded one at this rate (a start, a speed step)"),
@@ -376,10 +369,6 @@ class Bicycling(Behaviour):
         # upset a stop (3.2 m/s, gear 4.51) and a long turn at 7 m/s (docs/bicycle.md, the hill's speed law)
         self.load_law = bool(self.course.hill) and self.params["hill_grade"] <= self.params["max_hill_grade"]
         self.road_sine = self.bike.road_sine(ctx.data)     # the grade the rider feels (low-passed, grade_filter)
-        self.stroke_table = [0.0] * int(self.params["stroke_bins"])   # N m per crank-angle bin (stroke_feedforward_gain)
-        self.stroke_last = None              # (speed, crank) of the previous control step
-        self.mean_acceleration = 0.0         # m/s^2, low-passed over a stroke (stroke_filter)
-        self.stroke_speeds = collections.deque()   # (crank angle, speed) over the crank's last half revolution (speed_stroke_mean)
         self.crank_command = None            # coasting: the crank angle the legs hold (None: the pedals as they are)
         self.coasting = self.coasted = False
         self.stopping = self.course.stop        # braking to a stop (the stop course; a coast that got too slow)
@@ -481,10 +470,6 @@ class Bicycling(Behaviour):
                 self.speed_error_integral = speed_integral(self.speed_error_integral, state["speed"], self.desired_speed, dt,
                                                            c["speed_gain"], c["max_crank_torque"], uphill, ki,
                                                            c["speed_integral_limit"])
-            if c["stroke_feedforward_gain"]:
-                uphill += self._stroke_torque(state)
-            if c["speed_stroke_mean"]:
-                state = dict(state, speed=self._stroke_mean_speed(state))
             return crank_torque(state["speed"], self.desired_speed, c["speed_gain"], c["max_crank_torque"], uphill,
                                 self.speed_error_integral, ki)
         level = math.pi / 2 + math.pi * math.ceil((self.crank_command - math.pi / 2) / math.pi)   # the next level crank
@@ -500,30 +485,6 @@ class Bicycling(Behaviour):
                 self.rest_since = t
                 self.event(t, "at_rest")
         return 0.0
-
-    def _stroke_mean_speed(self, state) -> float:
-        """The speed's mean over the crank's last half revolution (speed_stroke_mean): the ripple within a
-        stroke (both legs' strokes alike) averages out of what eq. 7 reads."""
-        samples = self.stroke_speeds
-        samples.append((state["crank"], state["speed"]))
-        while len(samples) > 1 and abs(state["crank"] - samples[0][0]) > math.pi:
-            samples.popleft()
-        return sum(speed for _, speed in samples) / len(samples)
-
-    def _stroke_torque(self, state) -> float:
-        """The stroke's shape (stroke_feedforward_gain): a feed-forward per crank-angle bin over the half
-        revolution, learnt from the bicycle's acceleration above its mean over a stroke (the legs deliver
-        eq. 7's torque unevenly over the stroke: the speed ripples at twice the cadence), added to eq. 7."""
-        c, dt = self.params, self.ctx.control_dt
-        if self.stroke_last is not None:
-            speed, crank = self.stroke_last
-            acceleration = (state["speed"] - speed) / dt
-            self.mean_acceleration += dt / (c["stroke_filter"] + dt) * (acceleration - self.mean_acceleration)
-            surplus = c["gear"] * self.bike.wheel_radius * self.mass * (acceleration - self.mean_acceleration)
-            stroke_learn(self.stroke_table, crank, abs(state["crank"] - crank), surplus, c["stroke_feedforward_gain"],
-                         c["stroke_feedforward_limit"])
-        self.stroke_last = (state["speed"], state["crank"])
-        return self.stroke_table[stroke_bin(state["crank"], len(self.stroke_table))]
 
     @property
     def run_complete(self) -> bool:

@@ -94,22 +94,3 @@ def lean_ahead(speed: float, curvature: float, share: float) -> float:
     positive) at ``speed``, tan(lean) = v^2 kappa / g, times ``share``: asked for before the curve
     is reached, the bicycle leans into it instead of waiting for the heading error to turn it."""
     return -share * math.atan(speed * speed * curvature / GRAVITY)
-
-
-def stroke_bin(crank: float, bins: int) -> int:
-    """The bin (0 .. ``bins`` - 1) of a crank angle within its half revolution: the two legs' strokes
-    alike (the right arm at ``crank``, the left half a turn on)."""
-    return int((crank % math.pi) / (math.pi / bins)) % bins
-
-
-def stroke_learn(table: list, crank: float, advanced: float, surplus: float, gain: float, limit: float) -> None:
-    """One control step of the stroke's shape, learnt in place: the bin of ``crank`` takes ``gain`` times
-    ``surplus`` (N m at the crank: the torque by which the bicycle's acceleration exceeded its mean over
-    the stroke, gear r m (a - a_mean)) off, weighted by the share of the bin the crank ``advanced``
-    through (each pass moves a bin by gain times its mean surplus, whatever the cadence); the table is
-    kept zero-mean (it shapes the torque over the stroke, not its amount) and within +-``limit``."""
-    bins = len(table)
-    table[stroke_bin(crank, bins)] -= gain * (advanced / (math.pi / bins)) * surplus
-    mean = sum(table) / bins
-    for k in range(bins):
-        table[k] = min(max(table[k] - mean, -limit), limit)
