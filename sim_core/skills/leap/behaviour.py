@@ -183,7 +183,8 @@ class Leap(Sequence):
 
         def landing_settings():
             # the calibrated leap's own correction of the landing's foot servo delta, plus the user's
-            delta = min(max(p.get("foot_delta", 0.0) + cfg.get("foot_delta", 0.0), -0.3), 0.3)  # definition: the foot_delta range
+            knob = Leap.schema.by_name["foot_delta"]
+            delta = min(max(p.get("foot_delta", 0.0) + cfg.get("foot_delta", 0.0), knob.minimum), knob.maximum)
             landing = {k: cfg.get("landing_" + k, p.get("landing_" + k, Landing.schema.defaults()[k]))
                        for k in ("swing_arms", "arm_flexion", "foot_lead_time", "place_sideways", "knee_flexion",
                                  "right_time", "arm_pitch_gain", "arm_pitch")}
