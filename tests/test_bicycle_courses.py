@@ -67,13 +67,23 @@ def test_speed_steps_and_slow_start():
 
 
 @pytest.mark.parametrize("values, words", [
-    ({"course": "turn", "speed": 8.0, "turn_radius": 5.0}, "lean of"),
+    ({"course": "turn", "speed": 5.5, "turn_radius": 5.0}, "lean of"),
+    # the audit's seed 8 #17 and #16, seed 7 #29 and #24 (docs/bicycle.md, issue 30's checklist, ninth session)
+    ({"course": "turn", "speed": 4.27, "gear": 4.67, "turn_angle": -1.96, "turn_radius": 4.26}, "at most 15 deg"),
+    ({"course": "turn", "speed": 7.64, "gear": 3.33, "turn_angle": -0.36, "turn_radius": 66.37},
+     "at speed <= 6 m/s (asked: 7.64 m/s)"),
+    ({"course": "turn", "speed": 7.66, "gear": 2.5, "turn_angle": 3.02, "turn_radius": 53.01}, "at speed <= 6 m/s"),
+    ({"speed": 6.5, "path": [[0, 0], [30, 0], [60, 20]]}, "at speed <= 6 m/s (asked: 6.5 m/s)"),
+    ({"course": "hill", "speed": 6.36, "gear": 4.59, "hill_grade": 0.02}, "at speed <= 5.5 m/s (asked: 6.36 m/s)"),
     ({"course": "slalom", "speed": 8.0, "gate_spacing": 4.0, "gate_offset": 3.0}, "the slalom is ridden at speed"),
     ({"course": "slalom", "speed": 4.0, "gate_spacing": 8.0, "gate_offset": 1.0}, "gate_offset <= 0.65 m"),
     ({"course": "slalom", "speed": 4.0, "gate_spacing": 20.0, "gate_offset": 1.5}, "gate_offset <= 1.00 m"),
     ({"course": "slalom", "speed": 4.0, "gate_width": 1.0}, "gate_width >= 1.5 m"),
     ({"course": "slalom", "speed": 4.0, "turn_after": 4.0}, "turn_after >= 5 m"),
-    ({"course": "start", "speed": 7.05, "gear": 1.75, "start_speed": 4.41}, "ridden in gear >= 2 (asked: gear 1.75 at 7.05 m/s)"),
+    ({"course": "start", "speed": 7.05, "gear": 1.75, "start_speed": 4.41}, "ridden in gear >= 2.5 (asked: gear 1.75 at 7.05 m/s)"),
+    ({"course": "start", "speed": 7.1, "gear": 2.13, "start_speed": 5.39}, "ridden in gear >= 2.5 (asked: gear 2.13 at 7.1 m/s)"),
+    # the audit's seed 9 #29: a foot 3.0 cm off its pedal as the rider slowed (docs/bicycle.md, issue 30's checklist)
+    ({"course": "start", "speed": 5.93, "gear": 2.92, "start_speed": 7.56}, "<= 1.15 rev/s (asked: 1.24 rev/s at 7.56 m/s"),
     ({"course": "hill", "hill_grade": 0.5}, "hill_grade=0.5"),
     ({"speed": 3.8, "gear": 4.0, "heading": 1.0}, "cadence v / (2 pi r gear) >= 0.5 rev/s"),
     # the audit's seed 6 #13 (0.40 rev/s): it weaved from the start and fell 33 s in (docs/bicycle.md, issue 30's checklist)
@@ -99,8 +109,9 @@ def test_bad_courses_are_refused_in_one_line(values, words):
 
 
 def test_a_turn_within_the_lean_limit_is_accepted():
-    speed = float(RANDOM.uniform(SLOWEST, 8.0))
-    radius = speed ** 2 / (9.81 * math.tan(MAX_LEAN)) * 1.01
+    table = Bicycling.settings_schema.by_name
+    speed = float(RANDOM.uniform(SLOWEST, table["max_turn_speed"].default))
+    radius = speed ** 2 / (9.81 * math.tan(min(MAX_LEAN, table["max_turn_lean"].default))) * 1.01
     assert course_for(params(course="turn", speed=speed, turn_radius=max(radius, 3.0))).path is not None
 
 

@@ -20,8 +20,9 @@ Courses (the ``course`` parameter; a ``path`` given replaces the course's path):
 
 A course that asks the bicycle to turn harder than ``MAX_LEAN`` of lean at its speed is refused
 before anything runs, naming the limit; so is a request outside the limits measured by the random
-audit of the panel (the table's min_speed, min_gear, min_cadence, max_cadence, max_hill_grade,
-max_hill_grade_gear and the steep_hill_ limits, a new heading's max_heading_turn_speed,
+audit of the panel (the table's min_speed, min_gear, min_cadence, min_fast_gear, max_cadence,
+max_hill_grade, max_hill_grade_gear, max_hill_speed and the steep_hill_ limits, a slowing start's
+max_slowing_cadence, a turn's max_turn_speed and max_turn_lean, a new heading's max_heading_turn_speed,
 min_heading_turn_gear and min_heading_turn_cadence, and the slalom's region: min_slalom_speed,
 max_slalom_speed, max_slalom_acceleration, max_slalom_offset, min_slalom_gate_width, min_slalom_lead).
 """
@@ -84,7 +85,8 @@ def course_for(p: dict) -> Course:
     path, gates, hill, start_speed = None, np.zeros((0, 2)), (), p["speed"]
     if name == "turn":
         path = turn_path(p["turn_angle"], p["turn_after"], p["turn_radius"], RUN_OUT)
-        _check_turn(p["speed"], p["turn_radius"], "turn_radius", p["max_turn_lean"], p["min_turn_radius"])
+        _check_turn(p["speed"], p["turn_radius"], "turn_radius", p["max_turn_lean"], p["min_turn_radius"],
+                    p["max_turn_speed"])
     elif name == "slalom":
         _check_slalom(p)
         path, gates = slalom(p["gate_count"], p["gate_spacing"], p["gate_offset"], p["turn_after"])
@@ -113,7 +115,7 @@ def course_for(p: dict) -> Course:
         radius, where = tightest_radius(np.vstack([[-lookahead, 0.0], path]), lookahead)
         if math.isfinite(radius):
             _check_turn(max(speed for _, speed in speeds), radius, f"path, {max(where - lookahead, 0.0):.1f} m along it",
-                        p["max_turn_lean"], p["min_turn_radius"])
+                        p["max_turn_lean"], p["min_turn_radius"], p["max_turn_speed"])
     _check_pedalling(p, [speed for _, speed in speeds], start_speed)
     fastest = max(speed for _, speed in speeds)
     if path is None and p["heading"] != 0.0:
@@ -173,8 +175,9 @@ def _check_pedalling(p: dict, speeds: list[float], start_speed: float) -> None:
     if fastest >= p["fast_speed"] and p["gear"] < p["min_fast_gear"]:
         raise ParameterError(f"at speed >= {p['fast_speed']:g} m/s the bicycle is ridden in gear >= {p['min_fast_gear']:g} "
                              f"(asked: gear {p['gear']:g} at {fastest:g} m/s): in lower gears it was measured to weave (roll "
-                             f"to 18 deg, the heading 11 deg off) and a start to 7.05 m/s in gear 1.75 fell; a gear >= "
-                             f"{p['min_fast_gear']:g} or a speed < {p['fast_speed']:g} m/s would do")
+                             f"to 18 deg, the heading 11 deg off; from 5.39 to 7.1 m/s in gear 2.13 to 20.5 deg) and a start to "
+                             f"7.05 m/s in gear 1.75 fell; a gear >= {p['min_fast_gear']:g} or a speed < {p['fast_speed']:g} m/s "
+                             f"would do")
     slow_cadence = slowest / (2 * math.pi * wheel_radius(p) * p["gear"])
     if slow_cadence < p["min_cadence"]:
         raise ParameterError(f"the cadence v / (2 pi r gear) is ridden from {p['min_cadence']:g} rev/s (asked: {slow_cadence:.2f} "
@@ -182,6 +185,13 @@ def _check_pedalling(p: dict, speeds: list[float], start_speed: float) -> None:
                              f"set the bicycle weaving (roll to 19 deg, the heading 71 deg off) or to fall: a gear <= "
                              f"{slowest / (2 * math.pi * wheel_radius(p) * p['min_cadence']):.2f} or a speed >= "
                              f"{2 * math.pi * wheel_radius(p) * p['gear'] * p['min_cadence']:.2f} m/s would do")
+    cadence = start_speed / (2 * math.pi * wheel_radius(p) * p["gear"])
+    if start_speed > max(speeds) and cadence > p["max_slowing_cadence"]:
+        raise ParameterError(f"a start slowing from its rolling start is ridden from a cadence v / (2 pi r gear) <= "
+                             f"{p['max_slowing_cadence']:g} rev/s (asked: {cadence:.2f} rev/s at {start_speed:g} m/s in gear "
+                             f"{p['gear']:g}); faster, the feet were measured to leave the pedals by 3 cm or more: a gear >= "
+                             f"{start_speed / (2 * math.pi * wheel_radius(p) * p['max_slowing_cadence']):.2f} or a start_speed "
+                             f"<= {2 * math.pi * wheel_radius(p) * p['gear'] * p['max_slowing_cadence']:.2f} m/s would do")
     cadence = fastest / (2 * math.pi * wheel_radius(p) * p["gear"])
     if cadence > p["max_cadence"]:
         raise ParameterError(f"the cadence v / (2 pi r gear) is ridden up to {p['max_cadence']:g} rev/s (asked: {cadence:.2f} "
@@ -212,6 +222,10 @@ def _check_hill(p: dict, speeds: list[float]) -> None:
                                  f"elsewhere the climb was measured to lose more than 15 % of the speed or to fall, and a climb "
                                  f"begun while the rolling start settles lost 16 % (docs/bicycle.md, hills)")
         return
+    if max(speeds) > p["max_hill_speed"]:
+        raise ParameterError(f"a hill up to hill_grade {p['max_hill_grade']:g} is ridden at speed <= {p['max_hill_speed']:g} m/s "
+                             f"(asked: {max(speeds):g} m/s); faster, the climb was measured to lose more than 5 % of the "
+                             f"speed per crank revolution")
     most = p["max_hill_grade_gear"]
     if grade * gear > most:
         raise ParameterError(f"the hill is ridden with hill_grade x gear <= {most:g} (asked: {grade:g} x {gear:g} = "
@@ -307,12 +321,16 @@ def _check_slalom(p: dict) -> None:
                              f"{most:g} m/s^2; a wider gate_spacing or a lower speed would do")
 
 
-def _check_turn(speed: float, radius: float, names: str, most: float, tightest: float) -> None:
+def _check_turn(speed: float, radius: float, names: str, most: float, tightest: float, fastest: float) -> None:
     """A turn asking a steady lean (tan = v^2 / (g r)) of more than MAX_LEAN, or than the rider's table's
     ``most`` (max_turn_lean: the woman fell on a tighter turn at 3 m/s, the imaginary cyclist leaned past
     20 deg; docs/bicycle.md, riders other than the man), is refused naming the speed or radius that would do;
     so is one tighter than the table's ``tightest`` radius at any speed (min_turn_radius: the child fell on
-    3.0-3.43 m turns at 2-3 m/s whatever the lean)."""
+    3.0-3.43 m turns at 2-3 m/s whatever the lean), and one faster than its ``fastest`` (max_turn_speed: the man
+    fell after turns at 6.5-7.64 m/s; docs/bicycle.md, issue 30's checklist)."""
+    if speed > fastest:
+        raise ParameterError(f"the course turns (from {names}) at speed <= {fastest:g} m/s (asked: {speed:g} m/s); "
+                             f"faster, the rider was measured to fall or to lean past 20 deg after the turn")
     if radius < tightest:
         raise ParameterError(f"the course turns on a radius of {radius:.2f} m (from {names}); this rider's turns "
                              f"are ridden on a radius of at least {tightest:g} m (allowed range of turn_radius "
