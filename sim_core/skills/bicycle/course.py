@@ -132,10 +132,17 @@ def wheel_radius(p: dict) -> float:
     return sized_wheel_radius(p["bicycle_size"])
 
 
+def wheel_circumference(p: dict) -> float:
+    """The distance (m) a request's bicycle rolls per wheel turn, 2 pi r: the cadence at speed v in gear g
+    is v / (2 pi r g) rev/s."""
+    return 2 * math.pi * wheel_radius(p)
+
+
 def _check_heading_turn(p: dict, fastest: float, slowest: float) -> None:
     """A commanded heading (no path) is turned to (behaviour._turn_to_heading) at the speeds, gears
     and cadences where the turn was measured to settle within 5 deg without a fall (docs/bicycle.md,
     random requests over the panel; the heading step); the turn course rides turns elsewhere."""
+    rolled = wheel_circumference(p)
     if fastest > p["max_heading_turn_speed"]:
         raise ParameterError(f"a new heading is turned to at speed <= {p['max_heading_turn_speed']:g} m/s (asked: heading "
                              f"{p['heading']:g} rad at {fastest:g} m/s); faster, the turn was measured to fall: the turn "
@@ -144,12 +151,12 @@ def _check_heading_turn(p: dict, fastest: float, slowest: float) -> None:
         raise ParameterError(f"a new heading is turned to at gear >= {p['min_heading_turn_gear']:g} (asked: heading "
                              f"{p['heading']:g} rad at gear {p['gear']:g}); in lower gears the heading was measured to stay "
                              f"5-10 deg off or to weave: the turn course rides a turn in any gear offered")
-    cadence = slowest / (2 * math.pi * wheel_radius(p) * p["gear"])
+    cadence = slowest / (rolled * p["gear"])
     if cadence < p["min_heading_turn_cadence"]:
         raise ParameterError(f"a new heading is turned to at a cadence v / (2 pi r gear) >= {p['min_heading_turn_cadence']:g} "
                              f"rev/s (asked: heading {p['heading']:g} rad at {slowest:g} m/s in gear {p['gear']:g}, "
                              f"{cadence:.2f} rev/s); slower, the pedal strokes rocked the turning bicycle over: a gear <= "
-                             f"{slowest / (2 * math.pi * wheel_radius(p) * p['min_heading_turn_cadence']):.2f} would do")
+                             f"{slowest / (rolled * p['min_heading_turn_cadence']):.2f} would do")
 
 
 def _check_pedalling(p: dict, speeds: list[float], start_speed: float) -> None:
@@ -158,6 +165,7 @@ def _check_pedalling(p: dict, speeds: list[float], start_speed: float) -> None:
     asks a cadence v / (2 pi r gear) of at most its ``max_cadence``; every commanded speed (not the rolling
     start's) asks at least its ``min_cadence`` (issue 30, eighth session): all measured (docs/bicycle.md, random
     requests over the panel; the fast gears: issue 30's checklist, seventh session)."""
+    rolled = wheel_circumference(p)       # m per wheel turn; a cadence v / (rolled gear)
     slowest = min(speeds)
     if slowest < p["min_speed"]:
         raise ParameterError(f"the bicycle is ridden at speed >= {p['min_speed']:g} m/s (asked: {slowest:g} m/s): "
@@ -178,27 +186,27 @@ def _check_pedalling(p: dict, speeds: list[float], start_speed: float) -> None:
                              f"to 18 deg, the heading 11 deg off; from 5.39 to 7.1 m/s in gear 2.13 to 20.5 deg) and a start to "
                              f"7.05 m/s in gear 1.75 fell; a gear >= {p['min_fast_gear']:g} or a speed < {p['fast_speed']:g} m/s "
                              f"would do")
-    slow_cadence = slowest / (2 * math.pi * wheel_radius(p) * p["gear"])
+    slow_cadence = slowest / (rolled * p["gear"])
     if slow_cadence < p["min_cadence"]:
         raise ParameterError(f"the cadence v / (2 pi r gear) is ridden from {p['min_cadence']:g} rev/s (asked: {slow_cadence:.2f} "
                              f"rev/s at {slowest:g} m/s in gear {p['gear']:g}); slower, the pedal strokes were measured to "
                              f"set the bicycle weaving (roll to 19 deg, the heading 71 deg off) or to fall: a gear <= "
-                             f"{slowest / (2 * math.pi * wheel_radius(p) * p['min_cadence']):.2f} or a speed >= "
-                             f"{2 * math.pi * wheel_radius(p) * p['gear'] * p['min_cadence']:.2f} m/s would do")
-    cadence = start_speed / (2 * math.pi * wheel_radius(p) * p["gear"])
+                             f"{slowest / (rolled * p['min_cadence']):.2f} or a speed >= "
+                             f"{rolled * p['gear'] * p['min_cadence']:.2f} m/s would do")
+    cadence = start_speed / (rolled * p["gear"])
     if start_speed > max(speeds) and cadence > p["max_slowing_cadence"]:
         raise ParameterError(f"a start slowing from its rolling start is ridden from a cadence v / (2 pi r gear) <= "
                              f"{p['max_slowing_cadence']:g} rev/s (asked: {cadence:.2f} rev/s at {start_speed:g} m/s in gear "
                              f"{p['gear']:g}); faster, the feet were measured to leave the pedals by 3 cm or more: a gear >= "
-                             f"{start_speed / (2 * math.pi * wheel_radius(p) * p['max_slowing_cadence']):.2f} or a start_speed "
-                             f"<= {2 * math.pi * wheel_radius(p) * p['gear'] * p['max_slowing_cadence']:.2f} m/s would do")
-    cadence = fastest / (2 * math.pi * wheel_radius(p) * p["gear"])
+                             f"{start_speed / (rolled * p['max_slowing_cadence']):.2f} or a start_speed "
+                             f"<= {rolled * p['gear'] * p['max_slowing_cadence']:.2f} m/s would do")
+    cadence = fastest / (rolled * p["gear"])
     if cadence > p["max_cadence"]:
         raise ParameterError(f"the cadence v / (2 pi r gear) is ridden up to {p['max_cadence']:g} rev/s (asked: {cadence:.2f} "
                              f"rev/s at {fastest:g} m/s in gear {p['gear']:g}); faster, the legs were measured to lose more "
                              f"than 5 % of the speed: a gear >= "
-                             f"{fastest / (2 * math.pi * wheel_radius(p) * p['max_cadence']):.2f} or a speed <= "
-                             f"{2 * math.pi * wheel_radius(p) * p['gear'] * p['max_cadence']:.2f} m/s would do")
+                             f"{fastest / (rolled * p['max_cadence']):.2f} or a speed <= "
+                             f"{rolled * p['gear'] * p['max_cadence']:.2f} m/s would do")
 
 
 def _check_hill(p: dict, speeds: list[float]) -> None:
