@@ -126,11 +126,11 @@ def test_a_curve_object_is_the_bicycle_path(empty_scene):
     context = empty_scene
     bpy.ops.sim_athletics.add_character(character="man")
     arm = context.view_layer.objects.active
-    curve = poly_curve(context, "road", [(0.0, 0.0, 0.0), (0.0, -20.0, 0.0), (10.0, -30.0, 0.0)])  # 20 m ahead (-Y), then ahead-left
+    curve = poly_curve(context, "road", [(0.0, 0.0, 0.0), (0.0, -20.0, 0.0), (10.0, -40.0, 0.0)])  # 20 m ahead (-Y), then a bend left a turn of 15 deg of lean allows
     context.scene.sim_athletics.params_bicycle.path = curve
     s = operators.run_settings(context, behaviour="bicycle")
     params = operators.with_scene_inputs(context, arm, s)
-    assert np.allclose(params["path"], [[0.0, 0.0], [20.0, 0.0], [30.0, 10.0]], atol=1e-6)
+    assert np.allclose(params["path"], [[0.0, 0.0], [20.0, 0.0], [40.0, 10.0]], atol=1e-6)
     assert bpy.ops.sim_athletics.simulate_bake(behaviour="bicycle", duration=0.2) == {"FINISHED"}
     assert json.loads(arm[rig.RESULT_KEY])["params"]["path"] == params["path"]
     assert "SimAthletics bicycle_frame" in bpy.data.objects
