@@ -318,6 +318,8 @@ def test_the_landings_arm_feedback_turns_the_trunk_back_on_a_commanded_flight():
     alone (measured: 66 / 70 deg; docs/jump_to_target.md, "twelfth session"). A stored plan names no
     feedback, so its landing runs as before."""
     import math
+    import mujoco
+    from sim_core.control.measure import pitch_of
     from sim_core.skills.jump_to_target.behaviour import ARM_FEEDBACK, landing_measures, landing_settings, leap_params, scene_for
     plan = _stored("man", dict(target_x=1.3, target_y=0.0, target_z=0.0, obstacle_height=0.0,
                                air_time=GROUND_AIR_TIME, windup_time=WINDUP_TIME))
@@ -332,8 +334,9 @@ def test_the_landings_arm_feedback_turns_the_trunk_back_on_a_commanded_flight():
                               duration=2.6, world=scene_for("man", target)))
         measured = landing_measures(traj)
         touchdown = int(np.searchsorted(traj.arrays["time"], traj.meta["metrics"]["liftoff_time"] + measured["air_time"]))
-        w, qx, qy, qz = traj.arrays["qpos"][touchdown, 3:7]
-        pitches.append(math.degrees(math.atan2(2 * (qx * qz + w * qy), 1 - 2 * (qx * qx + qy * qy))))
+        pelvis = np.zeros(9)
+        mujoco.mju_quat2Mat(pelvis, traj.arrays["qpos"][touchdown, 3:7])
+        pitches.append(math.degrees(pitch_of(pelvis, np.array([0.0, 0.0, 1.0]))))
         print(f"arm feedback gain {gain}: trunk pitched {pitches[-1]:.0f} deg at touchdown, landed "
               f"{measured['landing'][0]:.3f} m after {measured['air_time']:.3f} s ({measured['outcome']})")
     assert pitches[1] < pitches[0] - 2.0
