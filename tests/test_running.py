@@ -12,7 +12,7 @@ import pytest
 
 from sim_core.character.model import compile_model, set_standing_pose
 from sim_core.character.spec import load_character
-from sim_core.skills.running.behaviour import (STEER_LIMITS, STEER_MAX_ACCELERATION, STEER_MAX_SPEED, Running, SpeedTable,
+from sim_core.skills.running.behaviour import (Running, SpeedTable,
                                                offered_speeds)
 from sim_core.skills.running.leg import RunnerLeg
 from sim_core.control.path import PathFollower, path_deviation, turn_path
@@ -166,12 +166,18 @@ def test_steering_along_a_path(course, params, duration):
         assert y.max() > 1.8 * params["turn_radius"] and y.min() < -1.8 * params["turn_radius"]
 
 
-def steering_draws(seed: int, count: int, fastest: float = STEER_MAX_SPEED, limit: float = STEER_MAX_ACCELERATION
-                   ) -> list[tuple[str, dict, float]]:
-    """Requests drawn inside the region where steering is offered (docs/running.md): a speed of
-    2.5-3.5 m/s, a radius from the tightest offered at that speed to 1.6 times it, and by turns a
+def steering_limits(character: str) -> tuple[float, float]:
+    """The runner's table's steering limits: (fastest speed, largest lateral acceleration)."""
+    steering = SpeedTable.load(character).steering
+    return steering["max_speed"], steering["max_lateral_acceleration"]
+
+
+def steering_draws(seed: int, count: int, character: str = "man") -> list[tuple[str, dict, float]]:
+    """Requests drawn inside the region where the runner's steering is offered (its table's limits,
+    docs/running.md): a speed from 2.5 m/s to its fastest, a radius from the tightest offered at that speed to 1.6 times it, and by turns a
     turn by a random angle, a figure eight, a circle and a random facing; the run's duration takes
     it through the curve (1.35 loops of an eight or a circle, at most 60 s)."""
+    fastest, limit = steering_limits(character)
     rng = np.random.default_rng(seed)
     draws = []
     for k in range(count):
@@ -474,7 +480,7 @@ def test_a_scaled_character_runs_100_s_at_a_speed_of_its_table(character):
 
 
 @pytest.mark.parametrize("character, values, words", [
-    ("woman", {"course": "turn", "turn_radius": 15.0}, ["radius of 14.9", f"at most {STEER_LIMITS['woman'][1]:g} m/s^2", "(the woman)"]),
+    ("woman", {"course": "turn", "turn_radius": 15.0}, ["radius of 14.9", f"at most {steering_limits('woman')[1]:g} m/s^2", "(the woman)"]),
     ("woman", {"facing": 1.0, "turn_radius": 10.0}, ["radius of 9.98 m", "radius >= 22.5 m", "(the woman)"]),
     ("woman", {"course": "circle", "speed": 3.5, "turn_radius": 50.0}, ["by the woman at speed <= 3.35 m/s", "asked: 3.5 m/s"]),
     ("child", {"course": "circle", "speed": 2.5, "turn_radius": 5.0}, ["at most 0.9 m/s^2", "(the child)"]),
@@ -490,8 +496,8 @@ def test_a_turn_beyond_the_runners_limit_is_refused_in_one_line(character, value
 
 
 @pytest.mark.parametrize("character, kind, params, duration",
-                         [("woman", *draw) for draw in steering_draws(28, 2, *STEER_LIMITS["woman"])]
-                         + [("child", *draw) for draw in steering_draws(28, 1, *STEER_LIMITS["child"])])
+                         [("woman", *draw) for draw in steering_draws(28, 2, "woman")]
+                         + [("child", *draw) for draw in steering_draws(28, 1, "child")])
 def test_a_scaled_runner_runs_a_random_curve_inside_its_limit(character, kind, params, duration):
     """Curves drawn inside the woman's and the child's offered regions (a fixed seed; runs cut to 25 s:
     the lead-in, where the woman used to fall at 4.1 s, and the curve's entry): no fall, on the path
@@ -535,3 +541,19 @@ def test_the_refused_speeds_are_data_of_the_runners_table():
         with pytest.raises(ParameterError) as err:
             Running.schema.validate({"table": dict(man.to_table(), refused_speeds=bad)})
         assert "refused_speeds" in str(err.value) and "\n" not in str(err.value)
+
+
+def test_the_steering_limits_are_data_of_the_runners_table():
+    """Where each runner turns (its fastest speed and lateral acceleration, docs/running.md) is its table's
+    ``steering``, carried by ``to_table`` and ``with_row``; a runner whose table has none (the imaginary
+    runner) and a character without a table of its own runs straight only; a malformed entry is refused in
+    one line."""
+    assert {n: steering_limits(n) for n in ("man", "woman", "child")} == {
+        "man": (3.5, 0.625), "woman": (3.35, 0.4), "child": (2.5, 0.9)}
+    assert SpeedTable.load("imaginary_runner").steering is None
+    man = SpeedTable.load("man")
+    assert SpeedTable.from_table(man.with_row(3.85, {}).to_table()).steering == man.steering
+    for bad in ({"max_speed": 3.5}, {"max_speed": -1, "max_lateral_acceleration": 0.5}, [3.5, 0.6]):
+        with pytest.raises(ParameterError) as err:
+            Running.schema.validate({"table": dict(man.to_table(), steering=bad)})
+        assert "steering" in str(err.value) and "\n" not in str(err.value)

@@ -177,8 +177,7 @@ ALLOWED = {
     "control.leap": {n: "criterion" for n in ("AIRBORNE_HEIGHT", "TOUCHDOWN_HEIGHT", "LANDING_SLIDE_LIMIT",
                                               "LANDING_SKID_LIMIT", "UNCOVERED_STEP")} | {"UP": "definition"},
     "skills.running.behaviour": {n: "definition" for n in ("FLIGHT", "LOADING", "HEEL", "HEEL_TOE", "TOE", "UNLOADING", "START", "TUNED")}
-               | {"SCHEDULED": "search"} | {n: "criterion" for n in ("STEER_MAX_SPEED", "STEER_MAX_ACCELERATION", "STEER_LIMITS",
-                                                                     "MORPH_SPEEDS")},
+               | {"SCHEDULED": "search"} | {"MORPH_SPEEDS": "criterion"},
     "control.path": {**{n: "criterion" for n in ("MIN_SEGMENT", "MIN_LENGTH", "MAX_POINTS", "MIN_TURN_RADIUS")},
                      "CURVATURE_CHORD": "definition", "RADIUS_SAMPLE": "definition"}
                | {n: "definition" for n in ("TURN_RUN_OUT", "FIGURE_EIGHT_LAPS", "CIRCLE_LAPS")},

@@ -51,7 +51,7 @@ from ...control.path import (MAX_POINTS, PathFollower, circle_path, figure_eight
                              validate_path)
 from ...control.servo import hermite_scalar
 from ...schema import Choice, Parameter, Points, Schema
-from ...tuned import TableType, load, register as register_table, require_calibrated
+from ...tuned import TableType, characters_of, load, register as register_table, require_calibrated
 from ...tuned.constants import constant
 from ...tuned.settings import SkillSchema, with_defaults
 from ...tuned.store import check_rows
@@ -82,17 +82,6 @@ STATE_NAMES = ("flight", "loading", "heel", "heel_toe", "toe", "unloading", "sta
 TUNED = -1.0                # the value of a tuned parameter that means "as tuned for the running speed"
 
 
-# criterion: where the man was measured to steer (docs/running.md, "Where steering is offered": a grid of
-# circles and figure eights, radii 6-50 m, 2.5-5 m/s): at 3.75 m/s and faster every curve fell, even a
-# circle of radius 50 m at 5 m/s; up to 3.5 m/s every curve asking at most 0.625 m/s^2 (v^2 / r) was run
-STEER_MAX_SPEED = 3.5
-STEER_MAX_ACCELERATION = 0.625
-# criterion: (speed m/s, lateral acceleration m/s^2) up to which each runner was measured to turn (the
-# woman: random curves at 2.5-3.5 m/s; near 3.5 m/s curves of 0.29-0.36 m/s^2 fell at their entry,
-# none at 3.36 m/s or slower asking at most 0.41 did: docs/running.md, the woman; the child at her one speed:
-# curves up to 0.96 m/s^2 ran, from 1.10 m/s^2 most fell: docs/running.md, the child)
-STEER_LIMITS = {"man": (STEER_MAX_SPEED, STEER_MAX_ACCELERATION), "woman": (3.35, 0.4), "child": (2.5, 0.9)}
-STEERED_RUNNERS = tuple(STEER_LIMITS)      # criterion: the runners measured to turn, follow a path and face another way
 MORPH_TARGETS = ("none", "woman")   # criterion: the characters of the man's skeleton with a running table
 MORPH_FROM = ("man",)               # criterion: the runners measured morphing (docs/bodies.md, the morph)
 MORPH_SPEEDS = (2.5, 3.5)           # criterion: m/s, the speeds measured morphing without a fall (docs/bodies.md, the
@@ -110,10 +99,11 @@ class SpeedTable:
     forward speed"; this is where such schedules live, as data. ``refused``: speed ranges inside the
     table that a run is refused (open intervals (low, high), the table's ``refused_speeds``: where
     100 s runs from a stand fell with every row measured between, docs/running.md), next to the rows
-    they qualify."""
+    they qualify; ``steering``: the fastest speed and the largest lateral acceleration (v^2 / r) up to
+    which the runner was measured to turn (the table's ``steering``; None: it runs straight ahead only)."""
 
     def __init__(self, speeds: list[float], values: dict[str, list[float] | float], constants: dict | None = None,
-                 refused=None):
+                 refused=None, steering: dict | None = None):
         self.speeds = [float(v) for v in speeds]
         self.values = {k: ([float(x) for x in v] if isinstance(v, (list, tuple)) else [float(v)] * len(self.speeds))
                        for k, v in values.items()}
@@ -121,37 +111,43 @@ class SpeedTable:
         # woman's gains mass-scaled from the man's by Fig. 6 (docs/running.md, "The woman")
         self.constants = {k: float(v) for k, v in (constants or {}).items()}
         self.refused = [(float(low), float(high)) for low, high in _refused_ranges(refused, self.speeds)]
+        self.steering = _steering_limits(steering)
 
     @classmethod
     def load(cls, character: str = "man") -> "SpeedTable":
         """The character's running table (the man's if the character has none), its columns
         completed from the design values of running_any (which is the table when neither exists);
-        the constants of the character's own table, if it has some."""
+        the constants and the steering limits of the character's own table, if it has some."""
         fallback = load("running", "any")
         for name in (character, "man"):
             data = load("running", name)
             if data is not None:
                 return cls(data.get("speeds", fallback["speeds"]), {**fallback["parameters"], **data.get("parameters", {})},
-                           data.get("constants") if name == character else None, data.get("refused_speeds"))
+                           data.get("constants") if name == character else None, data.get("refused_speeds"),
+                           data.get("steering") if name == character else None)
         return cls(fallback["speeds"], fallback["parameters"])
 
     @classmethod
     def from_table(cls, table: dict) -> "SpeedTable":
         """A table as ``to_table`` gives it (a run's ``table`` parameter)."""
-        return cls(table["speeds"], table["parameters"], table.get("constants"), table.get("refused_speeds"))
+        return cls(table["speeds"], table["parameters"], table.get("constants"), table.get("refused_speeds"),
+                   table.get("steering"))
 
     def to_table(self) -> dict:
         """The table's speeds and columns (and its constants, if any) as a running table stores them
-        (and a tuner passes a candidate to a run: the ``table`` parameter), with its refused speed ranges."""
-        table = {"speeds": list(self.speeds), **self.refused_entry(),
+        (and a tuner passes a candidate to a run: the ``table`` parameter), with its refused speed ranges
+        and steering limits."""
+        table = {"speeds": list(self.speeds), **self.limits_entry(),
                  "parameters": {n: list(v) for n, v in self.values.items()}}
         if self.constants:
             table["constants"] = dict(self.constants)
         return table
 
-    def refused_entry(self) -> dict:
-        """The table file's ``refused_speeds`` entry ({} when none): what a writer of the table carries."""
-        return {"refused_speeds": [[low, high] for low, high in self.refused]} if self.refused else {}
+    def limits_entry(self) -> dict:
+        """The table file's ``refused_speeds`` and ``steering`` entries (those it has): what a writer of
+        the table carries."""
+        return {**({"refused_speeds": [[low, high] for low, high in self.refused]} if self.refused else {}),
+                **({"steering": dict(self.steering)} if self.steering else {})}
 
     def offered(self) -> list[tuple[float, float]]:
         """The speed ranges a run is offered: the table's, less its refused ranges."""
@@ -174,7 +170,8 @@ class SpeedTable:
             if v in self.speeds:                   # a stored row's value as it is (interpolating at a
                 return self.values[n][self.speeds.index(v)]     # knot could change it in the last bit)
             return self.at(n, v)
-        return SpeedTable(speeds, {n: [value(n, v) for v in speeds] for n in self.values}, self.constants, self.refused)
+        return SpeedTable(speeds, {n: [value(n, v) for v in speeds] for n in self.values}, self.constants, self.refused,
+                          self.steering)
 
     def at(self, name: str, speed: float) -> float:
         """A column's value at the speed: piecewise linear between the rows, held beyond the ends."""
@@ -186,6 +183,20 @@ class SpeedTable:
                 f = (speed - xs[k - 1]) / (xs[k] - xs[k - 1])
                 return ys[k - 1] + f * (ys[k] - ys[k - 1])
         return ys[-1]
+
+
+def _steering_limits(steering) -> dict | None:
+    """A table's ``steering`` checked: ``max_speed`` (m/s) and ``max_lateral_acceleration`` (m/s^2),
+    both positive (and a ``note`` saying where they were measured)."""
+    if steering is None:
+        return None
+    ok = isinstance(steering, dict) and all(
+        isinstance(steering.get(k), (int, float)) and math.isfinite(steering[k]) and steering[k] > 0
+        for k in ("max_speed", "max_lateral_acceleration"))
+    if not ok:
+        raise ParameterError(f"steering={str(steering)[:60]} must give max_speed (m/s) and max_lateral_acceleration "
+                             f"(m/s^2), both > 0")
+    return dict(steering)
 
 
 def _refused_ranges(refused, speeds: list[float]) -> list:
@@ -301,6 +312,7 @@ SETTING_RANGES = Schema(
 def _running_rows(body: dict):
     speeds = body.get("speeds", [])
     _refused_ranges(body.get("refused_speeds"), speeds)      # checked with the rows: on load, save and as a run's table
+    _steering_limits(body.get("steering"))
     columns = body.get("parameters", {})
     for k, speed in enumerate(speeds):
         yield f"row {speed:g} m/s", {n: (v[k] if isinstance(v, list) else v) for n, v in columns.items()}
@@ -429,11 +441,12 @@ class Running(Behaviour):
                                      f"speed is {allowed} m/s (the speeds of the {name}'s running table"
                                      f"{', less those where 100 s runs fell' if len(ranges) > 1 else ''})")
             path = path_for(self.params)
-            if path is not None and name in STEERED_RUNNERS:
-                check_steering(speed, path, self.params["lookahead"], name)
-            if path is not None and name not in STEERED_RUNNERS:
+            if path is not None and table.steering is not None:
+                check_steering(speed, path, self.params["lookahead"], name, table.steering)
+            if path is not None and table.steering is None:
+                steered = [n for n in characters_of("running") if SpeedTable.load(n).steering is not None]
                 raise ParameterError(f"the {name} runs only straight ahead (course=straight, facing=0, no path): turning "
-                                     f"is calibrated for the {' and the '.join(STEERED_RUNNERS)} only (docs/running.md, "
+                                     f"is calibrated for the {' and the '.join(steered)} only (docs/running.md, "
                                      f"where steering is offered)")
         target = self.morph_target(self.params)
         if target is not None:
@@ -1026,16 +1039,16 @@ class Running(Behaviour):
         targets[ji["mt"]] = 0.0
 
 
-def check_steering(speed: float, path: np.ndarray, lookahead: float, name: str = "man") -> None:
+def check_steering(speed: float, path: np.ndarray, lookahead: float, name: str, steering: dict) -> None:
     """A run along ``path`` (in the runner's frame: it starts at the origin facing +X) is offered
-    where the man was measured to steer: a path with a bend (the turn from +X onto the path's first
-    direction included) at most the runner's STEER_LIMITS speed, its tightest bend (at the look-ahead's
-    scale, as pure pursuit cuts it) asking at most its STEER_LIMITS lateral acceleration; else
-    refused, naming what would do."""
+    where the runner was measured to steer (``steering``, its table's limits): a path with a bend (the
+    turn from +X onto the path's first direction included) at most its ``max_speed``, its tightest
+    bend (at the look-ahead's scale, as pure pursuit cuts it) asking at most its
+    ``max_lateral_acceleration``; else refused, naming what would do."""
     radius, where = tightest_radius(np.vstack([[-lookahead, 0.0], path]), lookahead)
     if not math.isfinite(radius):
         return                                              # a straight line along the runner's heading
-    fastest, limit = STEER_LIMITS[name]
+    fastest, limit = steering["max_speed"], steering["max_lateral_acceleration"]
     if speed > fastest:
         raise ParameterError(f"a course, a path or a facing other than 0 is run by the {name} at speed <= {fastest:g} m/s "
                              f"(asked: {speed:g} m/s): faster, curves measured fell"

@@ -480,7 +480,7 @@ def main(argv=None) -> int:
     values = {n: list(table.values[n]) for n in COLUMNS}
     elapsed = time.monotonic() - started
     path = tuned.save("running", name, {
-        "speeds": speeds, **table.refused_entry(), "parameters": values,
+        "speeds": speeds, **table.limits_entry(), "parameters": values,
         **({"constants": table.constants} if table.constants else {}),
         **({"note": stored["note"]} if "note" in stored else {}),
         "evaluation": {"weights": {"fall": W_FALL, "speed": W_SPEED, "speed_beyond_band": W_BAND,
