@@ -134,28 +134,28 @@ def box_draw(rng, character: str) -> tuple:
 
 
 def draw_jump(rng, character: str) -> tuple:
-    """A jump target uniform in the part of issue 29's box that the character is offered (region.offered:
-    outside it a request is refused before simulating), drawn again until it is; the whole box when
-    the character's jumps are not measured."""
-    from .skills.jump_to_target.region import model, offered
+    """A jump target uniform in the part of issue 29's box that the character is offered (region.in_region:
+    its measured jumps' region and its commanded take-off's; outside them a request is refused before
+    simulating), drawn again until it is; the whole box when the character's jumps are not measured."""
+    from .skills.jump_to_target.region import in_region, model
     if model(character) is None:
         return box_draw(rng, character)
     for _ in range(REGION_DRAWS):
         values = box_draw(rng, character)
-        if offered(character, values[:2], values[2]):
+        if in_region(character, values[:2], values[2]):
             return values
     raise ParameterError(f"no jump target of the {character} in {REGION_DRAWS} draws from issue 29's box lies in "
                          f"the region offered (python -m sim_core.planning.jump_model)")
 
 
 def region_share(character: str, seed: int, draws: int = SHARE_DRAWS) -> float:
-    """The share of issue 29's box (uniform draws) that the character is offered."""
-    from .skills.jump_to_target.region import offered
+    """The share of issue 29's box (uniform draws) that the character is offered (region.in_region)."""
+    from .skills.jump_to_target.region import in_region
     rng = np.random.default_rng(seed)
     hits = 0
     for _ in range(draws):
         values = box_draw(rng, character)
-        hits += offered(character, values[:2], values[2])
+        hits += in_region(character, values[:2], values[2])
     return hits / draws
 
 
@@ -321,7 +321,8 @@ def main(argv=None) -> int:
             "balanced. Jump targets are drawn uniformly in issue 29's box (forward 0.5-1.9 m (man) / 0.5-1.6 m "
             "(woman), lateral within +-0.6 m, air time 0.4-0.7 s) and drawn again until they lie in the region "
             "the character is offered (sim_core.skills.jump_to_target.region: where one of its measured balanced "
-            "jumps, python -m sim_core.planning.jump_model, lands within the tolerances; any other target is "
+            "jumps, python -m sim_core.planning.jump_model, lands within the tolerances, or in the box its commanded "
+            "take-off was measured in, skills/jump_to_target/commanded.py, the woman's; any other target is "
             f"refused before simulating, naming the limit). The region offered is {shares} of the box "
             f"({SHARE_DRAWS} uniform draws). "
             + (f"Box targets (--boxes) are drawn straight ahead, forward as above, onto a box 0.25-0.75 m high or down "
@@ -331,7 +332,8 @@ def main(argv=None) -> int:
                f"({SHARE_DRAWS} uniform draws). " if box_shares else "")
             + "A target without a stored plan is planned first (into a temporary "
             "plan store; on flat ground or a box from the measured jumps, at most "
-            f"{min(args.budget, MODEL_TRIALS)} trials) and then simulated; a plan that found nothing within the "
+            f"{min(args.budget, MODEL_TRIALS)} trials; in the commanded region only, the commanded take-off aimed "
+            "and its landing planned, planning/commanded.py) and then simulated; a plan that found nothing within the "
             "tolerances is a miss, shown with its nearest trial. Leap heights within each character's "
             "commandable range (human torque limits); broad jumps within the calibrated distances. Times are "
             f"wall seconds of one request (plan + simulate) in one of {args.workers} worker processes running at "
