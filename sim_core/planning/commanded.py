@@ -40,12 +40,15 @@ def secant(values: list[float], results: list[float], floor: float, fallback: fl
 
 
 def plan_commanded(character: str, target, air_time: float, trial, budget: int, judge: Callable,
-                   progress: Callable | None = None, cancelled: Callable | None = None) -> dict:
+                   progress: Callable | None = None, cancelled: Callable | None = None,
+                   body: dict | None = None, constants=None) -> dict:
     """Plan ``character``'s jump to ``target`` (x, y, z, obstacle) in ``air_time`` s with the commanded
     take-off (see the module). ``trial``: settings -> (cost, measured) (planning.jump.JumpTrial);
     ``judge(measured, margin)`` -> (landed on the target, within the tolerances and balanced), within
-    ``margin`` of the tolerances. Returns the planner's {"settings", "measured", "trials", "found"}."""
-    c, body = CONSTANTS, table(character)
+    ``margin`` of the tolerances; ``body``, ``constants``: the character's commanded table and the
+    planner's constants (default: the stored ones; tools/commanded_jumps.py tries others). Returns the
+    planner's {"settings", "measured", "trials", "found"}."""
+    c, body = constants or CONSTANTS, body or table(character)
     x = float(target[0])
     bound = min(budget, c.aim_trials + c.landing_trials - 1)
     tried = []
