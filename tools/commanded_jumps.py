@@ -149,8 +149,8 @@ def main(argv=None) -> int:
         errors, late, hits, balanced, hits_balanced, planned, trials = [], [], 0, 0, 0, 0, []
         for x, air_time, y in draws:
             target = (x, y, 0.0, 0.0)
-            judge = lambda m, k, target=target, air_time=air_time: (lands_on(m, target, air_time, k),      # noqa: E731
-                                                                    within_tolerance(m, target, air_time, k))
+            judge = lambda m, target=target, air_time=air_time: (lands_on(m, target, air_time),      # noqa: E731
+                                                                 within_tolerance(m, target, air_time))
             plan = plan_commanded(args.character, target, air_time, JumpTrial(args.character, target, air_time, WINDUP, "human"),
                                   constants.aim_trials + constants.landing_trials - 1, judge, body=body, constants=constants)
             measured = plan["measured"]

@@ -17,10 +17,12 @@ a few simulated jumps, not a search over the leap's settings:
    balanced on the target is the plan.
 
 At most min(budget, aim_trials + landing_trials - 1) jumps; the plan is the best trial (found or
-not: of those found, else of all, the lowest cost), as plan_from_model's. The seed-free steps make the same request give the same plan.
+not: of those found, else of all, the lowest cost), as plan_from_model's. The seed-free steps make
+the same request give the same plan.
 """
 from __future__ import annotations
 
+import math
 from typing import Callable
 
 from ..character.spec import load_character
@@ -44,10 +46,10 @@ def plan_commanded(character: str, target, air_time: float, trial, budget: int, 
                    body: dict | None = None, constants=None) -> dict:
     """Plan ``character``'s jump to ``target`` (x, y, z, obstacle) in ``air_time`` s with the commanded
     take-off (see the module). ``trial``: settings -> (cost, measured) (planning.jump.JumpTrial);
-    ``judge(measured, margin)`` -> (landed on the target, within the tolerances and balanced), within
-    ``margin`` of the tolerances; ``body``, ``constants``: the character's commanded table and the
-    planner's constants (default: the stored ones; tools/commanded_jumps.py tries others). Returns the
-    planner's {"settings", "measured", "trials", "found"}."""
+    ``judge(measured)`` -> (landed on the target, within TARGETS.md's tolerances and balanced);
+    ``body``, ``constants``: the character's commanded table and the planner's constants (default: the
+    stored ones; tools/commanded_jumps.py tries others). Returns the planner's {"settings", "measured",
+    "trials", "found"}."""
     c, body = constants or CONSTANTS, body or table(character)
     x = float(target[0])
     bound = min(budget, c.aim_trials + c.landing_trials - 1)
@@ -68,22 +70,22 @@ def plan_commanded(character: str, target, air_time: float, trial, budget: int, 
         landed.append(measured["landing"][0])
         flown.append(measured["air_time"])
         miss, late = landed[-1] - x, flown[-1] - air_time
-        if (judge(measured, 1.0)[1] or (abs(miss) <= c.aim_tolerance and abs(late) <= c.aim_time_tolerance)
-                or len(aims) >= min(c.aim_trials, bound) or miss != miss):
+        if (judge(measured)[1] or (abs(miss) <= c.aim_tolerance and abs(late) <= c.aim_time_tolerance)
+                or len(aims) >= min(c.aim_trials, bound) or not math.isfinite(miss)):
             break
         slope = secant(aims, landed, c.aim_slope_floor, c.aim_slope)
         aims.append(min(max(aims[-1] - miss / slope, c.aim_range[0]), c.aim_range[1]))
         rate = secant(air_aims, flown, c.aim_slope_floor, 1.0)     # definition: the first step as flown
         air_aims.append(air_aims[-1] - late / rate)
-    found = any(judge(e[3], 1.0)[1] for e in tried)
-    on_target = [e for e in tried if judge(e[3], 1.0)[0]]
+    found = any(judge(e[3])[1] for e in tried)
+    on_target = [e for e in tried if judge(e[3])[0]]
     if not found and on_target:
         _, _, base, _ = min(on_target, key=lambda e: (e[0], e[1]))
         knob = LEAP_SETTINGS.by_name["foot_delta"]
         deltas = candidates(base["foot_delta"], foot_step(load_character(character)), c.landing_trials,
                             knob.minimum, knob.maximum)[1:]
         for delta in deltas[:max(bound - len(tried), 0)]:
-            if judge(run_trial({**base, "foot_delta": delta}), 1.0)[1]:
+            if judge(run_trial({**base, "foot_delta": delta}))[1]:
                 break
-    cost, _, settings, measured = min(tried, key=lambda e: (not judge(e[3], 1.0)[1], e[0], e[1]))   # found first
-    return {"settings": settings, "measured": measured, "trials": len(tried), "found": bool(judge(measured, 1.0)[1])}
+    cost, _, settings, measured = min(tried, key=lambda e: (not judge(e[3])[1], e[0], e[1]))   # found first
+    return {"settings": settings, "measured": measured, "trials": len(tried), "found": bool(judge(measured)[1])}

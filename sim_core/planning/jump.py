@@ -178,8 +178,8 @@ def plan_jump(character: str, target, air_time: float, windup_time: float, stren
         # outside the measured jumps' region, inside the commanded take-off's (skills/jump_to_target/commanded.py)
         trial = JumpTrial(character, target, air_time, windup_time, strength, cancelled)
         return plan_commanded(character, target, air_time, trial, budget,
-                              lambda measured, margin: (lands_on(measured, target, air_time, margin),
-                                                        within_tolerance(measured, target, air_time, margin)),
+                              lambda measured: (lands_on(measured, target, air_time),
+                                                within_tolerance(measured, target, air_time)),
                               progress, cancelled)
     if not obstacle_of(target) and strength == "human" and not restart and start is None and turned is None \
             and model(character) is not None and (target[2] == 0 or nearest_balanced(character, target, air_time)):

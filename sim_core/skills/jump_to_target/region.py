@@ -11,6 +11,11 @@ request at a height between two measured ones by a jump that landed balanced at 
 and air time interpolated between the two, ``served``); anything else is refused before
 simulating, in one line naming the limit (``region_refusal``). Only reads the table: the measuring
 is planning's.
+
+A character with a commanded take-off table (commanded.py: the woman's) is also offered the box
+measured for it on flat ground (``in_region``); ``mode`` says which of the two plans a request
+(planning/jump.py: the measured jumps', or planning/commanded.py), and a refusal of a request
+outside both names both limits.
 """
 from __future__ import annotations
 
