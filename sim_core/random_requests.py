@@ -39,10 +39,11 @@ JUMP_AIR_TIME = (0.4, 0.7)                                  # s
 BOX_HEIGHT = (0.25, 0.75)                                   # m: onto a box this high, or down from one (issue 29)
 BOX_STREAM = 29                                             # the box draws' own random stream (seed, this): the other
                                                             # draws of a seed stay as they were without them
+COMMANDED_STREAM = 30                                       # the commanded region's draws' own stream (seed, this)
 BROAD_TOLERANCE = 0.1                                       # TARGETS.md: broad jump travel within 10 %
 DRAW_DECIMALS = 3                                           # requests are drawn to the millimetre / millisecond
 DEFAULT_BUDGET = 24                                         # trials of a plan: two of the planner's batches
-SKILLS = ("jump", "box", "leap", "broad")
+SKILLS = ("jump", "box", "commanded", "leap", "broad")
 REGION_DRAWS = 1_000_000                                    # box draws tried for one target in the region offered
 SHARE_DRAWS = 20_000                                        # box draws that measure the region's share of the box
 
@@ -51,13 +52,14 @@ SHARE_DRAWS = 20_000                                        # box draws that mea
 class Draw:
     """One random request: ``skill`` "jump" (target_x, target_y, air_time), "box" (target_x,
     target_z, air_time: onto a box target_z high, or down from one -target_z high, straight ahead),
-    "leap" (height) or "broad" (distance), with its numbers in ``values``."""
+    "commanded" (a jump's, in the commanded region outside the measured one), "leap" (height) or
+    "broad" (distance), with its numbers in ``values``."""
     skill: str
     character: str
     values: tuple
 
     def describe(self) -> str:
-        if self.skill == "jump":
+        if self.skill in ("jump", "commanded"):
             x, y, t = self.values
             return f"jump to ({x:.3f}, {y:+.3f}) m in {t:.3f} s"
         if self.skill == "box":
@@ -83,10 +85,12 @@ def broad_range(character: str) -> tuple[float, float]:
     return float(min(travels)), float(max(travels))
 
 
-def draw_requests(seed: int, characters, jumps: int, leaps: int, broads: int, boxes: int = 0) -> list[Draw]:
+def draw_requests(seed: int, characters, jumps: int, leaps: int, broads: int, boxes: int = 0,
+                  commanded: int = 0) -> list[Draw]:
     """The random requests of ``seed`` (NumPy's default generator), per character: ``jumps`` jump
     targets, ``leaps`` leap heights and ``broads`` broad-jump distances, uniform in their ranges;
-    then ``boxes`` box targets per character (draw_box_jump, from their own stream)."""
+    then ``boxes`` box targets per character (draw_box_jump, from their own stream); then ``commanded``
+    targets per character that has a commanded region (draw_commanded, from their own stream)."""
     rng = np.random.default_rng(seed)
     drawn = []
     for character in characters:
@@ -103,7 +107,27 @@ def draw_requests(seed: int, characters, jumps: int, leaps: int, broads: int, bo
     boxes_rng = np.random.default_rng((seed, BOX_STREAM))
     for character in characters:
         drawn += [Draw("box", character, draw_box_jump(boxes_rng, character)) for _ in range(boxes)]
+    from .skills.jump_to_target.commanded import table
+    commanded_rng = np.random.default_rng((seed, COMMANDED_STREAM))
+    for character in characters:
+        if commanded and table(character) is not None:
+            drawn += [Draw("commanded", character, draw_commanded(commanded_rng, character)) for _ in range(commanded)]
     return drawn
+
+
+def draw_commanded(rng, character: str) -> tuple:
+    """A jump target uniform in the character's commanded region (skills/jump_to_target/commanded.py,
+    its table's box) that its measured jumps do not offer (region.offered) - one the commanded take-off
+    serves - drawn again until it is; as (target_x, target_y, air_time)."""
+    from .skills.jump_to_target.commanded import table
+    from .skills.jump_to_target.region import offered
+    region = table(character)["region"]
+    for _ in range(REGION_DRAWS):
+        values = tuple(round(float(rng.uniform(*region[k])), DRAW_DECIMALS) for k in ("target_x", "target_y", "air_time"))
+        if not offered(character, values[:2], values[2]):
+            return values
+    raise ParameterError(f"no target of the {character}'s commanded region in {REGION_DRAWS} draws lies outside the "
+                         f"region its measured jumps offer")
 
 
 def box_target_draw(rng, character: str) -> tuple:
@@ -134,28 +158,28 @@ def box_draw(rng, character: str) -> tuple:
 
 
 def draw_jump(rng, character: str) -> tuple:
-    """A jump target uniform in the part of issue 29's box that the character is offered (region.offered:
-    outside it a request is refused before simulating), drawn again until it is; the whole box when
-    the character's jumps are not measured."""
-    from .skills.jump_to_target.region import model, offered
+    """A jump target uniform in the part of issue 29's box that the character is offered (region.in_region:
+    its measured jumps' region and its commanded take-off's; outside them a request is refused before
+    simulating), drawn again until it is; the whole box when the character's jumps are not measured."""
+    from .skills.jump_to_target.region import in_region, model
     if model(character) is None:
         return box_draw(rng, character)
     for _ in range(REGION_DRAWS):
         values = box_draw(rng, character)
-        if offered(character, values[:2], values[2]):
+        if in_region(character, values[:2], values[2]):
             return values
     raise ParameterError(f"no jump target of the {character} in {REGION_DRAWS} draws from issue 29's box lies in "
                          f"the region offered (python -m sim_core.planning.jump_model)")
 
 
 def region_share(character: str, seed: int, draws: int = SHARE_DRAWS) -> float:
-    """The share of issue 29's box (uniform draws) that the character is offered."""
-    from .skills.jump_to_target.region import offered
+    """The share of issue 29's box (uniform draws) that the character is offered (region.in_region)."""
+    from .skills.jump_to_target.region import in_region
     rng = np.random.default_rng(seed)
     hits = 0
     for _ in range(draws):
         values = box_draw(rng, character)
-        hits += offered(character, values[:2], values[2])
+        hits += in_region(character, values[:2], values[2])
     return hits / draws
 
 
@@ -182,7 +206,7 @@ def evaluate(draw: Draw, budget: int, store: str) -> dict:
     began = time.perf_counter()
     result = {"draw": draw}
     try:
-        result.update(_jump(draw, budget) if draw.skill in ("jump", "box") else _leap(draw))
+        result.update(_jump(draw, budget) if draw.skill in ("jump", "box", "commanded") else _leap(draw))
     except ParameterError as exc:
         result.update(refused=str(exc), passed=False)
     finally:
@@ -275,21 +299,24 @@ def main(argv=None) -> int:
     parser.add_argument("--leaps", type=int, default=20, help="leap heights per character")
     parser.add_argument("--broad", type=int, default=20, help="broad-jump distances per character")
     parser.add_argument("--boxes", type=int, default=0, help="box targets per character (onto or down from a box)")
+    parser.add_argument("--commanded", type=int, default=0,
+                        help="targets per character in its commanded region, outside its measured jumps' region")
     parser.add_argument("--characters", default="man,woman")
     parser.add_argument("--budget", type=int, default=DEFAULT_BUDGET, help="trials of each unplanned jump's plan")
     parser.add_argument("--workers", type=int, default=2, help="requests run at once, one process each")
     parser.add_argument("--store", help="plan store for the jumps' plans (default: a temporary one, removed after)")
     parser.add_argument("--out", default="docs/random_requests.md")
     args = parser.parse_args(argv)
-    for name in ("jumps", "leaps", "broad", "boxes"):
+    for name in ("jumps", "leaps", "broad", "boxes", "commanded"):
         if getattr(args, name) < 0:
             parser.error(f"--{name}={getattr(args, name)}: must be 0 or more")
     if args.budget < 1:
         parser.error(f"--budget={args.budget}: must be at least 1 trial")
     characters = [c.strip() for c in args.characters.split(",") if c.strip()]
-    draws = draw_requests(args.seed, characters, args.jumps, args.leaps, args.broad, args.boxes)
+    draws = draw_requests(args.seed, characters, args.jumps, args.leaps, args.broad, args.boxes, args.commanded)
     command = (f"python -m sim_core report random --seed {args.seed} --jumps {args.jumps} --leaps {args.leaps} "
-               f"--broad {args.broad}{f' --boxes {args.boxes}' if args.boxes else ''} --characters {','.join(characters)} --budget {args.budget} "
+               f"--broad {args.broad}{f' --boxes {args.boxes}' if args.boxes else ''}"
+               f"{f' --commanded {args.commanded}' if args.commanded else ''} --characters {','.join(characters)} --budget {args.budget} "
                f"--workers {args.workers}")
     print(command, flush=True)
     began = time.perf_counter()
@@ -321,7 +348,8 @@ def main(argv=None) -> int:
             "balanced. Jump targets are drawn uniformly in issue 29's box (forward 0.5-1.9 m (man) / 0.5-1.6 m "
             "(woman), lateral within +-0.6 m, air time 0.4-0.7 s) and drawn again until they lie in the region "
             "the character is offered (sim_core.skills.jump_to_target.region: where one of its measured balanced "
-            "jumps, python -m sim_core.planning.jump_model, lands within the tolerances; any other target is "
+            "jumps, python -m sim_core.planning.jump_model, lands within the tolerances, or in the box its commanded "
+            "take-off was measured in, skills/jump_to_target/commanded.py, the woman's; any other target is "
             f"refused before simulating, naming the limit). The region offered is {shares} of the box "
             f"({SHARE_DRAWS} uniform draws). "
             + (f"Box targets (--boxes) are drawn straight ahead, forward as above, onto a box 0.25-0.75 m high or down "
@@ -329,9 +357,15 @@ def main(argv=None) -> int:
                f"offered (where one of its measured jumps landed balanced at the measured heights on both sides, "
                f"{HEIGHT_REACH * 100:.0f} cm apart, within the tolerances interpolated): {box_text} of those targets "
                f"({SHARE_DRAWS} uniform draws). " if box_shares else "")
+            + ("Commanded targets (--commanded) are drawn uniformly in the commanded region of each character "
+               "that has one (sim_core.skills.jump_to_target.commanded's table: the woman's) and drawn again until "
+               "its measured jumps do not offer them, so that the commanded take-off alone serves them "
+               "(sim_core.planning.commanded: at most 5 aimed jumps, then at most 8 foot placements). "
+               if args.commanded else "")
             + "A target without a stored plan is planned first (into a temporary "
             "plan store; on flat ground or a box from the measured jumps, at most "
-            f"{min(args.budget, MODEL_TRIALS)} trials) and then simulated; a plan that found nothing within the "
+            f"{min(args.budget, MODEL_TRIALS)} trials; in the commanded region only, the commanded take-off aimed "
+            "and its landing planned, planning/commanded.py) and then simulated; a plan that found nothing within the "
             "tolerances is a miss, shown with its nearest trial. Leap heights within each character's "
             "commandable range (human torque limits); broad jumps within the calibrated distances. Times are "
             f"wall seconds of one request (plan + simulate) in one of {args.workers} worker processes running at "

@@ -112,3 +112,38 @@ def test_landing_variants_of_fallen_flights_are_measured_and_land_beyond_the_fir
     flat = [p for p in balanced(model("man")) if not p["measured"].get("surface")]
     assert any(p["settings"].get("landing_right_time") == ARMS_UP["landing_right_time"] for p in flat)
     assert any(p["measured"]["landing"][0] > 1.5 and p["measured"]["air_time"] >= 0.56 for p in flat)
+
+
+COMMANDED_TARGETS = 3       # random targets in the woman's commanded region, outside her measured jumps' region
+
+
+def test_random_targets_in_the_commanded_region_are_planned_commanded_and_land_balanced(tmp_path):
+    """Outside the measured jumps' region, inside the commanded one: planned by planning/commanded.py
+    (a plan with the commanded take-off and its aim), then run as a user's request."""
+    from sim_core.skills.jump_to_target.behaviour import read_plans
+    from sim_core.skills.jump_to_target.region import in_region, mode
+    draws = draw_requests(SEED, ["man", "woman"], 0, 0, 0, 0, COMMANDED_TARGETS)
+    assert [d.character for d in draws] == ["woman"] * COMMANDED_TARGETS      # the man has no commanded region
+    assert all(in_region("woman", d.values[:2], d.values[2]) and mode("woman", d.values[:2], d.values[2]) == "commanded"
+               for d in draws)
+    results = [evaluate(d, 24, str(tmp_path)) for d in draws]
+    lines = [result_line(r) for r in results]
+    plans = read_plans("woman", tmp_path)
+    assert len(plans) == COMMANDED_TARGETS
+    assert all(p["settings"]["commanded_takeoff"] == 1.0 and "flight_target_x" in p["settings"] for p in plans)
+    assert all(p["trials"] <= 13 for p in plans)                  # aim_trials + landing_trials - 1
+    assert sum(r["passed"] for r in results) >= COMMANDED_TARGETS - 1, "\n".join(lines)
+    assert max(r["seconds"] for r in results) <= 60, "\n".join(lines)
+
+
+def test_a_target_outside_both_regions_is_refused_naming_both(monkeypatch):
+    import sim_core.simulate as simulate
+    monkeypatch.setattr(simulate, "Recorder", None)         # a run that started would fail differently
+    params = {"target_x": 1.0, "target_y": 0.4, "air_time": 0.6, "plan_trials": 24}
+    with pytest.raises(ParameterError) as refused:
+        run(RunRequest("jump_to_target", "woman", params=params))
+    text = str(refused.value)
+    assert "\n" not in text and "outside the region the woman's measured jumps offer" in text
+    assert text.endswith("the commanded take-off is offered on flat ground for target_x 0.5-1.25 m, "
+                         "target_y -0.02-0.02 m, air_time 0.4-0.52 s")
+    assert "commanded" not in region_refusal("man", (1.0, 0.4), 0.6)        # the man has no commanded region

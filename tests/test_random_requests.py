@@ -5,7 +5,7 @@ import re
 import pytest
 
 from sim_core import random_requests
-from sim_core.skills.jump_to_target.region import offered
+from sim_core.skills.jump_to_target.region import in_region, offered
 from sim_core.random_requests import JUMP_AIR_TIME, JUMP_FORWARD, JUMP_LATERAL, broad_range, draw_requests, leap_height_range
 
 
@@ -18,7 +18,7 @@ def test_different_seeds_draw_different_requests_inside_the_ranges():
             x, y, t = draw.values
             lo, hi = JUMP_FORWARD[draw.character]
             assert lo <= x <= hi and abs(y) <= JUMP_LATERAL and JUMP_AIR_TIME[0] <= t <= JUMP_AIR_TIME[1]
-            assert offered(draw.character, (x, y), t)          # inside the box, in the region offered
+            assert in_region(draw.character, (x, y), t)        # inside the box, in the region offered
         else:
             lo, hi = leap_height_range(draw.character) if draw.skill == "leap" else broad_range(draw.character)
             assert lo <= draw.values[0] <= hi

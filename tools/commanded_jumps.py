@@ -9,29 +9,31 @@ docs/jump_to_target.md ("A commanded take-off"):
     tools/commanded_jumps.py ... --random 10 --seed 30 --fixed-air-time 0.45 --aim 5   # aim moved by a secant
     tools/commanded_jumps.py ... --landings 0.8,1.0,1.3,1.6,1.9      # landing variants per target
 
-``--const name=value`` overrides a leap constant (leap_any.json's ``commanded_*``) for the run."""
+``--random`` plans each target with the skill's planner (sim_core/planning/commanded.py), these
+settings and crouch pairs standing in for the character's jump_commanded table and ``--aim`` /
+``--plan-landing`` for its bounds. ``--const name=value`` overrides a leap constant (``commanded_*``:
+leap_any.json's, or the character's own in its leap table) for the run."""
 from __future__ import annotations
 
 import argparse
 import math
 import sys
 import time
+from types import SimpleNamespace
 
 import numpy as np
 
 from sim_core.analysis import feet_above_surface
 from sim_core.control import leap
-from sim_core.planning.land import candidates, foot_step
+from sim_core.planning.commanded import plan_commanded
+from sim_core.planning.jump import JumpTrial, lands_on, within_tolerance
 from sim_core.simulate import RunRequest, run
 from sim_core.skills.jump_to_target.behaviour import GROUND_AIR_TIME, landing_measures, leap_params, read_plans, scene_for
+from sim_core.skills.jump_to_target.commanded import CONSTANTS
 
 WINDUP = 1.25                       # s: the requests' wind-up time (the report's)
 FORWARD = {"man": 1.9, "woman": 1.6}    # m: issue 29's forward range ends here (from 0.5 m)
 AIR_TIMES = (0.4, 0.7)              # s: issue 29's air times
-AIM_TOLERANCE = 0.03                # m: a secant on the commanded target stops this near the target
-AIM_TIME_TOLERANCE = 0.03           # s: ... and (with --crouch-by-air-time) this near the air time
-AIM_SLOPE = (0.2, 0.7)              # landing per commanded metre: a secant slope below the first is replaced by the second
-AIM_RANGE = (0.05, 2.5)             # m: the commanded target stays in the leap's flight_target_x range
 LANDING_VARIANTS = ([{"foot_delta": d, "landing_foot_lead_time": lead} for d in (-0.15, -0.05, 0.05, 0.15)
                      for lead in (0.15, 0.3)]
                     + [{"foot_delta": d, "landing_swing_arms": 1.0, "landing_arm_flexion": 2.5, "landing_right_time": 0.4}
@@ -50,13 +52,13 @@ def base_settings(character: str, forward: float, overrides: list[str]) -> dict:
     return settings
 
 
-def crouch_for(crouches: str | None, air_time: float) -> dict:
-    """The crouch height for an air time from measured ``crouch:air time`` pairs (``--crouch-by-air-time``;
-    none given: the settings' own)."""
+def crouch_pairs(crouches: str | None, settings: dict) -> dict:
+    """The planner's ``crouch_by_air_time`` columns from ``crouch:air time`` pairs (m:s, comma-separated;
+    --crouch-by-air-time); none given: the settings' own crouch at every air time."""
     if not crouches:
-        return {}
+        return {"air_time": [GROUND_AIR_TIME], "crouch_height": [settings["crouch_height"]]}
     pairs = sorted((float(b), float(a)) for a, b in (item.split(":") for item in crouches.split(",")))
-    return {"crouch_height": float(np.interp(air_time, [p[0] for p in pairs], [p[1] for p in pairs]))}
+    return {"air_time": [p[0] for p in pairs], "crouch_height": [p[1] for p in pairs]}
 
 
 def jump(character: str, settings: dict, x: float, air_time: float) -> tuple[dict, np.ndarray, float]:
@@ -69,11 +71,13 @@ def jump(character: str, settings: dict, x: float, air_time: float) -> tuple[dic
     return landing_measures(trajectory), trajectory.arrays["com_vel"][k], float(trajectory.arrays["angmom"][k][1])
 
 
-def describe(x: float, air_time: float, measured: dict, velocity, spin: float) -> str:
-    error = math.hypot(measured["landing"][0] - x, measured["landing"][1])
-    return (f"  {x:.2f} m in {air_time:.2f} s: landed {measured['landing'][0]:.3f} m ({error * 100:4.1f} cm off), air "
-            f"{measured['air_time']:.3f} s ({measured['air_time'] - air_time:+.3f}), {measured['outcome']}; lift-off "
-            f"COM velocity ({velocity[0]:.2f}, {velocity[2]:.2f}) m/s, spin {spin:+.1f} kg m2/s")
+def describe(x: float, air_time: float, measured: dict, velocity, spin: float | None, y: float = 0.0) -> str:
+    error = math.hypot(measured["landing"][0] - x, measured["landing"][1] - y)
+    at = f"({x:.3f}, {y:+.3f}) m" if y else f"{x:.2f} m"
+    return (f"  {at} in {air_time:.3f} s: landed {measured['landing'][0]:.3f} m ({error * 100:4.1f} cm off), air "
+            f"{measured['air_time']:.3f} s ({measured['air_time'] - air_time:+.3f}), {measured['outcome']}"
+            + ("" if velocity is None else f"; lift-off COM velocity ({velocity[0]:.2f}, {velocity[2]:.2f}) m/s, spin "
+                                           f"{spin:+.1f} kg m2/s"))
 
 
 def main(argv=None) -> int:
@@ -87,6 +91,9 @@ def main(argv=None) -> int:
     parser.add_argument("--fixed-air-time", type=float, help="random targets: all in this air time (else drawn)")
     parser.add_argument("--random", type=int, default=0, help="this many seeded random forward targets and air times")
     parser.add_argument("--seed", type=int, default=29)
+    parser.add_argument("--forward", help="random targets: low,high m forward (default 0.5 to issue 29's end)")
+    parser.add_argument("--air-times", help="random targets: low,high s (default issue 29's 0.4,0.7)")
+    parser.add_argument("--lateral", type=float, default=0.0, help="random targets: target_y within +-this m")
     parser.add_argument("--aim", type=int, default=1,
                         help="random targets: at most this many trials, the commanded target moved by a secant on the "
                              "landing point after each (1 = the commanded take-off alone)")
@@ -95,13 +102,17 @@ def main(argv=None) -> int:
                              "is interpolated at its air time (with --aim, at an air time moved by a secant too)")
     parser.add_argument("--plan-landing", type=int, default=0,
                         help="random targets: a hit that falls is planned as planning/land.py plans a drop - foot_delta "
-                             "one step (land's plan step) more and less, two, ..., this many runs in all, the aimed "
-                             "command kept; the first that ends balanced and still hits is taken")
+                             "one step (land's plan step) more and less, two, ..., this many placements in all (the "
+                             "planner's landing_trials), the aimed command kept; the first that ends balanced and hits")
     parser.add_argument("--landings", help="targets (m, comma-separated) whose flights try LANDING_VARIANTS")
     args = parser.parse_args(argv)
-    for item in args.const:
-        name, value = item.split("=")
-        setattr(leap.CONSTANTS, name, float(value))
+    overrides = {name: float(value) for name, value in (item.split("=") for item in args.const)}
+    for name, value in overrides.items():
+        setattr(leap.CONSTANTS, name, value)
+    if overrides:           # a character's own constants (its leap table's section) overridden too
+        import sim_core.skills.leap.behaviour as leap_skill
+        own = leap_skill.leap_constants
+        leap_skill.leap_constants = lambda character: SimpleNamespace(**{**vars(own(character)), **overrides})
     settings = base_settings(args.character, args.base, args.set)
     started = time.time()
     if args.sweep:
@@ -124,59 +135,42 @@ def main(argv=None) -> int:
               f"{sum(m['outcome'] == 'success' for _, m, _, _ in rows)}")
     if args.random:
         rng = np.random.default_rng(args.seed)
-        draws = [(float(rng.uniform(0.5, FORWARD[args.character])),
-                  float(rng.uniform(*AIR_TIMES)) if args.fixed_air_time is None else args.fixed_air_time)
+        forward = tuple(float(v) for v in args.forward.split(",")) if args.forward else (0.5, FORWARD[args.character])
+        air_times = tuple(float(v) for v in args.air_times.split(",")) if args.air_times else AIR_TIMES
+        draws = [(float(rng.uniform(*forward)),
+                  float(rng.uniform(*air_times)) if args.fixed_air_time is None else args.fixed_air_time,
+                  float(rng.uniform(-args.lateral, args.lateral)) if args.lateral else 0.0)
                  for _ in range(args.random)]
-        errors, late, hits, balanced, hits_balanced, planned = [], [], 0, 0, 0, []
-        trials = []
-        for x, air_time in draws:
-            aims, landed, air_aims, flown = [x], [], [air_time], []
-            while True:
-                measured, velocity, spin = jump(args.character, {**settings, **crouch_for(args.crouch_by_air_time, air_aims[-1])},
-                                                aims[-1], air_time)
-                landed.append(measured["landing"][0])
-                flown.append(measured["air_time"])
-                miss, late_by = landed[-1] - x, flown[-1] - air_time
-                if (abs(miss) <= AIM_TOLERANCE and abs(late_by) <= AIM_TIME_TOLERANCE) or len(aims) >= args.aim:
-                    break
-                slope = (landed[-1] - landed[-2]) / (aims[-1] - aims[-2]) if len(aims) > 1 and aims[-1] != aims[-2] else 0.0
-                slope = slope if slope > AIM_SLOPE[0] else AIM_SLOPE[1]
-                aims.append(min(max(aims[-1] - miss / slope, AIM_RANGE[0]), AIM_RANGE[1]))
-                if args.crouch_by_air_time:
-                    rate = ((flown[-1] - flown[-2]) / (air_aims[-1] - air_aims[-2])
-                            if len(air_aims) > 1 and air_aims[-1] != air_aims[-2] else 0.0)
-                    rate = rate if rate > AIM_SLOPE[0] else 1.0     # definition: first step, flown as asked
-                    air_aims.append(air_aims[-1] - late_by / rate)
-                else:
-                    air_aims.append(air_aims[-1])
-            trials.append(len(aims))
-            hit = lambda m: abs(m["landing"][0] - x) <= 0.05 and abs(m["air_time"] - air_time) <= 0.05
-            if args.plan_landing > 1 and hit(measured) and measured["outcome"] != "success":
-                aimed = {**settings, **crouch_for(args.crouch_by_air_time, air_aims[-1])}
-                deltas = candidates(aimed.get("foot_delta", 0.0), foot_step(args.character), args.plan_landing, -0.3, 0.3)
-                for delta in deltas[1:]:
-                    tried, velocity_t, spin_t = jump(args.character, {**aimed, "foot_delta": delta}, aims[-1], air_time)
-                    if tried["outcome"] == "success" and hit(tried):
-                        measured, velocity, spin = tried, velocity_t, spin_t
-                        planned.append(delta)
-                        print(f"    landing plan: foot_delta {delta:+.4f} m ends balanced")
-                        break
-                else:
-                    print(f"    landing plan: none of {len(deltas) - 1} foot placements ends balanced and hits")
-            print(describe(x, air_time, measured, velocity, spin)
-                  + (f"; {len(aims)} trials, aimed at {', '.join(f'{a:.2f}' for a in aims)} m" if args.aim > 1 else ""))
-            errors.append(abs(measured["landing"][0] - x))
+        # the skill's planner (planning/commanded.py) with these settings and crouch pairs as its table, and
+        # --aim / --plan-landing as its bounds
+        body = {"settings": settings, "crouch_by_air_time": crouch_pairs(args.crouch_by_air_time, settings)}
+        constants = SimpleNamespace(**{**vars(CONSTANTS), "aim_trials": args.aim,
+                                       "landing_trials": max(args.plan_landing, 1)})
+        errors, late, hits, balanced, hits_balanced, planned, trials = [], [], 0, 0, 0, 0, []
+        for x, air_time, y in draws:
+            target = (x, y, 0.0, 0.0)
+            judge = lambda m, target=target, air_time=air_time: (lands_on(m, target, air_time),      # noqa: E731
+                                                                 within_tolerance(m, target, air_time))
+            plan = plan_commanded(args.character, target, air_time, JumpTrial(args.character, target, air_time, WINDUP, "human"),
+                                  constants.aim_trials + constants.landing_trials - 1, judge, body=body, constants=constants)
+            measured = plan["measured"]
+            trials.append(plan["trials"])
+            planned += plan["settings"]["foot_delta"] != settings["foot_delta"]
+            print(describe(x, air_time, measured, None, None, y)
+                  + f"; {plan['trials']} trials, aimed at {plan['settings']['flight_target_x']:.2f} m, foot_delta "
+                    f"{plan['settings']['foot_delta']:+.4f} m")
+            errors.append(math.hypot(measured["landing"][0] - x, measured["landing"][1] - y))
             late.append(measured["air_time"] - air_time)
-            hits += errors[-1] <= 0.05 and abs(late[-1]) <= 0.05
+            hits += lands_on(measured, target, air_time)
             balanced += measured["outcome"] == "success"
-            hits_balanced += hit(measured) and measured["outcome"] == "success"
-        times = f"{AIR_TIMES[0]:g}-{AIR_TIMES[1]:g}" if args.fixed_air_time is None else f"{args.fixed_air_time:g}"
-        print(f"random {args.character} seed {args.seed} ({args.random} forward targets 0.5-{FORWARD[args.character]:g} m, "
+            hits_balanced += plan["found"]
+        times = f"{air_times[0]:g}-{air_times[1]:g}" if args.fixed_air_time is None else f"{args.fixed_air_time:g}"
+        print(f"random {args.character} seed {args.seed} ({args.random} forward targets {forward[0]:g}-{forward[1]:g} m"
+              f"{f' within +-{args.lateral:g} m' if args.lateral else ''}, "
               f"air time {times} s): landing error median {np.median(errors) * 100:.1f} cm (max "
               f"{max(errors) * 100:.1f}); air time error median {np.median(np.abs(late)):.3f} s ({min(late):+.3f} .. "
-              f"{max(late):+.3f}); within 5 cm and 0.05 s: {hits}, {hits_balanced} of them balanced; balanced {balanced}"
-              + (f"; landings planned {len(planned)}" if args.plan_landing > 1 else "")
-              + (f"; trials median {np.median(trials):.0f}, most {max(trials)}" if args.aim > 1 else ""))
+              f"{max(late):+.3f}); within 5 cm and 0.05 s: {hits}, {hits_balanced} of them balanced; balanced {balanced}; "
+              f"landings planned {planned}; trials median {np.median(trials):.0f}, most {max(trials)}")
     if args.landings:
         for x in (float(v) for v in args.landings.split(",")):
             outcomes = [jump(args.character, {**settings, **variant}, x, args.air_time)[0] for variant in LANDING_VARIANTS]

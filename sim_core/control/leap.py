@@ -701,6 +701,17 @@ def vertical_table(strength: str) -> str:
     return "vertical" if strength == "human" else "vertical_unlimited"
 
 
+# the commanded take-off's flight and the landing arms' pitch feedback: the leap's parameters (its schema,
+# skills/leap) that a planned jump's settings also name (a commanded plan, planning/commanded.py)
+FLIGHT_TARGET_X = Parameter("flight_target_x", "m", 1.0, -2.5, 2.5,
+                            "commanded take-off (low_level, commanded_takeoff=1): the feet land this far forward of the "
+                            "middle of the feet at the start")
+LANDING_ARM_PITCH_GAIN = Parameter(
+    "landing_arm_pitch_gain", "1", 0.0, 0.0, 10.0,
+    "landing: with landing_swing_arms, the arms swing this many rad further down and back per rad the "
+    "pelvis is (about to be) pitched forward of landing_arm_pitch (0 = to landing_arm_flexion alone)")
+LANDING_ARM_PITCH = Parameter("landing_arm_pitch", "rad", 0.6, -0.5, 1.5, "landing: the pelvis pitch the arms' feedback holds")
+
 # the leap's low-level settings: the columns of a vertical-leap table, a broad jump's and a planned
 # jump's settings (sim_core.planning.jump searches them); a default is what a row that does
 # not name the setting runs with
@@ -728,6 +739,7 @@ LEAP_SETTINGS = Schema(
     Parameter("commanded_takeoff", "1", 0.0, 0.0, 1.0,
               "above 0.5 the thrust servoes the COM velocity to the commanded flight's lift-off velocity and "
               "ends on reaching it (control/commanded_thrust.py)"),
+    FLIGHT_TARGET_X, LANDING_ARM_PITCH_GAIN, LANDING_ARM_PITCH,
 )
 LEAP_MEASURED = ("com_rise", "com_travel", "peak_thrust_grf_body_weights")   # columns a calibration measured
 

@@ -39,7 +39,8 @@ from .. import tuned
 from ..errors import Cancelled, ParameterError
 from ..simulate import RunRequest, run
 from ..tuning import SerialExecutor, Space, minimize
-from ..skills.jump_to_target.region import REACH, model, nearest_balanced
+from ..skills.jump_to_target.region import REACH, mode, model, nearest_balanced
+from .commanded import plan_commanded
 from .land import candidates as foot_candidates, foot_step
 
 PLAN_MARGIN = 0.6                   # the search aims inside this share of the tolerances
@@ -172,6 +173,14 @@ def plan_jump(character: str, target, air_time: float, windup_time: float, stren
     if not isinstance(budget, int) or budget < 1:
         raise_budget(budget)
     turned = turned_start(character, target, strength) if not restart and start is None else None
+    if not obstacle_of(target) and strength == "human" and not restart and start is None and turned is None \
+            and mode(character, target, air_time) == "commanded":
+        # outside the measured jumps' region, inside the commanded take-off's (skills/jump_to_target/commanded.py)
+        trial = JumpTrial(character, target, air_time, windup_time, strength, cancelled)
+        return plan_commanded(character, target, air_time, trial, budget,
+                              lambda measured: (lands_on(measured, target, air_time),
+                                                within_tolerance(measured, target, air_time)),
+                              progress, cancelled)
     if not obstacle_of(target) and strength == "human" and not restart and start is None and turned is None \
             and model(character) is not None and (target[2] == 0 or nearest_balanced(character, target, air_time)):
         # on flat ground, or onto / down from a box a measured jump serves: from the measured jumps (jump_model)

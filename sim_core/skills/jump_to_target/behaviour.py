@@ -199,11 +199,13 @@ def leap_params(settings: dict, target, windup_time: float, air_time: float | No
 
 def commanded_flight(settings: dict, target, air_time: float | None) -> dict:
     """A plan with the commanded take-off (``commanded_takeoff``, control/commanded_thrust.py): the
-    switch and the flight it commands, the request's target and air time; none for any other plan
+    switch and the flight it commands, the request's target and air time (forward, the plan's own
+    ``flight_target_x`` where it names one: its aim, planning/commanded.py); none for any other plan
     (which runs as it always did)."""
     if settings.get("commanded_takeoff", 0.0) <= 0.5 or air_time is None:
         return {}
-    return {"commanded_takeoff": 1.0, "flight_target_x": float(target[0]), "flight_target_y": float(target[1]),
+    return {"commanded_takeoff": 1.0, "flight_target_x": float(settings.get("flight_target_x", target[0])),
+            "flight_target_y": float(target[1]),
             "flight_target_z": float(target[2]), "flight_air_time": float(air_time)}
 
 
@@ -403,8 +405,9 @@ class JumpToTarget(Leap):
         return self.plan["settings"].get("vertical_thrust", 0.0) <= 0.5
 
     def flight_target(self, p: dict) -> tuple[tuple, float]:
-        """The commanded take-off's flight (a plan with ``commanded_takeoff``): the request's."""
-        return (p["target_x"], p["target_y"], p["target_z"]), p["air_time"]
+        """The commanded take-off's flight (a plan with ``commanded_takeoff``): the request's, forward the
+        plan's aim where it names one (commanded_flight)."""
+        return (self.plan["settings"].get("flight_target_x", p["target_x"]), p["target_y"], p["target_z"]), p["air_time"]
 
     def check_feasible(self) -> None:
         """Refuses what no plan can do, then looks the plan up (planning runs above the loop)."""

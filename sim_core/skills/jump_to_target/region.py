@@ -11,6 +11,11 @@ request at a height between two measured ones by a jump that landed balanced at 
 and air time interpolated between the two, ``served``); anything else is refused before
 simulating, in one line naming the limit (``region_refusal``). Only reads the table: the measuring
 is planning's.
+
+A character with a commanded take-off table (commanded.py: the woman's) is also offered the box
+measured for it on flat ground (``in_region``); ``mode`` says which of the two plans a request
+(planning/jump.py: the measured jumps', or planning/commanded.py), and a refusal of a request
+outside both names both limits.
 """
 from __future__ import annotations
 
@@ -21,6 +26,7 @@ import numpy as np
 from ...ballistics import GRAVITY
 from ...control.leap import LEAP_SETTINGS
 from ...tuned import TableType, load, register as register_table, table_path
+from .commanded import commanded_limit, commanded_offers
 
 LANDING_TOLERANCE = 0.05            # m: TARGETS.md: the landing point within this of the target
 AIR_TIME_TOLERANCE = 0.05           # s: TARGETS.md: the air time within this of the one asked
@@ -201,11 +207,35 @@ def offered(character: str, target, air_time: float) -> bool:
 _ARRAYS: dict = {}
 
 
+def in_region(character: str, target, air_time: float) -> bool:
+    """Whether the request is offered: in the measured jumps' region (offered) or in the commanded
+    take-off's (commanded.commanded_offers)."""
+    return offered(character, target, air_time) or commanded_offers(character, target, air_time)
+
+
+def mode(character: str, target, air_time: float) -> str | None:
+    """How a request on flat ground or a box is planned: "measured" (from the measured jumps: in their
+    region, or where they were not measured), "commanded" (the commanded take-off: outside their region,
+    in its own), or None (refused: region_refusal says why)."""
+    if model(character) is None or offered(character, target, air_time):
+        return "measured"
+    return "commanded" if commanded_offers(character, target, air_time) else None
+
+
 def region_refusal(character: str, target, air_time: float) -> str | None:
-    """None if the request (x, y, air time) is in the region offered, else the one-line refusal
-    naming the limit it breaks: the forward distances measured (no balanced jump lands near x), the
-    air times offered at x, or the lateral offsets offered at x in that air time; and the nearest
-    measured balanced jump."""
+    """None if the request (x, y, air time) is in the region offered (in_region), else the one-line
+    refusal naming the limit it breaks: the forward distances measured (no balanced jump lands near
+    x), the air times offered at x, or the lateral offsets offered at x in that air time; and the
+    nearest measured balanced jump; and the commanded take-off's limits where the character has them."""
+    refusal = measured_refusal(character, target, air_time)
+    if refusal is None or commanded_offers(character, target, air_time):
+        return None
+    limit = commanded_limit(character)
+    return refusal if limit is None else f"{refusal}; {limit}"
+
+
+def measured_refusal(character: str, target, air_time: float) -> str | None:
+    """region_refusal's for the measured jumps' region alone."""
     z = height_of(target)
     every = balanced(model(character))
     if not any((surface(p["measured"]) != 0.0) == (z != 0.0) for p in every):

@@ -11,7 +11,7 @@ from ...control.balance import Balance, standing_hip_height
 from ...control.behaviour import register
 from ...control.commanded_thrust import CommandedThrust, FlightCommand, thrust_due
 from ...control.measure import SupportGeometry
-from ...control.leap import LOW_LEVEL_SETTINGS, Landing, LeapThrust, balance_after_landing, calibrated_foot_delta, broad_distances, broad_row, broad_rows, commandable_heights, leap_assess, leap_constants, load_mapping, vertical_key, vertical_row, vertical_table
+from ...control.leap import FLIGHT_TARGET_X, LANDING_ARM_PITCH, LANDING_ARM_PITCH_GAIN, LOW_LEVEL_SETTINGS, Landing, LeapThrust, balance_after_landing, calibrated_foot_delta, broad_distances, broad_row, broad_rows, commandable_heights, leap_assess, leap_constants, load_mapping, vertical_key, vertical_row, vertical_table
 from ...control.sequencer import Sequence, Step
 from ...control.turn import jump_start, turn_steps
 from ...errors import ParameterError
@@ -39,9 +39,7 @@ class Leap(Sequence):
         Parameter("low_level", "bool", 0.0, 0.0, 1.0,
                   "1 = run the low-level settings as set (--set crouch_height=...) instead of the calibrated leap"),
         Parameter("crouch_time", "s", 0.8, 0.3, 3.0, "time to sink into the crouch"),
-        Parameter("flight_target_x", "m", 1.0, -2.5, 2.5,
-                  "commanded take-off (low_level, commanded_takeoff=1): the feet land this far forward of the "
-                  "middle of the feet at the start"),
+        FLIGHT_TARGET_X,
         Parameter("flight_target_y", "m", 0.0, -2.0, 2.0,
                   "commanded take-off: the feet land this far to the left (+) of the middle of the feet at the start"),
         Parameter("flight_target_z", "m", 0.0, -1.0, 1.0,
@@ -57,10 +55,8 @@ class Leap(Sequence):
         Parameter("landing_arm_flexion", "rad", 0.6, -1.0, 3.0,
                   "landing: forward raise of the arms they swing to in flight (below 0: down and back, "
                   "which pitches the trunk back so the feet reach forward)"),
-        Parameter("landing_arm_pitch_gain", "1", 0.0, 0.0, 10.0,
-                  "landing: with landing_swing_arms, the arms swing this many rad further down and back per rad the "
-                  "pelvis is (about to be) pitched forward of landing_arm_pitch (0 = to landing_arm_flexion alone)"),
-        Parameter("landing_arm_pitch", "rad", 0.6, -0.5, 1.5, "landing: the pelvis pitch the arms' feedback holds"),
+        LANDING_ARM_PITCH_GAIN,
+        LANDING_ARM_PITCH,
         Parameter("landing_foot_lead_time", "s", 0.2, 0.0, 0.6,
                   "landing: the feet land this many seconds of horizontal COM travel ahead of the COM"),
         Parameter("landing_right_time", "s", 0.0, 0.0, 1.0,

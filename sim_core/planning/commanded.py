@@ -1,0 +1,91 @@
+"""Planning a jump with the commanded take-off (issue 29), above the loop: for a request in the
+character's commanded region (skills/jump_to_target/commanded.py) outside its measured jumps' region.
+
+The commanded take-off flies what it commands - the feet's landing point forward and the air time -
+and nearby targets are nearby commands (docs/jump_to_target.md, "A commanded take-off"), so a plan is
+a few simulated jumps, not a search over the leap's settings:
+
+1. the aim: the table's settings with the crouch interpolated at the air time (``crouch_by_air_time``)
+   and the commanded landing point (``flight_target_x``) at the target; after each jump the commanded
+   point is moved by a secant on where it landed (the previous two jumps' landing per commanded metre;
+   below ``aim_slope_floor`` the table's ``aim_slope`` instead) and the crouch's air time by a secant on
+   the air time flown (the first step as flown), until a jump lands within ``aim_tolerance`` and
+   ``aim_time_tolerance`` (or within TARGETS.md's tolerances and balanced), at most ``aim_trials`` jumps;
+2. the landing from the arriving state: if the nearest jump that landed on the target fell, the same
+   jump with its feet placed a landing plan step (planning.land.foot_step) more and less, two, ...
+   (planning.land.candidates), at most ``landing_trials`` placements in all; the first that ends
+   balanced on the target is the plan.
+
+At most min(budget, aim_trials + landing_trials - 1) jumps; the plan is the best trial (found or
+not: of those found, else of all, the lowest cost), as plan_from_model's. The seed-free steps make
+the same request give the same plan.
+"""
+from __future__ import annotations
+
+import math
+from typing import Callable
+
+from ..character.spec import load_character
+from ..control.leap import LEAP_SETTINGS
+from ..errors import Cancelled
+from ..skills.jump_to_target.commanded import CONSTANTS, commanded_settings, table
+from .land import candidates, foot_step
+
+
+def secant(values: list[float], results: list[float], floor: float, fallback: float) -> float:
+    """The slope of ``results`` over ``values`` between the last two (``fallback`` where there is one
+    value, equal values, or a slope below ``floor``)."""
+    if len(values) < 2 or values[-1] == values[-2]:
+        return fallback
+    slope = (results[-1] - results[-2]) / (values[-1] - values[-2])
+    return slope if slope > floor else fallback
+
+
+def plan_commanded(character: str, target, air_time: float, trial, budget: int, judge: Callable,
+                   progress: Callable | None = None, cancelled: Callable | None = None,
+                   body: dict | None = None, constants=None) -> dict:
+    """Plan ``character``'s jump to ``target`` (x, y, z, obstacle) in ``air_time`` s with the commanded
+    take-off (see the module). ``trial``: settings -> (cost, measured) (planning.jump.JumpTrial);
+    ``judge(measured)`` -> (landed on the target, within TARGETS.md's tolerances and balanced);
+    ``body``, ``constants``: the character's commanded table and the planner's constants (default: the
+    stored ones; tools/commanded_jumps.py tries others). Returns the planner's {"settings", "measured",
+    "trials", "found"}."""
+    c, body = constants or CONSTANTS, body or table(character)
+    x = float(target[0])
+    bound = min(budget, c.aim_trials + c.landing_trials - 1)
+    tried = []
+
+    def run_trial(settings: dict) -> dict:
+        if cancelled is not None and cancelled():
+            raise Cancelled("planning cancelled")
+        cost, measured = trial(settings)
+        tried.append((cost, len(tried), settings, measured))
+        if progress is not None:
+            progress(len(tried), bound, min(tried, key=lambda e: (e[0], e[1]))[3])
+        return measured
+
+    aims, landed, air_aims, flown = [x], [], [float(air_time)], []
+    while True:
+        measured = run_trial(commanded_settings(body, air_aims[-1], aims[-1]))
+        landed.append(measured["landing"][0])
+        flown.append(measured["air_time"])
+        miss, late = landed[-1] - x, flown[-1] - air_time
+        if (judge(measured)[1] or (abs(miss) <= c.aim_tolerance and abs(late) <= c.aim_time_tolerance)
+                or len(aims) >= min(c.aim_trials, bound) or not math.isfinite(miss)):
+            break
+        slope = secant(aims, landed, c.aim_slope_floor, c.aim_slope)
+        aims.append(min(max(aims[-1] - miss / slope, c.aim_range[0]), c.aim_range[1]))
+        rate = secant(air_aims, flown, c.aim_slope_floor, 1.0)     # definition: the first step as flown
+        air_aims.append(air_aims[-1] - late / rate)
+    found = any(judge(e[3])[1] for e in tried)
+    on_target = [e for e in tried if judge(e[3])[0]]
+    if not found and on_target:
+        _, _, base, _ = min(on_target, key=lambda e: (e[0], e[1]))
+        knob = LEAP_SETTINGS.by_name["foot_delta"]
+        deltas = candidates(base["foot_delta"], foot_step(load_character(character)), c.landing_trials,
+                            knob.minimum, knob.maximum)[1:]
+        for delta in deltas[:max(bound - len(tried), 0)]:
+            if judge(run_trial({**base, "foot_delta": delta}))[1]:
+                break
+    cost, _, settings, measured = min(tried, key=lambda e: (not judge(e[3])[1], e[0], e[1]))   # found first
+    return {"settings": settings, "measured": measured, "trials": len(tried), "found": bool(judge(measured)[1])}
