@@ -95,8 +95,8 @@ class StanceMeasure:
 
 
 class RecoveryStep(Behaviour):
-    """One step of one foot to where the capture point goes (forward or back): the foot behind for a
-    forward step, the one ahead for a backward one. The swing leg lifts (``lift_knee`` for ``lift_time``),
+    """One step of one foot to where the capture point goes (forward or back): the foot that carries less
+    (``unloaded``), else the foot behind for a forward step, the one ahead for a backward one. The swing leg lifts (``lift_knee`` for ``lift_time``),
     then reaches (``reach_knee``), its thigh aimed every tick so that the sole lands past the capture point
     by ``spread`` of its distance from the stance foot and ``beyond`` (from ``min_step`` to ``max_step`` ahead
     of the stance foot) (at most ``max_step`` from the stance foot); the stance ankle servos the capture point
@@ -104,6 +104,9 @@ class RecoveryStep(Behaviour):
     the swing foot is down after ``min_swing`` (or at ``max_swing``)."""
 
     schema = Schema(
+        Parameter("unloaded", "m", 0.01, 0.0, 0.2,
+                  "the foot whose lowest point stands this much higher than the other's swings (it carries less; else "
+                  "the foot behind for a forward step, the one ahead for a backward one)"),
         Parameter("lift_knee", "rad", 1.6, 0.3, 2.4, "the swing knee's flexion that lifts the foot out of the ground"),
         Parameter("lift_time", "s", 0.12, 0.02, 0.5, "the lift lasts this long, then the reach"),
         Parameter("reach_knee", "rad", 0.7, 0.0, 1.6, "the swing knee's flexion while the foot reaches for its goal"),
@@ -143,8 +146,13 @@ class RecoveryStep(Behaviour):
         self.t0 = t
         s.offset[:] = 0.0
         feet_x = [m.along(d.xpos[f])[0] for f in m.feet]
-        # forward: the foot behind swings; back: the foot ahead
-        self.swing = int(np.argmin(feet_x)) if self.direction > 0 else int(np.argmax(feet_x))
+        # forward: the foot behind swings; back: the foot ahead - unless one foot stands less deep in the
+        # ground by ``unloaded`` (it carries less): that one
+        sunk = [m.foot_height(k) for k in (0, 1)]
+        if abs(sunk[0] - sunk[1]) >= self.params["unloaded"]:
+            self.swing = int(np.argmax(sunk))
+        else:
+            self.swing = int(np.argmin(feet_x)) if self.direction > 0 else int(np.argmax(feet_x))
         self.stance = 1 - self.swing
         self.base = s.angles().copy()
         self.lean = m.pelvis_lean()
@@ -251,6 +259,9 @@ class StaggeredStance(Behaviour):
         Parameter("splay_kp", "rad/m", 0.0, 0.0, 20.0,
                   "hip abduction, opposite on the two legs, per metre that the feet have moved apart sideways since "
                   "the stance began"),
+        Parameter("level_kp", "rad/m", 0.0, 0.0, 40.0,
+                  "each knee straightens by this per metre its foot stands higher in the ground than the feet's mean "
+                  "(the lighter foot is pressed down, so both carry her)"),
         Parameter("still_speed", "m/s", 0.05, 0.0, 1.0, "still: the COM slower than this"),
         Parameter("min_height", "m", 0.1, 0.05, 1.0, "the capture point's COM height is at least this (a guard)"),
     )
@@ -316,6 +327,9 @@ class StaggeredStance(Behaviour):
         sideways = p["side_kp"] * left + p["side_kv"] * left_speed
         standing_knee = self.crouch.at(float(self.crouch.heights[-1]))[0]
         targets[self.knees] = self.knees_from + (standing_knee - self.knees_from) * share
+        if p["level_kp"]:
+            sunk = np.array([m.foot_height(0), m.foot_height(1)])
+            targets[self.knees] -= p["level_kp"] * (sunk - sunk.mean())
         crouch_lean = float(self.crouch.at(self.pelvis_height())[3]) + p["lean"]
         lean = self.lean_from + (crouch_lean - self.lean_from) * share - p["lean_kp"] * error + self.bow_pitch(t)
         trunk_error = m.pelvis_lean() - lean
@@ -347,3 +361,59 @@ class StaggeredStance(Behaviour):
             return True
         _, time, hold = self.bow
         return t - self.t0 >= 2 * time + hold
+
+    def outside(self, margin: float) -> float:
+        """+1 (-1) when the capture point is within ``margin`` of the support's front (back) edge or past it,
+        else 0: where a further step is due."""
+        m = self.measure
+        points = m.support.supporting_points(self.ctx.data)
+        ahead, _, _, _ = m.capture(points)
+        c, s = m.heading()
+        px = c * points[:, 0] + s * points[:, 1]
+        half = 0.5 * float(px.max() - px.min())
+        return 1.0 if ahead > half - margin else -1.0 if ahead < margin - half else 0.0
+
+
+class StepAndHold(Behaviour):
+    """The staggered stance, and a further recovery step whenever its capture point comes within ``margin``
+    of the support's edge (or past it) - at most ``max_steps`` of them, each ``min_hold`` after the last
+    stance began - then the stance again from the new feet. ``risen(t)``: the current stance has risen."""
+
+    schema = Schema(
+        Parameter("max_steps", "1", 1.0, 0.0, 5.0, "at most this many further steps"),
+        Parameter("margin", "m", 0.03, -0.2, 0.3, "a step once the capture point is this close to the support's edge"),
+        Parameter("min_hold", "s", 0.2, 0.0, 2.0, "... and the stance has held this long"),
+    )
+
+    def __init__(self, params, ctx: ControlContext, step: dict, stance: dict):
+        """``step``, ``stance``: RecoveryStep's and StaggeredStance's validated parameters."""
+        super().__init__(params, ctx)
+        self.step_params, self.stance_params = step, stance
+        self.steps = 0
+
+    def _begin(self, behaviour: Behaviour, t: float) -> None:
+        self.current = behaviour
+        behaviour.phase_events = self.phase_events
+        behaviour.start(t)
+
+    def start(self, t: float) -> None:
+        self._begin(StaggeredStance(self.stance_params, self.ctx), t)
+
+    def update(self, t: float) -> None:
+        current, p = self.current, self.params
+        if isinstance(current, RecoveryStep) and current.finished:
+            self._begin(StaggeredStance(self.stance_params, self.ctx), t)
+        elif isinstance(current, StaggeredStance) and self.steps < p["max_steps"] and t - current.t0 >= p["min_hold"]:
+            direction = current.outside(p["margin"])
+            if direction:
+                self.steps += 1
+                self._begin(RecoveryStep(self.step_params, self.ctx, direction), t)
+        self.current.update(t)
+
+    def risen(self, t: float) -> bool:
+        return isinstance(self.current, StaggeredStance) and self.current.risen(t)
+
+    @property
+    def t_stance(self) -> float:
+        """When the current stance began (the step's start while stepping)."""
+        return self.current.t0

@@ -46,7 +46,7 @@ from ...control.servo import hermite_scalar
 from ...control.balance import Balance
 from ...control.leap import UP, Landing, balance_after_landing, run_strength
 from ...control.measure import pitch_of, roll_of
-from ...control.recovery_step import RecoveryStep, StaggeredStance
+from ...control.recovery_step import RecoveryStep, StaggeredStance, StepAndHold
 from ...control.sequencer import Sequence, Step
 from ...analysis import FOOT_BODIES
 from ..handspring.behaviour import HAND_BODIES, PoseMove
@@ -218,7 +218,9 @@ VAULT_SETTINGS = Schema(
             "absorb's), one foot steps to it (control/recovery_step.py RecoveryStep) and the staggered stance is "
             "held (StaggeredStance) through the gesture and the bow; 0 = no step"),
     setting("step_at", "m", 0.02, 0.5, "step: the capture point this far from catch_target ..."),
-    setting("step_after", "s", 0.0, 2.0, "... at least this long after the touchdown (and before the rise)"),
+    setting("step_after", "s", 0.0, 2.0, "... at least this long after the touchdown (and before the rise) ..."),
+    setting("step_vz", "m/s", 0.0, 5.0,
+            "... while the COM moves up or down slower than this (not in the impact's fall nor the rebound off the mat)"),
     setting("step_lift_knee", "rad", 0.3, 2.4, "step: the swing knee's flexion that lifts the foot"),
     setting("step_lift_time", "s", 0.02, 0.5, "step: the lift lasts this long, then the reach"),
     setting("step_reach_knee", "rad", 0.0, 1.6, "step: the swing knee's flexion in the reach"),
@@ -241,6 +243,13 @@ VAULT_SETTINGS = Schema(
             "step and staggered stance: ankle roll per metre of the COM left of the (stance) feet's middle"),
     setting("hold_side_kv", "rad s/m", -10.0, 10.0, "step and staggered stance: ankle roll per m/s of the COM's leftward speed"),
     setting("hold_side_hip", "1", 0.0, 2.0, "step and staggered stance: hip abduction per radian of the ankles' roll command"),
+    setting("hold_steps", "1", 0.0, 5.0,
+            "staggered stance: at most this many further steps, each when the capture point nears the support's edge ..."),
+    setting("hold_margin", "m", -0.2, 0.3, "... within this of it ..."),
+    setting("hold_min", "s", 0.0, 2.0, "... and the stance has held this long"),
+    setting("hold_level_kp", "rad/m", 0.0, 40.0,
+            "staggered stance: each knee straightens by this per metre its foot stands higher in the ground than the mean"),
+    setting("step_unloaded", "m", 0.0, 0.2, "step: the foot standing this much higher in the ground than the other swings"),
     setting("hold_stagger_kp", "rad/m", 0.0, 20.0,
             "staggered stance: hip pitch, opposite on the two legs, per metre the feet have moved apart fore and aft"),
     setting("hold_splay_kp", "rad/m", 0.0, 20.0,
@@ -864,8 +873,9 @@ class Vault(Sequence):
             Step("rise", lambda t: self.recovery_step() if self.stepping else
                  (MatCatchRise if c["catch"] else MatRise)(ctx, c, self.previous.landing),
                  lambda b, t: b.finished),
-            Step("balance", lambda t: self.staggered() if self.stepping else self.stand_up(),
-                 lambda b, t: (b.risen(t) and t - b.t0 >= c["hold_rise_time"] + CONSTANTS.stand_settle) if self.stepping
+            Step("balance", lambda t: self.step_and_hold() if self.stepping else self.stand_up(),
+                 lambda b, t: (b.risen(t) and t - b.t_stance >= c["hold_rise_time"] + CONSTANTS.stand_settle)
+                 if self.stepping
                  else b.posture_reached(t) and t - b.t0 >= c["stand_time"] + CONSTANTS.stand_settle),
             Step("gesture", lambda t: ArmGesture(ctx, self.previous),
                  lambda b, t: b.finished),
@@ -877,9 +887,11 @@ class Vault(Sequence):
 
     def must_step(self, absorb: MatAbsorb, t: float) -> bool:
         """recovery_step: the capture point (the absorb's measure) further than step_at from catch_target,
-        step_after after the touchdown; the step's direction is its sign."""
+        step_after after the touchdown, the COM's vertical speed under step_vz; the step's direction is its sign."""
         c = self.cfg
         if not c["recovery_step"] or t - absorb.t0 < c["step_after"]:
+            return False
+        if abs(float(self.ctx.data.subtree_linvel[self.pelvis][2])) >= c["step_vz"]:
             return False
         capture, _ = absorb.capture_point(*absorb.com_from_feet())
         error = capture - c["catch_target"]
@@ -890,14 +902,25 @@ class Vault(Sequence):
 
     def recovery_step(self) -> RecoveryStep:
         """The step to the capture point (control/recovery_step.py), with the vault's step settings."""
+        return RecoveryStep(self.step_params(), self.ctx, self.step_direction)
+
+    def step_and_hold(self) -> StepAndHold:
+        """The staggered stance after the step, with further steps (hold_steps) while the capture point nears
+        the support's edge (control/recovery_step.py)."""
         c = self.cfg
-        return RecoveryStep(RecoveryStep.schema.validate(dict(
+        return StepAndHold(StepAndHold.schema.validate(dict(max_steps=c["hold_steps"], margin=c["hold_margin"],
+                                                            min_hold=c["hold_min"])),
+                           self.ctx, self.step_params(), self.staggered().params)
+
+    def step_params(self) -> dict:
+        """RecoveryStep's parameters from the vault's step settings."""
+        c = self.cfg
+        return RecoveryStep.schema.validate(dict(
             lift_knee=c["step_lift_knee"], lift_time=c["step_lift_time"], reach_knee=c["step_reach_knee"],
             swing_gain=c["step_swing_gain"], spread=c["step_spread"], beyond=c["step_beyond"], min_step=c["step_min"],
-            max_step=c["step_max"],
-            width=c["step_width"], stance_kp=c["step_kp"], side_kp=c["hold_side_kp"], side_kv=c["hold_side_kv"],
-            side_hip=c["hold_side_hip"], ankle_max=c["catch_ankle"], min_height=c["absorb_min_height"])),
-            self.ctx, self.step_direction)
+            max_step=c["step_max"], width=c["step_width"], stance_kp=c["step_kp"], side_kp=c["hold_side_kp"],
+            side_kv=c["hold_side_kv"], side_hip=c["hold_side_hip"], ankle_max=c["catch_ankle"], unloaded=c["step_unloaded"],
+            min_height=c["absorb_min_height"]))
 
     def staggered(self, bow: tuple[float, float, float] | None = None) -> StaggeredStance:
         """The stance after the step held (control/recovery_step.py), standing up, and with ``bow`` the bow."""
@@ -906,7 +929,7 @@ class Vault(Sequence):
             rise_time=c["hold_rise_time"], kp=c["hold_kp"], target=c["hold_target"],
             ankle_max=c["catch_ankle"], lean=c["hold_lean"], lean_kp=c["hold_lean_kp"], arm=c["hold_arm"],
             side_kp=c["hold_side_kp"], side_kv=c["hold_side_kv"], side_hip=c["hold_side_hip"],
-            stagger_kp=c["hold_stagger_kp"], splay_kp=c["hold_splay_kp"], min_height=c["absorb_min_height"])), self.ctx, bow)
+            stagger_kp=c["hold_stagger_kp"], splay_kp=c["hold_splay_kp"], level_kp=c["hold_level_kp"], min_height=c["absorb_min_height"])), self.ctx, bow)
 
     @property
     def run_complete(self) -> bool:
