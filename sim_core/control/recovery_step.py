@@ -86,6 +86,12 @@ class StanceMeasure:
     def pelvis_lean(self) -> float:
         return pitch_of(self.ctx.data.xmat[self.pelvis], UP)
 
+    def aim(self, k: int, ankle_x: float, knee: float, leg: LegGeometry) -> float:
+        """Hip k's pitch target that puts its ankle at ``ankle_x`` (along the heading, world) with this knee
+        bend: the thigh aimed in the world frame (as the leap's landing aims it), less the pelvis's lean."""
+        hip_x = self.along(self.ctx.data.xpos[self.hips[k]])[0]
+        return leg.thigh_pitch_for(ankle_x - hip_x, knee) - self.pelvis_lean()
+
     def flat_foot(self, targets: np.ndarray, angles: np.ndarray, k: int, ankle: float, roll: float) -> None:
         """Foot k's ankle targets: flat on the ground, offset by ``ankle`` (pitch) and ``roll``."""
         f = self.ctx.data.xmat[self.feet[k]]
@@ -100,13 +106,16 @@ class RecoveryStep(Behaviour):
     then reaches (``reach_knee``), its thigh aimed every tick so that the sole lands past the capture point
     by ``spread`` of its distance from the stance foot and ``beyond`` (from ``min_step`` to ``max_step`` ahead
     of the stance foot) (at most ``max_step`` from the stance foot); the stance ankle servos the capture point
-    (``stance_kp``, within ``ankle_max``), the hips hold the pelvis's lean as the step began. Finished when
+    (``stance_kp``, within ``ankle_max``), the hips hold the pelvis's lean as the step began; the arms go to ``arm`` (out of the way of the ground). Finished when
     the swing foot is down after ``min_swing`` (or at ``max_swing``)."""
 
     schema = Schema(
         Parameter("unloaded", "m", 0.01, 0.0, 0.2,
                   "the foot whose lowest point stands this much higher than the other's swings (it carries less; else "
                   "the foot behind for a forward step, the one ahead for a backward one)"),
+        Parameter("wait_vz", "m/s", 5.0, 0.0, 5.0,
+                  "the lift waits while the COM rises faster than this (a rebound off a soft ground: the stance foot "
+                  "would leave it too), the legs held, the hips holding the lean"),
         Parameter("lift_knee", "rad", 1.6, 0.3, 2.4, "the swing knee's flexion that lifts the foot out of the ground"),
         Parameter("lift_time", "s", 0.12, 0.02, 0.5, "the lift lasts this long, then the reach"),
         Parameter("reach_knee", "rad", 0.7, 0.0, 1.6, "the swing knee's flexion while the foot reaches for its goal"),
@@ -123,6 +132,8 @@ class RecoveryStep(Behaviour):
                   "the stance ankle's roll per metre of the COM left of the stance foot's middle ..."),
         Parameter("side_kv", "rad s/m", 4.0, -10.0, 10.0, "... and per m/s of its leftward speed"),
         Parameter("side_hip", "1", 1.0, 0.0, 2.0, "the stance hip's abduction per radian of that roll command"),
+        Parameter("arm", "rad", 1.5, -1.0, 3.14, "both arms' shoulder flexion goes to this in the step ..."),
+        Parameter("arm_time", "s", 0.2, 0.02, 1.0, "... in this time (Hermite)"),
         Parameter("stance_kp", "rad/m", 8.0, 0.0, 20.0, "the stance ankle's offset per metre of the capture point ahead of the foot"),
         Parameter("ankle_max", "rad", 0.3, 0.0, 0.6, "the stance ankle's offset at most this either way"),
         Parameter("min_swing", "s", 0.15, 0.0, 1.0, "the swing foot counts as down only after this"),
@@ -138,7 +149,7 @@ class RecoveryStep(Behaviour):
         self.leg = LegGeometry(ctx.character, "R")
         sites = [c["pos"] for c in ctx.character.body("FOOTR")["contacts"] + ctx.character.body("TOER")["contacts"]]
         self.sole_centre = 0.5 * (max(q[0] for q in sites) + min(q[0] for q in sites)) - ctx.character.joint_position("FOOTR")[0]
-        self.down_at = None
+        self.down_at = self.lift_at = None
         self.hip_x_range = [tuple(ctx.model.jnt_range[ctx.actor.joint_id(f"hip_{side}_x")]) for side in SIDES]
 
     def start(self, t: float) -> None:
@@ -156,9 +167,12 @@ class RecoveryStep(Behaviour):
         self.stance = 1 - self.swing
         self.base = s.angles().copy()
         self.lean = m.pelvis_lean()
+        self.stance_x = m.along(d.xpos[m.feet[self.stance]])[0]
         j = m.joints[self.swing]
         legs = np.array([j["hip"], j["knee"]])
         s.set_gains(legs, s.default_kp[legs] * self.params["swing_gain"], s.default_kv[legs] * self.params["swing_gain"])
+        self.shoulders = s.indices(["shoulder_r_z", "shoulder_l_z"])
+        self.arms_from = self.base[self.shoulders].copy()
         self.event(t, "step_forward" if self.direction > 0 else "step_back")
 
     def goal(self) -> float:
@@ -205,25 +219,38 @@ class RecoveryStep(Behaviour):
         m.flat_foot(targets, angles, self.stance, ankle, sideways)
         js, jw = m.joints[self.stance], m.joints[self.swing]
         targets[js["hip_x"]] = self.base[js["hip_x"]] + p["side_hip"] * sideways
-        targets[js["hip"]] = angles[js["hip"]] + (pelvis_lean - self.lean)
+        if m.foot_touching(self.stance):        # the stance hip turns the pelvis only through a foot on the ground
+            targets[js["hip"]] = angles[js["hip"]] + (pelvis_lean - self.lean)
+            self.stance_x = m.along(d.xpos[m.feet[self.stance]])[0]
+        else:                                   # off it (the mat's rebound) the foot is aimed back where it stood
+            targets[js["hip"]] = m.aim(self.stance, self.stance_x, angles[js["knee"]], self.leg)
         # the swing leg: lift, then reach; the thigh aimed in the world frame (as the leap's landing)
-        lifting = t - self.t0 < p["lift_time"]
+        if self.lift_at is None:
+            if float(d.subtree_linvel[m.pelvis][2]) < p["wait_vz"]:
+                self.lift_at = t
+                self.event(t, "step_lift")
+            else:                               # waiting: both feet as they stand, the swing leg held
+                m.flat_foot(targets, angles, self.swing, ankle, sideways)
+                s.hold(targets, t)
+                return
+        lifting = t - self.lift_at < p["lift_time"]
         knee = p["lift_knee"] if lifting else p["reach_knee"]
         stance_x = m.along(d.xpos[m.feet[self.stance]])[0]
-        hip_x = m.along(d.xpos[m.hips[self.swing]])[0]
-        thigh = self.leg.thigh_pitch_for(stance_x + goal - self.sole_centre - hip_x, knee)
         targets[jw["knee"]] = knee
-        targets[jw["hip"]] = thigh - pelvis_lean
+        targets[jw["hip"]] = m.aim(self.swing, stance_x + goal - self.sole_centre, knee, self.leg)
         targets[jw["hip_x"]] = self.sideways(height)
+        swing = hermite_scalar((t - self.t0) / p["arm_time"])
+        targets[self.shoulders] = self.arms_from + (np.array([1.0, -1.0]) * p["arm"] - self.arms_from) * swing
         m.flat_foot(targets, angles, self.swing, 0.0, 0.0)
         s.hold(targets, t)
-        if self.down_at is None and t - self.t0 >= p["min_swing"] and m.foot_touching(self.swing):
+        if self.down_at is None and t - self.lift_at >= p["min_swing"] and m.foot_touching(self.swing):
             self.down_at = t
             self.event(t, "step_down")
 
     @property
     def finished(self) -> bool:
-        return self.down_at is not None or self.ctx.data.time - self.t0 >= self.params["max_swing"]
+        return self.down_at is not None or (self.lift_at is not None
+                                            and self.ctx.data.time - self.lift_at >= self.params["max_swing"])
 
 
 class StaggeredStance(Behaviour):
@@ -242,6 +269,7 @@ class StaggeredStance(Behaviour):
         Parameter("rise_time", "s", 1.0, 0.1, 5.0,
                   "the knees straighten to standing and the lean goes to the balanced crouch's over this time (and "
                   "the arms likewise)"),
+        Parameter("rise_after", "s", 0.0, 0.0, 3.0, "the rise starts this long after the stance began (held till then)"),
         Parameter("kp", "rad/m", 6.0, 0.0, 20.0, "ankle offset per metre of the capture point ahead of target"),
         Parameter("target", "m", 0.0, -0.2, 0.2, "the capture point is servoed this far ahead of the support's middle"),
         Parameter("ankle_max", "rad", 0.3, 0.0, 0.6, "the ankles' offset at most this either way"),
@@ -290,6 +318,7 @@ class StaggeredStance(Behaviour):
         self.shoulders = s.indices(["shoulder_r_z", "shoulder_l_z"])
         self.arms_from = self.base[self.shoulders].copy()
         self.apart_from = self.feet_apart()
+        self.stood = [m.along(self.ctx.data.xpos[f])[0] for f in m.feet]
         self.event(t, "staggered_stance")
 
     def feet_apart(self) -> tuple[float, float]:
@@ -298,7 +327,7 @@ class StaggeredStance(Behaviour):
         return m.along(d.xpos[m.feet[1]] - d.xpos[m.feet[0]])
 
     def share(self, t: float) -> float:
-        return hermite_scalar((t - self.t0) / self.params["rise_time"])
+        return hermite_scalar((t - self.t0 - self.params["rise_after"]) / self.params["rise_time"])
 
     def pelvis_height(self) -> float:
         """The mid-hip point's height above the feet with the ankles' own height (the crouch table's measure)."""
@@ -343,8 +372,11 @@ class StaggeredStance(Behaviour):
         for k in (0, 1):
             j = m.joints[k]
             m.flat_foot(targets, angles, k, ankle, sideways)
-            if m.foot_touching(k):          # a hip turns the pelvis only through a leg on the ground
+            if m.foot_touching(k):          # a hip turns the pelvis only through a leg on the ground ...
                 targets[j["hip"]] = angles[j["hip"]] + trunk_error + stagger[k]
+                self.stood[k] = m.along(self.ctx.data.xpos[m.feet[k]])[0]
+            else:                           # ... off it the foot is aimed back where it stood
+                targets[j["hip"]] = m.aim(k, self.stood[k], angles[j["knee"]], self.leg)
             targets[j["hip_x"]] = self.base[j["hip_x"]] + p["side_hip"] * sideways + splay[k]
         s.hold(targets, t)
 

@@ -221,6 +221,7 @@ VAULT_SETTINGS = Schema(
     setting("step_after", "s", 0.0, 2.0, "... at least this long after the touchdown (and before the rise) ..."),
     setting("step_vz", "m/s", 0.0, 5.0,
             "... while the COM moves up or down slower than this (not in the impact's fall nor the rebound off the mat)"),
+    setting("step_wait_vz", "m/s", 0.0, 5.0, "step: the lift waits while the COM rises faster than this (the rebound)"),
     setting("step_lift_knee", "rad", 0.3, 2.4, "step: the swing knee's flexion that lifts the foot"),
     setting("step_lift_time", "s", 0.02, 0.5, "step: the lift lasts this long, then the reach"),
     setting("step_reach_knee", "rad", 0.0, 1.6, "step: the swing knee's flexion in the reach"),
@@ -233,7 +234,10 @@ VAULT_SETTINGS = Schema(
     setting("step_max", "m", 0.05, 0.9, "step: ... at most this far"),
     setting("step_width", "m", 0.0, 0.5, "step: sideways the swing foot lands half this beyond the COM's sideways capture point"),
     setting("step_kp", "rad/m", 0.0, 20.0, "step: the stance ankle's offset per metre of the capture point"),
-    setting("hold_rise_time", "s", 0.1, 5.0, "staggered stance: the rise to standing takes this long"),
+    setting("hold_rise_time", "s", 0.1, 5.0, "staggered stance: the rise to standing takes this long ..."),
+    setting("hold_rise_after", "s", 0.0, 3.0, "... from this long after the stance began"),
+    setting("step_arm", "rad", -1.0, 3.14, "step: both arms' shoulder flexion goes to this in the step ..."),
+    setting("step_arm_time", "s", 0.02, 1.0, "... in this time"),
     setting("hold_kp", "rad/m", 0.0, 20.0, "staggered stance: ankle offset per metre of the capture point ahead of hold_target"),
     setting("hold_target", "m", -0.2, 0.2, "staggered stance: the capture point this far ahead of the support's middle"),
     setting("hold_lean", "rad", -0.5, 1.0, "staggered stance: the pelvis leans this much more than the crouch she is at"),
@@ -920,13 +924,14 @@ class Vault(Sequence):
             swing_gain=c["step_swing_gain"], spread=c["step_spread"], beyond=c["step_beyond"], min_step=c["step_min"],
             max_step=c["step_max"], width=c["step_width"], stance_kp=c["step_kp"], side_kp=c["hold_side_kp"],
             side_kv=c["hold_side_kv"], side_hip=c["hold_side_hip"], ankle_max=c["catch_ankle"], unloaded=c["step_unloaded"],
+            arm=c["step_arm"], arm_time=c["step_arm_time"], wait_vz=c["step_wait_vz"],
             min_height=c["absorb_min_height"]))
 
     def staggered(self, bow: tuple[float, float, float] | None = None) -> StaggeredStance:
         """The stance after the step held (control/recovery_step.py), standing up, and with ``bow`` the bow."""
         c = self.cfg
         return StaggeredStance(StaggeredStance.schema.validate(dict(
-            rise_time=c["hold_rise_time"], kp=c["hold_kp"], target=c["hold_target"],
+            rise_time=c["hold_rise_time"], rise_after=c["hold_rise_after"], kp=c["hold_kp"], target=c["hold_target"],
             ankle_max=c["catch_ankle"], lean=c["hold_lean"], lean_kp=c["hold_lean_kp"], arm=c["hold_arm"],
             side_kp=c["hold_side_kp"], side_kv=c["hold_side_kv"], side_hip=c["hold_side_hip"],
             stagger_kp=c["hold_stagger_kp"], splay_kp=c["hold_splay_kp"], level_kp=c["hold_level_kp"], min_height=c["absorb_min_height"])), self.ctx, bow)
