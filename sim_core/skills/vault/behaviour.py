@@ -219,6 +219,9 @@ VAULT_SETTINGS = Schema(
             "held (StaggeredStance) through the gesture and the bow; 0 = no step"),
     setting("step_at", "m", 0.02, 0.5, "step: the capture point this far from catch_target ..."),
     setting("step_after", "s", 0.0, 2.0, "... at least this long after the touchdown (and before the rise) ..."),
+    setting("step_before", "s", 0.0, 3.0,
+            "... and at most this long after it (later the mat's rebound unloads the stance foot: no step then, the "
+            "landing goes on without it)"),
     setting("step_vz", "m/s", 0.0, 5.0,
             "... while the COM moves up or down slower than this (not in the impact's fall nor the rebound off the mat)"),
     setting("step_wait_vz", "m/s", 0.0, 5.0, "step: the lift waits while the COM rises faster than this (the rebound)"),
@@ -891,9 +894,10 @@ class Vault(Sequence):
 
     def must_step(self, absorb: MatAbsorb, t: float) -> bool:
         """recovery_step: the capture point (the absorb's measure) further than step_at from catch_target,
-        step_after after the touchdown, the COM's vertical speed under step_vz; the step's direction is its sign."""
+        from step_after to step_before after the touchdown, the COM's vertical speed under step_vz; the step's
+        direction is its sign."""
         c = self.cfg
-        if not c["recovery_step"] or t - absorb.t0 < c["step_after"]:
+        if not c["recovery_step"] or not c["step_after"] <= t - absorb.t0 <= c["step_before"]:
             return False
         if abs(float(self.ctx.data.subtree_linvel[self.pelvis][2])) >= c["step_vz"]:
             return False
