@@ -222,6 +222,9 @@ VAULT_SETTINGS = Schema(
     setting("step_before", "s", 0.0, 3.0,
             "... and at most this long after it (later the mat's rebound unloads the stance foot: no step then, the "
             "landing goes on without it)"),
+    setting("step_spin", "bool", 0.0, 1.0,
+            "step: 1 = the trigger's capture point takes its speed from the angular momentum about the feet (the "
+            "trunk's spin counts, as capture_spin; the catch's own servo unchanged); 0 = the catch's"),
     setting("step_vz", "m/s", 0.0, 5.0,
             "... while the COM moves up or down slower than this (not in the impact's fall nor the rebound off the mat)"),
     setting("step_wait_vz", "m/s", 0.0, 5.0, "step: the lift waits while the COM rises faster than this (the rebound)"),
@@ -433,14 +436,14 @@ class MatAbsorb(Behaviour):
         middle = 0.5 * (points[:, axis].min() + points[:, axis].max())
         return float(com[axis] - middle), float(d.subtree_linvel[self.pelvis][axis])
 
-    def capture_point(self, ahead: float, speed: float) -> tuple[float, float]:
+    def capture_point(self, ahead: float, speed: float, spin: bool | None = None) -> tuple[float, float]:
         """The capture point (the COM's place plus its speed times sqrt(h / g)) ahead of the feet's middle,
-        and the speed it takes (with capture_spin, from the angular momentum about the feet's middle);
+        and the speed it takes (with capture_spin, or ``spin``, from the angular momentum about the feet's middle);
         ``ahead``, ``speed``: com_from_feet's."""
         d, c = self.ctx.data, self.cfg
         height = float(d.subtree_com[self.pelvis][2]) - float(self.landing.airborne.support.points(d)[:, 2].min())
         height = max(height, c["absorb_min_height"])
-        if c["capture_spin"]:
+        if c["capture_spin"] if spin is None else spin:
             # the angular momentum about the feet's middle (the spin about the COM with the COM's own) as
             # the speed a point mass at the COM's height would carry: the trunk's rotation counts too
             v = d.subtree_linvel[self.pelvis]
@@ -901,7 +904,7 @@ class Vault(Sequence):
             return False
         if abs(float(self.ctx.data.subtree_linvel[self.pelvis][2])) >= c["step_vz"]:
             return False
-        capture, _ = absorb.capture_point(*absorb.com_from_feet())
+        capture, _ = absorb.capture_point(*absorb.com_from_feet(), spin=bool(c["step_spin"]) or None)
         error = capture - c["catch_target"]
         if abs(error) <= c["step_at"]:
             return False
