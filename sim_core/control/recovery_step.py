@@ -290,6 +290,8 @@ class StaggeredStance(Behaviour):
         Parameter("level_kp", "rad/m", 0.0, 0.0, 40.0,
                   "each knee straightens by this per metre its foot stands higher in the ground than the feet's mean "
                   "(the lighter foot is pressed down, so both carry her)"),
+        Parameter("flat_off", "bool", 0.0, 0.0, 1.0,
+                  "1 = a foot off the ground is held flat (no capture-point offset), so it comes down flat"),
         Parameter("still_speed", "m/s", 0.05, 0.0, 1.0, "still: the COM slower than this"),
         Parameter("min_height", "m", 0.1, 0.05, 1.0, "the capture point's COM height is at least this (a guard)"),
     )
@@ -371,8 +373,10 @@ class StaggeredStance(Behaviour):
         splay = 0.5 * p["splay_kp"] * (left - self.apart_from[1]) * np.array([1.0, -1.0])
         for k in (0, 1):
             j = m.joints[k]
-            m.flat_foot(targets, angles, k, ankle, sideways)
-            if m.foot_touching(k):          # a hip turns the pelvis only through a leg on the ground ...
+            touching = m.foot_touching(k)
+            # the capture point's ankle offset on a foot off the ground only tips it: that foot is held flat
+            m.flat_foot(targets, angles, k, ankle if touching or not p["flat_off"] else 0.0, sideways)
+            if touching:                    # a hip turns the pelvis only through a leg on the ground ...
                 targets[j["hip"]] = angles[j["hip"]] + trunk_error + stagger[k]
                 self.stood[k] = m.along(self.ctx.data.xpos[m.feet[k]])[0]
             else:                           # ... off it the foot is aimed back where it stood

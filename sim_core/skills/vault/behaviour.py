@@ -259,6 +259,7 @@ VAULT_SETTINGS = Schema(
     setting("hold_min", "s", 0.0, 2.0, "... and the stance has held this long"),
     setting("hold_level_kp", "rad/m", 0.0, 40.0,
             "staggered stance: each knee straightens by this per metre its foot stands higher in the ground than the mean"),
+    setting("hold_flat_off", "bool", 0.0, 1.0, "staggered stance: 1 = a foot off the ground is held flat (no ankle offset)"),
     setting("step_unloaded", "m", 0.0, 0.2, "step: the foot standing this much higher in the ground than the other swings"),
     setting("hold_stagger_kp", "rad/m", 0.0, 20.0,
             "staggered stance: hip pitch, opposite on the two legs, per metre the feet have moved apart fore and aft"),
@@ -941,7 +942,8 @@ class Vault(Sequence):
             rise_time=c["hold_rise_time"], rise_after=c["hold_rise_after"], kp=c["hold_kp"], target=c["hold_target"],
             ankle_max=c["catch_ankle"], lean=c["hold_lean"], lean_kp=c["hold_lean_kp"], arm=c["hold_arm"],
             side_kp=c["hold_side_kp"], side_kv=c["hold_side_kv"], side_hip=c["hold_side_hip"],
-            stagger_kp=c["hold_stagger_kp"], splay_kp=c["hold_splay_kp"], level_kp=c["hold_level_kp"], min_height=c["absorb_min_height"])), self.ctx, bow)
+            stagger_kp=c["hold_stagger_kp"], splay_kp=c["hold_splay_kp"], level_kp=c["hold_level_kp"],
+            flat_off=c["hold_flat_off"], min_height=c["absorb_min_height"])), self.ctx, bow)
 
     @property
     def run_complete(self) -> bool:
