@@ -21,13 +21,12 @@ from ..ballistics import GRAVITY
 from .balance import CROUCH_TABLE_ROWS as CROUCH_ROWS, LegGeometry, standing_hip_height
 from .behaviour import Behaviour, ControlContext
 from .crouch import CrouchTable
+from .leap import UP
 from .measure import SupportGeometry, pitch_of, roll_of
 from .servo import hermite_scalar
 from ..schema import Parameter, Schema
 
-UP = np.array([0.0, 0.0, 1.0])
 SIDES = "rl"
-CROUCH_LOW = 0.5           # definition: the crouch table from half the standing hip height (as the leap's landing's)
 
 
 class StanceMeasure:
@@ -313,7 +312,8 @@ class StaggeredStance(Behaviour):
         self.base = s.angles().copy()
         self.knees = np.array([j["knee"] for j in m.joints])
         stand = standing_hip_height(self.ctx.character)
-        self.crouch = CrouchTable(self.ctx.model, self.ctx.character, np.linspace(CROUCH_LOW * stand, stand, CROUCH_ROWS),
+        # definition: balanced crouches from half the standing hip height up, as the leap's landing's table
+        self.crouch = CrouchTable(self.ctx.model, self.ctx.character, np.linspace(0.5 * stand, stand, CROUCH_ROWS),
                                   stand, actor=self.ctx.actor)
         self.knees_from = self.base[self.knees].copy()
         self.lean_from = m.pelvis_lean()
