@@ -46,6 +46,7 @@ from ...control.servo import hermite_scalar
 from ...control.balance import Balance
 from ...control.leap import UP, Landing, balance_after_landing, run_strength
 from ...control.measure import pitch_of, roll_of
+from ...control.recovery_step import RecoveryStep, StaggeredStance, StepAndHold
 from ...control.sequencer import Sequence, Step
 from ...analysis import FOOT_BODIES
 from ..handspring.behaviour import HAND_BODIES, PoseMove
@@ -212,6 +213,58 @@ VAULT_SETTINGS = Schema(
     setting("catch_rise_time", "s", 0.1, 5.0, "catch: the rise along the crouch table takes this long"),
     setting("catch_within", "m", 0.0, 0.3, "catch: the rise starts once the capture point is this close to catch_target ..."),
     setting("catch_min", "s", 0.0, 2.0, "... and at least this long after the touchdown"),
+    setting("recovery_step", "bool", 0.0, 1.0,
+            "1 = when the capture point leaves step_at of catch_target after the touchdown (the catch's or the "
+            "absorb's), one foot steps to it (control/recovery_step.py RecoveryStep) and the staggered stance is "
+            "held (StaggeredStance) through the gesture and the bow; 0 = no step"),
+    setting("step_at", "m", 0.02, 0.5, "step: the capture point this far from catch_target ..."),
+    setting("step_after", "s", 0.0, 2.0, "... at least this long after the touchdown (and before the rise) ..."),
+    setting("step_before", "s", 0.0, 3.0,
+            "... and at most this long after it (later the mat's rebound unloads the stance foot: no step then, the "
+            "landing goes on without it)"),
+    setting("step_spin", "bool", 0.0, 1.0,
+            "step: 1 = the trigger's capture point takes its speed from the angular momentum about the feet (the "
+            "trunk's spin counts, as capture_spin; the catch's own servo unchanged); 0 = the catch's"),
+    setting("step_vz", "m/s", 0.0, 5.0,
+            "... while the COM moves up or down slower than this (not in the impact's fall nor the rebound off the mat)"),
+    setting("step_wait_vz", "m/s", 0.0, 5.0, "step: the lift waits while the COM rises faster than this (the rebound)"),
+    setting("step_lift_knee", "rad", 0.3, 2.4, "step: the swing knee's flexion that lifts the foot"),
+    setting("step_lift_time", "s", 0.02, 0.5, "step: the lift lasts this long, then the reach"),
+    setting("step_reach_knee", "rad", 0.0, 1.6, "step: the swing knee's flexion in the reach"),
+    setting("step_swing_gain", "1", 1.0, 10.0, "step: gain factor of the swing leg's hip and knee servos"),
+    setting("step_spread", "1", 0.0, 1.0,
+            "step: the sole lands past the capture point by this share of its distance from the stance sole (1: the "
+            "capture point in the middle of the new stance) ..."),
+    setting("step_beyond", "m", -0.3, 0.3, "step: ... and this far further"),
+    setting("step_min", "m", 0.0, 0.6, "step: ... at least this far from the stance foot ..."),
+    setting("step_max", "m", 0.05, 0.9, "step: ... at most this far"),
+    setting("step_width", "m", 0.0, 0.5, "step: sideways the swing foot lands half this beyond the COM's sideways capture point"),
+    setting("step_kp", "rad/m", 0.0, 20.0, "step: the stance ankle's offset per metre of the capture point"),
+    setting("hold_rise_time", "s", 0.1, 5.0, "staggered stance: the rise to standing takes this long ..."),
+    setting("hold_rise_after", "s", 0.0, 3.0, "... from this long after the stance began"),
+    setting("step_arm", "rad", -1.0, 3.14, "step: both arms' shoulder flexion goes to this in the step ..."),
+    setting("step_arm_time", "s", 0.02, 1.0, "... in this time"),
+    setting("hold_kp", "rad/m", 0.0, 20.0, "staggered stance: ankle offset per metre of the capture point ahead of hold_target"),
+    setting("hold_target", "m", -0.2, 0.2, "staggered stance: the capture point this far ahead of the support's middle"),
+    setting("hold_lean", "rad", -0.5, 1.0, "staggered stance: the pelvis leans this much more than the crouch she is at"),
+    setting("hold_lean_kp", "rad/m", -10.0, 10.0, "staggered stance: ... less this per metre of the capture point's error"),
+    setting("hold_arm", "rad", -1.0, 3.14, "staggered stance: both arms' shoulder flexion"),
+    setting("hold_side_kp", "rad/m", -20.0, 20.0,
+            "step and staggered stance: ankle roll per metre of the COM left of the (stance) feet's middle"),
+    setting("hold_side_kv", "rad s/m", -10.0, 10.0, "step and staggered stance: ankle roll per m/s of the COM's leftward speed"),
+    setting("hold_side_hip", "1", 0.0, 2.0, "step and staggered stance: hip abduction per radian of the ankles' roll command"),
+    setting("hold_steps", "1", 0.0, 5.0,
+            "staggered stance: at most this many further steps, each when the capture point nears the support's edge ..."),
+    setting("hold_margin", "m", -0.2, 0.3, "... within this of it ..."),
+    setting("hold_min", "s", 0.0, 2.0, "... and the stance has held this long"),
+    setting("hold_level_kp", "rad/m", 0.0, 40.0,
+            "staggered stance: each knee straightens by this per metre its foot stands higher in the ground than the mean"),
+    setting("hold_flat_off", "bool", 0.0, 1.0, "staggered stance: 1 = a foot off the ground is held flat (no ankle offset)"),
+    setting("step_unloaded", "m", 0.0, 0.2, "step: the foot standing this much higher in the ground than the other swings"),
+    setting("hold_stagger_kp", "rad/m", 0.0, 20.0,
+            "staggered stance: hip pitch, opposite on the two legs, per metre the feet have moved apart fore and aft"),
+    setting("hold_splay_kp", "rad/m", 0.0, 20.0,
+            "staggered stance: hip abduction, opposite on the two legs, per metre the feet have moved apart sideways"),
 )
 
 
@@ -384,14 +437,14 @@ class MatAbsorb(Behaviour):
         middle = 0.5 * (points[:, axis].min() + points[:, axis].max())
         return float(com[axis] - middle), float(d.subtree_linvel[self.pelvis][axis])
 
-    def capture_point(self, ahead: float, speed: float) -> tuple[float, float]:
+    def capture_point(self, ahead: float, speed: float, spin: bool | None = None) -> tuple[float, float]:
         """The capture point (the COM's place plus its speed times sqrt(h / g)) ahead of the feet's middle,
-        and the speed it takes (with capture_spin, from the angular momentum about the feet's middle);
+        and the speed it takes (with capture_spin, or ``spin``, from the angular momentum about the feet's middle);
         ``ahead``, ``speed``: com_from_feet's."""
         d, c = self.ctx.data, self.cfg
         height = float(d.subtree_com[self.pelvis][2]) - float(self.landing.airborne.support.points(d)[:, 2].min())
         height = max(height, c["absorb_min_height"])
-        if c["capture_spin"]:
+        if c["capture_spin"] if spin is None else spin:
             # the angular momentum about the feet's middle (the spin about the COM with the COM's own) as
             # the speed a point mass at the COM's height would carry: the trunk's rotation counts too
             v = d.subtree_linvel[self.pelvis]
@@ -754,6 +807,7 @@ class Vault(Sequence):
         limp = ("shoulder_r_z", "shoulder_l_z", "shoulder_r_x", "shoulder_l_x", "shoulder_r_y", "shoulder_l_y",
                 "wrist_r_x", "wrist_l_x", "wrist_r_y", "wrist_l_y")
         self.pushed = self.deck_going_down = self.opened = False
+        self.stepping, self.step_direction = False, 0.0
         self.hands_off_since = None
 
         def board(t):
@@ -826,16 +880,70 @@ class Vault(Sequence):
             Step("second_flight", second_flight, ready_to_land),
             Step("landing", land, lambda b, t: b.stage != "flight"),
             Step("absorb", lambda t: (MatCatch if c["catch"] else MatAbsorb)(ctx, c, self.previous),
-                 lambda b, t: b.finished or t - b.t0 > c["absorb_max"]),
-            Step("rise", lambda t: (MatCatchRise if c["catch"] else MatRise)(ctx, c, self.previous.landing),
+                 lambda b, t: b.finished or t - b.t0 > c["absorb_max"] or self.must_step(b, t)),
+            Step("rise", lambda t: self.recovery_step() if self.stepping else
+                 (MatCatchRise if c["catch"] else MatRise)(ctx, c, self.previous.landing),
                  lambda b, t: b.finished),
-            Step("balance", lambda t: self.stand_up(),
-                 lambda b, t: b.posture_reached(t) and t - b.t0 >= c["stand_time"] + CONSTANTS.stand_settle),
+            Step("balance", lambda t: self.step_and_hold() if self.stepping else self.stand_up(),
+                 lambda b, t: (b.risen(t) and t - b.t_stance >= c["hold_rise_time"] + CONSTANTS.stand_settle)
+                 if self.stepping
+                 else b.posture_reached(t) and t - b.t0 >= c["stand_time"] + CONSTANTS.stand_settle),
             Step("gesture", lambda t: ArmGesture(ctx, self.previous),
                  lambda b, t: b.finished),
-            Step("bow", lambda t: self.bow(), lambda b, t: b.posture_back(t)),
-            Step("stand", lambda t: self.rebalance(move_start=0.0, return_to_stand=0)),
+            Step("bow", lambda t: self.staggered((CONSTANTS.bow_pitch, CONSTANTS.bow_time, CONSTANTS.bow_hold))
+                 if self.stepping else self.bow(), lambda b, t: b.posture_back(t)),
+            Step("stand", lambda t: self.staggered() if self.stepping else
+                 self.rebalance(move_start=0.0, return_to_stand=0)),
         ]
+
+    def must_step(self, absorb: MatAbsorb, t: float) -> bool:
+        """recovery_step: the capture point (the absorb's measure) further than step_at from catch_target,
+        from step_after to step_before after the touchdown, the COM's vertical speed under step_vz; the step's
+        direction is its sign."""
+        c = self.cfg
+        if not c["recovery_step"] or not c["step_after"] <= t - absorb.t0 <= c["step_before"]:
+            return False
+        if abs(float(self.ctx.data.subtree_linvel[self.pelvis][2])) >= c["step_vz"]:
+            return False
+        capture, _ = absorb.capture_point(*absorb.com_from_feet(), spin=bool(c["step_spin"]) or None)
+        error = capture - c["catch_target"]
+        if abs(error) <= c["step_at"]:
+            return False
+        self.stepping, self.step_direction = True, error
+        return True
+
+    def recovery_step(self) -> RecoveryStep:
+        """The step to the capture point (control/recovery_step.py), with the vault's step settings."""
+        return RecoveryStep(self.step_params(), self.ctx, self.step_direction)
+
+    def step_and_hold(self) -> StepAndHold:
+        """The staggered stance after the step, with further steps (hold_steps) while the capture point nears
+        the support's edge (control/recovery_step.py)."""
+        c = self.cfg
+        return StepAndHold(StepAndHold.schema.validate(dict(max_steps=c["hold_steps"], margin=c["hold_margin"],
+                                                            min_hold=c["hold_min"])),
+                           self.ctx, self.step_params(), self.staggered().params)
+
+    def step_params(self) -> dict:
+        """RecoveryStep's parameters from the vault's step settings."""
+        c = self.cfg
+        return RecoveryStep.schema.validate(dict(
+            lift_knee=c["step_lift_knee"], lift_time=c["step_lift_time"], reach_knee=c["step_reach_knee"],
+            swing_gain=c["step_swing_gain"], spread=c["step_spread"], beyond=c["step_beyond"], min_step=c["step_min"],
+            max_step=c["step_max"], width=c["step_width"], stance_kp=c["step_kp"], side_kp=c["hold_side_kp"],
+            side_kv=c["hold_side_kv"], side_hip=c["hold_side_hip"], ankle_max=c["catch_ankle"], unloaded=c["step_unloaded"],
+            arm=c["step_arm"], arm_time=c["step_arm_time"], wait_vz=c["step_wait_vz"],
+            min_height=c["absorb_min_height"]))
+
+    def staggered(self, bow: tuple[float, float, float] | None = None) -> StaggeredStance:
+        """The stance after the step held (control/recovery_step.py), standing up, and with ``bow`` the bow."""
+        c = self.cfg
+        return StaggeredStance(StaggeredStance.schema.validate(dict(
+            rise_time=c["hold_rise_time"], rise_after=c["hold_rise_after"], kp=c["hold_kp"], target=c["hold_target"],
+            ankle_max=c["catch_ankle"], lean=c["hold_lean"], lean_kp=c["hold_lean_kp"], arm=c["hold_arm"],
+            side_kp=c["hold_side_kp"], side_kv=c["hold_side_kv"], side_hip=c["hold_side_hip"],
+            stagger_kp=c["hold_stagger_kp"], splay_kp=c["hold_splay_kp"], level_kp=c["hold_level_kp"],
+            flat_off=c["hold_flat_off"], min_height=c["absorb_min_height"])), self.ctx, bow)
 
     @property
     def run_complete(self) -> bool:
