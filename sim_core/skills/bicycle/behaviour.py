@@ -83,6 +83,8 @@ BICYCLE_RANGES = Schema(
     Parameter("grade_filter", "s", 0.0, 0.0, 5.0, "time constant of the low-pass on the road's grade the load's feed-forward feels (BicycleView.road_sine; 0: as sensed each tick)"),
     Parameter("rolling_feedforward", "1", 0.0, 0.0, 2.0, "share of the crank torque that holds the rolling resistance at the desired speed (gear r c v_d, laws.load_torque) added to eq. 7 (0: the seed's eq. 7)"),
     Parameter("hold_seat_pitch", "1", 0.0, 0.0, 1.0, "1: while riding, the limbs' targets hold the pelvis at its mounted pitch on the saddle (``_seat_pelvis``, as the stop does once the foot is down); 0: the pelvis pitches as the limbs let it (the man's: 56 deg forward at the top of a stroke)"),
+    Parameter("seat_pitch_time", "s", 0.0, 0.0, 10.0, "while riding, the limbs' targets hold the pelvis on the saddle at a pitch that moves from the mounted one to seat_pitch with this time constant (``_seat_pelvis``): the rider's swing fore and aft on the saddle over each pedal stroke is held (0: off, the pelvis pitches as the limbs let it; hold_seat_pitch, when 1, holds the mounted pitch instead)"),
+    Parameter("seat_pitch", "rad", 0.0, -1.2, 0.0, "the pelvis's pitch on the saddle (about the frame's lateral axis, forward tilt negative) the limbs hold while riding with seat_pitch_time (the man's free pelvis pitched 42-49 deg forward on average, swinging 17-55 deg peak to peak)"),
     Parameter("ik_velocity_filter", "s", 0.0, 0.0, 0.5, "time constant of the low-pass on the limb targets' velocity that leads the servos (0: unfiltered)"),
     Parameter("speed_ramp", "m/s^2", 0.1, 0.1, 10.0, "eq. 7's desired speed moves to a newly commanded one at this rate (a start, a speed step)"),
     Parameter("roll_gain", "1", 0.0, 0.0, 20.0, "eq. 11 k_alpha at reference_speed"),
@@ -385,8 +387,9 @@ class Bicycling(Behaviour):
         self.pelvis = model.body(ctx.actor.prefix + "PELVIS").id
         self.root_qpos = int(model.joint(ctx.actor.prefix + "root").qposadr[0])
         self.pelvis_pitch = None            # stop: the pelvis's pitch on the saddle held once the foot is down (rad)
-        if self.params["hold_seat_pitch"]:  # held from the mount (the child's hip met its flexion limit at the top)
-            self.pelvis_pitch = self._pelvis_pitch(ctx.data)
+        self.seat_pitch_time = 0.0 if self.params["hold_seat_pitch"] else self.params["seat_pitch_time"]
+        if self.params["hold_seat_pitch"] or self.seat_pitch_time:  # held from the mount (the child's hip met its flexion
+            self.pelvis_pitch = self._pelvis_pitch(ctx.data)        # limit at the top), or moved to seat_pitch
         left_leg = ("hip_l_y", "hip_l_x", "hip_l_z", "knee_l_y")
         self.left_leg_servos = servos.indices(left_leg)
         self.left_leg_dofs = servos.dof_adr[self.left_leg_servos]
@@ -607,7 +610,10 @@ class Bicycling(Behaviour):
             scratch.qpos[bike.crank_qpos] = self.crank_command
         for side, value in (ankles or {}).items():
             scratch.qpos[servos.qpos_adr[self.ankle_servos[side]]] = value
-        if self.planted is not None or self.params["hold_seat_pitch"]:
+        if self.seat_pitch_time and self.planted is None:    # the pitch held moves from the mount's to seat_pitch
+            blend = ctx.control_dt / (self.seat_pitch_time + ctx.control_dt)
+            self.pelvis_pitch += blend * (self.params["seat_pitch"] - self.pelvis_pitch)
+        if self.planted is not None or self.params["hold_seat_pitch"] or self.seat_pitch_time:
             self._seat_pelvis(scratch)
         solve(ctx.model, scratch, self.pairs, which, servos.dof_adr[servo_rows], ctx.data.qpos, IK_ITERATIONS_PER_TICK)
         goal = self.target.copy()
