@@ -124,6 +124,14 @@ def test_fast_hills_and_a_flat_hill_are_offered():
         assert course_for(params(course="hill", **values)).hill
 
 
+def test_a_gentle_turn_is_offered_from_a_short_lead_in():
+    """The lead-in rule (min_turn_lead) is for turns asking more than min_turn_lead_lean: the audit's seed 11 #7,
+    a 35.9 m turn at 4.28 m/s after 2.3 m with a 2.95 m look-ahead (3 deg of lean), rode (roll 3.8 deg)."""
+    c = course_for(params(course="turn", speed=4.28, gear=4.58, turn_angle=1.24, turn_radius=35.91, turn_after=2.3,
+                          lookahead_time=0.69))
+    assert c.path is not None
+
+
 def test_a_turn_within_the_lean_limit_is_accepted():
     table = Bicycling.settings_schema.by_name
     speed = float(RANDOM.uniform(SLOWEST, table["max_turn_speed"].default))

@@ -18,6 +18,9 @@ Control, every tick (laws.py for the equations):
   * steering: eq. 11 gives the fork angle; inverse kinematics puts the hands on the grips of a
     fork turned to it; the arms' servos steer the bicycle through the hand springs ([A] 142);
   * waist, neck and wrists hold their mounted angles ([A] 144);
+  * the rider held on his saddle: the limbs' inverse kinematics is solved with the rider turned about the
+    (passive) seat pivot to seat_pitch, so the arms and legs hold the pelvis's pitch and the rider does not
+    swing fore and aft with each pedal stroke (which rocked the frame's speed by +-4 %: docs/bicycle.md);
   * coasting (the coast and stop courses, a freewheel bicycle): eq. 7 off, the legs turn the cranks
     level and hold them; stopping: eq. 7's braking torque to the rim brakes (joint friction set
     through the edit log), the left foot let go of its pedal below foot_release_speed and put down
@@ -74,7 +77,8 @@ BICYCLE_RANGES = Schema(
     Parameter("max_turn_lean", "rad", 0.0, 0.0, 0.5, "a turn (the turn course, a given path's bends) is offered asking a steady lean (tan = v^2 / (g r)) up to this (and course.py's MAX_LEAN); more, the rider fell or leaned past 20 deg"),
     Parameter("max_turn_speed", "m/s", 8.0, 0.5, 8.0, "a turn (the turn course, a given path's bends) is offered up to this speed (faster, the rider fell or leaned past 20 deg after the turn; course.py refuses it)"),
     Parameter("min_turn_lookahead", "s", 0.25, 0.25, 3.0, "the turn course and the slalom are offered from this lookahead_time (course.py; shorter, the heading was left 6-53 deg off after a tight turn)"),
-    Parameter("min_turn_lead", "1", 0.0, 0.0, 10.0, "the turn course and the slalom are offered with turn_after at least this many look-ahead distances (lookahead_time x speed) of straight before the turn (course.py; shorter, the pursuit aims around the corner from the start and the rider fell within 1.5 s)"),
+    Parameter("min_turn_lead", "1", 0.0, 0.0, 10.0, "the turn course and the slalom asking more than min_turn_lead_lean of lean are offered with turn_after at least this many look-ahead distances (lookahead_time x speed) of straight before the turn (course.py; shorter, the pursuit aims around the corner from the start and the rider fell within 1.5 s)"),
+    Parameter("min_turn_lead_lean", "rad", 0.0, 0.0, 0.5, "min_turn_lead applies to turns and slaloms asking a steady lean above this (course.py; gentler turns passed from any lead-in)"),
     Parameter("max_turn_lookahead_radii", "1", 0.1, 0.1, 100.0, "the turn course is offered with a look-ahead distance (lookahead_time x speed) of at most this many turn radii (course.py; further, the pursuit cut the turn and the rider fell in it)"),
     Parameter("min_turn_radius", "m", 3.0, 3.0, 100.0, "a turn (the turn course, a given path's bends) is offered on a radius of at least this (course.py), whatever its lean; tighter, the rider fell (3: the schema's tightest turn, no limit beyond it)"),
     Parameter("max_slalom_acceleration", "m/s^2", 0.1, 0.1, 10.0, "the slalom is offered up to this peak lateral acceleration of its sine, offset (pi v / spacing)^2 (course.py; more, the rider fell or missed gates)"),

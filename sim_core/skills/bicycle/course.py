@@ -87,10 +87,10 @@ def course_for(p: dict) -> Course:
         path = turn_path(p["turn_angle"], p["turn_after"], p["turn_radius"], RUN_OUT)
         _check_turn(p["speed"], p["turn_radius"], "turn_radius", p["max_turn_lean"], p["min_turn_radius"],
                     p["max_turn_speed"])
-        _check_lookahead(p, p["turn_radius"])
+        _check_lookahead(p, math.atan(p["speed"] ** 2 / (GRAVITY * p["turn_radius"])), p["turn_radius"])
     elif name == "slalom":
         _check_slalom(p)
-        _check_lookahead(p)
+        _check_lookahead(p, math.atan(slalom_acceleration(p["speed"], p["gate_spacing"], p["gate_offset"]) / GRAVITY))
         path, gates = slalom(p["gate_count"], p["gate_spacing"], p["gate_offset"], p["turn_after"])
     elif name == "speed_steps":
         speeds = ((0.0, p["speed"]), (p["step_time"], p["second_speed"]), (2 * p["step_time"], p["third_speed"]))
@@ -140,22 +140,24 @@ def wheel_circumference(p: dict) -> float:
     return 2 * math.pi * wheel_radius(p)
 
 
-def _check_lookahead(p: dict, radius: float | None = None) -> None:
+def _check_lookahead(p: dict, lean: float, radius: float | None = None) -> None:
     """A course that turns off its straight lead-in (the turn course, the slalom) is followed by pure pursuit
-    (behaviour.py) with a look-ahead of at least the table's ``min_turn_lookahead`` s, aiming no further than its
-    ``min_turn_lead`` look-ahead distances (lookahead_time x speed) from the start, so that the aim starts on
-    the straight, and, on the turn course, no further than its ``max_turn_lookahead_radii`` turn radii ahead:
-    where the turns were measured to pass (docs/bicycle.md, the audit's margins, tenth session)."""
+    (behaviour.py) with a look-ahead of at least the table's ``min_turn_lookahead`` s; one asking a steady ``lean``
+    (rad) above its ``min_turn_lead_lean`` aims no further than its ``min_turn_lead`` look-ahead distances
+    (lookahead_time x speed) from the start, so that the aim starts on the straight; and on the turn course no
+    further than its ``max_turn_lookahead_radii`` turn radii ahead: where the turns were measured to pass
+    (docs/bicycle.md, the rider held on his saddle: the audit's margins, tenth session)."""
     ahead = p["lookahead_time"] * p["speed"]
     if p["lookahead_time"] < p["min_turn_lookahead"]:
         raise ParameterError(f"a course that turns is followed with lookahead_time >= {p['min_turn_lookahead']:g} s "
                              f"(asked: {p['lookahead_time']:g} s); shorter, the heading was measured to be left 6-53 deg off "
                              f"after a tight turn")
-    if p["turn_after"] < p["min_turn_lead"] * ahead:
+    if lean > p["min_turn_lead_lean"] and p["turn_after"] < p["min_turn_lead"] * ahead:
         raise ParameterError(f"a course that turns is ridden with turn_after >= {p['min_turn_lead']:g} x lookahead_time x "
                              f"speed = {p['min_turn_lead'] * ahead:.2f} m of straight before it (asked: {p['turn_after']:g} m); "
-                             f"shorter, the pursuit aims around the corner from the start and the rider was measured to "
-                             f"fall: a shorter lookahead_time or a longer turn_after would do")
+                             f"shorter, the pursuit aims around the corner from the start and a turn asking {math.degrees(lean):.1f} deg "
+                             f"of lean (more than {math.degrees(p['min_turn_lead_lean']):.0f} deg) was measured to fall: a "
+                             f"shorter lookahead_time or a longer turn_after would do")
     if radius is not None and ahead > p["max_turn_lookahead_radii"] * radius:
         raise ParameterError(f"a turn of turn_radius {radius:g} m is followed with lookahead_time x speed <= "
                              f"{p['max_turn_lookahead_radii']:g} x turn_radius = {p['max_turn_lookahead_radii'] * radius:.2f} m "
