@@ -86,6 +86,7 @@ def test_speed_steps_and_slow_start():
     ({"course": "slalom", "speed": 4.0, "gate_spacing": 8.0, "gate_offset": 1.0}, "gate_offset <= 0.65 m"),
     ({"course": "slalom", "speed": 4.0, "gate_spacing": 20.0, "gate_offset": 1.5}, "gate_offset <= 1.00 m"),
     ({"course": "slalom", "speed": 4.0, "gate_width": 1.0}, "gate_width >= 1.5 m"),
+    ({"course": "slalom", "speed": 5.5, "gate_spacing": 13.7, "lookahead_time": 0.4}, "lookahead_time >= 0.6 s (asked: 0.4 s)"),
     ({"course": "slalom", "speed": 4.0, "turn_after": 4.0}, "turn_after >= 5 m"),
     ({"course": "start", "speed": 7.05, "gear": 1.75, "start_speed": 4.41}, "ridden in gear >= 2.5 (asked: gear 1.75 at 7.05 m/s)"),
     ({"course": "start", "speed": 7.1, "gear": 2.13, "start_speed": 5.39}, "ridden in gear >= 2.5 (asked: gear 2.13 at 7.1 m/s)"),

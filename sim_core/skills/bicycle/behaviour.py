@@ -73,6 +73,7 @@ BICYCLE_RANGES = Schema(
     Parameter("max_slalom_speed", "m/s", 0.5, 0.5, 8.0, "the slalom is offered up to this speed (course.py; faster, the rider missed gates)"),
     Parameter("max_slalom_offset", "m", 0.2, 0.2, 3.0, "the slalom is offered with gate offsets up to this (course.py; wider, the rider missed gates)"),
     Parameter("min_slalom_lead", "m", 2.0, 2.0, 200.0, "the slalom is offered with at least this much straight (turn_after) before it (course.py; shorter, the rider missed the first gate or fell)"),
+    Parameter("min_slalom_lookahead", "s", 0.25, 0.25, 3.0, "the slalom is offered from this lookahead_time (course.py; shorter, the rider missed gates)"),
     Parameter("min_slalom_gate_width", "m", 0.5, 0.5, 5.0, "the slalom is offered with gates at least this wide (course.py; the rider crosses a gate up to 0.6 m from its centre)"),
     Parameter("max_turn_lean", "rad", 0.0, 0.0, 0.5, "a turn (the turn course, a given path's bends) is offered asking a steady lean (tan = v^2 / (g r)) up to this (and course.py's MAX_LEAN); more, the rider fell or leaned past 20 deg"),
     Parameter("max_turn_speed", "m/s", 8.0, 0.5, 8.0, "a turn (the turn course, a given path's bends) is offered up to this speed (faster, the rider fell or leaned past 20 deg after the turn; course.py refuses it)"),

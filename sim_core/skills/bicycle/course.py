@@ -24,7 +24,9 @@ audit of the panel (the table's min_speed, min_gear, min_cadence, min_fast_gear,
 max_hill_grade, max_hill_grade_gear, max_hill_speed and the steep_hill_ limits, a slowing start's
 max_slowing_cadence, a turn's max_turn_speed and max_turn_lean, a new heading's max_heading_turn_speed,
 min_heading_turn_gear and min_heading_turn_cadence, and the slalom's region: min_slalom_speed,
-max_slalom_speed, max_slalom_acceleration, max_slalom_offset, min_slalom_gate_width, min_slalom_lead).
+max_slalom_speed, max_slalom_acceleration, max_slalom_offset, min_slalom_gate_width, min_slalom_lead,
+min_slalom_lookahead; and the look-ahead of the courses that turn: min_turn_lookahead, min_turn_lead,
+min_turn_lead_lean, max_turn_lookahead_radii).
 """
 from __future__ import annotations
 
@@ -345,6 +347,9 @@ def _check_slalom(p: dict) -> None:
         raise ParameterError(f"the slalom is ridden with turn_after >= {p['min_slalom_lead']:g} m of straight before it "
                              f"(asked: {p['turn_after']:g} m): from a shorter lead-in the rider, still settling from the "
                              f"rolling start, missed the first gate or fell")
+    if p["lookahead_time"] < p["min_slalom_lookahead"]:
+        raise ParameterError(f"the slalom is ridden with lookahead_time >= {p['min_slalom_lookahead']:g} s (asked: "
+                             f"{p['lookahead_time']:g} s): with a shorter look-ahead the rider was measured to miss gates")
     if width < p["min_slalom_gate_width"]:
         raise ParameterError(f"the slalom's gates are ridden through with gate_width >= {p['min_slalom_gate_width']:g} m "
                              f"(asked: {width:g} m): the rider crosses a gate up to 0.6 m from its centre")
