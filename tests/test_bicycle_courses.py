@@ -74,11 +74,19 @@ def test_speed_steps_and_slow_start():
      "at speed <= 6 m/s (asked: 7.64 m/s)"),
     ({"course": "turn", "speed": 7.66, "gear": 2.5, "turn_angle": 3.02, "turn_radius": 53.01}, "at speed <= 6 m/s"),
     ({"speed": 6.5, "path": [[0, 0], [30, 0], [60, 20]]}, "at speed <= 6 m/s (asked: 6.5 m/s)"),
-    ({"course": "hill", "speed": 6.36, "gear": 4.59, "hill_grade": 0.02}, "at speed <= 5.5 m/s (asked: 6.36 m/s)"),
+    # tight turns at the lean limit followed with look-aheads measured to fall or to leave the heading off (tenth session)
+    ({"course": "turn", "speed": 3.0, "gear": 3.3, "turn_angle": 3.0, "turn_radius": 3.43, "turn_after": 20.0,
+      "lookahead_time": 0.25}, "lookahead_time >= 0.4 s (asked: 0.25 s)"),
+    ({"course": "turn", "speed": 6.0, "gear": 2.5, "turn_angle": 3.1, "turn_radius": 13.8, "turn_after": 2.0,
+      "lookahead_time": 1.5}, "turn_after >= 1 x lookahead_time x speed = 9.00 m"),
+    ({"course": "turn", "speed": 3.0, "gear": 1.2, "turn_angle": -3.0, "turn_radius": 3.43, "turn_after": 9.0,
+      "lookahead_time": 3.0}, "<= 1.6 x turn_radius = 5.49 m (asked: 3 s x 3 m/s = 9.00 m)"),
+    ({"course": "slalom", "speed": 4.0, "lookahead_time": 3.0}, "turn_after >= 1 x lookahead_time x speed = 12.00 m"),
     ({"course": "slalom", "speed": 8.0, "gate_spacing": 4.0, "gate_offset": 3.0}, "the slalom is ridden at speed"),
     ({"course": "slalom", "speed": 4.0, "gate_spacing": 8.0, "gate_offset": 1.0}, "gate_offset <= 0.65 m"),
     ({"course": "slalom", "speed": 4.0, "gate_spacing": 20.0, "gate_offset": 1.5}, "gate_offset <= 1.00 m"),
     ({"course": "slalom", "speed": 4.0, "gate_width": 1.0}, "gate_width >= 1.5 m"),
+    ({"course": "slalom", "speed": 5.5, "gate_spacing": 13.7, "lookahead_time": 0.4}, "lookahead_time >= 0.6 s (asked: 0.4 s)"),
     ({"course": "slalom", "speed": 4.0, "turn_after": 4.0}, "turn_after >= 5 m"),
     ({"course": "start", "speed": 7.05, "gear": 1.75, "start_speed": 4.41}, "ridden in gear >= 2.5 (asked: gear 1.75 at 7.05 m/s)"),
     ({"course": "start", "speed": 7.1, "gear": 2.13, "start_speed": 5.39}, "ridden in gear >= 2.5 (asked: gear 2.13 at 7.1 m/s)"),
@@ -106,6 +114,23 @@ def test_bad_courses_are_refused_in_one_line(values, words):
     with pytest.raises(ParameterError) as err:
         course_for(params(**values))
     assert words in str(err.value) and "\n" not in str(err.value)
+
+
+def test_fast_hills_and_a_flat_hill_are_offered():
+    """The audit's seed 7 #24 (a 2 % hill at 6.36 m/s in gear 4.59) and seed 9 #17 (a hill of grade 0 at 6.24 m/s),
+    refused by max_hill_speed 5.5 m/s before the rider was held on his saddle: with it every hill up to 5 % at
+    6-8 m/s held the climb within 2.1 % per revolution (docs/bicycle.md, the rider held on his saddle)."""
+    for values in ({"speed": 6.36, "gear": 4.59, "hill_grade": 0.02}, {"speed": 6.24, "gear": 3.62, "hill_grade": 0.0},
+                   {"speed": 8.0, "gear": 3.19, "hill_grade": 0.05}):
+        assert course_for(params(course="hill", **values)).hill
+
+
+def test_a_gentle_turn_is_offered_from_a_short_lead_in():
+    """The lead-in rule (min_turn_lead) is for turns asking more than min_turn_lead_lean: the audit's seed 11 #7,
+    a 35.9 m turn at 4.28 m/s after 2.3 m with a 2.95 m look-ahead (3 deg of lean), rode (roll 3.8 deg)."""
+    c = course_for(params(course="turn", speed=4.28, gear=4.58, turn_angle=1.24, turn_radius=35.91, turn_after=2.3,
+                          lookahead_time=0.69))
+    assert c.path is not None
 
 
 def test_a_turn_within_the_lean_limit_is_accepted():
@@ -167,13 +192,14 @@ def test_a_random_speed_rides_straight_without_a_fall():
 
 
 @pytest.mark.slow
-@pytest.mark.parametrize("speed", [3.0, 5.5])
+@pytest.mark.parametrize("speed", [3.0, 5.0])
 def test_a_30_deg_heading_step_settles_with_margin_at_the_ends_of_the_speeds_offered(speed):
-    """The +30 deg step at the slowest and fastest speed a new heading is offered at: counter-steer
-    (the fork first turns right), within 5 deg well inside TARGETS.md's 3 s (1.7 and 2.4 s measured)."""
+    """The +30 deg step at the slowest and fastest speed a new heading is offered at (max_heading_turn_speed 5 m/s
+    since the tenth session: with the rider held on his saddle 5.5 m/s took 2.99 s): counter-steer (the fork first
+    turns right), within 5 deg inside TARGETS.md's 3 s (2.73 s measured at 5 m/s)."""
     m = ride(6.0, speed=speed, heading=math.radians(30.0)).meta["metrics"]
     assert not m["fell"] and m["first_fork_motion"] == -1.0
-    assert m["heading_within_5deg_from"] is not None and m["heading_within_5deg_from"] <= 2.6
+    assert m["heading_within_5deg_from"] is not None and m["heading_within_5deg_from"] <= 2.8
 
 
 @pytest.mark.slow
@@ -186,15 +212,15 @@ def test_speed_steps_3_5_4_are_tracked():
 
 @pytest.mark.slow
 def test_hill_5_percent_up_and_down_at_4_m_s_and_a_lower_gear_pedals_faster():
-    """TARGETS.md: the commanded speed held within 5 % on the climb and the descent, judged by the speed's
-    mean over each crank revolution (the load's feed-forward and eq. 7's integral term; measured 2.1 / 2.3 %
-    in gear 2.6, 1.5 / 1.8 % in gear 2.0, docs/bicycle.md), the instantaneous worst within issue 30's 15 %;
-    no fall; cadence v / (2 pi r g)."""
+    """TARGETS.md: the commanded speed held within 5 % on the climb and the descent, instantaneously (the
+    rider held on his saddle at seat_pitch, the load's feed-forward and eq. 7's integral term; measured 2.8 / 3.2 %
+    in gear 2.6, 3.3 / 3.7 % in gear 2.0; with the pelvis free to swing 6.6 / 5.1 % and 4.8 / 4.5 %, docs/bicycle.md,
+    the rider held on his saddle) and by the speed's mean over each crank revolution; no fall; cadence v / (2 pi r g)."""
     rides = {gear: ride(28.0, course="hill", hill_grade=0.05, gear=gear).meta["metrics"] for gear in (2.0, 2.6)}
     for gear, m in rides.items():
         assert not m["fell"]
         assert m["hill_climb_worst_revolution_error"] < 0.05 and m["hill_descent_worst_revolution_error"] < 0.05
-        assert m["hill_climb_worst_error"] < 0.15 and m["hill_descent_worst_error"] < 0.15
+        assert m["hill_climb_worst_error"] < 0.05 and m["hill_descent_worst_error"] < 0.05
         assert m["hill_climb_cadence_hz"] == pytest.approx(m["hill_climb_cadence_expected_hz"], rel=0.05)
     assert rides[2.0]["hill_climb_cadence_hz"] > rides[2.6]["hill_climb_cadence_hz"]
 

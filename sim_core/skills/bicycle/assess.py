@@ -61,8 +61,9 @@ def ride_metrics(trajectory, params: dict) -> dict:
     others = np.array([n.startswith(prefix) or n in bicycle_bodies for n in body_names])   # the rider's and the bicycle's
     others[[body_names.index(n) for n in WHEEL_BODIES]] = False
 
-    from .course import course_for
+    from .course import course_for, wheel_circumference
     course = course_for(params)
+    rolled = wheel_circumference(params)      # m per wheel turn: the cadence at v in gear g is v / (rolled g)
     if course.coast_from is not None:        # a stop ends on the left foot: its sole on the ground is no fall
         others[[body_names.index(prefix + n) for n in STOP_FOOT_BODIES]] = False
     touching = a["ground_contact"][:, others].any(axis=1)
@@ -93,7 +94,6 @@ def ride_metrics(trajectory, params: dict) -> dict:
     moved = np.nonzero(np.abs(steer_path - steer_path[0]) > FIRST_FORK_MOTION)[0]
     last5 = (t >= t[end - 1] - 5.0) & (np.arange(len(t)) < end)     # criterion: the mean speed and cadence reported over the last 5 s
     gear = float(model.wrap_prm[model.tendon_adr[model.tendon(NAMES["chain"]).id]])
-    radius = BicycleView.of(model).wheel_radius
     rear = model.jnt_qposadr[model.joint(NAMES["rear_spin"]).id]
     driven = end if course.coast_from is None else min(end, int(np.searchsorted(t, course.coast_from)) + 1)
     stretch = gear * a["qpos"][:driven, crank] - a["qpos"][:driven, rear]     # a freewheel's slack is no stretch
@@ -107,7 +107,7 @@ def ride_metrics(trajectory, params: dict) -> dict:
         "max_seat_gap": float(gaps[:, 0:2].max()),
         "max_chain_stretch": float(np.abs(stretch - stretch[0]).max()),
         "cadence_last_5s_hz": float(crank_rate[last5[:end]].mean() / (2 * math.pi)),
-        "cadence_expected_hz": float(speed[last5].mean() / (2 * math.pi * radius * gear)),
+        "cadence_expected_hz": float(speed[last5].mean() / (rolled * gear)),
         "fall_time": None if fall_frame is None else float(t[fall_frame]),
         "mean_speed_last_10s": float(speed[last10].mean()),
         "max_abs_roll_deg": float(np.degrees(np.abs(roll[:end]).max())),
@@ -115,7 +115,7 @@ def ride_metrics(trajectory, params: dict) -> dict:
         "distance": float(np.linalg.norm(a["qpos"][end - 1, q:q + 2] - a["qpos"][0, q:q + 2])),
     }
     xy = a["qpos"][:end, q:q + 2] - a["qpos"][0, q:q + 2]          # from the start, as the course is given
-    metrics.update(course_metrics(course, t[:end], xy, speed[:end], crank_rate, gear, radius))
+    metrics.update(course_metrics(course, t[:end], xy, speed[:end], crank_rate, gear, rolled))
     if course.coast_from is not None and not course.stop:
         again = [float(when) for when, name in meta["phase_events"] if name == "brake_to_stop"]
         coast_end = min([float(t[end - 1])] + again)
@@ -168,10 +168,10 @@ def coast_metrics(model: mujoco.MjModel, t: np.ndarray, speed: np.ndarray, start
 
 
 def course_metrics(course, t: np.ndarray, xy: np.ndarray, speed: np.ndarray, crank_rate: np.ndarray,
-                   gear: float, radius: float) -> dict:
+                   gear: float, rolled: float) -> dict:
     """What each course is judged by: the path deviation and the gates passed, each speed step's
-    mean error over its last SEGMENT_TAIL s, the speeds (and the cadence against v / (2 pi r g))
-    on the hill's climb and descent."""
+    mean error over its last SEGMENT_TAIL s, the speeds (and the cadence against v / (rolled g),
+    ``rolled`` the wheel's circumference, course.wheel_circumference) on the hill's climb and descent."""
     out = {"course": course.name}
     if course.path is not None:
         deviation = path_deviation(course.path, xy)
@@ -207,7 +207,7 @@ def course_metrics(course, t: np.ndarray, xy: np.ndarray, speed: np.ndarray, cra
                 means = np.convolve(speed[on], np.ones(min(frames, int(on.sum()))) / min(frames, int(on.sum())), mode="valid")
                 out[f"hill_{name}_worst_revolution_error"] = float(np.abs(means - wanted).max() / wanted)
                 out[f"hill_{name}_cadence_hz"] = float(crank_rate[on].mean() / (2 * math.pi))
-                out[f"hill_{name}_cadence_expected_hz"] = float(speed[on].mean() / (2 * math.pi * radius * gear))
+                out[f"hill_{name}_cadence_expected_hz"] = float(speed[on].mean() / (rolled * gear))
         out["hill_top_height"] = float(hill_height(course.hill, start + climb))
     return out
 

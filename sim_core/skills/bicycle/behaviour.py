@@ -18,6 +18,9 @@ Control, every tick (laws.py for the equations):
   * steering: eq. 11 gives the fork angle; inverse kinematics puts the hands on the grips of a
     fork turned to it; the arms' servos steer the bicycle through the hand springs ([A] 142);
   * waist, neck and wrists hold their mounted angles ([A] 144);
+  * the rider held on his saddle: the limbs' inverse kinematics is solved with the rider turned about the
+    (passive) seat pivot to seat_pitch, so the arms and legs hold the pelvis's pitch and the rider does not
+    swing fore and aft with each pedal stroke (which rocked the frame's speed by +-4 %: docs/bicycle.md);
   * coasting (the coast and stop courses, a freewheel bicycle): eq. 7 off, the legs turn the cranks
     level and hold them; stopping: eq. 7's braking torque to the rim brakes (joint friction set
     through the edit log), the left foot let go of its pedal below foot_release_speed and put down
@@ -70,9 +73,14 @@ BICYCLE_RANGES = Schema(
     Parameter("max_slalom_speed", "m/s", 0.5, 0.5, 8.0, "the slalom is offered up to this speed (course.py; faster, the rider missed gates)"),
     Parameter("max_slalom_offset", "m", 0.2, 0.2, 3.0, "the slalom is offered with gate offsets up to this (course.py; wider, the rider missed gates)"),
     Parameter("min_slalom_lead", "m", 2.0, 2.0, 200.0, "the slalom is offered with at least this much straight (turn_after) before it (course.py; shorter, the rider missed the first gate or fell)"),
+    Parameter("min_slalom_lookahead", "s", 0.25, 0.25, 3.0, "the slalom is offered from this lookahead_time (course.py; shorter, the rider missed gates)"),
     Parameter("min_slalom_gate_width", "m", 0.5, 0.5, 5.0, "the slalom is offered with gates at least this wide (course.py; the rider crosses a gate up to 0.6 m from its centre)"),
     Parameter("max_turn_lean", "rad", 0.0, 0.0, 0.5, "a turn (the turn course, a given path's bends) is offered asking a steady lean (tan = v^2 / (g r)) up to this (and course.py's MAX_LEAN); more, the rider fell or leaned past 20 deg"),
     Parameter("max_turn_speed", "m/s", 8.0, 0.5, 8.0, "a turn (the turn course, a given path's bends) is offered up to this speed (faster, the rider fell or leaned past 20 deg after the turn; course.py refuses it)"),
+    Parameter("min_turn_lookahead", "s", 0.25, 0.25, 3.0, "the turn course and the slalom are offered from this lookahead_time (course.py; shorter, the heading was left 6-53 deg off after a tight turn)"),
+    Parameter("min_turn_lead", "1", 0.0, 0.0, 10.0, "the turn course and the slalom asking more than min_turn_lead_lean of lean are offered with turn_after at least this many look-ahead distances (lookahead_time x speed) of straight before the turn (course.py; shorter, the pursuit aims around the corner from the start and the rider fell within 1.5 s)"),
+    Parameter("min_turn_lead_lean", "rad", 0.0, 0.0, 0.5, "min_turn_lead applies to turns and slaloms asking a steady lean above this (course.py; gentler turns passed from any lead-in)"),
+    Parameter("max_turn_lookahead_radii", "1", 0.1, 0.1, 100.0, "the turn course is offered with a look-ahead distance (lookahead_time x speed) of at most this many turn radii (course.py; further, the pursuit cut the turn and the rider fell in it)"),
     Parameter("min_turn_radius", "m", 3.0, 3.0, 100.0, "a turn (the turn course, a given path's bends) is offered on a radius of at least this (course.py), whatever its lean; tighter, the rider fell (3: the schema's tightest turn, no limit beyond it)"),
     Parameter("max_slalom_acceleration", "m/s^2", 0.1, 0.1, 10.0, "the slalom is offered up to this peak lateral acceleration of its sine, offset (pi v / spacing)^2 (course.py; more, the rider fell or missed gates)"),
     Parameter("speed_gain", "N m s/m", 0.0, 0.0, 5000.0, "eq. 7 k_v: crank torque per m/s of speed error"),
@@ -83,6 +91,8 @@ BICYCLE_RANGES = Schema(
     Parameter("grade_filter", "s", 0.0, 0.0, 5.0, "time constant of the low-pass on the road's grade the load's feed-forward feels (BicycleView.road_sine; 0: as sensed each tick)"),
     Parameter("rolling_feedforward", "1", 0.0, 0.0, 2.0, "share of the crank torque that holds the rolling resistance at the desired speed (gear r c v_d, laws.load_torque) added to eq. 7 (0: the seed's eq. 7)"),
     Parameter("hold_seat_pitch", "1", 0.0, 0.0, 1.0, "1: while riding, the limbs' targets hold the pelvis at its mounted pitch on the saddle (``_seat_pelvis``, as the stop does once the foot is down); 0: the pelvis pitches as the limbs let it (the man's: 56 deg forward at the top of a stroke)"),
+    Parameter("seat_pitch_time", "s", 0.0, 0.0, 10.0, "while riding, the limbs' targets hold the pelvis on the saddle at a pitch that moves from the mounted one to seat_pitch with this time constant (``_seat_pelvis``): the rider's swing fore and aft on the saddle over each pedal stroke is held (0: off, the pelvis pitches as the limbs let it; hold_seat_pitch, when 1, holds the mounted pitch instead)"),
+    Parameter("seat_pitch", "rad", 0.0, -1.2, 0.0, "the pelvis's pitch on the saddle (about the frame's lateral axis, forward tilt negative) the limbs hold while riding with seat_pitch_time (the man's free pelvis pitched 42-49 deg forward on average, swinging 17-55 deg peak to peak)"),
     Parameter("ik_velocity_filter", "s", 0.0, 0.0, 0.5, "time constant of the low-pass on the limb targets' velocity that leads the servos (0: unfiltered)"),
     Parameter("speed_ramp", "m/s^2", 0.1, 0.1, 10.0, "eq. 7's desired speed moves to a newly commanded one at this rate (a start, a speed step)"),
     Parameter("roll_gain", "1", 0.0, 0.0, 20.0, "eq. 11 k_alpha at reference_speed"),
@@ -385,8 +395,9 @@ class Bicycling(Behaviour):
         self.pelvis = model.body(ctx.actor.prefix + "PELVIS").id
         self.root_qpos = int(model.joint(ctx.actor.prefix + "root").qposadr[0])
         self.pelvis_pitch = None            # stop: the pelvis's pitch on the saddle held once the foot is down (rad)
-        if self.params["hold_seat_pitch"]:  # held from the mount (the child's hip met its flexion limit at the top)
-            self.pelvis_pitch = self._pelvis_pitch(ctx.data)
+        self.seat_pitch_time = 0.0 if self.params["hold_seat_pitch"] else self.params["seat_pitch_time"]
+        if self.params["hold_seat_pitch"] or self.seat_pitch_time:  # held from the mount (the child's hip met its flexion
+            self.pelvis_pitch = self._pelvis_pitch(ctx.data)        # limit at the top), or moved to seat_pitch
         left_leg = ("hip_l_y", "hip_l_x", "hip_l_z", "knee_l_y")
         self.left_leg_servos = servos.indices(left_leg)
         self.left_leg_dofs = servos.dof_adr[self.left_leg_servos]
@@ -607,7 +618,10 @@ class Bicycling(Behaviour):
             scratch.qpos[bike.crank_qpos] = self.crank_command
         for side, value in (ankles or {}).items():
             scratch.qpos[servos.qpos_adr[self.ankle_servos[side]]] = value
-        if self.planted is not None or self.params["hold_seat_pitch"]:
+        if self.seat_pitch_time and self.planted is None:    # the pitch held moves from the mount's to seat_pitch
+            blend = ctx.control_dt / (self.seat_pitch_time + ctx.control_dt)
+            self.pelvis_pitch += blend * (self.params["seat_pitch"] - self.pelvis_pitch)
+        if self.planted is not None or self.params["hold_seat_pitch"] or self.seat_pitch_time:
             self._seat_pelvis(scratch)
         solve(ctx.model, scratch, self.pairs, which, servos.dof_adr[servo_rows], ctx.data.qpos, IK_ITERATIONS_PER_TICK)
         goal = self.target.copy()

@@ -24,7 +24,9 @@ audit of the panel (the table's min_speed, min_gear, min_cadence, min_fast_gear,
 max_hill_grade, max_hill_grade_gear, max_hill_speed and the steep_hill_ limits, a slowing start's
 max_slowing_cadence, a turn's max_turn_speed and max_turn_lean, a new heading's max_heading_turn_speed,
 min_heading_turn_gear and min_heading_turn_cadence, and the slalom's region: min_slalom_speed,
-max_slalom_speed, max_slalom_acceleration, max_slalom_offset, min_slalom_gate_width, min_slalom_lead).
+max_slalom_speed, max_slalom_acceleration, max_slalom_offset, min_slalom_gate_width, min_slalom_lead,
+min_slalom_lookahead; and the look-ahead of the courses that turn: min_turn_lookahead, min_turn_lead,
+min_turn_lead_lean, max_turn_lookahead_radii).
 """
 from __future__ import annotations
 
@@ -87,8 +89,10 @@ def course_for(p: dict) -> Course:
         path = turn_path(p["turn_angle"], p["turn_after"], p["turn_radius"], RUN_OUT)
         _check_turn(p["speed"], p["turn_radius"], "turn_radius", p["max_turn_lean"], p["min_turn_radius"],
                     p["max_turn_speed"])
+        _check_lookahead(p, math.atan(p["speed"] ** 2 / (GRAVITY * p["turn_radius"])), p["turn_radius"])
     elif name == "slalom":
         _check_slalom(p)
+        _check_lookahead(p, math.atan(slalom_acceleration(p["speed"], p["gate_spacing"], p["gate_offset"]) / GRAVITY))
         path, gates = slalom(p["gate_count"], p["gate_spacing"], p["gate_offset"], p["turn_after"])
     elif name == "speed_steps":
         speeds = ((0.0, p["speed"]), (p["step_time"], p["second_speed"]), (2 * p["step_time"], p["third_speed"]))
@@ -136,6 +140,32 @@ def wheel_circumference(p: dict) -> float:
     """The distance (m) a request's bicycle rolls per wheel turn, 2 pi r: the cadence at speed v in gear g
     is v / (2 pi r g) rev/s."""
     return 2 * math.pi * wheel_radius(p)
+
+
+def _check_lookahead(p: dict, lean: float, radius: float | None = None) -> None:
+    """A course that turns off its straight lead-in (the turn course, the slalom) is followed by pure pursuit
+    (behaviour.py) with a look-ahead of at least the table's ``min_turn_lookahead`` s; one asking a steady ``lean``
+    (rad) above its ``min_turn_lead_lean`` aims no further than its ``min_turn_lead`` look-ahead distances
+    (lookahead_time x speed) from the start, so that the aim starts on the straight; and on the turn course no
+    further than its ``max_turn_lookahead_radii`` turn radii ahead: where the turns were measured to pass
+    (docs/bicycle.md, the rider held on his saddle: the audit's margins, tenth session)."""
+    ahead = p["lookahead_time"] * p["speed"]
+    if p["lookahead_time"] < p["min_turn_lookahead"]:
+        raise ParameterError(f"a course that turns is followed with lookahead_time >= {p['min_turn_lookahead']:g} s "
+                             f"(asked: {p['lookahead_time']:g} s); shorter, the heading was measured to be left 6-53 deg off "
+                             f"after a tight turn")
+    if lean > p["min_turn_lead_lean"] and p["turn_after"] < p["min_turn_lead"] * ahead:
+        raise ParameterError(f"a course that turns is ridden with turn_after >= {p['min_turn_lead']:g} x lookahead_time x "
+                             f"speed = {p['min_turn_lead'] * ahead:.2f} m of straight before it (asked: {p['turn_after']:g} m); "
+                             f"shorter, the pursuit aims around the corner from the start and a turn asking {math.degrees(lean):.1f} deg "
+                             f"of lean (more than {math.degrees(p['min_turn_lead_lean']):.0f} deg) was measured to fall: a "
+                             f"shorter lookahead_time or a longer turn_after would do")
+    if radius is not None and ahead > p["max_turn_lookahead_radii"] * radius:
+        raise ParameterError(f"a turn of turn_radius {radius:g} m is followed with lookahead_time x speed <= "
+                             f"{p['max_turn_lookahead_radii']:g} x turn_radius = {p['max_turn_lookahead_radii'] * radius:.2f} m "
+                             f"(asked: {p['lookahead_time']:g} s x {p['speed']:g} m/s = {ahead:.2f} m); further, the pursuit "
+                             f"cut the turn and the rider was measured to fall in it: lookahead_time <= "
+                             f"{p['max_turn_lookahead_radii'] * radius / p['speed']:.2f} s would do")
 
 
 def _check_heading_turn(p: dict, fastest: float, slowest: float) -> None:
@@ -232,8 +262,8 @@ def _check_hill(p: dict, speeds: list[float]) -> None:
         return
     if max(speeds) > p["max_hill_speed"]:
         raise ParameterError(f"a hill up to hill_grade {p['max_hill_grade']:g} is ridden at speed <= {p['max_hill_speed']:g} m/s "
-                             f"(asked: {max(speeds):g} m/s); faster, the climb was measured to lose more than 5 % of the "
-                             f"speed per crank revolution")
+                             f"(asked: {max(speeds):g} m/s on hill_grade {grade:g}); faster, the climb was measured to lose "
+                             f"more than 5 % of the speed per crank revolution")
     most = p["max_hill_grade_gear"]
     if grade * gear > most:
         raise ParameterError(f"the hill is ridden with hill_grade x gear <= {most:g} (asked: {grade:g} x {gear:g} = "
@@ -317,6 +347,9 @@ def _check_slalom(p: dict) -> None:
         raise ParameterError(f"the slalom is ridden with turn_after >= {p['min_slalom_lead']:g} m of straight before it "
                              f"(asked: {p['turn_after']:g} m): from a shorter lead-in the rider, still settling from the "
                              f"rolling start, missed the first gate or fell")
+    if p["lookahead_time"] < p["min_slalom_lookahead"]:
+        raise ParameterError(f"the slalom is ridden with lookahead_time >= {p['min_slalom_lookahead']:g} s (asked: "
+                             f"{p['lookahead_time']:g} s): with a shorter look-ahead the rider was measured to miss gates")
     if width < p["min_slalom_gate_width"]:
         raise ParameterError(f"the slalom's gates are ridden through with gate_width >= {p['min_slalom_gate_width']:g} m "
                              f"(asked: {width:g} m): the rider crosses a gate up to 0.6 m from its centre")
