@@ -674,8 +674,12 @@ flex further, so the swing foot does not reach ahead: its goal is 0.2-0.45 m ahe
 it comes down where it lifted (the foot scuffs at 3 cm up, counted as down); lifted higher (2.2 rad)
 it rises 0.23 m but the hip is still at its limit and it lands where it rose; with the stance hip
 righting the trunk the lean holds at 1.15 rad for the step, but the stance leg turns instead and the
-capture point runs from 0.15 to 0.51 m ahead of the feet. A step moves the support; it cannot take back
-the forward spin that folded him at the hips. So the man's limit stays the take-off's spin (as the
+capture point runs from 0.15 to 0.51 m ahead of the feet. Nor would a step at the touchdown: in the
+last 0.2 s of the flight both hips are already at -2.23 to -2.25 rad (the landing's feet placed ahead of
+the pitched trunk). Landing the feet under the COM instead (one probe, `landing_foot_lead_time` 0 for
+the plan's 0.27 s: the hips at -1.56 rad at the touchdown, range left) keeps the COM's 2.5 m/s: the
+capture point 0.8-1.0 m ahead of the feet, beyond a step's 0.45 m (`max_step`); two steps, he fell.
+A step moves the support; it cannot take back the forward spin that folded him at the hips. So the man's limit stays the take-off's spin (as the
 twelfth session found); `jump_commanded_man.json` is not added (his offered share of issue 29's box
 stays 12.09 %, the measured jumps' region alone).
 
