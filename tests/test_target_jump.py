@@ -340,3 +340,30 @@ def test_the_landings_arm_feedback_turns_the_trunk_back_on_a_commanded_flight():
         print(f"arm feedback gain {gain}: trunk pitched {pitches[-1]:.0f} deg at touchdown, landed "
               f"{measured['landing'][0]:.3f} m after {measured['air_time']:.3f} s ({measured['outcome']})")
     assert pitches[1] < pitches[0] - 2.0
+
+
+def test_the_landings_recovery_step_is_reported_and_keeps_the_touchdown_landing_point():
+    """The landing's recovery step (landing_recovery_step; control/recovery_step.py via the leap): the man's
+    commanded flight to 1.38 m in 0.46 s lands pitched forward; with the step on, the capture point past his
+    feet after the impact starts a step, reported as a 'recovery_step' event and in the metrics, and the
+    landing point and air time stay the touchdown's (the same flight). Off (a stored plan names no step),
+    the landing runs as before: no step event."""
+    from sim_core.skills.jump_to_target.behaviour import RECOVERY_SETTINGS, landing_measures, landing_settings, leap_params, scene_for
+    plan = _stored("man", dict(target_x=1.3, target_y=0.0, target_z=0.0, obstacle_height=0.0,
+                               air_time=GROUND_AIR_TIME, windup_time=WINDUP_TIME))
+    assert not set(RECOVERY_SETTINGS) & set(landing_settings(plan["settings"]))
+    target, air_time = (1.384, 0.0, 0.0, 0.0), 0.4559
+    measured = []
+    for step in (0.0, 1.0):
+        settings = dict(plan["settings"], commanded_takeoff=1.0, crouch_height=0.61, com_offset=0.03,
+                        landing_swing_arms=1.0, landing_arm_flexion=0.75, landing_arm_pitch_gain=4.0,
+                        landing_arm_pitch=0.6, landing_recovery_step=step)
+        traj = run(RunRequest("leap", "man", params=leap_params(settings, target, WINDUP_TIME, air_time),
+                              duration=2.8, world=scene_for("man", target)))
+        measured.append(landing_measures(traj))
+        events = [name for _, name in traj.meta["phase_events"]]
+        print(f"recovery step {step:g}: landed {measured[-1]['landing'][0]:.3f} m after {measured[-1]['air_time']:.3f} s "
+              f"({measured[-1]['outcome']}), step at {measured[-1].get('recovery_step_time')}")
+        assert ("recovery_step" in events) == bool(step) == traj.meta["metrics"]["recovery_step"]
+    assert measured[1]["landing"] == measured[0]["landing"] and measured[1]["air_time"] == measured[0]["air_time"]
+    assert measured[1]["recovery_step_time"] > traj.meta["metrics"]["liftoff_time"] + measured[1]["air_time"]

@@ -76,6 +76,7 @@ def describe(x: float, air_time: float, measured: dict, velocity, spin: float | 
     at = f"({x:.3f}, {y:+.3f}) m" if y else f"{x:.2f} m"
     return (f"  {at} in {air_time:.3f} s: landed {measured['landing'][0]:.3f} m ({error * 100:4.1f} cm off), air "
             f"{measured['air_time']:.3f} s ({measured['air_time'] - air_time:+.3f}), {measured['outcome']}"
+            + (f" (a recovery step at {measured['recovery_step_time']:.2f} s)" if "recovery_step_time" in measured else "")
             + ("" if velocity is None else f"; lift-off COM velocity ({velocity[0]:.2f}, {velocity[2]:.2f}) m/s, spin "
                                            f"{spin:+.1f} kg m2/s"))
 
@@ -146,7 +147,7 @@ def main(argv=None) -> int:
         body = {"settings": settings, "crouch_by_air_time": crouch_pairs(args.crouch_by_air_time, settings)}
         constants = SimpleNamespace(**{**vars(CONSTANTS), "aim_trials": args.aim,
                                        "landing_trials": max(args.plan_landing, 1)})
-        errors, late, hits, balanced, hits_balanced, planned, trials = [], [], 0, 0, 0, 0, []
+        errors, late, hits, balanced, hits_balanced, planned, trials, stepped = [], [], 0, 0, 0, 0, [], 0
         for x, air_time, y in draws:
             target = (x, y, 0.0, 0.0)
             judge = lambda m, target=target, air_time=air_time: (lands_on(m, target, air_time),      # noqa: E731
@@ -164,12 +165,14 @@ def main(argv=None) -> int:
             hits += lands_on(measured, target, air_time)
             balanced += measured["outcome"] == "success"
             hits_balanced += plan["found"]
+            stepped += plan["found"] and "recovery_step_time" in measured
         times = f"{air_times[0]:g}-{air_times[1]:g}" if args.fixed_air_time is None else f"{args.fixed_air_time:g}"
         print(f"random {args.character} seed {args.seed} ({args.random} forward targets {forward[0]:g}-{forward[1]:g} m"
               f"{f' within +-{args.lateral:g} m' if args.lateral else ''}, "
               f"air time {times} s): landing error median {np.median(errors) * 100:.1f} cm (max "
               f"{max(errors) * 100:.1f}); air time error median {np.median(np.abs(late)):.3f} s ({min(late):+.3f} .. "
-              f"{max(late):+.3f}); within 5 cm and 0.05 s: {hits}, {hits_balanced} of them balanced; balanced {balanced}; "
+              f"{max(late):+.3f}); within 5 cm and 0.05 s: {hits}, {hits_balanced} of them balanced ({stepped} after a "
+              f"recovery step); balanced {balanced}; "
               f"landings planned {planned}; trials median {np.median(trials):.0f}, most {max(trials)}")
     if args.landings:
         for x in (float(v) for v in args.landings.split(",")):

@@ -553,6 +553,15 @@ def leap_assess(trajectory, squat_floor: float | None = None, start: float = 0.0
         metrics["liftoff_horizontal_speed"] = float(a["com_vel"][first, 0])
         after = a["support_points"][last + 1:, :, :2]
         settle = min(int(CONSTANTS.settle_time * trajectory.meta["control_rate"]), len(after) - 1)
+        # a recovery step (the landing's landing_recovery_step): the feet are judged until it began, the step
+        # is reported (its time), not a slide
+        steps = [float(e[0]) for e in trajectory.meta.get("phase_events", ()) if e[1] == RECOVERY_STEP_EVENT]
+        metrics["recovery_step"] = bool(steps)
+        if steps:
+            metrics["recovery_step_time"] = steps[0]
+            before = max(int(np.searchsorted(t, steps[0])) - (last + 1), 1)
+            after = after[:before]
+            settle = min(settle, len(after) - 1)
         metrics["foot_slide_after_landing"] = float(
             np.linalg.norm(after - after[settle], axis=2).max()) if len(after) else 0.0
         # a jump travels: the standard "stepped" (a foot away from where it stood at the start)
@@ -711,6 +720,15 @@ LANDING_ARM_PITCH_GAIN = Parameter(
     "landing: with landing_swing_arms, the arms swing this many rad further down and back per rad the "
     "pelvis is (about to be) pitched forward of landing_arm_pitch (0 = to landing_arm_flexion alone)")
 LANDING_ARM_PITCH = Parameter("landing_arm_pitch", "rad", 0.6, -0.5, 1.5, "landing: the pelvis pitch the arms' feedback holds")
+LANDING_RECOVERY_STEP = Parameter(
+    "landing_recovery_step", "1", 0.0, 0.0, 1.0,
+    "landing: above 0.5, once the feet are down the capture point is watched: when it comes within "
+    "landing_step_margin of the support's edge (or past it) a foot steps to where it goes and the stance the feet "
+    "end in is held, standing up (control/recovery_step.py StepAndHold; a 'recovery_step' event); 0 = the balance")
+LANDING_STEP_MARGIN = Parameter("landing_step_margin", "m", 0.03, -0.2, 0.3,
+                                "landing: with landing_recovery_step, a step once the capture point is this close to the "
+                                "support's edge")
+RECOVERY_STEP_EVENT = "recovery_step"     # the phase event of a landing's recovery step (leap_assess reads it)
 
 # the leap's low-level settings: the columns of a vertical-leap table, a broad jump's and a planned
 # jump's settings (sim_core.planning.jump searches them); a default is what a row that does
@@ -739,7 +757,7 @@ LEAP_SETTINGS = Schema(
     Parameter("commanded_takeoff", "1", 0.0, 0.0, 1.0,
               "above 0.5 the thrust servoes the COM velocity to the commanded flight's lift-off velocity and "
               "ends on reaching it (control/commanded_thrust.py)"),
-    FLIGHT_TARGET_X, LANDING_ARM_PITCH_GAIN, LANDING_ARM_PITCH,
+    FLIGHT_TARGET_X, LANDING_ARM_PITCH_GAIN, LANDING_ARM_PITCH, LANDING_RECOVERY_STEP, LANDING_STEP_MARGIN,
 )
 LEAP_MEASURED = ("com_rise", "com_travel", "peak_thrust_grf_body_weights")   # columns a calibration measured
 

@@ -82,6 +82,16 @@ class StanceMeasure:
         heights = self.support.heights(self.ctx.data)
         return float(heights[self.support.right if k == 0 else self.support.left].min())
 
+    def outside(self, margin: float) -> float:
+        """+1 (-1) when the capture point is within ``margin`` of the support's front (back) edge or past it,
+        else 0: where a step is due."""
+        points = self.support.supporting_points(self.ctx.data)
+        ahead, _, _, _ = self.capture(points)
+        c, s = self.heading()
+        px = c * points[:, 0] + s * points[:, 1]
+        half = 0.5 * float(px.max() - px.min())
+        return 1.0 if ahead > half - margin else -1.0 if ahead < margin - half else 0.0
+
     def pelvis_lean(self) -> float:
         return pitch_of(self.ctx.data.xmat[self.pelvis], UP)
 
@@ -400,14 +410,8 @@ class StaggeredStance(Behaviour):
 
     def outside(self, margin: float) -> float:
         """+1 (-1) when the capture point is within ``margin`` of the support's front (back) edge or past it,
-        else 0: where a further step is due."""
-        m = self.measure
-        points = m.support.supporting_points(self.ctx.data)
-        ahead, _, _, _ = m.capture(points)
-        c, s = m.heading()
-        px = c * points[:, 0] + s * points[:, 1]
-        half = 0.5 * float(px.max() - px.min())
-        return 1.0 if ahead > half - margin else -1.0 if ahead < margin - half else 0.0
+        else 0: where a further step is due (StanceMeasure.outside)."""
+        return self.measure.outside(margin)
 
 
 class StepAndHold(Behaviour):
@@ -421,11 +425,13 @@ class StepAndHold(Behaviour):
         Parameter("min_hold", "s", 0.2, 0.0, 2.0, "... and the stance has held this long"),
     )
 
-    def __init__(self, params, ctx: ControlContext, step: dict, stance: dict):
-        """``step``, ``stance``: RecoveryStep's and StaggeredStance's validated parameters."""
+    def __init__(self, params, ctx: ControlContext, step: dict, stance: dict, first: float = 0.0):
+        """``step``, ``stance``: RecoveryStep's and StaggeredStance's validated parameters; ``first``: +1 (-1)
+        begins with a step forward (back), not counted in ``max_steps`` (0: with the stance)."""
         super().__init__(params, ctx)
         self.step_params, self.stance_params = step, stance
         self.steps = 0
+        self.first = first
 
     def _begin(self, behaviour: Behaviour, t: float) -> None:
         self.current = behaviour
@@ -433,7 +439,8 @@ class StepAndHold(Behaviour):
         behaviour.start(t)
 
     def start(self, t: float) -> None:
-        self._begin(StaggeredStance(self.stance_params, self.ctx), t)
+        self._begin(RecoveryStep(self.step_params, self.ctx, self.first) if self.first
+                    else StaggeredStance(self.stance_params, self.ctx), t)
 
     def update(self, t: float) -> None:
         current, p = self.current, self.params

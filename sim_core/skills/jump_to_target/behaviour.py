@@ -155,7 +155,8 @@ def landing_measures(trajectory) -> dict:
     point; a success also keeps the feet within LANDING_SKID_LIMIT of it until they settle, see
     leap_assess), air time, wind-up time (first move to lift-off), and the outcome; for the
     planner's cost, how far the COM's capture point (COM + v sqrt(h/g)) is from the middle of the
-    feet at touchdown and whether the jump fell before it left the ground."""
+    feet at touchdown and whether the jump fell before it left the ground; with a recovery step after the
+    touchdown, when it began (``recovery_step_time``; the landing point stays the touchdown's)."""
     a = trajectory.arrays
     feet = a["support_points"]
     flying = feet_above_surface(trajectory).min(axis=1) > AIRBORNE_HEIGHT
@@ -180,6 +181,8 @@ def landing_measures(trajectory) -> dict:
         com, velocity = a["com"][touchdown], a["com_vel"][touchdown]
         capture = com[:2] + velocity[:2] * math.sqrt(max(com[2] - middle[2], 0.1) / GRAVITY)  # definition: a guard
         result["capture_error"] = float(np.linalg.norm(capture - middle[:2]))
+    if metrics.get("recovery_step"):        # the landing's recovery step (landing_recovery_step): when it began
+        result["recovery_step_time"] = metrics["recovery_step_time"]
     return result
 
 
@@ -221,6 +224,7 @@ def turn_of(settings: dict) -> dict:
 
 
 ARM_FEEDBACK = ("landing_arm_pitch_gain", "landing_arm_pitch")    # the arms' pitch feedback: only plans that name it
+RECOVERY_SETTINGS = ("landing_recovery_step", "landing_step_margin")  # the landing's recovery step: likewise
 
 
 def landing_settings(settings: dict) -> dict:
@@ -230,7 +234,7 @@ def landing_settings(settings: dict) -> dict:
             "landing_foot_lead_time": settings["landing_foot_lead_time"],
             "landing_place_sideways": float(abs(settings.get("com_offset_y", 0.0)) > 0.0),
             "landing_right_time": float(settings.get("landing_right_time", 0.0)),
-            **{k: float(settings[k]) for k in ARM_FEEDBACK if k in settings}}
+            **{k: float(settings[k]) for k in ARM_FEEDBACK + RECOVERY_SETTINGS if k in settings}}
 
 
 def crouch_time(windup_time: float) -> float:

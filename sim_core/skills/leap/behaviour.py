@@ -11,7 +11,8 @@ from ...control.balance import Balance, standing_hip_height
 from ...control.behaviour import register
 from ...control.commanded_thrust import CommandedThrust, FlightCommand, thrust_due
 from ...control.measure import SupportGeometry
-from ...control.leap import FLIGHT_TARGET_X, LANDING_ARM_PITCH, LANDING_ARM_PITCH_GAIN, LOW_LEVEL_SETTINGS, Landing, LeapThrust, balance_after_landing, calibrated_foot_delta, broad_distances, broad_row, broad_rows, commandable_heights, leap_assess, leap_constants, load_mapping, vertical_key, vertical_row, vertical_table
+from ...control.recovery_step import RecoveryStep, StaggeredStance, StanceMeasure, StepAndHold
+from ...control.leap import FLIGHT_TARGET_X, LANDING_ARM_PITCH, LANDING_ARM_PITCH_GAIN, LANDING_RECOVERY_STEP, LANDING_STEP_MARGIN, RECOVERY_STEP_EVENT, LOW_LEVEL_SETTINGS, Landing, LeapThrust, balance_after_landing, calibrated_foot_delta, broad_distances, broad_row, broad_rows, commandable_heights, leap_assess, leap_constants, load_mapping, vertical_key, vertical_row, vertical_table
 from ...control.sequencer import Sequence, Step
 from ...control.turn import jump_start, turn_steps
 from ...errors import ParameterError
@@ -61,6 +62,8 @@ class Leap(Sequence):
                   "landing: the feet land this many seconds of horizontal COM travel ahead of the COM"),
         Parameter("landing_right_time", "s", 0.0, 0.0, 1.0,
                   "landing: after touchdown the hips right the trunk over this time (0 = at once)"),
+        LANDING_RECOVERY_STEP,
+        LANDING_STEP_MARGIN,
         settings=LOW_LEVEL_SETTINGS,
     )
 
@@ -235,15 +238,48 @@ class Leap(Sequence):
             landing["fast_knee_flexion"] = landing["knee_flexion"]     # calibrated with one knee bend
             return Landing(Landing.schema.validate(dict(foot_delta=delta, **landing)), ctx)
 
+        recovery = p.get("landing_recovery_step", 0.0) > 0.5
+        if recovery:
+            stance = StanceMeasure(ctx, StaggeredStance.schema.defaults()["min_height"])
+
+        def landed(b, t):
+            # with the recovery step the landing also ends, once the feet are down and the COM has stopped
+            # falling (the impact taken), when the capture point leaves what the feet hold: the step
+            return b.finished or (recovery and b.stage != "flight" and float(ctx.data.subtree_linvel[b.pelvis][2]) >= 0.0
+                                  and bool(stance.outside(p["landing_step_margin"])))
+
         def stand(t):
+            if recovery:
+                return self.recovery(t, p["landing_step_margin"])
             return balance_after_landing(ctx, self.previous)
 
         return turn_steps(ctx, cfg.get("turn_first", 0.0), self) + [
                 Step("crouch", crouch, crouched)] + ([Step("lean", lean, leaned)] if commanded else []) + [
                 Step("thrust", thrust, lambda b, t: b.lifted_off()),
-                Step("land", land, lambda b, t: b.finished),
+                Step("land", land, landed),
                 Step("balance", stand)]
+
+    def recovery(self, t: float, margin: float) -> StepAndHold:
+        """The landing's recovery step (landing_recovery_step): the staggered stance from the feet as they
+        landed, and a step wherever its capture point comes within ``margin`` of the support's edge - at once
+        if it is there already (control/recovery_step.py StepAndHold, its parameters' defaults); the first
+        step is a 'recovery_step' event."""
+        step, stance = RecoveryStep.schema.defaults(), StaggeredStance.schema.defaults()
+        first = StanceMeasure(self.ctx, stance["min_height"]).outside(margin)
+        return RecoveryOnLanding(StepAndHold.schema.validate(dict(margin=margin)), self.ctx, step, stance, first)
 
     @classmethod
     def assess(cls, trajectory):
         return leap_assess(trajectory, start=jump_start(trajectory))
+
+
+class RecoveryOnLanding(StepAndHold):
+    """StepAndHold whose first step is marked by the landing's RECOVERY_STEP_EVENT (leap_assess reads it)."""
+
+    stepped = False
+
+    def _begin(self, behaviour, t: float) -> None:
+        if isinstance(behaviour, RecoveryStep) and not self.stepped:
+            self.stepped = True
+            self.event(t, RECOVERY_STEP_EVENT)
+        super()._begin(behaviour, t)
