@@ -379,7 +379,7 @@ class Running(Behaviour):
     settings_schema = RUNNING_SETTINGS
     schema = RunningSchema(
         Parameter("speed", "m/s", 3.5, 2.5, 5.0, "desired running speed on the ground plane; each runner runs at the "
-                  "speeds of its table only (the man 2.5-3.7 and 4.05-4.5 m/s, the woman 2.5-4, the child 2.5-3; docs/running.md)"),
+                  "speeds of its table only (the man 2.5-4.5 m/s, the woman 2.5-4, the child 2.5-3; docs/running.md)"),
         Parameter("facing", "rad", 0.0, -math.pi, math.pi,
                   "direction to run in (0 = +X, counter-clockwise) when no path or course is given: the runner starts "
                   "straight ahead and turns to it after turn_after m on turn_radius"),
