@@ -70,7 +70,6 @@ SCHEDULED = {
     "twist_damping": ("N m s/rad", 0.0, 30.0, "the stance hip's rotation damped about its own rate (the foot's pivot)"),
     "yaw_twist": ("rad", 0.0, 0.3, "the stance hip's yaw goal turned this much with the stride's pelvis rotation (its hip forward)"),
     "arm_yaw": ("1", -5.0, 5.0, "the arms turned about the trunk (one forward, one back) per radian of the pelvis's yaw error: they take the yaw off the stance hip"),
-    "arm_yaw_rate": ("s", -0.5, 0.5, "the arms turned about the trunk per rad/s of the pelvis's yaw rate (relative to the heading's)"),
     "thrust_gain": ("1", 1.0, 4.0, "the knee's and ankle's position gain in the thrust, as a multiple of the default"),
     "toe_push": ("rad", 0.0, 0.7, "the toe joint's plantarflexion target in the thrust (0 = held flat)"),
 }
@@ -895,9 +894,9 @@ class Running(Behaviour):
 
         # ---- arms (eq. 5): each shoulder swings against the opposite hip; elbows cycle with it
         k_arm = p["arm_swing"]
-        # and both turn about the trunk with its yaw error and rate (the right arm forward and the left back
-        # for a positive turn): their reaction on the trunk, not the stance hip, resists the yaw
-        twist = 0.0 if state == START else p["arm_yaw"] * wrap_angle(yaw - heading) + p["arm_yaw_rate"] * (wz - self.heading_rate)
+        # and both turn about the trunk with its yaw error (the right arm forward and the left back for a
+        # positive yaw): their reaction on the trunk, not the stance hip, takes part of the yaw
+        twist = 0.0 if state == START else p["arm_yaw"] * wrap_angle(yaw - heading)
         for leg in (0, 1):
             jj, opposite = self.j[leg], self.j[1 - leg]
             sign = 1.0 if leg == 0 else -1.0
