@@ -69,6 +69,7 @@ SCHEDULED = {
     "yaw_gain": ("1", 0.5, 1.5, "scale of the stance hip's yaw servo gains"),
     "twist_damping": ("N m s/rad", 0.0, 30.0, "the stance hip's rotation damped about its own rate (the foot's pivot)"),
     "yaw_twist": ("rad", 0.0, 0.3, "the stance hip's yaw goal turned this much with the stride's pelvis rotation (its hip forward)"),
+    "arm_yaw": ("1", -5.0, 5.0, "the arms turned about the trunk (one forward, one back) per radian of the pelvis's yaw error: they take the yaw off the stance hip"),
     "thrust_gain": ("1", 1.0, 4.0, "the knee's and ankle's position gain in the thrust, as a multiple of the default"),
     "toe_push": ("rad", 0.0, 0.7, "the toe joint's plantarflexion target in the thrust (0 = held flat)"),
 }
@@ -377,7 +378,7 @@ class Running(Behaviour):
     settings_schema = RUNNING_SETTINGS
     schema = RunningSchema(
         Parameter("speed", "m/s", 3.5, 2.5, 5.0, "desired running speed on the ground plane; each runner runs at the "
-                  "speeds of its table only (the man 2.5-3.7 and 4.05-4.5 m/s, the woman 2.5-4, the child 2.5-3; docs/running.md)"),
+                  "speeds of its table only (the man 2.5-4.5 m/s, the woman 2.5-4, the child 2.5-3; docs/running.md)"),
         Parameter("facing", "rad", 0.0, -math.pi, math.pi,
                   "direction to run in (0 = +X, counter-clockwise) when no path or course is given: the runner starts "
                   "straight ahead and turns to it after turn_after m on turn_radius"),
@@ -893,10 +894,13 @@ class Running(Behaviour):
 
         # ---- arms (eq. 5): each shoulder swings against the opposite hip; elbows cycle with it
         k_arm = p["arm_swing"]
+        # and both turn about the trunk with its yaw error (the right arm forward and the left back for a
+        # positive yaw): their reaction on the trunk, not the stance hip, takes part of the yaw
+        twist = 0.0 if state == START else p["arm_yaw"] * wrap_angle(yaw - heading)
         for leg in (0, 1):
             jj, opposite = self.j[leg], self.j[1 - leg]
             sign = 1.0 if leg == 0 else -1.0
-            swing = -k_arm * q[opposite["hy"]] + c.arm_offset
+            swing = -k_arm * q[opposite["hy"]] + c.arm_offset + sign * twist
             targets[jj["sz"]] = sign * swing
             targets[jj["sx"]] = self.base[jj["sx"]] - sign * c.arm_abduction      # arms clear the torso
             targets[jj["ez"]] = sign * (c.elbow_base + c.elbow_swing * swing)
