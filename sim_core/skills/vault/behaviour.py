@@ -163,13 +163,6 @@ VAULT_SETTINGS = Schema(
     setting("absorb_stick", "bool", 0.0, 1.0,
             "1 = the knees stick the landing: their targets follow the measured knees (the servos only damp) while the "
             "COM still goes down, and hold where they are once it stops (no spring back up); 0 = absorb_knee deeper"),
-    setting("absorb_spine", "bool", 0.0, 1.0,
-            "1 = after the touchdown the spine's pitch servos give as pure dampers while the COM still goes down (their "
-            "targets follow the measured joints) and hold where the fall stopped: nothing stored in them to throw the "
-            "trunk back up (the rebound's measured source, docs/vault.md); 0 = held at the touchdown's angles"),
-    setting("absorb_spine_vz", "m/s", 0.0, 2.0, "absorb_spine: the spine gives while the COM falls faster than this ..."),
-    setting("absorb_spine_time", "s", 0.0, 3.0,
-            "... then its targets go back from where the fall stopped to the touchdown's over this time (0: held)"),
     setting("absorb_hip_gain", "1", 0.0, 5.0, "after the touchdown: gain factor of the hip servos (the waist)"),
     setting("absorb_trunk", "rad", -0.5, 1.5, "after the touchdown the hips servo the pelvis to lean this far forward"),
     setting("absorb_trunk_kp", "rad/m", -10.0, 10.0,
@@ -422,8 +415,6 @@ class MatAbsorb(Behaviour):
         self.ankle_front, self.ankle_back = landing.ankle_front, landing.ankle_back
         self.over_feet = False
         self.stuck = None                       # absorb_stick: the knees where the fall stopped
-        self.spine = s.indices([f"spine_{j}_y" for j in ("l3", "l1", "t7", "t4")])
-        self.spine_held = self.spine_t = None   # absorb_spine: the spine where (and when) the fall stopped
 
     def start(self, t: float) -> None:
         s, c = self.ctx.servos, self.cfg
@@ -476,7 +467,6 @@ class MatAbsorb(Behaviour):
         capture, speed = self.capture_point(ahead, speed)
         trunk_error = self.pelvis_lean() - (self.trunk_lean(t) - c["absorb_trunk_kp"] * capture)
         self.knee_base(t, targets)
-        self.spine_base(t, targets)
         left, left_speed = self.com_from_feet(1)
         sideways = c["absorb_side_kp"] * left + c["absorb_side_kv"] * left_speed
         self.feet_and_hips(targets, angles, ankle, sideways, trunk_error)
@@ -502,24 +492,6 @@ class MatAbsorb(Behaviour):
             targets[joints["hip"]] = angles[joints["hip"]] + trunk_error
             if side_hip is not None:
                 targets[joints["hip_x"]] = self.base[joints["hip_x"]] + side_hip * sideways
-
-    def spine_base(self, t: float, targets: np.ndarray) -> None:
-        """With absorb_spine, the spine's pitch targets: the measured joints while the COM falls faster than
-        absorb_spine_vz (the servos only damp the impact's flexion, store nothing), then from where the fall
-        stopped back to the touchdown's over absorb_spine_time (0: held there)."""
-        c = self.cfg
-        if not c["absorb_spine"]:
-            return
-        if self.spine_held is None:
-            if float(self.ctx.data.subtree_linvel[self.pelvis][2]) < -c["absorb_spine_vz"]:
-                targets[self.spine] = self.ctx.servos.angles()[self.spine]
-                return
-            self.spine_held, self.spine_t = self.ctx.servos.angles()[self.spine].copy(), t
-        if self.spine_t is None or not c["absorb_spine_time"]:
-            targets[self.spine] = self.spine_held
-            return
-        share = hermite_scalar((t - self.spine_t) / c["absorb_spine_time"])
-        targets[self.spine] = self.spine_held + (self.base[self.spine] - self.spine_held) * share
 
     def trunk_lean(self, t: float) -> float:
         """The pelvis's forward pitch the hips servo (the waist gives this far)."""
@@ -554,7 +526,6 @@ class MatRise(MatAbsorb):
         s = self.ctx.servos
         self.knees_from = s.angles()[self.knees].copy()
         self.lean_from = float(self.pelvis_lean())
-        self.spine_held = s.angles()[self.spine].copy()     # the fall is over: the spine held as it is
 
     def share(self, t: float) -> float:
         return hermite_scalar((t - self.t0) / self.cfg["rise_time"])
@@ -618,7 +589,6 @@ class MatCatch(MatAbsorb):
         back, front = self.ankle_limits(t)
         ankle = min(max(c["catch_kp"] * (self.capture - c["catch_target"]), -back), front)
         trunk_error = self.pelvis_lean() - self.posture(t, targets, angles)
-        self.spine_base(t, targets)
         left, left_speed = self.com_from_feet(1)
         sideways = c["absorb_side_kp"] * left + c["absorb_side_kv"] * left_speed
         self.feet_and_hips(targets, angles, ankle, sideways, trunk_error, c["catch_side_hip"])
@@ -640,7 +610,6 @@ class MatCatchRise(MatCatch):
         super().start(t)
         self.fallen = True
         self.height_from = self.pelvis_height()
-        self.spine_held = self.ctx.servos.angles()[self.spine].copy()   # the fall is over: the spine held
 
     def share(self, t: float) -> float:
         return hermite_scalar((t - self.t0) / self.cfg["catch_rise_time"])
