@@ -289,7 +289,10 @@ def audit_checks(p: dict, m: dict, seconds: float, max_hill_grade: float) -> lis
         settled = m["heading_within_5deg_from"]
         out.append(("heading", settled is not None, "heading within 5 deg " +
                     (f"from {settled:.1f} s" if settled is not None else "not reached")))
-    if course == "turn" and not m["fell"]:
+    turned = (p.get("turn_after", 0.0) + p.get("turn_radius", 0.0) * abs(p.get("turn_angle", 0.0))) / v   # s to the turn's end
+    if course == "turn" and not m["fell"] and seconds < turned:   # the ride (AUDIT_MAX_SECONDS) ends inside the turn
+        out.append(("heading", True, f"heading not judged: the turn ends {turned:.0f} s in, after the ride"))
+    elif course == "turn" and not m["fell"]:
         error = math.remainder(math.radians(m["final_heading_deg"]) - p["turn_angle"], 2 * math.pi)
         out.append(("heading", abs(math.degrees(error)) < 5.0, f"heading {math.degrees(error):+.1f} deg off at the end"))
     if course == "slalom":
