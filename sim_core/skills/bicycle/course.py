@@ -23,7 +23,7 @@ before anything runs, naming the limit; so is a request outside the limits measu
 audit of the panel (the table's min_speed, min_gear, min_cadence, min_fast_gear, max_cadence,
 max_hill_grade, max_hill_grade_gear, max_hill_speed, max_hill_cadence, max_sharp_hill_grade, min_hill_curve
 and the steep_hill_ limits, a slowing start's
-max_slowing_cadence, a turn's max_turn_speed and max_turn_lean, a new heading's max_heading_turn_speed,
+max_slowing_cadence, a turn's max_turn_speed and max_turn_lean, a new heading's max_heading_change, max_heading_turn_speed,
 min_heading_turn_gear and min_heading_turn_cadence, and the slalom's region: min_slalom_speed,
 max_slalom_speed, max_slalom_acceleration, max_slalom_offset, min_slalom_gate_width, min_slalom_lead,
 min_slalom_lookahead; and the look-ahead of the courses that turn: min_turn_lookahead, min_turn_lead,
@@ -174,6 +174,10 @@ def _check_heading_turn(p: dict, fastest: float, slowest: float) -> None:
     and cadences where the turn was measured to settle within 5 deg without a fall (docs/bicycle.md,
     random requests over the panel; the heading step); the turn course rides turns elsewhere."""
     rolled = wheel_circumference(p)
+    if abs(p["heading"]) > p["max_heading_change"]:
+        raise ParameterError(f"a new heading is turned to up to |heading| <= {p['max_heading_change']:g} rad (asked: "
+                             f"{p['heading']:g} rad); larger, this rider was measured to fall in the turn: the turn course "
+                             f"rides a larger turn")
     if fastest > p["max_heading_turn_speed"]:
         raise ParameterError(f"a new heading is turned to at speed <= {p['max_heading_turn_speed']:g} m/s (asked: heading "
                              f"{p['heading']:g} rad at {fastest:g} m/s); faster, the turn was measured to fall: the turn "
