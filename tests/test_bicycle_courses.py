@@ -106,6 +106,8 @@ def test_speed_steps_and_slow_start():
     # the hills within 5 % instantaneously (eleventh session): a sharp 5 % crest dipped the speed 5.0-7.1 %, strokes
     # faster than 1.25 rev/s swung it 5.1-8.7 % (docs/bicycle.md, the hills within 5 % instantaneously)
     ({"course": "hill", "hill_grade": 0.05, "hill_curve": 0.0}, "hill_curve >= 2 m (asked: 0 m)"),
+    # the man's seed 21 offered #14 fell (a stop braking 1.39 s in) and the child's new headings above 0.5 rad
+    ({"course": "stop", "speed": 3.03, "gear": 3.24, "coast_after": 1.39}, "coast_after >= 2 s (asked: 1.39 s)"),
     ({"course": "hill", "hill_grade": 0.05, "speed": 4.0, "gear": 1.0}, "<= 1.25 rev/s (asked: 1.91 rev/s"),
     ({"course": "hill", "hill_grade": 0.05, "speed": 8.0, "gear": 2.5, "hill_curve": 2.0}, "a gear >= 3.05 would do"),
     ({"course": "roundabout"}, "course"),
@@ -327,6 +329,7 @@ def test_offered_draws_are_offered_to_their_rider():
             assert draw["course"] in rider_courses(rider) and c["min_gear"] <= draw["gear"] <= c["max_gear"]
             assert refused >= 0
     assert audit_refusal({"course": "slalom", "speed": 3.5}, "child").startswith("the child rides")
+    assert "|heading| <= 0.5 rad" in audit_refusal({"course": "straight", "speed": 2.37, "gear": 2.6, "heading": -1.0}, "child")
 
 
 def test_the_audit_rides_as_the_rider_asked_and_refuses_what_it_is_not_offered():

@@ -102,6 +102,7 @@ BICYCLE_RANGES = Schema(
     Parameter("heading_acceleration", "m/s^2", 0.1, 0.1, 10.0, "a commanded heading (no path) is approached as a turn asking this lateral acceleration: the desired heading turns at this / v rad/s"),
     Parameter("heading_rate_feedforward", "1", 0.0, 0.0, 1.0, "share of the desired heading's turning rate (to a commanded heading) eq. 11's yaw-rate term damps the yaw rate relative to (0: the seed's, relative to 0; without it the heading lags the turn by k_bd/k_b times its rate)"),
     Parameter("heading_rate_filter", "s", 0.0, 0.0, 2.0, "time constant of the low-pass on that turning rate before eq. 11 uses it (0: unfiltered)"),
+    Parameter("min_stop_after", "s", 0.5, 0.5, 100.0, "the stop brakes from coast_after >= this (earlier, a stop from 3.03 m/s braking 1.39 s in fell; course.py refuses it)"),
     Parameter("max_heading_change", "rad", 3.15, 0.0, 3.15, "the largest commanded heading (a turn from the start's) offered (larger, the child fell 1.7-2.3 s in; course.py refuses it)"),
     Parameter("max_heading_turn_speed", "m/s", 0.5, 0.5, 10.0, "a commanded heading other than the start's (no path) is offered up to this speed (faster, the turn to it fell or leaned past 20 deg; course.py refuses it)"),
     Parameter("min_heading_turn_gear", "1", 0.5, 0.5, 5.0, "a commanded heading other than the start's (no path) is offered from this gear (in lower gears the heading was left 5-10 deg off or the bicycle weaved; course.py refuses it)"),

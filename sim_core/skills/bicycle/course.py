@@ -23,7 +23,7 @@ before anything runs, naming the limit; so is a request outside the limits measu
 audit of the panel (the table's min_speed, min_gear, min_cadence, min_fast_gear, max_cadence,
 max_hill_grade, max_hill_grade_gear, max_hill_speed, max_hill_cadence, max_sharp_hill_grade, min_hill_curve
 and the steep_hill_ limits, a slowing start's
-max_slowing_cadence, a turn's max_turn_speed and max_turn_lean, a new heading's max_heading_change, max_heading_turn_speed,
+max_slowing_cadence, a turn's max_turn_speed and max_turn_lean, a stop's min_stop_after, a new heading's max_heading_change, max_heading_turn_speed,
 min_heading_turn_gear and min_heading_turn_cadence, and the slalom's region: min_slalom_speed,
 max_slalom_speed, max_slalom_acceleration, max_slalom_offset, min_slalom_gate_width, min_slalom_lead,
 min_slalom_lookahead; and the look-ahead of the courses that turn: min_turn_lookahead, min_turn_lead,
@@ -112,6 +112,9 @@ def course_for(p: dict) -> Course:
         start_speed = p["start_speed"]
     elif name == "stop":
         _check_stop(p["speed"])
+        if p["coast_after"] < p["min_stop_after"]:
+            raise ParameterError(f"the stop brakes from coast_after >= {p['min_stop_after']:g} s (asked: {p['coast_after']:g} s); "
+                                 f"earlier, a stop from 3.03 m/s braking 1.39 s after the rolling start was measured to fall")
     elif name == "coast":
         _check_coast(p["speed"], p["coast_min_speed"])
     if "path" in p:
