@@ -102,6 +102,8 @@ BICYCLE_RANGES = Schema(
     Parameter("heading_acceleration", "m/s^2", 0.1, 0.1, 10.0, "a commanded heading (no path) is approached as a turn asking this lateral acceleration: the desired heading turns at this / v rad/s"),
     Parameter("heading_rate_feedforward", "1", 0.0, 0.0, 1.0, "share of the desired heading's turning rate (to a commanded heading) eq. 11's yaw-rate term damps the yaw rate relative to (0: the seed's, relative to 0; without it the heading lags the turn by k_bd/k_b times its rate)"),
     Parameter("heading_rate_filter", "s", 0.0, 0.0, 2.0, "time constant of the low-pass on that turning rate before eq. 11 uses it (0: unfiltered)"),
+    Parameter("min_stop_after", "s", 0.5, 0.5, 100.0, "the stop brakes from coast_after >= this (earlier, a stop from 3.03 m/s braking 1.39 s in fell; course.py refuses it)"),
+    Parameter("max_heading_change", "rad", 3.15, 0.0, 3.15, "the largest commanded heading (a turn from the start's) offered (larger, the child fell 1.7-2.3 s in; course.py refuses it)"),
     Parameter("max_heading_turn_speed", "m/s", 0.5, 0.5, 10.0, "a commanded heading other than the start's (no path) is offered up to this speed (faster, the turn to it fell or leaned past 20 deg; course.py refuses it)"),
     Parameter("min_heading_turn_gear", "1", 0.5, 0.5, 5.0, "a commanded heading other than the start's (no path) is offered from this gear (in lower gears the heading was left 5-10 deg off or the bicycle weaved; course.py refuses it)"),
     Parameter("min_heading_turn_cadence", "1/s", 0.0, 0.0, 5.0, "a commanded heading other than the start's (no path) is offered from this cadence v / (2 pi r gear), in revolutions per second (slower, the turn fell; course.py refuses it)"),
@@ -119,6 +121,9 @@ BICYCLE_RANGES = Schema(
     Parameter("min_gear", "1", 0.5, 0.5, 5.0, "the lowest gear offered (lower, the legs lost more than 5 % of the speed at 1.9-2.4 rev/s; course.py refuses it)"),
     Parameter("max_hill_grade", "1", 0.0, 0.0, 0.2, "the steepest hill_grade offered in any gear (up to max_hill_grade_gear); steeper, up to steep_hill_grade, in the steep_hill_ gears and speeds only (course.py refuses the rest)"),
     Parameter("max_hill_speed", "m/s", 8.0, 0.5, 8.0, "a hill up to max_hill_grade is offered up to this speed (faster, the climb lost more than 5 % of the speed per crank revolution; course.py refuses it)"),
+    Parameter("max_hill_cadence", "1/s", 10.0, 0.5, 10.0, "a hill up to max_hill_grade is offered up to this cadence v / (2 pi r gear), in revolutions per second (faster, the speed swung by more than 5 % within the strokes; course.py refuses it)"),
+    Parameter("max_sharp_hill_grade", "1", 0.2, 0.0, 0.2, "a hill up to max_hill_grade steeper than this is offered with its corners rounded, hill_curve >= min_hill_curve (at a sharp crest the speed dipped by more than 5 %; course.py refuses it)"),
+    Parameter("min_hill_curve", "m", 0.0, 0.0, 100.0, "the shortest vertical curve (hill_curve) of a hill steeper than max_hill_grade's sharp limit, max_sharp_hill_grade"),
     Parameter("max_hill_grade_gear", "1", 0.0, 0.0, 1.0, "the largest hill_grade x gear a hill may ask (the climb's crank torque goes with it; steeper or higher-geared climbs lost more than 15 % of the speed; course.py refuses them)"),
     Parameter("steep_hill_grade", "1", 0.0, 0.0, 0.2, "the steepest hill_grade offered; above max_hill_grade only in the steep_hill_ gears and speeds (course.py refuses the rest)"),
     Parameter("steep_hill_min_gear", "1", 0.5, 0.5, 5.0, "a hill steeper than max_hill_grade is offered from this gear"),
@@ -170,6 +175,12 @@ def riders() -> list[str]:
     return sorted({SIZED_FOR, *characters_of("bicycle")})
 
 
+def rider_courses(character: str) -> tuple[str, ...]:
+    """The courses ``character`` is offered: its table's "courses" (every course for the man or a rider with no table)."""
+    table = load("bicycle", character) if character != SIZED_FOR else None
+    return tuple(table["courses"]) if table is not None else tuple(COURSE.options)
+
+
 def rider_knobs(character: str) -> dict:
     """The animator parameters whose default the rider's table replaces (its "knobs": the woman's
     look-ahead), checked against the schema; {} for the man or a rider with no table."""
@@ -198,12 +209,10 @@ def check_rider(params: dict, character) -> None:
         raise ParameterError(f"bicycle is not calibrated for the {name} (calibrated for: {', '.join(offered)}): "
                              f"not measured to ride: a rider rides with a table of its own, bicycle_{name}.json, and a "
                              f"bicycle its size (docs/bicycle.md, riders other than the man)")
-    table = load("bicycle", name) if name != SIZED_FOR else None
-    if table is None:
-        return
+    courses = rider_courses(name)
     course = COURSE.option(params["course"])
-    if course not in table["courses"]:
-        raise ParameterError(f"the {name} rides the bicycle's {', '.join(table['courses'])} course(s) only (asked: "
+    if course not in courses:
+        raise ParameterError(f"the {name} rides the bicycle's {', '.join(courses)} course(s) only (asked: "
                              f"{course}); the others were not measured for the {name} (docs/bicycle.md)")
 
 
@@ -268,7 +277,7 @@ class Bicycling(Behaviour):
         Parameter("hill_after", "m", 10.0, 0.0, 200.0, "hill: flat ground before the climb"),
         Parameter("hill_length", "m", 40.0, 5.0, 300.0, "hill: length (along the ground) of the climb and of the descent"),
         Parameter("hill_top", "m", 10.0, 1.0, 100.0, "hill: length of its flat top"),
-        Parameter("hill_curve", "m", 0.0, 0.0, 100.0, "hill: length of the vertical curves (parabolas) that round its foot and crest corners, at most hill_top and hill_length (0: sharp corners)"),
+        Parameter("hill_curve", "m", 2.0, 0.0, 100.0, "hill: length of the vertical curves (parabolas) that round its foot and crest corners, at most hill_top and hill_length (0: sharp corners)"),
         Parameter("start_speed", "m/s", 1.5, 1.5, 8.0, "start: the rolling start's speed, from which the rider pedals up to speed"),
         Parameter("coast_after", "s", 2.0, 0.5, 100.0, "coast, stop: time from which the rider stops pedalling (coast) or brakes to a stop (stop)"),
         Points("path", "the path to ride along, [x, y] points in metres from the start (in Blender: a curve "

@@ -21,8 +21,9 @@ Courses (the ``course`` parameter; a ``path`` given replaces the course's path):
 A course that asks the bicycle to turn harder than ``MAX_LEAN`` of lean at its speed is refused
 before anything runs, naming the limit; so is a request outside the limits measured by the random
 audit of the panel (the table's min_speed, min_gear, min_cadence, min_fast_gear, max_cadence,
-max_hill_grade, max_hill_grade_gear, max_hill_speed and the steep_hill_ limits, a slowing start's
-max_slowing_cadence, a turn's max_turn_speed and max_turn_lean, a new heading's max_heading_turn_speed,
+max_hill_grade, max_hill_grade_gear, max_hill_speed, max_hill_cadence, max_sharp_hill_grade, min_hill_curve
+and the steep_hill_ limits, a slowing start's
+max_slowing_cadence, a turn's max_turn_speed and max_turn_lean, a stop's min_stop_after, a new heading's max_heading_change, max_heading_turn_speed,
 min_heading_turn_gear and min_heading_turn_cadence, and the slalom's region: min_slalom_speed,
 max_slalom_speed, max_slalom_acceleration, max_slalom_offset, min_slalom_gate_width, min_slalom_lead,
 min_slalom_lookahead; and the look-ahead of the courses that turn: min_turn_lookahead, min_turn_lead,
@@ -111,6 +112,9 @@ def course_for(p: dict) -> Course:
         start_speed = p["start_speed"]
     elif name == "stop":
         _check_stop(p["speed"])
+        if p["coast_after"] < p["min_stop_after"]:
+            raise ParameterError(f"the stop brakes from coast_after >= {p['min_stop_after']:g} s (asked: {p['coast_after']:g} s); "
+                                 f"earlier, a stop from 3.03 m/s braking 1.39 s after the rolling start was measured to fall")
     elif name == "coast":
         _check_coast(p["speed"], p["coast_min_speed"])
     if "path" in p:
@@ -173,6 +177,10 @@ def _check_heading_turn(p: dict, fastest: float, slowest: float) -> None:
     and cadences where the turn was measured to settle within 5 deg without a fall (docs/bicycle.md,
     random requests over the panel; the heading step); the turn course rides turns elsewhere."""
     rolled = wheel_circumference(p)
+    if abs(p["heading"]) > p["max_heading_change"]:
+        raise ParameterError(f"a new heading is turned to up to |heading| <= {p['max_heading_change']:g} rad (asked: "
+                             f"{p['heading']:g} rad); larger, this rider was measured to fall in the turn: the turn course "
+                             f"rides a larger turn")
     if fastest > p["max_heading_turn_speed"]:
         raise ParameterError(f"a new heading is turned to at speed <= {p['max_heading_turn_speed']:g} m/s (asked: heading "
                              f"{p['heading']:g} rad at {fastest:g} m/s); faster, the turn was measured to fall: the turn "
@@ -244,7 +252,9 @@ def _check_hill(p: dict, speeds: list[float]) -> None:
     with it: m g grade r gear) up to its ``max_hill_grade_gear``; steeper ones, up to ``steep_hill_grade``,
     only in gears ``steep_hill_min_gear``-``steep_hill_max_gear`` at speeds ``steep_hill_min_speed``-
     ``steep_hill_max_speed`` after at least ``steep_hill_min_lead`` m of flat: where the speed was measured
-    to hold within 15 % up and down (docs/bicycle.md, hills)."""
+    to hold within 15 % up and down (docs/bicycle.md, hills). Up to ``max_hill_grade``, at a cadence up to
+    ``max_hill_cadence`` and, steeper than ``max_sharp_hill_grade``, with ``hill_curve`` >= ``min_hill_curve``:
+    where it held within 5 % instantaneously (docs/bicycle.md, the hills within 5 % instantaneously)."""
     grade, gear = p["hill_grade"], p["gear"]
     if grade > p["steep_hill_grade"]:
         raise ParameterError(f"the hill is ridden up to hill_grade {p['steep_hill_grade']:g} (asked: {grade:g}): steeper "
@@ -264,6 +274,16 @@ def _check_hill(p: dict, speeds: list[float]) -> None:
         raise ParameterError(f"a hill up to hill_grade {p['max_hill_grade']:g} is ridden at speed <= {p['max_hill_speed']:g} m/s "
                              f"(asked: {max(speeds):g} m/s on hill_grade {grade:g}); faster, the climb was measured to lose "
                              f"more than 5 % of the speed per crank revolution")
+    cadence = max(speeds) / (wheel_circumference(p) * gear)
+    if cadence > p["max_hill_cadence"]:
+        raise ParameterError(f"a hill up to hill_grade {p['max_hill_grade']:g} is ridden at a cadence v / (2 pi r gear) <= "
+                             f"{p['max_hill_cadence']:g} rev/s (asked: {cadence:.2f} rev/s at {max(speeds):g} m/s in gear {gear:g}); "
+                             f"faster, the speed was measured to swing by more than 5 % within the strokes: a gear >= "
+                             f"{max(speeds) / (wheel_circumference(p) * p['max_hill_cadence']):.2f} would do")
+    if grade > p["max_sharp_hill_grade"] and p["hill_curve"] < p["min_hill_curve"]:
+        raise ParameterError(f"a hill steeper than hill_grade {p['max_sharp_hill_grade']:g} (asked: {grade:g}) is ridden with its "
+                             f"corners rounded, hill_curve >= {p['min_hill_curve']:g} m (asked: {p['hill_curve']:g} m); at a sharp "
+                             f"crest the speed was measured to dip by more than 5 %")
     most = p["max_hill_grade_gear"]
     if grade * gear > most:
         raise ParameterError(f"the hill is ridden with hill_grade x gear <= {most:g} (asked: {grade:g} x {gear:g} = "
