@@ -150,13 +150,13 @@ def test_the_scaled_running_table_is_passed_as_the_run_s_table(man, woman):
 
 
 def test_running_at_50_percent_keeps_the_seeds_ordering():
-    """S5 at 50 %: the man's unscaled controller falls within its first steps; scaled ones run
-    longer, mass-scaled longest (3 s cap: three short runs)."""
-    trials = experiment("running", fractions=(0.5,), cap=3.0)
+    """S5 at 50 %: the man's unscaled controller falls (5.55 s since his start keeps the hip's damping,
+    docs/bodies.md); scaled ones run longer, mass-scaled longest (8 s cap: three short runs)."""
+    trials = experiment("running", fractions=(0.5,), cap=8.0)
     times = {t.controller: t.time_before_falling for t in trials}
     print("\n50 % man -> woman, running:", times)
     assert [t.controller for t in trials] == list(CONTROLLERS)
-    assert times["unscaled"] < 2.0 and ordering_holds(trials) == {0.5: True}
+    assert times["unscaled"] < 7.0 and ordering_holds(trials) == {0.5: True}
 
 
 def test_bad_experiment_input_is_refused():

@@ -238,6 +238,17 @@ def test_the_man_is_refused_where_100_s_runs_fell(speed):
     assert "[2.5, 4.5] m/s" in text and "the man's running table" in text and "\n" not in text, text
 
 
+@pytest.mark.parametrize("lean", [Running.schema.by_name["start_lean"].minimum, 0.6,
+                                  Running.schema.by_name["start_lean"].maximum])
+def test_the_man_starts_with_any_offered_start_lean(lean):
+    """With the man's hip undamped in the lean (``start_hip_damping`` 0) the start fell 0.7-1.9 s in for
+    start_lean 0.1, 0.2, 0.25, 0.6, 0.8, 0.9 and 1.0 s at every speed (docs/running.md, the start lean); with
+    the damping kept (1.0 in his table's constants, as the woman's and the child's) every lean starts."""
+    assert SpeedTable.load("man").constants.get("start_hip_damping") == 1.0
+    traj = run_running(5.0, speed=3.0, start_lean=lean)
+    assert not_fallen(traj), f"start_lean {lean} s: fell at {traj.meta['metrics']['fall_time']:.1f} s"
+
+
 def test_the_arms_take_the_yaw_inside_the_former_gap():
     """3.9 m/s fell at 12.8 s with every row tried before (docs/running.md, Limitations, the arms take the
     yaw): with the arms turned about the trunk by the pelvis's yaw error (``arm_yaw`` of the man's 3.7 m/s

@@ -90,7 +90,11 @@ def controller_for(skill: str, man: CharacterSpec, body: dict, controller: str) 
         return character, request, []
     mode = MODE_OF[controller]
     schema = cls.schema
-    base = {**schema.defaults(), **request}
+    own = {}                                # the man's own constants of the laws (his running table's)
+    if skill == "running":
+        from ..skills.running.behaviour import SpeedTable
+        own = {n: v for n, v in SpeedTable.load(man.name).constants.items() if n in schema.by_name}
+    base = {**schema.defaults(), **own, **request}
     numbers = {n: v for n, v in base.items() if isinstance(v, (int, float)) and not isinstance(v, bool)
                and getattr(schema.by_name[n], "kind", "number") == "number"}
     params, clamped = _clamp(scale_settings(numbers, schema, pair, mode), schema)
