@@ -302,3 +302,15 @@ def test_the_steering_limits_are_data_of_the_runners_table():
         with pytest.raises(ParameterError) as err:
             Running.schema.validate({"table": dict(man.to_table(), steering=bad)})
         assert "steering" in str(err.value) and "\n" not in str(err.value)
+
+
+def test_the_womans_start_lean_is_refused_beyond_what_was_measured():
+    """Her start fell at 3.2 s with start_lean 1.0 s at every speed and ran at 0.1-0.7 s (docs/running.md, the start
+    lean): her table's ``start_lean`` max 0.7 s, carried by ``to_table``; a longer lean is refused in one line naming
+    the range, before anything runs; the man (no limit in his table) takes the schema's whole range."""
+    woman = SpeedTable.load("woman")
+    assert woman.start_lean["max"] == 0.7 and SpeedTable.load("man").start_lean is None
+    assert SpeedTable.from_table(woman.to_table()).start_lean == woman.start_lean
+    with pytest.raises(ParameterError) as err:
+        run(RunRequest("running", "woman", params={"speed": 3.0, "start_lean": 0.9}, duration=0.05))
+    assert "[0.1, 0.7] s" in str(err.value) and "\n" not in str(err.value)

@@ -88,6 +88,9 @@ MORPH_FROM = ("man",)               # criterion: the runners measured morphing (
 MORPH_SPEEDS = (2.5, 3.5)           # criterion: m/s, the speeds measured morphing without a fall (docs/bodies.md, the
                                     # morph: 2.5-3.5 m/s; with the woman's 4.0 m/s row, a morph at 4.0 m/s fell at 9.8 s)
 
+START_LEAN = Parameter("start_lean", "s", 0.35, 0.1, 1.0, "time the standing body leans forward before the first push-off")
+
+
 def offered_speeds(character: str) -> list[float]:
     """The rows of a runner's table at speeds it is offered (not inside a refused range)."""
     table = SpeedTable.load(character)
@@ -101,10 +104,12 @@ class SpeedTable:
     table that a run is refused (open intervals (low, high), the table's ``refused_speeds``: where
     100 s runs from a stand fell with every row measured between, docs/running.md), next to the rows
     they qualify; ``steering``: the fastest speed and the largest lateral acceleration (v^2 / r) up to
-    which the runner was measured to turn (the table's ``steering``; None: it runs straight ahead only)."""
+    which the runner was measured to turn (the table's ``steering``; None: it runs straight ahead only);
+    ``start_lean``: the longest lean into the start measured to start it (the table's ``start_lean``
+    ``max``; None: the schema's range)."""
 
     def __init__(self, speeds: list[float], values: dict[str, list[float] | float], constants: dict | None = None,
-                 refused=None, steering: dict | None = None):
+                 refused=None, steering: dict | None = None, start_lean: dict | None = None):
         self.speeds = [float(v) for v in speeds]
         self.values = {k: ([float(x) for x in v] if isinstance(v, (list, tuple)) else [float(v)] * len(self.speeds))
                        for k, v in values.items()}
@@ -113,6 +118,7 @@ class SpeedTable:
         self.constants = {k: float(v) for k, v in (constants or {}).items()}
         self.refused = [(float(low), float(high)) for low, high in _refused_ranges(refused, self.speeds)]
         self.steering = _steering_limits(steering)
+        self.start_lean = _start_lean_limit(start_lean)
 
     @classmethod
     def load(cls, character: str = "man") -> "SpeedTable":
@@ -125,14 +131,15 @@ class SpeedTable:
             if data is not None:
                 return cls(data.get("speeds", fallback["speeds"]), {**fallback["parameters"], **data.get("parameters", {})},
                            data.get("constants") if name == character else None, data.get("refused_speeds"),
-                           data.get("steering") if name == character else None)
+                           data.get("steering") if name == character else None,
+                           data.get("start_lean") if name == character else None)
         return cls(fallback["speeds"], fallback["parameters"])
 
     @classmethod
     def from_table(cls, table: dict) -> "SpeedTable":
         """A table as ``to_table`` gives it (a run's ``table`` parameter)."""
         return cls(table["speeds"], table["parameters"], table.get("constants"), table.get("refused_speeds"),
-                   table.get("steering"))
+                   table.get("steering"), table.get("start_lean"))
 
     def to_table(self) -> dict:
         """The table's speeds and columns (and its constants, if any) as a running table stores them
@@ -145,10 +152,11 @@ class SpeedTable:
         return table
 
     def limits_entry(self) -> dict:
-        """The table file's ``refused_speeds`` and ``steering`` entries (those it has): what a writer of
-        the table carries."""
+        """The table file's ``refused_speeds``, ``steering`` and ``start_lean`` entries (those it has): what
+        a writer of the table carries."""
         return {**({"refused_speeds": [[low, high] for low, high in self.refused]} if self.refused else {}),
-                **({"steering": dict(self.steering)} if self.steering else {})}
+                **({"steering": dict(self.steering)} if self.steering else {}),
+                **({"start_lean": dict(self.start_lean)} if self.start_lean else {})}
 
     def offered(self) -> list[tuple[float, float]]:
         """The speed ranges a run is offered: the table's, less its refused ranges."""
@@ -172,7 +180,7 @@ class SpeedTable:
                 return self.values[n][self.speeds.index(v)]     # knot could change it in the last bit)
             return self.at(n, v)
         return SpeedTable(speeds, {n: [value(n, v) for v in speeds] for n in self.values}, self.constants, self.refused,
-                          self.steering)
+                          self.steering, self.start_lean)
 
     def at(self, name: str, speed: float) -> float:
         """A column's value at the speed: piecewise linear between the rows, held beyond the ends."""
@@ -198,6 +206,18 @@ def _steering_limits(steering) -> dict | None:
         raise ParameterError(f"steering={str(steering)[:60]} must give max_speed (m/s) and max_lateral_acceleration "
                              f"(m/s^2), both > 0")
     return dict(steering)
+
+
+def _start_lean_limit(start_lean) -> dict | None:
+    """A table's ``start_lean`` checked: ``max`` (s) inside the schema's start_lean range (and a ``note``
+    saying where it was measured)."""
+    if start_lean is None:
+        return None
+    low, high = START_LEAN.minimum, START_LEAN.maximum
+    value = start_lean.get("max") if isinstance(start_lean, dict) else None
+    if not (isinstance(value, (int, float)) and low <= value <= high):
+        raise ParameterError(f"start_lean={str(start_lean)[:60]} must give max (s) within [{low:g}, {high:g}]")
+    return dict(start_lean)
 
 
 def _refused_ranges(refused, speeds: list[float]) -> list:
@@ -314,6 +334,7 @@ def _running_rows(body: dict):
     speeds = body.get("speeds", [])
     _refused_ranges(body.get("refused_speeds"), speeds)      # checked with the rows: on load, save and as a run's table
     _steering_limits(body.get("steering"))
+    _start_lean_limit(body.get("start_lean"))
     columns = body.get("parameters", {})
     for k, speed in enumerate(speeds):
         yield f"row {speed:g} m/s", {n: (v[k] if isinstance(v, list) else v) for n, v in columns.items()}
@@ -397,7 +418,7 @@ class Running(Behaviour):
         Parameter("lookahead", "m", 2.5, 0.5, 10.0, "path following: distance along the path of the point the runner heads for"),
         Parameter("arm_swing", "1", 0.8, 0.0, 2.0,
                   "k of eq. 5: shoulder swing per radian of the opposite hip's swing"),
-        Parameter("start_lean", "s", 0.35, 0.1, 1.0, "time the standing body leans forward before the first push-off"),
+        START_LEAN,
         Choice("morph_to", MORPH_TARGETS, "none",
                "the body turns into this character while it runs (Hodgins & Pollard 1997's metamorphosis: lengths, "
                "masses, inertias and servos interpolated every control tick); straight ahead, at speeds both run"),
@@ -441,6 +462,10 @@ class Running(Behaviour):
                 raise ParameterError(f"parameter speed={speed:g} m/s is out of range for the {name}; allowed range for "
                                      f"speed is {allowed} m/s (the speeds of the {name}'s running table"
                                      f"{', less those where 100 s runs fell' if len(ranges) > 1 else ''})")
+            if table.start_lean is not None and self.params["start_lean"] > table.start_lean["max"]:
+                raise ParameterError(f"parameter start_lean={self.params['start_lean']:g} s is out of range for the {name}; "
+                                     f"allowed range for start_lean is [{START_LEAN.minimum:g}, {table.start_lean['max']:g}] s "
+                                     f"(longer leans were measured to fall in the start: docs/running.md, the start lean)")
             path = path_for(self.params)
             if path is not None and table.steering is not None:
                 check_steering(speed, path, self.params["lookahead"], name, table.steering)
