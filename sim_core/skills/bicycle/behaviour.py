@@ -102,6 +102,8 @@ BICYCLE_RANGES = Schema(
     Parameter("heading_acceleration", "m/s^2", 0.1, 0.1, 10.0, "a commanded heading (no path) is approached as a turn asking this lateral acceleration: the desired heading turns at this / v rad/s"),
     Parameter("heading_rate_feedforward", "1", 0.0, 0.0, 1.0, "share of the desired heading's turning rate (to a commanded heading) eq. 11's yaw-rate term damps the yaw rate relative to (0: the seed's, relative to 0; without it the heading lags the turn by k_bd/k_b times its rate)"),
     Parameter("heading_rate_filter", "s", 0.0, 0.0, 2.0, "time constant of the low-pass on that turning rate before eq. 11 uses it (0: unfiltered)"),
+    Parameter("min_freewheel_gear", "1", 0.5, 0.5, 10.0, "the coast and the stop (the freewheel courses) are offered from this gear (course.py refuses lower: the coast's stop fell in 3 of 9 rides in gear 2.0)"),
+    Parameter("max_freewheel_gear", "1", 10.0, 0.5, 10.0, "the coast and the stop are offered up to this gear (course.py refuses higher: the coast's stop fell in 3, 2 and 5 of 9 rides in gears 2.8, 3.0 and 3.5, the stop in 2 of 9 in gear 3.5)"),
     Parameter("min_stop_after", "s", 0.5, 0.5, 100.0, "the stop brakes from coast_after >= this (earlier, a stop from 3.03 m/s braking 1.39 s in fell; course.py refuses it)"),
     Parameter("max_heading_change", "rad", 3.15, 0.0, 3.15, "the largest commanded heading (a turn from the start's) offered (larger, the child fell 1.7-2.3 s in; course.py refuses it)"),
     Parameter("max_heading_turn_speed", "m/s", 0.5, 0.5, 10.0, "a commanded heading other than the start's (no path) is offered up to this speed (faster, the turn to it fell or leaned past 20 deg; course.py refuses it)"),
