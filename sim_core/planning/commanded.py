@@ -27,9 +27,9 @@ from typing import Callable
 
 from ..character.spec import load_character
 from ..control.leap import LEAP_SETTINGS
-from ..errors import Cancelled
 from ..skills.jump_to_target.commanded import CONSTANTS, commanded_settings, table
 from .land import candidates, foot_step
+from .trials import Trials
 
 
 def secant(values: list[float], results: list[float], floor: float, fallback: float) -> float:
@@ -53,16 +53,8 @@ def plan_commanded(character: str, target, air_time: float, trial, budget: int, 
     c, body = constants or CONSTANTS, body or table(character)
     x = float(target[0])
     bound = min(budget, c.aim_trials + c.landing_trials - 1)
-    tried = []
-
-    def run_trial(settings: dict) -> dict:
-        if cancelled is not None and cancelled():
-            raise Cancelled("planning cancelled")
-        cost, measured = trial(settings)
-        tried.append((cost, len(tried), settings, measured))
-        if progress is not None:
-            progress(len(tried), bound, min(tried, key=lambda e: (e[0], e[1]))[3])
-        return measured
+    trials = Trials(trial, bound, progress, cancelled)
+    tried, run_trial = trials.tried, trials.run
 
     aims, landed, air_aims, flown = [x], [], [float(air_time)], []
     while True:

@@ -36,12 +36,13 @@ from ..control.leap import LEAP_SETTINGS, blend_rows, load_mapping
 from ..control.turn import turn_duration
 from ..skills.jump_to_target.behaviour import AIR_TIME_TOLERANCE, KNOB_DEFAULTS, LANDING_TOLERANCE, REQUEST_KEYS, JumpToTarget, check_request, landing_measures, leap_params, obstacle_of, plan_store_dir, read_plans, same_request, scene_for, stored_plan, stored_plans, turn_of
 from .. import tuned
-from ..errors import Cancelled, ParameterError
+from ..errors import ParameterError
 from ..simulate import RunRequest, run
 from ..tuning import SerialExecutor, Space, minimize
 from ..skills.jump_to_target.region import REACH, mode, model, nearest_balanced
 from .commanded import plan_commanded
 from .land import candidates as foot_candidates, foot_step
+from .trials import Trials
 
 PLAN_MARGIN = 0.6                   # the search aims inside this share of the tolerances
 
@@ -264,17 +265,12 @@ def plan_from_model(character: str, target, air_time: float, trial, budget: int,
     FOOT_TRIALS more. Returns the planner's {"settings", "measured", "trials", "found"} (the best
     trial, found or not)."""
     near = nearest_balanced(character, target, air_time, NEIGHBOURS)
-    tried = []
     bound = min(budget, MODEL_TRIALS + FOOT_TRIALS)
+    trials = Trials(trial, bound, progress, cancelled)
+    tried = trials.tried
 
     def run_trial(settings) -> bool:
-        if cancelled is not None and cancelled():
-            raise Cancelled("planning cancelled")
-        cost, measured = trial(settings)
-        tried.append((cost, len(tried), settings, measured))
-        if progress is not None:
-            progress(len(tried), bound, min(tried, key=lambda e: (e[0], e[1]))[3])
-        return within_tolerance(measured, target, air_time)
+        return within_tolerance(trials.run(settings), target, air_time)
 
     found = False
     for settings in candidates(near, target, air_time):
