@@ -12,7 +12,7 @@ from sim_core.errors import ParameterError
 from sim_core.simulate import RunRequest, run
 from sim_core.skills.bicycle.behaviour import Bicycling, bicycle_constants
 from sim_core.skills.bicycle.course import MAX_LEAN, course_for, gate_passes, slalom
-from sim_core.skills.bicycle.report import (audit_draw, audit_line, audit_request, audit_seconds, slalom_request,
+from sim_core.skills.bicycle.report import (audit_checks, audit_draw, audit_line, audit_request, audit_seconds, slalom_request,
                                             slalom_seconds)
 from sim_core.world import World, add_world
 from sim_core.world.hill import CURVE_CHORD, check_hill, hill_height, hill_profile
@@ -344,3 +344,15 @@ def test_the_audit_rides_as_the_rider_asked_and_refuses_what_it_is_not_offered()
     draw = {"course": "slalom", "speed": 3.5, "gear": 2.6, **{n: defaults[n] for n in AUDIT_PARAMETERS["slalom"]}}
     result = audit_request(draw, "child")
     assert "refused" in result and "the child rides" in result["refused"] and "\n" not in result["refused"]
+
+
+def test_the_audit_judges_the_gates_a_cut_ride_reached():
+    """A slalom longer than the audit's ride (AUDIT_MAX_SECONDS) is judged on the gates the ride reaches (each
+    with half a spacing after it), not on all: the woman's seed 41 offered #10 (7 gates 33.65 m apart at 3.59 m/s,
+    68 s long) passed 6 gates in 60 s and was called a fail."""
+    ridden = dict(fell=False, max_abs_roll_deg=1.7, max_hand_gap=0.007, max_foot_gap=0.003, max_seat_gap=0.00025,
+                  gate_count=7)
+    request = dict(course="slalom", speed=3.59, gear=2.6, gate_count=7, gate_spacing=33.65, gate_offset=0.3, turn_after=7.69)
+    gates = {passed: dict((name, ok) for name, ok, _ in audit_checks(request, dict(ridden, gates_passed=passed), 60.0, 0.05))
+             ["gates"] for passed in (5, 6)}
+    assert gates == {5: False, 6: True}
