@@ -112,7 +112,6 @@ def test_speed_steps_and_slow_start():
     ({"course": "hill", "hill_grade": 0.05, "speed": 8.0, "gear": 2.5, "hill_curve": 2.0}, "a gear >= 3.05 would do"),
     # the freewheel's gears (twelfth session): the coast's stop fell in 3 of 9 rides in gear 2.0, 3 in 2.8, 5 in 3.5
     ({"course": "coast", "speed": 3.72, "gear": 3.5, "coast_after": 4.64}, "allowed range for gear is [2.4, 2.6]"),
-    ({"course": "stop", "speed": 4.0, "gear": 2.0, "coast_after": 3.0}, "allowed range for gear is [2.4, 2.6]"),
     ({"course": "roundabout"}, "course"),
     ({"path": [[0, 0], [0.01, 0]]}, "degenerate"),
     ({"speed": 4.0, "path": [[0, 0], [10, 0], [10, 10]]}, "radius of 2.48 m (from path, 9.9 m along it)"),

@@ -117,9 +117,9 @@ def course_for(p: dict) -> Course:
                                  f"earlier, a stop from 3.03 m/s braking 1.39 s after the rolling start was measured to fall")
     elif name == "coast":
         _check_coast(p["speed"], p["coast_min_speed"])
-    if name in FREEWHEEL_COURSES and not p["min_freewheel_gear"] <= p["gear"] <= p["max_freewheel_gear"]:
-        raise ParameterError(f"parameter gear={p['gear']:g} is out of range for the {name} course; allowed range for gear is "
-                             f"[{p['min_freewheel_gear']:g}, {p['max_freewheel_gear']:g}] (in other gears the stop at its end "
+    if name == "coast" and not p["min_coast_gear"] <= p["gear"] <= p["max_coast_gear"]:
+        raise ParameterError(f"parameter gear={p['gear']:g} is out of range for the coast course; allowed range for gear is "
+                             f"[{p['min_coast_gear']:g}, {p['max_coast_gear']:g}] (in other gears the stop at its end "
                              f"was measured to fall: docs/bicycle.md, the freewheel's gears)")
     if "path" in p:
         path = np.asarray(p["path"], dtype=float)
