@@ -113,6 +113,19 @@ def load(skill: str, character: str, directory: Path | None = None) -> dict | No
     return None if data is None else check(table_path(skill, character, directory).name, skill, character, data)
 
 
+def load_fresh(skill: str, character: str) -> dict | None:
+    """``load`` of a shipped table, kept in memory and read again only when its file changes (its
+    modification time): for lookups made per request (a region's bounds, a planner's table)."""
+    path = table_path(skill, character)
+    stamp = path.stat().st_mtime_ns if path.exists() else None
+    if stamp is None or _FRESH.get((skill, character), (None,))[0] != stamp:
+        _FRESH[(skill, character)] = (stamp, load(skill, character))
+    return _FRESH[(skill, character)][1]
+
+
+_FRESH: dict = {}
+
+
 def read(skill: str, character: str, directory: Path | None = None) -> dict | None:
     """The parsed file ``<skill>_<character>.json``, unchecked (None when there is none)."""
     path = table_path(skill, character, directory)

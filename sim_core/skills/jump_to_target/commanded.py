@@ -26,7 +26,7 @@ import numpy as np
 
 from ...control.leap import LEAP_SETTINGS
 from ...schema import Schema
-from ...tuned import TableType, load, register as register_table, table_path
+from ...tuned import TableType, load_fresh, register as register_table
 from ...tuned.constants import constant, constant_rows, read_constants, with_constants
 
 COMMANDED_CONSTANTS = Schema(
@@ -69,14 +69,7 @@ JUMP_COMMANDED_TABLE = register_table(TableType("jump_commanded", with_constants
 
 def table(character: str) -> dict | None:
     """The character's commanded take-off table (None: not offered for it); read again when the file changes."""
-    path = table_path("jump_commanded", character)
-    stamp = path.stat().st_mtime_ns if path.exists() else None
-    if character not in _LOADED or _LOADED[character][0] != stamp:
-        _LOADED[character] = (stamp, load("jump_commanded", character))
-    return _LOADED[character][1]
-
-
-_LOADED: dict = {}
+    return load_fresh("jump_commanded", character)
 
 
 def commanded_offers(character: str, target, air_time: float) -> bool:

@@ -25,7 +25,7 @@ import numpy as np
 
 from ...ballistics import GRAVITY
 from ...control.leap import LEAP_SETTINGS
-from ...tuned import TableType, load, register as register_table, table_path
+from ...tuned import TableType, load_fresh, register as register_table
 from .commanded import commanded_limit, commanded_offers
 
 LANDING_TOLERANCE = 0.05            # m: TARGETS.md: the landing point within this of the target
@@ -105,8 +105,7 @@ def brackets(character: str) -> list[tuple[dict, dict, dict]]:
     neighbouring measured heights HEIGHT_REACH apart (lower and upper measured), or at one (lower is
     upper); ``point`` the lower one's jump."""
     body = model(character)
-    stamp = _LOADED[character][0]
-    if _BRACKETS.get(character, (None,))[0] != stamp or stamp is None:
+    if body is None or _BRACKETS.get(character, (None,))[0] is not body:     # the brackets of the table as read now
         by_settings = {}
         for p in balanced(body):
             if surface(p["measured"]):
@@ -119,7 +118,7 @@ def brackets(character: str) -> list[tuple[dict, dict, dict]]:
                 out.append((p, p["measured"], p["measured"]))
                 if k + 1 < len(same) and abs(surface(same[k + 1]["measured"]) - surface(p["measured"])) <= HEIGHT_REACH + 1e-6:
                     out.append((p, p["measured"], same[k + 1]["measured"]))
-        _BRACKETS[character] = (stamp, out)
+        _BRACKETS[character] = (body, out)
     return _BRACKETS[character][1]
 
 
@@ -164,16 +163,9 @@ def balanced(body: dict | None) -> list[dict]:
             and all(math.isfinite(v) for v in p["measured"]["landing"])]
 
 
-_LOADED: dict = {}
-
-
 def model(character: str) -> dict | None:
     """The character's measured jumps (None: not measured); read again when the file changes."""
-    path = table_path("jump_model", character)
-    stamp = path.stat().st_mtime_ns if path.exists() else None
-    if _LOADED.get(character, (None,))[0] != stamp or stamp is None:
-        _LOADED[character] = (stamp, load("jump_model", character))
-    return _LOADED[character][1]
+    return load_fresh("jump_model", character)
 
 
 def nearest_balanced(character: str, target, air_time: float, count: int = 1) -> list[tuple[float, dict]]:
@@ -189,10 +181,9 @@ def nearest_balanced(character: str, target, air_time: float, count: int = 1) ->
 def offered(character: str, target, air_time: float) -> bool:
     """Whether a measured balanced jump does the request within REACH tolerances (request_distance)."""
     body = model(character)
-    stamp = _LOADED[character][0]
-    if stamp is None or stamp != _ARRAYS.get(character, (None,))[0]:
+    if body is None or _ARRAYS.get(character, (None,))[0] is not body:     # the arrays of the table as read now
         rows = [(*p["measured"]["landing"], p["measured"]["air_time"], surface(p["measured"])) for p in balanced(body)]
-        _ARRAYS[character] = (stamp, np.asarray(rows, dtype=float).reshape(-1, 4))
+        _ARRAYS[character] = (body, np.asarray(rows, dtype=float).reshape(-1, 4))
     points = _ARRAYS[character][1]
     z = height_of(target)
     if z:
