@@ -37,3 +37,17 @@ def ranged(name: str, unit: str, minimum: float, maximum: float, help_text: str)
     sanity bound a stored value is checked against) and help; the default is only the range's low
     end until ``with_defaults`` sets it from the table."""
     return Parameter(name, unit, minimum, minimum, maximum, help_text)
+
+
+def prefixed(pieces: Schema, prefix: str, what: str, exclude: tuple[str, ...] = ()) -> tuple[Parameter, ...]:
+    """A control piece's parameters as a skill's settings named ``prefix`` + name (its table stores them;
+    the piece's schema stays their one declaration): the same unit, range and help, the help led by ``what``;
+    ``exclude`` the ones the skill gives from other settings."""
+    return tuple(ranged(prefix + p.name, p.unit, p.minimum, p.maximum, f"{what}: {p.help}")
+                 for p in pieces.parameters if p.name not in exclude)
+
+
+def unprefixed(pieces: Schema, prefix: str, values: dict, **given) -> dict:
+    """The piece's parameters back from a skill's ``prefixed`` settings (plus ``given``), validated."""
+    return pieces.validate({**{p.name: values[prefix + p.name] for p in pieces.parameters if p.name not in given},
+                            **given})

@@ -55,7 +55,7 @@ from ...errors import ParameterError
 from ...schema import Choice, Parameter, Schema
 from ...tuned import TableType, keyed, load, register as register_table
 from ...tuned.constants import constant, constant_rows, read_constants, with_constants
-from ...tuned.settings import SkillSchema, ranged as setting
+from ...tuned.settings import SkillSchema, prefixed, ranged as setting, unprefixed
 from ...world.apparatus import (BOARD_LENGTH, BOARD_TOP, HORSE_1987_HEIGHT, HORSE_1987_LENGTH, HORSE_1987_WIDTH,
                                 PROP_BODY_PREFIX, VAULT_TABLE_HEIGHT_MEN,
                                 VAULT_TABLE_HEIGHT_WOMEN, VAULT_TABLE_LENGTH, VAULT_TABLE_WIDTH)
@@ -87,6 +87,8 @@ CONSTANTS = read_constants("vault", VAULT_CONSTANTS)
 
 APPARATUS = ("horse_1987", "table")
 DEFLECTION_JOINT = PROP_BODY_PREFIX + "springboard/deflection"
+
+PIECE_FROM_VAULT = ("ankle_max", "min_height")   # the step's and the stance's, from catch_ankle, absorb_min_height
 
 VAULT_SETTINGS = Schema(
     setting("hurdle_vz", "m/s", -2.0, 0.5, "vertical COM velocity at the start (the hurdle flight's descent)"),
@@ -227,44 +229,9 @@ VAULT_SETTINGS = Schema(
             "trunk's spin counts, as capture_spin; the catch's own servo unchanged); 0 = the catch's"),
     setting("step_vz", "m/s", 0.0, 5.0,
             "... while the COM moves up or down slower than this (not in the impact's fall nor the rebound off the mat)"),
-    setting("step_wait_vz", "m/s", 0.0, 5.0, "step: the lift waits while the COM rises faster than this (the rebound)"),
-    setting("step_lift_knee", "rad", 0.3, 2.4, "step: the swing knee's flexion that lifts the foot"),
-    setting("step_lift_time", "s", 0.02, 0.5, "step: the lift lasts this long, then the reach"),
-    setting("step_reach_knee", "rad", 0.0, 1.6, "step: the swing knee's flexion in the reach"),
-    setting("step_swing_gain", "1", 1.0, 10.0, "step: gain factor of the swing leg's hip and knee servos"),
-    setting("step_spread", "1", 0.0, 1.0,
-            "step: the sole lands past the capture point by this share of its distance from the stance sole (1: the "
-            "capture point in the middle of the new stance) ..."),
-    setting("step_beyond", "m", -0.3, 0.3, "step: ... and this far further"),
-    setting("step_min", "m", 0.0, 0.6, "step: ... at least this far from the stance foot ..."),
-    setting("step_max", "m", 0.05, 0.9, "step: ... at most this far"),
-    setting("step_width", "m", 0.0, 0.5, "step: sideways the swing foot lands half this beyond the COM's sideways capture point"),
-    setting("step_kp", "rad/m", 0.0, 20.0, "step: the stance ankle's offset per metre of the capture point"),
-    setting("hold_rise_time", "s", 0.1, 5.0, "staggered stance: the rise to standing takes this long ..."),
-    setting("hold_rise_after", "s", 0.0, 3.0, "... from this long after the stance began"),
-    setting("step_arm", "rad", -1.0, 3.14, "step: both arms' shoulder flexion goes to this in the step ..."),
-    setting("step_arm_time", "s", 0.02, 1.0, "... in this time"),
-    setting("hold_kp", "rad/m", 0.0, 20.0, "staggered stance: ankle offset per metre of the capture point ahead of hold_target"),
-    setting("hold_target", "m", -0.2, 0.2, "staggered stance: the capture point this far ahead of the support's middle"),
-    setting("hold_lean", "rad", -0.5, 1.0, "staggered stance: the pelvis leans this much more than the crouch she is at"),
-    setting("hold_lean_kp", "rad/m", -10.0, 10.0, "staggered stance: ... less this per metre of the capture point's error"),
-    setting("hold_arm", "rad", -1.0, 3.14, "staggered stance: both arms' shoulder flexion"),
-    setting("hold_side_kp", "rad/m", -20.0, 20.0,
-            "step and staggered stance: ankle roll per metre of the COM left of the (stance) feet's middle"),
-    setting("hold_side_kv", "rad s/m", -10.0, 10.0, "step and staggered stance: ankle roll per m/s of the COM's leftward speed"),
-    setting("hold_side_hip", "1", 0.0, 2.0, "step and staggered stance: hip abduction per radian of the ankles' roll command"),
-    setting("hold_steps", "1", 0.0, 5.0,
-            "staggered stance: at most this many further steps, each when the capture point nears the support's edge ..."),
-    setting("hold_margin", "m", -0.2, 0.3, "... within this of it ..."),
-    setting("hold_min", "s", 0.0, 2.0, "... and the stance has held this long"),
-    setting("hold_level_kp", "rad/m", 0.0, 40.0,
-            "staggered stance: each knee straightens by this per metre its foot stands higher in the ground than the mean"),
-    setting("hold_flat_off", "bool", 0.0, 1.0, "staggered stance: 1 = a foot off the ground is held flat (no ankle offset)"),
-    setting("step_unloaded", "m", 0.0, 0.2, "step: the foot standing this much higher in the ground than the other swings"),
-    setting("hold_stagger_kp", "rad/m", 0.0, 20.0,
-            "staggered stance: hip pitch, opposite on the two legs, per metre the feet have moved apart fore and aft"),
-    setting("hold_splay_kp", "rad/m", 0.0, 20.0,
-            "staggered stance: hip abduction, opposite on the two legs, per metre the feet have moved apart sideways"),
+    *prefixed(RecoveryStep.schema, "step_", "step", exclude=PIECE_FROM_VAULT),
+    *prefixed(StaggeredStance.schema, "hold_", "staggered stance", exclude=PIECE_FROM_VAULT),
+    *prefixed(StepAndHold.schema, "hold_", "further steps"),
 )
 
 
@@ -917,33 +884,23 @@ class Vault(Sequence):
         return RecoveryStep(self.step_params(), self.ctx, self.step_direction)
 
     def step_and_hold(self) -> StepAndHold:
-        """The staggered stance after the step, with further steps (hold_steps) while the capture point nears
-        the support's edge (control/recovery_step.py)."""
-        c = self.cfg
-        return StepAndHold(StepAndHold.schema.validate(dict(max_steps=c["hold_steps"], margin=c["hold_margin"],
-                                                            min_hold=c["hold_min"])),
-                           self.ctx, self.step_params(), self.staggered().params)
+        """The staggered stance after the step, with further steps (hold_max_steps) while the capture point
+        nears the support's edge (control/recovery_step.py)."""
+        return StepAndHold(unprefixed(StepAndHold.schema, "hold_", self.cfg), self.ctx, self.step_params(),
+                           self.staggered().params)
+
+    def piece_given(self) -> dict:
+        """What the step and the staggered stance take from the vault's other settings."""
+        return dict(ankle_max=self.cfg["catch_ankle"], min_height=self.cfg["absorb_min_height"])
 
     def step_params(self) -> dict:
-        """RecoveryStep's parameters from the vault's step settings."""
-        c = self.cfg
-        return RecoveryStep.schema.validate(dict(
-            lift_knee=c["step_lift_knee"], lift_time=c["step_lift_time"], reach_knee=c["step_reach_knee"],
-            swing_gain=c["step_swing_gain"], spread=c["step_spread"], beyond=c["step_beyond"], min_step=c["step_min"],
-            max_step=c["step_max"], width=c["step_width"], stance_kp=c["step_kp"], side_kp=c["hold_side_kp"],
-            side_kv=c["hold_side_kv"], side_hip=c["hold_side_hip"], ankle_max=c["catch_ankle"], unloaded=c["step_unloaded"],
-            arm=c["step_arm"], arm_time=c["step_arm_time"], wait_vz=c["step_wait_vz"],
-            min_height=c["absorb_min_height"]))
+        """RecoveryStep's parameters: the vault's step_ settings."""
+        return unprefixed(RecoveryStep.schema, "step_", self.cfg, **self.piece_given())
 
     def staggered(self, bow: tuple[float, float, float] | None = None) -> StaggeredStance:
         """The stance after the step held (control/recovery_step.py), standing up, and with ``bow`` the bow."""
-        c = self.cfg
-        return StaggeredStance(StaggeredStance.schema.validate(dict(
-            rise_time=c["hold_rise_time"], rise_after=c["hold_rise_after"], kp=c["hold_kp"], target=c["hold_target"],
-            ankle_max=c["catch_ankle"], lean=c["hold_lean"], lean_kp=c["hold_lean_kp"], arm=c["hold_arm"],
-            side_kp=c["hold_side_kp"], side_kv=c["hold_side_kv"], side_hip=c["hold_side_hip"],
-            stagger_kp=c["hold_stagger_kp"], splay_kp=c["hold_splay_kp"], level_kp=c["hold_level_kp"],
-            flat_off=c["hold_flat_off"], min_height=c["absorb_min_height"])), self.ctx, bow)
+        return StaggeredStance(unprefixed(StaggeredStance.schema, "hold_", self.cfg, **self.piece_given()),
+                               self.ctx, bow)
 
     @property
     def run_complete(self) -> bool:
