@@ -775,8 +775,14 @@ m left and right: bearings of 90 deg, beyond one hop's reliable ~50 deg). Next: 
 the hop's landing pivots the feet by however far the untwisting hips drag them; a pivot servoed to the
 wanted world heading (the hips' rotation driven by the feet's heading error while they are lightly
 loaded) or the feet's heading set in flight would take the +-4 deg out, which is what limits the
-distance to 0.9 m; then longer air times (the straight box's 0.52 s limit), and the man's commanded
-landing.
+distance to 0.9 m. One probe of the first (scratch, not kept; the hop's landing with the hips' rotation
+offset by K x the feet's heading error from the asked angle once the feet are down, the woman's 1.2 m
+target, the turn asked -0.10 ... -0.18 rad in steps of 0.02): K = +1 scattered the heading at the jump's
+crouch over -23 ... +11 deg (the wrong sign); K = -1 the landings' bearings over -5.6 ... -13.3 deg (without
+it, in steps of 0.01: +0.1 ... -13.9 deg), 3 of 5 balanced, and at +0.30 / +0.45 rad the heading within 2
+deg of the asked; K = -2 fell in 6 of 7, two before lift-off. Half the scatter, not gone: the pivot servo
+needs its own design (the feet's heading set in flight, or a pivot on unloaded forefeet). Then longer air
+times (the straight box's 0.52 s limit), and the man's commanded landing.
 
 ![commanded vs achieved landing point](jump_to_target.png)
 
