@@ -40,10 +40,11 @@ BOX_HEIGHT = (0.25, 0.75)                                   # m: onto a box this
 BOX_STREAM = 29                                             # the box draws' own random stream (seed, this): the other
                                                             # draws of a seed stay as they were without them
 COMMANDED_STREAM = 30                                       # the commanded region's draws' own stream (seed, this)
+TURNED_STREAM = 31                                          # the turned commanded region's draws' own stream (seed, this)
 BROAD_TOLERANCE = 0.1                                       # TARGETS.md: broad jump travel within 10 %
 DRAW_DECIMALS = 3                                           # requests are drawn to the millimetre / millisecond
 DEFAULT_BUDGET = 24                                         # trials of a plan: two of the planner's batches
-SKILLS = ("jump", "box", "commanded", "leap", "broad")
+SKILLS = ("jump", "box", "commanded", "turned", "leap", "broad")
 REGION_DRAWS = 1_000_000                                    # box draws tried for one target in the region offered
 SHARE_DRAWS = 20_000                                        # box draws that measure the region's share of the box
 
@@ -52,14 +53,15 @@ SHARE_DRAWS = 20_000                                        # box draws that mea
 class Draw:
     """One random request: ``skill`` "jump" (target_x, target_y, air_time), "box" (target_x,
     target_z, air_time: onto a box target_z high, or down from one -target_z high, straight ahead),
-    "commanded" (a jump's, in the commanded region outside the measured one), "leap" (height) or
+    "commanded" (a jump's, in the commanded region outside the measured one), "turned" (a jump's, in the
+    turned commanded region outside the measured one: turn first, then forward), "leap" (height) or
     "broad" (distance), with its numbers in ``values``."""
     skill: str
     character: str
     values: tuple
 
     def describe(self) -> str:
-        if self.skill in ("jump", "commanded"):
+        if self.skill in ("jump", "commanded", "turned"):
             x, y, t = self.values
             return f"jump to ({x:.3f}, {y:+.3f}) m in {t:.3f} s"
         if self.skill == "box":
@@ -86,11 +88,12 @@ def broad_range(character: str) -> tuple[float, float]:
 
 
 def draw_requests(seed: int, characters, jumps: int, leaps: int, broads: int, boxes: int = 0,
-                  commanded: int = 0) -> list[Draw]:
+                  commanded: int = 0, turned: int = 0) -> list[Draw]:
     """The random requests of ``seed`` (NumPy's default generator), per character: ``jumps`` jump
     targets, ``leaps`` leap heights and ``broads`` broad-jump distances, uniform in their ranges;
     then ``boxes`` box targets per character (draw_box_jump, from their own stream); then ``commanded``
-    targets per character that has a commanded region (draw_commanded, from their own stream)."""
+    targets per character that has a commanded region (draw_commanded, from their own stream); then
+    ``turned`` targets per character that has a turned commanded region (draw_turned, their own stream)."""
     rng = np.random.default_rng(seed)
     drawn = []
     for character in characters:
@@ -112,7 +115,25 @@ def draw_requests(seed: int, characters, jumps: int, leaps: int, broads: int, bo
     for character in characters:
         if commanded and table(character) is not None:
             drawn += [Draw("commanded", character, draw_commanded(commanded_rng, character)) for _ in range(commanded)]
+    turned_rng = np.random.default_rng((seed, TURNED_STREAM))
+    for character in characters:
+        if turned and (table(character) or {}).get("turned_region") is not None:
+            drawn += [Draw("turned", character, draw_turned(turned_rng, character)) for _ in range(turned)]
     return drawn
+
+
+def draw_turned(rng, character: str) -> tuple:
+    """A jump target uniform in issue 29's box that the character's turned commanded region holds
+    (commanded.commanded_way "turned") and its measured jumps do not offer (region.offered) - one that
+    the turn and the commanded take-off serve - drawn again until it is; as (target_x, target_y, air_time)."""
+    from .skills.jump_to_target.commanded import commanded_way
+    from .skills.jump_to_target.region import offered
+    for _ in range(REGION_DRAWS):
+        values = box_draw(rng, character)
+        if commanded_way(character, values[:2], values[2]) == "turned" and not offered(character, values[:2], values[2]):
+            return values
+    raise ParameterError(f"no target of issue 29's box in {REGION_DRAWS} draws lies in the {character}'s turned "
+                         f"commanded region outside the region its measured jumps offer")
 
 
 def draw_commanded(rng, character: str) -> tuple:
@@ -206,7 +227,7 @@ def evaluate(draw: Draw, budget: int, store: str) -> dict:
     began = time.perf_counter()
     result = {"draw": draw}
     try:
-        result.update(_jump(draw, budget) if draw.skill in ("jump", "box", "commanded") else _leap(draw))
+        result.update(_jump(draw, budget) if draw.skill in ("jump", "box", "commanded", "turned") else _leap(draw))
     except ParameterError as exc:
         result.update(refused=str(exc), passed=False)
     finally:
@@ -301,22 +322,25 @@ def main(argv=None) -> int:
     parser.add_argument("--boxes", type=int, default=0, help="box targets per character (onto or down from a box)")
     parser.add_argument("--commanded", type=int, default=0,
                         help="targets per character in its commanded region, outside its measured jumps' region")
+    parser.add_argument("--turned", type=int, default=0,
+                        help="targets per character in its turned commanded region, outside its measured jumps' region")
     parser.add_argument("--characters", default="man,woman")
     parser.add_argument("--budget", type=int, default=DEFAULT_BUDGET, help="trials of each unplanned jump's plan")
     parser.add_argument("--workers", type=int, default=2, help="requests run at once, one process each")
     parser.add_argument("--store", help="plan store for the jumps' plans (default: a temporary one, removed after)")
     parser.add_argument("--out", default="docs/random_requests.md")
     args = parser.parse_args(argv)
-    for name in ("jumps", "leaps", "broad", "boxes", "commanded"):
+    for name in ("jumps", "leaps", "broad", "boxes", "commanded", "turned"):
         if getattr(args, name) < 0:
             parser.error(f"--{name}={getattr(args, name)}: must be 0 or more")
     if args.budget < 1:
         parser.error(f"--budget={args.budget}: must be at least 1 trial")
     characters = [c.strip() for c in args.characters.split(",") if c.strip()]
-    draws = draw_requests(args.seed, characters, args.jumps, args.leaps, args.broad, args.boxes, args.commanded)
+    draws = draw_requests(args.seed, characters, args.jumps, args.leaps, args.broad, args.boxes, args.commanded, args.turned)
     command = (f"python -m sim_core report random --seed {args.seed} --jumps {args.jumps} --leaps {args.leaps} "
                f"--broad {args.broad}{f' --boxes {args.boxes}' if args.boxes else ''}"
-               f"{f' --commanded {args.commanded}' if args.commanded else ''} --characters {','.join(characters)} --budget {args.budget} "
+               f"{f' --commanded {args.commanded}' if args.commanded else ''}"
+               f"{f' --turned {args.turned}' if args.turned else ''} --characters {','.join(characters)} --budget {args.budget} "
                f"--workers {args.workers}")
     print(command, flush=True)
     began = time.perf_counter()
@@ -362,6 +386,11 @@ def main(argv=None) -> int:
                "its measured jumps do not offer them, so that the commanded take-off alone serves them "
                "(sim_core.planning.commanded: at most 5 aimed jumps, then at most 8 foot placements). "
                if args.commanded else "")
+            + ("Turned targets (--turned) are drawn uniformly in issue 29's box and drawn again until they lie in "
+               "the turned commanded region of each character that has one (the table's turned_region: the woman's) "
+               "and outside the region its measured jumps offer: the jump turns first by one hop toward the target "
+               "and flies the commanded take-off forward (sim_core.planning.commanded.plan_turned: the aimed distance "
+               "and the turn, then the foot placements). " if args.turned else "")
             + "A target without a stored plan is planned first (into a temporary "
             "plan store; on flat ground or a box from the measured jumps, at most "
             f"{min(args.budget, MODEL_TRIALS)} trials; in the commanded region only, the commanded take-off aimed "

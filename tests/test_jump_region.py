@@ -8,7 +8,7 @@ import pytest
 from sim_core.errors import ParameterError
 from sim_core.random_requests import draw_requests, evaluate, result_line
 from sim_core.simulate import RunRequest, run
-from sim_core.skills.jump_to_target.region import offered, region_refusal
+from sim_core.skills.jump_to_target.region import in_region, offered, region_refusal
 
 SEED = 29           # CI's fixed draw
 TARGETS = 3         # random targets per character
@@ -19,7 +19,7 @@ def test_random_targets_in_the_region_land_on_target_balanced(character, tmp_pat
     draws = draw_requests(SEED, [character], TARGETS, 0, 0)
     results = [evaluate(draw, 24, str(tmp_path)) for draw in draws]
     lines = [result_line(r) for r in results]
-    assert all(offered(character, d.values[:2], d.values[2]) for d in draws)
+    assert all(in_region(character, d.values[:2], d.values[2]) for d in draws)
     assert sum(r["passed"] for r in results) >= TARGETS - 1, "\n".join(lines)     # >= 90 % asked; 3 draws
     assert max(r["seconds"] for r in results) <= 60, "\n".join(lines)
 
@@ -145,5 +145,26 @@ def test_a_target_outside_both_regions_is_refused_naming_both(monkeypatch):
     text = str(refused.value)
     assert "\n" not in text and "outside the region the woman's measured jumps offer" in text
     assert text.endswith("the commanded take-off is offered on flat ground for target_x 0.5-1.25 m, "
-                         "target_y -0.02-0.02 m, air_time 0.4-0.52 s")
+                         "target_y -0.02-0.02 m, air_time 0.4-0.52 s, and turned first for a distance of 0.5-0.9 m "
+                         "at a bearing of 0-26 deg to either side, air_time 0.4-0.48 s")
     assert "commanded" not in region_refusal("man", (1.0, 0.4), 0.6)        # the man has no commanded region
+
+
+TURNED_TARGETS = 3          # random targets in the woman's turned commanded region, outside her measured jumps' region
+
+
+def test_random_lateral_targets_turn_first_and_land_balanced(tmp_path):
+    """A target to the side in the turned commanded region: planned by planning/commanded.py's plan_turned
+    (one hop turns her toward it, then the commanded take-off forward), then run as a user's request."""
+    from sim_core.skills.jump_to_target.behaviour import read_plans
+    from sim_core.skills.jump_to_target.commanded import CONSTANTS, commanded_way
+    draws = draw_requests(SEED, ["man", "woman"], 0, 0, 0, 0, 0, TURNED_TARGETS)
+    assert [d.character for d in draws] == ["woman"] * TURNED_TARGETS        # the man has no commanded region
+    assert all(commanded_way("woman", d.values[:2], d.values[2]) == "turned" for d in draws)
+    results = [evaluate(d, 24, str(tmp_path)) for d in draws]
+    lines = [result_line(r) for r in results]
+    plans = read_plans("woman", tmp_path)
+    assert len(plans) == TURNED_TARGETS and all(p["settings"]["turn_angle"] != 0.0 for p in plans)
+    assert all(p["trials"] <= CONSTANTS.turn_aim_trials + CONSTANTS.landing_trials - 1 for p in plans)
+    assert sum(r["passed"] for r in results) >= TURNED_TARGETS - 1, "\n".join(lines)
+    assert max(r["seconds"] for r in results) <= 60, "\n".join(lines)

@@ -22,6 +22,10 @@ point after an air time - and the take-off is servoed to it:
   spin to an even push's reference (the wanted ones times the square root of the rise done) - and
   the hips extended against a spin forward of the commanded one (a lean leaves the ground pitching
   forward; a landing needs the trunk upright while the legs swing ahead).
+
+After a turn (the leap's ``turn_angle``, turn.py) the flight is aimed from the start's feet, the spin is
+the one about the pelvis's side axis at the thrust's start, and the lift-off velocity servoed is the
+wanted one along the pelvis's heading (the turn aims the line, the push its length).
 """
 from __future__ import annotations
 
@@ -91,15 +95,25 @@ def thrust_due(command: FlightCommand, data, pelvis: int, support, origin: np.nd
 class CommandedThrust(LeapThrust):
     """The leap's thrust with the commanded take-off's corrections (see the module)."""
 
-    def __init__(self, params, ctx, crouch_height: float, command: FlightCommand, **thrust):
+    def __init__(self, params, ctx, crouch_height: float, command: FlightCommand, origin=None, turned=False, **thrust):
+        """``origin``: the middle of the feet the flight's target is measured from (None: where they are
+        when the thrust starts); ``turned``: the body turned before the jump (turn.py), so the spin servoed
+        is about the pelvis's side axis at the thrust's start (else the world's y, the start's side)."""
         super().__init__(params, ctx, crouch_height, **thrust)
         self.command = command
+        self.given_origin, self.turned = origin, turned
 
     def start(self, t: float) -> None:
         super().start(t)
         m, d, s = self.ctx.model, self.ctx.data, self.ctx.servos
         points = self.airborne.support.points(d)
-        self.origin = np.array([*points[:, :2].mean(axis=0), float(points[:, 2].min())])
+        self.origin = np.array([*points[:, :2].mean(axis=0), float(points[:, 2].min())]) \
+            if self.given_origin is None else np.asarray(self.given_origin, dtype=float)
+        self.side = None
+        if self.turned:
+            frame = d.xmat[self.pelvis]
+            yaw = math.atan2(float(frame[3]), float(frame[0]))
+            self.side = np.array([-math.sin(yaw), math.cos(yaw), 0.0])
         self.mass = float(m.body_subtreemass[self.pelvis])
         self.foot_bodies = [self.ctx.actor.body_id("FOOTR"), self.ctx.actor.body_id("FOOTL")]
         self.leg_servos = [s.indices([f"hip_{side}_y", f"knee_{side}_y", f"ankle_{side}_y"]) for side in "rl"]
@@ -113,10 +127,12 @@ class CommandedThrust(LeapThrust):
         super().update(t)                           # the leap's extension along balanced poses, and the arms
         com, velocity = d.subtree_com[self.pelvis], d.subtree_linvel[self.pelvis]
         self.wanted = liftoff_velocity(c, com, self.origin)
+        if self.side is not None:       # turned: along the heading only (the turn aims the line, the push its length)
+            self.wanted = self.wanted - float(self.wanted @ self.side) * self.side
         top = c.liftoff_height + self.origin[2]
         rise = min(max((float(com[2]) - self.low) / max(top - self.low, 1e-3), 0.0), 1.0)   # definition: a guard
         share = math.sqrt(max(rise, c.start_share))     # an even push's velocity, by the rise done
-        spin = float(d.subtree_angmom[self.pelvis][1])
+        spin = float(d.subtree_angmom[self.pelvis][1]) if self.side is None else float(d.subtree_angmom[self.pelvis] @ self.side)
         force = self.mass * (self.wanted * share - velocity) / c.servo_time
         moment = (c.spin * share - spin) / c.servo_time
         points = self.airborne.support.points(d)
@@ -125,7 +141,8 @@ class CommandedThrust(LeapThrust):
         for k, servos in enumerate(self.leg_servos):
             mujoco.mj_jac(m, d, self.jacp, self.jacr, cop, self.foot_bodies[k])
             dofs = s.dof_adr[servos]
-            torque = -(self.jacp[:, dofs].T @ force + self.jacr[1, dofs] * moment) / 2.0   # each foot half
+            about = self.jacr[1, dofs] if self.side is None else self.side @ self.jacr[:, dofs]
+            torque = -(self.jacp[:, dofs].T @ force + about * moment) / 2.0   # each foot half
             s.offset[servos] = np.clip(torque / kp[servos], -c.correction_limit, c.correction_limit)
         hips = self.idx["hip"]
         s.offset[hips] += min(max(c.spin_gain * (spin - c.spin), -c.correction_limit), c.correction_limit)

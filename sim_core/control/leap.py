@@ -715,6 +715,12 @@ def vertical_table(strength: str) -> str:
 FLIGHT_TARGET_X = Parameter("flight_target_x", "m", 1.0, -2.5, 2.5,
                             "commanded take-off (low_level, commanded_takeoff=1): the feet land this far forward of the "
                             "middle of the feet at the start")
+FLIGHT_TARGET_Y = Parameter("flight_target_y", "m", 0.0, -2.0, 2.0,
+                            "commanded take-off: the feet land this far to the left (+) of the middle of the feet at the start")
+TURN_ANGLE = Parameter("turn_angle", "rad", 0.0, -1.2, 1.2,
+                       "before the leap one hop turns the body about the vertical by about this much (counter-clockwise "
+                       "from above: + to the left; control/turn.py), then the leap runs forward in the new heading and a "
+                       "commanded take-off (commanded_takeoff) aims at its flight target from the start's feet (0 = no turn)")
 LANDING_ARM_PITCH_GAIN = Parameter(
     "landing_arm_pitch_gain", "1", 0.0, 0.0, 10.0,
     "landing: with landing_swing_arms, the arms swing this many rad further down and back per rad the "
@@ -757,7 +763,7 @@ LEAP_SETTINGS = Schema(
     Parameter("commanded_takeoff", "1", 0.0, 0.0, 1.0,
               "above 0.5 the thrust servoes the COM velocity to the commanded flight's lift-off velocity and "
               "ends on reaching it (control/commanded_thrust.py)"),
-    FLIGHT_TARGET_X, LANDING_ARM_PITCH_GAIN, LANDING_ARM_PITCH, LANDING_RECOVERY_STEP, LANDING_STEP_MARGIN,
+    FLIGHT_TARGET_X, FLIGHT_TARGET_Y, TURN_ANGLE, LANDING_ARM_PITCH_GAIN, LANDING_ARM_PITCH, LANDING_RECOVERY_STEP, LANDING_STEP_MARGIN,
 )
 LEAP_MEASURED = ("com_rise", "com_travel", "peak_thrust_grf_body_weights")   # columns a calibration measured
 
@@ -903,6 +909,7 @@ LOW_LEVEL_SETTINGS = Schema(
               "above 0.5 the leap first turns a quarter to the right (clockwise from above) by hops that turn, "
               "below -0.5 to the left (1: the measured quarter turn, more or less turns each hop more or less), "
               "then leaps forward in its new heading: a sideways jump made a forward one (0 = no turn; low_level only)"),
+    TURN_ANGLE,
     Parameter("commanded_takeoff", "bool", 0.0, 0.0, 1.0,
               "1 = the thrust servoes the COM velocity to the lift-off velocity of the flight to flight_target_x/y/z "
               "in flight_air_time and ends on reaching it (control/commanded_thrust.py; low_level only)"),

@@ -341,7 +341,8 @@ def measure_settings(character: str, settings: dict, target, air_time: float, wi
     the landing off it (landing_measures): one trial of the planner, or a stored plan measured
     again. Judged over the run's whole default duration, as the final run is (a foot still creeping
     after the landing passed at 3.85 s and stepped past 5 cm by 5 s)."""
-    duration = max(windup_time + air_time + 2.0, JumpToTarget.default_duration) + turn_duration(settings.get("turn_first", 0.0))
+    duration = max(windup_time + air_time + 2.0, JumpToTarget.default_duration) + turn_duration(settings.get("turn_first", 0.0),
+                                                                                                  settings.get("turn_angle", 0.0))
     trajectory = run(RunRequest("leap", character, params=leap_params(settings, target, windup_time, air_time),
                                 duration=duration, strength=strength, world=scene_for(character, target)),
                      cancelled=cancelled)

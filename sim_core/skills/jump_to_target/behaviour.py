@@ -208,7 +208,7 @@ def commanded_flight(settings: dict, target, air_time: float | None) -> dict:
     if settings.get("commanded_takeoff", 0.0) <= 0.5 or air_time is None:
         return {}
     return {"commanded_takeoff": 1.0, "flight_target_x": float(settings.get("flight_target_x", target[0])),
-            "flight_target_y": float(target[1]),
+            "flight_target_y": float(settings.get("flight_target_y", target[1])),
             "flight_target_z": float(target[2]), "flight_air_time": float(air_time)}
 
 
@@ -218,9 +218,9 @@ def optional_knobs(settings: dict) -> dict:
 
 
 def turn_of(settings: dict) -> dict:
-    """The turn before the jump (the leap's ``turn_first``, control/turn.py) of a plan that turns
-    first; none for any other (a plan without it runs as it always did)."""
-    return {"turn_first": settings["turn_first"]} if settings.get("turn_first") else {}
+    """The turn before the jump (the leap's ``turn_first`` or ``turn_angle``, control/turn.py) of a plan that
+    turns first; none for any other (a plan without it runs as it always did)."""
+    return {k: settings[k] for k in ("turn_first", "turn_angle") if settings.get(k)}
 
 
 ARM_FEEDBACK = ("landing_arm_pitch_gain", "landing_arm_pitch")    # the arms' pitch feedback: only plans that name it
@@ -400,7 +400,8 @@ class JumpToTarget(Leap):
         request = {**{k: float(params[k]) for k in REQUEST_KEYS},
                    "strength": "unlimited" if strength == "unlimited" else "human"}
         plan = stored_plan(character, request)
-        return cls.default_duration + (turn_duration(plan["settings"].get("turn_first", 0.0)) if plan else 0.0)
+        return cls.default_duration + (turn_duration(plan["settings"].get("turn_first", 0.0),
+                                                     plan["settings"].get("turn_angle", 0.0)) if plan else 0.0)
 
     def run_params(self) -> dict:
         return self.params
@@ -411,7 +412,8 @@ class JumpToTarget(Leap):
     def flight_target(self, p: dict) -> tuple[tuple, float]:
         """The commanded take-off's flight (a plan with ``commanded_takeoff``): the request's, forward the
         plan's aim where it names one (commanded_flight)."""
-        return (self.plan["settings"].get("flight_target_x", p["target_x"]), p["target_y"], p["target_z"]), p["air_time"]
+        s = self.plan["settings"]
+        return (s.get("flight_target_x", p["target_x"]), s.get("flight_target_y", p["target_y"]), p["target_z"]), p["air_time"]
 
     def check_feasible(self) -> None:
         """Refuses what no plan can do, then looks the plan up (planning runs above the loop)."""

@@ -14,13 +14,20 @@ flights land pitched forward and fall, docs/jump_to_target.md) holds:
   planned this way were measured to land within TARGETS.md's tolerances and balanced (``measured``
   says how, with the command); a request on flat ground there and outside the measured jumps' region
   (region.py) is planned with the commanded take-off (planning/commanded.py), anything outside both is
-  refused naming both limits.
+  refused naming both limits;
+- ``turned_region`` (optional): where a target to the side of the start's line is flown by turning
+  first (one hop, the leap's ``turn_angle``, control/turn.py) and then the commanded take-off forward
+  along the new heading (``distance`` from the start's feet m, ``bearing`` |atan2(y, x)| rad, ``air_time``
+  s, each [low, high]; the commanded flight itself lands on its heading's line, it does not steer sideways);
+  a request in it beyond ``region``'s target_y is planned so (planning/commanded.py plan_turned).
 
 ``jump_commanded_any.json`` holds the planner's constants (the aim's bound and tolerances, the
 landing plan's bound). The leap's ``commanded_*`` constants are the character's own in its leap
 table's "constants" (control.leap.leap_constants). Only reads the tables: the planning is planning's.
 """
 from __future__ import annotations
+
+import math
 
 import numpy as np
 
@@ -39,6 +46,11 @@ COMMANDED_CONSTANTS = Schema(
              "a secant slope (landing per commanded m, air time per aimed s) below this is not trusted"),
     constant("aim_slope", "1", 0.05, 2.0, "the landing per commanded m assumed where the secant is not trusted"),
     constant("aim_range", "m", 0.0, 2.5, "the commanded landing point stays in this range (low, high)"),
+    constant("turn_aim_trials", "count", 1, 20,
+             "a turned commanded plan runs at most this many aimed jumps (the aimed distance and the turn moved by a "
+             "secant after each: the landing's distance and bearing)"),
+    constant("turn_gain", "1", 0.0, 2.0, "a turned plan's first turn_angle per rad of the target's bearing"),
+    constant("turn_slope", "1", 0.05, 2.0, "a turned plan moves its turn by the landing's bearing missed over this"),
     constant("landing_trials", "count", 1, 30,
              "an aimed jump that lands on the target and falls is tried again with its feet placed a landing plan "
              "step (planning/land.py) more and less, two, ...: this many placements in all, its own the first"),
@@ -63,6 +75,13 @@ def commanded_settings(body: dict, air_time: float, aim: float) -> dict:
             "crouch_height": float(np.interp(air_time, pairs["air_time"], pairs["crouch_height"]))}
 
 
+def turned_settings(body: dict, air_time: float, aim: float, bearing: float, turn: float) -> dict:
+    """commanded_settings for a turned jump: the flight aimed ``aim`` m from the start's feet along
+    ``bearing`` (rad, + to the left), after a turn of ``turn_angle`` ``turn`` rad."""
+    return {**commanded_settings(body, air_time, aim * math.cos(bearing)),
+            "flight_target_y": float(aim * math.sin(bearing)), "turn_angle": float(turn)}
+
+
 JUMP_COMMANDED_TABLE = register_table(TableType("jump_commanded", with_constants(LEAP_SETTINGS, COMMANDED_CONSTANTS),
                                                 _rows, (commanded_settings,)))
 
@@ -72,15 +91,28 @@ def table(character: str) -> dict | None:
     return load_fresh("jump_commanded", character)
 
 
-def commanded_offers(character: str, target, air_time: float) -> bool:
-    """Whether the request (x, y[, z], air time) on flat ground lies in the character's measured
-    commanded region (the table's ``region``, bounds included)."""
+def commanded_way(character: str, target, air_time: float) -> str | None:
+    """How the commanded take-off flies the request (x, y[, z], air time) on flat ground: "straight"
+    inside the table's ``region`` (bounds included), "turned" inside its ``turned_region`` beyond it
+    (a turn first, then forward), None outside both."""
     body = table(character)
     if body is None or (len(target) > 2 and float(target[2])):
-        return False
+        return None
     region = body["region"]
-    values = {"target_x": float(target[0]), "target_y": float(target[1]), "air_time": float(air_time)}
-    return all(region[k][0] <= v <= region[k][1] for k, v in values.items())
+    x, y = float(target[0]), float(target[1])
+    values = {"target_x": x, "target_y": y, "air_time": float(air_time)}
+    if all(region[k][0] <= v <= region[k][1] for k, v in values.items()):
+        return "straight"
+    turned = body.get("turned_region")
+    if turned is None or region["target_y"][0] <= y <= region["target_y"][1]:
+        return None
+    values = {"distance": math.hypot(x, y), "bearing": abs(math.atan2(y, x)), "air_time": float(air_time)}
+    return "turned" if all(turned[k][0] <= v <= turned[k][1] for k, v in values.items()) else None
+
+
+def commanded_offers(character: str, target, air_time: float) -> bool:
+    """Whether the request lies in the character's measured commanded region, straight or turned (commanded_way)."""
+    return commanded_way(character, target, air_time) is not None
 
 
 def commanded_limit(character: str) -> str | None:
@@ -88,6 +120,11 @@ def commanded_limit(character: str) -> str | None:
     body = table(character)
     if body is None:
         return None
-    r = body["region"]
-    return (f"the commanded take-off is offered on flat ground for target_x {r['target_x'][0]:g}-{r['target_x'][1]:g} m, "
-            f"target_y {r['target_y'][0]:g}-{r['target_y'][1]:g} m, air_time {r['air_time'][0]:g}-{r['air_time'][1]:g} s")
+    r, turned = body["region"], body.get("turned_region")
+    limit = (f"the commanded take-off is offered on flat ground for target_x {r['target_x'][0]:g}-{r['target_x'][1]:g} m, "
+             f"target_y {r['target_y'][0]:g}-{r['target_y'][1]:g} m, air_time {r['air_time'][0]:g}-{r['air_time'][1]:g} s")
+    if turned:
+        limit += (f", and turned first for a distance of {turned['distance'][0]:g}-{turned['distance'][1]:g} m at a "
+                  f"bearing of {math.degrees(turned['bearing'][0]):.0f}-{math.degrees(turned['bearing'][1]):.0f} deg "
+                  f"to either side, air_time {turned['air_time'][0]:g}-{turned['air_time'][1]:g} s")
+    return limit

@@ -12,7 +12,7 @@ from ...control.behaviour import register
 from ...control.commanded_thrust import CommandedThrust, FlightCommand, thrust_due
 from ...control.measure import SupportGeometry
 from ...control.recovery_step import RecoveryStep, StaggeredStance, StanceMeasure, StepAndHold
-from ...control.leap import FLIGHT_TARGET_X, LANDING_ARM_PITCH, LANDING_ARM_PITCH_GAIN, LANDING_RECOVERY_STEP, LANDING_STEP_MARGIN, RECOVERY_STEP_EVENT, LOW_LEVEL_SETTINGS, Landing, LeapThrust, balance_after_landing, calibrated_foot_delta, broad_distances, broad_row, broad_rows, commandable_heights, leap_assess, leap_constants, load_mapping, vertical_key, vertical_row, vertical_table
+from ...control.leap import FLIGHT_TARGET_X, FLIGHT_TARGET_Y, LANDING_ARM_PITCH, LANDING_ARM_PITCH_GAIN, LANDING_RECOVERY_STEP, LANDING_STEP_MARGIN, RECOVERY_STEP_EVENT, LOW_LEVEL_SETTINGS, Landing, LeapThrust, balance_after_landing, calibrated_foot_delta, broad_distances, broad_row, broad_rows, commandable_heights, leap_assess, leap_constants, load_mapping, vertical_key, vertical_row, vertical_table
 from ...control.sequencer import Sequence, Step
 from ...control.turn import jump_start, turn_steps
 from ...errors import ParameterError
@@ -41,8 +41,7 @@ class Leap(Sequence):
                   "1 = run the low-level settings as set (--set crouch_height=...) instead of the calibrated leap"),
         Parameter("crouch_time", "s", 0.8, 0.3, 3.0, "time to sink into the crouch"),
         FLIGHT_TARGET_X,
-        Parameter("flight_target_y", "m", 0.0, -2.0, 2.0,
-                  "commanded take-off: the feet land this far to the left (+) of the middle of the feet at the start"),
+        FLIGHT_TARGET_Y,
         Parameter("flight_target_z", "m", 0.0, -1.0, 1.0,
                   "commanded take-off: the feet land on a surface this high above the one stood on"),
         Parameter("flight_air_time", "s", 0.45, 0.05, 1.5, "commanded take-off: the feet are this long in the air"),
@@ -98,7 +97,7 @@ class Leap(Sequence):
         if p["low_level"]:
             settings = {k: p[k] for k in ("crouch_height", "crouch_pitch", "com_offset", "com_offset_y",
                                           "liftoff_roll", "arm_swing", "crouch_arms", "thrust_damping",
-                                          "thrust_lean", "spin_hold", "turn_first", "commanded_takeoff")}
+                                          "thrust_lean", "spin_hold", "turn_first", "turn_angle", "commanded_takeoff")}
             settings["liftoff_hip"] = p["liftoff_hip"]
             return settings
         row = vertical_row(load_mapping(self.ctx.character.name)[vertical_key(self.ctx)], p["height"])
@@ -230,7 +229,9 @@ class Leap(Sequence):
                             liftoff_roll=cfg.get("liftoff_roll", 0.0), thrust_lean=cfg.get("thrust_lean", 0.0),
                             spin_hold=cfg.get("spin_hold", 0.0))
             if commanded:
-                return CommandedThrust({}, ctx, cfg["crouch_height"], command, **settings)
+                # after a turn (turn_angle) the flight is aimed from the start's feet, the spin about the new heading's side
+                turned = dict(origin=origin, turned=True) if cfg.get("turn_angle", 0.0) else {}
+                return CommandedThrust({}, ctx, cfg["crouch_height"], command, **turned, **settings)
             return LeapThrust({}, ctx, cfg["crouch_height"], **settings)
 
         def land(t):
@@ -253,7 +254,7 @@ class Leap(Sequence):
                 return self.recovery(t, p["landing_step_margin"])
             return balance_after_landing(ctx, self.previous)
 
-        return turn_steps(ctx, cfg.get("turn_first", 0.0), self) + [
+        return turn_steps(ctx, cfg.get("turn_first", 0.0), self, cfg.get("turn_angle", 0.0)) + [
                 Step("crouch", crouch, crouched)] + ([Step("lean", lean, leaned)] if commanded else []) + [
                 Step("thrust", thrust, lambda b, t: b.lifted_off()),
                 Step("land", land, landed),
