@@ -56,6 +56,7 @@ HIP_Y, KNEE = 0, 3                  # definition: the hip's flexion and the knee
 SIZED_FOR = "man"                   # definition: the rider the bicycle's saddle and bar are set for (world/bicycle.py)
 MIN_LOOKAHEAD_SPEED = 1.0           # definition: m/s, the speed below which the look-ahead distance stops shrinking
 MOUNT_CRANK_ANGLE = math.pi / 2      # the start's crank: right pedal forward, left back (horizontal)
+COAST_CRANK_ANGLE = -math.pi / 2     # definition: the crank held coasting and stopping: left pedal forward, right back (horizontal)
 LEG_JOINTS = {"r": ("hip_r_y", "knee_r_y"), "l": ("hip_l_y", "knee_l_y")}
 ANKLE_JOINTS = {"r": "ankle_r_y", "l": "ankle_l_y"}
 ARM_JOINTS = {"r": ("shoulder_r_x", "shoulder_r_y", "shoulder_r_z", "elbow_r_y", "elbow_r_z"),
@@ -442,7 +443,7 @@ class Bicycling(Behaviour):
         # of it (0.03 rad at 4.42 m/s: 0.45 rad/s for 66 ms) set off a weave of 20 deg (docs/bicycle.md)
         blend = ctx.control_dt / (c["heading_rate_filter"] + ctx.control_dt)
         self.yaw_rate_feedforward += blend * (self.desired_yaw_rate - self.yaw_rate_feedforward)
-        if self.planted is not None:      # once the foot is on the ground the arms turn the bars straight
+        if self.foot_down is not None:    # once the foot leaves its pedal the arms turn the bars straight
             step = c["fork_straighten_rate"] * ctx.control_dt
             self.fork_command -= min(max(self.fork_command, -step), step)
         else:
@@ -497,8 +498,12 @@ class Bicycling(Behaviour):
                                                            c["speed_integral_limit"])
             return crank_torque(state["speed"], self.desired_speed, c["speed_gain"], c["max_crank_torque"], uphill,
                                 self.speed_error_integral, ki)
-        level = math.pi / 2 + math.pi * math.ceil((self.crank_command - math.pi / 2) / math.pi)   # the next level crank
-        self.crank_command = min(self.crank_command + c["crank_level_rate"] * dt, level)
+        # the crank turned back (free on the freewheel) to level with the left pedal forward: with the left pedal
+        # back the stop's foot landed with its knee near straight (0.53-0.62 rad against 0.89-0.92), the bicycle
+        # leaned onto it to 10.5-11 deg and crept on, or fell; turned forward, in high gears the crank reached the
+        # wheel's pace, lagged and fell back to the other level (docs/bicycle.md, the stop's stand)
+        level = COAST_CRANK_ANGLE + 2 * math.pi * math.floor((self.crank_command - COAST_CRANK_ANGLE) / (2 * math.pi))
+        self.crank_command = max(self.crank_command - c["crank_level_rate"] * dt, level)
         if self.stopping:
             self.desired_speed = max(self.desired_speed - c["brake_deceleration"] * dt, 0.0)
             if self.foot_down is None and state["speed"] < c["foot_release_speed"]:
@@ -525,6 +530,7 @@ class Bicycling(Behaviour):
         active[self.foot_eq] = 0
         self.ctx.servos.log.set_flat(data.eq_active, "eq_active", active)
         self.foot_down = (t, data.site_xpos[self.foot_site] - data.xpos[self.left_hip])
+        self.fork_command = float(data.qpos[self.bike.steer_qpos])   # the bars straightened from where they are
         self.event(t, "foot_off_pedal")
 
     def _ground_point(self) -> np.ndarray:
