@@ -22,9 +22,10 @@ Control, every tick (laws.py for the equations):
     (passive) seat pivot to seat_pitch, so the arms and legs hold the pelvis's pitch and the rider does not
     swing fore and aft with each pedal stroke (which rocked the frame's speed by +-4 %: docs/bicycle.md);
   * coasting (the coast and stop courses, a freewheel bicycle): eq. 7 off, the legs turn the cranks
-    level and hold them; stopping: eq. 7's braking torque to the rim brakes (joint friction set
+    back to level, the left pedal forward, and hold them; stopping: eq. 7's braking torque to the rim brakes (joint friction set
     through the edit log), the left foot let go of its pedal below foot_release_speed and put down
-    beside the bicycle, its knee propping the lean (docs/bicycle.md, the stop).
+    beside the bicycle, its knee propping the lean, and the bars turned straight from where they are
+    (docs/bicycle.md, the stop and the stop's stand).
 """
 from __future__ import annotations
 
@@ -103,9 +104,9 @@ BICYCLE_RANGES = Schema(
     Parameter("heading_acceleration", "m/s^2", 0.1, 0.1, 10.0, "a commanded heading (no path) is approached as a turn asking this lateral acceleration: the desired heading turns at this / v rad/s"),
     Parameter("heading_rate_feedforward", "1", 0.0, 0.0, 1.0, "share of the desired heading's turning rate (to a commanded heading) eq. 11's yaw-rate term damps the yaw rate relative to (0: the seed's, relative to 0; without it the heading lags the turn by k_bd/k_b times its rate)"),
     Parameter("heading_rate_filter", "s", 0.0, 0.0, 2.0, "time constant of the low-pass on that turning rate before eq. 11 uses it (0: unfiltered)"),
-    Parameter("min_coast_gear", "1", 0.5, 0.5, 10.0, "the coast is offered from this gear (course.py refuses lower: its stop fell in 3 of 9 coasts in gear 2.0)"),
-    Parameter("max_coast_gear", "1", 10.0, 0.5, 10.0, "the coast is offered up to this gear (course.py refuses higher: its stop fell in 3, 2 and 5 of 9 coasts in gears 2.8, 3.0 and 3.5; none of 18 in 2.4 and 2.6)"),
-    Parameter("min_stop_after", "s", 0.5, 0.5, 100.0, "the stop brakes from coast_after >= this (earlier, a stop from 3.03 m/s braking 1.39 s in fell; course.py refuses it)"),
+    Parameter("min_coast_gear", "1", 0.5, 0.5, 10.0, "the coast is offered from this gear (course.py refuses lower; 1: every gear offered, since the crank is levelled with the left pedal forward 55 coasts in gears 1.01-4.56 stood, docs/bicycle.md, the stop's stand)"),
+    Parameter("max_coast_gear", "1", 10.0, 0.5, 10.0, "the coast is offered up to this gear (course.py refuses higher; before the stop's stand was mended its stop fell in 3, 3, 2 and 5 of 9 coasts in gears 2.0, 2.8, 3.0 and 3.5)"),
+    Parameter("min_stop_after", "s", 0.5, 0.5, 100.0, "the stop brakes from coast_after >= this (course.py refuses earlier; 0.5, the schema's least: 15 stops braking 0.52-1.98 s in stood, among them 3.03 m/s after 1.39 s, which fell before the stop's stand was mended)"),
     Parameter("max_heading_change", "rad", 3.15, 0.0, 3.15, "the largest commanded heading (a turn from the start's) offered (larger, the child fell 1.7-2.3 s in; course.py refuses it)"),
     Parameter("max_heading_turn_speed", "m/s", 0.5, 0.5, 10.0, "a commanded heading other than the start's (no path) is offered up to this speed (faster, the turn to it fell or leaned past 20 deg; course.py refuses it)"),
     Parameter("min_heading_turn_gear", "1", 0.5, 0.5, 5.0, "a commanded heading other than the start's (no path) is offered from this gear (in lower gears the heading was left 5-10 deg off or the bicycle weaved; course.py refuses it)"),
@@ -135,7 +136,7 @@ BICYCLE_RANGES = Schema(
     Parameter("steep_hill_max_speed", "m/s", 0.5, 0.5, 8.0, "and up to this speed"),
     Parameter("steep_hill_min_lead", "m", 0.0, 0.0, 200.0, "and after at least this much flat (hill_after) before the climb"),
     Parameter("coast_min_speed", "m/s", 0.5, 0.5, 8.0, "coast course: below this speed the rider brakes to a stop (steering needs speed)"),
-    Parameter("crank_level_rate", "rad/s", 0.1, 0.1, 20.0, "coasting: the legs turn the crank to level (pedals horizontal) at most this fast"),
+    Parameter("crank_level_rate", "rad/s", 0.1, 0.1, 20.0, "coasting and stopping: the legs turn the crank back (free on the freewheel) to level with the left pedal forward (COAST_CRANK_ANGLE) at most this fast"),
     Parameter("brake_deceleration", "m/s^2", 0.1, 0.1, 5.0, "stop: eq. 7's desired speed falls to 0 at this rate; its braking torque goes to the rim brakes"),
     Parameter("front_brake_share", "1", 0.0, 0.0, 1.0, "stop: share of the braking torque asked of the front brake"),
     Parameter("stop_lean", "rad", 0.0, 0.0, 0.4, "stop: eq. 11's desired roll towards the foot that goes down (left) while braking"),
@@ -443,7 +444,8 @@ class Bicycling(Behaviour):
         # of it (0.03 rad at 4.42 m/s: 0.45 rad/s for 66 ms) set off a weave of 20 deg (docs/bicycle.md)
         blend = ctx.control_dt / (c["heading_rate_filter"] + ctx.control_dt)
         self.yaw_rate_feedforward += blend * (self.desired_yaw_rate - self.yaw_rate_feedforward)
-        if self.foot_down is not None:    # once the foot leaves its pedal the arms turn the bars straight
+        if self.foot_down is not None:    # once the foot leaves its pedal the arms turn the bars straight (eq. 11 at a
+            # walking pace swung them to its +-0.5 rad limit: turned 12-24 deg when the foot landed, the stop fell)
             step = c["fork_straighten_rate"] * ctx.control_dt
             self.fork_command -= min(max(self.fork_command, -step), step)
         else:
@@ -469,8 +471,8 @@ class Bicycling(Behaviour):
 
     def _crank_torque(self, t, state) -> float:
         """Eq. 7 on the desired speed, which follows the course's command at speed_ramp. Coasting
-        (the coast and stop courses, from coast_from) the crank is not driven: the legs turn it level
-        and hold it on the freewheel; on the coast course, below coast_min_speed (too slow to steer),
+        (the coast and stop courses, from coast_from) the crank is not driven: the legs turn it back to
+        level, the left pedal forward, and hold it on the freewheel; on the coast course, below coast_min_speed (too slow to steer),
         the rider brakes to a stop. Stopping, the desired speed falls to 0 at brake_deceleration and
         eq. 7's braking torque goes to the rim brakes (a freewheel cannot brake through the pedals);
         below foot_release_speed the left foot goes down."""
