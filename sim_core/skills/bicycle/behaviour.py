@@ -22,9 +22,10 @@ Control, every tick (laws.py for the equations):
     (passive) seat pivot to seat_pitch, so the arms and legs hold the pelvis's pitch and the rider does not
     swing fore and aft with each pedal stroke (which rocked the frame's speed by +-4 %: docs/bicycle.md);
   * coasting (the coast and stop courses, a freewheel bicycle): eq. 7 off, the legs turn the cranks
-    level and hold them; stopping: eq. 7's braking torque to the rim brakes (joint friction set
+    back to level, the left pedal forward, and hold them; stopping: eq. 7's braking torque to the rim brakes (joint friction set
     through the edit log), the left foot let go of its pedal below foot_release_speed and put down
-    beside the bicycle, its knee propping the lean (docs/bicycle.md, the stop).
+    beside the bicycle, its knee propping the lean, and the bars turned straight from where they are
+    (docs/bicycle.md, the stop and the stop's stand).
 """
 from __future__ import annotations
 
@@ -56,6 +57,7 @@ HIP_Y, KNEE = 0, 3                  # definition: the hip's flexion and the knee
 SIZED_FOR = "man"                   # definition: the rider the bicycle's saddle and bar are set for (world/bicycle.py)
 MIN_LOOKAHEAD_SPEED = 1.0           # definition: m/s, the speed below which the look-ahead distance stops shrinking
 MOUNT_CRANK_ANGLE = math.pi / 2      # the start's crank: right pedal forward, left back (horizontal)
+COAST_CRANK_ANGLE = -math.pi / 2     # definition: the crank held coasting and stopping: left pedal forward, right back (horizontal)
 LEG_JOINTS = {"r": ("hip_r_y", "knee_r_y"), "l": ("hip_l_y", "knee_l_y")}
 ANKLE_JOINTS = {"r": "ankle_r_y", "l": "ankle_l_y"}
 ARM_JOINTS = {"r": ("shoulder_r_x", "shoulder_r_y", "shoulder_r_z", "elbow_r_y", "elbow_r_z"),
@@ -102,9 +104,9 @@ BICYCLE_RANGES = Schema(
     Parameter("heading_acceleration", "m/s^2", 0.1, 0.1, 10.0, "a commanded heading (no path) is approached as a turn asking this lateral acceleration: the desired heading turns at this / v rad/s"),
     Parameter("heading_rate_feedforward", "1", 0.0, 0.0, 1.0, "share of the desired heading's turning rate (to a commanded heading) eq. 11's yaw-rate term damps the yaw rate relative to (0: the seed's, relative to 0; without it the heading lags the turn by k_bd/k_b times its rate)"),
     Parameter("heading_rate_filter", "s", 0.0, 0.0, 2.0, "time constant of the low-pass on that turning rate before eq. 11 uses it (0: unfiltered)"),
-    Parameter("min_coast_gear", "1", 0.5, 0.5, 10.0, "the coast is offered from this gear (course.py refuses lower: its stop fell in 3 of 9 coasts in gear 2.0)"),
-    Parameter("max_coast_gear", "1", 10.0, 0.5, 10.0, "the coast is offered up to this gear (course.py refuses higher: its stop fell in 3, 2 and 5 of 9 coasts in gears 2.8, 3.0 and 3.5; none of 18 in 2.4 and 2.6)"),
-    Parameter("min_stop_after", "s", 0.5, 0.5, 100.0, "the stop brakes from coast_after >= this (earlier, a stop from 3.03 m/s braking 1.39 s in fell; course.py refuses it)"),
+    Parameter("min_coast_gear", "1", 0.5, 0.5, 10.0, "the coast is offered from this gear (course.py refuses lower; 1: every gear offered, since the crank is levelled with the left pedal forward 55 coasts in gears 1.01-4.56 stood, docs/bicycle.md, the stop's stand)"),
+    Parameter("max_coast_gear", "1", 10.0, 0.5, 10.0, "the coast is offered up to this gear (course.py refuses higher; 5: every gear offered; before the stop's stand was mended its stop fell in 3, 3, 2 and 5 of 9 coasts in gears 2.0, 2.8, 3.0 and 3.5)"),
+    Parameter("min_stop_after", "s", 0.5, 0.5, 100.0, "the stop brakes from coast_after >= this (course.py refuses earlier; 0.5, the schema's least: 15 stops braking 0.52-1.98 s in stood, among them 3.03 m/s after 1.39 s, which fell before the stop's stand was mended)"),
     Parameter("max_heading_change", "rad", 3.15, 0.0, 3.15, "the largest commanded heading (a turn from the start's) offered (larger, the child fell 1.7-2.3 s in; course.py refuses it)"),
     Parameter("max_heading_turn_speed", "m/s", 0.5, 0.5, 10.0, "a commanded heading other than the start's (no path) is offered up to this speed (faster, the turn to it fell or leaned past 20 deg; course.py refuses it)"),
     Parameter("min_heading_turn_gear", "1", 0.5, 0.5, 5.0, "a commanded heading other than the start's (no path) is offered from this gear (in lower gears the heading was left 5-10 deg off or the bicycle weaved; course.py refuses it)"),
@@ -134,7 +136,7 @@ BICYCLE_RANGES = Schema(
     Parameter("steep_hill_max_speed", "m/s", 0.5, 0.5, 8.0, "and up to this speed"),
     Parameter("steep_hill_min_lead", "m", 0.0, 0.0, 200.0, "and after at least this much flat (hill_after) before the climb"),
     Parameter("coast_min_speed", "m/s", 0.5, 0.5, 8.0, "coast course: below this speed the rider brakes to a stop (steering needs speed)"),
-    Parameter("crank_level_rate", "rad/s", 0.1, 0.1, 20.0, "coasting: the legs turn the crank to level (pedals horizontal) at most this fast"),
+    Parameter("crank_level_rate", "rad/s", 0.1, 0.1, 20.0, "coasting and stopping: the legs turn the crank back (free on the freewheel) to level with the left pedal forward (COAST_CRANK_ANGLE) at most this fast"),
     Parameter("brake_deceleration", "m/s^2", 0.1, 0.1, 5.0, "stop: eq. 7's desired speed falls to 0 at this rate; its braking torque goes to the rim brakes"),
     Parameter("front_brake_share", "1", 0.0, 0.0, 1.0, "stop: share of the braking torque asked of the front brake"),
     Parameter("stop_lean", "rad", 0.0, 0.0, 0.4, "stop: eq. 11's desired roll towards the foot that goes down (left) while braking"),
@@ -442,7 +444,8 @@ class Bicycling(Behaviour):
         # of it (0.03 rad at 4.42 m/s: 0.45 rad/s for 66 ms) set off a weave of 20 deg (docs/bicycle.md)
         blend = ctx.control_dt / (c["heading_rate_filter"] + ctx.control_dt)
         self.yaw_rate_feedforward += blend * (self.desired_yaw_rate - self.yaw_rate_feedforward)
-        if self.planted is not None:      # once the foot is on the ground the arms turn the bars straight
+        if self.foot_down is not None:    # once the foot leaves its pedal the arms turn the bars straight (eq. 11 at a
+            # walking pace swung them to its +-0.5 rad limit: turned 12-24 deg when the foot landed, the stop fell)
             step = c["fork_straighten_rate"] * ctx.control_dt
             self.fork_command -= min(max(self.fork_command, -step), step)
         else:
@@ -468,8 +471,8 @@ class Bicycling(Behaviour):
 
     def _crank_torque(self, t, state) -> float:
         """Eq. 7 on the desired speed, which follows the course's command at speed_ramp. Coasting
-        (the coast and stop courses, from coast_from) the crank is not driven: the legs turn it level
-        and hold it on the freewheel; on the coast course, below coast_min_speed (too slow to steer),
+        (the coast and stop courses, from coast_from) the crank is not driven: the legs turn it back to
+        level, the left pedal forward, and hold it on the freewheel; on the coast course, below coast_min_speed (too slow to steer),
         the rider brakes to a stop. Stopping, the desired speed falls to 0 at brake_deceleration and
         eq. 7's braking torque goes to the rim brakes (a freewheel cannot brake through the pedals);
         below foot_release_speed the left foot goes down."""
@@ -497,8 +500,12 @@ class Bicycling(Behaviour):
                                                            c["speed_integral_limit"])
             return crank_torque(state["speed"], self.desired_speed, c["speed_gain"], c["max_crank_torque"], uphill,
                                 self.speed_error_integral, ki)
-        level = math.pi / 2 + math.pi * math.ceil((self.crank_command - math.pi / 2) / math.pi)   # the next level crank
-        self.crank_command = min(self.crank_command + c["crank_level_rate"] * dt, level)
+        # the crank turned back (free on the freewheel) to level with the left pedal forward: with the left pedal
+        # back the stop's foot landed with its knee near straight (0.53-0.62 rad against 0.89-0.92), the bicycle
+        # leaned onto it to 10.5-11 deg and crept on, or fell; turned forward, in high gears the crank reached the
+        # wheel's pace, lagged and fell back to the other level (docs/bicycle.md, the stop's stand)
+        level = COAST_CRANK_ANGLE + 2 * math.pi * math.floor((self.crank_command - COAST_CRANK_ANGLE) / (2 * math.pi))
+        self.crank_command = max(self.crank_command - c["crank_level_rate"] * dt, level)
         if self.stopping:
             self.desired_speed = max(self.desired_speed - c["brake_deceleration"] * dt, 0.0)
             if self.foot_down is None and state["speed"] < c["foot_release_speed"]:
@@ -525,6 +532,7 @@ class Bicycling(Behaviour):
         active[self.foot_eq] = 0
         self.ctx.servos.log.set_flat(data.eq_active, "eq_active", active)
         self.foot_down = (t, data.site_xpos[self.foot_site] - data.xpos[self.left_hip])
+        self.fork_command = float(data.qpos[self.bike.steer_qpos])   # the bars straightened from where they are
         self.event(t, "foot_off_pedal")
 
     def _ground_point(self) -> np.ndarray:

@@ -114,13 +114,13 @@ def course_for(p: dict) -> Course:
         _check_stop(p["speed"])
         if p["coast_after"] < p["min_stop_after"]:
             raise ParameterError(f"the stop brakes from coast_after >= {p['min_stop_after']:g} s (asked: {p['coast_after']:g} s); "
-                                 f"earlier, a stop from 3.03 m/s braking 1.39 s after the rolling start was measured to fall")
+                                 f"earlier was not measured (docs/bicycle.md, the stop's stand)")
     elif name == "coast":
         _check_coast(p["speed"], p["coast_min_speed"])
     if name == "coast" and not p["min_coast_gear"] <= p["gear"] <= p["max_coast_gear"]:
         raise ParameterError(f"parameter gear={p['gear']:g} is out of range for the coast course; allowed range for gear is "
-                             f"[{p['min_coast_gear']:g}, {p['max_coast_gear']:g}] (in other gears the stop at its end "
-                             f"was measured to fall: docs/bicycle.md, the freewheel's gears)")
+                             f"[{p['min_coast_gear']:g}, {p['max_coast_gear']:g}] (other gears were not measured: "
+                             f"docs/bicycle.md, the stop's stand)")
     if "path" in p:
         path = np.asarray(p["path"], dtype=float)
         lookahead = p["lookahead_time"] * max(speed for _, speed in speeds)
