@@ -168,3 +168,16 @@ def test_random_lateral_targets_turn_first_and_land_balanced(tmp_path):
     assert all(p["trials"] <= CONSTANTS.turn_aim_trials + CONSTANTS.landing_trials - 1 for p in plans)
     assert sum(r["passed"] for r in results) >= TURNED_TARGETS - 1, "\n".join(lines)
     assert max(r["seconds"] for r in results) <= 60, "\n".join(lines)
+
+
+def test_turn_headings_replay():
+    """The woman's measured turn map (turn_headings, planning/turn_map.py): a stored turn_angle's hop reaches
+    its stored heading again (the same simulation), and turn_for_heading picks the stored angle nearest a heading."""
+    import random
+    from sim_core.planning.turn_map import hop_heading
+    from sim_core.skills.jump_to_target.commanded import table, turn_for_heading
+    pairs = table("woman")["turn_headings"]
+    k = random.Random(SEED).randrange(len(pairs["turn_angle"]))           # one seeded row
+    heading, lowest, began = hop_heading("woman", pairs["turn_angle"][k])
+    assert began and abs(heading - pairs["heading"][k]) < 1e-4
+    assert turn_for_heading(table("woman"), pairs["heading"][k] + 1e-6) == pairs["turn_angle"][k]
