@@ -145,7 +145,7 @@ def test_a_target_outside_both_regions_is_refused_naming_both(monkeypatch):
     text = str(refused.value)
     assert "\n" not in text and "outside the region the woman's measured jumps offer" in text
     assert text.endswith("the commanded take-off is offered on flat ground for target_x 0.5-1.25 m, "
-                         "target_y -0.02-0.02 m, air_time 0.4-0.52 s, and turned first for a distance of 0.5-0.9 m "
+                         "target_y -0.02-0.02 m, air_time 0.4-0.52 s, and turned first for a distance of 0.7-1.25 m "
                          "at a bearing of 0-26 deg to either side, air_time 0.4-0.48 s")
     assert "commanded" not in region_refusal("man", (1.0, 0.4), 0.6)        # the man has no commanded region
 
