@@ -16,7 +16,7 @@ import math
 import numpy as np
 
 from sim_core.planning.turn_map import hop_heading
-from sim_core.tuned.store import table_path
+from sim_core.tuned.store import dumps, table_path
 
 
 def main() -> None:
@@ -42,10 +42,8 @@ def main() -> None:
     if args.write:
         path = table_path("jump_commanded", args.character)
         body = json.loads(path.read_text())
-        body.pop("turn_headings", None)
-        text = json.dumps(body, indent=1)           # the map's two columns on a line each
-        path.write_text(text[:text.rindex("}")].rstrip() + f',\n "turn_headings": {{\n  "turn_angle": {json.dumps(angles)},'
-                        f'\n  "heading": {json.dumps(headings)}\n }}\n}}\n')
+        body["turn_headings"] = {"turn_angle": angles, "heading": headings}
+        path.write_text(dumps(body))
         print(f"wrote {len(angles)} hops to {path}")
 
 
