@@ -145,7 +145,7 @@ def test_a_target_outside_both_regions_is_refused_naming_both(monkeypatch):
     text = str(refused.value)
     assert "\n" not in text and "outside the region the woman's measured jumps offer" in text
     assert text.endswith("the commanded take-off is offered on flat ground for target_x 0.5-1.25 m, "
-                         "target_y -0.02-0.02 m, air_time 0.4-0.52 s, and turned first for a distance of 0.5-0.9 m "
+                         "target_y -0.02-0.02 m, air_time 0.4-0.52 s, and turned first for a distance of 0.7-1.25 m "
                          "at a bearing of 0-26 deg to either side, air_time 0.4-0.48 s")
     assert "commanded" not in region_refusal("man", (1.0, 0.4), 0.6)        # the man has no commanded region
 
@@ -168,3 +168,16 @@ def test_random_lateral_targets_turn_first_and_land_balanced(tmp_path):
     assert all(p["trials"] <= CONSTANTS.turn_aim_trials + CONSTANTS.landing_trials - 1 for p in plans)
     assert sum(r["passed"] for r in results) >= TURNED_TARGETS - 1, "\n".join(lines)
     assert max(r["seconds"] for r in results) <= 60, "\n".join(lines)
+
+
+def test_turn_headings_replay():
+    """The woman's measured turn map (turn_headings, planning/turn_map.py): a stored turn_angle's hop reaches
+    its stored heading again (the same simulation), and turn_for_heading picks the stored angle nearest a heading."""
+    import random
+    from sim_core.planning.turn_map import hop_heading
+    from sim_core.skills.jump_to_target.commanded import table, turn_for_heading
+    pairs = table("woman")["turn_headings"]
+    k = random.Random(SEED).randrange(len(pairs["turn_angle"]))           # one seeded row
+    heading, lowest, began = hop_heading("woman", pairs["turn_angle"][k])
+    assert began and abs(heading - pairs["heading"][k]) < 1e-4
+    assert turn_for_heading(table("woman"), pairs["heading"][k] + 1e-6) == pairs["turn_angle"][k]

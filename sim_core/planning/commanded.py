@@ -19,8 +19,9 @@ a few simulated jumps, not a search over the leap's settings:
 A target beyond the table's straight region's target_y, in its ``turned_region`` (plan_turned): the
 jump turns first (one hop, the leap's ``turn_angle``) and flies the commanded take-off forward; the aim
 moves the commanded distance along the target's bearing by a secant on the landing's distance along it,
-and the turn by the landing's bearing missed over the table's ``turn_slope`` (from ``turn_gain`` x the
-bearing), at most ``turn_aim_trials`` jumps; then the landing as 2.
+and the heading wanted by the landing's bearing missed over the table's ``turn_slope`` (from ``turn_gain`` x
+the bearing), the turn being the measured hop nearest that heading (the character's ``turn_headings``),
+at most ``turn_aim_trials`` jumps; then the landing as 2.
 
 At most min(budget, aim_trials + landing_trials - 1) jumps (turned: turn_aim_trials + landing_trials - 1);
 the plan is the best trial (found or
@@ -33,8 +34,9 @@ import math
 from typing import Callable
 
 from ..character.spec import load_character
-from ..control.leap import LEAP_SETTINGS, TURN_ANGLE
-from ..skills.jump_to_target.commanded import CONSTANTS, commanded_settings, commanded_way, table, turned_settings
+from ..control.leap import LEAP_SETTINGS
+from ..skills.jump_to_target.commanded import (CONSTANTS, commanded_settings, commanded_way, table, turn_for_heading,
+                                               turned_settings)
 from .land import candidates, foot_step
 from .trials import Trials
 
@@ -106,24 +108,25 @@ def plan_turned(character: str, target, air_time: float, trial, budget: int, jud
     along, side = (math.cos(bearing), math.sin(bearing)), (-math.sin(bearing), math.cos(bearing))
     bound = min(budget, c.turn_aim_trials + c.landing_trials - 1)
     trials = Trials(trial, bound, progress, cancelled)
-    aims, reached, turns, bearings, air_aims, flown = [distance], [], [c.turn_gain * bearing], [], [float(air_time)], []
-    good = None         # the aim, turn and air time aimed of the nearest trial that flew
+    aims, reached, headings, bearings, air_aims, flown = [distance], [], [c.turn_gain * bearing], [], [float(air_time)], []
+    good = None         # the aim, heading and air time aimed of the nearest trial that flew
+    grounded = set()    # the turns whose jump did not fly
     while True:
-        measured = trials.run(turned_settings(body, air_aims[-1], aims[-1], bearing, turns[-1]))
+        turn = turn_for_heading(body, headings[-1], grounded)
+        measured = trials.run(turned_settings(body, air_aims[-1], aims[-1], bearing, turn))
         if measured["fell_before_liftoff"] or not measured["air_time"] > 0.5 * air_time:   # definition: it did not fly
-            # a trial that did not fly tells nothing of the aim: halfway back to the nearest that flew, not secants on it
-            # (none yet: the turn halfway to the bearing itself - the hop's landing is chaotic, another turn lands another way)
-            if len(trials.tried) >= min(c.turn_aim_trials, bound) or (good is None and turns[-1] == bearing):
+            # a trial that did not fly tells nothing of the aim: the next measured hop nearest the heading (another
+            # stance to jump from), halfway back to the nearest trial that flew, not secants on it
+            grounded.add(turn)
+            if len(trials.tried) >= min(c.turn_aim_trials, bound):
                 break
-            if good is None:
-                turns[-1] = (turns[-1] + bearing) / 2.0
-            else:
-                aims[-1], turns[-1], air_aims[-1] = [(a + b) / 2.0 for a, b in zip((aims[-1], turns[-1], air_aims[-1]), good)]
+            if good is not None:
+                aims[-1], headings[-1], air_aims[-1] = [(a + b) / 2.0 for a, b in zip((aims[-1], headings[-1], air_aims[-1]), good)]
             continue
         lx, ly = measured["landing"]
         error = math.hypot(lx - x, ly - y)
         if good is None or error < good[3]:
-            good = (aims[-1], turns[-1], air_aims[-1], error)
+            good = (aims[-1], headings[-1], air_aims[-1], error)
         reached.append(lx * along[0] + ly * along[1])
         bearings.append(math.atan2(ly, lx))
         flown.append(measured["air_time"])
@@ -134,9 +137,9 @@ def plan_turned(character: str, target, air_time: float, trial, budget: int, jud
             break
         slope = secant(aims, reached, c.aim_slope_floor, c.aim_slope)
         aims.append(min(max(aims[-1] - miss / slope, c.aim_range[0]), c.aim_range[1]))
-        # the turn by the table's slope, not a secant: the landing's bearing scatters by ~0.1 rad for a turn changed by
-        # 0.01 rad, and a secant through that scatter stepped the turn far off (seed 2: 12 of 20 hits with it)
-        turns.append(min(max(turns[-1] - (bearings[-1] - bearing) / c.turn_slope, TURN_ANGLE.minimum), TURN_ANGLE.maximum))
+        # the heading wanted moves by the landing's bearing missed (over the table's slope); the turn is the measured
+        # hop nearest it (turn_for_heading: the hop's heading is not smooth in its angle, a secant on it stepped far off)
+        headings.append(headings[-1] - (bearings[-1] - bearing) / c.turn_slope)
         rate = secant(air_aims, flown, c.aim_slope_floor, 1.0)     # definition: the first step as flown
         air_aims.append(air_aims[-1] - late / rate)
     return landed_plan(character, trials, bound, judge, c)

@@ -15,6 +15,8 @@ flights land pitched forward and fall, docs/jump_to_target.md) holds:
   says how, with the command); a request on flat ground there and outside the measured jumps' region
   (region.py) is planned with the commanded take-off (planning/commanded.py), anything outside both is
   refused naming both limits;
+- ``turn_headings`` (with ``turned_region``): the heading (rad) the turn's hop reached for each ``turn_angle``
+  of a fine grid (turn_for_heading);
 - ``turned_region`` (optional): where a target to the side of the start's line is flown by turning
   first (one hop, the leap's ``turn_angle``, control/turn.py) and then the commanded take-off forward
   along the new heading (``distance`` from the start's feet m, ``bearing`` |atan2(y, x)| rad, ``air_time``
@@ -49,8 +51,9 @@ COMMANDED_CONSTANTS = Schema(
     constant("turn_aim_trials", "count", 1, 20,
              "a turned commanded plan runs at most this many aimed jumps (the aimed distance and the turn moved by a "
              "secant after each: the landing's distance and bearing)"),
-    constant("turn_gain", "1", 0.0, 2.0, "a turned plan's first turn_angle per rad of the target's bearing"),
-    constant("turn_slope", "1", 0.05, 2.0, "a turned plan moves its turn by the landing's bearing missed over this"),
+    constant("turn_gain", "1", 0.0, 2.0, "a turned plan's first heading wanted per rad of the target's bearing"),
+    constant("turn_slope", "1", 0.05, 2.0,
+             "a turned plan moves the heading it wants by the landing's bearing missed over this"),
     constant("landing_trials", "count", 1, 30,
              "an aimed jump that lands on the target and falls is tried again with its feet placed a landing plan "
              "step (planning/land.py) more and less, two, ...: this many placements in all, its own the first"),
@@ -63,7 +66,22 @@ def _rows(body: dict):
         yield "settings", body["settings"]
     for k, height in enumerate(body.get("crouch_by_air_time", {}).get("crouch_height", [])):
         yield f"crouch_by_air_time {k}", {"crouch_height": height}
+    for k, angle in enumerate(body.get("turn_headings", {}).get("turn_angle", [])):
+        yield f"turn_headings {k}", {"turn_angle": angle}
     yield from constant_rows(body)
+
+
+def turn_for_heading(body: dict, heading: float, avoid=()) -> float:
+    """The ``turn_angle`` whose measured hop turned the character nearest ``heading`` (rad, + to the left):
+    the table's ``turn_headings`` (columns ``turn_angle``, ``heading``), the heading each turn_angle's hop
+    reached at the leap's crouch, measured from the standing start on a fine grid; hops that fell are not
+    in it, nor those in ``avoid``. The hop's heading is not smooth in its angle (docs/jump_to_target.md) but
+    the same angle turns the same way every run (the start is the same state): the measured map is
+    inverted, not fitted."""
+    pairs = body["turn_headings"]
+    k = int(np.argmin([abs(h - heading) if a not in avoid else math.inf
+                       for a, h in zip(pairs["turn_angle"], pairs["heading"])]))
+    return float(pairs["turn_angle"][k])
 
 
 def commanded_settings(body: dict, air_time: float, aim: float) -> dict:
