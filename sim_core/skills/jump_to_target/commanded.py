@@ -49,8 +49,8 @@ COMMANDED_CONSTANTS = Schema(
     constant("aim_slope", "1", 0.05, 2.0, "the landing per commanded m assumed where the secant is not trusted"),
     constant("aim_range", "m", 0.0, 2.5, "the commanded landing point stays in this range (low, high)"),
     constant("turn_aim_trials", "count", 1, 20,
-             "a turned commanded plan runs at most this many aimed jumps (the aimed distance and the turn moved by a "
-             "secant after each: the landing's distance and bearing)"),
+             "a turned commanded plan runs at most this many aimed jumps (after each the aimed distance moved by a "
+             "secant on the landing's distance, the heading wanted by the landing's bearing missed: turn_slope)"),
     constant("turn_gain", "1", 0.0, 2.0, "a turned plan's first heading wanted per rad of the target's bearing"),
     constant("turn_slope", "1", 0.05, 2.0,
              "a turned plan moves the heading it wants by the landing's bearing missed over this"),
