@@ -14,13 +14,17 @@ from sim_core import tuned
 from sim_core.character.model import new_spec
 from sim_core.errors import ParameterError
 from sim_core.simulate import RunRequest, largest_difference, replay, run
-from sim_core.skills.bicycle.course import COAST_SPEEDS, STOP_SPEEDS
+from sim_core.skills.bicycle.behaviour import bicycle_constants
 from sim_core.world import World, add_world
 from sim_core.world.bicycle import (BRAKE_MAX_TORQUE, ROLLING_RESISTANCE, WHEEL_RADIUS, WHEEL_BODIES, Bicycle,
                                     BicycleView)
 
 RANDOM = np.random.default_rng(3030)
 COAST_AFTER = 2.0
+
+CONSTANTS = bicycle_constants()
+COAST_SPEEDS = (CONSTANTS["min_coast_speed"], CONSTANTS["max_coast_speed"])   # the speeds the coast is offered from
+STOP_SPEEDS = (CONSTANTS["min_stop_speed"], CONSTANTS["max_stop_speed"])      # the speeds the stop is offered from
 
 
 def bicycle_alone(**options) -> mujoco.MjModel:

@@ -203,8 +203,7 @@ ALLOWED = {
     "skills.vault.assess": {n: "criterion" for n in ("STILL_SPEED", "ROTATION_TOLERANCE", "PEAK_LANDING_LIMIT", "CONTACT_GAP",
                                                      "KNEELING_HEIGHT", "FALLEN_PELVIS", "BALANCED_TIME", "NO_STEP",
                                                      "TABLE_1", "TAKEI_MASS", "TAKEI_HEIGHT")},
-    "skills.bicycle.course": {"SLALOM_POINT_SPACING": "definition", "RUN_OUT": "definition",
-                              **{n: "criterion" for n in ("COAST_SPEEDS", "STOP_SPEEDS")}},
+    "skills.bicycle.course": {"SLALOM_POINT_SPACING": "definition", "RUN_OUT": "definition"},
 }
 
 

@@ -16,7 +16,7 @@ Courses (the ``course`` parameter; a ``path`` given replaces the course's path):
   * coast: a freewheel bicycle; from ``coast_after`` s the rider stops pedalling and holds the cranks
     level, steering on, until the speed falls to the table's ``coast_min_speed``, then stops as below;
   * stop: a freewheel bicycle with rim brakes; from ``coast_after`` s the rider brakes to a standstill
-    (behaviour.py), offered from the speeds at which the stop was measured to work (STOP_SPEEDS).
+    (behaviour.py), offered from the speeds at which the stop was measured to work (min/max_stop_speed).
 
 A course that asks the bicycle to turn harder than ``MAX_LEAN`` of lean at its speed is refused
 before anything runs, naming the limit; so is a request outside the limits measured by the random
@@ -50,8 +50,6 @@ COURSE = Choice("course", COURSES, "straight",
 FREEWHEEL_COURSES = ("coast", "stop")   # definition: the courses ridden on a freewheel bicycle
 MAX_LEAN = math.radians(25.0)      # criterion: the steepest steady lean a course may ask for (v^2 / (g r) = tan)
 SLALOM_POINT_SPACING = 0.25        # definition: m between the points of the slalom's sine
-COAST_SPEEDS = (3.5, 5.0)          # criterion: m/s, the speeds from which the coast was measured (it stops at coast_min_speed)
-STOP_SPEEDS = (3.0, 5.0)           # criterion: m/s, the speeds from which the stop was measured to end standing
 RUN_OUT = 60.0                     # definition: m of straight after a course's last feature (longer than a ride goes)
 
 
@@ -111,12 +109,12 @@ def course_for(p: dict) -> Course:
     elif name == "start":
         start_speed = p["start_speed"]
     elif name == "stop":
-        _check_stop(p["speed"])
+        _check_stop(p)
         if p["coast_after"] < p["min_stop_after"]:
             raise ParameterError(f"the stop brakes from coast_after >= {p['min_stop_after']:g} s (asked: {p['coast_after']:g} s); "
                                  f"earlier was not measured (docs/bicycle.md, the stop's stand)")
     elif name == "coast":
-        _check_coast(p["speed"], p["coast_min_speed"])
+        _check_coast(p)
     if name == "coast" and not p["min_coast_gear"] <= p["gear"] <= p["max_coast_gear"]:
         raise ParameterError(f"parameter gear={p['gear']:g} is out of range for the coast course; allowed range for gear is "
                              f"[{p['min_coast_gear']:g}, {p['max_coast_gear']:g}] (other gears were not measured: "
@@ -295,21 +293,22 @@ def _check_hill(p: dict, speeds: list[float]) -> None:
                              f"at gear {gear:g} a hill_grade <= {most / gear:.3f}, or a gear <= {most / grade:.2f}, would do")
 
 
-def _check_coast(speed: float, slowest: float) -> None:
-    """The coast is offered from the speeds it was measured from, and it ends in a stop from a speed
-    the stop was measured from."""
-    low, high = COAST_SPEEDS
+def _check_coast(p: dict) -> None:
+    """The coast is offered from the speeds it was measured from (min/max_coast_speed), and it ends in a
+    stop from a speed the stop was measured from (coast_min_speed from min_stop_speed)."""
+    speed, slowest, low, high = p["speed"], p["coast_min_speed"], p["min_coast_speed"], p["max_coast_speed"]
     if not low <= speed <= high:
         raise ParameterError(f"the coast is ridden from speed {low:g}-{high:g} m/s (asked: {speed:g} m/s); "
                              f"from elsewhere it was not measured (docs/bicycle.md, coasting)")
-    if not STOP_SPEEDS[0] <= slowest < speed:
+    if not p["min_stop_speed"] <= slowest < speed:
         raise ParameterError(f"the coast hands over to a stop at coast_min_speed, which must be from "
-                             f"{STOP_SPEEDS[0]:g} m/s up to below the speed {speed:g} m/s (asked: {slowest:g} m/s)")
+                             f"{p['min_stop_speed']:g} m/s up to below the speed {speed:g} m/s (asked: {slowest:g} m/s)")
 
 
-def _check_stop(speed: float) -> None:
-    """The stop is offered from the speeds at which it was measured to end standing (docs/bicycle.md)."""
-    low, high = STOP_SPEEDS
+def _check_stop(p: dict) -> None:
+    """The stop is offered from the speeds at which it was measured to end standing (min/max_stop_speed,
+    docs/bicycle.md)."""
+    speed, low, high = p["speed"], p["min_stop_speed"], p["max_stop_speed"]
     if not low <= speed <= high:
         raise ParameterError(f"the stop is ridden from speed {low:g}-{high:g} m/s (asked: {speed:g} m/s); "
                              f"from elsewhere the rider was not measured to stop standing (docs/bicycle.md, the stop)")

@@ -34,7 +34,7 @@ from ...tuning import executor_for
 from ...world import World, add_world
 from ...world.bicycle import Bicycle, BicycleView, DEFAULT_GEAR
 from .behaviour import Bicycling, bicycle_constants, rider_courses
-from .course import STOP_SPEEDS, slalom_widest_offset
+from .course import slalom_widest_offset
 
 
 def riderless_model(gear: float = DEFAULT_GEAR) -> mujoco.MjModel:
@@ -153,8 +153,9 @@ def course_rides(seed: int, slaloms: int, stops: int = 0, stand: float | None = 
             slalom_seconds(speed, spacing))
     deceleration = Bicycling.settings_schema.by_name["brake_deceleration"].default
     coast_after = Bicycling.schema.by_name["coast_after"].default
+    constants = bicycle_constants()
     for _ in range(stops):
-        speed = round(float(rng.uniform(*STOP_SPEEDS)), 2)
+        speed = round(float(rng.uniform(constants["min_stop_speed"], constants["max_stop_speed"])), 2)
         params = {"course": "stop", "speed": speed, **({"stop_stand": stand} if stand is not None else {})}
         rides[f"stop_from_{speed:g}ms"] = (params, coast_after + speed / deceleration + (STOP_STAND if stand is None else stand))
     return rides
