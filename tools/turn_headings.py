@@ -10,13 +10,12 @@ jump that follows (the same angle reaches the same heading for any target), so o
 from __future__ import annotations
 
 import argparse
-import json
 import math
 
 import numpy as np
 
 from sim_core.planning.turn_map import hop_heading
-from sim_core.tuned.store import dumps, table_path
+from sim_core.tuned.store import read, save
 
 
 def main() -> None:
@@ -40,10 +39,9 @@ def main() -> None:
             angles.append(float(angle))
             headings.append(round(heading, 5))
     if args.write:
-        path = table_path("jump_commanded", args.character)
-        body = json.loads(path.read_text())
+        body = read("jump_commanded", args.character)
         body["turn_headings"] = {"turn_angle": angles, "heading": headings}
-        path.write_text(dumps(body))
+        path = save("jump_commanded", args.character, body, body["strengths"])    # checked, written whole
         print(f"wrote {len(angles)} hops to {path}")
 
 

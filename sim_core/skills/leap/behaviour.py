@@ -251,7 +251,7 @@ class Leap(Sequence):
 
         def stand(t):
             if recovery:
-                return self.recovery(t, p["landing_step_margin"])
+                return self.recovery(stance, p["landing_step_margin"])
             return balance_after_landing(ctx, self.previous)
 
         return turn_steps(ctx, cfg.get("turn_first", 0.0), self, cfg.get("turn_angle", 0.0)) + [
@@ -260,14 +260,14 @@ class Leap(Sequence):
                 Step("land", land, landed),
                 Step("balance", stand)]
 
-    def recovery(self, t: float, margin: float) -> StepAndHold:
+    def recovery(self, measure: StanceMeasure, margin: float) -> StepAndHold:
         """The landing's recovery step (landing_recovery_step): the staggered stance from the feet as they
         landed, and a step wherever its capture point comes within ``margin`` of the support's edge - at once
         if it is there already (control/recovery_step.py StepAndHold, its parameters' defaults); the first
-        step is a 'recovery_step' event."""
+        step is a 'recovery_step' event; ``measure``: the landing's own StanceMeasure."""
         step, stance = RecoveryStep.schema.defaults(), StaggeredStance.schema.defaults()
-        first = StanceMeasure(self.ctx, stance["min_height"]).outside(margin)
-        return RecoveryOnLanding(StepAndHold.schema.validate(dict(margin=margin)), self.ctx, step, stance, first)
+        return RecoveryOnLanding(StepAndHold.schema.validate(dict(margin=margin)), self.ctx, step, stance,
+                                 measure.outside(margin))
 
     @classmethod
     def assess(cls, trajectory):

@@ -887,7 +887,7 @@ class Vault(Sequence):
         """The staggered stance after the step, with further steps (hold_max_steps) while the capture point
         nears the support's edge (control/recovery_step.py)."""
         return StepAndHold(unprefixed(StepAndHold.schema, "hold_", self.cfg), self.ctx, self.step_params(),
-                           self.staggered().params)
+                           self.stance_params())
 
     def piece_given(self) -> dict:
         """What the step and the staggered stance take from the vault's other settings."""
@@ -899,8 +899,11 @@ class Vault(Sequence):
 
     def staggered(self, bow: tuple[float, float, float] | None = None) -> StaggeredStance:
         """The stance after the step held (control/recovery_step.py), standing up, and with ``bow`` the bow."""
-        return StaggeredStance(unprefixed(StaggeredStance.schema, "hold_", self.cfg, **self.piece_given()),
-                               self.ctx, bow)
+        return StaggeredStance(self.stance_params(), self.ctx, bow)
+
+    def stance_params(self) -> dict:
+        """StaggeredStance's parameters: the vault's hold_ settings."""
+        return unprefixed(StaggeredStance.schema, "hold_", self.cfg, **self.piece_given())
 
     @property
     def run_complete(self) -> bool:
