@@ -162,11 +162,12 @@ def box_target_draw(rng, character: str) -> tuple:
 
 def draw_box_jump(rng, character: str) -> tuple:
     """A box target (box_target_draw) drawn again until it lies in the region the character is
-    offered (region.offered, its measured jumps onto and down from boxes)."""
-    from .skills.jump_to_target.region import offered
+    offered (region.in_region: its measured jumps onto and down from boxes, and its commanded take-off's
+    jumps down from them)."""
+    from .skills.jump_to_target.region import in_region
     for _ in range(REGION_DRAWS // 10):
         x, z, t = box_target_draw(rng, character)
-        if offered(character, (x, 0.0, z), t):
+        if in_region(character, (x, 0.0, z), t):
             return x, z, t
     raise ParameterError(f"no box target of the {character} in {REGION_DRAWS // 10} draws lies in the region offered "
                          f"(python -m sim_core.planning.jump_model --boxes-only)")
@@ -206,13 +207,13 @@ def region_share(character: str, seed: int, draws: int = SHARE_DRAWS) -> float:
 
 def box_region_share(character: str, seed: int, draws: int = SHARE_DRAWS) -> tuple[float, float, float]:
     """The share of issue 29's box targets (box_target_draw, uniform) the character is offered: all,
-    onto boxes, down from them."""
-    from .skills.jump_to_target.region import offered
+    onto boxes, down from them (region.in_region)."""
+    from .skills.jump_to_target.region import in_region
     rng = np.random.default_rng((seed, BOX_STREAM, 1))
     hits = {True: [0, 0], False: [0, 0]}
     for _ in range(draws):
         x, z, t = box_target_draw(rng, character)
-        hits[z > 0][0] += offered(character, (x, 0.0, z), t)
+        hits[z > 0][0] += in_region(character, (x, 0.0, z), t)
         hits[z > 0][1] += 1
     share = lambda a, b: a / b if b else 0.0       # noqa: E731
     return (share(hits[True][0] + hits[False][0], draws), share(*hits[True]), share(*hits[False]))
@@ -379,7 +380,9 @@ def main(argv=None) -> int:
             + (f"Box targets (--boxes) are drawn straight ahead, forward as above, onto a box 0.25-0.75 m high or down "
                f"from one (either equally likely), air time 0.4-0.7 s, and drawn again until they lie in the region "
                f"offered (where one of its measured jumps landed balanced at the measured heights on both sides, "
-               f"{HEIGHT_REACH * 100:.0f} cm apart, within the tolerances interpolated): {box_text} of those targets "
+               f"{HEIGHT_REACH * 100:.0f} cm apart, within the tolerances interpolated; or, down from a box, where its "
+               f"commanded take-off's down_region holds it: the same lift-off on flat ground lands in its commanded "
+               f"region, the woman's; planned as a commanded target): {box_text} of those targets "
                f"({SHARE_DRAWS} uniform draws). " if box_shares else "")
             + ("Commanded targets (--commanded) are drawn uniformly in the commanded region of each character "
                "that has one (sim_core.skills.jump_to_target.commanded's table: the woman's) and drawn again until "

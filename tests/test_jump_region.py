@@ -3,6 +3,9 @@ and judged as the random-requests report draws and judges them (planned from the
 then run); a target outside the region is refused in one line before anything is simulated."""
 from __future__ import annotations
 
+import tempfile
+from pathlib import Path
+
 import pytest
 
 from sim_core.errors import ParameterError
@@ -67,12 +70,13 @@ BOX_TARGETS = 3     # random box targets per character (onto or down from a box)
 @pytest.mark.parametrize("character", ["man", "woman"])
 def test_random_box_targets_in_the_region_land_on_target_balanced(character, tmp_path):
     """Box targets drawn as the report draws them (--boxes: onto a box 0.25-0.75 m high or down from
-    one, straight ahead, inside the region offered) land within the tolerances on the box's height."""
+    one, straight ahead, inside the region offered: the measured jumps' or the commanded take-off's down_region)
+    land within the tolerances on the box's height."""
     from sim_core.random_requests import BOX_HEIGHT
     draws = draw_requests(SEED, [character], 0, 0, 0, BOX_TARGETS)
     assert len(draws) == BOX_TARGETS and all(d.skill == "box" for d in draws)
-    assert all(BOX_HEIGHT[0] <= abs(d.values[1]) <= BOX_HEIGHT[1] and offered(character, (d.values[0], 0.0, d.values[1]),
-                                                                              d.values[2]) for d in draws)
+    assert all(BOX_HEIGHT[0] <= abs(d.values[1]) <= BOX_HEIGHT[1] and in_region(character, (d.values[0], 0.0, d.values[1]),
+                                                                                d.values[2]) for d in draws)
     results = [evaluate(draw, 24, str(tmp_path)) for draw in draws]
     lines = [result_line(r) for r in results]
     assert sum(r["passed"] for r in results) >= BOX_TARGETS - 1, "\n".join(lines)
@@ -146,8 +150,35 @@ def test_a_target_outside_both_regions_is_refused_naming_both(monkeypatch):
     assert "\n" not in text and "outside the region the woman's measured jumps offer" in text
     assert text.endswith("the commanded take-off is offered on flat ground for target_x 0.5-1.25 m, "
                          "target_y -0.02-0.02 m, air_time 0.4-0.52 s, and turned first for a distance of 0.7-1.25 m "
-                         "at a bearing of 0-26 deg to either side, air_time 0.4-0.48 s")
+                         "at a bearing of 0-26 deg to either side, air_time 0.4-0.48 s, and down from a box 0.25-0.75 m "
+                         "high where the same lift-off on flat ground would land in that region in 0.4-0.49 s "
+                         "(T0 = air_time - 2 height / (g air_time), at target_x T0 / air_time)")
     assert "commanded" not in region_refusal("man", (1.0, 0.4), 0.6)        # the man has no commanded region
+
+
+def test_a_random_target_down_from_a_box_is_flown_by_the_commanded_take_off_as_its_plan_was():
+    """Down from a box where the same lift-off on flat ground lands in her commanded region (the table's
+    down_region): drawn as the report draws box targets, planned commanded (the crouch by the flat-ground air
+    time, the landing's recovery step of down_settings) and run as a user's request - the run is the plan's
+    trial (the recovery step read from the plan's settings, not the run's parameters)."""
+    from sim_core.ballistics import flat_air_time
+    from sim_core.skills.jump_to_target.behaviour import read_plans
+    from sim_core.skills.jump_to_target.commanded import commanded_way, flat_equivalent
+    from sim_core.skills.jump_to_target.region import mode
+    assert flat_equivalent((1.2, 0.0, -0.4), 0.6) == pytest.approx((1.2 * flat_air_time(-0.4, 0.6) / 0.6, 0.6 - 0.8 / (9.80665 * 0.6)))
+    assert commanded_way("woman", (1.2, 0.0, -0.4), 0.6) == "down"
+    assert commanded_way("woman", (0.5, 0.0, -0.6), 0.66) is None       # its flat-ground landing 0.37 m: too near
+    assert commanded_way("woman", (1.0, 0.0, 0.3), 0.6) is None         # onto a box: not offered
+    assert commanded_way("man", (1.2, 0.0, -0.4), 0.6) is None          # the man has no commanded table
+    box = next(d for d in draw_requests(SEED, ["woman"], 0, 0, 0, 40)
+               if mode("woman", (d.values[0], 0.0, d.values[1]), d.values[2]) == "commanded")
+    with tempfile.TemporaryDirectory() as store:
+        result = evaluate(box, 24, store)
+        plan, = read_plans("woman", Path(store))
+    assert plan["settings"]["landing_recovery_step"] == 1.0 and plan["settings"]["commanded_takeoff"] == 1.0
+    assert result["passed"], result_line(result)
+    assert result["measured"]["landing"] == plan["measured"]["landing"]
+    assert result["measured"]["outcome"] == plan["measured"]["outcome"] == "success"
 
 
 TURNED_TARGETS = 3          # random targets in the woman's turned commanded region, outside her measured jumps' region

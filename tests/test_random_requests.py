@@ -5,7 +5,7 @@ import re
 import pytest
 
 from sim_core import random_requests
-from sim_core.skills.jump_to_target.region import in_region, offered
+from sim_core.skills.jump_to_target.region import in_region
 from sim_core.random_requests import JUMP_AIR_TIME, JUMP_FORWARD, JUMP_LATERAL, broad_range, draw_requests, leap_height_range
 
 
@@ -78,7 +78,7 @@ def test_box_draws_are_in_range_in_the_region_and_leave_the_other_draws_as_they_
         x, z, t = d.values
         lo, hi = JUMP_FORWARD[d.character]
         assert lo <= x <= hi and BOX_HEIGHT[0] <= abs(z) <= BOX_HEIGHT[1] and JUMP_AIR_TIME[0] <= t <= JUMP_AIR_TIME[1]
-        assert offered(d.character, (x, 0.0, z), t)
+        assert in_region(d.character, (x, 0.0, z), t)
         assert "box" in d.describe()
     every, onto, down = box_region_share("man", 1, 2000)
     assert 0.0 < every < 1.0 and 0.0 < onto and 0.0 < down

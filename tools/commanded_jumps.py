@@ -24,12 +24,13 @@ from types import SimpleNamespace
 import numpy as np
 
 from sim_core.analysis import feet_above_surface
+from sim_core.ballistics import flat_air_time
 from sim_core.control import leap
 from sim_core.planning.commanded import plan_commanded
 from sim_core.planning.jump import JumpTrial, lands_on, within_tolerance
 from sim_core.simulate import RunRequest, run
 from sim_core.skills.jump_to_target.behaviour import GROUND_AIR_TIME, landing_measures, leap_params, read_plans, scene_for
-from sim_core.skills.jump_to_target.commanded import CONSTANTS
+from sim_core.skills.jump_to_target.commanded import CONSTANTS, table as commanded_table
 
 WINDUP = 1.25                       # s: the requests' wind-up time (the report's)
 FORWARD = {"man": 1.9, "woman": 1.6}    # m: issue 29's forward range ends here (from 0.5 m)
@@ -86,6 +87,8 @@ def main(argv=None) -> int:
     parser.add_argument("--character", default="man")
     parser.add_argument("--base", type=float, default=1.3)
     parser.add_argument("--set", action="append", default=[])
+    parser.add_argument("--table", action="store_true",
+                        help="start from the character's commanded table (its settings and crouch pairs) instead of --base's plan")
     parser.add_argument("--const", action="append", default=[])
     parser.add_argument("--sweep", help="first,last,step m of forward targets")
     parser.add_argument("--air-time", type=float, default=GROUND_AIR_TIME)
@@ -94,6 +97,13 @@ def main(argv=None) -> int:
     parser.add_argument("--seed", type=int, default=29)
     parser.add_argument("--forward", help="random targets: low,high m forward (default 0.5 to issue 29's end)")
     parser.add_argument("--air-times", help="random targets: low,high s (default issue 29's 0.4,0.7)")
+    parser.add_argument("--heights", help="random targets: low,high m - each onto a box that high or down from one "
+                                          "(either equally likely; default: flat ground)")
+    parser.add_argument("--flat-air-times", help="random box targets: low,high s - drawn again until the flat-ground air time "
+                                                 "of their lift-off speed (sim_core.ballistics.flat_air_time) lies in it")
+    parser.add_argument("--flat-forward", help="random box targets: low,high m - drawn again until the flat-ground landing "
+                                               "of their lift-off velocity (x flat_air_time / air time) lies in it")
+    parser.add_argument("--down", action="store_true", help="random box targets: down from the boxes only")
     parser.add_argument("--lateral", type=float, default=0.0, help="random targets: target_y within +-this m")
     parser.add_argument("--aim", type=int, default=1,
                         help="random targets: at most this many trials, the commanded target moved by a secant on the "
@@ -114,7 +124,11 @@ def main(argv=None) -> int:
         import sim_core.skills.leap.behaviour as leap_skill
         own = leap_skill.leap_constants
         leap_skill.leap_constants = lambda character: SimpleNamespace(**{**vars(own(character)), **overrides})
-    settings = base_settings(args.character, args.base, args.set)
+    stored = commanded_table(args.character) if args.table else None
+    if args.table and stored is None:
+        parser.error(f"the {args.character} has no commanded table (jump_commanded_{args.character}.json)")
+    settings = (dict(stored["settings"], commanded_takeoff=1.0, **{n: float(v) for n, v in (i.split("=") for i in args.set)})
+                if stored else base_settings(args.character, args.base, args.set))
     started = time.time()
     if args.sweep:
         first, last, step = (float(v) for v in args.sweep.split(","))
@@ -138,18 +152,28 @@ def main(argv=None) -> int:
         rng = np.random.default_rng(args.seed)
         forward = tuple(float(v) for v in args.forward.split(",")) if args.forward else (0.5, FORWARD[args.character])
         air_times = tuple(float(v) for v in args.air_times.split(",")) if args.air_times else AIR_TIMES
-        draws = [(float(rng.uniform(*forward)),
-                  float(rng.uniform(*air_times)) if args.fixed_air_time is None else args.fixed_air_time,
-                  float(rng.uniform(-args.lateral, args.lateral)) if args.lateral else 0.0)
-                 for _ in range(args.random)]
+        heights = tuple(float(v) for v in args.heights.split(",")) if args.heights else None
+        flat = tuple(float(v) for v in args.flat_air_times.split(",")) if args.flat_air_times else None
+        flat_forward = tuple(float(v) for v in args.flat_forward.split(",")) if args.flat_forward else None
+        draws = []
+        while len(draws) < args.random:
+            draw = (float(rng.uniform(*forward)),
+                    float(rng.uniform(*air_times)) if args.fixed_air_time is None else args.fixed_air_time,
+                    float(rng.uniform(-args.lateral, args.lateral)) if args.lateral else 0.0,
+                    float((-1.0 if args.down else rng.choice((-1.0, 1.0))) * rng.uniform(*heights)) if heights else 0.0)
+            flat_time = flat_air_time(draw[3], draw[1])
+            if ((flat is None or flat[0] <= flat_time <= flat[1])
+                    and (flat_forward is None or flat_forward[0] <= draw[0] * flat_time / draw[1] <= flat_forward[1])):
+                draws.append(draw)
         # the skill's planner (planning/commanded.py) with these settings and crouch pairs as its table, and
         # --aim / --plan-landing as its bounds
-        body = {"settings": settings, "crouch_by_air_time": crouch_pairs(args.crouch_by_air_time, settings)}
+        body = {"settings": settings, "crouch_by_air_time": (stored["crouch_by_air_time"] if stored and not args.crouch_by_air_time
+                                                             else crouch_pairs(args.crouch_by_air_time, settings))}
         constants = SimpleNamespace(**{**vars(CONSTANTS), "aim_trials": args.aim,
                                        "landing_trials": max(args.plan_landing, 1)})
         errors, late, hits, balanced, hits_balanced, planned, trials, stepped = [], [], 0, 0, 0, 0, [], 0
-        for x, air_time, y in draws:
-            target = (x, y, 0.0, 0.0)
+        for x, air_time, y, z in draws:
+            target = (x, y, z, 0.0)
             judge = lambda m, target=target, air_time=air_time: (lands_on(m, target, air_time),      # noqa: E731
                                                                  within_tolerance(m, target, air_time))
             plan = plan_commanded(args.character, target, air_time, JumpTrial(args.character, target, air_time, WINDUP, "human"),
@@ -157,7 +181,7 @@ def main(argv=None) -> int:
             measured = plan["measured"]
             trials.append(plan["trials"])
             planned += plan["settings"]["foot_delta"] != settings["foot_delta"]
-            print(describe(x, air_time, measured, None, None, y)
+            print(describe(x, air_time, measured, None, None, y) + (f" ({'onto' if z > 0 else 'down from'} a {abs(z):.3f} m box)" if z else "")
                   + f"; {plan['trials']} trials, aimed at {plan['settings']['flight_target_x']:.2f} m, foot_delta "
                     f"{plan['settings']['foot_delta']:+.4f} m")
             errors.append(math.hypot(measured["landing"][0] - x, measured["landing"][1] - y))
@@ -168,7 +192,8 @@ def main(argv=None) -> int:
             stepped += plan["found"] and "recovery_step_time" in measured
         times = f"{air_times[0]:g}-{air_times[1]:g}" if args.fixed_air_time is None else f"{args.fixed_air_time:g}"
         print(f"random {args.character} seed {args.seed} ({args.random} forward targets {forward[0]:g}-{forward[1]:g} m"
-              f"{f' within +-{args.lateral:g} m' if args.lateral else ''}, "
+              f"{f' within +-{args.lateral:g} m' if args.lateral else ''}"
+              f"{f', onto or down from boxes {heights[0]:g}-{heights[1]:g} m' if heights else ''}, "
               f"air time {times} s): landing error median {np.median(errors) * 100:.1f} cm (max "
               f"{max(errors) * 100:.1f}); air time error median {np.median(np.abs(late)):.3f} s ({min(late):+.3f} .. "
               f"{max(late):+.3f}); within 5 cm and 0.05 s: {hits}, {hits_balanced} of them balanced ({stepped} after a "

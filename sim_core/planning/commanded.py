@@ -6,7 +6,9 @@ and nearby targets are nearby commands (docs/jump_to_target.md, "A commanded tak
 a few simulated jumps, not a search over the leap's settings:
 
 1. the aim: the table's settings with the crouch interpolated at the air time (``crouch_by_air_time``)
-   and the commanded landing point (``flight_target_x``) at the target; after each jump the commanded
+   (on a box's top or below one at the flat-ground air time of the same vertical lift-off speed,
+   ballistics.flat_air_time) and the commanded landing point (``flight_target_x``) at the target; after
+   each jump the commanded
    point is moved by a secant on where it landed (the previous two jumps' landing per commanded metre;
    below ``aim_slope_floor`` the table's ``aim_slope`` instead) and the crouch's air time by a secant on
    the air time flown (the first step as flown), until a jump lands within ``aim_tolerance`` and
@@ -33,6 +35,7 @@ from __future__ import annotations
 import math
 from typing import Callable
 
+from ..ballistics import flat_air_time
 from ..character.spec import load_character
 from ..control.leap import LEAP_SETTINGS
 from ..skills.jump_to_target.commanded import (CONSTANTS, commanded_settings, commanded_way, table, turn_for_heading,
@@ -67,9 +70,10 @@ def plan_commanded(character: str, target, air_time: float, trial, budget: int, 
     trials = Trials(trial, bound, progress, cancelled)
     tried, run_trial = trials.tried, trials.run
 
-    aims, landed, air_aims, flown = [x], [], [float(air_time)], []
+    # the crouch is measured on flat ground: onto or down from a box it is the one of the same lift-off speed up
+    aims, landed, air_aims, flown = [x], [], [flat_air_time(float(target[2]), float(air_time))], []
     while True:
-        measured = run_trial(commanded_settings(body, air_aims[-1], aims[-1]))
+        measured = run_trial(commanded_settings(body, air_aims[-1], aims[-1], float(target[2])))
         landed.append(measured["landing"][0])
         flown.append(measured["air_time"])
         miss, late = landed[-1] - x, flown[-1] - air_time

@@ -837,6 +837,35 @@ in the map (gaps up to 5 deg) and the forward jump after them was not measured; 
 table (above). Next: the map for the man's hop when his commanded landing stands; a second map row per
 stance for the near wide targets; the hop's own landing at large turns (the spin left at touchdown).
 
+**Down from a box with the commanded take-off, seventeenth session: the woman's box targets 4.3 % -> 12.7 %.**
+The commanded take-off flies a commanded flight to any landing height (control/commanded_thrust.py: the lift-off
+velocity up is (z_td - z) / T + g T / 2), but the crouch sets the vertical speed it can give, and her crouch pairs
+were measured on flat ground (`crouch_by_air_time`, 0.37-0.49 s). A jump of air time T down from a box h high leaves
+at the vertical speed that on flat ground flies T0 = T - 2 h / (g T) (`sim_core.ballistics.flat_air_time`) and at
+x / T forward, which on flat ground lands x T0 / T ahead (`commanded.flat_equivalent`). So the plan chooses the
+crouch by T0 (planning/commanded.py; on flat ground T0 = T, every flat plan as before), and a target down from a
+box is offered where its flat equivalent lies in her commanded region with T0 inside the crouch pairs (the table's
+`down_region`: heights 0.25-0.75 m, T0 0.4-0.49 s); the drop lands harder, so those plans take the landing's
+recovery step (`down_settings`). Measured with `tools/commanded_jumps.py --character woman --table --random N
+--seed S --heights 0.25,0.75 --down [--flat-air-times lo,hi] [--flat-forward lo,hi] --aim 5 --plan-landing 9`
+(new options; `--table` starts from her commanded table):
+- seed 6, 12 targets 0.5-1.6 m with T0 0.37-0.5 s: 11 hit, 8 of them balanced; with `--set
+  landing_recovery_step=1` 10 hit, 8 balanced - every miss a flat-ground landing nearer than 0.5 m (0.37-0.39 m:
+  slower forward than her commanded take-off leaves);
+- seed 8, 20 targets with flat-ground landings 0.5-1.25 m, T0 0.4-0.52 s, the step: 17 hit and balanced (13 after a
+  step); the two misses at T0 0.516 and 0.517 s (beyond the crouch pairs' 0.49 s: air time 0.059 s short, and a plan
+  that did not fly), so `down_region` ends at T0 0.49 s.
+Found on the way and fixed: a stored plan naming the recovery step ran without it. The leap read
+`landing_recovery_step` from the run's parameters, which a jump to a target does not have (its landing settings
+come from the plan), so the planner's trial stepped and stood while the user's run of the same plan fell (seed 61:
+11 / 20 before the fix); the leap now reads it as it reads the landing's other settings, the plan's over the
+run's (no stored plan named it before: every other plan runs as before).
+As a user's requests run (`python -m sim_core report random --seed 61 --jumps 0 --leaps 0 --broad 0 --boxes 20
+--characters woman --budget 24 --workers 1`): **19 / 20 box targets (95 %)** within 5 cm and 0.05 s and balanced,
+a median of 1.8 s to a result, worst 10.7 s; the box region offered 12.7 % of issue 29's box targets (onto 2.4 %,
+down 6.1 % -> 23.0 %). Onto a box is not offered this way: it needs T0 = T + 2 h / (g T) >= 0.53 s, beyond her
+deepest crouch (0.45 m; deeper takes the pelvis below half its standing height, a fall by TARGETS.md).
+
 ![commanded vs achieved landing point](jump_to_target.png)
 
 ![the man's 1.3 m jump to a target, 1.0-2.1 s: crouch, thrust, flight, landing, standing up](jump_to_target_filmstrip.png)

@@ -21,7 +21,13 @@ flights land pitched forward and fall, docs/jump_to_target.md) holds:
   first (one hop, the leap's ``turn_angle``, control/turn.py) and then the commanded take-off forward
   along the new heading (``distance`` from the start's feet m, ``bearing`` |atan2(y, x)| rad, ``air_time``
   s, each [low, high]; the commanded flight itself lands on its heading's line, it does not steer sideways);
-  a request in it beyond ``region``'s target_y is planned so (planning/commanded.py plan_turned).
+  a request in it beyond ``region``'s target_y is planned so (planning/commanded.py plan_turned);
+- ``down_region`` (optional, with ``down_settings``): a jump straight ahead down from a box ``height`` m high
+  ([low, high]) is flown by the same take-off where the flight of its lift-off velocity on flat ground lands in
+  ``region`` with an air time in ``flat_air_time`` ([low, high] s) (flat_equivalent: the vertical speed's air
+  time on flat ground, ballistics.flat_air_time, and the forward speed over it; the crouch is chosen by that
+  air time); ``down_settings`` replace the table's settings for it (the landing's recovery step: the drop
+  lands harder).
 
 ``jump_commanded_any.json`` holds the planner's constants (the aim's bound and tolerances, the
 landing plan's bound). The leap's ``commanded_*`` constants are the character's own in its leap
@@ -33,6 +39,7 @@ import math
 
 import numpy as np
 
+from ...ballistics import flat_air_time
 from ...control.leap import LEAP_SETTINGS
 from ...schema import Schema
 from ...tuned import TableType, load_fresh, register as register_table
@@ -64,6 +71,8 @@ CONSTANTS = read_constants("jump_commanded", COMMANDED_CONSTANTS)
 def _rows(body: dict):
     if "settings" in body:
         yield "settings", body["settings"]
+    if "down_settings" in body:
+        yield "down_settings", body["down_settings"]
     for k, height in enumerate(body.get("crouch_by_air_time", {}).get("crouch_height", [])):
         yield f"crouch_by_air_time {k}", {"crouch_height": height}
     for k, angle in enumerate(body.get("turn_headings", {}).get("turn_angle", [])):
@@ -84,13 +93,23 @@ def turn_for_heading(body: dict, heading: float, avoid=()) -> float:
     return float(pairs["turn_angle"][k])
 
 
-def commanded_settings(body: dict, air_time: float, aim: float) -> dict:
-    """The settings of a commanded jump aimed at ``aim`` m forward with the crouch of ``air_time`` s:
-    the table's ``settings`` with the commanded take-off on, ``flight_target_x`` the aim and the crouch
-    height interpolated in ``crouch_by_air_time`` (held beyond its ends)."""
+def commanded_settings(body: dict, air_time: float, aim: float, height: float = 0.0) -> dict:
+    """The settings of a commanded jump aimed at ``aim`` m forward with the crouch of ``air_time`` s
+    (its flat-ground air time): the table's ``settings`` (down a box, ``height`` < 0, with its
+    ``down_settings``) with the commanded take-off on, ``flight_target_x`` the aim and the crouch height
+    interpolated in ``crouch_by_air_time`` (held beyond its ends)."""
     pairs = body["crouch_by_air_time"]
-    return {**body["settings"], "commanded_takeoff": 1.0, "flight_target_x": float(aim),
+    return {**body["settings"], **(body.get("down_settings", {}) if height < 0.0 else {}), "commanded_takeoff": 1.0,
+            "flight_target_x": float(aim),
             "crouch_height": float(np.interp(air_time, pairs["air_time"], pairs["crouch_height"]))}
+
+
+def flat_equivalent(target, air_time: float) -> tuple[float, float]:
+    """The flat-ground flight of a jump's lift-off velocity: a target ``target`` (x, y, z) reached in
+    ``air_time`` s leaves at x / T forward and at the vertical speed that lands z m higher (ballistics);
+    on flat ground that flies flat_air_time and lands x flat_air_time / T ahead. As (x, air time)."""
+    flat_time = flat_air_time(float(target[2]), float(air_time))
+    return float(target[0]) * flat_time / float(air_time), flat_time
 
 
 def turned_settings(body: dict, air_time: float, aim: float, bearing: float, turn: float) -> dict:
@@ -110,17 +129,28 @@ def table(character: str) -> dict | None:
 
 
 def commanded_way(character: str, target, air_time: float) -> str | None:
-    """How the commanded take-off flies the request (x, y[, z], air time) on flat ground: "straight"
+    """How the commanded take-off flies the request (x, y[, z], air time): on flat ground "straight"
     inside the table's ``region`` (bounds included), "turned" inside its ``turned_region`` beyond it
-    (a turn first, then forward), None outside both."""
+    (a turn first, then forward); down from a box (z < 0) "down" where its ``down_region`` holds the
+    height and the flight's flat equivalent lies in ``region``; else None."""
     body = table(character)
-    if body is None or (len(target) > 2 and float(target[2])):
+    z = float(target[2]) if len(target) > 2 else 0.0
+    if body is None or z > 0.0:
         return None
     region = body["region"]
     x, y = float(target[0]), float(target[1])
+    if z < 0.0:
+        down = body.get("down_region")
+        if down is None or not down["height"][0] <= -z <= down["height"][1]:
+            return None
+        x, air_time = flat_equivalent((x, y, z), air_time)
+        if not down["flat_air_time"][0] <= air_time <= down["flat_air_time"][1]:
+            return None
     values = {"target_x": x, "target_y": y, "air_time": float(air_time)}
     if all(region[k][0] <= v <= region[k][1] for k, v in values.items()):
-        return "straight"
+        return "straight" if z == 0.0 else "down"
+    if z < 0.0:
+        return None
     turned = body.get("turned_region")
     if turned is None or region["target_y"][0] <= y <= region["target_y"][1]:
         return None
@@ -145,4 +175,9 @@ def commanded_limit(character: str) -> str | None:
         limit += (f", and turned first for a distance of {turned['distance'][0]:g}-{turned['distance'][1]:g} m at a "
                   f"bearing of {math.degrees(turned['bearing'][0]):.0f}-{math.degrees(turned['bearing'][1]):.0f} deg "
                   f"to either side, air_time {turned['air_time'][0]:g}-{turned['air_time'][1]:g} s")
+    down = body.get("down_region")
+    if down:
+        limit += (f", and down from a box {down['height'][0]:g}-{down['height'][1]:g} m high where the same lift-off "
+                  f"on flat ground would land in that region in {down['flat_air_time'][0]:g}-{down['flat_air_time'][1]:g} s "
+                  f"(T0 = air_time - 2 height / (g air_time), at target_x T0 / air_time)")
     return limit

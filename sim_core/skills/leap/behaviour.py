@@ -239,7 +239,9 @@ class Leap(Sequence):
             landing["fast_knee_flexion"] = landing["knee_flexion"]     # calibrated with one knee bend
             return Landing(Landing.schema.validate(dict(foot_delta=delta, **landing)), ctx)
 
-        recovery = p.get("landing_recovery_step", 0.0) > 0.5
+        # the recovery step's settings, like the landing's: the plan's (jump_to_target) over the run's (the leap)
+        recovery = cfg.get("landing_recovery_step", p.get("landing_recovery_step", 0.0)) > 0.5
+        margin = cfg.get("landing_step_margin", p.get("landing_step_margin", LANDING_STEP_MARGIN.default))
         if recovery:
             stance = StanceMeasure(ctx, StaggeredStance.schema.defaults()["min_height"])
 
@@ -247,11 +249,11 @@ class Leap(Sequence):
             # with the recovery step the landing also ends, once the feet are down and the COM has stopped
             # falling (the impact taken), when the capture point leaves what the feet hold: the step
             return b.finished or (recovery and b.stage != "flight" and float(ctx.data.subtree_linvel[b.pelvis][2]) >= 0.0
-                                  and bool(stance.outside(p["landing_step_margin"])))
+                                  and bool(stance.outside(margin)))
 
         def stand(t):
             if recovery:
-                return self.recovery(stance, p["landing_step_margin"])
+                return self.recovery(stance, margin)
             return balance_after_landing(ctx, self.previous)
 
         return turn_steps(ctx, cfg.get("turn_first", 0.0), self, cfg.get("turn_angle", 0.0)) + [
