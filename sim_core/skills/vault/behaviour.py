@@ -148,6 +148,9 @@ VAULT_SETTINGS = Schema(
             "hip flexion (-) the second flight starts in; it opens to the layout once the rotation the laid-out body "
             "will still make before the touchdown covers what is left (0: a layout throughout)"),
     setting("second_open_time", "s", 0.02, 0.5, "... the second flight's pike opens in this time"),
+    setting("second_knee", "rad", 0.0, 1.5,
+            "... the knees bend this far with the pike and stay bent as it opens, so the legs arrive soft at the mat "
+            "(0: straight in the second flight)"),
     setting("touchdown_lean", "rad", -1.0, 1.5,
             "... what is left: the whole body turned to this short of upright when the feet reach the mat"),
     setting("touchdown_com", "m", 0.3, 1.5, "the COM's height above the mat when the feet reach it (for the time left)"),
@@ -156,6 +159,10 @@ VAULT_SETTINGS = Schema(
     setting("landing_lean", "rad", 0.0, 2.0, "the landing's leg placement starts this far short of the upright"),
     setting("open_height", "m", 0.5, 2.0, "... or once the COM is this high above the mat, whichever is first"),
     setting("landing_knee_flexion", "rad", 0.0, 1.5, "knee bend held for the touchdown on the mat"),
+    setting("landing_sideways", "bool", 0.0, 1.0,
+            "landing: 1 = the hips place the feet sideways about the COM, each its hip's width from it (the leap's "
+            "place_sideways: a trunk leaning sideways does not leave the COM over one foot); 0 = the legs straight "
+            "down from the pelvis"),
     setting("foot_delta", "m", -0.3, 0.3, "landing: foot servo delta (the landing's placement ahead of the capture point)"),
     setting("landing_foot_lead_time", "s", 0.0, 0.6, "landing: the feet land this many seconds of COM travel ahead"),
     setting("spin_placement", "s/m", 0.0, 0.5, "landing: feet placed this factor x (angular momentum / mass) against the spin"),
@@ -185,6 +192,10 @@ VAULT_SETTINGS = Schema(
     setting("absorb_max", "s", 0.05, 3.0, "... or this long after the touchdown"),
     setting("rise_time", "s", 0.1, 5.0, "after the landing the knees straighten in this time before the balance"),
     setting("rise_knee", "rad", 0.0, 1.5, "... to this knee bend"),
+    setting("rise_from_target", "bool", 0.0, 1.0,
+            "1 = the rise's knees start from the absorb's knee targets (the servo's error that held her in the crouch is "
+            "kept through the hand-over); 0 = from the measured knees (the holding torque drops to nothing as the rise "
+            "starts)"),
     setting("stand_time", "s", 0.2, 5.0, "the balance stands up from the landed crouch in this time"),
     setting("stand_com_offset", "m", -0.25, 0.25, "... with the COM this far ahead (+) of the feet's middle"),
     setting("landing_blend", "s", 0.0, 0.3, "landing: the joint targets blend in from the layout over this time"),
@@ -434,6 +445,7 @@ class MatAbsorb(Behaviour):
         capture, speed = self.capture_point(ahead, speed)
         trunk_error = self.pelvis_lean() - (self.trunk_lean(t) - c["absorb_trunk_kp"] * capture)
         self.knee_base(t, targets)
+        self.knee_targets = targets[self.knees].copy()
         left, left_speed = self.com_from_feet(1)
         sideways = c["absorb_side_kp"] * left + c["absorb_side_kv"] * left_speed
         self.feet_and_hips(targets, angles, ankle, sideways, trunk_error)
@@ -488,10 +500,15 @@ class MatRise(MatAbsorb):
     then the balance controller takes over near its standing height. (The balance standing up from
     the deep landed crouch itself, with the ankles at their dorsiflexion limit, let the COM drift.)"""
 
+    def __init__(self, ctx: ControlContext, cfg: dict, landing: Landing, absorb: MatAbsorb | None = None):
+        super().__init__(ctx, cfg, landing)
+        self.absorb = absorb
+
     def start(self, t: float) -> None:
         super().start(t)
         s = self.ctx.servos
-        self.knees_from = s.angles()[self.knees].copy()
+        held = self.cfg["rise_from_target"] and getattr(self.absorb, "knee_targets", None) is not None
+        self.knees_from = (self.absorb.knee_targets if held else s.angles()[self.knees]).copy()
         self.lean_from = float(self.pelvis_lean())
 
     def share(self, t: float) -> float:
@@ -832,7 +849,8 @@ class Vault(Sequence):
             return MatLanding(Landing.schema.validate(dict(
                 knee_flexion=c["landing_knee_flexion"], fast_knee_flexion=c["landing_knee_flexion"],
                 foot_delta=c["foot_delta"], foot_lead_time=c["landing_foot_lead_time"],
-                spin_placement=c["spin_placement"], blend_time=c["landing_blend"])), ctx, c)
+                spin_placement=c["spin_placement"], blend_time=c["landing_blend"],
+                place_sideways=c["landing_sideways"])), ctx, c)
 
         def hurdle(t):
             swing = both_sides({"shoulder_*_z": c["board_arm"]}) if c["hurdle_swing"] > 0 else {}
@@ -849,7 +867,8 @@ class Vault(Sequence):
             Step("absorb", lambda t: (MatCatch if c["catch"] else MatAbsorb)(ctx, c, self.previous),
                  lambda b, t: b.finished or t - b.t0 > c["absorb_max"] or self.must_step(b, t)),
             Step("rise", lambda t: self.recovery_step() if self.stepping else
-                 (MatCatchRise if c["catch"] else MatRise)(ctx, c, self.previous.landing),
+                 MatCatchRise(ctx, c, self.previous.landing) if c["catch"] else
+                 MatRise(ctx, c, self.previous.landing, self.previous),
                  lambda b, t: b.finished),
             Step("balance", lambda t: self.step_and_hold() if self.stepping else self.stand_up(),
                  lambda b, t: (b.risen(t) and t - b.t_stance >= c["hold_rise_time"] + CONSTANTS.stand_settle)
@@ -1033,6 +1052,8 @@ class Vault(Sequence):
             # the layout it opens to: the straight body with the arms overhead, as she leaves the horse
             self.layout_inertia = float(inertia_about_com(self.ctx.model, d, self.ctx.actor)[1, 1])
             s.move_to(s.indices(["hip_r_y", "hip_l_y"]), np.array([c["second_pike"]] * 2), c["second_open_time"], t)
+            if c["second_knee"]:
+                s.move_to(s.indices(["knee_r_y", "knee_l_y"]), np.array([c["second_knee"]] * 2), c["second_open_time"], t)
         remaining = 2 * math.pi - c["touchdown_lean"] - self.rotation.whole_body
         rate_open = float(d.subtree_angmom[root][1]) / self.layout_inertia
         time_left = time_to_fall_to(float(d.subtree_com[root][2]), float(d.subtree_linvel[root][2]),
