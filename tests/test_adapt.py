@@ -141,7 +141,8 @@ def test_the_scaled_running_table_is_passed_as_the_run_s_table(man, woman):
     assert speeds[0] == pytest.approx(2.5 * math.sqrt(CharacterPair(man, character).length), rel=1e-3)
     assert params["speed"] < 3.5 and character.dofs[0].kp != man.dofs[0].kp
     unscaled, params0, _ = controller_for("running", man, body, "unscaled")
-    assert params0 == {"table": SpeedTable.load("man").to_table()}       # the man's own table, as it is
+    # the man's own table, as it is, and the experiment's request (the swing yields while accelerating)
+    assert params0 == {"swing_yields": 1.0, "table": SpeedTable.load("man").to_table()}
     assert [d.kp for d in unscaled.dofs] == [d.kp for d in man.dofs]
     # Fig. 6's time step and control period: x L^1/2 in the scaled columns, the man's unscaled
     assert character.time_scale == pytest.approx(math.sqrt(CharacterPair(man, character).length), rel=1e-12)
@@ -150,13 +151,32 @@ def test_the_scaled_running_table_is_passed_as_the_run_s_table(man, woman):
 
 
 def test_running_at_50_percent_keeps_the_seeds_ordering():
-    """S5 at 50 %: the man's unscaled controller falls (5.55 s since his start keeps the hip's damping,
-    docs/bodies.md); scaled ones run longer, mass-scaled longest (8 s cap: three short runs)."""
+    """S5 at 50 %: the man's unscaled controller falls (6.77 s since his start keeps the hip's damping and
+    the swing yields to the stance hip, docs/bodies.md); scaled ones run longer, mass-scaled longest (8 s cap:
+    three short runs)."""
     trials = experiment("running", fractions=(0.5,), cap=8.0)
     times = {t.controller: t.time_before_falling for t in trials}
     print("\n50 % man -> woman, running:", times)
     assert [t.controller for t in trials] == list(CONTROLLERS)
     assert times["unscaled"] < 7.0 and ordering_holds(trials) == {0.5: True}
+
+
+def test_at_70_percent_the_swing_yields_and_the_mass_scaled_body_runs_through_its_acceleration():
+    """The experiment's controller has the swing yield to the stance hip while accelerating (swing_yields 1;
+    docs/bodies.md, 2026-12-06): the 70 % body's mass-scaled run from a stand, which collapsed at 3.29 s with
+    its stance hip at the torque limit, runs on (8 s here, 100 s measured); without it, it falls as before.
+    A run with it replays bit for bit."""
+    from sim_core.adapt.experiment import time_before_falling
+    from sim_core.simulate import RunRequest, largest_difference, replay, run
+    man = load_character("man")
+    character, params, _ = controller_for("running", man, between(man, load_character("woman"), 0.7), "mass")
+    assert params["swing_yields"] == 1.0
+    seconds, fell = time_before_falling("running", character, params, 8.0)
+    assert not fell, f"fell at {seconds:.2f} s"
+    seconds, fell = time_before_falling("running", character, {**params, "swing_yields": 0.0}, 8.0)
+    assert fell and seconds < 4.0, f"without the yield: {seconds:.2f} s"
+    trajectory = run(RunRequest("running", character, params=params, duration=3.0))
+    assert largest_difference(trajectory, replay(trajectory)) == 0.0
 
 
 def test_bad_experiment_input_is_refused():

@@ -42,7 +42,7 @@ BEGIN, END = "<!-- scaling:begin -->", "<!-- scaling:end -->"
 # (tests/addon's), running at its default speed
 REQUESTS = {
     "balance": {"pelvis_height": 0.52, "move_start": 0.3, "move_time": 1.2, "hold_time": 0.5},
-    "running": {},
+    "running": {"swing_yields": 1.0},
 }
 MODE_OF = {"geometric": GEOMETRIC, "mass": MASS}
 

@@ -285,6 +285,9 @@ SETTING_RANGES = Schema(
     constant("hip_yaw_limit", "rad", 0.0, 3.14, "the stance hip's yaw goal is at most this"),
     constant("hip_yaw_headroom", "1", 0.0, 10.0, "share of the rotation axis's torque limit the roll is reduced to keep within"),
     constant("accel_margin", "m/s", 0.0, 5.0, "the speed command is at most this above the current speed"),
+    constant("swing_yields", "1", 0.0, 1.0, "while accelerating (the speed command below the request), the idle hip's pitch "
+             "torque in a stance is held within this share of what the stance hip's torque limit leaves after the "
+             "attitude (0: off; 1: the attitude has priority over the swing)"),
     constant("table_lead", "1", 0.0, 10.0, "the table is looked up this share of the way from the current speed to the ramped command"),
     constant("turn_rate_per_speed", "1/m", 0.0, 5.0, "rad/s of heading change per m/s of speed"),
     constant("heading_gain", "1/s", 0.0, 20.0, "heading rate per radian of heading error"),
@@ -527,6 +530,7 @@ class Running(Behaviour):
         self.kp0 = s.default_kp.copy()
         self.kv0 = s.default_kv.copy()
         self.ratio = (s.default_kv / s.default_kp).tolist()
+        self.torque_limit = m.actuator_forcerange[s.actuators, 1].tolist()
         self.table = (SpeedTable.from_table(params["table"]) if "table" in params else SpeedTable.load(ch.name))
         self.scheduled = [n for n in self.table.values if params.get(n, TUNED) == TUNED]
         defaults = RUNNING_SETTINGS.defaults()
@@ -649,6 +653,7 @@ class Running(Behaviour):
         self.lateral_drift = 0.0
         self.turn_rate = 0.0                 # heading rate, low-passed (for the lean and the outward step)
         self.heading_rate = 0.0              # rad/s: rate of the heading goal (smooth: limited acceleration)
+        self.idle_bound = 0.0                # N m: the idle hip's pitch torque allowed in this stance (swing_yields)
         d = self.ctx.data
         vx, vy, _ = d.subtree_linvel[self.pelvis].tolist()
         if math.hypot(vx, vy) > c.flying_start_speed:
@@ -884,6 +889,12 @@ class Running(Behaviour):
             by = -by - (ia[0][1] * fi[0] + ia[1][1] * fi[1] + ia[2][1] * fi[2])
             bz = -bz - (ia[0][2] * fi[0] + ia[1][2] * fi[1] + ia[2][2] * fi[2])
             taus = _solve3(sa[0], sa[1], sa[2], bx, by, bz)
+            if c.swing_yields > 0:
+                # the attitude's own share of the stance hip's pitch torque (without the idle hip's
+                # reaction): what its torque limit leaves is all the idle hip may use (below)
+                attitude = _solve3(sa[0], sa[1], sa[2], -(t_roll * m[0] + t_pitch * m[1]), -(t_roll * m[3] + t_pitch * m[4]),
+                                   -(t_roll * m[6] + t_pitch * m[7] + t_yaw))
+                self.idle_bound = c.swing_yields * max(0.0, self.torque_limit[ja["hy"]] - abs(share * attitude[0]))
             if p["yaw_first"] > 0:
                 taus = self._yaw_first(taus, sa, m, bx, by, bz, share, ja, p["yaw_first"])
             for key, tau in zip(("hy", "hx", "hz"), taus):
@@ -950,6 +961,13 @@ class Running(Behaviour):
             v_ = (targets[ji["hy"]] - previous[ji["hy"]]) * rate
             v_ = c.ff_max if v_ > c.ff_max else -c.ff_max if v_ < -c.ff_max else v_
             command[ji["hy"]] -= c.start_hip_damping * kv[ji["hy"]] / kp[ji["hy"]] * v_
+        if c.swing_yields > 0 and state not in (START, FLIGHT) and speed_cmd < p["speed"]:
+            # the swing yields to the attitude: the idle hip's pitch torque (kp (command - q) - kv qdot)
+            # is held within what the stance hip has left, so cancelling it cannot saturate the stance hip
+            j_ = ji["hy"]
+            tau = kp[j_] * (command[j_] - q[j_]) - kv[j_] * qd[j_]
+            if abs(tau) > self.idle_bound:
+                command[j_] = q[j_] + (math.copysign(self.idle_bound, tau) + kv[j_] * qd[j_]) / kp[j_]
         self.previous_goal = {j_: targets[j_] for j_ in tracked}
         servos.hold(np.array(command), t)
 
