@@ -156,6 +156,11 @@ VAULT_SETTINGS = Schema(
     setting("touchdown_com", "m", 0.3, 1.5, "the COM's height above the mat when the feet reach it (for the time left)"),
     setting("feet_apart", "rad", 0.0, 0.3,
             "hip abduction of each leg in the second flight, until the landing places the legs (the feet a little apart)"),
+    setting("flight_feet_centre", "rad/m", 0.0, 20.0,
+            "second flight: from the horse liftoff until the landing places the legs, both hips' abduction servos the "
+            "feet's middle under the COM across the pelvis (each hip's target its measured angle plus this gain x the "
+            "COM's sideways distance from the feet's middle; feet_apart, the same angle on both hips, carries both "
+            "feet to her left); 0 = off, the hips held at feet_apart"),
     setting("landing_lean", "rad", 0.0, 2.0, "the landing's leg placement starts this far short of the upright"),
     setting("open_height", "m", 0.5, 2.0, "... or once the COM is this high above the mat, whichever is first"),
     setting("landing_knee_flexion", "rad", 0.0, 1.5, "knee bend held for the touchdown on the mat"),
@@ -774,6 +779,10 @@ class Vault(Sequence):
         self.pelvis, self.chest = body("PELVIS"), body("CHEST1")
         self.shoulders = [body("UARMR"), body("UARML")]
         self.forearms = [body("LARMR"), body("LARML")]
+        self.feet = [body("FOOTR"), body("FOOTL")]
+        hips_x = ["hip_r_x", "hip_l_x"]
+        self.hips_x = ctx.servos.indices(hips_x)
+        self.hip_x_range = m.jnt_range[[ctx.actor.joint_id(name) for name in hips_x]]
         wrists = [f"wrist_{side}_{axis}" for side in "rl" for axis in "xy"]
         self.wrist_range = m.jnt_range[[ctx.actor.joint_id(name) for name in wrists]]
         self.wrist_servos = ctx.servos.indices(wrists)
@@ -1038,6 +1047,8 @@ class Vault(Sequence):
         half the difference over the opening) covers what is left to turn to touchdown_lean short
         of upright - as the somersault's tuck opens (skills/somersault). An over-rotating vault
         opens at once."""
+        if self.cfg["flight_feet_centre"]:
+            self.centre_feet(t)
         if self.second_opened:
             return
         c, d = self.cfg, self.ctx.data
@@ -1064,6 +1075,19 @@ class Vault(Sequence):
         self.second_opened = True
         self.event(t, "second_open")
         s.move_to(s.indices(["hip_r_y", "hip_l_y"]), np.zeros(2), c["second_open_time"], t)
+
+    def centre_feet(self, t: float) -> None:
+        """flight_feet_centre: both hips' abduction (positive swings a foot to her left, on either side) moves
+        the feet's middle under the COM across the pelvis - each target the measured angle plus the gain x the
+        COM's sideways distance from the feet's middle, so the servo's torque is proportional to it."""
+        d, s = self.ctx.data, self.ctx.servos
+        across = d.xmat[self.pelvis].reshape(3, 3)[:, 1]          # the pelvis's left, in the world
+        feet = 0.5 * (d.xpos[self.feet[0]] + d.xpos[self.feet[1]])
+        off = float(np.dot(d.subtree_com[self.ctx.actor.root] - feet, across))
+        i = self.hips_x
+        s.start[i] = s.goal[i] = np.clip(s.angles()[i] + self.cfg["flight_feet_centre"] * off,
+                                         self.hip_x_range[:, 0], self.hip_x_range[:, 1])
+        s.t0[i] = t
 
     def update(self, t: float) -> None:
         self.rotation.update(t)
