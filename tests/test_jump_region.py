@@ -212,3 +212,26 @@ def test_turn_headings_replay():
     heading, lowest, began = hop_heading("woman", pairs["turn_angle"][k])
     assert began and abs(heading - pairs["heading"][k]) < 1e-4
     assert turn_for_heading(table("woman"), pairs["heading"][k] + 1e-6) == pairs["turn_angle"][k]
+
+
+def test_sideways_targets_turn_a_quarter_first_by_the_measured_line_nearest():
+    """Straight to the side (issue 29's left and right jumps) in the woman's sideways_region: planned with the
+    quarter turn (turn_first) whose measured jump's line (quarter_lines, planning/turn_map.py) passes nearest
+    the target; a stored row's turn and jump are replayed (the same simulation); beyond the region refused."""
+    import math
+    import random
+    from sim_core.planning.turn_map import quarter_line
+    from sim_core.skills.jump_to_target.commanded import commanded_way, quarter_for_point, table
+    body = table("woman")
+    region, rows = body["sideways_region"], body["quarter_lines"]
+    middle = (0.5 * sum(region["distance"]), 0.5 * sum(region["air_time"]))
+    assert commanded_way("woman", (0.0, middle[0]), middle[1]) == commanded_way("woman", (0.0, -middle[0]), middle[1]) \
+        == "sideways"
+    assert commanded_way("woman", (0.0, region["distance"][1] + 0.05), middle[1]) is None
+    assert commanded_way("woman", (0.0, middle[0]), region["air_time"][1] + 0.05) is None
+    assert commanded_way("man", (0.0, middle[0]), middle[1]) is None          # the man has no commanded table
+    k = random.Random(SEED).choice([i for i, stood in enumerate(rows["stood"]) if stood])     # one seeded row
+    row = quarter_line("woman", rows["turn_first"][k])
+    assert all(abs(row[name] - rows[name][k]) < 1e-4 for name in ("heading", "feet_x", "feet_y", "line", "stood"))
+    ahead = (rows["feet_x"][k] + math.cos(rows["line"][k]), rows["feet_y"][k] + math.sin(rows["line"][k]))
+    assert quarter_for_point(body, ahead) == rows["turn_first"][k]
