@@ -152,7 +152,8 @@ def test_a_target_outside_both_regions_is_refused_naming_both(monkeypatch):
                          "target_y -0.02-0.02 m, air_time 0.4-0.52 s, and turned first for a distance of 0.7-1.25 m "
                          "at a bearing of 0-26 deg to either side, air_time 0.4-0.48 s, and down from a box 0.25-0.75 m "
                          "high where the same lift-off on flat ground would land in that region in 0.4-0.49 s "
-                         "(T0 = air_time - 2 height / (g air_time), at target_x T0 / air_time)")
+                         "(T0 = air_time - 2 height / (g air_time), at target_x T0 / air_time), and turned a quarter "
+                         "first for a distance of 1-1.2 m at a bearing of 87-90 deg to either side, air_time 0.4-0.44 s")
     assert "commanded" not in region_refusal("man", (1.0, 0.4), 0.6)        # the man has no commanded region
 
 
