@@ -218,10 +218,12 @@ def test_turn_headings_replay():
 def test_sideways_targets_turn_a_quarter_first_by_the_measured_line_nearest():
     """Straight to the side (issue 29's left and right jumps) in the woman's sideways_region: planned with the
     quarter turn (turn_first) whose measured jump's line (quarter_lines, planning/turn_map.py) passes nearest
-    the target; a stored row's turn and jump are replayed (the same simulation); beyond the region refused."""
+    the target; a stored row's turn and jump are replayed (the same simulation); a seeded draw is planned and run as a
+    user's request; beyond the region not offered."""
     import math
     import random
     from sim_core.planning.turn_map import quarter_line
+    from sim_core.skills.jump_to_target.behaviour import read_plans
     from sim_core.skills.jump_to_target.commanded import commanded_way, quarter_for_point, table
     body = table("woman")
     region, rows = body["sideways_region"], body["quarter_lines"]
@@ -236,3 +238,9 @@ def test_sideways_targets_turn_a_quarter_first_by_the_measured_line_nearest():
     assert all(abs(row[name] - rows[name][k]) < 1e-4 for name in ("heading", "feet_x", "feet_y", "line", "stood"))
     ahead = (rows["feet_x"][k] + math.cos(rows["line"][k]), rows["feet_y"][k] + math.sin(rows["line"][k]))
     assert quarter_for_point(body, ahead) == rows["turn_first"][k]
+    draw, = draw_requests(SEED, ["man", "woman"], 0, 0, 0, sideways=1)        # planned and run as a user's request
+    with tempfile.TemporaryDirectory() as store:
+        result = evaluate(draw, 24, store)
+        plan, = read_plans("woman", Path(store))
+    assert plan["settings"]["turn_first"] != 0.0 and plan["settings"]["commanded_takeoff"] == 1.0
+    assert result["passed"], result_line(result)

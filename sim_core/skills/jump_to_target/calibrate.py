@@ -906,7 +906,8 @@ running the skill's planner, `plan_turned`, on targets (0, +-d) m with d uniform
      **20 / 20 (100 %)** within 5 cm and 0.05 s and balanced (errors 0.9-5.0 cm), a median of 12.7 s to a result, worst
      26.8 s.
 A target the commanded take-off serves is now planned so even where a stored plan that turns first lies near it
-(her 0.3 s sideways plans were otherwise searched from); every other request is planned as before.
+(her 0.3 s sideways plans were otherwise searched from); every other request is planned as before. A test replays
+one seeded row of `quarter_lines` and plans and runs one seeded sideways draw (tests/test_jump_region.py).
 Not offered (refused in one line naming the regions): 1.2-1.6 m - her commanded take-off forward ends at 1.25 m and
 the quarter turn's jumps beyond 1.2 m missed; air times above 0.44 s - her crouch pairs end at 0.49 s, and after the
 right turn the deeper crouch fell before lift-off; so the sideways tests, asked in 0.6 s, stay refused. The man has
