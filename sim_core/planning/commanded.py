@@ -41,6 +41,7 @@ from typing import Callable
 from ..ballistics import flat_air_time
 from ..character.spec import load_character
 from ..control.leap import LEAP_SETTINGS
+from ..errors import ParameterError
 from ..skills.jump_to_target.commanded import (CONSTANTS, commanded_settings, commanded_way, quarter_for_point, table,
                                                turn_for_heading, turned_settings)
 from .land import candidates, foot_step
@@ -111,7 +112,7 @@ def landed_plan(character: str, trials: Trials, bound: int, judge: Callable, c) 
 def plan_turned(character: str, target, air_time: float, trial, budget: int, judge: Callable,
                 progress: Callable | None, cancelled: Callable | None, body: dict, c, way: str = "turned") -> dict:
     """plan_commanded for a target to the side (the module's turned plan): turn first, then forward
-    (``way`` "sideways": the quarter turn, its map ``quarter_headings``)."""
+    (``way`` "sideways": the quarter turn, its map ``quarter_lines``)."""
     x, y = float(target[0]), float(target[1])
     distance, bearing = math.hypot(x, y), math.atan2(y, x)
     along, side = (math.cos(bearing), math.sin(bearing)), (-math.sin(bearing), math.cos(bearing))
@@ -127,7 +128,9 @@ def plan_turned(character: str, target, air_time: float, trial, budget: int, jud
         # sideways: the quarter turn whose measured line passes nearest the target moved by the sideways misses
         turn = quarter_for_point(body, (x - shift * side[0], y - shift * side[1]), grounded) if way == "sideways" \
             else turn_for_heading(body, headings[-1], grounded)
-        if turn is None:
+        if turn is None:        # sideways: every measured line that stood and leads ahead was tried
+            if not trials.tried:
+                raise ParameterError(f"no measured quarter turn of the {character} leads toward ({x:g}, {y:g}) m")
             break
         measured = trials.run(turned_settings(body, air_aims[-1], aims[-1], bearing, turn, way))
         if measured["fell_before_liftoff"] or not measured["air_time"] > 0.5 * air_time:   # definition: it did not fly
