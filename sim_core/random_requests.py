@@ -17,6 +17,7 @@ with ``--workers`` of them running at once on this machine.
 from __future__ import annotations
 
 import argparse
+import math
 import os
 import statistics
 import tempfile
@@ -41,10 +42,11 @@ BOX_STREAM = 29                                             # the box draws' own
                                                             # draws of a seed stay as they were without them
 COMMANDED_STREAM = 30                                       # the commanded region's draws' own stream (seed, this)
 TURNED_STREAM = 31                                          # the turned commanded region's draws' own stream (seed, this)
+SIDEWAYS_STREAM = 32                                        # the sideways commanded region's draws' own stream (seed, this)
 BROAD_TOLERANCE = 0.1                                       # TARGETS.md: broad jump travel within 10 %
 DRAW_DECIMALS = 3                                           # requests are drawn to the millimetre / millisecond
 DEFAULT_BUDGET = 24                                         # trials of a plan: two of the planner's batches
-SKILLS = ("jump", "box", "commanded", "turned", "leap", "broad")
+SKILLS = ("jump", "box", "commanded", "turned", "sideways", "leap", "broad")
 REGION_DRAWS = 1_000_000                                    # box draws tried for one target in the region offered
 SHARE_DRAWS = 20_000                                        # box draws that measure the region's share of the box
 
@@ -54,14 +56,15 @@ class Draw:
     """One random request: ``skill`` "jump" (target_x, target_y, air_time), "box" (target_x,
     target_z, air_time: onto a box target_z high, or down from one -target_z high, straight ahead),
     "commanded" (a jump's, in the commanded region outside the measured one), "turned" (a jump's, in the
-    turned commanded region outside the measured one: turn first, then forward), "leap" (height) or
+    turned commanded region outside the measured one: turn first, then forward), "sideways" (a jump's,
+    straight to the side in the sideways commanded region: a quarter turn first), "leap" (height) or
     "broad" (distance), with its numbers in ``values``."""
     skill: str
     character: str
     values: tuple
 
     def describe(self) -> str:
-        if self.skill in ("jump", "commanded", "turned"):
+        if self.skill in ("jump", "commanded", "turned", "sideways"):
             x, y, t = self.values
             return f"jump to ({x:.3f}, {y:+.3f}) m in {t:.3f} s"
         if self.skill == "box":
@@ -88,12 +91,13 @@ def broad_range(character: str) -> tuple[float, float]:
 
 
 def draw_requests(seed: int, characters, jumps: int, leaps: int, broads: int, boxes: int = 0,
-                  commanded: int = 0, turned: int = 0) -> list[Draw]:
+                  commanded: int = 0, turned: int = 0, sideways: int = 0) -> list[Draw]:
     """The random requests of ``seed`` (NumPy's default generator), per character: ``jumps`` jump
     targets, ``leaps`` leap heights and ``broads`` broad-jump distances, uniform in their ranges;
     then ``boxes`` box targets per character (draw_box_jump, from their own stream); then ``commanded``
     targets per character that has a commanded region (draw_commanded, from their own stream); then
-    ``turned`` targets per character that has a turned commanded region (draw_turned, their own stream)."""
+    ``turned`` targets per character that has a turned commanded region (draw_turned, their own stream); then
+    ``sideways`` targets per character that has a sideways commanded region (draw_sideways, their own stream)."""
     rng = np.random.default_rng(seed)
     drawn = []
     for character in characters:
@@ -119,7 +123,27 @@ def draw_requests(seed: int, characters, jumps: int, leaps: int, broads: int, bo
     for character in characters:
         if turned and (table(character) or {}).get("turned_region") is not None:
             drawn += [Draw("turned", character, draw_turned(turned_rng, character)) for _ in range(turned)]
+    sideways_rng = np.random.default_rng((seed, SIDEWAYS_STREAM))
+    for character in characters:
+        if sideways and (table(character) or {}).get("sideways_region") is not None:
+            drawn += [Draw("sideways", character, draw_sideways(sideways_rng, character)) for _ in range(sideways)]
     return drawn
+
+
+def draw_sideways(rng, character: str) -> tuple:
+    """A jump target to the side (issue 29's left and right jumps), left or right equally likely, its distance,
+    bearing and air time uniform in the character's sideways commanded region (the table's sideways_region),
+    drawn again until commanded.commanded_way flies it "sideways"; as (target_x, target_y, air_time)."""
+    from .skills.jump_to_target.commanded import commanded_way, table
+    region = table(character)["sideways_region"]
+    for _ in range(REGION_DRAWS):
+        distance, bearing, air_time = (float(rng.uniform(*region[k])) for k in ("distance", "bearing", "air_time"))
+        side = float(rng.choice((-1.0, 1.0)))
+        values = tuple(round(v, DRAW_DECIMALS) for v in (distance * math.cos(bearing), side * distance * math.sin(bearing),
+                                                          air_time))
+        if commanded_way(character, values[:2], values[2]) == "sideways":
+            return values
+    raise ParameterError(f"no target of the {character}'s sideways commanded region in {REGION_DRAWS} draws")
 
 
 def draw_turned(rng, character: str) -> tuple:
@@ -228,7 +252,7 @@ def evaluate(draw: Draw, budget: int, store: str) -> dict:
     began = time.perf_counter()
     result = {"draw": draw}
     try:
-        result.update(_jump(draw, budget) if draw.skill in ("jump", "box", "commanded", "turned") else _leap(draw))
+        result.update(_jump(draw, budget) if draw.skill in ("jump", "box", "commanded", "turned", "sideways") else _leap(draw))
     except ParameterError as exc:
         result.update(refused=str(exc), passed=False)
     finally:
@@ -325,23 +349,27 @@ def main(argv=None) -> int:
                         help="targets per character in its commanded region, outside its measured jumps' region")
     parser.add_argument("--turned", type=int, default=0,
                         help="targets per character in its turned commanded region, outside its measured jumps' region")
+    parser.add_argument("--sideways", type=int, default=0,
+                        help="targets straight to the side per character in its sideways commanded region")
     parser.add_argument("--characters", default="man,woman")
     parser.add_argument("--budget", type=int, default=DEFAULT_BUDGET, help="trials of each unplanned jump's plan")
     parser.add_argument("--workers", type=int, default=2, help="requests run at once, one process each")
     parser.add_argument("--store", help="plan store for the jumps' plans (default: a temporary one, removed after)")
     parser.add_argument("--out", default="docs/random_requests.md")
     args = parser.parse_args(argv)
-    for name in ("jumps", "leaps", "broad", "boxes", "commanded", "turned"):
+    for name in ("jumps", "leaps", "broad", "boxes", "commanded", "turned", "sideways"):
         if getattr(args, name) < 0:
             parser.error(f"--{name}={getattr(args, name)}: must be 0 or more")
     if args.budget < 1:
         parser.error(f"--budget={args.budget}: must be at least 1 trial")
     characters = [c.strip() for c in args.characters.split(",") if c.strip()]
-    draws = draw_requests(args.seed, characters, args.jumps, args.leaps, args.broad, args.boxes, args.commanded, args.turned)
+    draws = draw_requests(args.seed, characters, args.jumps, args.leaps, args.broad, args.boxes, args.commanded, args.turned,
+                          args.sideways)
     command = (f"python -m sim_core report random --seed {args.seed} --jumps {args.jumps} --leaps {args.leaps} "
                f"--broad {args.broad}{f' --boxes {args.boxes}' if args.boxes else ''}"
                f"{f' --commanded {args.commanded}' if args.commanded else ''}"
-               f"{f' --turned {args.turned}' if args.turned else ''} --characters {','.join(characters)} --budget {args.budget} "
+               f"{f' --turned {args.turned}' if args.turned else ''}"
+               f"{f' --sideways {args.sideways}' if args.sideways else ''} --characters {','.join(characters)} --budget {args.budget} "
                f"--workers {args.workers}")
     print(command, flush=True)
     began = time.perf_counter()
@@ -394,6 +422,11 @@ def main(argv=None) -> int:
                "and outside the region its measured jumps offer: the jump turns first by one hop toward the target "
                "and flies the commanded take-off forward (sim_core.planning.commanded.plan_turned: the aimed distance "
                "and the turn, then the foot placements). " if args.turned else "")
+            + ("Sideways targets (--sideways) are drawn straight to the side (target_x 0), left or right, the distance "
+               "and air time uniform in the sideways commanded region of each character that has one (the table's "
+               "sideways_region: the woman's): the jump turns a quarter first by two hops (the leap's turn_first, the "
+               "one whose measured jump's line passes nearest the target) and flies the commanded take-off forward "
+               "(sim_core.planning.commanded.plan_turned). " if args.sideways else "")
             + "A target without a stored plan is planned first (into a temporary "
             "plan store; on flat ground or a box from the measured jumps, at most "
             f"{min(args.budget, MODEL_TRIALS)} trials; in the commanded region only, the commanded take-off aimed "

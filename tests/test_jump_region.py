@@ -152,7 +152,8 @@ def test_a_target_outside_both_regions_is_refused_naming_both(monkeypatch):
                          "target_y -0.02-0.02 m, air_time 0.4-0.52 s, and turned first for a distance of 0.7-1.25 m "
                          "at a bearing of 0-26 deg to either side, air_time 0.4-0.48 s, and down from a box 0.25-0.75 m "
                          "high where the same lift-off on flat ground would land in that region in 0.4-0.49 s "
-                         "(T0 = air_time - 2 height / (g air_time), at target_x T0 / air_time)")
+                         "(T0 = air_time - 2 height / (g air_time), at target_x T0 / air_time), and turned a quarter "
+                         "first for a distance of 1-1.2 m at a bearing of 87-90 deg to either side, air_time 0.4-0.44 s")
     assert "commanded" not in region_refusal("man", (1.0, 0.4), 0.6)        # the man has no commanded region
 
 
@@ -212,3 +213,34 @@ def test_turn_headings_replay():
     heading, lowest, began = hop_heading("woman", pairs["turn_angle"][k])
     assert began and abs(heading - pairs["heading"][k]) < 1e-4
     assert turn_for_heading(table("woman"), pairs["heading"][k] + 1e-6) == pairs["turn_angle"][k]
+
+
+def test_sideways_targets_turn_a_quarter_first_by_the_measured_line_nearest():
+    """Straight to the side (issue 29's left and right jumps) in the woman's sideways_region: planned with the
+    quarter turn (turn_first) whose measured jump's line (quarter_lines, planning/turn_map.py) passes nearest
+    the target; a stored row's turn and jump are replayed (the same simulation); a seeded draw is planned and run as a
+    user's request; beyond the region not offered."""
+    import math
+    import random
+    from sim_core.planning.turn_map import quarter_line
+    from sim_core.skills.jump_to_target.behaviour import read_plans
+    from sim_core.skills.jump_to_target.commanded import commanded_way, quarter_for_point, table
+    body = table("woman")
+    region, rows = body["sideways_region"], body["quarter_lines"]
+    middle = (0.5 * sum(region["distance"]), 0.5 * sum(region["air_time"]))
+    assert commanded_way("woman", (0.0, middle[0]), middle[1]) == commanded_way("woman", (0.0, -middle[0]), middle[1]) \
+        == "sideways"
+    assert commanded_way("woman", (0.0, region["distance"][1] + 0.05), middle[1]) is None
+    assert commanded_way("woman", (0.0, middle[0]), region["air_time"][1] + 0.05) is None
+    assert commanded_way("man", (0.0, middle[0]), middle[1]) is None          # the man has no commanded table
+    k = random.Random(SEED).choice([i for i, stood in enumerate(rows["stood"]) if stood])     # one seeded row
+    row = quarter_line("woman", rows["turn_first"][k])
+    assert all(abs(row[name] - rows[name][k]) < 1e-4 for name in ("heading", "feet_x", "feet_y", "line", "stood"))
+    ahead = (rows["feet_x"][k] + math.cos(rows["line"][k]), rows["feet_y"][k] + math.sin(rows["line"][k]))
+    assert quarter_for_point(body, ahead) == rows["turn_first"][k]
+    draw, = draw_requests(SEED, ["man", "woman"], 0, 0, 0, sideways=1)        # planned and run as a user's request
+    with tempfile.TemporaryDirectory() as store:
+        result = evaluate(draw, 24, store)
+        plan, = read_plans("woman", Path(store))
+    assert plan["settings"]["turn_first"] != 0.0 and plan["settings"]["commanded_takeoff"] == 1.0
+    assert result["passed"], result_line(result)

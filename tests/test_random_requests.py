@@ -82,3 +82,18 @@ def test_box_draws_are_in_range_in_the_region_and_leave_the_other_draws_as_they_
         assert "box" in d.describe()
     every, onto, down = box_region_share("man", 1, 2000)
     assert 0.0 < every < 1.0 and 0.0 < onto and 0.0 < down
+
+
+def test_sideways_draws_are_the_womans_to_either_side_in_her_sideways_region():
+    from sim_core.skills.jump_to_target.commanded import commanded_way, table
+    plain = draw_requests(1, ["man", "woman"], 2, 1, 1)
+    drawn = draw_requests(1, ["man", "woman"], 2, 1, 1, sideways=6)
+    assert drawn[:len(plain)] == plain                       # their own stream: the other draws unchanged
+    side = drawn[len(plain):]
+    assert [d.character for d in side] == ["woman"] * 6 and all(d.skill == "sideways" for d in side)  # the man: none
+    region = table("woman")["sideways_region"]
+    for d in side:
+        x, y, t = d.values
+        assert commanded_way("woman", (x, y), t) == "sideways" and x >= 0.0
+        assert region["distance"][0] - 1e-3 <= abs(y) <= region["distance"][1] and region["air_time"][0] <= t <= region["air_time"][1]
+    assert {y > 0 for _, y, _ in (d.values for d in side)} == {True, False}     # left and right

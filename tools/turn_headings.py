@@ -6,6 +6,13 @@ fell (the COM below ``--fall-height`` m before the leap began) is left out. The 
 jump that follows (the same angle reaches the same heading for any target), so one run each is the map:
 
     tools/turn_headings.py --character woman --from -1.2 --to 1.2 --step 0.005 --write
+
+``--quarter``: the quarter turn instead (the leap's ``turn_first``, its two hops scaled; --from/--to are the
+scale's magnitudes, both sides run) and the commanded jump straight to that side after it (planning/turn_map.py
+quarter_line), written as ``quarter_lines`` (merged with the rows already stored: a finer grid fills the gaps):
+
+    tools/turn_headings.py --character woman --quarter --from 0.95 --to 1.2 --step 0.0025 --write
+    tools/turn_headings.py --character woman --quarter --from 1.00125 --to 1.19875 --step 0.0025 --write
 """
 from __future__ import annotations
 
@@ -14,7 +21,7 @@ import math
 
 import numpy as np
 
-from sim_core.planning.turn_map import hop_heading
+from sim_core.planning.turn_map import hop_heading, quarter_line
 from sim_core.tuned.store import read, save
 
 
@@ -25,8 +32,12 @@ def main() -> None:
     ap.add_argument("--to", dest="high", type=float, default=1.2)
     ap.add_argument("--step", type=float, default=0.005)
     ap.add_argument("--fall-height", type=float, default=0.5, help="m: a hop whose COM went lower fell")
+    ap.add_argument("--quarter", action="store_true", help="the quarter turn (turn_first) and the jump after it")
     ap.add_argument("--write", action="store_true", help="store the map in the character's commanded table")
     args = ap.parse_args()
+    if args.quarter:
+        quarter(args)
+        return
     angles, headings = [], []
     for angle in np.round(np.arange(args.low, args.high + 1e-9, args.step), 4):
         if not angle:
@@ -43,6 +54,30 @@ def main() -> None:
         body["turn_headings"] = {"turn_angle": angles, "heading": headings}
         path = save("jump_commanded", args.character, body, body["strengths"])    # checked, written whole
         print(f"wrote {len(angles)} hops to {path}")
+
+
+def quarter(args) -> None:
+    """--quarter: quarter_line for each scale of the grid, both sides; the rows whose hops stood are kept."""
+    grid = np.round(np.arange(args.low, args.high + 1e-9, args.step), 4)
+    rows = []
+    for scale in np.concatenate([-grid[::-1], grid]):
+        row = quarter_line(args.character, float(scale))
+        print(f"turn_first {scale:+.4f}: " + ("hops fell (left out)" if row is None else
+              f"heading {math.degrees(row['heading']):+7.2f} deg, feet ({row['feet_x']:.3f}, {row['feet_y']:+.3f}) m, "
+              f"line {math.degrees(row['line']):+7.2f} deg, {'stood' if row['stood'] else 'fell'}"), flush=True)
+        if row is not None:
+            rows.append(row)
+    if args.write:
+        body = read("jump_commanded", args.character)
+        stored = body.get("quarter_lines", {})
+        old = [dict(zip(stored, values)) for values in zip(*stored.values())] if stored else []
+        merged = sorted({r["turn_first"]: r for r in old + rows}.values(), key=lambda r: r["turn_first"])
+        body["quarter_lines"] = {k: [round(float(r[k]), 5) for r in merged] for k in QUARTER_COLUMNS}
+        path = save("jump_commanded", args.character, body, body["strengths"])    # checked, written whole
+        print(f"wrote {len(merged)} quarter turns to {path}")
+
+
+QUARTER_COLUMNS = ("turn_first", "heading", "feet_x", "feet_y", "line", "stood")
 
 
 if __name__ == "__main__":

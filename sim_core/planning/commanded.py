@@ -23,7 +23,10 @@ jump turns first (one hop, the leap's ``turn_angle``) and flies the commanded ta
 moves the commanded distance along the target's bearing by a secant on the landing's distance along it,
 and the heading wanted by the landing's bearing missed over the table's ``turn_slope`` (from ``turn_gain`` x
 the bearing), the turn being the measured hop nearest that heading (the character's ``turn_headings``),
-at most ``turn_aim_trials`` jumps; then the landing as 2.
+at most ``turn_aim_trials`` jumps; then the landing as 2. A target straight to the side, in its
+``sideways_region``, the same with the quarter turn (the leap's ``turn_first``, two hops): the turn is the
+measured one whose jump's line passes nearest the target (``quarter_lines``, quarter_for_point), the target
+moved against the landings' misses to the side so far.
 
 At most min(budget, aim_trials + landing_trials - 1) jumps (turned: turn_aim_trials + landing_trials - 1);
 the plan is the best trial (found or
@@ -38,8 +41,9 @@ from typing import Callable
 from ..ballistics import flat_air_time
 from ..character.spec import load_character
 from ..control.leap import LEAP_SETTINGS
-from ..skills.jump_to_target.commanded import (CONSTANTS, commanded_settings, commanded_way, table, turn_for_heading,
-                                               turned_settings)
+from ..errors import ParameterError
+from ..skills.jump_to_target.commanded import (CONSTANTS, commanded_settings, commanded_way, quarter_for_point, table,
+                                               turn_for_heading, turned_settings)
 from .land import candidates, foot_step
 from .trials import Trials
 
@@ -63,8 +67,9 @@ def plan_commanded(character: str, target, air_time: float, trial, budget: int, 
     stored ones; tools/commanded_jumps.py tries others). Returns the planner's {"settings", "measured",
     "trials", "found"}."""
     c, body = constants or CONSTANTS, body or table(character)
-    if commanded_way(character, target, air_time) == "turned":
-        return plan_turned(character, target, air_time, trial, budget, judge, progress, cancelled, body, c)
+    way = commanded_way(character, target, air_time)
+    if way in ("turned", "sideways"):
+        return plan_turned(character, target, air_time, trial, budget, judge, progress, cancelled, body, c, way)
     x = float(target[0])
     bound = min(budget, c.aim_trials + c.landing_trials - 1)
     trials = Trials(trial, bound, progress, cancelled)
@@ -105,19 +110,29 @@ def landed_plan(character: str, trials: Trials, bound: int, judge: Callable, c) 
 
 
 def plan_turned(character: str, target, air_time: float, trial, budget: int, judge: Callable,
-                progress: Callable | None, cancelled: Callable | None, body: dict, c) -> dict:
-    """plan_commanded for a target to the side (the module's turned plan): turn first, then forward."""
+                progress: Callable | None, cancelled: Callable | None, body: dict, c, way: str = "turned") -> dict:
+    """plan_commanded for a target to the side (the module's turned plan): turn first, then forward
+    (``way`` "sideways": the quarter turn, its map ``quarter_lines``)."""
     x, y = float(target[0]), float(target[1])
     distance, bearing = math.hypot(x, y), math.atan2(y, x)
     along, side = (math.cos(bearing), math.sin(bearing)), (-math.sin(bearing), math.cos(bearing))
     bound = min(budget, c.turn_aim_trials + c.landing_trials - 1)
     trials = Trials(trial, bound, progress, cancelled)
     aims, reached, headings, bearings, air_aims, flown = [distance], [], [c.turn_gain * bearing], [], [float(air_time)], []
+    # the aim stays in its range and its flight target in the leap's (a quarter turn's aim is all target_y)
+    top = min(c.aim_range[1], LEAP_SETTINGS.by_name["flight_target_y"].maximum / max(abs(math.sin(bearing)), 1e-3))
+    shift = 0.0         # sideways: the landings' misses to the side so far (m, along ``side``)
     good = None         # the aim, heading and air time aimed of the nearest trial that flew
     grounded = set()    # the turns whose jump did not fly
     while True:
-        turn = turn_for_heading(body, headings[-1], grounded)
-        measured = trials.run(turned_settings(body, air_aims[-1], aims[-1], bearing, turn))
+        # sideways: the quarter turn whose measured line passes nearest the target moved by the sideways misses
+        turn = quarter_for_point(body, (x - shift * side[0], y - shift * side[1]), grounded) if way == "sideways" \
+            else turn_for_heading(body, headings[-1], grounded)
+        if turn is None:        # sideways: every measured line that stood and leads ahead was tried
+            if not trials.tried:
+                raise ParameterError(f"no measured quarter turn of the {character} leads toward ({x:g}, {y:g}) m")
+            break
+        measured = trials.run(turned_settings(body, air_aims[-1], aims[-1], bearing, turn, way))
         if measured["fell_before_liftoff"] or not measured["air_time"] > 0.5 * air_time:   # definition: it did not fly
             # a trial that did not fly tells nothing of the aim: the next measured hop nearest the heading (another
             # stance to jump from), halfway back to the nearest trial that flew, not secants on it
@@ -140,10 +155,11 @@ def plan_turned(character: str, target, air_time: float, trial, budget: int, jud
                 or len(trials.tried) >= min(c.turn_aim_trials, bound) or not (math.isfinite(miss) and math.isfinite(off))):
             break
         slope = secant(aims, reached, c.aim_slope_floor, c.aim_slope)
-        aims.append(min(max(aims[-1] - miss / slope, c.aim_range[0]), c.aim_range[1]))
+        aims.append(min(max(aims[-1] - miss / slope, c.aim_range[0]), top))
         # the heading wanted moves by the landing's bearing missed (over the table's slope); the turn is the measured
         # hop nearest it (turn_for_heading: the hop's heading is not smooth in its angle, a secant on it stepped far off)
         headings.append(headings[-1] - (bearings[-1] - bearing) / c.turn_slope)
+        shift += off
         rate = secant(air_aims, flown, c.aim_slope_floor, 1.0)     # definition: the first step as flown
         air_aims.append(air_aims[-1] - late / rate)
     return landed_plan(character, trials, bound, judge, c)

@@ -173,9 +173,11 @@ def plan_jump(character: str, target, air_time: float, windup_time: float, stren
     target = tuple(float(v) for v in target) + ((0.0,) if len(target) == 3 else ())
     if not isinstance(budget, int) or budget < 1:
         raise_budget(budget)
-    turned = turned_start(character, target, strength) if not restart and start is None else None
-    if not obstacle_of(target) and strength == "human" and not restart and start is None and turned is None \
-            and mode(character, target, air_time) == "commanded":
+    # a target the commanded take-off serves is planned so, also one to the side a stored plan turning first is near
+    commanded = not obstacle_of(target) and strength == "human" and not restart and start is None \
+        and mode(character, target, air_time) == "commanded"
+    turned = turned_start(character, target, strength) if not restart and start is None and not commanded else None
+    if commanded:
         # outside the measured jumps' region, inside the commanded take-off's (skills/jump_to_target/commanded.py)
         trial = JumpTrial(character, target, air_time, windup_time, strength, cancelled)
         return plan_commanded(character, target, air_time, trial, budget,

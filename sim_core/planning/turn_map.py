@@ -1,4 +1,5 @@
-"""The turn's hop measured as a map (issue 29's lateral targets): the heading each ``turn_angle`` reaches.
+"""The turn's hop measured as a map (issue 29's lateral targets): the heading each ``turn_angle`` reaches
+(and the quarter turn's, ``turn_first``, with the line of the sideways jump after it: quarter_line).
 
 A target to the side is flown by turning first (one hop, control/turn.py) and then forward
 (planning/commanded.py plan_turned). The hop's heading is not smooth in its angle - asked 0.50 / 0.51 /
@@ -17,18 +18,44 @@ import numpy as np
 from ..control.turn import jump_start, turn_duration
 from ..simulate import RunRequest, run
 from ..skills.jump_to_target.behaviour import leap_params, scene_for
-from ..skills.jump_to_target.commanded import commanded_settings, table
+from ..skills.jump_to_target.commanded import commanded_settings, table, turned_settings
 
 MAP_TARGET, MAP_AIR_TIME, MAP_WINDUP = (1.0, 0.0, 0.0, 0.0), 0.45, 1.25   # definition: any jump (the hop is the same)
+MAP_FALL_HEIGHT = 0.5                   # m: definition: hops whose COM went lower fell (tools/turn_headings.py's default)
+SIDE_TARGET, SIDE_AIR_TIME = 1.15, 0.44  # definition: the quarter map's jump, in the middle of the sideways region
 
 
 def hop_heading(character: str, angle: float) -> tuple[float, float, bool]:
     """(heading rad, the COM's lowest height m, whether the leap's crouch began) of the hop turned by
     ``angle``: the pelvis's heading when the leap's own crouch begins (the commanded take-off flies along
     it), the run stopped soon after."""
-    settings = {**commanded_settings(table(character), MAP_AIR_TIME, MAP_TARGET[0]), "turn_angle": angle}
-    params = {**leap_params(settings, MAP_TARGET, MAP_WINDUP, MAP_AIR_TIME), "turn_angle": angle}
-    duration = turn_duration(0.0, angle) + 0.4                # definition: a margin past the longest hop
+    return hop_stance(character, angle)[:3]
+
+
+def quarter_line(character: str, scale: float) -> dict:
+    """The quarter turn of ``turn_first`` ``scale`` (its two hops) and the commanded jump after it, measured:
+    the hops' heading, the middle of the feet when the leap's crouch begins (``feet_x``, ``feet_y``) and where
+    a commanded jump straight to that side (SIDE_TARGET m, SIDE_AIR_TIME s) landed, its line's direction from
+    the feet (``line`` rad) and whether it ended balanced (``stood``); None where the hops fell."""
+    from .jump import JumpTrial      # the trial's measure; jump.py plans with this module's map
+    heading, lowest, begun, feet = hop_stance(character, scale, "turn_first")
+    if not begun or lowest < MAP_FALL_HEIGHT:
+        return None
+    target = (0.0, -math.copysign(SIDE_TARGET, scale), 0.0, 0.0)       # turn_first + turns to the right
+    _, measured = JumpTrial(character, target, SIDE_AIR_TIME, MAP_WINDUP, "human")(
+        turned_settings(table(character), SIDE_AIR_TIME, SIDE_TARGET, math.atan2(target[1], 0.0), scale, "sideways"))
+    landing = measured["landing"]
+    return {"turn_first": scale, "heading": heading, "feet_x": feet[0], "feet_y": feet[1],
+            "line": math.atan2(landing[1] - feet[1], landing[0] - feet[0]),
+            "stood": float(measured["outcome"] in ("success", "stepped") and measured["air_time"] > 0.5 * SIDE_AIR_TIME)}
+
+
+def hop_stance(character: str, angle: float, setting: str = "turn_angle") -> tuple[float, float, bool, tuple]:
+    """hop_heading's figures and the middle of the feet (x, y m) when the leap's own crouch begins; ``setting``
+    "turn_first": the quarter turn's two hops scaled by ``angle`` instead of one hop (the leap's ``turn_first``)."""
+    settings = {**commanded_settings(table(character), MAP_AIR_TIME, MAP_TARGET[0]), setting: angle}
+    params = {**leap_params(settings, MAP_TARGET, MAP_WINDUP, MAP_AIR_TIME), setting: angle}
+    duration = (turn_duration(angle, 0.0) if setting == "turn_first" else turn_duration(0.0, angle)) + 0.4   # definition: a margin past the longest hop
     trajectory = run(RunRequest("leap", character, params=params, duration=duration,
                                 world=scene_for(character, MAP_TARGET)))
     a = trajectory.arrays
@@ -36,4 +63,5 @@ def hop_heading(character: str, angle: float) -> tuple[float, float, bool]:
     k = min(int(np.searchsorted(a["time"], begun)), len(a["time"]) - 1) if begun else len(a["time"]) - 1
     w, x, y, z = a["body_quat"][k, trajectory.body_index("PELVIS")]
     heading = math.atan2(2 * (w * z + x * y), 1 - 2 * (y * y + z * z))
-    return heading, float(a["com"][:k + 1, 2].min()), bool(begun)
+    feet = a["body_pos"][k, [trajectory.body_index("FOOTR"), trajectory.body_index("FOOTL")], :2].mean(axis=0)
+    return heading, float(a["com"][:k + 1, 2].min()), bool(begun), (float(feet[0]), float(feet[1]))

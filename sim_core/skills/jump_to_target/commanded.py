@@ -22,6 +22,12 @@ flights land pitched forward and fall, docs/jump_to_target.md) holds:
   along the new heading (``distance`` from the start's feet m, ``bearing`` |atan2(y, x)| rad, ``air_time``
   s, each [low, high]; the commanded flight itself lands on its heading's line, it does not steer sideways);
   a request in it beyond ``region``'s target_y is planned so (planning/commanded.py plan_turned);
+- ``sideways_region`` (optional, with ``quarter_lines``): the same keys for targets straight to the side, flown
+  by the leap's quarter turn first (``turn_first``: two hops, control/turn.py) and then the commanded take-off
+  forward (a single hop to 75-90 deg mostly fell after it, docs/jump_to_target.md); ``quarter_lines`` (columns
+  ``turn_first``, ``heading``, ``feet_x``, ``feet_y``, ``line``, ``stood``) is each ``turn_first`` of a fine grid
+  measured (planning/turn_map.py quarter_line): where the hops left the feet, and the line a commanded jump from
+  there flew along (rad), whether it stood (quarter_for_point);
 - ``down_region`` (optional, with ``down_settings``): a jump straight ahead down from a box ``height`` m high
   ([low, high]) is flown by the same take-off where the flight of its lift-off velocity on flat ground lands in
   ``region`` with an air time in ``flat_air_time`` ([low, high] s) (flat_equivalent: the vertical speed's air
@@ -77,6 +83,8 @@ def _rows(body: dict):
         yield f"crouch_by_air_time {k}", {"crouch_height": height}
     for k, angle in enumerate(body.get("turn_headings", {}).get("turn_angle", [])):
         yield f"turn_headings {k}", {"turn_angle": angle}
+    for k, scale in enumerate(body.get("quarter_lines", {}).get("turn_first", [])):
+        yield f"quarter_lines {k}", {"turn_first": scale}
     yield from constant_rows(body)
 
 
@@ -91,6 +99,20 @@ def turn_for_heading(body: dict, heading: float, avoid=()) -> float:
     k = int(np.argmin([abs(h - heading) if a not in avoid else math.inf
                        for a, h in zip(pairs["turn_angle"], pairs["heading"])]))
     return float(pairs["turn_angle"][k])
+
+
+def quarter_for_point(body: dict, point, avoid=()) -> float:
+    """The ``turn_first`` of the table's ``quarter_lines`` whose measured jump's line (from the feet the quarter
+    turn left, along ``line``) passes nearest ``point`` (x, y m) ahead of them, of those that stood and are not
+    in ``avoid``. As the hop's heading, the quarter turn's is not smooth in its scale but the same every run."""
+    rows = body["quarter_lines"]
+    best, chosen = math.inf, None
+    for scale, fx, fy, line, stood in zip(rows["turn_first"], rows["feet_x"], rows["feet_y"], rows["line"], rows["stood"]):
+        dx, dy = float(point[0]) - fx, float(point[1]) - fy
+        along, off = dx * math.cos(line) + dy * math.sin(line), -dx * math.sin(line) + dy * math.cos(line)
+        if stood > 0.5 and scale not in avoid and along > 0.0 and abs(off) < best:
+            best, chosen = abs(off), float(scale)
+    return chosen
 
 
 def commanded_settings(body: dict, air_time: float, aim: float, height: float = 0.0) -> dict:
@@ -112,11 +134,12 @@ def flat_equivalent(target, air_time: float) -> tuple[float, float]:
     return float(target[0]) * flat_time / float(air_time), flat_time
 
 
-def turned_settings(body: dict, air_time: float, aim: float, bearing: float, turn: float) -> dict:
+def turned_settings(body: dict, air_time: float, aim: float, bearing: float, turn: float, way: str = "turned") -> dict:
     """commanded_settings for a turned jump: the flight aimed ``aim`` m from the start's feet along
-    ``bearing`` (rad, + to the left), after a turn of ``turn_angle`` ``turn`` rad."""
+    ``bearing`` (rad, + to the left), after a turn of ``turn_angle`` ``turn`` rad (``way`` "sideways": the
+    quarter turn's ``turn_first`` ``turn``)."""
     return {**commanded_settings(body, air_time, aim * math.cos(bearing)),
-            "flight_target_y": float(aim * math.sin(bearing)), "turn_angle": float(turn)}
+            "flight_target_y": float(aim * math.sin(bearing)), "turn_first" if way == "sideways" else "turn_angle": float(turn)}
 
 
 JUMP_COMMANDED_TABLE = register_table(TableType("jump_commanded", with_constants(LEAP_SETTINGS, COMMANDED_CONSTANTS),
@@ -131,8 +154,9 @@ def table(character: str) -> dict | None:
 def commanded_way(character: str, target, air_time: float) -> str | None:
     """How the commanded take-off flies the request (x, y[, z], air time): on flat ground "straight"
     inside the table's ``region`` (bounds included), "turned" inside its ``turned_region`` beyond it
-    (a turn first, then forward); down from a box (z < 0) "down" where its ``down_region`` holds the
-    height and the flight's flat equivalent lies in ``region``; else None."""
+    (a turn first, then forward), "sideways" inside its ``sideways_region`` (the quarter turn first); down
+    from a box (z < 0) "down" where its ``down_region`` holds the height and the flight's flat equivalent
+    lies in ``region``; else None."""
     body = table(character)
     z = float(target[2]) if len(target) > 2 else 0.0
     if body is None or z > 0.0:
@@ -151,15 +175,15 @@ def commanded_way(character: str, target, air_time: float) -> str | None:
         return "straight" if z == 0.0 else "down"
     if z < 0.0:
         return None
-    turned = body.get("turned_region")
-    if turned is None or region["target_y"][0] <= y <= region["target_y"][1]:
+    if region["target_y"][0] <= y <= region["target_y"][1]:
         return None
     values = {"distance": math.hypot(x, y), "bearing": abs(math.atan2(y, x)), "air_time": float(air_time)}
-    return "turned" if all(turned[k][0] <= v <= turned[k][1] for k, v in values.items()) else None
+    return next((way for way in ("turned", "sideways") if body.get(f"{way}_region") is not None
+                 and all(body[f"{way}_region"][k][0] <= v <= body[f"{way}_region"][k][1] for k, v in values.items())), None)
 
 
 def commanded_offers(character: str, target, air_time: float) -> bool:
-    """Whether the request lies in the character's measured commanded region, straight or turned (commanded_way)."""
+    """Whether the request lies in the character's measured commanded region, straight, turned or sideways (commanded_way)."""
     return commanded_way(character, target, air_time) is not None
 
 
@@ -180,4 +204,9 @@ def commanded_limit(character: str) -> str | None:
         limit += (f", and down from a box {down['height'][0]:g}-{down['height'][1]:g} m high where the same lift-off "
                   f"on flat ground would land in that region in {down['flat_air_time'][0]:g}-{down['flat_air_time'][1]:g} s "
                   f"(T0 = air_time - 2 height / (g air_time), at target_x T0 / air_time)")
+    sideways = body.get("sideways_region")
+    if sideways:
+        limit += (f", and turned a quarter first for a distance of {sideways['distance'][0]:g}-{sideways['distance'][1]:g} m at "
+                  f"a bearing of {math.degrees(sideways['bearing'][0]):.0f}-{math.degrees(sideways['bearing'][1]):.0f} deg to "
+                  f"either side, air_time {sideways['air_time'][0]:g}-{sideways['air_time'][1]:g} s")
     return limit
