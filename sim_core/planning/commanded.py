@@ -35,8 +35,8 @@ from typing import Callable
 
 from ..character.spec import load_character
 from ..control.leap import LEAP_SETTINGS
-from ..skills.jump_to_target.commanded import (CONSTANTS, commanded_settings, commanded_way, table, turn_for_heading,
-                                               turned_settings)
+from ..skills.jump_to_target.commanded import (commanded_settings, commanded_way, planner_constants, table,
+                                               turn_for_heading, turned_settings)
 from .land import candidates, foot_step
 from .trials import Trials
 
@@ -57,9 +57,9 @@ def plan_commanded(character: str, target, air_time: float, trial, budget: int, 
     take-off (see the module). ``trial``: settings -> (cost, measured) (planning.jump.JumpTrial);
     ``judge(measured)`` -> (landed on the target, within TARGETS.md's tolerances and balanced);
     ``body``, ``constants``: the character's commanded table and the planner's constants (default: the
-    stored ones; tools/commanded_jumps.py tries others). Returns the planner's {"settings", "measured",
+    stored ones, planner_constants; tools/commanded_jumps.py tries others). Returns the planner's {"settings", "measured",
     "trials", "found"}."""
-    c, body = constants or CONSTANTS, body or table(character)
+    c, body = constants or planner_constants(character), body or table(character)
     if commanded_way(character, target, air_time) == "turned":
         return plan_turned(character, target, air_time, trial, budget, judge, progress, cancelled, body, c)
     x = float(target[0])

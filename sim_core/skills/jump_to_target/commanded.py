@@ -24,7 +24,7 @@ flights land pitched forward and fall, docs/jump_to_target.md) holds:
   a request in it beyond ``region``'s target_y is planned so (planning/commanded.py plan_turned).
 
 ``jump_commanded_any.json`` holds the planner's constants (the aim's bound and tolerances, the
-landing plan's bound). The leap's ``commanded_*`` constants are the character's own in its leap
+landing plan's bound); a character's table may hold its own in a "constants" section (planner_constants). The leap's ``commanded_*`` constants are the character's own in its leap
 table's "constants" (control.leap.leap_constants). Only reads the tables: the planning is planning's.
 """
 from __future__ import annotations
@@ -36,7 +36,7 @@ import numpy as np
 from ...control.leap import LEAP_SETTINGS
 from ...schema import Schema
 from ...tuned import TableType, load_fresh, register as register_table
-from ...tuned.constants import constant, constant_rows, read_constants, with_constants
+from ...tuned.constants import constant, constant_rows, own_constants, read_constants, with_constants
 
 COMMANDED_CONSTANTS = Schema(
     constant("aim_trials", "count", 1, 20,
@@ -59,6 +59,12 @@ COMMANDED_CONSTANTS = Schema(
              "step (planning/land.py) more and less, two, ...: this many placements in all, its own the first"),
 )
 CONSTANTS = read_constants("jump_commanded", COMMANDED_CONSTANTS)
+
+
+def planner_constants(character: str):
+    """The planner's constants for ``character``: jump_commanded_any's, each one the character's own table's
+    "constants" section holds replaced (the man's aim needs more jumps than the woman's)."""
+    return own_constants("jump_commanded", character, CONSTANTS)
 
 
 def _rows(body: dict):
