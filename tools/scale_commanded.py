@@ -4,7 +4,8 @@ table's ``commanded_*`` constants by ``scale_constants`` (both in ``--mode``), t
 by ``--timing-scale`` (the leap's ``commanded_timing_scale``: a body weaker for its size than Fig. 6's
 scaling assumes extends more slowly, its joints' torques ~ 1/time^2), and the crouch pairs, the region and
 the planner's own constants as measured on the new body (given on the command line; the scaled pairs are
-printed for comparison). Prints the tables; ``--write`` saves them through the table store (the new
+printed for comparison); a turned region (``--turned-region``) once tools/turn_headings.py has measured the
+new body's hop (its map is kept). Prints the tables; ``--write`` saves them through the table store (the new
 character's ``jump_commanded`` table, and the ``constants`` section of its ``leap`` table):
 
     tools/scale_commanded.py --from woman --to man --mode mass --timing-scale 1.16 \\
@@ -32,6 +33,8 @@ def main() -> None:
     ap.add_argument("--timing-scale", type=float, default=1.0)
     ap.add_argument("--crouch-by-air-time", required=True, help="crouch:air time pairs (m:s) measured on the new body")
     ap.add_argument("--region", required=True, help="target_x low,high, target_y low,high, air_time low,high")
+    ap.add_argument("--turned-region", help="distance low,high m, bearing low,high rad, air_time low,high s (turned "
+                                            "first, then forward: the table's turned_region; needs its turn_headings)")
     ap.add_argument("--planner", action="append", default=[], help="name=value: the planner's own constants")
     ap.add_argument("--measured", default="", help="how the region was measured (the table's 'measured')")
     ap.add_argument("--write", action="store_true")
@@ -55,6 +58,12 @@ def main() -> None:
             "crouch_by_air_time": {"air_time": [t for t, _ in pairs], "crouch_height": [h for _, h in pairs]},
             "region": {"target_x": [x0, x1], "target_y": [y0, y1], "air_time": [t0, t1]},
             "measured": args.measured}
+    before = read("jump_commanded", args.target) or {}
+    if "turn_headings" in before:           # the hop's measured map (tools/turn_headings.py) is kept
+        body["turn_headings"] = before["turn_headings"]
+    if args.turned_region:
+        d0, d1, b0, b1, a0, a1 = (float(v) for v in args.turned_region.split(","))
+        body["turned_region"] = {"distance": [d0, d1], "bearing": [b0, b1], "air_time": [a0, a1]}
     if args.planner:
         body["constants"] = {n: json.loads(v) for n, v in (item.split("=") for item in args.planner)}
     leap_body = read("leap", args.target)
