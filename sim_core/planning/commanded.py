@@ -57,8 +57,8 @@ def plan_commanded(character: str, target, air_time: float, trial, budget: int, 
     take-off (see the module). ``trial``: settings -> (cost, measured) (planning.jump.JumpTrial);
     ``judge(measured)`` -> (landed on the target, within TARGETS.md's tolerances and balanced);
     ``body``, ``constants``: the character's commanded table and the planner's constants (default: the
-    stored ones, planner_constants; tools/commanded_jumps.py tries others). Returns the planner's {"settings", "measured",
-    "trials", "found"}."""
+    stored ones, planner_constants; tools/commanded_jumps.py tries others). Returns the planner's
+    {"settings", "measured", "trials", "found"}."""
     c, body = constants or planner_constants(character), body or table(character)
     if commanded_way(character, target, air_time) == "turned":
         return plan_turned(character, target, air_time, trial, budget, judge, progress, cancelled, body, c)

@@ -1,8 +1,8 @@
 """The commanded take-off's table (issue 29): where a character's jump to a target is flown by the
 commanded take-off (control/commanded_thrust.py) and with which settings.
 
-A character with a table ``jump_commanded_<character>.json`` (the woman's; the man's commanded
-flights land pitched forward and fall, docs/jump_to_target.md) holds:
+A character with a table ``jump_commanded_<character>.json`` (the woman's; the man's, hers scaled by
+Fig. 6 with his thrust slowed for his strength, tools/scale_commanded.py and docs/jump_to_target.md) holds:
 
 - ``settings``: the leap's settings a commanded plan starts from (the crouch's pitch and lean, the
   thrust's, the landing's with the arms' pitch feedback) - its crouch height is replaced by
@@ -24,7 +24,8 @@ flights land pitched forward and fall, docs/jump_to_target.md) holds:
   a request in it beyond ``region``'s target_y is planned so (planning/commanded.py plan_turned).
 
 ``jump_commanded_any.json`` holds the planner's constants (the aim's bound and tolerances, the
-landing plan's bound); a character's table may hold its own in a "constants" section (planner_constants). The leap's ``commanded_*`` constants are the character's own in its leap
+landing plan's bound); a character's table may hold its own in a "constants" section
+(planner_constants). The leap's ``commanded_*`` constants are the character's own in its leap
 table's "constants" (control.leap.leap_constants). Only reads the tables: the planning is planning's.
 """
 from __future__ import annotations
