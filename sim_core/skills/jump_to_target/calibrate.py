@@ -898,7 +898,8 @@ draw planned by planning/commanded.py with the settings and pairs given as its t
    "constants" section with the planner's `aim_trials` 9 - planning/commanded.py now reads a character's own
    planner constants over jump_commanded_any.json's, `planner_constants`) and the "constants" section of
    `leap_man.json` (her `commanded_*` scaled, `commanded_timing_scale` 1.16; his stored plans name no
-   commanded take-off and run as before):
+   commanded take-off and run bit for bit as before - his 1.3 m and sideways 1.0 m jumps and the woman's
+   1.0 m: the same qpos hashes with his own constants as with leap_any's):
 
        tools/scale_commanded.py --from woman --to man --mode mass --timing-scale 1.16 \\
            --crouch-by-air-time 0.63:0.39,0.61:0.455,0.59:0.495,0.55:0.535 \\
