@@ -853,8 +853,9 @@ draw planned by planning/commanded.py with the settings and pairs given as its t
      balanced; 15 of 30 balanced (the near, slow ones); 130 s;
    - mass, over her region scaled (0.57-1.42 m, 0.43-0.55 s, 30 draws): 9 hits, 4 balanced (all four nearer
      than 0.8 m); 4 of 30 balanced; 205 s.
-   Why: the scaled take-off leaves him spinning forward, +2 ... +26 kg m²/s (the woman's same design leaves
-   her at -5.4 ... -6.4; `--set crouch_height=H --sweep 0.6,0.8,0.1 --air-time 0.5`, H 0.51-0.61 m: +5 ... +26),
+   Why: the scaled take-off leaves him spinning forward, mostly +2 ... +26 kg m²/s (the woman's same design
+   leaves her at -5.4 ... -6.4; `--set crouch_height=H --sweep 0.6,0.8,0.1 --air-time 0.5`, H 0.51-0.61 m:
+   -0.1 ... +26, above +5 from 0.53 m on; 0.8-1.4 m from a 0.566 m crouch: +18.5 ... -0.8),
    and the aim's landing map is not monotone (1.0 m asked from a 0.57 m crouch landed 0.23 m).
 2. The take-off's spin (the brief's second design), on his own stored 1.3 m plan's settings as before (spin
    at lift-off -3.2 kg m²/s for 1.3 m in 0.46 s): single jumps (`/work/scratch` probes, not kept) with
@@ -885,7 +886,7 @@ draw planned by planning/commanded.py with the settings and pairs given as its t
    are scaled by sqrt(2.08 / 1.54) = 1.16 (new leap constant `commanded_timing_scale`, 1 in leap_any.json: the
    woman's and every stored plan run bit for bit; the man's leap table's "constants" hold 1.16 and his scaled
    `commanded_*`): human strength, `--aim 5`, same 20 draws: **10 hits, all 10 balanced; 20 of 20 balanced**,
-   spin at lift-off -1 ... -4 kg m²/s, the pelvis 11-14 deg at lift-off. The misses were the aim running out
+   spin at lift-off -1 ... -5 kg m²/s, the pelvis 11-14 deg at lift-off. The misses were the aim running out
    (the landing per commanded metre is steep: aimed 0.5 m lands 1.1 m) and air times above ~0.53 s.
    Then the crouch pairs measured with this take-off (`--set crouch_height=H --sweep 1.0,1.0,0.1 --air-time
    0.5`: 0.51 / 0.53 / 0.55 / 0.57 / 0.59 / 0.61 / 0.63 / 0.65 m -> 0.505 / 0.52 / 0.535 / 0.50 / 0.495 / 0.455 /
