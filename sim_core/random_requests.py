@@ -402,7 +402,7 @@ def main(argv=None) -> int:
             "(woman), lateral within +-0.6 m, air time 0.4-0.7 s) and drawn again until they lie in the region "
             "the character is offered (sim_core.skills.jump_to_target.region: where one of its measured balanced "
             "jumps, python -m sim_core.planning.jump_model, lands within the tolerances, or in the box its commanded "
-            "take-off was measured in, skills/jump_to_target/commanded.py, the woman's; any other target is "
+            "take-off was measured in, skills/jump_to_target/commanded.py, the man's and the woman's; any other target is "
             f"refused before simulating, naming the limit). The region offered is {shares} of the box "
             f"({SHARE_DRAWS} uniform draws). "
             + (f"Box targets (--boxes) are drawn straight ahead, forward as above, onto a box 0.25-0.75 m high or down "
@@ -413,12 +413,12 @@ def main(argv=None) -> int:
                f"region, the woman's; planned as a commanded target): {box_text} of those targets "
                f"({SHARE_DRAWS} uniform draws). " if box_shares else "")
             + ("Commanded targets (--commanded) are drawn uniformly in the commanded region of each character "
-               "that has one (sim_core.skills.jump_to_target.commanded's table: the woman's) and drawn again until "
+               "that has one (sim_core.skills.jump_to_target.commanded's table: the man's and the woman's) and drawn again until "
                "its measured jumps do not offer them, so that the commanded take-off alone serves them "
-               "(sim_core.planning.commanded: at most 5 aimed jumps, then at most 8 foot placements). "
+               "(sim_core.planning.commanded: at most 5 aimed jumps - the man's 9 - then at most 8 foot placements). "
                if args.commanded else "")
             + ("Turned targets (--turned) are drawn uniformly in issue 29's box and drawn again until they lie in "
-               "the turned commanded region of each character that has one (the table's turned_region: the woman's) "
+               "the turned commanded region of each character that has one (the table's turned_region: the man's and the woman's) "
                "and outside the region its measured jumps offer: the jump turns first by one hop toward the target "
                "and flies the commanded take-off forward (sim_core.planning.commanded.plan_turned: the aimed distance "
                "and the turn, then the foot placements). " if args.turned else "")

@@ -118,24 +118,28 @@ def test_landing_variants_of_fallen_flights_are_measured_and_land_beyond_the_fir
     assert any(p["measured"]["landing"][0] > 1.5 and p["measured"]["air_time"] >= 0.56 for p in flat)
 
 
-COMMANDED_TARGETS = 3       # random targets in the woman's commanded region, outside her measured jumps' region
+COMMANDED_TARGETS = 3       # random targets in a character's commanded region, outside its measured jumps' region
 
 
-def test_random_targets_in_the_commanded_region_are_planned_commanded_and_land_balanced(tmp_path):
+@pytest.mark.parametrize("character", ["man", "woman"])
+def test_random_targets_in_the_commanded_region_are_planned_commanded_and_land_balanced(character, tmp_path):
     """Outside the measured jumps' region, inside the commanded one: planned by planning/commanded.py
-    (a plan with the commanded take-off and its aim), then run as a user's request."""
+    (a plan with the commanded take-off and its aim), then run as a user's request. The man's table is
+    the woman's scaled by Fig. 6 (tools/scale_commanded.py)."""
     from sim_core.skills.jump_to_target.behaviour import read_plans
+    from sim_core.skills.jump_to_target.commanded import planner_constants
     from sim_core.skills.jump_to_target.region import in_region, mode
-    draws = draw_requests(SEED, ["man", "woman"], 0, 0, 0, 0, COMMANDED_TARGETS)
-    assert [d.character for d in draws] == ["woman"] * COMMANDED_TARGETS      # the man has no commanded region
-    assert all(in_region("woman", d.values[:2], d.values[2]) and mode("woman", d.values[:2], d.values[2]) == "commanded"
-               for d in draws)
+    draws = draw_requests(SEED, [character], 0, 0, 0, 0, COMMANDED_TARGETS)
+    assert [d.character for d in draws] == [character] * COMMANDED_TARGETS
+    assert all(in_region(character, d.values[:2], d.values[2])
+               and mode(character, d.values[:2], d.values[2]) == "commanded" for d in draws)
     results = [evaluate(d, 24, str(tmp_path)) for d in draws]
     lines = [result_line(r) for r in results]
-    plans = read_plans("woman", tmp_path)
+    plans = read_plans(character, tmp_path)
+    c = planner_constants(character)
     assert len(plans) == COMMANDED_TARGETS
     assert all(p["settings"]["commanded_takeoff"] == 1.0 and "flight_target_x" in p["settings"] for p in plans)
-    assert all(p["trials"] <= 13 for p in plans)                  # aim_trials + landing_trials - 1
+    assert all(p["trials"] <= c.aim_trials + c.landing_trials - 1 for p in plans)
     assert sum(r["passed"] for r in results) >= COMMANDED_TARGETS - 1, "\n".join(lines)
     assert max(r["seconds"] for r in results) <= 60, "\n".join(lines)
 
@@ -154,7 +158,7 @@ def test_a_target_outside_both_regions_is_refused_naming_both(monkeypatch):
                          "high where the same lift-off on flat ground would land in that region in 0.4-0.49 s "
                          "(T0 = air_time - 2 height / (g air_time), at target_x T0 / air_time), and turned a quarter "
                          "first for a distance of 1-1.2 m at a bearing of 87-90 deg to either side, air_time 0.4-0.44 s")
-    assert "commanded" not in region_refusal("man", (1.0, 0.4), 0.6)        # the man has no commanded region
+    assert "the commanded take-off is offered on flat ground for target_x 0.85-1.2 m" in region_refusal("man", (1.0, 0.4), 0.6)
 
 
 def test_a_random_target_down_from_a_box_is_flown_by_the_commanded_take_off_as_its_plan_was():
@@ -170,7 +174,7 @@ def test_a_random_target_down_from_a_box_is_flown_by_the_commanded_take_off_as_i
     assert commanded_way("woman", (1.2, 0.0, -0.4), 0.6) == "down"
     assert commanded_way("woman", (0.5, 0.0, -0.6), 0.66) is None       # its flat-ground landing 0.37 m: too near
     assert commanded_way("woman", (1.0, 0.0, 0.3), 0.6) is None         # onto a box: not offered
-    assert commanded_way("man", (1.2, 0.0, -0.4), 0.6) is None          # the man has no commanded table
+    assert commanded_way("man", (1.2, 0.0, -0.4), 0.6) is None          # the man's table has no down_region
     box = next(d for d in draw_requests(SEED, ["woman"], 0, 0, 0, 40)
                if mode("woman", (d.values[0], 0.0, d.values[1]), d.values[2]) == "commanded")
     with tempfile.TemporaryDirectory() as store:
@@ -182,37 +186,60 @@ def test_a_random_target_down_from_a_box_is_flown_by_the_commanded_take_off_as_i
     assert result["measured"]["outcome"] == plan["measured"]["outcome"] == "success"
 
 
-TURNED_TARGETS = 3          # random targets in the woman's turned commanded region, outside her measured jumps' region
+TURNED_TARGETS = 3          # random targets in a character's turned commanded region, outside its measured jumps' region
 
 
-def test_random_lateral_targets_turn_first_and_land_balanced(tmp_path):
+@pytest.mark.parametrize("character", ["man", "woman"])
+def test_random_lateral_targets_turn_first_and_land_balanced(character, tmp_path):
     """A target to the side in the turned commanded region: planned by planning/commanded.py's plan_turned
-    (one hop turns her toward it, then the commanded take-off forward), then run as a user's request."""
+    (one hop turns the body toward it, then the commanded take-off forward), then run as a user's request."""
     from sim_core.skills.jump_to_target.behaviour import read_plans
-    from sim_core.skills.jump_to_target.commanded import CONSTANTS, commanded_way
-    draws = draw_requests(SEED, ["man", "woman"], 0, 0, 0, 0, 0, TURNED_TARGETS)
-    assert [d.character for d in draws] == ["woman"] * TURNED_TARGETS        # the man has no commanded region
-    assert all(commanded_way("woman", d.values[:2], d.values[2]) == "turned" for d in draws)
+    from sim_core.skills.jump_to_target.commanded import commanded_way, planner_constants
+    draws = draw_requests(SEED, [character], 0, 0, 0, 0, 0, TURNED_TARGETS)
+    assert [d.character for d in draws] == [character] * TURNED_TARGETS
+    assert all(commanded_way(character, d.values[:2], d.values[2]) == "turned" for d in draws)
     results = [evaluate(d, 24, str(tmp_path)) for d in draws]
     lines = [result_line(r) for r in results]
-    plans = read_plans("woman", tmp_path)
+    plans = read_plans(character, tmp_path)
+    c = planner_constants(character)
     assert len(plans) == TURNED_TARGETS and all(p["settings"]["turn_angle"] != 0.0 for p in plans)
-    assert all(p["trials"] <= CONSTANTS.turn_aim_trials + CONSTANTS.landing_trials - 1 for p in plans)
+    assert all(p["trials"] <= c.turn_aim_trials + c.landing_trials - 1 for p in plans)
     assert sum(r["passed"] for r in results) >= TURNED_TARGETS - 1, "\n".join(lines)
     assert max(r["seconds"] for r in results) <= 60, "\n".join(lines)
 
 
-def test_turn_headings_replay():
-    """The woman's measured turn map (turn_headings, planning/turn_map.py): a stored turn_angle's hop reaches
+@pytest.mark.parametrize("character", ["man", "woman"])
+def test_turn_headings_replay(character):
+    """A character's measured turn map (turn_headings, planning/turn_map.py): a stored turn_angle's hop reaches
     its stored heading again (the same simulation), and turn_for_heading picks the stored angle nearest a heading."""
     import random
     from sim_core.planning.turn_map import hop_heading
     from sim_core.skills.jump_to_target.commanded import table, turn_for_heading
-    pairs = table("woman")["turn_headings"]
+    pairs = table(character)["turn_headings"]
     k = random.Random(SEED).randrange(len(pairs["turn_angle"]))           # one seeded row
-    heading, lowest, began = hop_heading("woman", pairs["turn_angle"][k])
+    heading, lowest, began = hop_heading(character, pairs["turn_angle"][k])
     assert began and abs(heading - pairs["heading"][k]) < 1e-4
-    assert turn_for_heading(table("woman"), pairs["heading"][k] + 1e-6) == pairs["turn_angle"][k]
+    assert turn_for_heading(table(character), pairs["heading"][k] + 1e-6) == pairs["turn_angle"][k]
+
+
+def test_the_mans_commanded_table_is_the_womans_scaled_by_fig_6():
+    """The man's commanded take-off (tools/scale_commanded.py): his table's settings are the woman's scaled by
+    Fig. 6 (adapt/settings.scale_settings, mass mode), his leap constants hers by scale_constants, with his
+    thrust's extension slowed (commanded_timing_scale > 1: his torque limits are 1.54 x hers where Fig. 6 scales
+    a torque by M L = 2.08; docs/jump_to_target.md, seventeenth session). No simulation."""
+    from sim_core.adapt.settings import MASS, CharacterPair, scale_constants, scale_settings
+    from sim_core.character.spec import load_character
+    from sim_core.control.leap import LEAP_CONSTANTS, LEAP_SETTINGS, leap_constants
+    from sim_core.skills.jump_to_target.commanded import table
+    pair = CharacterPair(load_character("woman"), load_character("man"))
+    scaled = scale_settings(table("woman")["settings"], LEAP_SETTINGS, pair, MASS)
+    assert table("man")["settings"] == pytest.approx(scaled, abs=1e-6)
+    hers = vars(leap_constants("woman"))
+    constants = scale_constants({n: hers[n] for n in LEAP_CONSTANTS.by_name if n.startswith("commanded_")
+                                 and n != "commanded_timing_scale"}, LEAP_CONSTANTS, pair, MASS)
+    his = vars(leap_constants("man"))
+    assert {n: his[n] for n in constants} == pytest.approx(constants, abs=1e-6)
+    assert his["commanded_timing_scale"] > 1.0 == hers["commanded_timing_scale"]
 
 
 def test_sideways_targets_turn_a_quarter_first_by_the_measured_line_nearest():
@@ -232,7 +259,7 @@ def test_sideways_targets_turn_a_quarter_first_by_the_measured_line_nearest():
         == "sideways"
     assert commanded_way("woman", (0.0, region["distance"][1] + 0.05), middle[1]) is None
     assert commanded_way("woman", (0.0, middle[0]), region["air_time"][1] + 0.05) is None
-    assert commanded_way("man", (0.0, middle[0]), middle[1]) is None          # the man has no commanded table
+    assert commanded_way("man", (0.0, middle[0]), middle[1]) is None          # the man's table has no sideways_region
     k = random.Random(SEED).choice([i for i, stood in enumerate(rows["stood"]) if stood])     # one seeded row
     row = quarter_line("woman", rows["turn_first"][k])
     assert all(abs(row[name] - rows[name][k]) < 1e-4 for name in ("heading", "feet_x", "feet_y", "line", "stood"))

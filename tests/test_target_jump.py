@@ -311,7 +311,17 @@ def test_the_commanded_take_off_flies_further_for_a_further_target():
     assert speeds[1] > speeds[0] + 0.3 and landed[1] > landed[0] + 0.3
 
 
-def test_the_landings_arm_feedback_turns_the_trunk_back_on_a_commanded_flight():
+@pytest.fixture
+def leap_any_take_off(monkeypatch):
+    """The man's commanded take-off as the twelfth and fourteenth sessions measured it (leap_any.json's
+    commanded_* constants), not his own of the seventeenth (his leap table's, docs/jump_to_target.md)."""
+    import sim_core.skills.leap.behaviour as leap_skill
+    from sim_core.control.leap import CONSTANTS
+    own = leap_skill.leap_constants
+    monkeypatch.setattr(leap_skill, "leap_constants", lambda character: CONSTANTS if character == "man" else own(character))
+
+
+def test_the_landings_arm_feedback_turns_the_trunk_back_on_a_commanded_flight(leap_any_take_off):
     """The landing's arms fed back on the pelvis pitch (landing_arm_pitch_gain; control/leap.py's
     Landing): the man's commanded flight to 1.38 m in 0.46 s (his stored 1.3 m plan, crouch 0.61 m, 0.03 m
     ahead) lands with the trunk pitched less with the arms fed back than with the arms swung to 0.75 rad
@@ -342,7 +352,7 @@ def test_the_landings_arm_feedback_turns_the_trunk_back_on_a_commanded_flight():
     assert pitches[1] < pitches[0] - 2.0
 
 
-def test_the_landings_recovery_step_is_reported_and_keeps_the_touchdown_landing_point():
+def test_the_landings_recovery_step_is_reported_and_keeps_the_touchdown_landing_point(leap_any_take_off):
     """The landing's recovery step (landing_recovery_step; control/recovery_step.py via the leap): the man's
     commanded flight to 1.38 m in 0.46 s lands pitched forward; with the step on, the capture point past his
     feet after the impact starts a step, reported as a 'recovery_step' event and in the metrics, and the

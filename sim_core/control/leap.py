@@ -101,6 +101,10 @@ LEAP_CONSTANTS = Schema(
              "kept upright while the legs swing ahead for the landing)"),
     constant("commanded_spin_gain", "rad/(kg m²/s)", 0.0, 0.5,
              "commanded take-off: hip extension per kg m²/s of spin forward of the commanded"),
+    constant("commanded_timing_scale", "1", 0.5, 2.0,
+             "commanded take-off: its thrust's extension times (broad_timing, vertical_timing) times this - a body "
+             "weaker for its size than the one the take-off was designed on extends more slowly, so that its "
+             "joints' torques stay inside their limits (torque ~ 1/time^2; docs/jump_to_target.md)"),
     constant("landing_torque_limit", "1", 0.1, 10.0,
              "landing joints use at most this share of the human torque limits, whatever the model's strength "
              "(stiffer legs land harder, not better)"),

@@ -42,7 +42,8 @@ from ..ballistics import flat_air_time
 from ..character.spec import load_character
 from ..control.leap import LEAP_SETTINGS
 from ..errors import ParameterError
-from ..skills.jump_to_target.commanded import (CONSTANTS, commanded_settings, commanded_way, quarter_for_point, table,
+from ..skills.jump_to_target.commanded import (commanded_settings, commanded_way, planner_constants, quarter_for_point,
+                                               table,
                                                turn_for_heading, turned_settings)
 from .land import candidates, foot_step
 from .trials import Trials
@@ -64,9 +65,9 @@ def plan_commanded(character: str, target, air_time: float, trial, budget: int, 
     take-off (see the module). ``trial``: settings -> (cost, measured) (planning.jump.JumpTrial);
     ``judge(measured)`` -> (landed on the target, within TARGETS.md's tolerances and balanced);
     ``body``, ``constants``: the character's commanded table and the planner's constants (default: the
-    stored ones; tools/commanded_jumps.py tries others). Returns the planner's {"settings", "measured",
-    "trials", "found"}."""
-    c, body = constants or CONSTANTS, body or table(character)
+    stored ones, planner_constants; tools/commanded_jumps.py tries others). Returns the planner's
+    {"settings", "measured", "trials", "found"}."""
+    c, body = constants or planner_constants(character), body or table(character)
     way = commanded_way(character, target, air_time)
     if way in ("turned", "sideways"):
         return plan_turned(character, target, air_time, trial, budget, judge, progress, cancelled, body, c, way)

@@ -1,8 +1,8 @@
 """The commanded take-off's table (issue 29): where a character's jump to a target is flown by the
 commanded take-off (control/commanded_thrust.py) and with which settings.
 
-A character with a table ``jump_commanded_<character>.json`` (the woman's; the man's commanded
-flights land pitched forward and fall, docs/jump_to_target.md) holds:
+A character with a table ``jump_commanded_<character>.json`` (the woman's; the man's, hers scaled by
+Fig. 6 with his thrust slowed for his strength, tools/scale_commanded.py and docs/jump_to_target.md) holds:
 
 - ``settings``: the leap's settings a commanded plan starts from (the crouch's pitch and lean, the
   thrust's, the landing's with the arms' pitch feedback) - its crouch height is replaced by
@@ -36,7 +36,8 @@ flights land pitched forward and fall, docs/jump_to_target.md) holds:
   lands harder).
 
 ``jump_commanded_any.json`` holds the planner's constants (the aim's bound and tolerances, the
-landing plan's bound). The leap's ``commanded_*`` constants are the character's own in its leap
+landing plan's bound); a character's table may hold its own in a "constants" section
+(planner_constants). The leap's ``commanded_*`` constants are the character's own in its leap
 table's "constants" (control.leap.leap_constants). Only reads the tables: the planning is planning's.
 """
 from __future__ import annotations
@@ -49,7 +50,7 @@ from ...ballistics import flat_air_time
 from ...control.leap import LEAP_SETTINGS
 from ...schema import Schema
 from ...tuned import TableType, load_fresh, register as register_table
-from ...tuned.constants import constant, constant_rows, read_constants, with_constants
+from ...tuned.constants import constant, constant_rows, own_constants, read_constants, with_constants
 
 COMMANDED_CONSTANTS = Schema(
     constant("aim_trials", "count", 1, 20,
@@ -72,6 +73,12 @@ COMMANDED_CONSTANTS = Schema(
              "step (planning/land.py) more and less, two, ...: this many placements in all, its own the first"),
 )
 CONSTANTS = read_constants("jump_commanded", COMMANDED_CONSTANTS)
+
+
+def planner_constants(character: str):
+    """The planner's constants for ``character``: jump_commanded_any's, each one the character's own table's
+    "constants" section holds replaced (the man's aim needs more jumps than the woman's)."""
+    return own_constants("jump_commanded", character, CONSTANTS)
 
 
 def _rows(body: dict):

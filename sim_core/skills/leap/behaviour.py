@@ -229,6 +229,7 @@ class Leap(Sequence):
                             liftoff_roll=cfg.get("liftoff_roll", 0.0), thrust_lean=cfg.get("thrust_lean", 0.0),
                             spin_hold=cfg.get("spin_hold", 0.0))
             if commanded:
+                settings["timing"] = tuple(t * constants.commanded_timing_scale for t in settings["timing"])
                 # after a turn (turn_angle, or turn_first's quarter turn) the flight is aimed from the start's feet, the
                 # spin about the new heading's side
                 turned = dict(origin=origin, turned=True) if cfg.get("turn_angle", 0.0) or cfg.get("turn_first", 0.0) else {}
