@@ -43,8 +43,7 @@ from ..character.spec import load_character
 from ..control.leap import LEAP_SETTINGS
 from ..errors import ParameterError
 from ..skills.jump_to_target.commanded import (commanded_settings, commanded_way, planner_constants, quarter_for_point,
-                                               table,
-                                               turn_for_heading, turned_settings)
+                                               table, turn_for_heading, turned_settings)
 from .land import candidates, foot_step
 from .trials import Trials
 
