@@ -46,7 +46,8 @@ SIDEWAYS_STREAM = 32                                        # the sideways comma
 BROAD_TOLERANCE = 0.1                                       # TARGETS.md: broad jump travel within 10 %
 DRAW_DECIMALS = 3                                           # requests are drawn to the millimetre / millisecond
 DEFAULT_BUDGET = 24                                         # trials of a plan: two of the planner's batches
-SKILLS = ("jump", "box", "commanded", "turned", "sideways", "leap", "broad")
+JUMP_SKILLS = ("jump", "box", "commanded", "turned", "sideways")    # draws run as a jump to a target (_jump)
+SKILLS = JUMP_SKILLS + ("leap", "broad")
 REGION_DRAWS = 1_000_000                                    # box draws tried for one target in the region offered
 SHARE_DRAWS = 20_000                                        # box draws that measure the region's share of the box
 
@@ -64,7 +65,7 @@ class Draw:
     values: tuple
 
     def describe(self) -> str:
-        if self.skill in ("jump", "commanded", "turned", "sideways"):
+        if self.skill in JUMP_SKILLS and self.skill != "box":
             x, y, t = self.values
             return f"jump to ({x:.3f}, {y:+.3f}) m in {t:.3f} s"
         if self.skill == "box":
@@ -115,18 +116,14 @@ def draw_requests(seed: int, characters, jumps: int, leaps: int, broads: int, bo
     for character in characters:
         drawn += [Draw("box", character, draw_box_jump(boxes_rng, character)) for _ in range(boxes)]
     from .skills.jump_to_target.commanded import table
-    commanded_rng = np.random.default_rng((seed, COMMANDED_STREAM))
-    for character in characters:
-        if commanded and table(character) is not None:
-            drawn += [Draw("commanded", character, draw_commanded(commanded_rng, character)) for _ in range(commanded)]
-    turned_rng = np.random.default_rng((seed, TURNED_STREAM))
-    for character in characters:
-        if turned and (table(character) or {}).get("turned_region") is not None:
-            drawn += [Draw("turned", character, draw_turned(turned_rng, character)) for _ in range(turned)]
-    sideways_rng = np.random.default_rng((seed, SIDEWAYS_STREAM))
-    for character in characters:
-        if sideways and (table(character) or {}).get("sideways_region") is not None:
-            drawn += [Draw("sideways", character, draw_sideways(sideways_rng, character)) for _ in range(sideways)]
+    # the commanded take-off's regions, each from its own stream, for the characters whose table has the region
+    for skill, count, stream, region, draw in (("commanded", commanded, COMMANDED_STREAM, "region", draw_commanded),
+                                               ("turned", turned, TURNED_STREAM, "turned_region", draw_turned),
+                                               ("sideways", sideways, SIDEWAYS_STREAM, "sideways_region", draw_sideways)):
+        stream_rng = np.random.default_rng((seed, stream))
+        for character in characters:
+            if count and (table(character) or {}).get(region) is not None:
+                drawn += [Draw(skill, character, draw(stream_rng, character)) for _ in range(count)]
     return drawn
 
 
@@ -252,7 +249,7 @@ def evaluate(draw: Draw, budget: int, store: str) -> dict:
     began = time.perf_counter()
     result = {"draw": draw}
     try:
-        result.update(_jump(draw, budget) if draw.skill in ("jump", "box", "commanded", "turned", "sideways") else _leap(draw))
+        result.update(_jump(draw, budget) if draw.skill in JUMP_SKILLS else _leap(draw))
     except ParameterError as exc:
         result.update(refused=str(exc), passed=False)
     finally:

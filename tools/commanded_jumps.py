@@ -46,11 +46,12 @@ def base_settings(character: str, forward: float, overrides: list[str]) -> dict:
                 if abs(p["request"]["target_x"] - forward) < 1e-6 and p["request"]["target_y"] == 0
                 and p["request"]["target_z"] == 0 and p["request"].get("obstacle_height", 0) == 0
                 and p["request"]["air_time"] == GROUND_AIR_TIME)
-    settings = dict(plan["settings"], commanded_takeoff=1.0)
-    for item in overrides:
-        name, value = item.split("=")
-        settings[name] = float(value)
-    return settings
+    return dict(plan["settings"], commanded_takeoff=1.0, **assignments(overrides))
+
+
+def assignments(items: list[str]) -> dict:
+    """``name=value`` strings (--set, --const) as a dict of floats."""
+    return {name: float(value) for name, value in (item.split("=") for item in items)}
 
 
 def crouch_pairs(crouches: str | None, settings: dict) -> dict:
@@ -117,7 +118,7 @@ def main(argv=None) -> int:
                              "planner's landing_trials), the aimed command kept; the first that ends balanced and hits")
     parser.add_argument("--landings", help="targets (m, comma-separated) whose flights try LANDING_VARIANTS")
     args = parser.parse_args(argv)
-    overrides = {name: float(value) for name, value in (item.split("=") for item in args.const)}
+    overrides = assignments(args.const)
     for name, value in overrides.items():
         setattr(leap.CONSTANTS, name, value)
     if overrides:           # a character's own constants (its leap table's section) overridden too
@@ -127,7 +128,7 @@ def main(argv=None) -> int:
     stored = commanded_table(args.character) if args.table else None
     if args.table and stored is None:
         parser.error(f"the {args.character} has no commanded table (jump_commanded_{args.character}.json)")
-    settings = (dict(stored["settings"], commanded_takeoff=1.0, **{n: float(v) for n, v in (i.split("=") for i in args.set)})
+    settings = (dict(stored["settings"], commanded_takeoff=1.0, **assignments(args.set))
                 if stored else base_settings(args.character, args.base, args.set))
     started = time.time()
     if args.sweep:
@@ -168,7 +169,8 @@ def main(argv=None) -> int:
         # the skill's planner (planning/commanded.py) with these settings and crouch pairs as its table, and
         # --aim / --plan-landing as its bounds
         body = {"settings": settings, "crouch_by_air_time": (stored["crouch_by_air_time"] if stored and not args.crouch_by_air_time
-                                                             else crouch_pairs(args.crouch_by_air_time, settings))}
+                                                             else crouch_pairs(args.crouch_by_air_time, settings)),
+                **({"down_settings": stored["down_settings"]} if stored and "down_settings" in stored else {})}
         constants = SimpleNamespace(**{**vars(CONSTANTS), "aim_trials": args.aim,
                                        "landing_trials": max(args.plan_landing, 1)})
         errors, late, hits, balanced, hits_balanced, planned, trials, stepped = [], [], 0, 0, 0, 0, [], 0

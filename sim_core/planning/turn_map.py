@@ -13,8 +13,10 @@ from __future__ import annotations
 
 import math
 
+import mujoco
 import numpy as np
 
+from ..control.measure import yaw_of
 from ..control.turn import jump_start, turn_duration
 from ..simulate import RunRequest, run
 from ..skills.jump_to_target.behaviour import leap_params, scene_for
@@ -61,7 +63,8 @@ def hop_stance(character: str, angle: float, setting: str = "turn_angle") -> tup
     a = trajectory.arrays
     begun = jump_start(trajectory)
     k = min(int(np.searchsorted(a["time"], begun)), len(a["time"]) - 1) if begun else len(a["time"]) - 1
-    w, x, y, z = a["body_quat"][k, trajectory.body_index("PELVIS")]
-    heading = math.atan2(2 * (w * z + x * y), 1 - 2 * (y * y + z * z))
+    pelvis = np.empty(9)
+    mujoco.mju_quat2Mat(pelvis, a["body_quat"][k, trajectory.body_index("PELVIS")])
+    heading = yaw_of(pelvis)
     feet = a["body_pos"][k, [trajectory.body_index("FOOTR"), trajectory.body_index("FOOTL")], :2].mean(axis=0)
     return heading, float(a["com"][:k + 1, 2].min()), bool(begun), (float(feet[0]), float(feet[1]))
