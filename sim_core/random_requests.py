@@ -436,7 +436,7 @@ def main(argv=None) -> int:
                "one whose measured jump's line passes nearest the target) and flies the commanded take-off forward "
                "(sim_core.planning.commanded.plan_turned). " if args.sideways else "")
             + ("Long air time targets (--long) are drawn uniformly in the long air times' commanded region of each "
-               "character that has one (the table's long_region: the woman's) and drawn again until its measured jumps do "
+               "character that has one (the table's long_region: the man's and the woman's) and drawn again until its measured jumps do "
                "not offer them: the commanded take-off with the leap's vertical thrust and its own crouch pairs "
                "(skills/jump_to_target/commanded.py long_body), aimed as the commanded targets. " if args.long else "")
             + "A target without a stored plan is planned first (into a temporary "
