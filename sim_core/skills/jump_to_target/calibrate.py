@@ -1056,6 +1056,7 @@ are as before): fresh seed 11: **19 / 20 (95 %)** within 5 cm and 0.05 s and bal
 worst 8.4 s (the miss (1.263, +0.019) m in 0.527 s: 11.1 cm off after 10 trials); fresh seed 13: **18 / 20 (90 %)**, a
 median of 2.2 s, worst 6.5 s (the misses (0.854, -0.019) m in 0.596 s, 8.0 cm off after 9 trials, and (1.357, -0.007) m in
 0.673 s, 5.1 cm off when her 5 aimed jumps ran out - `aim_trials` is hers for every row; the tool's runs above aimed 9).
+Her straight commanded targets are planned as before (`--commanded 20`, seed 71: 20 / 20, a median of 3.1 s, worst 4.2 s).
 Her share of issue 29's box (seed 29's 20,000 draws, `random_requests.region_share`): 23.1 % -> 23.9 % - the long row,
 as every straight commanded region, is the start's line +-2 cm (the commanded flight does not steer sideways), a thin
 slice of the +-0.6 m box; most of the gain is the far, long flights (beyond 1.25 m, and 0.52-0.7 s where her measured
