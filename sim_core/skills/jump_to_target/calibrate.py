@@ -1025,8 +1025,8 @@ timing (`broad_timing` 0.15 / 0.2 / 0.45 s, ankle gain 3.6), the vertical leap o
 (scratch scripts running `tools/commanded_jumps.py`'s `jump`, her table's settings with the changes named, forward aims
 0.6-1.8 m, commanded air time 0.6 s):
 1. **the broad thrust with the vertical leap's lower damping** (her leap table's rows above 0.4 m rise use
-   `thrust_damping` 0.3; her commanded settings 0.79): crouch 0.45 m, damping 0.3: 0.555-0.685 s, but landing 0.57-0.63
-   m per commanded metre and every other one fell or skidded; damping 0.5: 0.56-0.61 s. Longer, not far enough, and
+   `thrust_damping` 0.3; her commanded settings 0.79): crouch 0.45 m, damping 0.3: 0.555-0.685 s, but landing 0.5-0.65
+   m per commanded metre (2.5 m aimed: 1.56 m) and 2 of 5 fell; damping 0.5: 0.56-0.61 s. Longer, not far enough, and
    damping is a second knob beside the crouch. Not kept.
 2. **the vertical leap's thrust (kept)**: `vertical_thrust` 1, the rest of her commanded settings as they are. The crouch
    now sets air times from 0.5 to 0.73 s, nearly whatever the aim (crouch m: air time s at aims 0.6 / 1.2 / 1.8 m - 0.45:
