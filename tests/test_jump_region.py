@@ -157,7 +157,9 @@ def test_a_target_outside_both_regions_is_refused_naming_both(monkeypatch):
                          "at a bearing of 0-26 deg to either side, air_time 0.4-0.48 s, and down from a box 0.25-0.75 m "
                          "high where the same lift-off on flat ground would land in that region in 0.4-0.49 s "
                          "(T0 = air_time - 2 height / (g air_time), at target_x T0 / air_time), and turned a quarter "
-                         "first for a distance of 1-1.2 m at a bearing of 87-90 deg to either side, air_time 0.4-0.44 s")
+                         "first for a distance of 1-1.2 m at a bearing of 87-90 deg to either side, air_time 0.4-0.44 s, "
+                         "and for long air times (the leap's vertical thrust) on flat ground for target_x 0.5-1.6 m, "
+                         "target_y -0.02-0.02 m, air_time 0.52-0.7 s")
     assert "the commanded take-off is offered on flat ground for target_x 0.85-1.2 m" in region_refusal("man", (1.0, 0.4), 0.6)
 
 
@@ -271,3 +273,42 @@ def test_sideways_targets_turn_a_quarter_first_by_the_measured_line_nearest():
         plan, = read_plans("woman", Path(store))
     assert plan["settings"]["turn_first"] != 0.0 and plan["settings"]["commanded_takeoff"] == 1.0
     assert result["passed"], result_line(result)
+
+
+LONG_TARGETS = 3            # random targets in a character's long air times' region, outside its measured jumps' region
+
+
+@pytest.mark.parametrize("character", ["man", "woman"])
+def test_random_long_air_times_are_flown_by_the_vertical_thrust_and_land_balanced(character, tmp_path):
+    """Long air times on flat ground (the table's long_region, beyond the broad thrust's deepest crouch): planned
+    commanded with the table's long row (the leap's vertical thrust, its own crouch pairs, the landing's recovery
+    step; commanded.long_body), then run as a user's request; beyond the region refused naming it."""
+    from sim_core.skills.jump_to_target.behaviour import read_plans
+    from sim_core.skills.jump_to_target.commanded import commanded_way, planner_constants, table
+    from sim_core.skills.jump_to_target.region import mode
+    body = table(character)
+    region = body["long_region"]
+    x, t = 0.5 * sum(region["target_x"]), 0.5 * sum(region["air_time"])
+    assert region["air_time"][0] <= 0.55 and region["air_time"][1] >= 0.65 > body["region"]["air_time"][1]
+    assert commanded_way(character, (x, 0.0), t) == "long"
+    assert commanded_way(character, (x, 0.0), region["air_time"][1] + 0.05) is None
+    assert commanded_way(character, (region["target_x"][1] + 0.05, 0.0), t) is None
+    assert commanded_way(character, (x, 0.0, -0.3), t) is None      # flat ground only
+    refusal = region_refusal(character, (x, 0.0), region["air_time"][1] + 0.1)
+    assert "\n" not in refusal and refusal.endswith(
+        f"and for long air times (the leap's vertical thrust) on flat ground for target_x {region['target_x'][0]:g}-"
+        f"{region['target_x'][1]:g} m, target_y {region['target_y'][0]:g}-{region['target_y'][1]:g} m, air_time "
+        f"{region['air_time'][0]:g}-{region['air_time'][1]:g} s")
+    draws = draw_requests(SEED, [character], 0, 0, 0, long=LONG_TARGETS)
+    assert [d.character for d in draws] == [character] * LONG_TARGETS
+    assert all(commanded_way(character, d.values[:2], d.values[2]) == "long"
+               and mode(character, d.values[:2], d.values[2]) == "commanded" for d in draws)
+    results = [evaluate(d, 24, str(tmp_path)) for d in draws]
+    lines = [result_line(r) for r in results]
+    plans = read_plans(character, tmp_path)
+    c = planner_constants(character)
+    assert len(plans) == LONG_TARGETS
+    assert all(p["settings"]["vertical_thrust"] == 1.0 and p["settings"]["commanded_takeoff"] == 1.0 for p in plans)
+    assert all(p["trials"] <= c.aim_trials + c.landing_trials - 1 for p in plans)
+    assert sum(r["passed"] for r in results) >= LONG_TARGETS - 1, "\n".join(lines)
+    assert max(r["seconds"] for r in results) <= 60, "\n".join(lines)

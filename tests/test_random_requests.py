@@ -97,3 +97,19 @@ def test_sideways_draws_are_the_womans_to_either_side_in_her_sideways_region():
         assert commanded_way("woman", (x, y), t) == "sideways" and x >= 0.0
         assert region["distance"][0] - 1e-3 <= abs(y) <= region["distance"][1] and region["air_time"][0] <= t <= region["air_time"][1]
     assert {y > 0 for _, y, _ in (d.values for d in side)} == {True, False}     # left and right
+
+
+def test_long_draws_are_in_each_long_region_outside_the_measured_jumps():
+    from sim_core.skills.jump_to_target.commanded import commanded_way, table
+    from sim_core.skills.jump_to_target.region import offered
+    plain = draw_requests(1, ["man", "woman"], 2, 1, 1, commanded=2)
+    drawn = draw_requests(1, ["man", "woman"], 2, 1, 1, commanded=2, long=3)
+    assert drawn[:len(plain)] == plain                       # their own stream: the other draws unchanged
+    long = drawn[len(plain):]
+    assert [d.character for d in long] == ["man"] * 3 + ["woman"] * 3 and all(d.skill == "long" for d in long)
+    for d in long:
+        x, y, t = d.values
+        region = table(d.character)["long_region"]
+        assert commanded_way(d.character, (x, y), t) == "long" and not offered(d.character, (x, y), t)
+        assert all(region[k][0] <= v <= region[k][1] for k, v in zip(("target_x", "target_y", "air_time"), d.values))
+    assert long != draw_requests(2, ["man", "woman"], 2, 1, 1, commanded=2, long=3)[len(plain):]

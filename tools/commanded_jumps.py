@@ -8,6 +8,7 @@ docs/jump_to_target.md ("A commanded take-off"):
     tools/commanded_jumps.py --character man --base 1.3 --set com_offset=0.03 --random 30 --seed 29
     tools/commanded_jumps.py ... --random 10 --seed 30 --fixed-air-time 0.45 --aim 5   # aim moved by a secant
     tools/commanded_jumps.py ... --landings 0.8,1.0,1.3,1.6,1.9      # landing variants per target
+    tools/commanded_jumps.py --character woman --table --long --random 20 --seed 7 --air-times 0.52,0.7 --aim 9 --plan-landing 9
 
 ``--random`` plans each target with the skill's planner (sim_core/planning/commanded.py), these
 settings and crouch pairs standing in for the character's jump_commanded table and ``--aim`` /
@@ -30,7 +31,7 @@ from sim_core.planning.commanded import plan_commanded
 from sim_core.planning.jump import JumpTrial, lands_on, within_tolerance
 from sim_core.simulate import RunRequest, run
 from sim_core.skills.jump_to_target.behaviour import GROUND_AIR_TIME, landing_measures, leap_params, read_plans, scene_for
-from sim_core.skills.jump_to_target.commanded import CONSTANTS, table as commanded_table
+from sim_core.skills.jump_to_target.commanded import CONSTANTS, long_body, table as commanded_table
 
 WINDUP = 1.25                       # s: the requests' wind-up time (the report's)
 FORWARD = {"man": 1.9, "woman": 1.6}    # m: issue 29's forward range ends here (from 0.5 m)
@@ -90,6 +91,8 @@ def main(argv=None) -> int:
     parser.add_argument("--set", action="append", default=[])
     parser.add_argument("--table", action="store_true",
                         help="start from the character's commanded table (its settings and crouch pairs) instead of --base's plan")
+    parser.add_argument("--long", action="store_true",
+                        help="with --table: its long air times' row (long_settings over its settings, long_crouch_by_air_time)")
     parser.add_argument("--const", action="append", default=[])
     parser.add_argument("--sweep", help="first,last,step m of forward targets")
     parser.add_argument("--air-time", type=float, default=GROUND_AIR_TIME)
@@ -128,6 +131,10 @@ def main(argv=None) -> int:
     stored = commanded_table(args.character) if args.table else None
     if args.table and stored is None:
         parser.error(f"the {args.character} has no commanded table (jump_commanded_{args.character}.json)")
+    if args.long:
+        if stored is None or "long_settings" not in stored:
+            parser.error(f"--long: the {args.character}'s commanded table has no long air times' row (long_settings)")
+        stored = long_body(stored)
     settings = (dict(stored["settings"], commanded_takeoff=1.0, **assignments(args.set))
                 if stored else base_settings(args.character, args.base, args.set))
     started = time.time()

@@ -18,6 +18,9 @@ a few simulated jumps, not a search over the leap's settings:
    (planning.land.candidates), at most ``landing_trials`` placements in all; the first that ends
    balanced on the target is the plan.
 
+A long air time on flat ground, in the table's ``long_region`` beyond its ``region``: the same aim with the
+table read by commanded.long_body (the leap's vertical thrust and its own crouch pairs).
+
 A target beyond the table's straight region's target_y, in its ``turned_region`` (plan_turned): the
 jump turns first (one hop, the leap's ``turn_angle``) and flies the commanded take-off forward; the aim
 moves the commanded distance along the target's bearing by a secant on the landing's distance along it,
@@ -42,8 +45,8 @@ from ..ballistics import flat_air_time
 from ..character.spec import load_character
 from ..control.leap import LEAP_SETTINGS
 from ..errors import ParameterError
-from ..skills.jump_to_target.commanded import (commanded_settings, commanded_way, planner_constants, quarter_for_point,
-                                               table, turn_for_heading, turned_settings)
+from ..skills.jump_to_target.commanded import (commanded_settings, commanded_way, long_body, planner_constants,
+                                               quarter_for_point, table, turn_for_heading, turned_settings)
 from .land import candidates, foot_step
 from .trials import Trials
 
@@ -70,6 +73,8 @@ def plan_commanded(character: str, target, air_time: float, trial, budget: int, 
     way = commanded_way(character, target, air_time)
     if way in ("turned", "sideways"):
         return plan_turned(character, target, air_time, trial, budget, judge, progress, cancelled, body, c, way)
+    if way == "long" and "long_settings" in body:      # long air times: the same aim with the vertical thrust's settings and crouch pairs
+        body = long_body(body)
     x = float(target[0])
     bound = min(budget, c.aim_trials + c.landing_trials - 1)
     trials = Trials(trial, bound, progress, cancelled)

@@ -28,6 +28,11 @@ Fig. 6 with his thrust slowed for his strength, tools/scale_commanded.py and doc
   ``turn_first``, ``heading``, ``feet_x``, ``feet_y``, ``line``, ``stood``) is each ``turn_first`` of a fine grid
   measured (planning/turn_map.py quarter_line): where the hops left the feet, and the line a commanded jump from
   there flew along (rad), whether it stood (quarter_for_point);
+- ``long_region`` (optional, with ``long_settings`` and ``long_crouch_by_air_time``): the same keys as ``region``
+  for long air times on flat ground, flown with the leap's vertical thrust (``long_settings``: its faster
+  extension, ``vertical_thrust`` 1, and the landing's recovery step) instead of the broad jump's - the broad
+  thrust's deepest crouch flies ~0.5 s, the vertical one's 0.72 s (docs/jump_to_target.md, "Long air times");
+  ``long_crouch_by_air_time`` its crouch pairs (long_body); a request there outside ``region`` is planned so;
 - ``down_region`` (optional, with ``down_settings``): a jump straight ahead down from a box ``height`` m high
   ([low, high]) is flown by the same take-off where the flight of its lift-off velocity on flat ground lands in
   ``region`` with an air time in ``flat_air_time`` ([low, high] s) (flat_equivalent: the vertical speed's air
@@ -86,8 +91,11 @@ def _rows(body: dict):
         yield "settings", body["settings"]
     if "down_settings" in body:
         yield "down_settings", body["down_settings"]
-    for k, height in enumerate(body.get("crouch_by_air_time", {}).get("crouch_height", [])):
-        yield f"crouch_by_air_time {k}", {"crouch_height": height}
+    if "long_settings" in body:
+        yield "long_settings", body["long_settings"]
+    for key in ("crouch_by_air_time", "long_crouch_by_air_time"):
+        for k, height in enumerate(body.get(key, {}).get("crouch_height", [])):
+            yield f"{key} {k}", {"crouch_height": height}
     for k, angle in enumerate(body.get("turn_headings", {}).get("turn_angle", [])):
         yield f"turn_headings {k}", {"turn_angle": angle}
     for k, scale in enumerate(body.get("quarter_lines", {}).get("turn_first", [])):
@@ -133,6 +141,13 @@ def commanded_settings(body: dict, air_time: float, aim: float, height: float = 
             "crouch_height": float(np.interp(air_time, pairs["air_time"], pairs["crouch_height"]))}
 
 
+def long_body(body: dict) -> dict:
+    """The table as the long air times' plan reads it (``long_region``): its ``settings`` with ``long_settings``
+    over them and ``long_crouch_by_air_time`` as the crouch pairs (commanded_settings)."""
+    return {**body, "settings": {**body["settings"], **body["long_settings"]},
+            "crouch_by_air_time": body["long_crouch_by_air_time"]}
+
+
 def flat_equivalent(target, air_time: float) -> tuple[float, float]:
     """The flat-ground flight of a jump's lift-off velocity: a target ``target`` (x, y, z) reached in
     ``air_time`` s leaves at x / T forward and at the vertical speed that lands z m higher (ballistics);
@@ -160,7 +175,8 @@ def table(character: str) -> dict | None:
 
 def commanded_way(character: str, target, air_time: float) -> str | None:
     """How the commanded take-off flies the request (x, y[, z], air time): on flat ground "straight"
-    inside the table's ``region`` (bounds included), "turned" inside its ``turned_region`` beyond it
+    inside the table's ``region`` (bounds included), "long" inside its ``long_region`` beyond it (the
+    vertical thrust, long_body), "turned" inside its ``turned_region`` beyond both
     (a turn first, then forward), "sideways" inside its ``sideways_region`` (the quarter turn first); down
     from a box (z < 0) "down" where its ``down_region`` holds the height and the flight's flat equivalent
     lies in ``region``; else None."""
@@ -182,6 +198,9 @@ def commanded_way(character: str, target, air_time: float) -> str | None:
         return "straight" if z == 0.0 else "down"
     if z < 0.0:
         return None
+    long = body.get("long_region")
+    if long is not None and all(long[k][0] <= v <= long[k][1] for k, v in values.items()):
+        return "long"
     if region["target_y"][0] <= y <= region["target_y"][1]:
         return None
     values = {"distance": math.hypot(x, y), "bearing": abs(math.atan2(y, x)), "air_time": float(air_time)}
@@ -190,7 +209,8 @@ def commanded_way(character: str, target, air_time: float) -> str | None:
 
 
 def commanded_offers(character: str, target, air_time: float) -> bool:
-    """Whether the request lies in the character's measured commanded region, straight, turned or sideways (commanded_way)."""
+    """Whether the request lies in the character's measured commanded region, straight, long, turned or sideways
+    (commanded_way)."""
     return commanded_way(character, target, air_time) is not None
 
 
@@ -216,4 +236,9 @@ def commanded_limit(character: str) -> str | None:
         limit += (f", and turned a quarter first for a distance of {sideways['distance'][0]:g}-{sideways['distance'][1]:g} m at "
                   f"a bearing of {math.degrees(sideways['bearing'][0]):.0f}-{math.degrees(sideways['bearing'][1]):.0f} deg to "
                   f"either side, air_time {sideways['air_time'][0]:g}-{sideways['air_time'][1]:g} s")
+    long = body.get("long_region")
+    if long:
+        limit += (f", and for long air times (the leap's vertical thrust) on flat ground for target_x {long['target_x'][0]:g}-{long['target_x'][1]:g} m, "
+                  f"target_y {long['target_y'][0]:g}-{long['target_y'][1]:g} m, air_time "
+                  f"{long['air_time'][0]:g}-{long['air_time'][1]:g} s")
     return limit
