@@ -88,6 +88,10 @@ CONSTANTS = read_constants("vault", VAULT_CONSTANTS)
 APPARATUS = ("horse_1987", "table")
 DEFLECTION_JOINT = PROP_BODY_PREFIX + "springboard/deflection"
 
+# the servos with no torque on the horse: the seed's state 4, "no shoulder or wrist torque"
+LIMP_ON_HORSE = ("shoulder_r_z", "shoulder_l_z", "shoulder_r_x", "shoulder_l_x", "shoulder_r_y", "shoulder_l_y",
+                 "wrist_r_x", "wrist_l_x", "wrist_r_y", "wrist_l_y")
+
 PIECE_FROM_VAULT = ("ankle_max", "min_height")   # the step's and the stance's, from catch_ankle, absorb_min_height
 
 VAULT_SETTINGS = Schema(
@@ -129,6 +133,15 @@ VAULT_SETTINGS = Schema(
             "the horse state ends once no hand has pushed on the horse for this long (0: at the first tick without, "
             "so a bounce of the hands ends it and the second flight's servos act while the arms are still on it)"),
     setting("horse_hip", "rad", -1.0, 0.5, "hip angle on the horse (0: the layout)"),
+    setting("horse_gate", "bool", 0.0, 1.0,
+            "1 = the shoulder and wrist servos have no gain at every tick in which any of her bodies pushes on the "
+            "horse, in every state (TARGETS.md V5 read per tick: a bounce of the hands ends the horse state, and the "
+            "second flight's shoulder servos then act whenever the hands are back on the top); their gains come back "
+            "when nothing touches it; 0 = limp only in the horse state"),
+    setting("open_before", "s", 0.0, 0.3,
+            "the first flight's pike also opens (to horse_hip, in open_time) once the hands will reach the horse's top "
+            "within this time at their present vertical speed, so the body is open at the hand touchdown; 0 = only at "
+            "open_pitch"),
     setting("horse_shoulder_gain", "1", 0.0, 10.0,
             "gain factor of the shoulder flexion servos on the horse (0: limp, the seed's 'no shoulder torque'); "
             "above 0 they servo the arms toward horse_shoulder, blocking (the trunk held open over the hands)"),
@@ -780,6 +793,7 @@ class Vault(Sequence):
         self.shoulders = [body("UARMR"), body("UARML")]
         self.forearms = [body("LARMR"), body("LARML")]
         self.feet = [body("FOOTR"), body("FOOTL")]
+        p = ctx.actor.prefix
         hips_x = ["hip_r_x", "hip_l_x"]
         self.hips_x = ctx.servos.indices(hips_x)
         self.hip_x_range = m.jnt_range[[ctx.actor.joint_id(name) for name in hips_x]]
@@ -791,14 +805,17 @@ class Vault(Sequence):
         self._pitch = 0.0
         self._pitch = self._last_raw = math.atan2(*(d.xpos[self.chest] - d.xpos[self.pelvis])[[0, 2]])
         self.deck_dof = int(m.jnt_dofadr[m.joint(DEFLECTION_JOINT).id])
-        p = ctx.actor.prefix
         self.on_board = ApparatusTouch(m, "springboard", FOOT_BODIES, p)
         self.on_horse = ApparatusTouch(m, "vault_table", HAND_BODIES, p)
         self.rotation = FlightRotation(m, d, ctx.actor)
         legs = both_sides({"hip_*_y": 1, "knee_*_y": 1, "ankle_*_y": 1})
         arms_z = ["shoulder_r_z", "shoulder_l_z"]
-        limp = ("shoulder_r_z", "shoulder_l_z", "shoulder_r_x", "shoulder_l_x", "shoulder_r_y", "shoulder_l_y",
-                "wrist_r_x", "wrist_l_x", "wrist_r_y", "wrist_l_y")
+        limp = LIMP_ON_HORSE
+        everyone = [m.body(i).name[len(p):] for i in range(m.nbody) if m.body_rootid[i] == ctx.actor.root]
+        self.touching_horse = ApparatusTouch(m, "vault_table", everyone, p)
+        self.limp_servos = s.indices(list(LIMP_ON_HORSE))
+        self.gated = None                               # horse_gate: the gains taken away while she touches
+        self.hands = [body("HANDR"), body("HANDL")]
         self.pushed = self.deck_going_down = self.opened = False
         self.stepping, self.step_direction = False, 0.0
         self.hands_off_since = None
@@ -1005,7 +1022,7 @@ class Vault(Sequence):
         """Eq. 12: each shoulder at gamma = lambda + phi (the arm along the line to the hand goal)."""
         d, s = self.ctx.data, self.ctx.servos
         phi = self.body_pitch()
-        if not self.opened and phi > self.cfg["open_pitch"]:
+        if not self.opened and (phi > self.cfg["open_pitch"] or self.hands_arrive_within(self.cfg["open_before"])):
             # the pike that sped the rotation opens before the hands land: the straight body and
             # the arms in line carry the horse's push through the COM
             self.opened = True
@@ -1023,6 +1040,32 @@ class Vault(Sequence):
         i = s.indices(["shoulder_r_z", "shoulder_l_z"])
         s.start[i] = s.goal[i] = np.clip(goals, self.shoulder_range[:, 0], self.shoulder_range[:, 1])
         s.t0[i] = t
+
+    def hands_arrive_within(self, before: float) -> bool:
+        """Whether the lower hand, at its present vertical speed, reaches the horse's top within ``before``
+        seconds (0: never asked)."""
+        if before <= 0.0:
+            return False
+        d = self.ctx.data
+        k = min(self.hands, key=lambda h: float(d.xpos[h][2]))
+        above, vz = float(d.xpos[k][2]) - float(self.hand_goal[2]), float(d.subtree_linvel[k][2])
+        return vz < 0.0 and above < -vz * before
+
+    def gate_on_horse(self, t: float) -> None:
+        """horse_gate: at every tick in which any of her bodies pushes on the horse the shoulder and wrist
+        servos have no gain, whatever the state (a state starting meanwhile sets its gains, which are kept
+        to come back); once nothing touches it they get back the gains they had."""
+        s, m = self.ctx.servos, self.ctx.model
+        i = self.limp_servos
+        if self.touching_horse.touching(self.ctx.data):
+            kp = m.actuator_gainprm[i + s.first, 0].copy()
+            kv = -m.actuator_biasprm[i + s.first, 2].copy()
+            if np.any(kp != 0.0) or np.any(kv != 0.0):
+                self.gated = (kp, kv)
+                s.set_gains(i, 0.0, 0.0)
+        elif self.gated is not None:
+            s.set_gains(i, *self.gated)
+            self.gated = None
 
     def palm_law(self, t: float) -> None:
         """palm_down: each wrist (x, then y) turned so that its palm faces straight down, solved from
@@ -1093,6 +1136,8 @@ class Vault(Sequence):
         self.rotation.update(t)
         self.body_pitch()
         super().update(t)
+        if getattr(self, "cfg", None) and self.cfg["horse_gate"]:
+            self.gate_on_horse(t)
 
     @classmethod
     def assess(cls, trajectory):
