@@ -113,6 +113,9 @@ VAULT_SETTINGS = Schema(
             "deck's maximum deflection, the seed's)"),
     setting("push_ankle", "rad", -0.7, 0.9, "ankle angle the push extends to (- plantarflexion)"),
     setting("push_hip", "rad", -1.5, 0.5, "hip angle the push extends to"),
+    setting("board_further", "m", -0.3, 0.5,
+            "the board this much further from the horse than vault_any.json's horse_gap (the gymnast places the board; "
+            "the horse and the mat move, the board and the start stay)"),
     setting("hand_ahead", "m", -0.5, 1.2, "the desired hand position: this far beyond the horse's near edge"),
     setting("flight_hip", "rad", -2.0, 0.5, "hip flexion (-) held in the first flight"),
     setting("open_pitch", "rad", 0.0, 4.0, "the first flight's pike opens once the body has pitched this far forward"),
@@ -285,12 +288,13 @@ VAULT_TABLE = register_table(TableType(
     (vault_row,)))
 
 
-def apparatus_layout(params: dict, character) -> dict:
+def apparatus_layout(params: dict, character, further: float = 0.0) -> dict:
     """Where the board, the horse (or table) and the mat stand: (x, y, ...) tuples for World, along
-    +X from the start's COM at x = 0. The women's horse of Takei's 1987 data (sideways) or the FIG
-    table at the character's height (women's for the woman, men's for the man)."""
+    +X from the start's COM at x = 0, the horse ``further`` (the setting board_further) beyond the
+    constant gap. The women's horse of Takei's 1987 data (sideways) or the FIG table at the character's
+    height (women's for the woman, men's for the man)."""
     board_x = CONSTANTS.board_ahead
-    near = board_x + BOARD_LENGTH / 2 + CONSTANTS.horse_gap
+    near = board_x + BOARD_LENGTH / 2 + CONSTANTS.horse_gap + further
     if APPARATUS[int(round(params["apparatus"]))] == "horse_1987":
         height, length, width = HORSE_1987_HEIGHT, HORSE_1987_LENGTH, HORSE_1987_WIDTH
         length, width = width, length                  # sideways: its 0.35 m across the run
@@ -696,8 +700,10 @@ class Vault(Sequence):
     # ------------------------------------------------------------------ the world and the start
     @classmethod
     def scene(cls, params, world, character=None):
-        """The requested world with the springboard, the horse (or table) and the landing mat."""
-        layout = apparatus_layout(params, character)
+        """The requested world with the springboard, the horse (or table) and the landing mat (the vault
+        rows are set for human strength: another strength runs only with low_level, its settings as set)."""
+        settings = cls.settings_for(params, character.name, "human") if character is not None else params
+        layout = apparatus_layout(params, character, settings["board_further"])
         return dataclasses.replace(world, springboard=layout["springboard"], vault_table=layout["vault_table"],
                                    landing_mat=layout["landing_mat"])
 
@@ -785,7 +791,7 @@ class Vault(Sequence):
         ctx = self.ctx
         m, d, s = ctx.model, ctx.data, ctx.servos
         c = self.cfg = self.settings_for(self.params, ctx.character.name, run_strength(ctx))
-        layout = apparatus_layout(self.params, ctx.character)
+        layout = apparatus_layout(self.params, ctx.character, c["board_further"])
         self.hand_goal = np.array([layout["near_edge"] + c["hand_ahead"], 0.0, layout["height"]])
         self.mat_top = CONSTANTS.mat_thickness
         body = ctx.actor.body_id
