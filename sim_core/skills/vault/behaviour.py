@@ -163,6 +163,9 @@ VAULT_SETTINGS = Schema(
     setting("second_pike", "rad", -2.0, 0.0,
             "hip flexion (-) the second flight starts in; it opens to the layout once the rotation the laid-out body "
             "will still make before the touchdown covers what is left (0: a layout throughout)"),
+    setting("second_pike_at", "m", -1.0, 0.5,
+            "... the pike starts once the COM is this far past the hand goal (0: over it; - before it, for a horse "
+            "contact that leaves the COM behind the hands)"),
     setting("second_open_time", "s", 0.02, 0.5, "... the second flight's pike opens in this time"),
     setting("second_knee", "rad", 0.0, 1.5,
             "... the knees bend this far with the pike and stay bent as it opens, so the legs arrive soft at the mat "
@@ -1105,7 +1108,7 @@ class Vault(Sequence):
         s = self.ctx.servos
         if not self.second_piked:
             # the pike once the COM has passed over the hands' goal on the horse
-            if float(d.subtree_com[root][0]) < self.hand_goal[0]:
+            if float(d.subtree_com[root][0]) < self.hand_goal[0] + c["second_pike_at"]:
                 return
             self.second_piked = True
             self.event(t, "second_pike")
