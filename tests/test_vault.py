@@ -26,6 +26,18 @@ BOW_REACHED = 0.1            # rad: the trunk's pitch comes within this of the b
 # the vault her table held before the hands-only handspring (docs/vault.md "The hands-only handspring ships"):
 # the arms back before the board, the head on the horse, straight legs in the second flight. The variants
 # below were measured on it, so they start from it.
+# her table until 2026-12-06 (vault7): the hands-only vault whose horse state ends at the hands' first bounce,
+# the second flight's shoulder servos then acting on the horse (docs/vault.md "A horse contact with no shoulder
+# torque"). The variants below were measured over it, so they start from it.
+HANDS_ONLY = {"hurdle_lean": -0.3, "hurdle_spin": 0.0, "hurdle_arm": 1.0, "hurdle_swing": 0.0, "block_hip": -0.43,
+              "board_knee": 0.05, "board_arm": 3.0, "board_arm_time": 0.1, "push_time": 0.06, "push_ankle": -0.4,
+              "push_after": -1.0, "push_hip": -0.5, "board_further": 0.0, "hand_ahead": 0.1, "flight_hip": -2.0,
+              "arm_gain": 3.0, "elbow_gain": 5.0, "horse_release": 0.0, "horse_hip": 0.0, "horse_gate": 0.0,
+              "second_pike": -1.23, "second_pike_at": 0.0, "second_knee": 0.9, "touchdown_lean": 0.6, "feet_apart": 0.08,
+              "flight_feet_centre": 0.0, "open_height": 1.3, "landing_knee_flexion": 0.981, "foot_delta": 0.11,
+              "landing_foot_lead_time": 0.103, "spin_placement": 0.191, "open_pitch": 1.6, "open_time": 0.1,
+              "open_before": 0.0, "absorb_kv": 3.0, "absorb_knee": 0.353, "absorb_com_kp": 2.0, "absorb_trunk": 0.315}
+HANDS_ONLY_SET = [f"{k}={v}" for k, v in HANDS_ONLY.items()]     # run_at's overrides
 HEAD_VAULT = {"hurdle_lean": -0.25, "hurdle_arm": -0.5, "board_arm": 1.5, "hand_ahead": 0.0, "second_pike": 0.0,
               "second_knee": 0.0, "touchdown_lean": 0.3, "open_height": 1.5, "landing_knee_flexion": 1.1,
               "landing_sideways": 0.0, "foot_delta": 0.0, "landing_foot_lead_time": 0.2, "spin_placement": 0.1,
@@ -36,7 +48,7 @@ HEAD_VAULT = {"hurdle_lean": -0.25, "hurdle_arm": -0.5, "board_arm": 1.5, "hand_
 def head_vault_params(**over) -> dict:
     """Her row with HEAD_VAULT over it (and ``over`` over that), run as set (low_level)."""
     from sim_core.skills.vault.behaviour import calibrated
-    return {**calibrated("woman", "human")["settings"], **HEAD_VAULT, **over, "low_level": 1.0}
+    return {**calibrated("woman", "human")["settings"], **HANDS_ONLY, **HEAD_VAULT, **over, "low_level": 1.0}
 
 
 @pytest.fixture(scope="module")
@@ -69,7 +81,7 @@ def test_the_six_states_run_once_each_in_order(vault):
     order = [names.index(s) for s in STATES]
     assert order == sorted(order)
     assert all(names.count(s) == 1 for s in STATES[:6])
-    assert "max_deflection" in names          # the knees extend at the board's maximum deflection
+    assert "push" in names          # the legs extend push_after the board touchdown (her table; -1: at the deepest)
 
 
 def test_the_trajectory_records_the_board_horse_and_mat_forces(vault):
@@ -84,30 +96,34 @@ def test_the_trajectory_records_the_board_horse_and_mat_forces(vault):
 
 
 def test_table_1_rows_and_their_impulse_momentum_consistency(vault):
-    """Every row is measured; 7 of the 14 are inside Takei's range (the seven outside and why are in
-    docs/vault.md: the arms-up first flight is short and flat, the hands stay on the horse 0.345 s); the
-    board's mean vertical force (integral F_z dt / T) agrees with m (dv_z / T + g) within 5 % (TARGETS.md
-    V4), the horse's only within 10 % (measured 8.6 %: V4 not met, the hands bounce and the force is
-    sampled once per 5 ms frame); in flight the horizontal velocity is kept (board
-    liftoff = horse touchdown; the hurdle's run-up speed at the board touchdown: a touchdown is read
-    before the impact)."""
+    """Every row is measured; 10 of the 14 are inside Takei's range (the four outside and why are in
+    docs/vault.md "The passive-shoulder handspring ships": the first flight is long and she meets the horse
+    near its apex, and the horse contact is a 40 ms impact on straight arms, so its mean force is high); both
+    mean vertical forces (integral F_z dt / T) agree with m (dv_z / T + g) within 5 % (TARGETS.md V4;
+    measured 2.1 and 3.9 %); she leaves the horse going up (v_z gained on it); in flight the horizontal velocity
+    is kept (board liftoff = horse touchdown within 0.03 m/s: measured 4.152 against 4.173 - the liftoff frame's
+    velocity holds the deck's last push in its physics steps before the one whose force is recorded; the
+    hands-only vault before it: within 0.02; the hurdle's run-up speed at the board touchdown: a touchdown is
+    read before the impact)."""
     measured = table_1(vault)
     rows = measured["rows"]
     print(format_table_1(vault))
     assert all(rows[name] is not None for name, *_ in TABLE_1)
     outside = [name for name, _, _, lo, hi, _ in TABLE_1 if not lo <= rows[name] <= hi]
-    assert outside == ["horse contact", "second flight", "vx board liftoff", "vx horse touchdown", "vx horse liftoff",
-                       "vz horse liftoff", "mean vertical force horse"], outside
+    assert outside == ["first flight", "horse contact", "vz horse touchdown", "mean vertical force horse"], outside
     assert measured["impulse_momentum"]["board"]["relative_difference"] < 0.05
-    assert measured["impulse_momentum"]["horse"]["relative_difference"] < 0.10
-    assert rows["vx board liftoff"] == pytest.approx(rows["vx horse touchdown"], abs=0.02)
-    assert rows["vx board touchdown"] == pytest.approx(vault.meta["params"]["runup_speed"], abs=1e-3)
+    assert measured["impulse_momentum"]["horse"]["relative_difference"] < 0.05
+    assert rows["vz horse liftoff"] > rows["vz horse touchdown"] + 0.5
+    assert rows["vx board liftoff"] == pytest.approx(rows["vx horse touchdown"], abs=0.03)
+    # within 0.01 m/s (measured 6.743): a frame before the board contact's first push the feet, landing near
+    # the deck's near end, already touch it (the hands-only vault before hers: within 0.001)
+    assert rows["vx board touchdown"] == pytest.approx(vault.meta["params"]["runup_speed"], abs=0.01)
 
 
 def test_the_bodies_on_the_horse_are_measured_and_a_head_on_it_is_a_fault(vault):
     """The assess reads which bodies touch the horse and each one's share of its vertical impulse;
-    any body but the hands and forearms is a fault. Her vault is on the hands and forearms only
-    (measured: hands 31 + 31 %, forearms 17 + 21 %); the vault her table held before (HEAD_VAULT)
+    any body but the hands and forearms is a fault. Her vault is on the hands only (measured: 47 + 53 %;
+    the hands-only vault before it, HANDS_ONLY: hands 31 + 31 %, forearms 17 + 21 %); the head vault (HEAD_VAULT)
     struck the horse's near face with the hands and took its push on the head (117 %), and that
     fault is reported."""
     m = vault.meta["metrics"]
@@ -129,7 +145,7 @@ def test_she_turns_over_the_horse_and_lands_feet_first_softly(vault):
 
 
 def test_the_peak_landing_force_is_in_the_dismount_band(vault):
-    """<= 11.6 body weights ([T] 481: dismounts onto regulation mats peak at 8.2-11.6; measured 9.8): the
+    """<= 11.6 body weights ([T] 481: dismounts onto regulation mats peak at 8.2-11.6; measured 10.7): the
     knees arrive bent (second_knee: bent with the second flight's pike, >= 0.8 rad at the mat touchdown;
     with them straight this vault landed at 18.9 body weights)."""
     import mujoco
@@ -213,14 +229,22 @@ def test_a_run_up_speed_outside_the_handled_range_is_refused(speed):
 
 
 def test_the_landing_trace_reads_where_the_run_goes(vault):
-    """`report vault --landing`: the board touchdown at the board's centre, the hands on the horse's top
-    (the wrists above 1.2 m) with no head after them, the mat touchdown with the COM behind the feet, the
-    landing's absorb, rise and balance in order; a run does not part from itself."""
+    """`report vault --landing`: the board touchdown on the deck (measured: the right foot 0.47 m behind its
+    centre, 0.13 m inside its near end - the start is placed so that the feet would meet the centre without the
+    hurdle's rotation, and her hurdle turns forward 0.567 rad/s: docs/vault.md), the hands on the horse with no
+    head after them - on its near face: the wrists 0.115 m below the top, 0.11 m short of the near edge (the
+    face's normal and its friction push her; the hands-only vault before hers had them on the top, the wrists at
+    1.24 m; docs/vault.md) - the mat touchdown with the COM behind the feet, the landing's absorb, rise and
+    balance in order; a run does not part from itself."""
+    from sim_core.world.apparatus import BOARD_LENGTH
     r = landing_trace(vault)
     assert r["outcome"] == "success" and r["fall_time"] is None
-    assert abs(r["board"][1] - vault.meta["world"]["springboard"][0]) < 0.05, r["board"]
-    _, _, hands_z, head_time = r["horse"][:4]
-    assert head_time is None and hands_z > 1.2, r["horse"]
+    centre = vault.meta["world"]["springboard"][0]
+    assert centre - BOARD_LENGTH / 2 < r["board"][1] < centre + BOARD_LENGTH / 2, r["board"]
+    _, hands_x, hands_z, head_time = r["horse"][:4]
+    x, _, top, length = vault.meta["world"]["vault_table"][:4]
+    near = x - length / 2
+    assert head_time is None and top - 0.15 < hands_z < top and hands_x < near, (r["horse"], top, near)
     assert r["mat"][1] < 0.0 < r["mat"][4], r["mat"]
     assert r["events"]["absorb"] < r["events"]["rise"] < r["events"]["balance"], r["events"]
     assert parting(vault, vault) == [None, None, None]
@@ -236,7 +260,7 @@ def test_report_settings_go_over_her_row_and_are_checked():
         run_at(6.75, duration=0.05, overrides=["catch_kp=99"])
 
 
-STEP_SWITCHES = ([f"{k}={v}" for k, v in HEAD_VAULT.items()]              # measured on the head vault,
+STEP_SWITCHES = (HANDS_ONLY_SET + [f"{k}={v}" for k, v in HEAD_VAULT.items()]   # measured on the head vault,
                  + ["catch=1", "place_capture=1", "recovery_step=1"])   # with her table's step settings switched on
 STEP_BASIN = (6.764, 6.772)     # m/s: 35 random draws inside stood after the step, one other speed fell (docs/vault.md)
 STEP_DRAWS = 2
@@ -403,8 +427,48 @@ def test_the_arms_swinging_through_the_hurdle_put_the_board_liftoff_in_takeis_ra
     assert swung["vz board liftoff"] > shipped["vz board liftoff"] + 0.25
 
 
-def test_horse_release_holds_the_horse_state_through_the_hands_bounces(vault):
-    """horse_release (0 in the woman's table): the horse state - shoulders and wrists limp - ends
+def test_no_shoulder_or_wrist_servo_acts_while_she_touches_the_horse(vault):
+    """TARGETS.md V5 read per frame (servos_on_horse: the gains of the step before each frame in which any
+    body pushes on the horse, from the edit log): no shoulder or wrist servo acts at any of them (a frame in
+    which a touch begins is counted apart: the controller sees the touch a tick later). Her table keeps them
+    limp with horse_gate (measured: 0 of 8 frames); the hands-only vault before it (HANDS_ONLY) did not: its
+    horse state ended at the hands' first bounce and the second flight's shoulder and wrist servos acted in 45
+    of the 55 frames she touched the horse."""
+    from sim_core.skills.vault.assess import servos_on_horse
+    measured = servos_on_horse(vault)
+    before = servos_on_horse(run_at(6.75, duration=1.0, overrides=HANDS_ONLY_SET))
+    print(measured, before)
+    assert measured["frames"] > 0 and measured["active_frames"] == 0
+    assert before["active_frames"] > before["frames"] / 2
+
+
+def test_horse_gate_keeps_the_shoulders_and_wrists_limp_while_she_touches_the_horse():
+    """horse_gate (1 in the woman's table): the shoulder and wrist servos have no gain at every tick in which
+    she pushes on the horse, in any state, so V5 holds per frame; measured on the hands-only vault before her
+    table (HANDS_ONLY): the shoulders then fold on the horse and the upper arms and the head come down on it
+    (docs/vault.md)."""
+    from sim_core.skills.vault.assess import servos_on_horse
+    trajectory = run_at(6.75, duration=1.6, overrides=HANDS_ONLY_SET + ["horse_gate=1"])
+    measured = servos_on_horse(trajectory)
+    fault = trajectory.meta["metrics"]["horse_fault"]
+    print(measured, fault)
+    assert measured["frames"] > 0 and measured["active_frames"] == 0
+    assert "HEAD" in fault
+
+
+def test_open_before_opens_the_pike_as_the_hands_near_the_horse():
+    """open_before (0.053 s in the woman's table): the first flight's pike opens once the hands will reach the
+    horse's top within that time at their vertical speed (here on HANDS_ONLY with open_pitch out of reach, so
+    only that trigger acts): the event comes before the hand touchdown, at most open_before plus a tick ahead."""
+    trajectory = run_at(6.75, duration=0.6, overrides=HANDS_ONLY_SET + ["open_before=0.06", "open_pitch=4.0",
+                                                                        "open_time=0.04"])
+    times = dict((name, t) for t, name in trajectory.meta["phase_events"])
+    print(f"open at {times['open']:.3f} s, the horse touchdown at {times['horse']:.3f} s")
+    assert 0.0 < times["horse"] - times["open"] <= 0.06 + 0.01
+
+
+def test_horse_release_holds_the_horse_state_through_the_hands_bounces():
+    """horse_release (0 in HANDS_ONLY, the table before hers): the horse state - shoulders and wrists limp - ends
     only once no hand has pushed on the horse for that long. With 0 the hands' first bounce ends it
     30 ms after the touchdown, while the horse contact lasts 0.345 s (the second flight's servos act
     for the rest, docs/vault.md); with 0.1 it lasts 0.130 s."""
@@ -413,10 +477,11 @@ def test_horse_release_holds_the_horse_state_through_the_hands_bounces(vault):
     def horse_state(trajectory):
         times = dict((name, t) for t, name in trajectory.meta["phase_events"])
         return times["second_flight"] - times["horse"]
-    params = dict(calibrated("woman", "human")["settings"], horse_release=0.1, low_level=1.0)
-    held = horse_state(run(RunRequest("vault", "woman", params=params, duration=0.8)))
-    print(f"the horse state: {horse_state(vault):.3f} s (the woman's table), {held:.3f} s (horse_release 0.1)")
-    assert horse_state(vault) < 0.05 and held >= 0.1
+    params = dict(calibrated("woman", "human")["settings"], **HANDS_ONLY, low_level=1.0)
+    released = horse_state(run(RunRequest("vault", "woman", params=params, duration=0.8)))
+    held = horse_state(run(RunRequest("vault", "woman", params=dict(params, horse_release=0.1), duration=0.8)))
+    print(f"the horse state: {released:.3f} s (horse_release 0), {held:.3f} s (horse_release 0.1)")
+    assert released < 0.05 and held >= 0.1
 
 
 # the shoulder block and the timed push (docs/vault.md "The shoulder block and the timed push"): every row

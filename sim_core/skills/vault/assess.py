@@ -25,6 +25,7 @@ BALANCED_TIME = 2.0               # s: standing balanced at least this long at t
 NO_STEP = 0.02                    # m: in the bow no foot moves more than this (issue 31: the bow without a step)
 BOW_BODIES = ("FOOTR", "FOOTL", "TOER", "TOEL")
 HORSE_BODIES = ("HANDR", "HANDL", "LARMR", "LARML")   # a handspring touches the horse with these only
+LIMP_ON_HORSE = ("shoulder", "wrist")   # the servos with no torque while she touches the horse (TARGETS.md V5)
 
 # Table 1 of Hodgins et al. 1995 ([A] 208-230): (row, unit, Takei mean, min, max, the 1995 simulation)
 TABLE_1 = (
@@ -171,6 +172,51 @@ def horse_contact_bodies(trajectory, frames: tuple[int, int]) -> dict:
     total = float(impulse.sum()) or 1.0
     share = {names[b]: float(impulse[b] / total) for b in touched}
     return {"horse_bodies": share, "horse_fault": [n for n in share if n not in HORSE_BODIES]}
+
+
+def servos_on_horse(trajectory, joints: tuple[str, ...] = LIMP_ON_HORSE) -> dict:
+    """TARGETS.md V5 (the seed's state 4: no shoulder or wrist torque on the horse), read off the file:
+    for every frame in which some body pushes on the horse, whether any servo of ``joints`` had a
+    non-zero gain (kp or kv) during the physics step that produced the frame - the model's gains with
+    the logged edits up to the tick before it. Returns the frames touching the horse, those with such a
+    servo acting, their times and the servos that acted; a frame in which a touch begins is counted
+    apart (``onsets_active``: the step it began in ran before the controller could see it). (Reads the
+    model from the file: the report and the tests call it, not the per-run assess.)"""
+    import mujoco
+    a, meta = trajectory.arrays, trajectory.meta
+    model = mujoco.MjModel.from_xml_string(meta["model_xml"])
+    names = list(meta["dof_names"])
+    watched = [k for k, n in enumerate(names) if n.startswith(joints)]
+    kp = model.actuator_gainprm[:, 0].copy()
+    kv = -model.actuator_biasprm[:, 2].copy()
+    gain_field, bias_field = meta["edit_fields"].index("actuator_gainprm"), meta["edit_fields"].index("actuator_biasprm")
+    gain_cols, bias_cols = model.actuator_gainprm.shape[1], model.actuator_biasprm.shape[1]
+    edits = sorted(zip(a["edit_tick"], range(len(a["edit_tick"]))))
+    force = a["contact_force"][:, :, meta["world_geoms"].index("vault_table")]
+    touching = np.flatnonzero(np.abs(force).sum(axis=(1, 2)) > 0)
+    active, acting, e, onsets = [], set(), 0, 0
+    touched = set(touching.tolist())
+    for frame in touching:
+        while e < len(edits) and edits[e][0] <= frame - 1:       # the gains of the step before the frame
+            k = edits[e][1]
+            field, index, value = int(a["edit_field"][k]), int(a["edit_index"][k]), float(a["edit_value"][k])
+            if field == gain_field and index % gain_cols == 0:
+                kp[index // gain_cols] = value
+            elif field == bias_field and index % bias_cols == 2:
+                kv[index // bias_cols] = -value
+            e += 1
+        on = [names[k] for k in watched if kp[k] != 0.0 or kv[k] != 0.0]
+        if not on:
+            continue
+        if frame - 1 not in touched:
+            onsets += 1                  # the step a touch begins in: the controller sees it a tick later
+            continue
+        active.append(int(frame))
+        acting.update(on)
+    dt = 1.0 / float(meta["control_rate"])
+    return {"frames": len(touching), "active_frames": len(active), "touching_time": len(touching) * dt,
+            "active_time": len(active) * dt, "first_active": float(a["time"][active[0]]) if active else None,
+            "acting": sorted(acting), "onsets_active": onsets}
 
 
 def vault_assess(trajectory) -> tuple[str, dict]:

@@ -88,6 +88,10 @@ CONSTANTS = read_constants("vault", VAULT_CONSTANTS)
 APPARATUS = ("horse_1987", "table")
 DEFLECTION_JOINT = PROP_BODY_PREFIX + "springboard/deflection"
 
+# the servos with no torque on the horse: the seed's state 4, "no shoulder or wrist torque"
+LIMP_ON_HORSE = ("shoulder_r_z", "shoulder_l_z", "shoulder_r_x", "shoulder_l_x", "shoulder_r_y", "shoulder_l_y",
+                 "wrist_r_x", "wrist_l_x", "wrist_r_y", "wrist_l_y")
+
 PIECE_FROM_VAULT = ("ankle_max", "min_height")   # the step's and the stance's, from catch_ankle, absorb_min_height
 
 VAULT_SETTINGS = Schema(
@@ -109,6 +113,9 @@ VAULT_SETTINGS = Schema(
             "deck's maximum deflection, the seed's)"),
     setting("push_ankle", "rad", -0.7, 0.9, "ankle angle the push extends to (- plantarflexion)"),
     setting("push_hip", "rad", -1.5, 0.5, "hip angle the push extends to"),
+    setting("board_further", "m", -0.3, 0.5,
+            "the board this much further from the horse than vault_any.json's horse_gap (the gymnast places the board; "
+            "the horse and the mat move, the board and the start stay)"),
     setting("hand_ahead", "m", -0.5, 1.2, "the desired hand position: this far beyond the horse's near edge"),
     setting("flight_hip", "rad", -2.0, 0.5, "hip flexion (-) held in the first flight"),
     setting("open_pitch", "rad", 0.0, 4.0, "the first flight's pike opens once the body has pitched this far forward"),
@@ -129,6 +136,15 @@ VAULT_SETTINGS = Schema(
             "the horse state ends once no hand has pushed on the horse for this long (0: at the first tick without, "
             "so a bounce of the hands ends it and the second flight's servos act while the arms are still on it)"),
     setting("horse_hip", "rad", -1.0, 0.5, "hip angle on the horse (0: the layout)"),
+    setting("horse_gate", "bool", 0.0, 1.0,
+            "1 = the shoulder and wrist servos have no gain at every tick in which any of her bodies pushes on the "
+            "horse, in every state (TARGETS.md V5 read per tick: a bounce of the hands ends the horse state, and the "
+            "second flight's shoulder servos then act whenever the hands are back on the top); their gains come back "
+            "when nothing touches it; 0 = limp only in the horse state"),
+    setting("open_before", "s", 0.0, 0.3,
+            "the first flight's pike also opens (to horse_hip, in open_time) once the hands will reach the horse's top "
+            "within this time at their present vertical speed, so the body is open at the hand touchdown; 0 = only at "
+            "open_pitch"),
     setting("horse_shoulder_gain", "1", 0.0, 10.0,
             "gain factor of the shoulder flexion servos on the horse (0: limp, the seed's 'no shoulder torque'); "
             "above 0 they servo the arms toward horse_shoulder, blocking (the trunk held open over the hands)"),
@@ -147,6 +163,9 @@ VAULT_SETTINGS = Schema(
     setting("second_pike", "rad", -2.0, 0.0,
             "hip flexion (-) the second flight starts in; it opens to the layout once the rotation the laid-out body "
             "will still make before the touchdown covers what is left (0: a layout throughout)"),
+    setting("second_pike_at", "m", -1.0, 0.5,
+            "... the pike starts once the COM is this far past the hand goal (0: over it; - before it, for a horse "
+            "contact that leaves the COM behind the hands)"),
     setting("second_open_time", "s", 0.02, 0.5, "... the second flight's pike opens in this time"),
     setting("second_knee", "rad", 0.0, 1.5,
             "... the knees bend this far with the pike and stay bent as it opens, so the legs arrive soft at the mat "
@@ -272,12 +291,13 @@ VAULT_TABLE = register_table(TableType(
     (vault_row,)))
 
 
-def apparatus_layout(params: dict, character) -> dict:
+def apparatus_layout(params: dict, character, further: float = 0.0) -> dict:
     """Where the board, the horse (or table) and the mat stand: (x, y, ...) tuples for World, along
-    +X from the start's COM at x = 0. The women's horse of Takei's 1987 data (sideways) or the FIG
-    table at the character's height (women's for the woman, men's for the man)."""
+    +X from the start's COM at x = 0, the horse ``further`` (the setting board_further) beyond the
+    constant gap. The women's horse of Takei's 1987 data (sideways) or the FIG table at the character's
+    height (women's for the woman, men's for the man)."""
     board_x = CONSTANTS.board_ahead
-    near = board_x + BOARD_LENGTH / 2 + CONSTANTS.horse_gap
+    near = board_x + BOARD_LENGTH / 2 + CONSTANTS.horse_gap + further
     if APPARATUS[int(round(params["apparatus"]))] == "horse_1987":
         height, length, width = HORSE_1987_HEIGHT, HORSE_1987_LENGTH, HORSE_1987_WIDTH
         length, width = width, length                  # sideways: its 0.35 m across the run
@@ -683,8 +703,10 @@ class Vault(Sequence):
     # ------------------------------------------------------------------ the world and the start
     @classmethod
     def scene(cls, params, world, character=None):
-        """The requested world with the springboard, the horse (or table) and the landing mat."""
-        layout = apparatus_layout(params, character)
+        """The requested world with the springboard, the horse (or table) and the landing mat (the vault
+        rows are set for human strength: another strength runs only with low_level, its settings as set)."""
+        settings = cls.settings_for(params, character.name, "human") if character is not None else params
+        layout = apparatus_layout(params, character, settings["board_further"])
         return dataclasses.replace(world, springboard=layout["springboard"], vault_table=layout["vault_table"],
                                    landing_mat=layout["landing_mat"])
 
@@ -772,7 +794,7 @@ class Vault(Sequence):
         ctx = self.ctx
         m, d, s = ctx.model, ctx.data, ctx.servos
         c = self.cfg = self.settings_for(self.params, ctx.character.name, run_strength(ctx))
-        layout = apparatus_layout(self.params, ctx.character)
+        layout = apparatus_layout(self.params, ctx.character, c["board_further"])
         self.hand_goal = np.array([layout["near_edge"] + c["hand_ahead"], 0.0, layout["height"]])
         self.mat_top = CONSTANTS.mat_thickness
         body = ctx.actor.body_id
@@ -780,6 +802,7 @@ class Vault(Sequence):
         self.shoulders = [body("UARMR"), body("UARML")]
         self.forearms = [body("LARMR"), body("LARML")]
         self.feet = [body("FOOTR"), body("FOOTL")]
+        p = ctx.actor.prefix
         hips_x = ["hip_r_x", "hip_l_x"]
         self.hips_x = ctx.servos.indices(hips_x)
         self.hip_x_range = m.jnt_range[[ctx.actor.joint_id(name) for name in hips_x]]
@@ -791,14 +814,17 @@ class Vault(Sequence):
         self._pitch = 0.0
         self._pitch = self._last_raw = math.atan2(*(d.xpos[self.chest] - d.xpos[self.pelvis])[[0, 2]])
         self.deck_dof = int(m.jnt_dofadr[m.joint(DEFLECTION_JOINT).id])
-        p = ctx.actor.prefix
         self.on_board = ApparatusTouch(m, "springboard", FOOT_BODIES, p)
         self.on_horse = ApparatusTouch(m, "vault_table", HAND_BODIES, p)
         self.rotation = FlightRotation(m, d, ctx.actor)
         legs = both_sides({"hip_*_y": 1, "knee_*_y": 1, "ankle_*_y": 1})
         arms_z = ["shoulder_r_z", "shoulder_l_z"]
-        limp = ("shoulder_r_z", "shoulder_l_z", "shoulder_r_x", "shoulder_l_x", "shoulder_r_y", "shoulder_l_y",
-                "wrist_r_x", "wrist_l_x", "wrist_r_y", "wrist_l_y")
+        limp = LIMP_ON_HORSE
+        everyone = [m.body(i).name[len(p):] for i in range(m.nbody) if m.body_rootid[i] == ctx.actor.root]
+        self.touching_horse = ApparatusTouch(m, "vault_table", everyone, p)
+        self.limp_servos = s.indices(list(LIMP_ON_HORSE))
+        self.gated = None                               # horse_gate: the gains taken away while she touches
+        self.hands = [body("HANDR"), body("HANDL")]
         self.pushed = self.deck_going_down = self.opened = False
         self.stepping, self.step_direction = False, 0.0
         self.hands_off_since = None
@@ -1005,7 +1031,7 @@ class Vault(Sequence):
         """Eq. 12: each shoulder at gamma = lambda + phi (the arm along the line to the hand goal)."""
         d, s = self.ctx.data, self.ctx.servos
         phi = self.body_pitch()
-        if not self.opened and phi > self.cfg["open_pitch"]:
+        if not self.opened and (phi > self.cfg["open_pitch"] or self.hands_arrive_within(self.cfg["open_before"])):
             # the pike that sped the rotation opens before the hands land: the straight body and
             # the arms in line carry the horse's push through the COM
             self.opened = True
@@ -1023,6 +1049,32 @@ class Vault(Sequence):
         i = s.indices(["shoulder_r_z", "shoulder_l_z"])
         s.start[i] = s.goal[i] = np.clip(goals, self.shoulder_range[:, 0], self.shoulder_range[:, 1])
         s.t0[i] = t
+
+    def hands_arrive_within(self, before: float) -> bool:
+        """Whether the lower hand, at its present vertical speed, reaches the horse's top within ``before``
+        seconds (0: never asked)."""
+        if before <= 0.0:
+            return False
+        d = self.ctx.data
+        k = min(self.hands, key=lambda h: float(d.xpos[h][2]))
+        above, vz = float(d.xpos[k][2]) - float(self.hand_goal[2]), float(d.subtree_linvel[k][2])
+        return vz < 0.0 and above < -vz * before
+
+    def gate_on_horse(self, t: float) -> None:
+        """horse_gate: at every tick in which any of her bodies pushes on the horse the shoulder and wrist
+        servos have no gain, whatever the state (a state starting meanwhile sets its gains, which are kept
+        to come back); once nothing touches it they get back the gains they had."""
+        s, m = self.ctx.servos, self.ctx.model
+        i = self.limp_servos
+        if self.touching_horse.touching(self.ctx.data):
+            kp = m.actuator_gainprm[i + s.first, 0].copy()
+            kv = -m.actuator_biasprm[i + s.first, 2].copy()
+            if np.any(kp != 0.0) or np.any(kv != 0.0):
+                self.gated = (kp, kv)
+                s.set_gains(i, 0.0, 0.0)
+        elif self.gated is not None:
+            s.set_gains(i, *self.gated)
+            self.gated = None
 
     def palm_law(self, t: float) -> None:
         """palm_down: each wrist (x, then y) turned so that its palm faces straight down, solved from
@@ -1056,7 +1108,7 @@ class Vault(Sequence):
         s = self.ctx.servos
         if not self.second_piked:
             # the pike once the COM has passed over the hands' goal on the horse
-            if float(d.subtree_com[root][0]) < self.hand_goal[0]:
+            if float(d.subtree_com[root][0]) < self.hand_goal[0] + c["second_pike_at"]:
                 return
             self.second_piked = True
             self.event(t, "second_pike")
@@ -1093,6 +1145,8 @@ class Vault(Sequence):
         self.rotation.update(t)
         self.body_pitch()
         super().update(t)
+        if getattr(self, "cfg", None) and self.cfg["horse_gate"]:
+            self.gate_on_horse(t)
 
     @classmethod
     def assess(cls, trajectory):

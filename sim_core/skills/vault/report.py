@@ -12,7 +12,7 @@ import argparse
 
 import numpy as np
 
-from .assess import (TABLE_1, TAKEI_MASS, table_1)
+from .assess import (TABLE_1, TAKEI_MASS, servos_on_horse, table_1)
 
 
 def format_table_1(trajectory) -> str:
@@ -204,6 +204,12 @@ def main(argv=None) -> int:
         print(f"on the horse (share of its vertical impulse): {shares}; "
               + (f"FAULT: {', '.join(fault)} on the horse (only the hands and forearms may touch it)" if fault
                  else "only the hands and forearms touch it"))
+    if "horse_bodies" in metrics:
+        v5 = servos_on_horse(trajectory)
+        print(f"shoulder and wrist servos while she touches the horse (TARGETS.md V5): acting in {v5['active_frames']} of "
+              f"the {v5['frames']} frames ({v5['active_time']:.3f} of {v5['touching_time']:.3f} s"
+              + (f", from {v5['first_active']:.3f} s: {', '.join(v5['acting'])}" if v5["acting"] else "")
+              + f"; {v5['onsets_active']} more where a touch begins)")
     if "bow_start" in metrics:
         print(f"the bow from {metrics['bow_start']:.2f} s: the trunk pitched {metrics['bow_trunk_pitch_start']:.3f} -> "
               f"{metrics['bow_trunk_pitch']:.3f} rad (at {metrics['bow_deepest_time']:.2f} s) -> "
