@@ -416,9 +416,9 @@ def main(argv=None) -> int:
             + (f"Box targets (--boxes) are drawn straight ahead, forward as above, onto a box 0.25-0.75 m high or down "
                f"from one (either equally likely), air time 0.4-0.7 s, and drawn again until they lie in the region "
                f"offered (where one of its measured jumps landed balanced at the measured heights on both sides, "
-               f"{HEIGHT_REACH * 100:.0f} cm apart, within the tolerances interpolated; or, down from a box, where its "
-               f"commanded take-off's down_region holds it: the same lift-off on flat ground lands in its commanded "
-               f"region, the woman's; planned as a commanded target): {box_text} of those targets "
+               f"{HEIGHT_REACH * 100:.0f} cm apart, within the tolerances interpolated; or where its commanded take-off's "
+               f"box regions hold it - down_region, long_onto_region, long_down_region: the same lift-off on flat ground "
+               f"lands in its commanded region or its long air times' region; planned as a commanded target): {box_text} of those targets "
                f"({SHARE_DRAWS} uniform draws). " if box_shares else "")
             + ("Commanded targets (--commanded) are drawn uniformly in the commanded region of each character "
                "that has one (sim_core.skills.jump_to_target.commanded's table: the man's and the woman's) and drawn again until "

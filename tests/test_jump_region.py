@@ -159,7 +159,9 @@ def test_a_target_outside_both_regions_is_refused_naming_both(monkeypatch):
                          "(T0 = air_time - 2 height / (g air_time), at target_x T0 / air_time), and turned a quarter "
                          "first for a distance of 1-1.2 m at a bearing of 87-90 deg to either side, air_time 0.4-0.44 s, "
                          "and for long air times (the leap's vertical thrust) on flat ground for target_x 0.5-1.6 m, "
-                         "target_y -0.02-0.02 m, air_time 0.52-0.7 s")
+                         "target_y -0.02-0.02 m, air_time 0.52-0.7 s, and onto a box 0.25-0.5 m high at target_x "
+                         "0.85-1.6 m where the same lift-off on flat ground would land in the long air times' region in "
+                         "0.52-0.7 s (T0 = air_time + 2 height / (g air_time))")
     assert "the commanded take-off is offered on flat ground for target_x 0.85-1.2 m" in region_refusal("man", (1.0, 0.4), 0.6)
 
 
@@ -175,10 +177,11 @@ def test_a_random_target_down_from_a_box_is_flown_by_the_commanded_take_off_as_i
     assert flat_equivalent((1.2, 0.0, -0.4), 0.6) == pytest.approx((1.2 * flat_air_time(-0.4, 0.6) / 0.6, 0.6 - 0.8 / (9.80665 * 0.6)))
     assert commanded_way("woman", (1.2, 0.0, -0.4), 0.6) == "down"
     assert commanded_way("woman", (0.5, 0.0, -0.6), 0.66) is None       # its flat-ground landing 0.37 m: too near
-    assert commanded_way("woman", (1.0, 0.0, 0.3), 0.6) is None         # onto a box: not offered
+    assert commanded_way("woman", (1.0, 0.0, 0.3), 0.6) is None         # onto a box: T0 0.70 s, beyond the long row
     assert commanded_way("man", (1.2, 0.0, -0.4), 0.6) is None          # the man's table has no down_region
     box = next(d for d in draw_requests(SEED, ["woman"], 0, 0, 0, 40)
-               if mode("woman", (d.values[0], 0.0, d.values[1]), d.values[2]) == "commanded")
+               if mode("woman", (d.values[0], 0.0, d.values[1]), d.values[2]) == "commanded"
+               and commanded_way("woman", (d.values[0], 0.0, d.values[1]), d.values[2]) == "down")
     with tempfile.TemporaryDirectory() as store:
         result = evaluate(box, 24, store)
         plan, = read_plans("woman", Path(store))
@@ -186,6 +189,29 @@ def test_a_random_target_down_from_a_box_is_flown_by_the_commanded_take_off_as_i
     assert result["passed"], result_line(result)
     assert result["measured"]["landing"] == plan["measured"]["landing"]
     assert result["measured"]["outcome"] == plan["measured"]["outcome"] == "success"
+
+
+def test_a_random_target_onto_a_box_is_flown_by_the_long_row_as_its_plan_was():
+    """Onto a box where the same lift-off on flat ground lands in her long air times' region (the table's
+    long_onto_region: T0 = T + 2 h / (g T)): the first such draw of the report's box targets, planned commanded
+    with the long row (the vertical thrust, its crouch pairs, the recovery step) and run as a user's request;
+    a nearer box (its front edge not cleared) and a higher flat-ground air time are not offered."""
+    from sim_core.skills.jump_to_target.behaviour import read_plans
+    from sim_core.skills.jump_to_target.commanded import commanded_way
+    assert commanded_way("woman", (1.0, 0.0, 0.35), 0.5) == "long_onto"          # T0 0.64 s at 1.28 m
+    assert commanded_way("woman", (0.7, 0.0, 0.35), 0.5) is None                  # the box's edge 0.4 m ahead
+    assert commanded_way("woman", (1.0, 0.0, 0.6), 0.5) is None                   # T0 0.74 s
+    assert commanded_way("woman", (0.95, 0.0, 0.45), 0.43) == "long_onto"        # T0 0.64 s at 1.42 m
+    assert commanded_way("woman", (0.95, 0.0, 0.52), 0.43) is None                # T0 0.68 s, but higher than measured
+    assert commanded_way("man", (1.0, 0.0, 0.35), 0.5) is None                    # his flat equivalent 1.28 m: short of his long row
+    box = next(d for d in draw_requests(SEED, ["woman"], 0, 0, 0, 40)
+               if commanded_way("woman", (d.values[0], 0.0, d.values[1]), d.values[2]) == "long_onto")
+    with tempfile.TemporaryDirectory() as store:
+        result = evaluate(box, 24, store)
+        plan, = read_plans("woman", Path(store))
+    assert plan["settings"]["vertical_thrust"] == 1.0 and plan["settings"]["commanded_takeoff"] == 1.0
+    assert result["passed"], result_line(result)
+    assert result["measured"]["landing"] == plan["measured"]["landing"]
 
 
 TURNED_TARGETS = 3          # random targets in a character's turned commanded region, outside its measured jumps' region
@@ -293,12 +319,12 @@ def test_random_long_air_times_are_flown_by_the_vertical_thrust_and_land_balance
     assert commanded_way(character, (x, 0.0), t) == "long"
     assert commanded_way(character, (x, 0.0), region["air_time"][1] + 0.05) is None
     assert commanded_way(character, (region["target_x"][1] + 0.05, 0.0), t) is None
-    assert commanded_way(character, (x, 0.0, -0.3), t) is None      # flat ground only
+    assert commanded_way(character, (x, 0.0, -0.3), t) is None      # down from a box: the long row flies none
     refusal = region_refusal(character, (x, 0.0), region["air_time"][1] + 0.1)
-    assert "\n" not in refusal and refusal.endswith(
+    assert "\n" not in refusal and (
         f"and for long air times (the leap's vertical thrust) on flat ground for target_x {region['target_x'][0]:g}-"
         f"{region['target_x'][1]:g} m, target_y {region['target_y'][0]:g}-{region['target_y'][1]:g} m, air_time "
-        f"{region['air_time'][0]:g}-{region['air_time'][1]:g} s")
+        f"{region['air_time'][0]:g}-{region['air_time'][1]:g} s") in refusal
     draws = draw_requests(SEED, [character], 0, 0, 0, long=LONG_TARGETS)
     assert [d.character for d in draws] == [character] * LONG_TARGETS
     assert all(commanded_way(character, d.values[:2], d.values[2]) == "long"

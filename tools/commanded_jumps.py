@@ -108,6 +108,7 @@ def main(argv=None) -> int:
     parser.add_argument("--flat-forward", help="random box targets: low,high m - drawn again until the flat-ground landing "
                                                "of their lift-off velocity (x flat_air_time / air time) lies in it")
     parser.add_argument("--down", action="store_true", help="random box targets: down from the boxes only")
+    parser.add_argument("--onto", action="store_true", help="random box targets: onto the boxes only")
     parser.add_argument("--lateral", type=float, default=0.0, help="random targets: target_y within +-this m")
     parser.add_argument("--aim", type=int, default=1,
                         help="random targets: at most this many trials, the commanded target moved by a secant on the "
@@ -168,7 +169,7 @@ def main(argv=None) -> int:
             draw = (float(rng.uniform(*forward)),
                     float(rng.uniform(*air_times)) if args.fixed_air_time is None else args.fixed_air_time,
                     float(rng.uniform(-args.lateral, args.lateral)) if args.lateral else 0.0,
-                    float((-1.0 if args.down else rng.choice((-1.0, 1.0))) * rng.uniform(*heights)) if heights else 0.0)
+                    float((-1.0 if args.down else 1.0 if args.onto else rng.choice((-1.0, 1.0))) * rng.uniform(*heights)) if heights else 0.0)
             flat_time = flat_air_time(draw[3], draw[1])
             if ((flat is None or flat[0] <= flat_time <= flat[1])
                     and (flat_forward is None or flat_forward[0] <= draw[0] * flat_time / draw[1] <= flat_forward[1])):

@@ -18,8 +18,9 @@ a few simulated jumps, not a search over the leap's settings:
    (planning.land.candidates), at most ``landing_trials`` placements in all; the first that ends
    balanced on the target is the plan.
 
-A long air time on flat ground, in the table's ``long_region`` beyond its ``region``: the same aim with the
-table read by commanded.long_body (the leap's vertical thrust and its own crouch pairs).
+A long air time on flat ground, in the table's ``long_region`` beyond its ``region``, or onto or down from a box
+where the flat equivalent lies there (``long_onto_region``, ``long_down_region``): the same aim with the table read
+by commanded.long_body (the leap's vertical thrust and its own crouch pairs).
 
 A target beyond the table's straight region's target_y, in its ``turned_region`` (plan_turned): the
 jump turns first (one hop, the leap's ``turn_angle``) and flies the commanded take-off forward; the aim
@@ -73,8 +74,8 @@ def plan_commanded(character: str, target, air_time: float, trial, budget: int, 
     way = commanded_way(character, target, air_time)
     if way in ("turned", "sideways"):
         return plan_turned(character, target, air_time, trial, budget, judge, progress, cancelled, body, c, way)
-    if way == "long" and "long_settings" in body:      # long air times: the same aim with the vertical thrust's settings and crouch pairs
-        body = long_body(body)
+    if way in ("long", "long_down", "long_onto") and "long_settings" in body:
+        body = long_body(body)      # long air times (onto or down from a box too): the vertical thrust's settings and crouch pairs
     x = float(target[0])
     bound = min(budget, c.aim_trials + c.landing_trials - 1)
     trials = Trials(trial, bound, progress, cancelled)

@@ -1091,6 +1091,48 @@ helper works on the turned jumps now); her long row's 5 aimed jumps (her `aim_tr
 speed at a long commanded air time (aim 0.8 m lands 1.2 m: `commanded_lean_push` is hers scaled, the spin target his -23
 kg m²/s).
 
+**Onto a box with the commanded take-off's long row, nineteenth session: the woman's box targets 12.8 % -> 16.7 %.**
+A jump onto a box h high in T s leaves at the vertical speed that on flat ground flies T0 = T + 2 h / (g T)
+(`ballistics.flat_air_time` with the rise > 0) and lands x T0 / T ahead (`commanded.flat_equivalent`, as down from a
+box). Onto a 0.25-0.75 m box T0 is 0.53 s or more, beyond the broad thrust's deepest crouch (0.49 s); the long row (the
+vertical thrust, 0.52-0.72 s) flies it. So a box target is now offered by the row whose region holds its flat
+equivalent (`commanded.box_way`): down from a box in `region` ("down", `down_region`, as before), onto or down from a
+box in `long_region` ("long_onto" / "long_down", the table's new optional `long_onto_region` / `long_down_region`, the
+same keys as `down_region` - `height`, `flat_air_time` - and an optional `target_x`, the target's own forward
+distance); planning/commanded.py flies both long ways with the table read by `long_body`, trials in a world with the
+box (`scene_for`: a box under a raised target, centred on it, 0.6 m long). Measured with `tools/commanded_jumps.py
+--character C --table [--long] --random N --seed S --heights 0.25,0.75 --onto|--down --flat-air-times A --flat-forward F
+--aim K --plan-landing 9` (new option `--onto`):
+- the woman onto a box, the long row, T0 0.52-0.7 s, flat landings 0.5-1.6 m, seed 1, 12 targets: **5 / 12** - every
+  target nearer than 0.85 m missed (landed 0.06-0.09 m, and 0.62 m for 0.80 m: the box's front edge, 0.3 m before the
+  target, stands 0.05-0.4 m beyond her toes at 0.3-0.6 m high and her feet meet it on the way up); from 0.88 m on 5 / 5;
+- the same from 0.85 m (`--forward 0.85,1.6`), seed 2, 16 targets: **15 / 16** within 5 cm and 0.05 s and balanced
+  (the miss 5.4 cm off, balanced), trials a median of 3, most 6; the boxes there 0.255-0.483 m high (T0 <= 0.7 s
+  bounds them: 0.56 m at most). So her table's `long_onto_region` is height 0.25-0.5 m, flat_air_time 0.52-0.7 s,
+  target_x 0.85-1.6 m (first stored with 0.25-0.75 m: seed 103 as a user's requests 19 / 20, the miss onto a 0.558 m box
+  at 0.968 m in 0.424 s, 26.9 cm short and fell - higher than any measured).
+- the woman down from a box by the long row (T0 0.52-0.7 s), seed 3, 16 targets 0.5-1.6 m: 11 within 5 cm and 0.05 s,
+  **4 balanced** - the drop after a 0.62-0.69 s flight lands hard and the recovery step does not hold it (10 fell after
+  a step, every one from 0.96 m on); nearer only (`--forward 0.5,0.9`), seed 9, 12 targets: **6 / 12** (4 fell, 2 aims
+  ran 20-32 cm short). Not offered (`long_down_region` stays out of her table).
+- the man onto a box by his long row (flat landings 1.5-1.9 m at T0 0.55-0.65 s: targets 1.05-1.33 m), seed 5, 12
+  targets, his 9 aimed jumps: **7 / 12**, 11 balanced - the misses 5.5-9.7 cm beyond the target, the landing not
+  following the aim (aimed 0.6-0.9 m still lands 1.15-1.3 m: his long row leaves at ~1.3 m/s or more whatever is asked,
+  as on flat ground nearer than 1.5 m). Not offered.
+- the man down from a box by his commanded take-off (his `region`, flat landings 0.85-1.2 m, T0 0.42-0.52 s, the
+  recovery step), seed 4, 12 targets, 0.25-0.75 m: **5 / 12** (falls from 0.48 m high, two aims ran away: aimed 0.40 m
+  landed 0.57 m for 1.37 m); heights 0.25-0.45 m, seed 6: every one balanced but **6 / 12** (misses 6.9-58 cm, landing
+  beyond the target: aimed 0.55-1.7 m lands 1.1-1.8 m, not monotonic). Not offered: the man's commanded take-off does
+  not slow its forward speed with the aim (the long rows' "Not done" above); two designs (his table's settings, and the
+  long row) tried, neither lands.
+As a user's requests run (`python -m sim_core report random --seed S --jumps 0 --leaps 0 --broad 0 --boxes 20
+--characters woman --budget 24 --workers 1 --out ...`): fresh seed 101: **20 / 20 (100 %)** within 5 cm and 0.05 s and
+balanced (6 onto a box by the long row, 14 down), a median of 2.4 s to a result, worst 9.9 s (no box above 0.5 m drawn onto: the same draws with the final region); seed 103 as above, 19 / 20; fresh seed 107 with the final region: **20 / 20 (100 %)** (9 onto a box), a median of 3.2 s, worst 14.2 s. Her box region
+(seed 29's draws, `random_requests.box_region_share`): 12.8 % -> 16.7 % (onto 2.5 % -> 10.3 %, down 23.1 %
+-> 23.1 %, as before); the man's as before, 1.6 % (onto 0.5 %, down 2.8 %). A box target outside is refused in one line naming
+the limit (`commanded_limit`: "... and onto a box 0.25-0.5 m high at target_x 0.85-1.6 m where the same lift-off on
+flat ground would land in the long air times' region in 0.52-0.7 s (T0 = air_time + 2 height / (g air_time))").
+
 ![commanded vs achieved landing point](jump_to_target.png)
 
 ![the man's 1.3 m jump to a target, 1.0-2.1 s: crouch, thrust, flight, landing, standing up](jump_to_target_filmstrip.png)

@@ -39,6 +39,11 @@ Fig. 6 with his thrust slowed for his strength, tools/scale_commanded.py and doc
   time on flat ground, ballistics.flat_air_time, and the forward speed over it; the crouch is chosen by that
   air time); ``down_settings`` replace the table's settings for it (the landing's recovery step: the drop
   lands harder).
+- ``long_onto_region``, ``long_down_region`` (optional, with the long row): the same keys as ``down_region`` for a
+  jump straight ahead onto a box / down from one flown by the long row (long_body) where the flight's flat
+  equivalent lies in ``long_region`` with its air time in ``flat_air_time``; ``target_x`` (optional, [low, high] m)
+  bounds the target's own forward distance (onto a box: a nearer box's front edge, 0.3 m before the target, is
+  not cleared). Onto a box needs T0 = T + 2 h / (g T) >= 0.53 s: only the long row flies it.
 
 ``jump_commanded_any.json`` holds the planner's constants (the aim's bound and tolerances, the
 landing plan's bound); a character's table may hold its own in a "constants" section
@@ -178,26 +183,18 @@ def commanded_way(character: str, target, air_time: float) -> str | None:
     inside the table's ``region`` (bounds included), "long" inside its ``long_region`` beyond it (the
     vertical thrust, long_body), "turned" inside its ``turned_region`` beyond both
     (a turn first, then forward), "sideways" inside its ``sideways_region`` (the quarter turn first); down
-    from a box (z < 0) "down" where its ``down_region`` holds the height and the flight's flat equivalent
-    lies in ``region``; else None."""
+    from a box (z < 0) or onto one (z > 0) as box_way says; else None."""
     body = table(character)
     z = float(target[2]) if len(target) > 2 else 0.0
-    if body is None or z > 0.0:
+    if body is None:
         return None
+    if z != 0.0:
+        return box_way(body, target, air_time)
     region = body["region"]
     x, y = float(target[0]), float(target[1])
-    if z < 0.0:
-        down = body.get("down_region")
-        if down is None or not down["height"][0] <= -z <= down["height"][1]:
-            return None
-        x, air_time = flat_equivalent((x, y, z), air_time)
-        if not down["flat_air_time"][0] <= air_time <= down["flat_air_time"][1]:
-            return None
     values = {"target_x": x, "target_y": y, "air_time": float(air_time)}
     if all(region[k][0] <= v <= region[k][1] for k, v in values.items()):
-        return "straight" if z == 0.0 else "down"
-    if z < 0.0:
-        return None
+        return "straight"
     long = body.get("long_region")
     if long is not None and all(long[k][0] <= v <= long[k][1] for k, v in values.items()):
         return "long"
@@ -208,9 +205,29 @@ def commanded_way(character: str, target, air_time: float) -> str | None:
                  and all(body[f"{way}_region"][k][0] <= v <= body[f"{way}_region"][k][1] for k, v in values.items())), None)
 
 
+def box_way(body: dict, target, air_time: float) -> str | None:
+    """commanded_way for a target onto a box (z > 0) or down from one (z < 0), straight ahead: its flat equivalent
+    (flat_equivalent) in the table's ``region`` with the height and T0 in ``down_region``: "down"; in its
+    ``long_region`` with them in ``long_down_region`` / ``long_onto_region``: "long_down" / "long_onto" (the long row,
+    long_body); else None."""
+    z = float(target[2])
+    x, air_time = flat_equivalent(target, air_time)
+    values = {"target_x": x, "target_y": float(target[1]), "air_time": air_time}
+    rows = (("down", "region", "down_region"), ("long_down", "long_region", "long_down_region")) if z < 0.0 \
+        else (("long_onto", "long_region", "long_onto_region"),)
+    for way, region_key, box_key in rows:
+        region, box = body.get(region_key), body.get(box_key)
+        if (region is not None and box is not None and box["height"][0] <= abs(z) <= box["height"][1]
+                and box.get("target_x", (-math.inf, math.inf))[0] <= float(target[0]) <= box.get("target_x", (-math.inf, math.inf))[1]
+                and box["flat_air_time"][0] <= air_time <= box["flat_air_time"][1]
+                and all(region[k][0] <= v <= region[k][1] for k, v in values.items())):
+            return way
+    return None
+
+
 def commanded_offers(character: str, target, air_time: float) -> bool:
-    """Whether the request lies in the character's measured commanded region, straight, long, turned or sideways
-    (commanded_way)."""
+    """Whether the request lies in the character's measured commanded region, straight, long, turned, sideways,
+    onto or down from a box (commanded_way)."""
     return commanded_way(character, target, air_time) is not None
 
 
@@ -241,4 +258,12 @@ def commanded_limit(character: str) -> str | None:
         limit += (f", and for long air times (the leap's vertical thrust) on flat ground for target_x {long['target_x'][0]:g}-{long['target_x'][1]:g} m, "
                   f"target_y {long['target_y'][0]:g}-{long['target_y'][1]:g} m, air_time "
                   f"{long['air_time'][0]:g}-{long['air_time'][1]:g} s")
+    for key, way, sign in (("long_onto_region", "onto", "+"), ("long_down_region", "down from", "-")):
+        box = body.get(key)
+        if box:
+            limit += (f", and {way} a box {box['height'][0]:g}-{box['height'][1]:g} m high"
+                      + (f" at target_x {box['target_x'][0]:g}-{box['target_x'][1]:g} m" if "target_x" in box else "")
+                      + f" where the same lift-off on flat ground would land in the long air times' region in "
+                        f"{box['flat_air_time'][0]:g}-{box['flat_air_time'][1]:g} s (T0 = air_time {sign} 2 height / "
+                        f"(g air_time))")
     return limit
