@@ -181,9 +181,9 @@ def plan_main(args) -> int:
         def simulate(foot_delta, speed=speed):
             return run_at(speed, args.character, args.apparatus, overrides=[*args.set, f"foot_delta={foot_delta}"])
 
-        def progress(done, bound, last):
-            print(f"  {speed:.4f} m/s: {done}/{bound} trials, foot_delta {last['foot_delta']:.5f} m {last['outcome']}",
-                  flush=True)
+        def progress(done, bound, best):
+            print(f"  {speed:.4f} m/s: {done}/{bound} trials, the best so far foot_delta {best['foot_delta']:.5f} m "
+                  f"{best['outcome']}", flush=True)
         plan = plan_foot_delta(simulate, start, knob.minimum, knob.maximum, progress=progress if args.progress else None)
         seconds = time.time() - began
         found += plan["found"]
