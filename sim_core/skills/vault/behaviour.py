@@ -72,6 +72,11 @@ VAULT_CONSTANTS = Schema(
     constant("mat_size", "m", 0.5, 20.0, "the landing mat's length and width"),
     constant("mat_thickness", "m", 0.05, 0.5, "the landing mat's thickness"),
     constant("handled_speed", "m/s", 0.0, 12.0, "the run-up speeds (board touchdown) the controller handles: [low, high]"),
+    constant("plan_trials", "count", 1, 100, "the landing search at one run-up speed (planning.vault, report vault --plan) "
+             "simulates the vault at most this often"),
+    constant("plan_step", "m", 0.0001, 0.1, "its first step of foot_delta, doubled until the fall turns from forward to "
+             "back (or back to forward)"),
+    constant("plan_resolution", "m", 0.00001, 0.01, "it bisects that bracket until it is this narrow"),
     constant("servo_move", "s", 0.005, 1.0, "the servo move of a step's posture change where no setting names one"),
     constant("contact_force", "N", 0.0, 200.0, "a contact with an apparatus pushing this hard counts as touching"),
     constant("stand_settle", "s", 0.0, 5.0, "standing this long after the balance has stood her up, before the gesture"),

@@ -164,6 +164,43 @@ def scan_main(args) -> int:
     return 0
 
 
+def plan_main(args) -> int:
+    """--plan: at each run-up speed the bounded landing search of planning.vault (from her row's foot_delta,
+    every trial a whole vault at that speed, ``run_at``), with its progress, and per speed what it found and
+    how long it took."""
+    import time
+    from ...planning.vault import plan_foot_delta
+    from .behaviour import VAULT_SETTINGS, calibrated
+    knob = VAULT_SETTINGS.by_name["foot_delta"]
+    start = calibrated(args.character, "human")["settings"]["foot_delta"] if args.start is None else args.start
+    found = 0
+    speeds = [float(x) for x in args.plan.split(",")]
+    for speed in speeds:
+        began = time.time()
+
+        def simulate(foot_delta, speed=speed):
+            return run_at(speed, args.character, args.apparatus, overrides=[*args.set, f"foot_delta={foot_delta}"])
+
+        def progress(done, bound, best):
+            print(f"  {speed:.4f} m/s: {done}/{bound} trials, the best so far foot_delta {best['foot_delta']:.5f} m "
+                  f"{best['outcome']}", flush=True)
+        plan = plan_foot_delta(simulate, start, knob.minimum, knob.maximum, progress=progress if args.progress else None)
+        seconds = time.time() - began
+        found += plan["found"]
+        sides = ", ".join(f"{t['foot_delta']:.5f} {t['outcome'] if t['side'] == 0 else ('fwd', 'back')[t['side'] < 0]}"
+                          for t in plan["tried"])
+        if plan["found"]:
+            what = f"stands with foot_delta {plan['foot_delta']:.5f} m"
+        elif plan["bracket"]:
+            what = (f"NO standing foot_delta: the fall turns from forward to back between {plan['bracket'][0]:.5f} and "
+                    f"{plan['bracket'][1]:.5f} m")
+        else:
+            what = "NO standing foot_delta and no turn of the fall's side within the bound"
+        print(f"runup_speed {speed:.4f} m/s: {what} ({plan['trials']} trials, {seconds:.1f} s): {sides}", flush=True)
+    print(f"{found} of {len(speeds)} speeds have a standing foot_delta")
+    return 0
+
+
 def main(argv=None) -> int:
     from ...simulate import RunRequest, run
     parser = argparse.ArgumentParser(prog="python -m sim_core report vault", description=__doc__.split("\n\n")[0])
@@ -179,8 +216,16 @@ def main(argv=None) -> int:
                         help="instead: run the vault at these run-up speeds (comma-separated) and print where each run goes "
                              "(board, horse, mat touchdown, the landing's events) and where it parts from the first")
     parser.add_argument("--set", action="append", default=[], metavar="NAME=VALUE",
-                        help="with --scan or --landing: a setting over the character's row (repeatable), e.g. --set catch=1")
+                        help="with --scan, --landing or --plan: a setting over the character's row (repeatable), e.g. --set catch=1")
+    parser.add_argument("--plan", default=None, metavar="SPEEDS",
+                        help="instead: at each run-up speed (comma-separated) search the landing's foot_delta (planning.vault: "
+                             "step out the way the fall goes, then bisect; at most vault_any.json's plan_trials vaults) and "
+                             "print whether a standing one exists")
+    parser.add_argument("--start", type=float, default=None, help="with --plan: the search's first foot_delta (default: her row's)")
+    parser.add_argument("--progress", action="store_true", help="with --plan: print each trial")
     args = parser.parse_args(argv)
+    if args.plan:
+        return plan_main(args)
     if args.scan:
         return scan_main(args)
     if args.landing:
