@@ -251,7 +251,7 @@ def test_sideways_targets_turn_a_quarter_first_by_the_measured_line_nearest():
     import random
     from sim_core.planning.turn_map import quarter_line
     from sim_core.skills.jump_to_target.behaviour import read_plans
-    from sim_core.skills.jump_to_target.commanded import commanded_way, quarter_for_point, table
+    from sim_core.skills.jump_to_target.commanded import commanded_way, table, turn_for_point
     body = table("woman")
     region, rows = body["sideways_region"], body["quarter_lines"]
     middle = (0.5 * sum(region["distance"]), 0.5 * sum(region["air_time"]))
@@ -264,7 +264,7 @@ def test_sideways_targets_turn_a_quarter_first_by_the_measured_line_nearest():
     row = quarter_line("woman", rows["turn_first"][k])
     assert all(abs(row[name] - rows[name][k]) < 1e-4 for name in ("heading", "feet_x", "feet_y", "line", "stood"))
     ahead = (rows["feet_x"][k] + math.cos(rows["line"][k]), rows["feet_y"][k] + math.sin(rows["line"][k]))
-    assert quarter_for_point(body, ahead) == rows["turn_first"][k]
+    assert turn_for_point(body, ahead) == rows["turn_first"][k]
     draw, = draw_requests(SEED, ["man", "woman"], 0, 0, 0, sideways=1)        # planned and run as a user's request
     with tempfile.TemporaryDirectory() as store:
         result = evaluate(draw, 24, store)
