@@ -222,6 +222,23 @@ def test_turn_headings_replay(character):
     assert turn_for_heading(table(character), pairs["heading"][k] + 1e-6) == pairs["turn_angle"][k]
 
 
+def test_turn_lines_replay():
+    """The woman's turned hop chosen by the line of the jump after it (turn_lines, planning/turn_map.py hop_line): a
+    seeded stored row's hop and two jumps are replayed (the same simulation), and turn_for_point picks that hop for a
+    point on its line ahead of the feet."""
+    import math
+    import random
+    from sim_core.planning.turn_map import hop_line
+    from sim_core.skills.jump_to_target.commanded import table, turn_for_point
+    body = table("woman")
+    rows = body["turn_lines"]
+    k = random.Random(SEED).choice([i for i, stood in enumerate(rows["stood"]) if stood > 0.5])     # one seeded row
+    row = hop_line("woman", rows["turn_angle"][k])
+    assert all(abs(row[name] - rows[name][k]) < 1e-4 for name in ("heading", "feet_x", "feet_y", "line", "stood"))
+    ahead = (rows["feet_x"][k] + math.cos(rows["line"][k]), rows["feet_y"][k] + math.sin(rows["line"][k]))
+    assert turn_for_point(body, ahead, lines="turn_lines") == rows["turn_angle"][k]
+
+
 def test_the_mans_commanded_table_is_the_womans_scaled_by_fig_6():
     """The man's commanded take-off (tools/scale_commanded.py): his table's settings are the woman's scaled by
     Fig. 6 (adapt/settings.scale_settings, mass mode), his leap constants hers by scale_constants, with his
