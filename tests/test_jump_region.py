@@ -158,7 +158,7 @@ def test_a_target_outside_both_regions_is_refused_naming_both(monkeypatch):
                          "high where the same lift-off on flat ground would land in that region in 0.4-0.49 s "
                          "(T0 = air_time - 2 height / (g air_time), at target_x T0 / air_time), and turned a quarter "
                          "first for a distance of 1-1.2 m at a bearing of 87-90 deg to either side, air_time 0.4-0.44 s")
-    assert "the commanded take-off is offered on flat ground for target_x 0.85-1.2 m" in region_refusal("man", (1.0, 0.4), 0.6)
+    assert "the commanded take-off is offered on flat ground for target_x 0.5-1.2 m" in region_refusal("man", (1.0, 0.4), 0.6)
 
 
 def test_a_random_target_down_from_a_box_is_flown_by_the_commanded_take_off_as_its_plan_was():
@@ -243,7 +243,8 @@ def test_the_mans_commanded_table_is_the_womans_scaled_by_fig_6():
     """The man's commanded take-off (tools/scale_commanded.py): his table's settings are the woman's scaled by
     Fig. 6 (adapt/settings.scale_settings, mass mode), his leap constants hers by scale_constants, with his
     thrust's extension slowed (commanded_timing_scale > 1: his torque limits are 1.54 x hers where Fig. 6 scales
-    a torque by M L = 2.08; docs/jump_to_target.md, seventeenth session). No simulation."""
+    a torque by M L = 2.08; docs/jump_to_target.md, seventeenth session) and his lean's trigger measured on him
+    (commanded_lean_push above hers: his slowed push adds more speed per lean; eighteenth session). No simulation."""
     from sim_core.adapt.settings import MASS, CharacterPair, scale_constants, scale_settings
     from sim_core.character.spec import load_character
     from sim_core.control.leap import LEAP_CONSTANTS, LEAP_SETTINGS, leap_constants
@@ -252,11 +253,13 @@ def test_the_mans_commanded_table_is_the_womans_scaled_by_fig_6():
     scaled = scale_settings(table("woman")["settings"], LEAP_SETTINGS, pair, MASS)
     assert table("man")["settings"] == pytest.approx(scaled, abs=1e-6)
     hers = vars(leap_constants("woman"))
+    measured = ("commanded_timing_scale", "commanded_lean_push")     # his own (tools/scale_commanded.py --const)
     constants = scale_constants({n: hers[n] for n in LEAP_CONSTANTS.by_name if n.startswith("commanded_")
-                                 and n != "commanded_timing_scale"}, LEAP_CONSTANTS, pair, MASS)
+                                 and n not in measured}, LEAP_CONSTANTS, pair, MASS)
     his = vars(leap_constants("man"))
     assert {n: his[n] for n in constants} == pytest.approx(constants, abs=1e-6)
     assert his["commanded_timing_scale"] > 1.0 == hers["commanded_timing_scale"]
+    assert his["commanded_lean_push"] > hers["commanded_lean_push"]
 
 
 def test_sideways_targets_turn_a_quarter_first_by_the_measured_line_nearest():
