@@ -162,7 +162,7 @@ def test_a_target_outside_both_regions_is_refused_naming_both(monkeypatch):
                          "target_y -0.02-0.02 m, air_time 0.52-0.7 s, and onto a box 0.25-0.5 m high at target_x "
                          "0.85-1.6 m where the same lift-off on flat ground would land in the long air times' region in "
                          "0.52-0.7 s (T0 = air_time + 2 height / (g air_time))")
-    assert "the commanded take-off is offered on flat ground for target_x 0.85-1.2 m" in region_refusal("man", (1.0, 0.4), 0.6)
+    assert "the commanded take-off is offered on flat ground for target_x 0.5-1.2 m" in region_refusal("man", (1.0, 0.4), 0.6)
 
 
 def test_a_random_target_down_from_a_box_is_flown_by_the_commanded_take_off_as_its_plan_was():
@@ -250,11 +250,29 @@ def test_turn_headings_replay(character):
     assert turn_for_heading(table(character), pairs["heading"][k] + 1e-6) == pairs["turn_angle"][k]
 
 
+def test_turn_lines_replay():
+    """The woman's turned hop chosen by the line of the jump after it (turn_lines, planning/turn_map.py hop_line): a
+    seeded stored row's hop and two jumps are replayed (the same simulation), and turn_for_point picks that hop for a
+    point on its line ahead of the feet."""
+    import math
+    import random
+    from sim_core.planning.turn_map import hop_line
+    from sim_core.skills.jump_to_target.commanded import table, turn_for_point
+    body = table("woman")
+    rows = body["turn_lines"]
+    k = random.Random(SEED).choice([i for i, stood in enumerate(rows["stood"]) if stood > 0.5])     # one seeded row
+    row = hop_line("woman", rows["turn_angle"][k])
+    assert all(abs(row[name] - rows[name][k]) < 1e-4 for name in ("heading", "feet_x", "feet_y", "line", "stood"))
+    ahead = (rows["feet_x"][k] + math.cos(rows["line"][k]), rows["feet_y"][k] + math.sin(rows["line"][k]))
+    assert turn_for_point(body, ahead, lines="turn_lines") == rows["turn_angle"][k]
+
+
 def test_the_mans_commanded_table_is_the_womans_scaled_by_fig_6():
     """The man's commanded take-off (tools/scale_commanded.py): his table's settings are the woman's scaled by
     Fig. 6 (adapt/settings.scale_settings, mass mode), his leap constants hers by scale_constants, with his
     thrust's extension slowed (commanded_timing_scale > 1: his torque limits are 1.54 x hers where Fig. 6 scales
-    a torque by M L = 2.08; docs/jump_to_target.md, seventeenth session). No simulation."""
+    a torque by M L = 2.08; docs/jump_to_target.md, seventeenth session) and his lean's trigger measured on him
+    (commanded_lean_push above hers: his slowed push adds more speed per lean; eighteenth session). No simulation."""
     from sim_core.adapt.settings import MASS, CharacterPair, scale_constants, scale_settings
     from sim_core.character.spec import load_character
     from sim_core.control.leap import LEAP_CONSTANTS, LEAP_SETTINGS, leap_constants
@@ -263,11 +281,13 @@ def test_the_mans_commanded_table_is_the_womans_scaled_by_fig_6():
     scaled = scale_settings(table("woman")["settings"], LEAP_SETTINGS, pair, MASS)
     assert table("man")["settings"] == pytest.approx(scaled, abs=1e-6)
     hers = vars(leap_constants("woman"))
+    measured = ("commanded_timing_scale", "commanded_lean_push")     # his own (tools/scale_commanded.py --const)
     constants = scale_constants({n: hers[n] for n in LEAP_CONSTANTS.by_name if n.startswith("commanded_")
-                                 and n != "commanded_timing_scale"}, LEAP_CONSTANTS, pair, MASS)
+                                 and n not in measured}, LEAP_CONSTANTS, pair, MASS)
     his = vars(leap_constants("man"))
     assert {n: his[n] for n in constants} == pytest.approx(constants, abs=1e-6)
     assert his["commanded_timing_scale"] > 1.0 == hers["commanded_timing_scale"]
+    assert his["commanded_lean_push"] > hers["commanded_lean_push"]
 
 
 def test_sideways_targets_turn_a_quarter_first_by_the_measured_line_nearest():
@@ -279,7 +299,7 @@ def test_sideways_targets_turn_a_quarter_first_by_the_measured_line_nearest():
     import random
     from sim_core.planning.turn_map import quarter_line
     from sim_core.skills.jump_to_target.behaviour import read_plans
-    from sim_core.skills.jump_to_target.commanded import commanded_way, quarter_for_point, table
+    from sim_core.skills.jump_to_target.commanded import commanded_way, table, turn_for_point
     body = table("woman")
     region, rows = body["sideways_region"], body["quarter_lines"]
     middle = (0.5 * sum(region["distance"]), 0.5 * sum(region["air_time"]))
@@ -292,7 +312,7 @@ def test_sideways_targets_turn_a_quarter_first_by_the_measured_line_nearest():
     row = quarter_line("woman", rows["turn_first"][k])
     assert all(abs(row[name] - rows[name][k]) < 1e-4 for name in ("heading", "feet_x", "feet_y", "line", "stood"))
     ahead = (rows["feet_x"][k] + math.cos(rows["line"][k]), rows["feet_y"][k] + math.sin(rows["line"][k]))
-    assert quarter_for_point(body, ahead) == rows["turn_first"][k]
+    assert turn_for_point(body, ahead) == rows["turn_first"][k]
     draw, = draw_requests(SEED, ["man", "woman"], 0, 0, 0, sideways=1)        # planned and run as a user's request
     with tempfile.TemporaryDirectory() as store:
         result = evaluate(draw, 24, store)

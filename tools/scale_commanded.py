@@ -11,6 +11,9 @@ character's ``jump_commanded`` table, and the ``constants`` section of its ``lea
     tools/scale_commanded.py --from woman --to man --mode mass --timing-scale 1.16 \\
         --crouch-by-air-time 0.63:0.39,0.61:0.455,0.59:0.495,0.55:0.535 \\
         --region 0.85,1.2,-0.02,0.02,0.42,0.52 --planner aim_trials=9 --write
+
+``--const name=value`` replaces a scaled ``commanded_*`` constant by one measured on the new body (the man's
+``commanded_lean_push`` 6: his slowed thrust adds more forward speed per lean than hers, docs/jump_to_target.md).
 """
 from __future__ import annotations
 
@@ -36,6 +39,8 @@ def main() -> None:
     ap.add_argument("--turned-region", help="distance low,high m, bearing low,high rad, air_time low,high s (turned "
                                             "first, then forward: the table's turned_region; needs its turn_headings)")
     ap.add_argument("--planner", action="append", default=[], help="name=value: the planner's own constants")
+    ap.add_argument("--const", action="append", default=[],
+                    help="name=value: a commanded_* leap constant measured on the new body instead of the scaled one")
     ap.add_argument("--measured", default="", help="how the region was measured (the table's 'measured')")
     ap.add_argument("--write", action="store_true")
     args = ap.parse_args()
@@ -46,6 +51,7 @@ def main() -> None:
     constants = scale_constants({n: own[n] for n in LEAP_CONSTANTS.by_name if n.startswith("commanded_")},
                                 LEAP_CONSTANTS, pair, args.mode)
     constants["commanded_timing_scale"] = args.timing_scale
+    constants.update({n: float(v) for n, v in (item.split("=") for item in args.const)})
     pairs = sorted((float(t), float(h)) for h, t in (p.split(":") for p in args.crouch_by_air_time.split(",")))
     factors = ScaleFactors(pair.length)
     scaled_pairs = [(scale(t, Units.parse("s"), factors), scale(h, Units.parse("m"), factors))

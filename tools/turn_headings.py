@@ -13,6 +13,12 @@ quarter_line), written as ``quarter_lines`` (merged with the rows already stored
 
     tools/turn_headings.py --character woman --quarter --from 0.95 --to 1.2 --step 0.0025 --write
     tools/turn_headings.py --character woman --quarter --from 1.00125 --to 1.19875 --step 0.0025 --write
+
+``--lines``: each hop of the stored ``turn_headings`` whose heading is within ``--max-heading`` deg and the two
+commanded jumps along it after it (planning/turn_map.py hop_line), written as ``turn_lines`` (the turned plan
+chooses its hop by the line of the jump after it, commanded.turn_for_point):
+
+    tools/turn_headings.py --character woman --lines --max-heading 40 --write
 """
 from __future__ import annotations
 
@@ -21,7 +27,7 @@ import math
 
 import numpy as np
 
-from sim_core.planning.turn_map import hop_heading, quarter_line
+from sim_core.planning.turn_map import hop_heading, hop_line, quarter_line
 from sim_core.tuned.store import read, save
 
 
@@ -33,10 +39,15 @@ def main() -> None:
     ap.add_argument("--step", type=float, default=0.005)
     ap.add_argument("--fall-height", type=float, default=0.5, help="m: a hop whose COM went lower fell")
     ap.add_argument("--quarter", action="store_true", help="the quarter turn (turn_first) and the jump after it")
+    ap.add_argument("--lines", action="store_true", help="the stored hops and the jumps after them (turn_lines)")
+    ap.add_argument("--max-heading", type=float, default=40.0, help="deg: --lines runs the hops turned at most this far")
     ap.add_argument("--write", action="store_true", help="store the map in the character's commanded table")
     args = ap.parse_args()
     if args.quarter:
         quarter(args)
+        return
+    if args.lines:
+        lines(args)
         return
     angles, headings = [], []
     for angle in np.round(np.arange(args.low, args.high + 1e-9, args.step), 4):
@@ -77,7 +88,29 @@ def quarter(args) -> None:
         print(f"wrote {len(merged)} quarter turns to {path}")
 
 
+def lines(args) -> None:
+    """--lines: hop_line for each stored hop turned at most --max-heading deg; the rows whose hop stood are kept."""
+    body = read("jump_commanded", args.character)
+    pairs = body["turn_headings"]
+    rows = []
+    for angle, heading in zip(pairs["turn_angle"], pairs["heading"]):
+        if abs(math.degrees(heading)) > args.max_heading:
+            continue
+        row = hop_line(args.character, float(angle))
+        print(f"turn_angle {angle:+.3f}: " + ("hop fell (left out)" if row is None else
+              f"heading {math.degrees(row['heading']):+7.2f} deg, feet ({row['feet_x']:.3f}, {row['feet_y']:+.3f}) m, "
+              f"line {math.degrees(row['line']):+7.2f} deg, stood {row['stood']:.1f}"), flush=True)
+        if row is not None:
+            rows.append(row)
+    if args.write:
+        body = read("jump_commanded", args.character)
+        body["turn_lines"] = {k: [round(float(r[k]), 5) for r in rows] for k in LINE_COLUMNS}
+        path = save("jump_commanded", args.character, body, body["strengths"])    # checked, written whole
+        print(f"wrote {len(rows)} hops' lines to {path}")
+
+
 QUARTER_COLUMNS = ("turn_first", "heading", "feet_x", "feet_y", "line", "stood")
+LINE_COLUMNS = ("turn_angle", "heading", "feet_x", "feet_y", "line", "stood")
 
 
 if __name__ == "__main__":

@@ -25,12 +25,13 @@ by commanded.long_body (the leap's vertical thrust and its own crouch pairs).
 A target beyond the table's straight region's target_y, in its ``turned_region`` (plan_turned): the
 jump turns first (one hop, the leap's ``turn_angle``) and flies the commanded take-off forward; the aim
 moves the commanded distance along the target's bearing by a secant on the landing's distance along it,
-and the heading wanted by the landing's bearing missed over the table's ``turn_slope`` (from ``turn_gain`` x
-the bearing), the turn being the measured hop nearest that heading (the character's ``turn_headings``),
-at most ``turn_aim_trials`` jumps; then the landing as 2. A target straight to the side, in its
-``sideways_region``, the same with the quarter turn (the leap's ``turn_first``, two hops): the turn is the
-measured one whose jump's line passes nearest the target (``quarter_lines``, quarter_for_point), the target
-moved against the landings' misses to the side so far.
+at most ``turn_aim_trials`` jumps; then the landing as 2. The hop is the measured one whose jump's line
+passes nearest the target (the table's ``turn_lines``, turn_for_point), the target moved against the landings'
+misses to the side so far; a table without them (the man's) takes the measured hop whose heading is nearest
+the one wanted (``turn_headings``, turn_for_heading: the heading wanted moved by the landing's bearing missed
+over the table's ``turn_slope``, from ``turn_gain`` x the bearing). A target straight to the side, in its
+``sideways_region``, the same with the quarter turn (the leap's ``turn_first``, two hops) and its lines
+(``quarter_lines``).
 
 At most min(budget, aim_trials + landing_trials - 1) jumps (turned: turn_aim_trials + landing_trials - 1);
 the plan is the best trial (found or
@@ -46,8 +47,8 @@ from ..ballistics import flat_air_time
 from ..character.spec import load_character
 from ..control.leap import LEAP_SETTINGS
 from ..errors import ParameterError
-from ..skills.jump_to_target.commanded import (commanded_settings, commanded_way, long_body, planner_constants,
-                                               quarter_for_point, table, turn_for_heading, turned_settings)
+from ..skills.jump_to_target.commanded import (commanded_settings, commanded_way, long_body, planner_constants, table,
+                                               turn_for_heading, turn_for_point, turned_settings)
 from .land import candidates, foot_step
 from .trials import Trials
 
@@ -127,16 +128,18 @@ def plan_turned(character: str, target, air_time: float, trial, budget: int, jud
     aims, reached, headings, bearings, air_aims, flown = [distance], [], [c.turn_gain * bearing], [], [float(air_time)], []
     # the aim stays in its range and its flight target in the leap's (a quarter turn's aim is all target_y)
     top = min(c.aim_range[1], LEAP_SETTINGS.by_name["flight_target_y"].maximum / max(abs(math.sin(bearing)), 1e-3))
-    shift = 0.0         # sideways: the landings' misses to the side so far (m, along ``side``)
+    lines = "quarter_lines" if way == "sideways" else ("turn_lines" if "turn_lines" in body else None)
+    shift = 0.0         # by the lines: the landings' misses to the side so far (m, along ``side``)
     good = None         # the aim, heading and air time aimed of the nearest trial that flew
     grounded = set()    # the turns whose jump did not fly
     while True:
-        # sideways: the quarter turn whose measured line passes nearest the target moved by the sideways misses
-        turn = quarter_for_point(body, (x - shift * side[0], y - shift * side[1]), grounded) if way == "sideways" \
+        # the turn whose measured line passes nearest the target moved by the misses to the side (sideways; turned where
+        # the table has the hop's lines), else the hop whose heading is nearest the one wanted
+        turn = turn_for_point(body, (x - shift * side[0], y - shift * side[1]), grounded, lines) if lines \
             else turn_for_heading(body, headings[-1], grounded)
-        if turn is None:        # sideways: every measured line that stood and leads ahead was tried
+        if turn is None:        # every measured line that stood and leads ahead was tried
             if not trials.tried:
-                raise ParameterError(f"no measured quarter turn of the {character} leads toward ({x:g}, {y:g}) m")
+                raise ParameterError(f"no measured turn of the {character} leads toward ({x:g}, {y:g}) m")
             break
         measured = trials.run(turned_settings(body, air_aims[-1], aims[-1], bearing, turn, way))
         if measured["fell_before_liftoff"] or not measured["air_time"] > 0.5 * air_time:   # definition: it did not fly

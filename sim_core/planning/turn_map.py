@@ -25,6 +25,7 @@ from ..skills.jump_to_target.commanded import commanded_settings, table, turned_
 MAP_TARGET, MAP_AIR_TIME, MAP_WINDUP = (1.0, 0.0, 0.0, 0.0), 0.45, 1.25   # definition: any jump (the hop is the same)
 MAP_FALL_HEIGHT = 0.5                   # m: definition: hops whose COM went lower fell (tools/turn_headings.py's default)
 SIDE_TARGET, SIDE_AIR_TIME = 1.15, 0.44  # definition: the quarter map's jump, in the middle of the sideways region
+LINE_DISTANCES, LINE_AIR_TIME = (0.85, 1.15), 0.44   # definition: the hop line map's two jumps, near and far in the turned region
 
 
 def hop_heading(character: str, angle: float) -> tuple[float, float, bool]:
@@ -39,17 +40,42 @@ def quarter_line(character: str, scale: float) -> dict:
     the hops' heading, the middle of the feet when the leap's crouch begins (``feet_x``, ``feet_y``) and where
     a commanded jump straight to that side (SIDE_TARGET m, SIDE_AIR_TIME s) landed, its line's direction from
     the feet (``line`` rad) and whether it ended balanced (``stood``); None where the hops fell."""
-    from .jump import JumpTrial      # the trial's measure; jump.py plans with this module's map
     heading, lowest, begun, feet = hop_stance(character, scale, "turn_first")
     if not begun or lowest < MAP_FALL_HEIGHT:
         return None
-    target = (0.0, -math.copysign(SIDE_TARGET, scale), 0.0, 0.0)       # turn_first + turns to the right
-    _, measured = JumpTrial(character, target, SIDE_AIR_TIME, MAP_WINDUP, "human")(
-        turned_settings(table(character), SIDE_AIR_TIME, SIDE_TARGET, math.atan2(target[1], 0.0), scale, "sideways"))
-    landing = measured["landing"]
+    landing, stood = jump_after(character, "turn_first", scale, (0.0, -math.copysign(SIDE_TARGET, scale)), SIDE_AIR_TIME)   # + turns right
     return {"turn_first": scale, "heading": heading, "feet_x": feet[0], "feet_y": feet[1],
-            "line": math.atan2(landing[1] - feet[1], landing[0] - feet[0]),
-            "stood": float(measured["outcome"] in ("success", "stepped") and measured["air_time"] > 0.5 * SIDE_AIR_TIME)}
+            "line": math.atan2(landing[1] - feet[1], landing[0] - feet[0]), "stood": stood}
+
+
+def hop_line(character: str, angle: float) -> dict:
+    """The hop of ``turn_angle`` ``angle`` and the commanded jumps after it, measured as quarter_line's row: the
+    hop's heading and the middle of the feet at the leap's crouch, and two commanded jumps along that heading
+    (LINE_DISTANCES m from the start's feet in LINE_AIR_TIME s): ``line`` the direction from the feet to the
+    middle of their landings (rad), ``stood`` the share of the two that ended balanced; None where the hop fell.
+    The heading does not say where the jump after the hop lands (each hop leaves its own stance, and the jump
+    from it drifts its own way, docs/jump_to_target.md); the line does, whatever the distance aimed."""
+    heading, lowest, begun, feet = hop_stance(character, angle)
+    if not begun or lowest < MAP_FALL_HEIGHT:
+        return None
+    jumps = [jump_after(character, "turn_angle", angle, (d * math.cos(heading), d * math.sin(heading)), LINE_AIR_TIME)
+             for d in LINE_DISTANCES]
+    middle = np.mean([landing for landing, _ in jumps], axis=0)
+    return {"turn_angle": angle, "heading": heading, "feet_x": feet[0], "feet_y": feet[1],
+            "line": math.atan2(middle[1] - feet[1], middle[0] - feet[0]),
+            "stood": float(np.mean([stood for _, stood in jumps]))}
+
+
+def jump_after(character: str, setting: str, turn: float, point, air_time: float) -> tuple:
+    """A commanded jump aimed at ``point`` (x, y m from the start's feet) in ``air_time`` s after the turn
+    ``setting`` (``turn_angle``: one hop, ``turn_first``: the quarter turn) ``turn``: (where the feet's middle
+    landed (x, y m), 1.0 if it ended balanced having flown (more than half the air time) else 0.0)."""
+    from .jump import JumpTrial      # the trial's measure; jump.py plans with this module's map
+    target = (float(point[0]), float(point[1]), 0.0, 0.0)
+    _, measured = JumpTrial(character, target, air_time, MAP_WINDUP, "human")(
+        turned_settings(table(character), air_time, math.hypot(*target[:2]), math.atan2(target[1], target[0]), turn,
+                        "sideways" if setting == "turn_first" else "turned"))
+    return measured["landing"], float(measured["outcome"] in ("success", "stepped") and measured["air_time"] > 0.5 * air_time)
 
 
 def hop_stance(character: str, angle: float, setting: str = "turn_angle") -> tuple[float, float, bool, tuple]:

@@ -27,7 +27,12 @@ Fig. 6 with his thrust slowed for his strength, tools/scale_commanded.py and doc
   forward (a single hop to 75-90 deg mostly fell after it, docs/jump_to_target.md); ``quarter_lines`` (columns
   ``turn_first``, ``heading``, ``feet_x``, ``feet_y``, ``line``, ``stood``) is each ``turn_first`` of a fine grid
   measured (planning/turn_map.py quarter_line): where the hops left the feet, and the line a commanded jump from
-  there flew along (rad), whether it stood (quarter_for_point);
+  there flew along (rad), whether it stood (turn_for_point);
+- ``turn_lines`` (optional, with ``turned_region``): the same for the hop's ``turn_angle`` (columns ``turn_angle``,
+  ``heading``, ``feet_x``, ``feet_y``, ``line``, ``stood``): each hop of ``turn_headings`` turned up to ~40 deg and two
+  commanded jumps along its heading after it (planning/turn_map.py hop_line: ``line`` through the middle of their
+  landings, ``stood`` the share balanced); where it is, a turned plan flies the hop whose line passes nearest the
+  target (turn_for_point), not the one whose heading is nearest its bearing;
 - ``long_region`` (optional, with ``long_settings`` and ``long_crouch_by_air_time``): the same keys as ``region``
   for long air times on flat ground, flown with the leap's vertical thrust (``long_settings``: its faster
   extension, ``vertical_thrust`` 1, and the landing's recovery step) instead of the broad jump's - the broad
@@ -105,6 +110,8 @@ def _rows(body: dict):
         yield f"turn_headings {k}", {"turn_angle": angle}
     for k, scale in enumerate(body.get("quarter_lines", {}).get("turn_first", [])):
         yield f"quarter_lines {k}", {"turn_first": scale}
+    for k, angle in enumerate(body.get("turn_lines", {}).get("turn_angle", [])):
+        yield f"turn_lines {k}", {"turn_angle": angle}
     yield from constant_rows(body)
 
 
@@ -121,17 +128,19 @@ def turn_for_heading(body: dict, heading: float, avoid=()) -> float:
     return float(pairs["turn_angle"][k])
 
 
-def quarter_for_point(body: dict, point, avoid=()) -> float:
-    """The ``turn_first`` of the table's ``quarter_lines`` whose measured jump's line (from the feet the quarter
-    turn left, along ``line``) passes nearest ``point`` (x, y m) ahead of them, of those that stood and are not
-    in ``avoid``. As the hop's heading, the quarter turn's is not smooth in its scale but the same every run."""
-    rows = body["quarter_lines"]
+def turn_for_point(body: dict, point, avoid=(), lines: str = "quarter_lines") -> float:
+    """The turn of the table's ``lines`` (``quarter_lines``: the quarter turn's ``turn_first``; ``turn_lines``: the
+    hop's ``turn_angle``) whose measured jump's line (from the feet the turn left, along ``line``) passes nearest
+    ``point`` (x, y m) ahead of them, of those that stood (``stood`` above half) and are not in ``avoid``. As the
+    hop's heading, the turn's is not smooth in its setting but the same every run."""
+    rows = body[lines]
     best, chosen = math.inf, None
-    for scale, fx, fy, line, stood in zip(rows["turn_first"], rows["feet_x"], rows["feet_y"], rows["line"], rows["stood"]):
+    for turn, fx, fy, line, stood in zip(rows["turn_first" if lines == "quarter_lines" else "turn_angle"], rows["feet_x"],
+                                         rows["feet_y"], rows["line"], rows["stood"]):
         dx, dy = float(point[0]) - fx, float(point[1]) - fy
         along, off = dx * math.cos(line) + dy * math.sin(line), -dx * math.sin(line) + dy * math.cos(line)
-        if stood > 0.5 and scale not in avoid and along > 0.0 and abs(off) < best:
-            best, chosen = abs(off), float(scale)
+        if stood > 0.5 and turn not in avoid and along > 0.0 and abs(off) < best:
+            best, chosen = abs(off), float(turn)
     return chosen
 
 
