@@ -738,6 +738,9 @@ LANDING_RECOVERY_STEP = Parameter(
 LANDING_STEP_MARGIN = Parameter("landing_step_margin", "m", 0.03, -0.2, 0.3,
                                 "landing: with landing_recovery_step, a step once the capture point is this close to the "
                                 "support's edge")
+LEAN_PUSH = Parameter("lean_push", "1", 0.0, 0.0, 10.0,
+                      "commanded take-off: the push's forward speed per unit of lean as the commanded_lean_push "
+                      "constant, for a row measured with its own (a commanded table's long row); 0 = the character's constant")
 RECOVERY_STEP_EVENT = "recovery_step"     # the phase event of a landing's recovery step (leap_assess reads it)
 
 # the leap's low-level settings: the columns of a vertical-leap table, a broad jump's and a planned
@@ -768,6 +771,7 @@ LEAP_SETTINGS = Schema(
               "above 0.5 the thrust servoes the COM velocity to the commanded flight's lift-off velocity and "
               "ends on reaching it (control/commanded_thrust.py)"),
     FLIGHT_TARGET_X, FLIGHT_TARGET_Y, TURN_ANGLE, LANDING_ARM_PITCH_GAIN, LANDING_ARM_PITCH, LANDING_RECOVERY_STEP, LANDING_STEP_MARGIN,
+    LEAN_PUSH,
 )
 LEAP_MEASURED = ("com_rise", "com_travel", "peak_thrust_grf_body_weights")   # columns a calibration measured
 

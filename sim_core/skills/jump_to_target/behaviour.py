@@ -202,12 +202,13 @@ def leap_params(settings: dict, target, windup_time: float, air_time: float | No
 
 def commanded_flight(settings: dict, target, air_time: float | None) -> dict:
     """A plan with the commanded take-off (``commanded_takeoff``, control/commanded_thrust.py): the
-    switch and the flight it commands, the request's target and air time (forward, the plan's own
-    ``flight_target_x`` where it names one: its aim, planning/commanded.py); none for any other plan
-    (which runs as it always did)."""
+    switch, the row's own ``lean_push`` where it names one (control.leap.LEAN_PUSH), and the flight it
+    commands, the request's target and air time (forward, the plan's own ``flight_target_x`` where it
+    names one: its aim, planning/commanded.py); none for any other plan (which runs as it always did)."""
     if settings.get("commanded_takeoff", 0.0) <= 0.5 or air_time is None:
         return {}
-    return {"commanded_takeoff": 1.0, "flight_target_x": float(settings.get("flight_target_x", target[0])),
+    return {"commanded_takeoff": 1.0, **({"lean_push": float(settings["lean_push"])} if "lean_push" in settings else {}),
+            "flight_target_x": float(settings.get("flight_target_x", target[0])),
             "flight_target_y": float(settings.get("flight_target_y", target[1])),
             "flight_target_z": float(target[2]), "flight_air_time": float(air_time)}
 
@@ -442,6 +443,7 @@ class JumpToTarget(Leap):
         settings.update(turn_of(self.plan["settings"]))
         if self.plan["settings"].get("commanded_takeoff", 0.0) > 0.5:
             settings["commanded_takeoff"] = 1.0
+            settings.update({k: self.plan["settings"][k] for k in ("lean_push",) if k in self.plan["settings"]})
         settings["crouch_time"] = crouch_time(self.params["windup_time"])
         settings.update(landing_settings(self.plan["settings"]))
         return settings

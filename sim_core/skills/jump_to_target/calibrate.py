@@ -1205,6 +1205,18 @@ with the lines to 31 deg, `turn_lines` for the man, and his near targets at air 
 crouch flies 0.39-0.44 s there). Next: the crouch chosen per line from the map's measured air times; the lines measured
 for him.
 
+**The man's long row keeps the push it was measured with (merging the two branches above, 2026-12-06).** His lean's
+push measured for his straight row (`commanded_lean_push` 6, a leap constant of his) applies to every commanded flight,
+and his long row had been measured with the push scaled from hers (3): with 6 it landed 1.05-1.46 m whatever was aimed
+(`tools/commanded_jumps.py --character man --table --long --set crouch_height=0.55 --sweep 0.8,2.4,0.4 --air-time 0.6`;
+with `--const commanded_lean_push=3` 1.24-2.01 m, as measured for the row), and `--long 20` targets missed 0 / 3 in the
+test. A commanded row may now name its own push: `lean_push` (control.leap.LEAN_PUSH, a leap setting and parameter,
+0 = the character's constant), passed by `commanded_flight` and read by the leap over the run's value as the recovery
+step is; his `long_settings` name 3. The same sweep with it lands as with `--const` (bit-identical figures), and as a
+user's requests (`python -m sim_core report random --seed S --jumps 0 --leaps 0 --broad 0 --long 20 --characters man
+--budget 24 --workers 1`) seed 11 **19 / 20** (median 3.3 s, worst 9.9 s) and seed 13 **19 / 20** (2.9 / 8.1 s), the same
+misses as measured for the row. His box targets (measured before his push was his own) were not measured again.
+
 ![commanded vs achieved landing point](jump_to_target.png)
 
 ![the man's 1.3 m jump to a target, 1.0-2.1 s: crouch, thrust, flight, landing, standing up](jump_to_target_filmstrip.png)

@@ -12,7 +12,7 @@ from ...control.behaviour import register
 from ...control.commanded_thrust import CommandedThrust, FlightCommand, thrust_due
 from ...control.measure import SupportGeometry
 from ...control.recovery_step import RecoveryStep, StaggeredStance, StanceMeasure, StepAndHold
-from ...control.leap import FLIGHT_TARGET_X, FLIGHT_TARGET_Y, LANDING_ARM_PITCH, LANDING_ARM_PITCH_GAIN, LANDING_RECOVERY_STEP, LANDING_STEP_MARGIN, RECOVERY_STEP_EVENT, LOW_LEVEL_SETTINGS, Landing, LeapThrust, balance_after_landing, calibrated_foot_delta, broad_distances, broad_row, broad_rows, commandable_heights, leap_assess, leap_constants, load_mapping, vertical_key, vertical_row, vertical_table
+from ...control.leap import FLIGHT_TARGET_X, FLIGHT_TARGET_Y, LANDING_ARM_PITCH, LANDING_ARM_PITCH_GAIN, LANDING_RECOVERY_STEP, LANDING_STEP_MARGIN, LEAN_PUSH, RECOVERY_STEP_EVENT, LOW_LEVEL_SETTINGS, Landing, LeapThrust, balance_after_landing, calibrated_foot_delta, broad_distances, broad_row, broad_rows, commandable_heights, leap_assess, leap_constants, load_mapping, vertical_key, vertical_row, vertical_table
 from ...control.sequencer import Sequence, Step
 from ...control.turn import jump_start, turn_steps
 from ...errors import ParameterError
@@ -63,6 +63,7 @@ class Leap(Sequence):
                   "landing: after touchdown the hips right the trunk over this time (0 = at once)"),
         LANDING_RECOVERY_STEP,
         LANDING_STEP_MARGIN,
+        LEAN_PUSH,
         settings=LOW_LEVEL_SETTINGS,
     )
 
@@ -143,15 +144,15 @@ class Leap(Sequence):
         middle of the feet at the start) and the air time (s)."""
         return (p["flight_target_x"], p["flight_target_y"], p["flight_target_z"]), p["flight_air_time"]
 
-    def flight_command(self, p: dict, constants, delta: float, lead: float) -> FlightCommand:
+    def flight_command(self, p: dict, constants, delta: float, lead: float, push: float) -> FlightCommand:
         """The commanded take-off's flight (control.commanded_thrust), landed by this leap's landing
-        (its foot lead, its delta and the landing table's own delta)."""
+        (its foot lead, its delta and the landing table's own delta); ``push`` its lean's push (LEAN_PUSH)."""
         target, air_time = self.flight_target(p)
         name = self.ctx.character.name
         hip = standing_hip_height(self.ctx.character)
         return FlightCommand(tuple(float(v) for v in target), float(air_time), float(lead), float(delta),
                              constants.commanded_touchdown_height * hip, constants.commanded_liftoff_height * hip,
-                             constants.commanded_lean_push, constants.commanded_servo_time,
+                             push, constants.commanded_servo_time,
                              constants.commanded_correction_limit, constants.commanded_start_share,
                              constants.commanded_spin, constants.commanded_spin_gain,
                              lambda speed, touchdown: calibrated_foot_delta(name, speed, touchdown))
@@ -191,7 +192,9 @@ class Leap(Sequence):
         commanded = cfg.get("commanded_takeoff", 0.0) > 0.5
         if commanded:
             delta, landing = landing_settings()
-            command = self.flight_command(p, constants, delta, landing["foot_lead_time"])
+            # the lean's push: the plan's own (a row measured with its own) over the run's, else the constant
+            push = cfg.get("lean_push", p.get("lean_push", 0.0)) or constants.commanded_lean_push
+            command = self.flight_command(p, constants, delta, landing["foot_lead_time"], push)
             support = SupportGeometry(ctx.model, prefix=ctx.actor.prefix)
             origin = support.points(ctx.data)
             origin = np.array([*origin[:, :2].mean(axis=0), float(origin[:, 2].min())])
