@@ -126,17 +126,12 @@ def test_random_targets_in_the_commanded_region_are_planned_commanded_and_land_b
     """Outside the measured jumps' region, inside the commanded one: planned by planning/commanded.py
     (a plan with the commanded take-off and its aim), then run as a user's request. The man's table is
     the woman's scaled by Fig. 6 (tools/scale_commanded.py)."""
-    from sim_core.skills.jump_to_target.behaviour import read_plans
-    from sim_core.skills.jump_to_target.commanded import planner_constants
     from sim_core.skills.jump_to_target.region import in_region, mode
     draws = draw_requests(SEED, [character], 0, 0, 0, 0, COMMANDED_TARGETS)
     assert [d.character for d in draws] == [character] * COMMANDED_TARGETS
     assert all(in_region(character, d.values[:2], d.values[2])
                and mode(character, d.values[:2], d.values[2]) == "commanded" for d in draws)
-    results = [evaluate(d, 24, str(tmp_path)) for d in draws]
-    lines = [result_line(r) for r in results]
-    plans = read_plans(character, tmp_path)
-    c = planner_constants(character)
+    results, lines, plans, c = all_planned_and_run(character, draws, tmp_path)
     assert len(plans) == COMMANDED_TARGETS
     assert all(p["settings"]["commanded_takeoff"] == 1.0 and "flight_target_x" in p["settings"] for p in plans)
     assert all(p["trials"] <= c.aim_trials + c.landing_trials - 1 for p in plans)
@@ -165,13 +160,31 @@ def test_a_target_outside_both_regions_is_refused_naming_both(monkeypatch):
     assert "the commanded take-off is offered on flat ground for target_x 0.5-1.2 m" in region_refusal("man", (1.0, 0.4), 0.6)
 
 
+def all_planned_and_run(character: str, draws, store):
+    """``character``'s drawn requests planned into ``store`` and run as a user's requests: (the report's results,
+    their printed lines, the stored plans, the character's planner constants)."""
+    from sim_core.skills.jump_to_target.behaviour import read_plans
+    from sim_core.skills.jump_to_target.commanded import planner_constants
+    results = [evaluate(d, 24, str(store)) for d in draws]
+    return results, [result_line(r) for r in results], read_plans(character, store), planner_constants(character)
+
+
+def planned_and_run(draw):
+    """A drawn request of the woman planned into a temporary plan store and run as a user's request: (the
+    report's result, its stored plan)."""
+    from sim_core.skills.jump_to_target.behaviour import read_plans
+    with tempfile.TemporaryDirectory() as store:
+        result = evaluate(draw, 24, store)
+        plan, = read_plans("woman", Path(store))
+    return result, plan
+
+
 def test_a_random_target_down_from_a_box_is_flown_by_the_commanded_take_off_as_its_plan_was():
     """Down from a box where the same lift-off on flat ground lands in her commanded region (the table's
     down_region): drawn as the report draws box targets, planned commanded (the crouch by the flat-ground air
     time, the landing's recovery step of down_settings) and run as a user's request - the run is the plan's
     trial (the recovery step read from the plan's settings, not the run's parameters)."""
     from sim_core.ballistics import flat_air_time
-    from sim_core.skills.jump_to_target.behaviour import read_plans
     from sim_core.skills.jump_to_target.commanded import commanded_way, flat_equivalent
     from sim_core.skills.jump_to_target.region import mode
     assert flat_equivalent((1.2, 0.0, -0.4), 0.6) == pytest.approx((1.2 * flat_air_time(-0.4, 0.6) / 0.6, 0.6 - 0.8 / (9.80665 * 0.6)))
@@ -182,9 +195,7 @@ def test_a_random_target_down_from_a_box_is_flown_by_the_commanded_take_off_as_i
     box = next(d for d in draw_requests(SEED, ["woman"], 0, 0, 0, 40)
                if mode("woman", (d.values[0], 0.0, d.values[1]), d.values[2]) == "commanded"
                and commanded_way("woman", (d.values[0], 0.0, d.values[1]), d.values[2]) == "down")
-    with tempfile.TemporaryDirectory() as store:
-        result = evaluate(box, 24, store)
-        plan, = read_plans("woman", Path(store))
+    result, plan = planned_and_run(box)
     assert plan["settings"]["landing_recovery_step"] == 1.0 and plan["settings"]["commanded_takeoff"] == 1.0
     assert result["passed"], result_line(result)
     assert result["measured"]["landing"] == plan["measured"]["landing"]
@@ -196,7 +207,6 @@ def test_a_random_target_onto_a_box_is_flown_by_the_long_row_as_its_plan_was():
     long_onto_region: T0 = T + 2 h / (g T)): the first such draw of the report's box targets, planned commanded
     with the long row (the vertical thrust, its crouch pairs, the recovery step) and run as a user's request;
     a nearer box (its front edge not cleared) and a higher flat-ground air time are not offered."""
-    from sim_core.skills.jump_to_target.behaviour import read_plans
     from sim_core.skills.jump_to_target.commanded import commanded_way
     assert commanded_way("woman", (1.0, 0.0, 0.35), 0.5) == "long_onto"          # T0 0.64 s at 1.28 m
     assert commanded_way("woman", (0.7, 0.0, 0.35), 0.5) is None                  # the box's edge 0.4 m ahead
@@ -206,9 +216,7 @@ def test_a_random_target_onto_a_box_is_flown_by_the_long_row_as_its_plan_was():
     assert commanded_way("man", (1.0, 0.0, 0.35), 0.5) is None                    # his flat equivalent 1.28 m: short of his long row
     box = next(d for d in draw_requests(SEED, ["woman"], 0, 0, 0, 40)
                if commanded_way("woman", (d.values[0], 0.0, d.values[1]), d.values[2]) == "long_onto")
-    with tempfile.TemporaryDirectory() as store:
-        result = evaluate(box, 24, store)
-        plan, = read_plans("woman", Path(store))
+    result, plan = planned_and_run(box)
     assert plan["settings"]["vertical_thrust"] == 1.0 and plan["settings"]["commanded_takeoff"] == 1.0
     assert result["passed"], result_line(result)
     assert result["measured"]["landing"] == plan["measured"]["landing"]
@@ -221,15 +229,11 @@ TURNED_TARGETS = 3          # random targets in a character's turned commanded r
 def test_random_lateral_targets_turn_first_and_land_balanced(character, tmp_path):
     """A target to the side in the turned commanded region: planned by planning/commanded.py's plan_turned
     (one hop turns the body toward it, then the commanded take-off forward), then run as a user's request."""
-    from sim_core.skills.jump_to_target.behaviour import read_plans
-    from sim_core.skills.jump_to_target.commanded import commanded_way, planner_constants
+    from sim_core.skills.jump_to_target.commanded import commanded_way
     draws = draw_requests(SEED, [character], 0, 0, 0, 0, 0, TURNED_TARGETS)
     assert [d.character for d in draws] == [character] * TURNED_TARGETS
     assert all(commanded_way(character, d.values[:2], d.values[2]) == "turned" for d in draws)
-    results = [evaluate(d, 24, str(tmp_path)) for d in draws]
-    lines = [result_line(r) for r in results]
-    plans = read_plans(character, tmp_path)
-    c = planner_constants(character)
+    results, lines, plans, c = all_planned_and_run(character, draws, tmp_path)
     assert len(plans) == TURNED_TARGETS and all(p["settings"]["turn_angle"] != 0.0 for p in plans)
     assert all(p["trials"] <= c.turn_aim_trials + c.landing_trials - 1 for p in plans)
     assert sum(r["passed"] for r in results) >= TURNED_TARGETS - 1, "\n".join(lines)
@@ -298,7 +302,6 @@ def test_sideways_targets_turn_a_quarter_first_by_the_measured_line_nearest():
     import math
     import random
     from sim_core.planning.turn_map import quarter_line
-    from sim_core.skills.jump_to_target.behaviour import read_plans
     from sim_core.skills.jump_to_target.commanded import commanded_way, table, turn_for_point
     body = table("woman")
     region, rows = body["sideways_region"], body["quarter_lines"]
@@ -314,9 +317,7 @@ def test_sideways_targets_turn_a_quarter_first_by_the_measured_line_nearest():
     ahead = (rows["feet_x"][k] + math.cos(rows["line"][k]), rows["feet_y"][k] + math.sin(rows["line"][k]))
     assert turn_for_point(body, ahead) == rows["turn_first"][k]
     draw, = draw_requests(SEED, ["man", "woman"], 0, 0, 0, sideways=1)        # planned and run as a user's request
-    with tempfile.TemporaryDirectory() as store:
-        result = evaluate(draw, 24, store)
-        plan, = read_plans("woman", Path(store))
+    result, plan = planned_and_run(draw)
     assert plan["settings"]["turn_first"] != 0.0 and plan["settings"]["commanded_takeoff"] == 1.0
     assert result["passed"], result_line(result)
 
@@ -329,8 +330,7 @@ def test_random_long_air_times_are_flown_by_the_vertical_thrust_and_land_balance
     """Long air times on flat ground (the table's long_region, beyond the broad thrust's deepest crouch): planned
     commanded with the table's long row (the leap's vertical thrust, its own crouch pairs, the landing's recovery
     step; commanded.long_body), then run as a user's request; beyond the region refused naming it."""
-    from sim_core.skills.jump_to_target.behaviour import read_plans
-    from sim_core.skills.jump_to_target.commanded import commanded_way, planner_constants, table
+    from sim_core.skills.jump_to_target.commanded import commanded_way, table
     from sim_core.skills.jump_to_target.region import mode
     body = table(character)
     region = body["long_region"]
@@ -349,10 +349,7 @@ def test_random_long_air_times_are_flown_by_the_vertical_thrust_and_land_balance
     assert [d.character for d in draws] == [character] * LONG_TARGETS
     assert all(commanded_way(character, d.values[:2], d.values[2]) == "long"
                and mode(character, d.values[:2], d.values[2]) == "commanded" for d in draws)
-    results = [evaluate(d, 24, str(tmp_path)) for d in draws]
-    lines = [result_line(r) for r in results]
-    plans = read_plans(character, tmp_path)
-    c = planner_constants(character)
+    results, lines, plans, c = all_planned_and_run(character, draws, tmp_path)
     assert len(plans) == LONG_TARGETS
     assert all(p["settings"]["vertical_thrust"] == 1.0 and p["settings"]["commanded_takeoff"] == 1.0 for p in plans)
     assert all(p["trials"] <= c.aim_trials + c.landing_trials - 1 for p in plans)

@@ -67,6 +67,12 @@ def main() -> None:
         print(f"wrote {len(angles)} hops to {path}")
 
 
+def line_text(row: dict) -> str:
+    """A measured turn's heading, where it left the feet and the line its jump flew (quarter_line, hop_line)."""
+    return (f"heading {math.degrees(row['heading']):+7.2f} deg, feet ({row['feet_x']:.3f}, {row['feet_y']:+.3f}) m, "
+            f"line {math.degrees(row['line']):+7.2f} deg")
+
+
 def quarter(args) -> None:
     """--quarter: quarter_line for each scale of the grid, both sides; the rows whose hops stood are kept."""
     grid = np.round(np.arange(args.low, args.high + 1e-9, args.step), 4)
@@ -74,8 +80,7 @@ def quarter(args) -> None:
     for scale in np.concatenate([-grid[::-1], grid]):
         row = quarter_line(args.character, float(scale))
         print(f"turn_first {scale:+.4f}: " + ("hops fell (left out)" if row is None else
-              f"heading {math.degrees(row['heading']):+7.2f} deg, feet ({row['feet_x']:.3f}, {row['feet_y']:+.3f}) m, "
-              f"line {math.degrees(row['line']):+7.2f} deg, {'stood' if row['stood'] else 'fell'}"), flush=True)
+              f"{line_text(row)}, {'stood' if row['stood'] else 'fell'}"), flush=True)
         if row is not None:
             rows.append(row)
     if args.write:
@@ -98,8 +103,7 @@ def lines(args) -> None:
             continue
         row = hop_line(args.character, float(angle))
         print(f"turn_angle {angle:+.3f}: " + ("hop fell (left out)" if row is None else
-              f"heading {math.degrees(row['heading']):+7.2f} deg, feet ({row['feet_x']:.3f}, {row['feet_y']:+.3f}) m, "
-              f"line {math.degrees(row['line']):+7.2f} deg, stood {row['stood']:.1f}"), flush=True)
+              f"{line_text(row)}, stood {row['stood']:.1f}"), flush=True)
         if row is not None:
             rows.append(row)
     if args.write:
