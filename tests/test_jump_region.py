@@ -170,33 +170,44 @@ def all_planned_and_run(character: str, draws, store):
 
 
 def planned_and_run(draw):
-    """A drawn request of the woman planned into a temporary plan store and run as a user's request: (the
-    report's result, its stored plan)."""
+    """A drawn request planned into a temporary plan store and run as a user's request: (the report's result,
+    its stored plan)."""
     from sim_core.skills.jump_to_target.behaviour import read_plans
     with tempfile.TemporaryDirectory() as store:
         result = evaluate(draw, 24, store)
-        plan, = read_plans("woman", Path(store))
+        plan, = read_plans(draw.character, Path(store))
     return result, plan
 
 
-def test_a_random_target_down_from_a_box_is_flown_by_the_commanded_take_off_as_its_plan_was():
-    """Down from a box where the same lift-off on flat ground lands in her commanded region (the table's
-    down_region): drawn as the report draws box targets, planned commanded (the crouch by the flat-ground air
-    time, the landing's recovery step of down_settings) and run as a user's request - the run is the plan's
-    trial (the recovery step read from the plan's settings, not the run's parameters)."""
+def test_a_target_down_from_a_box_is_offered_commanded_where_its_flat_equivalent_lies_in_the_region():
+    """The table's down_region: the same lift-off on flat ground (flat_equivalent) in the commanded region, the box's
+    height and the flat-ground air time T0 in down_region (the woman 0.25-0.75 m, T0 0.4-0.49 s; the man 0.25-0.4 m,
+    T0 0.42-0.5 s)."""
     from sim_core.ballistics import flat_air_time
     from sim_core.skills.jump_to_target.commanded import commanded_way, flat_equivalent
-    from sim_core.skills.jump_to_target.region import mode
     assert flat_equivalent((1.2, 0.0, -0.4), 0.6) == pytest.approx((1.2 * flat_air_time(-0.4, 0.6) / 0.6, 0.6 - 0.8 / (9.80665 * 0.6)))
     assert commanded_way("woman", (1.2, 0.0, -0.4), 0.6) == "down"
     assert commanded_way("woman", (0.5, 0.0, -0.6), 0.66) is None       # its flat-ground landing 0.37 m: too near
     assert commanded_way("woman", (1.0, 0.0, 0.3), 0.6) is None         # onto a box: T0 0.70 s, beyond the long row
-    assert commanded_way("man", (1.2, 0.0, -0.4), 0.6) is None          # the man's table has no down_region
-    box = next(d for d in draw_requests(SEED, ["woman"], 0, 0, 0, 40)
-               if mode("woman", (d.values[0], 0.0, d.values[1]), d.values[2]) == "commanded"
-               and commanded_way("woman", (d.values[0], 0.0, d.values[1]), d.values[2]) == "down")
+    assert commanded_way("woman", (1.0, 0.0, -0.45), 0.6) == "down"
+    assert commanded_way("man", (1.2, 0.0, -0.35), 0.6) == "down"       # T0 0.48 s, flat-ground landing 0.96 m
+    assert commanded_way("man", (1.0, 0.0, -0.45), 0.6) is None         # his boxes from 0.42 m missed far targets
+
+
+@pytest.mark.parametrize("character", ["man", "woman"])
+def test_a_random_target_down_from_a_box_is_flown_by_the_commanded_take_off_as_its_plan_was(character):
+    """Down from a box where the same lift-off on flat ground lands in the character's commanded region (the table's
+    down_region): drawn as the report draws box targets, planned commanded (the crouch by the flat-ground air
+    time; the woman's landing's recovery step of down_settings, the man has none) and run as a user's request -
+    the run is the plan's trial (the recovery step read from the plan's settings, not the run's parameters)."""
+    from sim_core.skills.jump_to_target.commanded import commanded_way, table
+    from sim_core.skills.jump_to_target.region import mode
+    box = next(d for d in draw_requests(SEED, [character], 0, 0, 0, 40)
+               if mode(character, (d.values[0], 0.0, d.values[1]), d.values[2]) == "commanded"
+               and commanded_way(character, (d.values[0], 0.0, d.values[1]), d.values[2]) == "down")
     result, plan = planned_and_run(box)
-    assert plan["settings"]["landing_recovery_step"] == 1.0 and plan["settings"]["commanded_takeoff"] == 1.0
+    step = table(character).get("down_settings", {}).get("landing_recovery_step", 0.0)
+    assert plan["settings"].get("landing_recovery_step", 0.0) == step and plan["settings"]["commanded_takeoff"] == 1.0
     assert result["passed"], result_line(result)
     assert result["measured"]["landing"] == plan["measured"]["landing"]
     assert result["measured"]["outcome"] == plan["measured"]["outcome"] == "success"

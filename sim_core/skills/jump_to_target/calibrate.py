@@ -1217,6 +1217,35 @@ user's requests (`python -m sim_core report random --seed S --jumps 0 --leaps 0 
 --budget 24 --workers 1`) seed 11 **19 / 20** (median 3.3 s, worst 9.9 s) and seed 13 **19 / 20** (2.9 / 8.1 s), the same
 misses as measured for the row. His box targets (measured before his push was his own) were not measured again.
 
+**The man down from a box with his own lean's push: 0.25-0.4 m boxes offered, without the recovery step (issue 29,
+twentieth session, 2026-12-06).** His box targets had been measured before his lean's push was his own
+(`commanded_lean_push` 6, above); measured again with his table as it is (his straight row, the crouch by the
+flat-ground air time T0, `commanded.flat_equivalent`) by `tools/commanded_jumps.py --character man --table --random 12
+--seed S --heights H --down --flat-air-times 0.42,0.5 --flat-forward 0.5,1.2 --aim 9 --plan-landing 9 [--set
+landing_recovery_step=1]` (within 5 cm and 0.05 s and balanced):
+- heights 0.25-0.75 m: seed 5 **9 / 12** with the recovery step (falls from 0.712 m at 1.38 m and 0.517 m at 1.21 m,
+  one 5.2 cm off), 9 / 12 without it; seed 6 **7 / 12** with the step (falls from 0.547-0.726 m boxes at 1.36-1.51 m).
+  The landing now follows the aim (most within 1-4 cm); what fails is the high box far ahead;
+- heights 0.25-0.5 m: seed 7 **11 / 12** with the step (10 / 12 without), seed 8 **12 / 12** with the step.
+As a user's requests (`python -m sim_core report random --seed S --jumps 0 --leaps 0 --broad 0 --boxes 20 --characters
+man --budget 24 --workers 1 --out ...`, his table's `down_region` written as said; his box draws then mostly commanded
+down ones):
+- 0.25-0.5 m with the step (`down_settings` as hers): seed 151 **16 / 20**, seed 157 **15 / 20**. The misses printed
+  as 6-58 cm off are on-target landings that fell at every foot placement (the nearest balanced trial is shown): e.g.
+  (1.096 m, 0.399 m box, 0.566 s) landed 1.097 m in 0.56 s and fell (once did not stand still) at each of 9 placements; the same two targets
+  without the step landed 3.3 and 4.7 cm off, balanced (the planner replayed outside the report: it reproduces the
+  report's trials to the mm);
+- 0.25-0.5 m without the step: seeds 151 **18 / 20** and 157 **18 / 20**, fresh seeds 163 **18 / 20** and 167 **17 /
+  20** - six of the seven down misses from boxes 0.42-0.48 m high (at 1.21-1.52 m; the seventh 0.368 m at 1.454 m), the
+  other two misses onto a box by his measured jumps;
+- so `down_region` heights **0.25-0.4 m**, T0 0.42-0.5 s, no `down_settings`: fresh seeds 173 **18 / 20** (median 2.2 s,
+  worst 7.6 s; the misses 1.482 m from 0.317 m, 14.3 cm off, and 1.279 m from 0.327 m, 7.9 cm) and 179 **20 / 20** (2.3
+  / 8.1 s); afterwards fresh seed 181 **19 / 20** (1.7 / 5.9 s; the miss 1.144 m from 0.331 m, the aim not landing it).
+His share of issue 29's box targets (seed 29, as the report prints it): 1.6 % -> **3.7 %** (onto 0.5 %, down 2.8 % ->
+7.0 %; with 0.25-0.5 m it would have been 5.2 %). `tools/scale_commanded.py` now keeps `down_region` / `down_settings`
+when it writes his table again. The woman's row keeps its step (measured with it). Not done: his far targets down
+from 0.42-0.5 m boxes (the aim lands them, the landing falls), and his onto-a-box targets by the commanded rows.
+
 ![commanded vs achieved landing point](jump_to_target.png)
 
 ![the man's 1.3 m jump to a target, 1.0-2.1 s: crouch, thrust, flight, landing, standing up](jump_to_target_filmstrip.png)
