@@ -12,6 +12,7 @@ from ...analysis import FOOT_BODIES, true_runs
 from ..handspring.behaviour import HAND_BODIES
 from ...ballistics import GRAVITY
 from ..somersault.behaviour import pelvis_pitch
+from .behaviour import LIMP_ON_HORSE
 
 
 STILL_SPEED = 0.1                 # m/s: TARGETS.md "still"
@@ -25,7 +26,6 @@ BALANCED_TIME = 2.0               # s: standing balanced at least this long at t
 NO_STEP = 0.02                    # m: in the bow no foot moves more than this (issue 31: the bow without a step)
 BOW_BODIES = ("FOOTR", "FOOTL", "TOER", "TOEL")
 HORSE_BODIES = ("HANDR", "HANDL", "LARMR", "LARML")   # a handspring touches the horse with these only
-LIMP_ON_HORSE = ("shoulder", "wrist")   # the servos with no torque while she touches the horse (TARGETS.md V5)
 
 # Table 1 of Hodgins et al. 1995 ([A] 208-230): (row, unit, Takei mean, min, max, the 1995 simulation)
 TABLE_1 = (
@@ -186,7 +186,7 @@ def servos_on_horse(trajectory, joints: tuple[str, ...] = LIMP_ON_HORSE) -> dict
     a, meta = trajectory.arrays, trajectory.meta
     model = mujoco.MjModel.from_xml_string(meta["model_xml"])
     names = list(meta["dof_names"])
-    watched = [k for k, n in enumerate(names) if n.startswith(joints)]
+    watched = [k for k, n in enumerate(names) if n in joints]
     kp = model.actuator_gainprm[:, 0].copy()
     kv = -model.actuator_biasprm[:, 2].copy()
     gain_field, bias_field = meta["edit_fields"].index("actuator_gainprm"), meta["edit_fields"].index("actuator_biasprm")
