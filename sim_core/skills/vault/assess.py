@@ -12,7 +12,6 @@ from ...analysis import FOOT_BODIES, true_runs
 from ..handspring.behaviour import HAND_BODIES
 from ...ballistics import GRAVITY
 from ..somersault.behaviour import pelvis_pitch
-from .behaviour import LIMP_ON_HORSE
 
 
 STILL_SPEED = 0.1                 # m/s: TARGETS.md "still"
@@ -26,6 +25,9 @@ BALANCED_TIME = 2.0               # s: standing balanced at least this long at t
 NO_STEP = 0.02                    # m: in the bow no foot moves more than this (issue 31: the bow without a step)
 BOW_BODIES = ("FOOTR", "FOOTL", "TOER", "TOEL")
 HORSE_BODIES = ("HANDR", "HANDL", "LARMR", "LARML")   # a handspring touches the horse with these only
+# the servos with no torque on the horse: the seed's state 4, "no shoulder or wrist torque"
+LIMP_ON_HORSE = ("shoulder_r_z", "shoulder_l_z", "shoulder_r_x", "shoulder_l_x", "shoulder_r_y", "shoulder_l_y",
+                 "wrist_r_x", "wrist_l_x", "wrist_r_y", "wrist_l_y")
 
 # Table 1 of Hodgins et al. 1995 ([A] 208-230): (row, unit, Takei mean, min, max, the 1995 simulation)
 TABLE_1 = (

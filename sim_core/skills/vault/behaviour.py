@@ -50,6 +50,7 @@ from ...control.recovery_step import RecoveryStep, StaggeredStance, StepAndHold
 from ...control.sequencer import Sequence, Step
 from ...analysis import FOOT_BODIES
 from ..handspring.behaviour import HAND_BODIES, PoseMove
+from .assess import LIMP_ON_HORSE
 from ...control.tumble import FlightRotation, both_sides, inertia_about_com, rotation_to_come
 from ...errors import ParameterError
 from ...schema import Choice, Parameter, Schema
@@ -92,10 +93,6 @@ CONSTANTS = read_constants("vault", VAULT_CONSTANTS)
 
 APPARATUS = ("horse_1987", "table")
 DEFLECTION_JOINT = PROP_BODY_PREFIX + "springboard/deflection"
-
-# the servos with no torque on the horse: the seed's state 4, "no shoulder or wrist torque"
-LIMP_ON_HORSE = ("shoulder_r_z", "shoulder_l_z", "shoulder_r_x", "shoulder_l_x", "shoulder_r_y", "shoulder_l_y",
-                 "wrist_r_x", "wrist_l_x", "wrist_r_y", "wrist_l_y")
 
 PIECE_FROM_VAULT = ("ankle_max", "min_height")   # the step's and the stance's, from catch_ankle, absorb_min_height
 
