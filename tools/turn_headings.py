@@ -73,44 +73,47 @@ def line_text(row: dict) -> str:
             f"line {math.degrees(row['line']):+7.2f} deg")
 
 
-def quarter(args) -> None:
-    """--quarter: quarter_line for each scale of the grid, both sides; the rows whose hops stood are kept."""
-    grid = np.round(np.arange(args.low, args.high + 1e-9, args.step), 4)
+def measured_lines(values, measure, label, stood) -> list[dict]:
+    """``measure(value)`` (quarter_line, hop_line) for each value, printed as it goes (``label(value)``, the row's
+    line_text and ``stood(row)``); the rows whose turn kept its feet."""
     rows = []
-    for scale in np.concatenate([-grid[::-1], grid]):
-        row = quarter_line(args.character, float(scale))
-        print(f"turn_first {scale:+.4f}: " + ("hops fell (left out)" if row is None else
-              f"{line_text(row)}, {'stood' if row['stood'] else 'fell'}"), flush=True)
+    for value in values:
+        row = measure(value)
+        print(f"{label(value)}: " + ("fell (left out)" if row is None else f"{line_text(row)}, {stood(row)}"), flush=True)
         if row is not None:
             rows.append(row)
+    return rows
+
+
+def write_lines(character: str, key: str, rows: list[dict], columns, what: str) -> None:
+    """The rows as the commanded table's ``key`` (``columns``), checked and written whole."""
+    body = read("jump_commanded", character)
+    body[key] = {k: [round(float(r[k]), 5) for r in rows] for k in columns}
+    path = save("jump_commanded", character, body, body["strengths"])
+    print(f"wrote {len(rows)} {what} to {path}")
+
+
+def quarter(args) -> None:
+    """--quarter: quarter_line for each scale of the grid, both sides; the rows whose hops stood are kept (merged
+    with the stored ones by scale)."""
+    grid = np.round(np.arange(args.low, args.high + 1e-9, args.step), 4)
+    rows = measured_lines(np.concatenate([-grid[::-1], grid]), lambda scale: quarter_line(args.character, float(scale)),
+                          lambda scale: f"turn_first {scale:+.4f}", lambda row: "stood" if row["stood"] else "fell")
     if args.write:
-        body = read("jump_commanded", args.character)
-        stored = body.get("quarter_lines", {})
+        stored = read("jump_commanded", args.character).get("quarter_lines", {})
         old = [dict(zip(stored, values)) for values in zip(*stored.values())] if stored else []
         merged = sorted({r["turn_first"]: r for r in old + rows}.values(), key=lambda r: r["turn_first"])
-        body["quarter_lines"] = {k: [round(float(r[k]), 5) for r in merged] for k in QUARTER_COLUMNS}
-        path = save("jump_commanded", args.character, body, body["strengths"])    # checked, written whole
-        print(f"wrote {len(merged)} quarter turns to {path}")
+        write_lines(args.character, "quarter_lines", merged, QUARTER_COLUMNS, "quarter turns")
 
 
 def lines(args) -> None:
     """--lines: hop_line for each stored hop turned at most --max-heading deg; the rows whose hop stood are kept."""
-    body = read("jump_commanded", args.character)
-    pairs = body["turn_headings"]
-    rows = []
-    for angle, heading in zip(pairs["turn_angle"], pairs["heading"]):
-        if abs(math.degrees(heading)) > args.max_heading:
-            continue
-        row = hop_line(args.character, float(angle))
-        print(f"turn_angle {angle:+.3f}: " + ("hop fell (left out)" if row is None else
-              f"{line_text(row)}, stood {row['stood']:.1f}"), flush=True)
-        if row is not None:
-            rows.append(row)
+    pairs = read("jump_commanded", args.character)["turn_headings"]
+    angles = [a for a, h in zip(pairs["turn_angle"], pairs["heading"]) if abs(math.degrees(h)) <= args.max_heading]
+    rows = measured_lines(angles, lambda angle: hop_line(args.character, float(angle)),
+                          lambda angle: f"turn_angle {angle:+.3f}", lambda row: f"stood {row['stood']:.1f}")
     if args.write:
-        body = read("jump_commanded", args.character)
-        body["turn_lines"] = {k: [round(float(r[k]), 5) for r in rows] for k in LINE_COLUMNS}
-        path = save("jump_commanded", args.character, body, body["strengths"])    # checked, written whole
-        print(f"wrote {len(rows)} hops' lines to {path}")
+        write_lines(args.character, "turn_lines", rows, LINE_COLUMNS, "hops' lines")
 
 
 QUARTER_COLUMNS = ("turn_first", "heading", "feet_x", "feet_y", "line", "stood")

@@ -240,39 +240,46 @@ def commanded_offers(character: str, target, air_time: float) -> bool:
     return commanded_way(character, target, air_time) is not None
 
 
+def _span(region: dict, key: str, unit: str) -> str:
+    """``key low-high unit`` of a region's [low, high]."""
+    return f"{key} {region[key][0]:g}-{region[key][1]:g} {unit}"
+
+
+def _flat(region: dict) -> str:
+    """A flat-ground region (target_x, target_y, air_time) in words."""
+    return ", ".join(_span(region, key, unit) for key, unit in (("target_x", "m"), ("target_y", "m"), ("air_time", "s")))
+
+
+def _turned(region: dict) -> str:
+    """A turned region (distance, bearing, air_time) in words."""
+    return (f"for a distance of {region['distance'][0]:g}-{region['distance'][1]:g} m at a bearing of "
+            f"{math.degrees(region['bearing'][0]):.0f}-{math.degrees(region['bearing'][1]):.0f} deg to either side, "
+            + _span(region, "air_time", "s"))
+
+
+def _box(region: dict, way: str, landing: str, sign: str) -> str:
+    """A box region (height, flat_air_time, optional target_x) in words: the same lift-off's flat landing in ``landing``."""
+    return (f"{way} a box {region['height'][0]:g}-{region['height'][1]:g} m high"
+            + (f" at target_x {region['target_x'][0]:g}-{region['target_x'][1]:g} m" if "target_x" in region else "")
+            + f" where the same lift-off on flat ground would land in {landing} in "
+              f"{region['flat_air_time'][0]:g}-{region['flat_air_time'][1]:g} s (T0 = air_time {sign} 2 height / (g air_time)")
+
+
 def commanded_limit(character: str) -> str | None:
     """The commanded region's limits in words (None: the character has none)."""
     body = table(character)
     if body is None:
         return None
-    r, turned = body["region"], body.get("turned_region")
-    limit = (f"the commanded take-off is offered on flat ground for target_x {r['target_x'][0]:g}-{r['target_x'][1]:g} m, "
-             f"target_y {r['target_y'][0]:g}-{r['target_y'][1]:g} m, air_time {r['air_time'][0]:g}-{r['air_time'][1]:g} s")
-    if turned:
-        limit += (f", and turned first for a distance of {turned['distance'][0]:g}-{turned['distance'][1]:g} m at a "
-                  f"bearing of {math.degrees(turned['bearing'][0]):.0f}-{math.degrees(turned['bearing'][1]):.0f} deg "
-                  f"to either side, air_time {turned['air_time'][0]:g}-{turned['air_time'][1]:g} s")
-    down = body.get("down_region")
-    if down:
-        limit += (f", and down from a box {down['height'][0]:g}-{down['height'][1]:g} m high where the same lift-off "
-                  f"on flat ground would land in that region in {down['flat_air_time'][0]:g}-{down['flat_air_time'][1]:g} s "
-                  f"(T0 = air_time - 2 height / (g air_time), at target_x T0 / air_time)")
-    sideways = body.get("sideways_region")
-    if sideways:
-        limit += (f", and turned a quarter first for a distance of {sideways['distance'][0]:g}-{sideways['distance'][1]:g} m at "
-                  f"a bearing of {math.degrees(sideways['bearing'][0]):.0f}-{math.degrees(sideways['bearing'][1]):.0f} deg to "
-                  f"either side, air_time {sideways['air_time'][0]:g}-{sideways['air_time'][1]:g} s")
-    long = body.get("long_region")
-    if long:
-        limit += (f", and for long air times (the leap's vertical thrust) on flat ground for target_x {long['target_x'][0]:g}-{long['target_x'][1]:g} m, "
-                  f"target_y {long['target_y'][0]:g}-{long['target_y'][1]:g} m, air_time "
-                  f"{long['air_time'][0]:g}-{long['air_time'][1]:g} s")
+    parts = [f"the commanded take-off is offered on flat ground for {_flat(body['region'])}"]
+    if body.get("turned_region"):
+        parts.append(f"turned first {_turned(body['turned_region'])}")
+    if body.get("down_region"):
+        parts.append(_box(body["down_region"], "down from", "that region", "-") + ", at target_x T0 / air_time)")
+    if body.get("sideways_region"):
+        parts.append(f"turned a quarter first {_turned(body['sideways_region'])}")
+    if body.get("long_region"):
+        parts.append(f"for long air times (the leap's vertical thrust) on flat ground for {_flat(body['long_region'])}")
     for key, way, sign in (("long_onto_region", "onto", "+"), ("long_down_region", "down from", "-")):
-        box = body.get(key)
-        if box:
-            limit += (f", and {way} a box {box['height'][0]:g}-{box['height'][1]:g} m high"
-                      + (f" at target_x {box['target_x'][0]:g}-{box['target_x'][1]:g} m" if "target_x" in box else "")
-                      + f" where the same lift-off on flat ground would land in the long air times' region in "
-                        f"{box['flat_air_time'][0]:g}-{box['flat_air_time'][1]:g} s (T0 = air_time {sign} 2 height / "
-                        f"(g air_time))")
-    return limit
+        if body.get(key):
+            parts.append(_box(body[key], way, "the long air times' region", sign) + ")")
+    return ", and ".join(parts)
