@@ -821,7 +821,6 @@ class Vault(Sequence):
         self.rotation = FlightRotation(m, d, ctx.actor)
         legs = both_sides({"hip_*_y": 1, "knee_*_y": 1, "ankle_*_y": 1})
         arms_z = ["shoulder_r_z", "shoulder_l_z"]
-        limp = LIMP_ON_HORSE
         everyone = [m.body(i).name[len(p):] for i in range(m.nbody) if m.body_rootid[i] == ctx.actor.root]
         self.touching_horse = ApparatusTouch(m, "vault_table", everyone, p)
         self.limp_servos = s.indices(list(LIMP_ON_HORSE))
@@ -859,11 +858,11 @@ class Vault(Sequence):
             clav_gains = {j: c["clav_gain"] for j in clav} if girdle else {}
             if not c["horse_shoulder_gain"]:
                 return PoseLaw(ctx, both_sides({"hip_*_y": c["horse_hip"], "elbow_*_z": 0.0}), CONSTANTS.servo_move,
-                               c["elbow_gain"], ["elbow_r_z", "elbow_l_z"], limp=limp, law=law, gains=clav_gains)
+                               c["elbow_gain"], ["elbow_r_z", "elbow_l_z"], limp=LIMP_ON_HORSE, law=law, gains=clav_gains)
             # blocking: the shoulders' flexion servos act (toward horse_shoulder), the rest of the arm limp
             return PoseLaw(ctx, both_sides({"hip_*_y": c["horse_hip"], "elbow_*_z": 0.0,
                                             "shoulder_*_z": c["horse_shoulder"]}), CONSTANTS.servo_move,
-                           c["elbow_gain"], ["elbow_r_z", "elbow_l_z"], limp=tuple(j for j in limp if j not in arms_z),
+                           c["elbow_gain"], ["elbow_r_z", "elbow_l_z"], limp=tuple(j for j in LIMP_ON_HORSE if j not in arms_z),
                            gains={j: c["horse_shoulder_gain"] for j in arms_z} | clav_gains, law=law)
 
         def second_flight(t):
@@ -1147,7 +1146,7 @@ class Vault(Sequence):
         self.rotation.update(t)
         self.body_pitch()
         super().update(t)
-        if getattr(self, "cfg", None) and self.cfg["horse_gate"]:
+        if self.cfg["horse_gate"]:          # cfg: set by steps(), which start() runs before any update
             self.gate_on_horse(t)
 
     @classmethod
