@@ -53,7 +53,10 @@ SPACE = {  # name: (low, high) per group
     # platform): the schema's whole range, so that the 2 1/2 and 3 1/2 somersault dives are in it
     "crouch_pitch": {g: (0.0, 1.5) for g in GROUPS},
     "com_offset": {"inward": (-0.25, -0.05), "back": (-0.25, -0.05), "forward": (0.05, 0.25), "reverse": (0.05, 0.25)},
-    "liftoff_hip": {"inward": (-2.2, -0.6), "back": (0.3, 2.0), "forward": (-2.2, -0.6), "reverse": (0.3, 2.0)},
+    # a back or reverse take-off with the hips flexed at lift-off (-) leaves with less angular momentum, smoothly
+    # (measured on the man's 205B from its stored row: -0.5 -> 70 kg m^2/s, 0 -> 92, 0.7 -> 123): his 2 1/2 and
+    # 3 1/2 back dives need 70-95, which the range's old floor (0.3) left out
+    "liftoff_hip": {"inward": (-2.2, -0.6), "back": (-1.0, 2.0), "forward": (-2.2, -0.6), "reverse": (-1.0, 2.0)},
     "arm_swing": {"inward": (-1.0, 3.2), "back": (1.0, 3.2), "forward": (-1.0, 3.2), "reverse": (1.0, 3.2)},
     # less damping extends the legs faster: the woman's inward take-off reached the angular
     # momentum of 2 1/2 somersaults only below ~0.6 (measured: 0.3 -> 29 kg m^2/s, 1.0 -> 22)
