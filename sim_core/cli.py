@@ -83,8 +83,8 @@ def _plan_progress(done: int, total: int, best: dict) -> None:
           f"{best['landing'][1]:.2f}) m after {best['air_time']:.2f} s ({best['outcome']})", file=sys.stderr, flush=True)
 
 
-def _landing_progress(done: int, total: int, last: dict) -> None:
-    print(f"landing plan: {done}/{total} trials, best so far {last['outcome']}", file=sys.stderr, flush=True)
+def _trial_progress(done: int, total: int, last: dict) -> None:
+    print(f"plan: {done}/{total} trials, the last {last['outcome']}", file=sys.stderr, flush=True)
 
 
 def _use_store(args) -> None:
@@ -115,12 +115,11 @@ def cmd_simulate(args) -> int:
             plan_before_run(request, int(request.params.get("plan_trials", 120)), progress=_plan_progress,
                             executor=executor)
     plan = None
-    if request.behaviour == "land":           # the landing's foot placement, planned by simulating the request
-        from .planning import planned_request
-        from .planning.land import describe
+    if request.behaviour in ("land", "dive"):    # planning.PLANNED_REQUESTS: a landing's foot placement, a dive's
+        from .planning import describe, planned_request   # take-off for its platform, planned by simulating it
         from .tuning import executor_for
         with executor_for(args.workers) as executor:
-            request, plan = planned_request(request, progress=_landing_progress, executor=executor)
+            request, plan = planned_request(request, progress=_trial_progress, executor=executor)
         if plan is not None:
             print(describe(plan), file=sys.stderr, flush=True)
     trajectory = run(request, progress=_progress_printer(args.progress or sys.stderr.isatty()))

@@ -59,15 +59,15 @@ class Job:
 
 
 def planned_request(request, cancelled=None):
-    """(the request a bake runs, its plan or None): a landing's with the foot placement its plan
-    chose above the loop by a few trial runs (sim_core.planning.land, as ``simulate land`` does);
-    any other request as it is."""
+    """(the request a bake runs, its plan or None): a landing's with the foot placement, a dive's with
+    the take-off for its platform, that its plan chose above the loop by a few trial runs
+    (sim_core.planning.planned_request, as ``simulate`` does); any other request as it is."""
     return sim("planning").planned_request(request, cancelled=cancelled)
 
 
 def plan_note(plan) -> str:
-    """What a bake's report adds about a landing's plan ("" for none)."""
-    return "" if plan is None else "; " + sim("planning.land").describe(plan)
+    """What a bake's report adds about a landing's or a dive's plan ("" for none)."""
+    return "" if plan is None else "; " + sim("planning").describe(plan)
 
 
 class SimulationJob(Job):

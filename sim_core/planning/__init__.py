@@ -10,13 +10,29 @@ from .land import plan_landing
 PLANNED_BEHAVIOURS = ("jump_to_target",)     # behaviours whose runs need a plan first
 
 
+PLANNED_REQUESTS = ("land", "dive")   # behaviours whose request is planned by trial runs just before it runs
+
+
 def planned_request(request, progress=None, cancelled=None, executor=None):
-    """(the request a run executes, its landing plan or None): a ``land`` request with the foot
-    placement its plan chose by trial runs (planning.land); any other request as it is. The one rule
-    the CLI's simulate and the add-on's bakes share."""
-    if request.behaviour != "land":
-        return request, None
-    return plan_landing(request, progress=progress, cancelled=cancelled, executor=executor)
+    """(the request a run executes, its plan or None): a ``land`` request with the foot placement its
+    plan chose by trial runs (planning.land); a ``dive`` with the take-off its plan chose for the
+    platform height (planning.dive); any other request as it is. The one rule the CLI's simulate and
+    the add-on's bakes share."""
+    if request.behaviour == "land":
+        return plan_landing(request, progress=progress, cancelled=cancelled, executor=executor)
+    if request.behaviour == "dive":
+        from .dive import plan_dive          # only then: it imports the dive's calibration
+        return plan_dive(request, progress=progress, cancelled=cancelled)
+    return request, None
+
+
+def describe(plan: dict) -> str:
+    """One line about a plan of planned_request's for the person who asked."""
+    if plan.get("skill") == "dive":
+        from .dive import describe as describe_dive
+        return describe_dive(plan)
+    from .land import describe as describe_landing
+    return describe_landing(plan)
 
 
 def plan_before_run(request, budget: int, progress=None, cancelled=None, executor=None) -> dict | None:
@@ -32,4 +48,4 @@ def plan_before_run(request, budget: int, progress=None, cancelled=None, executo
                           executor=executor)
 
 
-__all__ = ["PLANNED_BEHAVIOURS", "plan_and_store", "plan_before_run", "plan_jump", "plan_landing", "planned", "planned_request"]
+__all__ = ["PLANNED_BEHAVIOURS", "PLANNED_REQUESTS", "describe", "plan_and_store", "plan_before_run", "plan_jump", "plan_landing", "planned", "planned_request"]

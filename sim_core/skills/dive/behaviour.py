@@ -54,6 +54,10 @@ DIVE_CONSTANTS = Schema(
              "let the flight's angular momentum drift 4 % (measured: 4.4 / 2.1 / 1.0 % at 1 / 0.5 / 0.25 ms)"),
     constant("hold_move", "s", 0.01, 1.0, "the servo move that keeps the lift-off shape until the body is clear of the platform"),
     constant("entry_reach", "1", 0.0, 3.0, "share of the standing COM height the hands reach below the COM in the line"),
+    constant("plan_slope", "1/rad", 0.1, 5.0,
+             "a dive's plan (planning/dive.py): somersaults gained per rad of lift-off hip, its first step (measured: "
+             "the man's 205B 1.25, the woman's 307C 0.75 on their rows)"),
+    constant("plan_step", "rad", 0.05, 1.0, "a dive's plan moves the lift-off hip at most this far per trial"),
     constant("free_tuck_twists", "1", 0.0, 3.0,
              "a dive in the free position (FINA D) somersaults in the tuck and twists in the line at the end up to "
              "this many twists, in the layout throughout above (the twist then needs the whole flight)"),
@@ -114,6 +118,21 @@ def dive_key(p: dict) -> dict:
     twists."""
     return dict(group=int(round(p["group"])), somersaults=float(p["somersaults"]), twists=float(p["twists"]),
                 position=int(round(p["position"])))
+
+
+def calibrated_here(character: str, p: dict) -> bool:
+    """Whether the dive ``p`` has a calibrated row of its own that entered as a success, asked from the
+    platform it was calibrated from (CALIBRATION_PLATFORM)."""
+    row = calibrated_row(load("dives", character) or {"dives": []}, p)
+    return (row is not None and row["measured"].get("outcome") == "success"
+            and abs(p["platform_height"] - CALIBRATION_PLATFORM) < 1e-9)
+
+
+def dive_settings(character: str, p: dict) -> dict:
+    """Every take-off setting a run of the dive ``p`` uses (without ``low_level``): load_settings over the
+    schema's defaults of the two a row may lack."""
+    defaults = {k: Dive.schema.by_name[k].default for k in ("thrust_damping", "twist_lead")}
+    return {**defaults, **load_settings(character, p)}
 
 
 def load_settings(character: str, p: dict) -> dict:
@@ -186,6 +205,9 @@ class Dive(Sequence):
         Choice("position", POSITION_NAMES[:3], "pike", "body position in flight: layout (straight), pike or tuck"),
         Parameter("platform_height", "m", 10.0, 3.0, 10.0, "platform height above the water"),
         Parameter("low_level", "bool", 0.0, 0.0, 1.0, "1 = run the tuned settings as set (--set crouch_height=...) instead of the calibrated ones"),
+        Parameter("plan_trials", "count", 12, 0, 40,
+                  "a dive its calibrated take-off does not reach from this platform (another height, or a dive with no "
+                  "calibrated row) is planned first by this many simulated dives at most (0: the take-off as calibrated)"),
         settings=DIVE_SETTINGS,
     )
 
@@ -204,8 +226,7 @@ class Dive(Sequence):
         p = self.params
         if p["low_level"]:
             return {k: p[k] for k in LEAP_SETTINGS}
-        defaults = {k: self.schema.by_name[k].default for k in ("thrust_damping", "twist_lead")}
-        return {**defaults, **load_settings(self.ctx.character.name, p)}
+        return dive_settings(self.ctx.character.name, p)
 
     def check_feasible(self) -> None:
         p = self.params
@@ -374,6 +395,10 @@ class Dive(Sequence):
     @classmethod
     def assess(cls, trajectory):
         return dive_assess(trajectory)
+
+
+CALIBRATION_PLATFORM = Dive.schema.by_name["platform_height"].default   # m: 10, FINA's highest, Wooten's dives;
+                                                                        # calibrate dive runs its dives from it
 
 
 def flight_time(platform_height: float, rise: float, reach: float) -> float:

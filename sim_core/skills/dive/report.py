@@ -20,7 +20,7 @@ ROOT = Path.cwd()                   # docs are written under the folder it runs 
 
 from ...character.model import compile_model
 from ...character.spec import load_character
-from .behaviour import (CALIBRATED_DIVES, FORWARD_ROTATING, GROUPS, ROTATION_TOLERANCE, Dive, calibrated_row,
+from .behaviour import (CALIBRATED_DIVES, CALIBRATION_PLATFORM, FORWARD_ROTATING, GROUPS, ROTATION_TOLERANCE, Dive, calibrated_row,
                         dive_name)
 from .calibrate import NoLimits
 from .fina import REPERTOIRE
@@ -182,13 +182,12 @@ calibration did not reach is refused before simulating; the table then runs its 
 take-off as set (low_level) to show what it makes.
 """
 REPERTOIRE_DOC = ROOT / "docs" / "skills" / "dives.md"
-PLATFORM = Dive.schema.by_name["platform_height"].default     # m: 10, FINA's highest, Wooten's dives
 
 
 def measure(character: str, number: str) -> dict:
     """One repertoire dive: run as an animator would (``--set dive=NUMBER``); refused, its best
     calibrated take-off run as set. The measured figures and the verdict."""
-    params = Dive.schema.validate({"dive": number, "platform_height": PLATFORM})
+    params = Dive.schema.validate({"dive": number, "platform_height": CALIBRATION_PLATFORM})
     table = tuned.load("dives", character)
     row = calibrated_row(table, params) if table else None
     out = {"character": character, "number": number, "name": dive_name(params), "params": params,
