@@ -62,6 +62,34 @@ def test_com_offset_is_reached(name, offset):
     np.testing.assert_allclose(settled(*offset) - settled(0.0, 0.0), offset, atol=0.015)
 
 
+def test_a_com_offset_beyond_the_feet_is_refused_in_one_line_before_simulating():
+    """Before: the panel's +-0.25 m (x) and +-0.2 m (y) were run as asked, and beyond about half the
+    feet's half length ahead (the man from +0.10 m, the woman from +0.10, the child from +0.05) they fell."""
+    from sim_core.errors import ParameterError
+    with pytest.raises(ParameterError) as error:
+        run(RunRequest("balance", "woman", params=dict(com_offset_x=0.1)))
+    text = str(error.value)
+    assert "\n" not in text and "com_offset_x=0.1" in text and "ahead" in text and "behind" in text
+
+
+@pytest.mark.parametrize("name", ["man", "woman", "child", "imaginary_runner"])
+def test_a_random_com_offset_inside_the_reach_is_held(name):
+    """A COM offset drawn inside what the check allows (its refusal names the ellipse; on a ray at a
+    random bearing, 60-95 % of the way to its edge): held, balanced, no step (the reach's shares were
+    measured on these four)."""
+    from sim_core.errors import ParameterError
+    with pytest.raises(ParameterError) as error:
+        run(RunRequest("balance", name, params=dict(com_offset_x=0.25)))
+    ahead, behind, side = (float(v) for v in
+                           __import__("re").search(r"of ([\d.]+) m ahead, ([\d.]+) m behind and ([\d.]+) m", str(error.value)).groups())
+    rng = np.random.default_rng(sum(map(ord, name)))
+    bearing, share = rng.uniform(0, 2 * math.pi), rng.uniform(0.6, 0.95)
+    x = share * (ahead if math.cos(bearing) > 0 else behind) * math.cos(bearing)
+    y = share * side * math.sin(bearing)
+    traj = run(RunRequest("balance", name, params=dict(com_offset_x=round(x, 4), com_offset_y=round(y, 4))))
+    assert balanced(traj), (name, x, y, traj.meta["outcome"])
+
+
 def test_a_sideways_lean_in_a_deep_crouch_holds_the_heading():
     """In a deep crouch the hips' abduction, which leans the body sideways, acts partly about the
     vertical (the hip is flexed before it abducts) and turns the pelvis: without the heading

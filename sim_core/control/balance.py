@@ -33,6 +33,13 @@ BALANCE_CONSTANTS = Schema(
     constant("lean_leak", "1/s", 0.0, 5.0, "the lean returns to zero at this rate when the error is gone"),
     constant("lean_max", "rad", 0.0, 2.0, "largest trunk lean"),
     constant("crouch_com_tolerance", "m", 0.0, 0.2, "a crouch whose COM misses the centre of the feet by more is refused"),
+    constant("com_forward_share", "1", 0.0, 1.0,
+             "a COM offset is held up to this share of the feet's half length ahead of their centre (measured: 0.49-0.64)"),
+    constant("com_back_share", "1", 0.0, 1.0,
+             "... and this share behind it (measured: 0.85-0.89)"),
+    constant("com_side_share", "1", 0.0, 1.0,
+             "... and this share of the feet's half width to either side, the three the axes of an ellipse (measured: "
+             "0.62-0.93)"),
     constant("hip_share", "1", 0.0, 2.0, "hip offset per unit of ankle offset of the COM servo (eq. 7.2, opposite sign)"),
     constant("ankle_authority", "1", 0.0, 2.0, "share of the torque the foot can take (COP at its edge) used by the ankles"),
     constant("toe_share", "1", 0.0, 1.0, "where between ball (0) and toe tip (1) the front edge of the foot is taken"),
@@ -187,8 +194,10 @@ class Balance(Behaviour):
         return np.array([self.stand_height, 0.0, 0.0, 0.0])
 
     def check_feasible(self) -> None:
-        """Refuse a pelvis height with no balanced crouch pose (COM not over the feet within the
-        joint ranges) or above standing height, before simulating."""
+        """Refuse a COM offset outside what the feet hold (com_reach) and a pelvis height with no
+        balanced crouch pose (COM not over the feet within the joint ranges) or above standing
+        height, before simulating."""
+        self._check_com_offset()
         h = self.params["pelvis_height"]
         if not h:
             return
@@ -208,6 +217,26 @@ class Balance(Behaviour):
         raise ParameterError(
             f"parameter pelvis_height={h:g} m is out of reach for {self.ctx.character.name} (no balanced "
             f"crouch with feet flat); allowed range is [{hi:.3f}, {self.stand_height:.3f}] m (or 0 for standing)")
+
+    def com_reach(self) -> tuple[float, float, float]:
+        """How far (m) the COM may be asked ahead of, behind and to either side of the centre of the
+        feet: the constants' shares of the feet's half length and half width in the heading frame
+        (measured on the man, the woman, the child and the imaginary runner: docs/skills/balance.md)."""
+        spans = [self._support_span(axis) for axis in (0, 1)]
+        half_length, half_width = ((hi - lo) / 2.0 for lo, hi in spans)
+        return (CONSTANTS.com_forward_share * half_length, CONSTANTS.com_back_share * half_length,
+                CONSTANTS.com_side_share * half_width)
+
+    def _check_com_offset(self) -> None:
+        x, y = self.params["com_offset_x"], self.params["com_offset_y"]
+        if not (x or y):
+            return
+        ahead, behind, side = self.com_reach()
+        if (x / (ahead if x > 0 else behind)) ** 2 + (y / side) ** 2 > 1.0:
+            raise ParameterError(
+                f"parameter com_offset_x={x:g} m, com_offset_y={y:g} m puts the COM beyond what the "
+                f"{self.ctx.character.name}'s feet hold; allowed: within the ellipse of {ahead:.3f} m ahead, "
+                f"{behind:.3f} m behind and {side:.3f} m to either side of the feet's centre")
 
     def _crouch_residual(self, height: float) -> float:
         """How far the COM of the best crouch pose at this height misses the centre of the feet."""
@@ -254,15 +283,24 @@ class Balance(Behaviour):
         return self._com_from_support(1)
 
     def _com_from_support(self, axis: int) -> float:
-        d = self.ctx.data
-        m = d.xmat[self.pelvis]
+        along = self._heading_axis(axis)
+        lo, hi = self._support_span(axis)
+        com = self.ctx.data.subtree_com[self.pelvis]
+        return float(along[0] * com[0] + along[1] * com[1] - 0.5 * (lo + hi))
+
+    def _heading_axis(self, axis: int) -> tuple[float, float]:
+        """The pelvis heading frame's forward (0) or left (1) axis in the ground plane."""
+        m = self.ctx.data.xmat[self.pelvis]
         yaw = math.atan2(m[3], m[0])
         c, s = math.cos(yaw), math.sin(yaw)
-        along = (c, s) if axis == 0 else (-s, c)
-        pts = self.support.supporting_points(d)
+        return (c, s) if axis == 0 else (-s, c)
+
+    def _support_span(self, axis: int) -> tuple[float, float]:
+        """The supporting points' extent along the heading frame's ``axis`` (m, world origin)."""
+        along = self._heading_axis(axis)
+        pts = self.support.supporting_points(self.ctx.data)
         p = along[0] * pts[:, 0] + along[1] * pts[:, 1]
-        com = d.subtree_com[self.pelvis]
-        return float(along[0] * com[0] + along[1] * com[1] - 0.5 * (p.min() + p.max()))
+        return float(p.min()), float(p.max())
 
     def feet_stagger(self) -> float:
         """The angle of the line from the right ankle to the left one in the feet's heading frame
