@@ -177,8 +177,22 @@ def draw_commanded(rng, character: str, key: str = "region") -> tuple:
 
 
 def draw_long(rng, character: str) -> tuple:
-    """draw_commanded in the table's long air times' box (``long_region``: the vertical thrust's)."""
-    return draw_commanded(rng, character, "long_region")
+    """draw_commanded in the table's long air times' box (``long_region``: the vertical thrust's); a table with a
+    ``near_long_region`` too: uniform in the two boxes' union (drawn in the box bounding both, again until
+    commanded.commanded_way flies it "long" or "near_long" and its measured jumps do not offer it)."""
+    from .skills.jump_to_target.commanded import commanded_way, table
+    from .skills.jump_to_target.region import offered
+    body = table(character)
+    if body.get("near_long_region") is None:
+        return draw_commanded(rng, character, "long_region")
+    long, near = body["long_region"], body["near_long_region"]
+    bounds = {k: (min(long[k][0], near[k][0]), max(long[k][1], near[k][1])) for k in ("target_x", "target_y", "air_time")}
+    for _ in range(REGION_DRAWS):
+        values = tuple(round(float(rng.uniform(*bounds[k])), DRAW_DECIMALS) for k in ("target_x", "target_y", "air_time"))
+        if commanded_way(character, values[:2], values[2]) in ("long", "near_long") and not offered(character, values[:2], values[2]):
+            return values
+    raise ParameterError(f"no target of the {character}'s long commanded regions in {REGION_DRAWS} draws lies outside the "
+                         f"region its measured jumps offer")
 
 
 def box_target_draw(rng, character: str) -> tuple:
