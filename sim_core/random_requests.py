@@ -452,7 +452,9 @@ def main(argv=None) -> int:
             + ("Long air time targets (--long) are drawn uniformly in the long air times' commanded region of each "
                "character that has one (the table's long_region: the man's and the woman's) and drawn again until its measured jumps do "
                "not offer them: the commanded take-off with the leap's vertical thrust and its own crouch pairs "
-               "(skills/jump_to_target/commanded.py long_body), aimed as the commanded targets. " if args.long else "")
+               "(skills/jump_to_target/commanded.py long_body), aimed as the commanded targets; where the table has a "
+               "near_long_region too (the man's), uniformly in the union of both, the nearer ones flown by its near row "
+               "(near_long_body: its own lean push and crouch pairs). " if args.long else "")
             + "A target without a stored plan is planned first (into a temporary "
             "plan store; on flat ground or a box from the measured jumps, at most "
             f"{min(args.budget, MODEL_TRIALS)} trials; in the commanded region only, the commanded take-off aimed "
