@@ -1301,7 +1301,10 @@ of its box targets (`box_region_share`, seed 29, as the report prints it) as bef
 target outside is refused in one line naming the rows (`commanded_limit`: "... and for long air times nearer (the vertical
 thrust with its own lean push) for target_x 0.5-1.3 m, target_y -0.02-0.02 m, air_time 0.5-0.65 s").
 `tools/scale_commanded.py` keeps the near row's keys. Not done: 1.3-1.5 m at long air times (neither row lands it reliably: the far row's push 3 leaves at ~1.25 m/s
-below aims of 1.4 m, the near row's push 10 needs aims at the 2.5 m cap), 0.5-0.55 s beyond 1.3 m, onto boxes above
+below aims of 1.4 m, the near row's push 10 needs aims at the 2.5 m cap; one sweep after, crouch 0.575 m, 0.6 s, aims
+1.0-2.2 m: push 3 landed 1.48 / 1.43 / 1.17 / 1.61 / 1.78 m, push 3 with `arm_swing` 1.0 no better, push 5 1.39 / 1.255 /
+1.368 / 1.45-1.60 m (aims 1.2 and 1.4 m within 3-6 cm, flown 0.55 s), push 10 with `arm_swing` 2.0 0.47-0.56 s: so next,
+a third row at push ~5 for 1.3-1.5 m, or the push interpolated in the aim, measured as above), 0.5-0.55 s beyond 1.3 m, onto boxes above
 0.32 m or nearer than 0.7 m (the box's front edge) and the 17 % of the low ones that miss, and the push scaled by the aim (one push per row here, measured).
 
 ![commanded vs achieved landing point](jump_to_target.png)
