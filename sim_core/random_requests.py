@@ -177,8 +177,22 @@ def draw_commanded(rng, character: str, key: str = "region") -> tuple:
 
 
 def draw_long(rng, character: str) -> tuple:
-    """draw_commanded in the table's long air times' box (``long_region``: the vertical thrust's)."""
-    return draw_commanded(rng, character, "long_region")
+    """draw_commanded in the table's long air times' box (``long_region``: the vertical thrust's); a table with a
+    ``near_long_region`` too: uniform in the two boxes' union (drawn in the box bounding both, again until
+    commanded.commanded_way flies it "long" or "near_long" and its measured jumps do not offer it)."""
+    from .skills.jump_to_target.commanded import commanded_way, table
+    from .skills.jump_to_target.region import offered
+    body = table(character)
+    if body.get("near_long_region") is None:
+        return draw_commanded(rng, character, "long_region")
+    long, near = body["long_region"], body["near_long_region"]
+    bounds = {k: (min(long[k][0], near[k][0]), max(long[k][1], near[k][1])) for k in ("target_x", "target_y", "air_time")}
+    for _ in range(REGION_DRAWS):
+        values = tuple(round(float(rng.uniform(*bounds[k])), DRAW_DECIMALS) for k in ("target_x", "target_y", "air_time"))
+        if commanded_way(character, values[:2], values[2]) in ("long", "near_long") and not offered(character, values[:2], values[2]):
+            return values
+    raise ParameterError(f"no target of the {character}'s long commanded regions in {REGION_DRAWS} draws lies outside the "
+                         f"region its measured jumps offer")
 
 
 def box_target_draw(rng, character: str) -> tuple:
@@ -438,7 +452,9 @@ def main(argv=None) -> int:
             + ("Long air time targets (--long) are drawn uniformly in the long air times' commanded region of each "
                "character that has one (the table's long_region: the man's and the woman's) and drawn again until its measured jumps do "
                "not offer them: the commanded take-off with the leap's vertical thrust and its own crouch pairs "
-               "(skills/jump_to_target/commanded.py long_body), aimed as the commanded targets. " if args.long else "")
+               "(skills/jump_to_target/commanded.py long_body), aimed as the commanded targets; where the table has a "
+               "near_long_region too (the man's), uniformly in the union of both, the nearer ones flown by its near row "
+               "(near_long_body: its own lean push and crouch pairs). " if args.long else "")
             + "A target without a stored plan is planned first (into a temporary "
             "plan store; on flat ground or a box from the measured jumps, at most "
             f"{min(args.budget, MODEL_TRIALS)} trials; in the commanded region only, the commanded take-off aimed "

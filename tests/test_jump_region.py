@@ -358,7 +358,7 @@ def test_random_long_air_times_are_flown_by_the_vertical_thrust_and_land_balance
         f"{region['air_time'][0]:g}-{region['air_time'][1]:g} s") in refusal
     draws = draw_requests(SEED, [character], 0, 0, 0, long=LONG_TARGETS)
     assert [d.character for d in draws] == [character] * LONG_TARGETS
-    assert all(commanded_way(character, d.values[:2], d.values[2]) == "long"
+    assert all(commanded_way(character, d.values[:2], d.values[2]) in ("long", "near_long")       # the man's near row too
                and mode(character, d.values[:2], d.values[2]) == "commanded" for d in draws)
     results, lines, plans, c = all_planned_and_run(character, draws, tmp_path)
     assert len(plans) == LONG_TARGETS
@@ -366,3 +366,33 @@ def test_random_long_air_times_are_flown_by_the_vertical_thrust_and_land_balance
     assert all(p["trials"] <= c.aim_trials + c.landing_trials - 1 for p in plans)
     assert sum(r["passed"] for r in results) >= LONG_TARGETS - 1, "\n".join(lines)
     assert max(r["seconds"] for r in results) <= 60, "\n".join(lines)
+
+
+@pytest.mark.slow
+def test_the_mans_near_long_air_times_are_flown_by_the_near_long_row_and_land_balanced():
+    """The man's long air times nearer than his long row (the table's near_long_region: the long row with its own lean
+    push, near_long_settings, and crouch pairs; commanded.near_long_body): drawn as the report draws long targets (the
+    union of both rows), the first near one planned commanded with the near row and run as a user's request; beyond
+    the region refused in one line naming it."""
+    from sim_core.skills.jump_to_target.commanded import commanded_way, table
+    body = table("man")
+    near = body["near_long_region"]
+    assert near["target_x"][1] <= body["long_region"]["target_x"][0]
+    assert commanded_way("man", (0.9, 0.0), 0.6) == "near_long"
+    assert commanded_way("man", (0.9, 0.0), 0.45) == "straight"                      # his commanded row first
+    assert commanded_way("man", (1.7, 0.0), 0.6) == "long"
+    assert commanded_way("man", (0.9, 0.0), near["air_time"][1] + 0.03) is None
+    assert commanded_way("man", (0.9, 0.0, 0.28), 0.47) is None     # onto a box by the near row: measured 25 / 30, not offered
+    refusal = region_refusal("man", (0.9, 0.0), near["air_time"][1] + 0.03)
+    assert "\n" not in refusal and (
+        f"for long air times nearer (the vertical thrust with its own lean push) for target_x {near['target_x'][0]:g}-"
+        f"{near['target_x'][1]:g} m, target_y {near['target_y'][0]:g}-{near['target_y'][1]:g} m, air_time "
+        f"{near['air_time'][0]:g}-{near['air_time'][1]:g} s") in refusal
+    draws = draw_requests(SEED, ["man"], 0, 0, 0, long=6)
+    assert {commanded_way("man", d.values[:2], d.values[2]) for d in draws} == {"long", "near_long"}
+    draw = next(d for d in draws if commanded_way("man", d.values[:2], d.values[2]) == "near_long")
+    result, plan = planned_and_run(draw)
+    assert plan["settings"]["lean_push"] == body["near_long_settings"]["lean_push"]
+    assert plan["settings"]["vertical_thrust"] == 1.0 and plan["settings"]["commanded_takeoff"] == 1.0
+    assert result["passed"], result_line(result)
+

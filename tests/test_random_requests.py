@@ -109,7 +109,9 @@ def test_long_draws_are_in_each_long_region_outside_the_measured_jumps():
     assert [d.character for d in long] == ["man"] * 3 + ["woman"] * 3 and all(d.skill == "long" for d in long)
     for d in long:
         x, y, t = d.values
-        region = table(d.character)["long_region"]
-        assert commanded_way(d.character, (x, y), t) == "long" and not offered(d.character, (x, y), t)
+        way = commanded_way(d.character, (x, y), t)       # the man's long draws: his long row's or his near row's (the union)
+        region = table(d.character)["long_region" if way == "long" else "near_long_region"]
+        assert way in ("long", "near_long") and not offered(d.character, (x, y), t)
         assert all(region[k][0] <= v <= region[k][1] for k, v in zip(("target_x", "target_y", "air_time"), d.values))
+    assert all(commanded_way("woman", d.values[:2], d.values[2]) == "long" for d in long if d.character == "woman")
     assert long != draw_requests(2, ["man", "woman"], 2, 1, 1, commanded=2, long=3)[len(plain):]

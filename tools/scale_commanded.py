@@ -65,7 +65,8 @@ def main() -> None:
             "region": {"target_x": [x0, x1], "target_y": [y0, y1], "air_time": [t0, t1]},
             "measured": args.measured}
     before = read("jump_commanded", args.target) or {}
-    for key in ("turn_headings", "long_region", "long_settings", "long_crouch_by_air_time", "down_region", "down_settings"):
+    for key in ("turn_headings", "long_region", "long_settings", "long_crouch_by_air_time", "down_region", "down_settings",
+                "near_long_region", "near_long_settings", "near_long_crouch_by_air_time"):
         if key in before:       # the hop's measured map (tools/turn_headings.py), the long row and the box row, measured on it, are kept
             body[key] = before[key]
     if args.turned_region:

@@ -44,11 +44,18 @@ Fig. 6 with his thrust slowed for his strength, tools/scale_commanded.py and doc
   time on flat ground, ballistics.flat_air_time, and the forward speed over it; the crouch is chosen by that
   air time); ``down_settings`` replace the table's settings for it (the landing's recovery step: the drop
   lands harder).
+- ``near_long_region`` (optional, with ``long_settings``, ``near_long_settings`` and ``near_long_crouch_by_air_time``):
+  a second long row for long air times nearer than ``long_region`` (the same keys), flown with ``long_settings`` and
+  ``near_long_settings`` over them (its own lean push, ``lean_push``: the man's long row leaves at ~1.3 m/s forward
+  whatever is aimed nearer, a larger push starts the thrust earlier in the lean, docs/jump_to_target.md) and its own
+  crouch pairs (near_long_body); a request there outside ``region`` and ``long_region`` is planned so;
 - ``long_onto_region``, ``long_down_region`` (optional, with the long row): the same keys as ``down_region`` for a
   jump straight ahead onto a box / down from one flown by the long row (long_body) where the flight's flat
   equivalent lies in ``long_region`` with its air time in ``flat_air_time``; ``target_x`` (optional, [low, high] m)
   bounds the target's own forward distance (onto a box: a nearer box's front edge, 0.3 m before the target, is
-  not cleared). Onto a box needs T0 = T + 2 h / (g T) >= 0.53 s: only the long row flies it.
+  not cleared). Onto a box needs T0 = T + 2 h / (g T) >= 0.53 s: only the long row flies it;
+  ``near_long_onto_region`` (optional, with the near long row): the same keys for onto a box by it (near_long_body),
+  its flat equivalent in ``near_long_region``.
 
 ``jump_commanded_any.json`` holds the planner's constants (the aim's bound and tolerances, the
 landing plan's bound); a character's table may hold its own in a "constants" section
@@ -103,7 +110,9 @@ def _rows(body: dict):
         yield "down_settings", body["down_settings"]
     if "long_settings" in body:
         yield "long_settings", body["long_settings"]
-    for key in ("crouch_by_air_time", "long_crouch_by_air_time"):
+    if "near_long_settings" in body:
+        yield "near_long_settings", body["near_long_settings"]
+    for key in ("crouch_by_air_time", "long_crouch_by_air_time", "near_long_crouch_by_air_time"):
         for k, height in enumerate(body.get(key, {}).get("crouch_height", [])):
             yield f"{key} {k}", {"crouch_height": height}
     for k, angle in enumerate(body.get("turn_headings", {}).get("turn_angle", [])):
@@ -162,6 +171,14 @@ def long_body(body: dict) -> dict:
             "crouch_by_air_time": body["long_crouch_by_air_time"]}
 
 
+def near_long_body(body: dict) -> dict:
+    """The table as the near long air times' plan reads it (``near_long_region``): long_body with
+    ``near_long_settings`` over its settings and ``near_long_crouch_by_air_time`` as the crouch pairs."""
+    long = long_body(body)
+    return {**long, "settings": {**long["settings"], **body["near_long_settings"]},
+            "crouch_by_air_time": body["near_long_crouch_by_air_time"]}
+
+
 def flat_equivalent(target, air_time: float) -> tuple[float, float]:
     """The flat-ground flight of a jump's lift-off velocity: a target ``target`` (x, y, z) reached in
     ``air_time`` s leaves at x / T forward and at the vertical speed that lands z m higher (ballistics);
@@ -190,7 +207,7 @@ def table(character: str) -> dict | None:
 def commanded_way(character: str, target, air_time: float) -> str | None:
     """How the commanded take-off flies the request (x, y[, z], air time): on flat ground "straight"
     inside the table's ``region`` (bounds included), "long" inside its ``long_region`` beyond it (the
-    vertical thrust, long_body), "turned" inside its ``turned_region`` beyond both
+    vertical thrust, long_body), "near_long" inside its ``near_long_region`` beyond both (near_long_body), "turned" inside its ``turned_region`` beyond both
     (a turn first, then forward), "sideways" inside its ``sideways_region`` (the quarter turn first); down
     from a box (z < 0) or onto one (z > 0) as box_way says; else None."""
     body = table(character)
@@ -207,6 +224,9 @@ def commanded_way(character: str, target, air_time: float) -> str | None:
     long = body.get("long_region")
     if long is not None and all(long[k][0] <= v <= long[k][1] for k, v in values.items()):
         return "long"
+    near = body.get("near_long_region")
+    if near is not None and all(near[k][0] <= v <= near[k][1] for k, v in values.items()):
+        return "near_long"
     if region["target_y"][0] <= y <= region["target_y"][1]:
         return None
     values = {"distance": math.hypot(x, y), "bearing": abs(math.atan2(y, x)), "air_time": float(air_time)}
@@ -218,12 +238,13 @@ def box_way(body: dict, target, air_time: float) -> str | None:
     """commanded_way for a target onto a box (z > 0) or down from one (z < 0), straight ahead: its flat equivalent
     (flat_equivalent) in the table's ``region`` with the height and T0 in ``down_region``: "down"; in its
     ``long_region`` with them in ``long_down_region`` / ``long_onto_region``: "long_down" / "long_onto" (the long row,
-    long_body); else None."""
+    long_body); onto one with them in ``near_long_region`` and ``near_long_onto_region``: "near_long_onto" (near_long_body);
+    else None."""
     z = float(target[2])
     x, air_time = flat_equivalent(target, air_time)
     values = {"target_x": x, "target_y": float(target[1]), "air_time": air_time}
     rows = (("down", "region", "down_region"), ("long_down", "long_region", "long_down_region")) if z < 0.0 \
-        else (("long_onto", "long_region", "long_onto_region"),)
+        else (("long_onto", "long_region", "long_onto_region"), ("near_long_onto", "near_long_region", "near_long_onto_region"))
     for way, region_key, box_key in rows:
         region, box = body.get(region_key), body.get(box_key)
         if (region is not None and box is not None and box["height"][0] <= abs(z) <= box["height"][1]
@@ -279,7 +300,11 @@ def commanded_limit(character: str) -> str | None:
         parts.append(f"turned a quarter first {_turned(body['sideways_region'])}")
     if body.get("long_region"):
         parts.append(f"for long air times (the leap's vertical thrust) on flat ground for {_flat(body['long_region'])}")
+    if body.get("near_long_region"):
+        parts.append(f"for long air times nearer (the vertical thrust with its own lean push) for {_flat(body['near_long_region'])}")
     for key, way, sign in (("long_onto_region", "onto", "+"), ("long_down_region", "down from", "-")):
         if body.get(key):
             parts.append(_box(body[key], way, "the long air times' region", sign) + ")")
+    if body.get("near_long_onto_region"):
+        parts.append(_box(body["near_long_onto_region"], "onto", "the nearer long air times' region", "+") + ")")
     return ", and ".join(parts)
