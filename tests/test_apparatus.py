@@ -99,6 +99,14 @@ def test_the_vaulting_table_top_is_at_its_height():
     assert rests_at == pytest.approx(height, abs=0.002), rests_at
 
 
+def test_a_springboard_given_its_stiffness_is_built_with_it():
+    name = A.PROP_BODY_PREFIX + "springboard/deflection"
+    for world, stiffness in ((World(springboard=(0.0, 0.0, 65000.0)), 65000.0),
+                             (World(springboard=(0.0, 0.0)), A.BOARD_STIFFNESS)):
+        model, data = _with_block(world, 1.0)
+        assert model.jnt_stiffness[model.joint(name).id] == stiffness
+
+
 def test_a_scene_asking_for_the_apparatus_builds_with_a_contact_column_each():
     scene = scene_from_dict({"duration": 1, "world": {
         "springboard": [2.0, 0.0], "vault_table": [4.0, 0.0, 1.25, 1.2, 0.95], "landing_mat": [7.0, 0.0, 4.0, 2.0, 0.2]},
@@ -113,7 +121,8 @@ def test_a_scene_asking_for_the_apparatus_builds_with_a_contact_column_each():
 @pytest.mark.parametrize("world, message", [
     (World(vault_table=(4.0, 0.0, 3.0, 1.2, 0.95)), "vault_table height=3.0 is out of range; allowed range is [0.8, 1.6] m"),
     (World(landing_mat=(0.0, 0.0, 3.0, 2.0, 0.01)), "landing_mat thickness=0.01 is out of range"),
-    (World(springboard=(1.0,)), "springboard=(1.0,) must be (x, y) in m"),
+    (World(springboard=(1.0,)), "springboard=(1.0,) must be (x, y[, stiffness]) in m (stiffness in N/m)"),
+    (World(springboard=(1.0, 0.0, 5.0)), "springboard stiffness=5.0 is out of range; allowed range is [10000, 200000] N/m"),
 ])
 def test_bad_apparatus_dimensions_are_refused_in_one_line(world, message):
     with pytest.raises(ParameterError) as error:

@@ -190,11 +190,6 @@ def test_shoulders_and_wrists_have_no_torque_on_the_horse(vault):
     assert not later
 
 
-def test_the_man_is_refused_in_one_line():
-    with pytest.raises(ParameterError, match=r"^the man has no vault settings with human torque limits"):
-        run(RunRequest("vault", "man", duration=0.1))
-
-
 def test_the_vault_replays_bit_for_bit(vault):
     assert largest_difference(vault, replay(vault)) == 0.0
 

@@ -10,7 +10,8 @@
    then check again.
 
 One adapter per skill with a per-character table that scales: landing, leap (vertical, human
-strength) and running; balance has no table and is checked only. Every other skill is run once
+strength), running and the vault (its one row and the constants the body meets the vault by); balance
+has no table and is checked only. Every other skill is run once
 with its default request by the command (``sim_core.adapt.command``) and reported as it is.
 
 An adapter's ``scale`` returns a table body; the command writes it through the store, so a check's
@@ -45,6 +46,11 @@ LEAP_SECONDS = 4.5           # definition: a leap's run, as calibrate leap's tri
 RUN_SECONDS = 100.0          # criterion: TARGETS.md's 100 s of running without a fall
 SPEED_TOLERANCE = 0.05       # criterion: mean speed of the last 10 s within 5 % (TARGETS.md "Running")
 RUN_SEARCH_SECONDS = 15.0    # definition: the seed's 15 s evaluation runs (§5, S6)
+VAULT_BODY_CONSTANTS = ("start_com_height", "touchdown_on_board", "horse_gap", "horse_height", "board_stiffness",
+                        "handled_speed")
+                             # definition: the vault's constants a body meets the vault by (its start, the apparatus,
+                             # the board's springs and the run-up), scaled with its row; the rest (mat, bow, gesture,
+                             # search) are shared
 
 
 @dataclass
@@ -378,4 +384,77 @@ class RunningAdapter(Adapter):
         return tuned.load("running", name), evaluations
 
 
-ADAPTERS = {a.skill: a for a in (BalanceAdapter(), LandingAdapter(), LeapAdapter(), RunningAdapter())}
+def board_for(stiffness: float, source: CharacterSpec, target: CharacterSpec, length: float) -> float:
+    """The springboard's stiffness (N/m) for ``target`` by Fig. 6 on the board's half period with the
+    gymnast on it, pi sqrt((m + deck) / k), a time: x L^1/2 (the deck's mass does not scale, so this is
+    not the stiffness's own mass scaling; the board's springs are set for the gymnast's weight)."""
+    from ..world.apparatus import BOARD_MASS
+    return stiffness * (target.total_mass + BOARD_MASS) / (source.total_mass + BOARD_MASS) / length
+
+
+class VaultAdapter(Adapter):
+    """The vault's table (issue 31): the source's row scaled by Fig. 6 in mass mode (lengths by L,
+    times and speeds by L^1/2, the gains by the mass or inertia they move: the row's gains are factors
+    on the rig's own servos, so only ``settled_spin`` changes with the mode), and the constants the body
+    meets the vault by (``VAULT_BODY_CONSTANTS``: the start's COM height, the board-to-horse gap, the
+    horse's height, the board's springs and the run-up speed) scaled as lengths, times and speeds, so the
+    apparatus stands for the body as it stood for the source (the man's horse 1.36 m: the men's horse is
+    1.35 m; his board 62 kN/m, its half period with him on it 0.128 s, hers 0.120 s x L^1/2; docs/vault.md)."""
+    skill, table = "vault", "vault"
+
+    def scale(self, source: CharacterSpec, target: CharacterSpec, body: dict) -> tuple[dict, int]:
+        from ..skills.vault.behaviour import VAULT_CONSTANTS, VAULT_SETTINGS, vault_constants
+        pair = CharacterPair(source, target)
+        shared = vars(vault_constants(source.name))
+        constants = scale_constants({n: shared[n] for n in VAULT_BODY_CONSTANTS}, VAULT_CONSTANTS, pair, MASS)
+        constants["board_stiffness"] = board_for(shared["board_stiffness"], source, target, pair.length)
+        held = lambda n, v: v if isinstance(v, bool) else min(max(v, VAULT_SETTINGS.by_name[n].minimum),
+                                                               VAULT_SETTINGS.by_name[n].maximum)
+        # each value held inside its setting's range (a flag such as horse_clav_after -1, "off", stays off;
+        # capture_after's 3 s stays 3 s)
+        rows = [{"strength": e["strength"], "settings": {n: held(n, v) for n, v in
+                                                         scale_settings(e["settings"], VAULT_SETTINGS, pair, MASS).items()}}
+                for e in body["vaults"] if e["strength"] == "human"]
+        return {"script": f"python -m sim_core adapt (the {source.name}'s vault scaled by Fig. 6, mass mode)",
+                "constants": {n: ([round(x, 4) for x in v] if isinstance(v, list) else round(v, 4))
+                              for n, v in constants.items()},
+                "vaults": [{**e, "settings": {n: round(v, 6) if isinstance(v, float) else v
+                                              for n, v in e["settings"].items()}} for e in rows]}, 0
+
+    def check(self, character: str, rng) -> Check:
+        """The whole vault at each end of the table's handled_speed (one run where they are one speed):
+        the vault's own assessment (one somersault, feet first, at most 11.6 body weights, standing,
+        the gesture and the bow)."""
+        from ..skills.vault.behaviour import vault_constants
+        speeds = sorted(set(vault_constants(load_character(character).name).handled_speed))
+        figures, failed = [], []
+        for v in speeds:
+            t = _run("vault", character, params={"runup_speed": float(v)})
+            m = t.meta["metrics"]
+            figures.append(f"{v:g} m/s: {t.meta['outcome']} ({m['rotation']:.2f} rad, "
+                           f"{m.get('peak_landing_body_weights', float('nan')):.1f} body weights)")
+            if t.meta["outcome"] != "success":
+                failed.append(float(v))
+        return Check(not failed, "; ".join(figures), len(speeds), failed=tuple(failed))
+
+    def search(self, character: str, workers: int, minutes: float, check: Check) -> tuple[dict, int]:
+        """The vault's landing search (planning.vault.plan_foot_delta) at each failing speed, from the
+        row's foot_delta; the first standing placement is kept in the row."""
+        from .. import tuned
+        from ..planning.vault import plan_foot_delta
+        from ..skills.vault.behaviour import VAULT_SETTINGS
+        from ..skills.vault.report import run_at
+        name = load_character(character).name
+        body = tuned.load("vault", name)
+        row = next(e for e in body["vaults"] if e["strength"] == "human")
+        knob, trials = VAULT_SETTINGS.by_name["foot_delta"], 0
+        for v in check.failed:
+            plan = plan_foot_delta(lambda d, v=v: run_at(v, character, overrides=[f"foot_delta={d}"]),
+                                   row["settings"]["foot_delta"], knob.minimum, knob.maximum)
+            trials += plan["trials"]
+            if plan["found"]:
+                row["settings"]["foot_delta"] = plan["foot_delta"]
+        return dict(body, script=body["script"] + " and its landing searched (planning.vault)"), trials
+
+
+ADAPTERS = {a.skill: a for a in (BalanceAdapter(), LandingAdapter(), LeapAdapter(), RunningAdapter(), VaultAdapter())}

@@ -27,7 +27,9 @@ PROP_BODY_PREFIX = "prop:"     # a moving prop's body; ':' is not allowed in an 
 BOARD_LENGTH, BOARD_WIDTH, BOARD_TOP = 1.20, 0.60, 0.20       # m; BOARD_TOP: the top at rest
 BOARD_THICKNESS = 0.05          # m: the deck
 BOARD_MASS = 5.0                # kg: the moving deck (a whole board weighs ~20-25 kg, most of it the base)
-BOARD_STIFFNESS = 40000.0       # N/m
+BOARD_STIFFNESS = 40000.0       # N/m: the board's default (a World may give its own: springboard=(x, y, stiffness))
+BOARD_STIFFNESS_RANGE = (10000.0, 200000.0)   # N/m: what is refused outside (a board's springs are set for the
+                                              # gymnast's weight: docs/vault.md "Apparatus")
 BOARD_DAMPING = 250.0           # N s/m: damping ratio ~0.08 with a 53 kg gymnast (the board rebounds)
 BOARD_TRAVEL = 0.14             # m: the deck bottoms out 1 cm above the floor
 
@@ -53,9 +55,9 @@ MAX_POSITION = 1000.0
 
 
 POSITION = (-MAX_POSITION, MAX_POSITION)
-# each apparatus field: its values in order, each with its allowed range (m)
+# each apparatus field: its values in order, each with its allowed range (m unless APPARATUS_UNITS says)
 APPARATUS_LAYOUT = {
-    "springboard": {"x": POSITION, "y": POSITION},
+    "springboard": {"x": POSITION, "y": POSITION, "stiffness": BOARD_STIFFNESS_RANGE},
     "vault_table": {"x": POSITION, "y": POSITION, "height": VAULT_HEIGHT_RANGE, "length": VAULT_SIZE_RANGE,
                     "width": VAULT_SIZE_RANGE},
     "landing_mat": {"x": POSITION, "y": POSITION, "length": MAT_SIZE_RANGE, "width": MAT_SIZE_RANGE,
@@ -63,26 +65,35 @@ APPARATUS_LAYOUT = {
 }
 
 
+APPARATUS_UNITS = {"stiffness": "N/m"}
+APPARATUS_DEFAULTS = {"springboard": {"stiffness": BOARD_STIFFNESS}}   # trailing values a World may leave out
+
+
 def check_apparatus(field: str, value) -> tuple:
-    """``value`` of the World field ``field`` (see APPARATUS_LAYOUT) as a tuple of floats, or a
-    one-line refusal naming the bad value and its allowed range."""
-    layout = APPARATUS_LAYOUT[field]
-    if not (isinstance(value, (tuple, list)) and len(value) == len(layout)):
-        raise ParameterError(f"{field}={value!r} must be ({', '.join(layout)}) in m")
+    """``value`` of the World field ``field`` (see APPARATUS_LAYOUT) as a tuple of floats, the values
+    left out filled from APPARATUS_DEFAULTS, or a one-line refusal naming the bad value and its
+    allowed range."""
+    layout, defaults = APPARATUS_LAYOUT[field], APPARATUS_DEFAULTS.get(field, {})
+    if not (isinstance(value, (tuple, list)) and len(layout) - len(defaults) <= len(value) <= len(layout)):
+        given = ", ".join(n for n in layout if n not in defaults) + "".join(f"[, {n}]" for n in defaults)
+        units = "".join(f" ({n} in {APPARATUS_UNITS.get(n, 'm')})" for n in defaults)
+        raise ParameterError(f"{field}={value!r} must be ({given}) in m{units}")
     for (name, (lo, hi)), v in zip(layout.items(), value):
         if isinstance(v, bool) or not isinstance(v, (int, float)) or not math.isfinite(v) or not lo <= v <= hi:
-            raise ParameterError(f"{field} {name}={v!r} is out of range; allowed range is [{lo:g}, {hi:g}] m")
-    return tuple(float(v) for v in value)
+            raise ParameterError(f"{field} {name}={v!r} is out of range; allowed range is [{lo:g}, {hi:g}] "
+                                 f"{APPARATUS_UNITS.get(name, 'm')}")
+    return tuple(float(v) for v in value) + tuple(defaults[n] for n in list(layout)[len(value):])
 
 
 @prop_builder("springboard")
 def add_springboard(spec: mujoco.MjSpec, world: World, character) -> None:
     """The deck "springboard" on a vertical slide "prop:springboard/deflection": joint stiffness
-    BOARD_STIFFNESS and damping BOARD_DAMPING, spring reference set so the deck rests at
-    qpos = 0 (top at BOARD_TOP) under its own weight; a limit at BOARD_TRAVEL is its bottoming out."""
+    the World's (BOARD_STIFFNESS unless it gives one) and damping BOARD_DAMPING, spring reference set
+    so the deck rests at qpos = 0 (top at BOARD_TOP) under its own weight; a limit at BOARD_TRAVEL is
+    its bottoming out."""
     if not world.springboard:
         return
-    x, y = check_apparatus("springboard", world.springboard)
+    x, y, stiffness = check_apparatus("springboard", world.springboard)
     size = np.array([BOARD_LENGTH, BOARD_WIDTH, BOARD_THICKNESS])
     body = spec.worldbody.add_body(name=PROP_BODY_PREFIX + "springboard",
                                    pos=[x, y, world.floor + BOARD_TOP - BOARD_THICKNESS / 2])
@@ -90,8 +101,8 @@ def add_springboard(spec: mujoco.MjSpec, world: World, character) -> None:
     body.fullinertia = list(BOARD_MASS / 12 * (size @ size - size ** 2)) + [0.0, 0.0, 0.0]   # a solid box's
     body.explicitinertial = True                 # kept in the model's XML (the trajectory's)
     body.add_joint(name=PROP_BODY_PREFIX + "springboard/deflection", type=mujoco.mjtJoint.mjJNT_SLIDE,
-                   axis=[0, 0, 1], stiffness=BOARD_STIFFNESS, damping=BOARD_DAMPING,
-                   springref=BOARD_MASS * GRAVITY / BOARD_STIFFNESS, limited=mujoco.mjtLimited.mjLIMITED_TRUE,
+                   axis=[0, 0, 1], stiffness=stiffness, damping=BOARD_DAMPING,
+                   springref=BOARD_MASS * GRAVITY / stiffness, limited=mujoco.mjtLimited.mjLIMITED_TRUE,
                    range=[-BOARD_TRAVEL, BOARD_TRAVEL])
     deck = body.add_geom(name="springboard", type=mujoco.mjtGeom.mjGEOM_BOX,
                          size=list(size / 2), rgba=[0.85, 0.75, 0.55, 1])

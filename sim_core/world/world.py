@@ -42,7 +42,7 @@ class World:
                                                # on a box (a box of World.boxes with its top at z = 0, so every
                                                # standing controller works unchanged) and can jump down
     bicycle: Bicycle | None = None             # the bicycle prop (sim_core.world.bicycle), None: no bicycle
-    springboard: tuple = ()                    # (x, y) m: a springboard's centre (geom "springboard"), () = none
+    springboard: tuple = ()                    # (x, y[, stiffness N/m]) m: a springboard's centre (geom "springboard"), () = none
     vault_table: tuple = ()                    # (x, y, height, length, width) m: a vaulting table or horse
     landing_mat: tuple = ()                    # (x, y, length, width, thickness) m: a mat softer than the floor
                                                # (sim_core.world.apparatus: figures, checks and builders)

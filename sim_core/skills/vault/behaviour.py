@@ -30,7 +30,8 @@
 
 Nothing but gravity, the contacts (board, horse, mat) and the joint servos moves her. The settings
 per character come from ``sim_core/tuned/tables/vault_<character>.json`` and the shared design values
-(apparatus layout, the seed's start) from ``vault_any.json``'s constants.
+(apparatus layout, the seed's start) from ``vault_any.json``'s constants, each one a character's own table
+holds in its "constants" replaced (the man's: his start, horse, board and run-up, scaled by Fig. 6).
 """
 from __future__ import annotations
 
@@ -54,10 +55,10 @@ from .assess import LIMP_ON_HORSE
 from ...control.tumble import FlightRotation, both_sides, inertia_about_com, rotation_to_come
 from ...errors import ParameterError
 from ...schema import Choice, Parameter, Schema
-from ...tuned import TableType, keyed, load, register as register_table
-from ...tuned.constants import constant, constant_rows, read_constants, with_constants
+from ...tuned import TableType, characters_of, keyed, load, register as register_table
+from ...tuned.constants import constant, constant_rows, own_constants, read_constants, with_constants
 from ...tuned.settings import SkillSchema, prefixed, ranged as setting, unprefixed
-from ...world.apparatus import (BOARD_LENGTH, BOARD_TOP, HORSE_1987_HEIGHT, HORSE_1987_LENGTH, HORSE_1987_WIDTH,
+from ...world.apparatus import (BOARD_LENGTH, BOARD_TOP, HORSE_1987_LENGTH, HORSE_1987_WIDTH,
                                 PROP_BODY_PREFIX, VAULT_TABLE_HEIGHT_MEN,
                                 VAULT_TABLE_HEIGHT_WOMEN, VAULT_TABLE_LENGTH, VAULT_TABLE_WIDTH)
 
@@ -69,6 +70,12 @@ VAULT_CONSTANTS = Schema(
     constant("touchdown_on_board", "m", -0.6, 0.6,
              "the start is placed so that the feet touch down this far ahead of the board's centre"),
     constant("horse_gap", "m", 0.0, 3.0, "the horse's near edge this far ahead of the board's front edge"),
+    constant("board_stiffness", "N/m", 10000.0, 200000.0,
+             "the springboard's spring: the woman's 40 kN/m (world.apparatus BOARD_STIFFNESS); a board's springs are set "
+             "for the gymnast's weight (the man's: scaled by Fig. 6; docs/vault.md)"),
+    constant("horse_height", "m", 0.8, 1.6,
+             "the 1987 horse's height (vaulted sideways): the women's 1.20 m of Takei's data; a character's own "
+             "table may hold another (the man's: the men's horse, 1.35 m; docs/vault.md)"),
     constant("mat_gap", "m", 0.0, 3.0, "the landing mat's near edge this far beyond the horse's far edge"),
     constant("mat_size", "m", 0.5, 20.0, "the landing mat's length and width"),
     constant("mat_thickness", "m", 0.05, 0.5, "the landing mat's thickness"),
@@ -90,6 +97,13 @@ VAULT_CONSTANTS = Schema(
     constant("final_stand", "s", 0.0, 30.0, "after the bow she stands this long, and the run ends"),
 )
 CONSTANTS = read_constants("vault", VAULT_CONSTANTS)
+
+
+def vault_constants(character: str | None):
+    """The vault's constants for ``character``: vault_any.json's, each one the character's own table
+    holds in its "constants" section replaced (the man's: scaled from the woman's by Fig. 6,
+    adapt.skills.VaultAdapter); None: the shared ones."""
+    return CONSTANTS if character is None else own_constants("vault", character, CONSTANTS)
 
 APPARATUS = ("horse_1987", "table")
 DEFLECTION_JOINT = PROP_BODY_PREFIX + "springboard/deflection"
@@ -298,19 +312,19 @@ def apparatus_layout(params: dict, character, further: float = 0.0) -> dict:
     +X from the start's COM at x = 0, the horse ``further`` (the setting board_further) beyond the
     constant gap. The women's horse of Takei's 1987 data (sideways) or the FIG table at the character's
     height (women's for the woman, men's for the man)."""
-    board_x = CONSTANTS.board_ahead
-    near = board_x + BOARD_LENGTH / 2 + CONSTANTS.horse_gap + further
+    k = vault_constants(None if character is None else character.name)
+    board_x = k.board_ahead
+    near = board_x + BOARD_LENGTH / 2 + k.horse_gap + further
     if APPARATUS[int(round(params["apparatus"]))] == "horse_1987":
-        height, length, width = HORSE_1987_HEIGHT, HORSE_1987_LENGTH, HORSE_1987_WIDTH
+        height, length, width = k.horse_height, HORSE_1987_LENGTH, HORSE_1987_WIDTH
         length, width = width, length                  # sideways: its 0.35 m across the run
     else:
         height = VAULT_TABLE_HEIGHT_MEN if character is not None and character.name == "man" else VAULT_TABLE_HEIGHT_WOMEN
         length, width = VAULT_TABLE_LENGTH, VAULT_TABLE_WIDTH
     far = near + length
-    mat_length, mat_width = CONSTANTS.mat_size
-    return {"springboard": (board_x, 0.0), "vault_table": (near + length / 2, 0.0, height, length, width),
-            "landing_mat": (far + CONSTANTS.mat_gap + mat_length / 2, 0.0, mat_length, mat_width,
-                            CONSTANTS.mat_thickness),
+    mat_length, mat_width = k.mat_size
+    return {"springboard": (board_x, 0.0, k.board_stiffness), "vault_table": (near + length / 2, 0.0, height, length, width),
+            "landing_mat": (far + k.mat_gap + mat_length / 2, 0.0, mat_length, mat_width, k.mat_thickness),
             "near_edge": near, "far_edge": far, "height": height}
 
 
@@ -693,7 +707,7 @@ class Vault(Sequence):
     schema = SkillSchema(
         Parameter("runup_speed", "m/s", 6.75, 0.0, 12.0,
                   "horizontal COM speed of the hurdle flight (the seed's start: 6.75 m/s, Takei's mean); the "
-                  "controller handles the range of vault_any.json's handled_speed"),
+                  "controller handles the range of the character's handled_speed (vault_any.json's, or its own table's)"),
         Choice("apparatus", APPARATUS, "horse_1987",
                "what she vaults: the 1987 women's horse of Takei's data (sideways, 1.20 m) or the FIG table"),
         Parameter("low_level", "bool", 0.0, 0.0, 1.0,
@@ -726,6 +740,7 @@ class Vault(Sequence):
         x = 0, every body moving at (runup_speed, 0, hurdle_vz) plus the hurdle's forward spin."""
         strength = "human" if model.actuator_forcelimited[model.actuator(prefix + "knee_r_y").id] else "unlimited"
         c = cls.settings_for(params, character.name, strength)
+        k = vault_constants(character.name)
         pose = both_sides({"hip_*_y": c["block_hip"], "knee_*_y": c["board_knee"], "shoulder_*_z": c["hurdle_arm"],
                            "elbow_*_z": 0.0})
         for name, value in pose.items():
@@ -737,7 +752,7 @@ class Vault(Sequence):
         mujoco.mj_kinematics(model, data)
         mujoco.mj_comPos(model, data)
         com = data.subtree_com[root.bodyid[0]].copy()
-        data.qpos[q:q + 3] += np.array([0.0, 0.0, BOARD_TOP + CONSTANTS.start_com_height]) - com
+        data.qpos[q:q + 3] += np.array([0.0, 0.0, BOARD_TOP + k.start_com_height]) - com
         own = model.body_rootid[model.dof_bodyid] == root.bodyid[0]     # this character's dofs only
         data.qvel[own] = 0.0
         mujoco.mj_kinematics(model, data)
@@ -749,7 +764,7 @@ class Vault(Sequence):
         fall = lowest[2] - BOARD_TOP
         vz = c["hurdle_vz"]
         fall_time = (vz + math.sqrt(vz * vz + 2 * GRAVITY * max(fall, 0.0))) / GRAVITY
-        data.qpos[q] += CONSTANTS.board_ahead + CONSTANTS.touchdown_on_board - (lowest[0] + params["runup_speed"] * fall_time)
+        data.qpos[q] += k.board_ahead + k.touchdown_on_board - (lowest[0] + params["runup_speed"] * fall_time)
         mujoco.mj_kinematics(model, data)
         mujoco.mj_comPos(model, data)
         com = data.subtree_com[root.bodyid[0]].copy()
@@ -761,13 +776,13 @@ class Vault(Sequence):
                               c["hurdle_vz"] - spin * (origin[0] - com[0])]
         data.qvel[v + 3:v + 6] = np.array([0.0, spin, 0.0]) @ data.xmat[root.bodyid[0]].reshape(3, 3)
         return {"state": "hurdle", "com": com.tolist(), "com_velocity": [params["runup_speed"], 0.0, c["hurdle_vz"]],
-                "pitch": lean, "spin": spin, "com_above_board": CONSTANTS.start_com_height}
+                "pitch": lean, "spin": spin, "com_above_board": k.start_com_height}
 
     def check_feasible(self) -> None:
         if self.params["low_level"]:
             return                  # the settings as set, at any run-up speed (how handled_speed is measured)
         speed = self.params["runup_speed"]
-        low, high = CONSTANTS.handled_speed
+        low, high = vault_constants(self.ctx.character.name).handled_speed
         if not low <= speed <= high:
             raise ParameterError(f"parameter runup_speed={speed:g} m/s is outside what the vault controller handles; "
                                  f"allowed range is [{low:g}, {high:g}] m/s")
@@ -776,7 +791,8 @@ class Vault(Sequence):
             limits = "unlimited strength" if strength == "unlimited" else "human torque limits"
             rows = [f"{e['strength']} strength" for e in load_table(name)["vaults"]]
             raise ParameterError(f"the {name} has no vault settings with {limits} (sim_core/tuned/tables/vault_{name}.json: "
-                                 f"{', '.join(rows) or 'none'}); the vault is set for the woman with human torque limits")
+                                 f"{', '.join(rows) or 'none'}); the vault is set for the "
+                                 f"{' and the '.join(characters_of('vault'))} with human torque limits")
 
     # ------------------------------------------------------------------ measurements
     def body_pitch(self) -> float:
@@ -798,7 +814,7 @@ class Vault(Sequence):
         c = self.cfg = self.settings_for(self.params, ctx.character.name, run_strength(ctx))
         layout = apparatus_layout(self.params, ctx.character, c["board_further"])
         self.hand_goal = np.array([layout["near_edge"] + c["hand_ahead"], 0.0, layout["height"]])
-        self.mat_top = CONSTANTS.mat_thickness
+        self.mat_top = vault_constants(ctx.character.name).mat_thickness
         body = ctx.actor.body_id
         self.pelvis, self.chest = body("PELVIS"), body("CHEST1")
         self.shoulders = [body("UARMR"), body("UARML")]

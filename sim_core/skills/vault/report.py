@@ -27,6 +27,9 @@ def format_table_1(trajectory) -> str:
     mass = measured["mass"]
     m0, lo, hi, sim = TAKEI_MASS
     lines.append(f"{'mass (kg)':28s} {mass:9.2f} {m0:10.2f} {f'[{lo:g}, {hi:g}]':>16s} {sim:9.2f}  {lo <= mass <= hi}")
+    if not lo <= mass <= hi:
+        lines.append(f"  (Takei's 24 gymnasts are a reference here: the {meta['character']} is {mass:.1f} kg, outside their "
+                     f"{lo:g}-{hi:g} kg)")
     for name, unit, mean, lo, hi, sim in TABLE_1:
         ours = rows[name]
         value = "   (none)" if ours is None else f"{ours:9.3f}"
@@ -206,6 +209,8 @@ def main(argv=None) -> int:
     parser = argparse.ArgumentParser(prog="python -m sim_core report vault", description=__doc__.split("\n\n")[0])
     parser.add_argument("--character", default="woman")
     parser.add_argument("--apparatus", default="horse_1987", choices=("horse_1987", "table"))
+    parser.add_argument("--speed", type=float, default=None,
+                        help="the run-up speed (default: the middle of the character's handled_speed)")
     parser.add_argument("--out", default=None, help="also write the trajectory (.npz)")
     parser.add_argument("--scan", nargs=3, type=float, metavar=("LOW", "HIGH", "STEP"),
                         help="instead: run the vault at run-up speeds LOW..HIGH every STEP m/s (and --draws random ones) "
@@ -230,7 +235,10 @@ def main(argv=None) -> int:
         return scan_main(args)
     if args.landing:
         return landing_main(args)
-    trajectory = run(RunRequest("vault", args.character, params={"apparatus": args.apparatus}))
+    from ...character.spec import load_character
+    from .behaviour import vault_constants
+    speed = args.speed if args.speed is not None else float(np.mean(vault_constants(load_character(args.character).name).handled_speed))
+    trajectory = run(RunRequest("vault", args.character, params={"apparatus": args.apparatus, "runup_speed": speed}))
     if args.out:
         trajectory.save(args.out)
     print(format_table_1(trajectory))
