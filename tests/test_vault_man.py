@@ -89,3 +89,12 @@ def test_a_run_up_speed_outside_his_range_is_refused(his):
 def test_the_child_is_refused_in_one_line():
     with pytest.raises(ParameterError, match=r"^the child has no vault settings with human torque limits"):
         run(RunRequest("vault", "child", params={"runup_speed": CONSTANTS.handled_speed[0]}, duration=0.1))
+
+
+def test_his_default_request_vaults_at_the_middle_of_his_range(his):
+    """The schema's run-up (6.75 m/s, hers) is outside his range: the CLI's and the panel's defaults for him
+    (Vault.character_defaults) are the middle of it, so ``simulate vault --character man`` is not refused."""
+    from sim_core.request import behaviour_params
+    low, high = his.handled_speed
+    assert low <= behaviour_params("vault", "man")["runup_speed"] <= high
+    assert behaviour_params("vault", "woman")["runup_speed"] == 6.75
