@@ -3,6 +3,7 @@ and judged as the random-requests report draws and judges them (planned from the
 then run); a target outside the region is refused in one line before anything is simulated."""
 from __future__ import annotations
 
+import math
 import tempfile
 from pathlib import Path
 
@@ -365,4 +366,33 @@ def test_random_long_air_times_are_flown_by_the_vertical_thrust_and_land_balance
     assert all(p["settings"]["vertical_thrust"] == 1.0 and p["settings"]["commanded_takeoff"] == 1.0 for p in plans)
     assert all(p["trials"] <= c.aim_trials + c.landing_trials - 1 for p in plans)
     assert sum(r["passed"] for r in results) >= LONG_TARGETS - 1, "\n".join(lines)
+    assert max(r["seconds"] for r in results) <= 60, "\n".join(lines)
+
+
+TURNED_LONG_TARGETS = 3     # random targets in a character's turned long air times' region, outside its measured jumps'
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("character", ["man", "woman"])
+def test_random_lateral_targets_at_long_air_times_turn_first_and_fly_the_long_row(character, tmp_path):
+    """A target to the side at a long air time (the table's turned_long_region): planned by plan_turned with the
+    table read by long_body (the hop toward it, then the long row: the leap's vertical thrust), run as a user's
+    request; beyond the region refused naming it."""
+    from sim_core.skills.jump_to_target.commanded import commanded_way, table
+    region = table(character)["turned_long_region"]
+    d, b, t = (0.5 * sum(region[k]) for k in ("distance", "bearing", "air_time"))
+    assert commanded_way(character, (d * math.cos(b), -d * math.sin(b)), t) == "turned_long"
+    assert commanded_way(character, (d * math.cos(b), d * math.sin(b)), region["air_time"][1] + 0.05) is None
+    refusal = region_refusal(character, (d * math.cos(b), d * math.sin(b)), region["air_time"][1] + 0.1)
+    assert "\n" not in refusal and (
+        f"turned first with long air times for a distance of {region['distance'][0]:g}-{region['distance'][1]:g} m") in refusal
+    draws = draw_requests(SEED, [character], 0, 0, 0, turned_long=TURNED_LONG_TARGETS)
+    assert [d.skill for d in draws] == ["turned_long"] * TURNED_LONG_TARGETS
+    assert all(commanded_way(character, d.values[:2], d.values[2]) == "turned_long"
+               and not offered(character, d.values[:2], d.values[2]) for d in draws)
+    results, lines, plans, c = all_planned_and_run(character, draws, tmp_path)
+    assert len(plans) == TURNED_LONG_TARGETS
+    assert all(p["settings"]["vertical_thrust"] == 1.0 and p["settings"]["turn_angle"] != 0.0 for p in plans)
+    assert all(p["trials"] <= c.turn_aim_trials + c.landing_trials - 1 for p in plans)
+    assert sum(r["passed"] for r in results) >= TURNED_LONG_TARGETS - 1, "\n".join(lines)
     assert max(r["seconds"] for r in results) <= 60, "\n".join(lines)
