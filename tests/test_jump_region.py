@@ -29,7 +29,7 @@ def test_random_targets_in_the_region_land_on_target_balanced(character, tmp_pat
 
 
 @pytest.mark.parametrize("params, words", [
-    ({"target_x": 1.0, "target_y": 0.4, "air_time": 0.45}, ["target_y at 1.00 m forward in 0.45 s is offered only in"]),
+    ({"target_x": 1.3, "target_y": 0.4, "air_time": 0.45}, ["target_y at 1.30 m forward in 0.45 s is offered only in"]),
     ({"target_x": 1.0, "target_y": 0.0, "air_time": 0.8}, ["air_time at 1.00 m forward is offered only in"]),   # beyond the longest flight
     ({"target_x": 2.2, "target_y": 0.0, "air_time": 0.5}, ["no balanced jump of the man lands within 5 cm of 2.20 m"]),
 ])
@@ -143,7 +143,7 @@ def test_random_targets_in_the_commanded_region_are_planned_commanded_and_land_b
 def test_a_target_outside_both_regions_is_refused_naming_both(monkeypatch):
     import sim_core.simulate as simulate
     monkeypatch.setattr(simulate, "Recorder", None)         # a run that started would fail differently
-    params = {"target_x": 1.0, "target_y": 0.4, "air_time": 0.6, "plan_trials": 24}
+    params = {"target_x": 1.0, "target_y": 0.55, "air_time": 0.45, "plan_trials": 24}    # 29 deg: the turned rows' gap
     with pytest.raises(ParameterError) as refused:
         run(RunRequest("jump_to_target", "woman", params=params))
     text = str(refused.value)
@@ -155,7 +155,9 @@ def test_a_target_outside_both_regions_is_refused_naming_both(monkeypatch):
                          "(T0 = air_time - 2 height / (g air_time), at target_x T0 / air_time), and turned a quarter "
                          "first for a distance of 1-1.2 m at a bearing of 87-90 deg to either side, air_time 0.4-0.44 s, "
                          "and for long air times (the leap's vertical thrust) on flat ground for target_x 0.5-1.6 m, "
-                         "target_y -0.02-0.02 m, air_time 0.52-0.7 s, and onto a box 0.25-0.5 m high at target_x "
+                         "target_y -0.02-0.02 m, air_time 0.52-0.7 s, and turned first with long air times for a "
+                         "distance of 0.7-1.6 m at a bearing of 0-34 deg to either side, air_time 0.52-0.7 s, and onto "
+                         "a box 0.25-0.5 m high at target_x "
                          "0.85-1.6 m where the same lift-off on flat ground would land in the long air times' region in "
                          "0.52-0.7 s (T0 = air_time + 2 height / (g air_time))")
     assert "the commanded take-off is offered on flat ground for target_x 0.5-1.2 m" in region_refusal("man", (1.0, 0.4), 0.6)
