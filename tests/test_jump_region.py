@@ -375,7 +375,7 @@ TURNED_LONG_TARGETS = 3     # random targets in a character's turned long air ti
 
 
 @pytest.mark.slow
-@pytest.mark.parametrize("character", ["man", "woman"])
+@pytest.mark.parametrize("character", ["woman"])     # the man's measured 76 / 88 and is not offered (docs/jump_to_target.md)
 def test_random_lateral_targets_at_long_air_times_turn_first_and_fly_the_long_row(character, tmp_path):
     """A target to the side at a long air time (the table's turned_long_region): planned by plan_turned with the
     table read by long_body (the hop toward it, then the long row: the leap's vertical thrust), run as a user's
