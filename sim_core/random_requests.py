@@ -44,10 +44,11 @@ COMMANDED_STREAM = 30                                       # the commanded regi
 TURNED_STREAM = 31                                          # the turned commanded region's draws' own stream (seed, this)
 SIDEWAYS_STREAM = 32                                        # the sideways commanded region's draws' own stream (seed, this)
 LONG_STREAM = 33                                            # the long air times' commanded region's draws' own stream
+TURNED_LONG_STREAM = 34                                     # the turned long air times' region's draws' own stream
 BROAD_TOLERANCE = 0.1                                       # TARGETS.md: broad jump travel within 10 %
 DRAW_DECIMALS = 3                                           # requests are drawn to the millimetre / millisecond
 DEFAULT_BUDGET = 24                                         # trials of a plan: two of the planner's batches
-JUMP_SKILLS = ("jump", "box", "commanded", "turned", "sideways", "long")    # draws run as a jump to a target (_jump)
+JUMP_SKILLS = ("jump", "box", "commanded", "turned", "sideways", "long", "turned_long")    # draws run as a jump to a target (_jump)
 SKILLS = JUMP_SKILLS + ("leap", "broad")
 REGION_DRAWS = 1_000_000                                    # box draws tried for one target in the region offered
 SHARE_DRAWS = 20_000                                        # box draws that measure the region's share of the box
@@ -60,7 +61,8 @@ class Draw:
     "commanded" (a jump's, in the commanded region outside the measured one), "turned" (a jump's, in the
     turned commanded region outside the measured one: turn first, then forward), "sideways" (a jump's,
     straight to the side in the sideways commanded region: a quarter turn first), "long" (a jump's, in the long
-    air times' commanded region outside the measured one: the vertical thrust), "leap" (height) or
+    air times' commanded region outside the measured one: the vertical thrust), "turned_long" (a jump's, in the
+    turned long air times' commanded region outside the measured one: the hop first, then the long row), "leap" (height) or
     "broad" (distance), with its numbers in ``values``."""
     skill: str
     character: str
@@ -94,14 +96,15 @@ def broad_range(character: str) -> tuple[float, float]:
 
 
 def draw_requests(seed: int, characters, jumps: int, leaps: int, broads: int, boxes: int = 0,
-                  commanded: int = 0, turned: int = 0, sideways: int = 0, long: int = 0) -> list[Draw]:
+                  commanded: int = 0, turned: int = 0, sideways: int = 0, long: int = 0, turned_long: int = 0) -> list[Draw]:
     """The random requests of ``seed`` (NumPy's default generator), per character: ``jumps`` jump
     targets, ``leaps`` leap heights and ``broads`` broad-jump distances, uniform in their ranges;
     then ``boxes`` box targets per character (draw_box_jump, from their own stream); then ``commanded``
     targets per character that has a commanded region (draw_commanded, from their own stream); then
     ``turned`` targets per character that has a turned commanded region (draw_turned, their own stream); then
     ``sideways`` targets per character that has a sideways commanded region (draw_sideways, their own stream); then
-    ``long`` targets per character that has a long air times' commanded region (draw_long, their own stream)."""
+    ``long`` targets per character that has a long air times' commanded region (draw_long, their own stream); then
+    ``turned_long`` targets per character that has a turned long air times' region (draw_turned_long, their own stream)."""
     rng = np.random.default_rng(seed)
     drawn = []
     for character in characters:
@@ -123,7 +126,9 @@ def draw_requests(seed: int, characters, jumps: int, leaps: int, broads: int, bo
     for skill, count, stream, region, draw in (("commanded", commanded, COMMANDED_STREAM, "region", draw_commanded),
                                                ("turned", turned, TURNED_STREAM, "turned_region", draw_turned),
                                                ("sideways", sideways, SIDEWAYS_STREAM, "sideways_region", draw_sideways),
-                                               ("long", long, LONG_STREAM, "long_region", draw_long)):
+                                               ("long", long, LONG_STREAM, "long_region", draw_long),
+                                               ("turned_long", turned_long, TURNED_LONG_STREAM, "turned_long_region",
+                                                draw_turned_long)):
         stream_rng = np.random.default_rng((seed, stream))
         for character in characters:
             if count and (table(character) or {}).get(region) is not None:
@@ -147,18 +152,24 @@ def draw_sideways(rng, character: str) -> tuple:
     raise ParameterError(f"no target of the {character}'s sideways commanded region in {REGION_DRAWS} draws")
 
 
-def draw_turned(rng, character: str) -> tuple:
+def draw_turned(rng, character: str, way: str = "turned") -> tuple:
     """A jump target uniform in issue 29's box that the character's turned commanded region holds
-    (commanded.commanded_way "turned") and its measured jumps do not offer (region.offered) - one that
-    the turn and the commanded take-off serve - drawn again until it is; as (target_x, target_y, air_time)."""
+    (commanded.commanded_way ``way``: "turned", or "turned_long" for its turned long air times' region) and its
+    measured jumps do not offer (region.offered) - one that the turn and the commanded take-off serve - drawn
+    again until it is; as (target_x, target_y, air_time)."""
     from .skills.jump_to_target.commanded import commanded_way
     from .skills.jump_to_target.region import offered
     for _ in range(REGION_DRAWS):
         values = box_draw(rng, character)
-        if commanded_way(character, values[:2], values[2]) == "turned" and not offered(character, values[:2], values[2]):
+        if commanded_way(character, values[:2], values[2]) == way and not offered(character, values[:2], values[2]):
             return values
-    raise ParameterError(f"no target of issue 29's box in {REGION_DRAWS} draws lies in the {character}'s turned "
+    raise ParameterError(f"no target of issue 29's box in {REGION_DRAWS} draws lies in the {character}'s {way} "
                          f"commanded region outside the region its measured jumps offer")
+
+
+def draw_turned_long(rng, character: str) -> tuple:
+    """draw_turned in the table's turned long air times' region (``turned_long_region``: the hop, then the long row)."""
+    return draw_turned(rng, character, "turned_long")
 
 
 def draw_commanded(rng, character: str, key: str = "region") -> tuple:
@@ -373,25 +384,28 @@ def main(argv=None) -> int:
                         help="targets straight to the side per character in its sideways commanded region")
     parser.add_argument("--long", type=int, default=0,
                         help="targets per character in its long air times' commanded region, outside its measured jumps' region")
+    parser.add_argument("--turned-long", type=int, default=0,
+                        help="targets per character in its turned long air times' region, outside its measured jumps' region")
     parser.add_argument("--characters", default="man,woman")
     parser.add_argument("--budget", type=int, default=DEFAULT_BUDGET, help="trials of each unplanned jump's plan")
     parser.add_argument("--workers", type=int, default=2, help="requests run at once, one process each")
     parser.add_argument("--store", help="plan store for the jumps' plans (default: a temporary one, removed after)")
     parser.add_argument("--out", default="docs/random_requests.md")
     args = parser.parse_args(argv)
-    for name in ("jumps", "leaps", "broad", "boxes", "commanded", "turned", "sideways", "long"):
+    for name in ("jumps", "leaps", "broad", "boxes", "commanded", "turned", "sideways", "long", "turned_long"):
         if getattr(args, name) < 0:
             parser.error(f"--{name}={getattr(args, name)}: must be 0 or more")
     if args.budget < 1:
         parser.error(f"--budget={args.budget}: must be at least 1 trial")
     characters = [c.strip() for c in args.characters.split(",") if c.strip()]
     draws = draw_requests(args.seed, characters, args.jumps, args.leaps, args.broad, args.boxes, args.commanded, args.turned,
-                          args.sideways, args.long)
+                          args.sideways, args.long, args.turned_long)
     command = (f"python -m sim_core report random --seed {args.seed} --jumps {args.jumps} --leaps {args.leaps} "
                f"--broad {args.broad}{f' --boxes {args.boxes}' if args.boxes else ''}"
                f"{f' --commanded {args.commanded}' if args.commanded else ''}"
                f"{f' --turned {args.turned}' if args.turned else ''}"
-               f"{f' --sideways {args.sideways}' if args.sideways else ''}{f' --long {args.long}' if args.long else ''} --characters {','.join(characters)} --budget {args.budget} "
+               f"{f' --sideways {args.sideways}' if args.sideways else ''}{f' --long {args.long}' if args.long else ''}"
+               f"{f' --turned-long {args.turned_long}' if args.turned_long else ''} --characters {','.join(characters)} --budget {args.budget} "
                f"--workers {args.workers}")
     print(command, flush=True)
     began = time.perf_counter()
@@ -455,6 +469,11 @@ def main(argv=None) -> int:
                "(skills/jump_to_target/commanded.py long_body), aimed as the commanded targets; where the table has a "
                "near_long_region too (the man's), uniformly in the union of both, the nearer ones flown by its near row "
                "(near_long_body: its own lean push and crouch pairs). " if args.long else "")
+            + ("Turned long air time targets (--turned-long) are drawn uniformly in issue 29's box and drawn again until "
+               "they lie in the turned long air times' region of each character that has one (the table's "
+               "turned_long_region) and outside the region its measured jumps offer: the jump turns first by one hop "
+               "toward the target (as the turned targets) and flies the long row forward (plan_turned with long_body). "
+               if args.turned_long else "")
             + "A target without a stored plan is planned first (into a temporary "
             "plan store; on flat ground or a box from the measured jumps, at most "
             f"{min(args.budget, MODEL_TRIALS)} trials; in the commanded region only, the commanded take-off aimed "

@@ -115,3 +115,18 @@ def test_long_draws_are_in_each_long_region_outside_the_measured_jumps():
         assert all(region[k][0] <= v <= region[k][1] for k, v in zip(("target_x", "target_y", "air_time"), d.values))
     assert all(commanded_way("woman", d.values[:2], d.values[2]) == "long" for d in long if d.character == "woman")
     assert long != draw_requests(2, ["man", "woman"], 2, 1, 1, commanded=2, long=3)[len(plain):]
+
+
+def test_turned_long_draws_are_in_each_turned_long_region_outside_the_measured_jumps():
+    from sim_core.skills.jump_to_target.commanded import commanded_way
+    from sim_core.skills.jump_to_target.region import offered
+    plain = draw_requests(1, ["man", "woman"], 2, 1, 1, turned=2, long=2)
+    drawn = draw_requests(1, ["man", "woman"], 2, 1, 1, turned=2, long=2, turned_long=3)
+    assert drawn[:len(plain)] == plain                       # their own stream: the other draws unchanged
+    turned_long = drawn[len(plain):]
+    assert [d.character for d in turned_long] == ["woman"] * 3        # the man's table has no turned_long_region
+    for d in turned_long:
+        x, y, t = d.values
+        assert d.skill == "turned_long" and commanded_way(d.character, (x, y), t) == "turned_long"
+        assert not offered(d.character, (x, y), t)
+    assert turned_long != draw_requests(2, ["man", "woman"], 2, 1, 1, turned=2, long=2, turned_long=3)[len(plain):]

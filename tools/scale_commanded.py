@@ -66,9 +66,9 @@ def main() -> None:
             "measured": args.measured}
     before = read("jump_commanded", args.target) or {}
     for key in ("turn_headings", "long_region", "long_settings", "long_crouch_by_air_time", "down_region", "down_settings",
-                "near_long_region", "near_long_settings", "near_long_crouch_by_air_time"):
-        if key in before:       # the hop's measured map (tools/turn_headings.py), the long row and the box row, measured on it, are kept
-            body[key] = before[key]
+                "near_long_region", "near_long_settings", "near_long_crouch_by_air_time", "turned_long_region"):
+        if key in before:       # the hop's measured map (tools/turn_headings.py), the long rows, the box row and the turned
+            body[key] = before[key]     # long row's region, measured on it, are kept
     if args.turned_region:
         d0, d1, b0, b1, a0, a1 = (float(v) for v in args.turned_region.split(","))
         body["turned_region"] = {"distance": [d0, d1], "bearing": [b0, b1], "air_time": [a0, a1]}

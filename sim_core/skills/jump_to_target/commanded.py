@@ -38,6 +38,9 @@ Fig. 6 with his thrust slowed for his strength, tools/scale_commanded.py and doc
   extension, ``vertical_thrust`` 1, and the landing's recovery step) instead of the broad jump's - the broad
   thrust's deepest crouch flies ~0.5 s, the vertical one's 0.72 s (docs/jump_to_target.md, "Long air times");
   ``long_crouch_by_air_time`` its crouch pairs (long_body); a request there outside ``region`` is planned so;
+- ``turned_long_region`` (optional, with the long row and ``turned_region``): the same keys as ``turned_region`` for
+  long air times: the hop first (chosen as the turned plan's, by ``turn_lines``), then the long row (long_body)
+  forward along the new heading; a request in it beyond ``region``'s target_y is planned so;
 - ``down_region`` (optional, with ``down_settings``): a jump straight ahead down from a box ``height`` m high
   ([low, high]) is flown by the same take-off where the flight of its lift-off velocity on flat ground lands in
   ``region`` with an air time in ``flat_air_time`` ([low, high] s) (flat_equivalent: the vertical speed's air
@@ -207,8 +210,10 @@ def table(character: str) -> dict | None:
 def commanded_way(character: str, target, air_time: float) -> str | None:
     """How the commanded take-off flies the request (x, y[, z], air time): on flat ground "straight"
     inside the table's ``region`` (bounds included), "long" inside its ``long_region`` beyond it (the
-    vertical thrust, long_body), "near_long" inside its ``near_long_region`` beyond both (near_long_body), "turned" inside its ``turned_region`` beyond both
-    (a turn first, then forward), "sideways" inside its ``sideways_region`` (the quarter turn first); down
+    vertical thrust, long_body), "near_long" inside its ``near_long_region`` beyond both (near_long_body), "turned"
+    inside its ``turned_region`` beyond both (a turn first, then forward), "turned_long" inside its
+    ``turned_long_region`` (the turn first, then the long row), "sideways" inside its ``sideways_region`` (the
+    quarter turn first); down
     from a box (z < 0) or onto one (z > 0) as box_way says; else None."""
     body = table(character)
     z = float(target[2]) if len(target) > 2 else 0.0
@@ -230,7 +235,7 @@ def commanded_way(character: str, target, air_time: float) -> str | None:
     if region["target_y"][0] <= y <= region["target_y"][1]:
         return None
     values = {"distance": math.hypot(x, y), "bearing": abs(math.atan2(y, x)), "air_time": float(air_time)}
-    return next((way for way in ("turned", "sideways") if body.get(f"{way}_region") is not None
+    return next((way for way in ("turned", "turned_long", "sideways") if body.get(f"{way}_region") is not None
                  and all(body[f"{way}_region"][k][0] <= v <= body[f"{way}_region"][k][1] for k, v in values.items())), None)
 
 
@@ -302,6 +307,8 @@ def commanded_limit(character: str) -> str | None:
         parts.append(f"for long air times (the leap's vertical thrust) on flat ground for {_flat(body['long_region'])}")
     if body.get("near_long_region"):
         parts.append(f"for long air times nearer (the vertical thrust with its own lean push) for {_flat(body['near_long_region'])}")
+    if body.get("turned_long_region"):
+        parts.append(f"turned first with long air times {_turned(body['turned_long_region'])}")
     for key, way, sign in (("long_onto_region", "onto", "+"), ("long_down_region", "down from", "-")):
         if body.get(key):
             parts.append(_box(body[key], way, "the long air times' region", sign) + ")")
