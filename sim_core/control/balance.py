@@ -44,6 +44,9 @@ BALANCE_CONSTANTS = Schema(
     constant("ankle_authority", "1", 0.0, 2.0, "share of the torque the foot can take (COP at its edge) used by the ankles"),
     constant("toe_share", "1", 0.0, 1.0, "where between ball (0) and toe tip (1) the front edge of the foot is taken"),
     constant("excess_to_hip", "1", 0.0, 20.0, "hip flexion per radian of COM demand the ankles cannot deliver"),
+    constant("settle_time", "s", 0.0, 10.0,
+             "a run lasts at least this long after the request's timeline (move, hold, return) ends, so it is "
+             "judged still (TARGETS.md) once the posture has settled, not in mid-move"),
 )
 register_constants("balance", BALANCE_CONSTANTS)
 CONSTANTS = read_constants("balance", BALANCE_CONSTANTS)
@@ -183,6 +186,13 @@ class Balance(Behaviour):
         self.ankle_limit_back = CONSTANTS.ankle_authority * weight_per_foot * back / kp_ankle
         self.ankle_height = self.legs["R"].ankle_height
         self.stand_height = standing_hip_height(ch)
+
+    @classmethod
+    def duration_for(cls, params: dict, character: str, strength) -> float:
+        """The default run, or longer: until ``settle_time`` after the timeline (move, hold and the
+        return) ends."""
+        end = params["move_start"] + params["move_time"] * (1 + bool(params["return_to_stand"])) + params["hold_time"]
+        return max(cls.default_duration, end + CONSTANTS.settle_time)
 
     # ----------------------------------------------------------------- requests
     def target_posture(self) -> np.ndarray:
