@@ -51,6 +51,10 @@ BALANCE_CONSTANTS = Schema(
     constant("free_pitch", "rad", 0.0, 2.0, "a torso pitch up to this is moved at any move_time the panel offers"),
     constant("pitch_rate", "rad/s", 0.0, 5.0,
              "... the pitch beyond it no faster than this many radians per second of move_time"),
+    constant("pitched_side_share", "1", 0.0, 1.0,
+             "... narrowed to this share of the half width when the torso is pitched forward (measured: 0.2 held "
+             "by all four at every pitch, 0.3-0.4 stepped or fell with the arms raised)"),
+    constant("side_pitch", "rad", 0.01, 2.0, "... linearly from no pitch to this torso pitch"),
     constant("hand_clearance", "1", 0.0, 1.0,
              "a posture whose hands come nearer the ground than this share of the standing hip height is "
              "refused (posed kinematically: the hands touched the ground below it)"),
@@ -312,12 +316,16 @@ class Balance(Behaviour):
 
     def com_reach(self) -> tuple[float, float, float]:
         """How far (m) the COM may be asked ahead of, behind and to either side of the centre of the
-        feet: the constants' shares of the feet's half length and half width in the heading frame
-        (measured on the man, the woman, the child and the imaginary runner: docs/skills/balance.md)."""
+        feet: the constants' shares of the feet's half length and half width in the heading frame, the
+        side narrower with the torso pitched (measured on the man, the woman, the child and the
+        imaginary runner: docs/skills/balance.md)."""
         spans = [self._support_span(axis) for axis in (0, 1)]
         half_length, half_width = ((hi - lo) / 2.0 for lo, hi in spans)
+        # a forward-pitched torso narrows the sideways reach, down to pitched_side_share at side_pitch
+        bent = min(1.0, max(0.0, self.params["torso_pitch"]) / CONSTANTS.side_pitch)
+        side = CONSTANTS.com_side_share - (CONSTANTS.com_side_share - CONSTANTS.pitched_side_share) * bent
         return (CONSTANTS.com_forward_share * half_length, CONSTANTS.com_back_share * half_length,
-                CONSTANTS.com_side_share * half_width)
+                side * half_width)
 
     def _check_com_offset(self) -> None:
         x, y = self.params["com_offset_x"], self.params["com_offset_y"]
