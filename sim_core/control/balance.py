@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import math
 
+import mujoco
 import numpy as np
 
 from .behaviour import Behaviour, ControlContext
@@ -44,6 +45,22 @@ BALANCE_CONSTANTS = Schema(
     constant("ankle_authority", "1", 0.0, 2.0, "share of the torque the foot can take (COP at its edge) used by the ankles"),
     constant("toe_share", "1", 0.0, 1.0, "where between ball (0) and toe tip (1) the front edge of the foot is taken"),
     constant("excess_to_hip", "1", 0.0, 20.0, "hip flexion per radian of COM demand the ankles cannot deliver"),
+    constant("crouch_rate", "1/s", 0.0, 5.0,
+             "a crouch may be asked no faster than this many standing hip heights of descent per second of "
+             "move_time (the mean rate of the Hermite move; faster ones fell or stepped)"),
+    constant("free_pitch", "rad", 0.0, 2.0, "a torso pitch up to this is moved at any move_time the panel offers"),
+    constant("pitch_rate", "rad/s", 0.0, 5.0,
+             "... the pitch beyond it no faster than this many radians per second of move_time"),
+    constant("pitched_side_share", "1", 0.0, 1.0,
+             "... narrowed to this share of the half width when the torso is pitched forward (measured: 0.2 held "
+             "by all four at every pitch, 0.3-0.4 stepped or fell with the arms raised)"),
+    constant("side_pitch", "rad", 0.01, 2.0, "... linearly from no pitch to this torso pitch"),
+    constant("hand_clearance", "1", 0.0, 1.0,
+             "a posture whose hands come nearer the ground than this share of the standing hip height is "
+             "refused (posed kinematically: the hands touched the ground below it)"),
+    constant("settle_time", "s", 0.0, 10.0,
+             "a run lasts at least this long after the request's timeline (move, hold, return) ends, so it is "
+             "judged still (TARGETS.md) once the posture has settled, not in mid-move"),
 )
 register_constants("balance", BALANCE_CONSTANTS)
 CONSTANTS = read_constants("balance", BALANCE_CONSTANTS)
@@ -97,6 +114,18 @@ class LegGeometry:
         u, l = self.upper, self.lower
         flex = knee_limit + self.rest_flex
         return self.ankle_height + math.sqrt(max(u * u + l * l + 2 * u * l * math.cos(flex), 0.0))
+
+
+def _geom_bottom(model, data, geom: int) -> float:
+    """Lowest world height of a box, capsule or sphere geom as posed in ``data``."""
+    z, size = float(data.geom_xpos[geom][2]), model.geom_size[geom]
+    axes_z = np.abs(data.geom_xmat[geom].reshape(3, 3)[2])       # each local axis's share of world z
+    kind = model.geom_type[geom]
+    if kind == mujoco.mjtGeom.mjGEOM_BOX:
+        return z - float(axes_z @ size)
+    if kind == mujoco.mjtGeom.mjGEOM_CAPSULE:
+        return z - float(axes_z[2] * size[1]) - float(size[0])
+    return z - float(size[0])
 
 
 class Balance(Behaviour):
@@ -184,6 +213,13 @@ class Balance(Behaviour):
         self.ankle_height = self.legs["R"].ankle_height
         self.stand_height = standing_hip_height(ch)
 
+    @classmethod
+    def duration_for(cls, params: dict, character: str, strength) -> float:
+        """The default run, or longer: until ``settle_time`` after the timeline (move, hold and the
+        return) ends."""
+        end = params["move_start"] + params["move_time"] * (1 + bool(params["return_to_stand"])) + params["hold_time"]
+        return max(cls.default_duration, end + CONSTANTS.settle_time)
+
     # ----------------------------------------------------------------- requests
     def target_posture(self) -> np.ndarray:
         p = self.params
@@ -194,10 +230,70 @@ class Balance(Behaviour):
         return np.array([self.stand_height, 0.0, 0.0, 0.0])
 
     def check_feasible(self) -> None:
-        """Refuse a COM offset outside what the feet hold (com_reach) and a pelvis height with no
+        """Refuse a COM offset outside what the feet hold (com_reach), a pelvis height with no
         balanced crouch pose (COM not over the feet within the joint ranges) or above standing
-        height, before simulating."""
+        height, and a crouch or torso pitch asked faster than measured to hold (move_time_needed),
+        before simulating."""
         self._check_com_offset()
+        self._check_height()
+        self._check_move_time()
+        self._check_hands()
+
+    def hands_clearance(self) -> float:
+        """Height (m) of the hands' lowest point above the ground in the held posture, posed
+        kinematically: the nominal joint targets, the pelvis at the requested height and at the pitch
+        the hips hold (the feet and the balance feedback left out)."""
+        m, actor = self.ctx.model, self.ctx.actor
+        posture = self.target_posture()
+        self.crouch = CrouchTable(m, self.ctx.character, [posture[0]], self.stand_height, actor=actor)  # start() builds the run's
+        q = self.joint_targets(posture)
+        pitch = posture[1] * (1.0 - CONSTANTS.spine_share) + self._crouch_pitch
+        d = self.crouch.data
+        d.qpos[:] = self.crouch.base_qpos
+        d.qpos[self.ctx.servos.qpos_adr] = q
+        root = actor.root_qpos
+        d.qpos[root + 3:root + 7] = (math.cos(0.5 * pitch), 0.0, math.sin(0.5 * pitch), 0.0)   # about +y: forward
+        mujoco.mj_kinematics(m, d)
+        hips = 0.5 * (d.xpos[self.hips[0]] + d.xpos[self.hips[1]])
+        lowest = math.inf
+        for side in "RL":
+            body = actor.body_id("HAND" + side)
+            for g in np.nonzero(m.geom_bodyid == body)[0]:
+                lowest = min(lowest, _geom_bottom(m, d, g))
+        return lowest - (hips[2] - posture[0])
+
+    def _check_hands(self) -> None:
+        clearance = self.hands_clearance()
+        least = CONSTANTS.hand_clearance * self.stand_height
+        if clearance < least:
+            p = self.params
+            raise ParameterError(
+                f"parameters torso_pitch={p['torso_pitch']:g} rad, arm_flexion={p['arm_flexion']:g} rad, "
+                f"elbow_flexion={p['elbow_flexion']:g} rad at pelvis_height={p['pelvis_height']:g} m bring the "
+                f"{self.ctx.character.name}'s hands to {clearance:.3f} m above the ground; allowed: at least "
+                f"{least:.3f} m ({CONSTANTS.hand_clearance:g} of the standing hip height)")
+
+    def crouch_depth(self) -> float:
+        """How far the request lowers the pelvis, as a share of the standing hip height (0: standing)."""
+        h = self.params["pelvis_height"]
+        return max(0.0, 1.0 - h / self.stand_height) if h else 0.0
+
+    def move_time_needed(self) -> float:
+        """The shortest move_time (s) that holds this request's crouch depth and torso pitch: the
+        crouch at ``crouch_rate`` standing hip heights per second, the pitch beyond ``free_pitch`` at
+        ``pitch_rate`` (measured on the four bodies: docs/skills/balance.md)."""
+        pitch_beyond = max(0.0, self.params["torso_pitch"] - CONSTANTS.free_pitch)
+        return max(self.crouch_depth() / CONSTANTS.crouch_rate, pitch_beyond / CONSTANTS.pitch_rate)
+
+    def _check_move_time(self) -> None:
+        needed, asked = self.move_time_needed(), self.params["move_time"]
+        if asked < needed:
+            raise ParameterError(
+                f"parameter move_time={asked:g} s is too fast for {self.ctx.character.name} to hold a crouch of "
+                f"{self.crouch_depth():.2f} of the standing hip height with torso_pitch={self.params['torso_pitch']:g} "
+                f"rad; allowed range is [{math.ceil(needed * 100) / 100:.2f}, 20] s")
+
+    def _check_height(self) -> None:
         h = self.params["pelvis_height"]
         if not h:
             return
@@ -220,12 +316,16 @@ class Balance(Behaviour):
 
     def com_reach(self) -> tuple[float, float, float]:
         """How far (m) the COM may be asked ahead of, behind and to either side of the centre of the
-        feet: the constants' shares of the feet's half length and half width in the heading frame
-        (measured on the man, the woman, the child and the imaginary runner: docs/skills/balance.md)."""
+        feet: the constants' shares of the feet's half length and half width in the heading frame, the
+        side narrower with the torso pitched (measured on the man, the woman, the child and the
+        imaginary runner: docs/skills/balance.md)."""
         spans = [self._support_span(axis) for axis in (0, 1)]
         half_length, half_width = ((hi - lo) / 2.0 for lo, hi in spans)
+        # a forward-pitched torso narrows the sideways reach, down to pitched_side_share at side_pitch
+        bent = min(1.0, max(0.0, self.params["torso_pitch"]) / CONSTANTS.side_pitch)
+        side = CONSTANTS.com_side_share - (CONSTANTS.com_side_share - CONSTANTS.pitched_side_share) * bent
         return (CONSTANTS.com_forward_share * half_length, CONSTANTS.com_back_share * half_length,
-                CONSTANTS.com_side_share * half_width)
+                side * half_width)
 
     def _check_com_offset(self) -> None:
         x, y = self.params["com_offset_x"], self.params["com_offset_y"]
