@@ -9,7 +9,8 @@ import pytest
 from sim_core.errors import ParameterError
 from sim_core.planning import describe, planned_request
 from sim_core.simulate import RunRequest, run
-from sim_core.skills.dive.behaviour import ROTATION_TOLERANCE
+from sim_core import tuned
+from sim_core.skills.dive.behaviour import ROTATION_TOLERANCE, Dive, calibrated_row, dive_settings
 
 SEED = 2029      # the tests draw their own heights; CI's seed is fixed
 
@@ -22,6 +23,24 @@ def planned_and_run(character: str, params: dict):
 def test_a_calibrated_dive_from_its_own_platform_is_run_as_calibrated_without_a_plan():
     request = RunRequest("dive", "man", params={"dive": "205B"})
     assert planned_request(request) == (request, None)
+
+
+def test_a_dive_calibrated_from_7_5_m_runs_its_7_5_m_row_without_a_plan():
+    """The man's 103B has a row calibrated from 7.5 m (``calibrate dive --platform 7.5``; his 10 m row's
+    lift-off hip is at its range's end there and the plan found none): a request from 7.5 m runs that row as it
+    is, no plan, and enters as a success; from 10 m the 10 m row is run."""
+    table = tuned.load("dives", "man")
+    params = Dive.schema.validate({"dive": "103B", "platform_height": 7.5})
+    row, main = calibrated_row(table, params), calibrated_row(table, {**params, "platform_height": 10.0})
+    assert row is not None and row["platform"] == 7.5 and row["measured"]["outcome"] == "success"
+    assert row["settings"] != main["settings"] and "platform" not in main
+    assert dive_settings("man", params).items() >= row["settings"].items()
+    assert dive_settings("man", {**params, "platform_height": 10.0}).items() >= main["settings"].items()
+    request = RunRequest("dive", "man", params={"dive": "103B", "platform_height": 7.5})
+    assert planned_request(request) == (request, None)
+    m = (trajectory := run(request)).meta["metrics"]
+    assert trajectory.meta["outcome"] == "success", m
+    assert abs(m["somersaults"] - 1.5) <= ROTATION_TOLERANCE
 
 
 def test_a_calibrated_take_off_that_serves_another_platform_is_kept():
@@ -48,6 +67,19 @@ def test_the_man_s_205b_from_a_random_lower_platform_is_planned_and_enters_strai
 
 
 @pytest.mark.slow
+def test_the_man_s_103b_from_a_random_platform_is_planned_from_the_nearest_platform_s_row():
+    """A forward dive: his 103B has rows from 10, 7.5 and 5 m (calibrate dive --platform); from a height drawn in
+    5-9 m the plan starts from the nearest platform's row and its dive enters as a success (from 7.5 m with
+    the 10 m row alone the plan found none: the lift-off hip at its range's end)."""
+    height = round(float(np.random.default_rng(SEED).uniform(5.0, 9.0)), 2)
+    plan, trajectory = planned_and_run("man", {"dive": "103B", "platform_height": height})
+    m = trajectory.meta["metrics"]
+    assert plan is not None and plan["found"], (height, plan)
+    assert trajectory.meta["outcome"] == "success", (height, m)
+    assert abs(m["somersaults"] - 1.5) <= ROTATION_TOLERANCE
+
+
+@pytest.mark.slow
 def test_a_custom_dive_with_no_calibrated_row_is_planned():
     """The woman's back 1½ pike (203B is not in the repertoire) ran the most alike row's take-off and
     entered 36 deg from vertical; planned, it enters as a success."""
@@ -57,11 +89,12 @@ def test_a_custom_dive_with_no_calibrated_row_is_planned():
 
 
 def test_a_dive_the_plan_cannot_serve_is_refused_in_one_line_naming_the_nearest():
-    """The woman's 105B from 7.5 m: her forward take-off is at the end of its range already."""
+    """The woman's 107C from 5 m: her forward take-off (the 7.5 m row's, the nearest) is at the end of its range
+    already, and the search from 5 m did not reach it (no 5 m row)."""
     with pytest.raises(ParameterError) as error:
-        planned_request(RunRequest("dive", "woman", params={"dive": "105B", "platform_height": 7.5}))
+        planned_request(RunRequest("dive", "woman", params={"dive": "107C", "platform_height": 5.0}))
     text = str(error.value)
-    assert "\n" not in text and "no take-off found" in text and "somersaults" in text and "7.5 m" in text
+    assert "\n" not in text and "no take-off found" in text and "somersaults" in text and "5 m" in text
 
 
 def test_a_dive_the_flight_cannot_hold_is_refused_before_any_plan():

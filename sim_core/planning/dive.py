@@ -2,10 +2,12 @@
 take-off was not measured at, or of a dive with no calibrated row (issue 29: any request in the
 offered range, not only the calibrated points).
 
-Each dive's take-off row is calibrated from 10 m (``calibrate dive``). From a lower platform the flight
-is shorter and the same take-off under-rotates (measured: the man's 205B from 7.5 m makes 2.09 of its 2½
-somersaults, from 5 m 1.66); a custom dive without a row of its own runs the most alike row's
-take-off, made for other rotations. The take-off's lift-off hip angle moves its angular momentum
+Each dive's take-off row is calibrated from 10 m (``calibrate dive``), some also from lower platforms
+(``calibrate dive --platform 7.5``: rows with ``"platform"``); a dive asked from a platform it has a reached row
+of is run as that row with no plan (calibrated_here). From another platform the flight is shorter or longer and
+the nearest platform's take-off (dive_row) under- or over-rotates (measured: the man's 205B row from 10 m makes
+2.09 of its 2½ somersaults from 7.5 m, 1.66 from 5 m); a custom dive without a row of its own runs the most alike
+row's take-off, made for other rotations. The take-off's lift-off hip angle moves its angular momentum
 smoothly on the branch a calibrated row is on (the man's 205B row: -0.5 -> 70, 0.7 -> 123 kg m^2/s),
 so the plan moves that one setting: the request is run as asked first (its feasibility checks
 refuse what the flight cannot hold, before anything else); if it does not enter as a success, the
@@ -33,7 +35,7 @@ KNOB = "liftoff_hip"
 def plan_dive(request: RunRequest, progress: Callable | None = None,
               cancelled: Callable | None = None) -> tuple[RunRequest, dict | None]:
     """(the request to run, the plan) for a ``dive`` request with ``plan_trials`` >= 1, not ``low_level``
-    and not a calibrated dive from the platform it was calibrated from (calibrated_here); else (the
+    and not a calibrated dive from a platform it was calibrated from (calibrated_here); else (the
     request, None). The plan: ``found``, ``settings`` (the take-off run),
     ``trials`` and ``tried`` (each trial's lift-off hip, outcome, somersaults and entry angle, in order).
     Raises ParameterError when the request is refused or no trial succeeds."""
@@ -69,7 +71,8 @@ def plan_dive(request: RunRequest, progress: Callable | None = None,
             f"{dive_name(params)} from {params['platform_height']:g} m: no take-off found by the plan in {len(tried)} "
             f"simulated dives (the nearest: lift-off hip {near[KNOB]:+.3f} rad, {near['outcome']}, "
             f"{near['somersaults']:.2f} somersaults, {near['entry_deg']:.0f} deg from vertical; allowed: the reached "
-            f"dives from 10 m, python -m sim_core report dive --repertoire, or more plan_trials)")
+            f"dives from 10 m, python -m sim_core report dive --repertoire, those calibrated from this platform, "
+            f"or more plan_trials)")
     return _with_settings(request, found), plan
 
 

@@ -97,20 +97,44 @@ def _article(name: str) -> str:
 
 def dive_row(table: dict, p: dict) -> dict | None:
     """The dive of the same group most alike (same position, then nearest twists, then nearest
-    somersaults): its settings, or None if the table has no dive of the group."""
+    somersaults, then the row calibrated from the platform nearest the asked one): its settings, or None if the
+    table has no dive of the group."""
     group = group_name(p)
     rows = [d for d in table["dives"] if GROUPS[d["group"]] == group]
     if not rows:
         return None
+    asked = p.get("platform_height", CALIBRATION_PLATFORM)
     best = min(rows, key=lambda d: (d.get("position", 0) != int(round(p["position"])),
-                                    abs(d.get("twists", 0.0) - p["twists"]), abs(d.get("somersaults", 0.0) - p["somersaults"])))
+                                    abs(d.get("twists", 0.0) - p["twists"]), abs(d.get("somersaults", 0.0) - p["somersaults"]),
+                                    abs(row_platform(d) - asked)))
     return dict(best["settings"])
 
 
+def row_platform(row: dict) -> float:
+    """The platform height (m) a table row was calibrated from: its ``platform``; a row without one is from
+    CALIBRATION_PLATFORM (10 m)."""
+    return float(row.get("platform", CALIBRATION_PLATFORM))
+
+
 def calibrated_row(table: dict, p: dict) -> dict | None:
-    """The table's row of exactly this dive (group, somersaults, twists, position), or None."""
+    """The table's row of exactly this dive (group, somersaults, twists, position) calibrated from exactly the
+    platform ``p`` asks (``platform_height``; without one, CALIBRATION_PLATFORM), or None."""
+    asked = p.get("platform_height", CALIBRATION_PLATFORM)
+    return next((d for d in rows_of_dive(table, p) if abs(row_platform(d) - asked) < 1e-9), None)
+
+
+def nearest_platform_row(table: dict, p: dict) -> dict | None:
+    """The table's row of exactly this dive calibrated from the platform nearest the one ``p`` asks (the
+    asked one's where there is one; at equal distance the higher platform's), or None."""
+    asked = p.get("platform_height", CALIBRATION_PLATFORM)
+    rows = rows_of_dive(table, p)
+    return min(rows, key=lambda d: (abs(row_platform(d) - asked), -row_platform(d))) if rows else None
+
+
+def rows_of_dive(table: dict, p: dict) -> list[dict]:
+    """The table's rows of exactly this dive (group, somersaults, twists, position), from any platform."""
     key = dive_key(p)
-    return next((d for d in table["dives"] if all(abs(d.get(k, 0.0) - v) < 1e-9 for k, v in key.items())), None)
+    return [d for d in table["dives"] if all(abs(d.get(k, 0.0) - v) < 1e-9 for k, v in key.items())]
 
 
 def dive_key(p: dict) -> dict:
@@ -121,11 +145,10 @@ def dive_key(p: dict) -> dict:
 
 
 def calibrated_here(character: str, p: dict) -> bool:
-    """Whether the dive ``p`` has a calibrated row of its own that entered as a success, asked from the
-    platform it was calibrated from (CALIBRATION_PLATFORM)."""
+    """Whether the dive ``p`` has a calibrated row of its own that entered as a success, calibrated from the
+    platform it is asked from (calibrated_row: 10 m, or a row's ``platform``)."""
     row = calibrated_row(load("dives", character) or {"dives": []}, p)
-    return (row is not None and row["measured"].get("outcome") == "success"
-            and abs(p["platform_height"] - CALIBRATION_PLATFORM) < 1e-9)
+    return row is not None and row["measured"].get("outcome") == "success"
 
 
 def dive_settings(character: str, p: dict) -> dict:
@@ -275,10 +298,10 @@ class Dive(Sequence):
         return min(rows, key=lambda d: abs(d["twists"] - self.params["twists"]))["settings"]["twist_lead"]
 
     def refuse_not_reached(self) -> None:
-        """A dive the calibration searched and did not reach (its row's measured outcome is not a
-        success) is refused with what it needs and what the take-offs reached."""
+        """A dive the calibration searched and did not reach (the measured outcome of its row from the
+        platform nearest the asked one, nearest_platform_row, is not a success) is refused with what it needs and what the take-offs reached."""
         own = load("dives", self.ctx.character.name)
-        row = own and calibrated_row(own, self.params)
+        row = own and nearest_platform_row(own, self.params)
         if not row or row["measured"].get("outcome") == "success":
             return
         m = row["measured"]

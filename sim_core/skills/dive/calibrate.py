@@ -22,6 +22,13 @@ feasibility check uses to refuse dives the flight cannot hold.
     python -m sim_core calibrate dive --character woman --iterations 4 --population 10
     python -m sim_core calibrate dive --character woman --only 0 --start '{"thrust_damping": 0.3}'
     python -m sim_core calibrate dive --character man --only 0 --budget 4 --no-refine --tables /tmp/t   # a quick look
+    python -m sim_core calibrate dive --character man --dive 103B --platform 7.5 --budget 48 --no-refine --workers 1
+
+``--platform H`` runs the same search from platform H (default 10 m, FINA's highest, from which every dive
+is calibrated): it starts from the dive's row of the nearest platform and, where it reaches the dive, adds a
+row recording ``"platform": H`` (a row without ``platform`` is from 10 m); a search from H that does not reach
+the dive adds nothing (the dive from H is then planned from the nearest platform's row, sim_core.planning.dive).
+The 10 m rows and the table's limits (computed from the 10 m rows only) are left as they are.
 
 ``--budget`` is the number of simulated dives the search may run per dive (default
 ``--iterations`` x ``--population``); the refinement's 25 runs come on top (``--no-refine``
@@ -39,7 +46,8 @@ import numpy as np
 
 ROOT = Path.cwd()                   # docs are written under the folder it runs in (the checkout)
 
-from .behaviour import CALIBRATED_DIVES, FORWARD_ROTATING, GROUPS, ROTATION_TOLERANCE, Dive, calibrated_row, dive_key, dive_parameters
+from .behaviour import (CALIBRATED_DIVES, CALIBRATION_PLATFORM, FORWARD_ROTATING, GROUPS, ROTATION_TOLERANCE, Dive,
+                        calibrated_row, dive_key, dive_parameters, nearest_platform_row, row_platform)
 from .fina import REPERTOIRE, parse
 from ... import tuned
 from ...errors import ParameterError
@@ -135,7 +143,7 @@ def search(character: str, dive: dict, budget: int, population: int, seed: int, 
     score, settings, m = best
     keep = ("outcome", "somersaults", "twists", "entry_angle_from_vertical_deg", "takeoff_angular_momentum",
             "flight_time", "angular_momentum_drift", "hit_platform")
-    return {**dive, "settings": settings, "score": round(float(score), 4),
+    return {**{k: v for k, v in dive.items() if k != "platform_height"}, "settings": settings, "score": round(float(score), 4),
             "measured": {k: m.get(k) for k in keep}, "largest_momentum_clear": round(momentum, 2)}
 
 
@@ -180,7 +188,9 @@ def refine(character: str, dive: dict, best: tuple, names: list, low, high, exec
 def table_limits(dives: list[dict]) -> dict:
     """What the dive's feasibility check allows: per group the largest take-off angular momentum
     seen without touching the platform; the most twists a calibrated dive made while its
-    somersaults were right (within a quarter turn)."""
+    somersaults were right (within a quarter turn); of the rows from 10 m (the lower platforms' rows
+    leave the limits as the 10 m calibration measured them)."""
+    dives = [d for d in dives if abs(row_platform(d) - CALIBRATION_PLATFORM) < 1e-9]
     twists = [d["measured"]["twists"] for d in dives
               if d["measured"].get("somersaults") is not None and not d["measured"].get("hit_platform")
               and abs(d["measured"]["somersaults"] - d["somersaults"]) <= 0.25]
@@ -254,6 +264,9 @@ def main(argv=None) -> None:
     parser.add_argument("--start", help="JSON settings to start from, over the table's")
     parser.add_argument("--only", type=int, action="append",
                         help="calibrate only the dive with this index in the character's list; keep the others' table rows")
+    parser.add_argument("--platform", type=float, default=CALIBRATION_PLATFORM,
+                        help="platform height (m) the dives are searched from; a reached dive adds a row with this "
+                             "platform (default: 10 m, the table's main rows)")
     parser.add_argument("--dive", action="append",
                         help="calibrate only this FINA dive of the repertoire (e.g. 107C; repeatable); keep the others' rows")
     args = parser.parse_args(argv)
@@ -269,23 +282,41 @@ def main(argv=None) -> None:
             continue
         todo = calibration_dives(character)
         searched = chosen(todo, args.only, args.dive)
-        rows = [calibrated_row(stored, d) if stored is not None else None for d in todo]
-        # a search starts from the dive's own row if it reached the dive, else from nearest_momentum's
+        here = args.platform
+        main = abs(here - CALIBRATION_PLATFORM) < 1e-9
+        asked = [dict(d, platform_height=here) for d in todo]
+        rows = [calibrated_row(stored, d) if stored is not None else None for d in asked]
+        # a search starts from the dive's own row if it reached the dive (from another platform: the row of the
+        # nearest platform, where that reached it), else from nearest_momentum's
+        near = [nearest_platform_row(stored, d) if stored is not None else None for d in asked]
         starts = [dict({} if args.fresh else row["settings"] if reached(row) else nearest_momentum(stored, character, d),
-                       **json.loads(args.start or "{}")) for d, row in zip(todo, rows)]
+                       **json.loads(args.start or "{}")) for d, row in zip(todo, near)]
+        how = {"budget": budget, "population": args.population, "seed": args.seed, "method": args.method,
+               "refine": args.refine, "fresh": args.fresh, "start": args.start}     # a platform row's own search
         dives = []
         with executor_for(args.workers) as executor:
             for k, dive in enumerate(todo):
                 key = {n: v for n, v in dive.items() if n != "number"}
                 if k in searched:
-                    found = search(character, key, budget, args.population, args.seed, starts[k], args.method,
-                                   executor, args.refine)
-                    dives.append({"number": dive["number"], **better(rows[k], found)})
+                    found = search(character, dict(key, platform_height=here), budget, args.population, args.seed,
+                                   starts[k], args.method, executor, args.refine)
+                    if main:
+                        dives.append({"number": dive["number"], **better(rows[k], found)})
+                    elif reached(found) or rows[k] is not None:
+                        kept = better(rows[k], found)
+                        dives.append({"number": dive["number"], **{n: v for n, v in kept.items() if n != "platform"},
+                                      "platform": here, **({"search": how} if kept["settings"] == found["settings"] else {})})
+                    else:
+                        print(f"  {character} {dive['number']} from {here:g} m: not reached, no row added", flush=True)
                 elif rows[k] is not None:
                     dives.append({"number": dive["number"], **rows[k]})
+        # the rows of the other platforms as they were: the 10 m rows first, in the table's order
+        others = [d for d in (stored or {}).get("dives", []) if abs(row_platform(d) - here) > 1e-9]
+        dives = others + dives if not main else dives + others
         limits = table_limits(dives)
         path = tuned.save("dives", character, {"script": "python -m sim_core calibrate dive",
-                                               "search": {**vars(args), "tables": str(args.tables), "budget": budget},
+                                               "search": ({**vars(args), "tables": str(args.tables), "budget": budget}
+                                                          if main or stored is None else stored.get("search")),
                                                "dives": dives, "limits": limits}, strengths=["human"],
                           directory=args.tables)
         print(f"{character}: wrote {path} in {time.time() - started:.0f} s")
