@@ -75,7 +75,7 @@ VAULT_CONSTANTS = Schema(
              "for the gymnast's weight (the man's: scaled by Fig. 6; docs/vault.md)"),
     constant("horse_height", "m", 0.8, 1.6,
              "the 1987 horse's height (vaulted sideways): the women's 1.20 m of Takei's data; a character's own "
-             "table may hold another (the man's: the men's horse, 1.35 m; docs/vault.md)"),
+             "table may hold another (the man's: hers x L by Fig. 6, 1.36 m, 1 cm above the men's horse; docs/vault.md)"),
     constant("mat_gap", "m", 0.0, 3.0, "the landing mat's near edge this far beyond the horse's far edge"),
     constant("mat_size", "m", 0.5, 20.0, "the landing mat's length and width"),
     constant("mat_thickness", "m", 0.05, 0.5, "the landing mat's thickness"),
