@@ -43,10 +43,10 @@ def plan_dive(request: RunRequest, progress: Callable | None = None,
     if params["low_level"] or params["plan_trials"] < 1 or calibrated_here(character.name, params):
         return request, None
     trajectory = run(request)                  # as asked: the behaviour's checks refuse here, before any plan
-    tried = [_trial(float(dive_settings(character.name, params)[KNOB]), trajectory)]
+    settings = dive_settings(character.name, params)
+    tried = [_trial(float(settings[KNOB]), trajectory)]
     if tried[0]["outcome"] == "success":     # the calibrated take-off serves this platform too
         return request, {"skill": "dive", "found": True, "settings": None, "trials": 1, "tried": tried}
-    settings = dive_settings(character.name, params)
     low, high = SPACE[KNOB][group_name(params)]
     sign = -1.0 if group_name(params) in FORWARD_ROTATING else 1.0   # more somersault: a forward one by flexing (-)
     wanted = params["somersaults"]
