@@ -172,38 +172,29 @@ def draw_turned_long(rng, character: str) -> tuple:
     return draw_turned(rng, character, "turned_long")
 
 
-def draw_commanded(rng, character: str, key: str = "region") -> tuple:
-    """A jump target uniform in the character's commanded region (skills/jump_to_target/commanded.py,
-    its table's box ``key``) that its measured jumps do not offer (region.offered) - one the commanded take-off
-    serves - drawn again until it is; as (target_x, target_y, air_time)."""
+def draw_commanded(rng, character: str, keys: tuple = ("region",)) -> tuple:
+    """A jump target uniform in the character's commanded region (skills/jump_to_target/commanded.py, the union of
+    its table's boxes ``keys``: drawn in the box bounding them, again until one of them holds it) that its measured
+    jumps do not offer (region.offered) - one the commanded take-off serves - drawn again until it is; as
+    (target_x, target_y, air_time)."""
     from .skills.jump_to_target.commanded import table
     from .skills.jump_to_target.region import offered
-    region = table(character)[key]
+    body, names = table(character), ("target_x", "target_y", "air_time")
+    boxes = [body[key] for key in keys if body.get(key) is not None]
+    bounds = {k: (min(b[k][0] for b in boxes), max(b[k][1] for b in boxes)) for k in names}
     for _ in range(REGION_DRAWS):
-        values = tuple(round(float(rng.uniform(*region[k])), DRAW_DECIMALS) for k in ("target_x", "target_y", "air_time"))
-        if not offered(character, values[:2], values[2]):
+        values = tuple(round(float(rng.uniform(*bounds[k])), DRAW_DECIMALS) for k in names)
+        if (any(all(b[k][0] <= v <= b[k][1] for k, v in zip(names, values)) for b in boxes)
+                and not offered(character, values[:2], values[2])):
             return values
-    raise ParameterError(f"no target of the {character}'s commanded region in {REGION_DRAWS} draws lies outside the "
-                         f"region its measured jumps offer")
+    raise ParameterError(f"no target of the {character}'s commanded region ({', '.join(keys)}) in {REGION_DRAWS} draws "
+                         f"lies outside the region its measured jumps offer")
 
 
 def draw_long(rng, character: str) -> tuple:
-    """draw_commanded in the table's long air times' box (``long_region``: the vertical thrust's); a table with a
-    ``near_long_region`` too: uniform in the two boxes' union (drawn in the box bounding both, again until
-    commanded.commanded_way flies it "long" or "near_long" and its measured jumps do not offer it)."""
-    from .skills.jump_to_target.commanded import commanded_way, table
-    from .skills.jump_to_target.region import offered
-    body = table(character)
-    if body.get("near_long_region") is None:
-        return draw_commanded(rng, character, "long_region")
-    long, near = body["long_region"], body["near_long_region"]
-    bounds = {k: (min(long[k][0], near[k][0]), max(long[k][1], near[k][1])) for k in ("target_x", "target_y", "air_time")}
-    for _ in range(REGION_DRAWS):
-        values = tuple(round(float(rng.uniform(*bounds[k])), DRAW_DECIMALS) for k in ("target_x", "target_y", "air_time"))
-        if commanded_way(character, values[:2], values[2]) in ("long", "near_long") and not offered(character, values[:2], values[2]):
-            return values
-    raise ParameterError(f"no target of the {character}'s long commanded regions in {REGION_DRAWS} draws lies outside the "
-                         f"region its measured jumps offer")
+    """draw_commanded in the table's long air times' boxes: ``long_region`` (the vertical thrust's) and, where the
+    table has it, ``near_long_region`` (the near row's), uniform in their union."""
+    return draw_commanded(rng, character, ("long_region", "near_long_region"))
 
 
 def box_target_draw(rng, character: str) -> tuple:

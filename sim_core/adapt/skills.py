@@ -406,8 +406,9 @@ class VaultAdapter(Adapter):
         from ..skills.vault.behaviour import VAULT_CONSTANTS, VAULT_SETTINGS, vault_constants
         pair = CharacterPair(source, target)
         shared = vars(vault_constants(source.name))
-        constants = scale_constants({n: shared[n] for n in VAULT_BODY_CONSTANTS}, VAULT_CONSTANTS, pair, MASS)
-        constants["board_stiffness"] = board_for(shared["board_stiffness"], source, target, pair.length)
+        constants = {**scale_constants({n: shared[n] for n in VAULT_BODY_CONSTANTS if n != "board_stiffness"},
+                                       VAULT_CONSTANTS, pair, MASS),
+                     "board_stiffness": board_for(shared["board_stiffness"], source, target, pair.length)}   # by its period
         held = lambda n, v: v if isinstance(v, bool) else min(max(v, VAULT_SETTINGS.by_name[n].minimum),
                                                                VAULT_SETTINGS.by_name[n].maximum)
         # each value held inside its setting's range (a flag such as horse_clav_after -1, "off", stays off;

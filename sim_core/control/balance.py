@@ -319,7 +319,7 @@ class Balance(Behaviour):
         feet: the constants' shares of the feet's half length and half width in the heading frame, the
         side narrower with the torso pitched (measured on the man, the woman, the child and the
         imaginary runner: docs/skills/balance.md)."""
-        spans = [self._support_span(axis) for axis in (0, 1)]
+        spans = [self._support_span(self._heading_axis(axis)) for axis in (0, 1)]
         half_length, half_width = ((hi - lo) / 2.0 for lo, hi in spans)
         # a forward-pitched torso narrows the sideways reach, down to pitched_side_share at side_pitch
         bent = min(1.0, max(0.0, self.params["torso_pitch"]) / CONSTANTS.side_pitch)
@@ -384,7 +384,7 @@ class Balance(Behaviour):
 
     def _com_from_support(self, axis: int) -> float:
         along = self._heading_axis(axis)
-        lo, hi = self._support_span(axis)
+        lo, hi = self._support_span(along)
         com = self.ctx.data.subtree_com[self.pelvis]
         return float(along[0] * com[0] + along[1] * com[1] - 0.5 * (lo + hi))
 
@@ -395,9 +395,8 @@ class Balance(Behaviour):
         c, s = math.cos(yaw), math.sin(yaw)
         return (c, s) if axis == 0 else (-s, c)
 
-    def _support_span(self, axis: int) -> tuple[float, float]:
-        """The supporting points' extent along the heading frame's ``axis`` (m, world origin)."""
-        along = self._heading_axis(axis)
+    def _support_span(self, along: tuple[float, float]) -> tuple[float, float]:
+        """The supporting points' extent along the ground-plane direction ``along`` (m, world origin)."""
         pts = self.support.supporting_points(self.ctx.data)
         p = along[0] * pts[:, 0] + along[1] * pts[:, 1]
         return float(p.min()), float(p.max())

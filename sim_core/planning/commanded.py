@@ -21,8 +21,7 @@ a few simulated jumps, not a search over the leap's settings:
 A long air time on flat ground, in the table's ``long_region`` beyond its ``region``, or onto or down from a box
 where the flat equivalent lies there (``long_onto_region``, ``long_down_region``): the same aim with the table read
 by commanded.long_body (the leap's vertical thrust and its own crouch pairs); in its ``near_long_region`` beyond both,
-by commanded.near_long_body (the same with the near row's own lean push and crouch pairs), and onto a box where the flat
-equivalent lies there (``near_long_onto_region``).
+by commanded.near_long_body (the same with the near row's own lean push and crouch pairs).
 
 A target beyond the table's straight region's target_y, in its ``turned_region`` (plan_turned): the
 jump turns first (one hop, the leap's ``turn_angle``) and flies the commanded take-off forward; the aim
@@ -80,7 +79,7 @@ def plan_commanded(character: str, target, air_time: float, trial, budget: int, 
         return plan_turned(character, target, air_time, trial, budget, judge, progress, cancelled, body, c, way)
     if way in ("long", "long_down", "long_onto") and "long_settings" in body:
         body = long_body(body)      # long air times (onto or down from a box too): the vertical thrust's settings and crouch pairs
-    elif way in ("near_long", "near_long_onto") and "near_long_settings" in body:
+    elif way == "near_long" and "near_long_settings" in body:
         body = near_long_body(body)  # long air times nearer: the same with the near row's own lean push and crouch pairs
     x = float(target[0])
     bound = min(budget, c.aim_trials + c.landing_trials - 1)

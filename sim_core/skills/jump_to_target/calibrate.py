@@ -1292,8 +1292,8 @@ m, target_x 0.7-1.3 m, T0 0.5-0.65 s: seed 7 **10 / 12**, 12 balanced ((0.84 m, 
 0.453 s) 14.3 cm off; 5 of the 7 its region holds there hit); and the test's draw (seed 29's first such, 0.75 m onto a
 0.314 m box in 0.5 s) landed 17.6 cm short, flown 0.41 s. The box category passes 90 % because most of his box draws
 are down ones; the near row's own onto targets land **25 / 30 (83 %)** (seeds 6 from 0.7 m, 7, 191, 193, 29's draw), so
-`near_long_onto_region` is **not offered** (the key is read where a table holds it: box_way "near_long_onto", flown by
-near_long_body; his box share would have been 3.7 % -> 4.5 %, onto 0.5 % -> 2.0 %). No miss pattern in height, T0 or
+`near_long_onto_region` is **not offered** (the code that read the key, box_way's "near_long_onto", was taken out again in the session's review:
+nothing offers it; his box share would have been 3.7 % -> 4.5 %, onto 0.5 % -> 2.0 %). No miss pattern in height, T0 or
 distance stood out.
 His share of issue 29's box (seed 29's 20,000 draws, `random_requests.region_share`): 16.55 % -> **16.91 %**
 (/work/scratch/share_map.py's 6,000 draws: 16.0 % -> 16.4 %; every straight row is the start's line +-2 cm, a thin slice);

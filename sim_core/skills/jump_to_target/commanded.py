@@ -56,9 +56,7 @@ Fig. 6 with his thrust slowed for his strength, tools/scale_commanded.py and doc
   jump straight ahead onto a box / down from one flown by the long row (long_body) where the flight's flat
   equivalent lies in ``long_region`` with its air time in ``flat_air_time``; ``target_x`` (optional, [low, high] m)
   bounds the target's own forward distance (onto a box: a nearer box's front edge, 0.3 m before the target, is
-  not cleared). Onto a box needs T0 = T + 2 h / (g T) >= 0.53 s: only the long row flies it;
-  ``near_long_onto_region`` (optional, with the near long row): the same keys for onto a box by it (near_long_body),
-  its flat equivalent in ``near_long_region``.
+  not cleared). Onto a box needs T0 = T + 2 h / (g T) >= 0.53 s: only the long row flies it.
 
 ``jump_commanded_any.json`` holds the planner's constants (the aim's bound and tolerances, the
 landing plan's bound); a character's table may hold its own in a "constants" section
@@ -243,13 +241,12 @@ def box_way(body: dict, target, air_time: float) -> str | None:
     """commanded_way for a target onto a box (z > 0) or down from one (z < 0), straight ahead: its flat equivalent
     (flat_equivalent) in the table's ``region`` with the height and T0 in ``down_region``: "down"; in its
     ``long_region`` with them in ``long_down_region`` / ``long_onto_region``: "long_down" / "long_onto" (the long row,
-    long_body); onto one with them in ``near_long_region`` and ``near_long_onto_region``: "near_long_onto" (near_long_body);
-    else None."""
+    long_body); else None."""
     z = float(target[2])
     x, air_time = flat_equivalent(target, air_time)
     values = {"target_x": x, "target_y": float(target[1]), "air_time": air_time}
     rows = (("down", "region", "down_region"), ("long_down", "long_region", "long_down_region")) if z < 0.0 \
-        else (("long_onto", "long_region", "long_onto_region"), ("near_long_onto", "near_long_region", "near_long_onto_region"))
+        else (("long_onto", "long_region", "long_onto_region"),)
     for way, region_key, box_key in rows:
         region, box = body.get(region_key), body.get(box_key)
         if (region is not None and box is not None and box["height"][0] <= abs(z) <= box["height"][1]
@@ -312,6 +309,4 @@ def commanded_limit(character: str) -> str | None:
     for key, way, sign in (("long_onto_region", "onto", "+"), ("long_down_region", "down from", "-")):
         if body.get(key):
             parts.append(_box(body[key], way, "the long air times' region", sign) + ")")
-    if body.get("near_long_onto_region"):
-        parts.append(_box(body["near_long_onto_region"], "onto", "the nearer long air times' region", "+") + ")")
     return ", and ".join(parts)
