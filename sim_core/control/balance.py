@@ -64,6 +64,8 @@ BALANCE_CONSTANTS = Schema(
 )
 register_constants("balance", BALANCE_CONSTANTS)
 CONSTANTS = read_constants("balance", BALANCE_CONSTANTS)
+GAINS_SET_FOR = "man"                            # definition: the body the schema's servo gains were set for
+SCALED_GAINS = ("com_kp", "com_kv", "height_kp")  # definition: the gains per metre a body's size changes (Fig. 6)
 
 SPINE_Y = ("spine_l3_y", "spine_l1_y", "spine_t7_y", "spine_t4_y")
 CROUCH_TABLE_ROWS = 6      # balanced crouch poses solved between standing and the requested height
@@ -167,7 +169,12 @@ class Balance(Behaviour):
                   "that gives (the landing mat; 0 = not servoed): the hips hold the pelvis square to the feet; on "
                   "the soft mat the feet twist and, without it, the body slowly turns over them and falls (on a "
                   "rigid floor the feet's grip holds them)"),
-        Parameter("height_kp", "rad/m", 10.0, 0.0, 20.0,
+        Parameter("stagger_on_floor", "bool", 1.0, 0.0, 1.0,
+                  "1 = stagger_kp acts on a rigid floor too: with the COM offset over one foot the other is "
+                  "nearly unloaded and its grip no longer holds the legs' scissor - the child's feet twisted "
+                  "apart and she fell in slow moves (docs/skills/balance.md); 0 for the balances inside other "
+                  "skills, whose tables were measured without it"),
+        Parameter("height_kp", "rad/m", 10.0, 0.0, 40.0,
                   "pelvis height servo: knee offset per metre of height error (corrects servo sag)"),
     )
 
@@ -212,6 +219,21 @@ class Balance(Behaviour):
         self.ankle_limit_back = CONSTANTS.ankle_authority * weight_per_foot * back / kp_ankle
         self.ankle_height = self.legs["R"].ankle_height
         self.stand_height = standing_hip_height(ch)
+
+    @classmethod
+    def character_defaults(cls, character: str) -> dict:
+        """The COM and height servos' gains (SCALED_GAINS, set for the man: Wooten's) scaled to
+        ``character`` by Fig. 6 (geometric: they carry no mass; L its leg length over his): with the
+        man's per-metre gains the child's COM crept toward her toes and she fell in slow pitched moves
+        (docs/skills/balance.md). The balances inside other skills keep the schema's."""
+        if character == GAINS_SET_FOR:
+            return {}
+        from ..adapt.scaling import ScaleFactors, Units, scale
+        from ..character.dimensions import leg_length_ratio
+        from ..character.spec import load_character
+        factors = ScaleFactors(leg_length_ratio(load_character(GAINS_SET_FOR), load_character(character)))
+        return {name: round(scale(cls.schema.by_name[name].default, Units.parse(cls.schema.by_name[name].unit), factors), 4)
+                for name in SCALED_GAINS}
 
     @classmethod
     def duration_for(cls, params: dict, character: str, strength) -> float:
@@ -512,8 +534,9 @@ class Balance(Behaviour):
         # ankles' pitch servos both following the measured angles, nothing else holds the legs'
         # scissor - on a rigid floor the feet's grip does; on a soft mat the feet twist in it and
         # the body turns over them
+        on_soft = bool(self.soft_ground) and over_a_box(pts, self.soft_ground)
         square = (self.params["stagger_kp"] * (self.feet_stagger() - self._stagger)
-                  if self.soft_ground and over_a_box(pts, self.soft_ground) else 0.0)
+                  if on_soft or self.params["stagger_on_floor"] else 0.0)
         for k in (0, 1):
             j = idx[k]
             f = d.xmat[self.feet[k]].tolist()          # row-major 3x3: columns are the foot axes
@@ -543,3 +566,10 @@ class Balance(Behaviour):
                 heading_error = math.remainder(yaw - math.atan2(f[3], f[0]), math.tau) if heading_kp else 0.0
                 offset[j["hip_z"]] = heading_kp * heading_error + spin          # pelvis vs this foot, and the spin
         servos.hold(targets, t)
+
+
+def inside_a_skill(**params) -> dict:
+    """Validated Balance parameters for a balance inside another skill (a take-off's crouch, a
+    landing's stand): ``params`` over the schema's, with ``stagger_on_floor`` off - those skills'
+    tables were measured without it."""
+    return Balance.schema.validate({**params, "stagger_on_floor": 0.0})

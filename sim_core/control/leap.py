@@ -28,7 +28,7 @@ import numpy as np
 from ..analysis import feet_above_surface, standard_metrics
 from ..ballistics import GRAVITY
 from ..errors import ParameterError
-from .balance import Balance, LegGeometry, standing_hip_height
+from .balance import Balance, LegGeometry, inside_a_skill, standing_hip_height
 from .crouch import CrouchTable
 from .behaviour import Behaviour, ControlContext
 from .measure import SupportGeometry, roll_of
@@ -522,7 +522,7 @@ def balance_after_landing(ctx: ControlContext, landing: Landing) -> Balance:
     feet = 0.5 * (d.xpos[body("FOOTR")] + d.xpos[body("FOOTL")])
     leg_length = float(np.linalg.norm(hips - feet))
     height = float(np.interp(leg_length, landing.crouch.table[:, 4], landing.crouch.heights))
-    return Balance(Balance.schema.validate(dict(move_start=0.0, move_time=landing.constants.balance_handover_time, return_to_stand=0)), ctx,
+    return Balance(inside_a_skill(move_start=0.0, move_time=landing.constants.balance_handover_time, return_to_stand=0), ctx,
                    from_height=height)
 
 

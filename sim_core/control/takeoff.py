@@ -3,7 +3,7 @@ thrust extends the legs and ends with the lift-off hip angle that sets the somer
 (Wooten §4.3)."""
 from __future__ import annotations
 
-from .balance import Balance, standing_hip_height
+from .balance import Balance, inside_a_skill, standing_hip_height
 from .behaviour import ControlContext
 from .leap import CONSTANTS as LEAP, LeapThrust
 from .sequencer import Step
@@ -30,9 +30,9 @@ def takeoff_steps(ctx: ControlContext, cfg: dict) -> list[Step]:
     stand = standing_hip_height(ctx.character)
 
     def crouch(t):
-        return Balance(Balance.schema.validate(dict(
+        return Balance(inside_a_skill(
             pelvis_height=cfg["crouch_height"], torso_pitch=cfg["crouch_pitch"], com_offset_x=cfg["com_offset"],
-            move_start=CONSTANTS.crouch_move_start, move_time=CONSTANTS.crouch_move_time, hold_time=0.0, return_to_stand=0)), ctx)
+            move_start=CONSTANTS.crouch_move_start, move_time=CONSTANTS.crouch_move_time, hold_time=0.0, return_to_stand=0), ctx)
 
     def crouched(b, t):
         lean = cfg["com_offset"]

@@ -19,7 +19,7 @@ from __future__ import annotations
 
 from types import SimpleNamespace
 
-from .balance import Balance, standing_hip_height
+from .balance import Balance, inside_a_skill, standing_hip_height
 from .behaviour import ControlContext
 from .leap import Landing, LeapThrust, balance_after_landing, leap_constants, load_mapping, vertical_key, vertical_row
 from .sequencer import Step
@@ -69,9 +69,9 @@ def turn_steps(ctx: ControlContext, direction: float, sequence, angle: float = 0
     stand = standing_hip_height(ctx.character)
 
     def crouch(t):
-        return Balance(Balance.schema.validate(dict(
+        return Balance(inside_a_skill(
             pelvis_height=hop.crouch_height, torso_pitch=hop.crouch_pitch, com_offset_x=hop.com_offset,
-            move_start=leap.crouch_move_start, move_time=c.crouch_time, hold_time=0.0, return_to_stand=0)), ctx)
+            move_start=leap.crouch_move_start, move_time=c.crouch_time, hold_time=0.0, return_to_stand=0), ctx)
 
     def thrust(t):
         return LeapThrust({}, ctx, hop.crouch_height, leap.vertical_timing, leap.ankle_gain_vertical, hop.liftoff_hip,

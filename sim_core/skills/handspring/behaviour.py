@@ -26,7 +26,7 @@ import numpy as np
 
 from ...ballistics import GRAVITY
 from ...analysis import FOOT_BODIES, feet_above_surface, standard_metrics, surface_under_points, true_runs
-from ...control.balance import Balance, standing_hip_height
+from ...control.balance import Balance, inside_a_skill, standing_hip_height
 from ...control.behaviour import Behaviour, ControlContext, register
 from ...control.leap import (CONSTANTS as LEAP, AIRBORNE_HEIGHT, Airborne,
                                    Landing, LeapThrust, balance_after_landing, run_strength)
@@ -225,10 +225,10 @@ class Handspring(Sequence):
         self.t_hands = None
 
         def sit(t):
-            return Balance(Balance.schema.validate(dict(
+            return Balance(inside_a_skill(
                 pelvis_height=c["crouch_height"], torso_pitch=c["crouch_pitch"], com_offset_x=c["com_offset"],
                 move_start=CONSTANTS.crouch_move_start, move_time=CONSTANTS.crouch_move_time, hold_time=0.0,
-                return_to_stand=0)), ctx)
+                return_to_stand=0), ctx)
 
         def fallen_back(b, t):
             return b.com_ahead_of_support() < c["com_offset"] - c["sit_extra"] or t > CONSTANTS.sit_timeout

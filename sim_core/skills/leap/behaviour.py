@@ -7,7 +7,7 @@ import math
 
 import numpy as np
 
-from ...control.balance import Balance, standing_hip_height
+from ...control.balance import Balance, inside_a_skill, standing_hip_height
 from ...control.behaviour import register
 from ...control.commanded_thrust import CommandedThrust, FlightCommand, thrust_due
 from ...control.measure import SupportGeometry
@@ -166,11 +166,10 @@ class Leap(Sequence):
         p, ctx = self.run_params(), self.ctx
         cfg = self.settings(p)
         broad = self.is_broad(p)
-        schema = Balance.schema
         constants = leap_constants(ctx.character.name)
 
         def crouch(t):
-            return Balance(schema.validate(dict(pelvis_height=cfg["crouch_height"], torso_pitch=cfg["crouch_pitch"],
+            return Balance(inside_a_skill(pelvis_height=cfg["crouch_height"], torso_pitch=cfg["crouch_pitch"],
                                                 com_offset_x=cfg["com_offset"],
                                                 com_offset_y=cfg.get("com_offset_y", 0.0),
                                                 arm_flexion=cfg.get("crouch_arms", 0.0), move_start=constants.crouch_move_start,
@@ -178,7 +177,7 @@ class Leap(Sequence):
                                                 spin_kp=cfg.get("spin_hold", 0.0),
                                                 move_time=cfg["crouch_time"] if "crouch_time" in cfg
                                                 else p["crouch_time"],
-                                                hold_time=0.0, return_to_stand=0)), ctx)
+                                                hold_time=0.0, return_to_stand=0), ctx)
 
         def landing_settings():
             # the calibrated leap's own correction of the landing's foot servo delta, plus the user's
@@ -202,11 +201,11 @@ class Leap(Sequence):
         def lean(t):
             # the commanded take-off leans on from the crouch until the lean will give the flight's
             # horizontal speed (thrust_due), or the lean is at its furthest
-            return Balance(schema.validate(dict(pelvis_height=cfg["crouch_height"], torso_pitch=cfg["crouch_pitch"],
+            return Balance(inside_a_skill(pelvis_height=cfg["crouch_height"], torso_pitch=cfg["crouch_pitch"],
                                                 com_offset_x=constants.commanded_lean_offset,
                                                 arm_flexion=cfg.get("crouch_arms", 0.0), move_start=0.0,
                                                 move_time=constants.commanded_lean_wait, hold_time=0.0,
-                                                return_to_stand=0)), ctx, from_height=cfg["crouch_height"])
+                                                return_to_stand=0), ctx, from_height=cfg["crouch_height"])
 
         def leaned(b, t):
             return b.posture_reached(t) or thrust_due(command, ctx.data, b.pelvis, support, origin)
