@@ -69,7 +69,7 @@ class Leap(Sequence):
 
     @classmethod
     def character_defaults(cls, character: str) -> dict:
-        """A body whose calibrated leaps do not reach the schema's height (the child's 0.03-0.27 m
+        """A body whose calibrated leaps do not reach the schema's height (the child's 0.03-0.26 m
         against 0.3 m) leaps, unless told, to the middle of what it is offered."""
         rises = (load("leap", character) or {}).get(vertical_table("human"), {}).get("com_rise", [])
         if not rises:
