@@ -212,6 +212,22 @@ def test_the_child_holds_a_slow_pitched_move_with_her_own_gains_and_square_feet(
         "balance", "child", {**sideways, "stagger_on_floor": 0}))))
 
 
+def test_a_crouch_leaning_back_further_than_measured_is_refused_and_at_the_limit_holds():
+    """docs/skills/balance.md, "Leaning back in a crouch": the child fell with the torso -0.15 rad back in a
+    crouch to 0.7 of her standing hip height; the limit there (-0.125 rad) holds."""
+    from sim_core.control.balance import standing_hip_height
+    from sim_core.character.spec import load_character
+    from sim_core.errors import ParameterError
+    from sim_core.request import behaviour_params
+    height = round(0.7 * standing_hip_height(load_character("child")), 3)
+    with pytest.raises(ParameterError) as error:
+        run(RunRequest("balance", "child", params=behaviour_params("balance", "child", dict(
+            pelvis_height=height, torso_pitch=-0.15, move_time=3.0))))
+    assert "\n" not in str(error.value) and "torso_pitch=-0.15" in str(error.value) and "allowed" in str(error.value)
+    assert balanced(run(RunRequest("balance", "child", params=behaviour_params("balance", "child", dict(
+        pelvis_height=height, torso_pitch=-0.12, move_time=3.0, hold_time=1.0)))))
+
+
 PANEL = ("pelvis_height", "torso_pitch", "com_offset_x", "com_offset_y", "arm_abduction", "arm_flexion",
          "elbow_flexion", "head_pitch")
 

@@ -55,6 +55,13 @@ BALANCE_CONSTANTS = Schema(
              "... narrowed to this share of the half width when the torso is pitched forward (measured: 0.2 held "
              "by all four at every pitch, 0.3-0.4 stepped or fell with the arms raised)"),
     constant("side_pitch", "rad", 0.01, 2.0, "... linearly from no pitch to this torso pitch"),
+    constant("back_pitch_free_depth", "1", 0.0, 1.0,
+             "a backward torso pitch is held over the panel's whole range in a crouch down to this share of the "
+             "standing hip height (measured: the man, the child and the imaginary runner held -0.35 rad at 0.15)"),
+    constant("back_pitch_depth", "1", 0.0, 1.0,
+             "... and narrows linearly to back_pitch_deep at this crouch depth and deeper (the child fell at "
+             "-0.3 / -0.25 / -0.15 / -0.1 rad at depths 0.2 / 0.25 / 0.3 / 0.4)"),
+    constant("back_pitch_deep", "rad", 0.0, 0.35, "... the backward pitch a crouch that deep holds (the child: -0.05)"),
     constant("hand_clearance", "1", 0.0, 1.0,
              "a posture whose hands come nearer the ground than this share of the standing hip height is "
              "refused (posed kinematically: the hands touched the ground below it)"),
@@ -259,6 +266,7 @@ class Balance(Behaviour):
         self._check_com_offset()
         self._check_height()
         self._check_move_time()
+        self._check_back_pitch()
         self._check_hands()
 
     def hands_clearance(self) -> float:
@@ -306,6 +314,23 @@ class Balance(Behaviour):
         ``pitch_rate`` (measured on the four bodies: docs/skills/balance.md)."""
         pitch_beyond = max(0.0, self.params["torso_pitch"] - CONSTANTS.free_pitch)
         return max(self.crouch_depth() / CONSTANTS.crouch_rate, pitch_beyond / CONSTANTS.pitch_rate)
+
+    def back_pitch_allowed(self) -> float:
+        """The largest backward torso pitch (rad, as a positive number) this request's crouch holds: the
+        panel's whole range down to ``back_pitch_free_depth`` of the standing hip height, narrowing
+        linearly to ``back_pitch_deep`` at ``back_pitch_depth`` and deeper (measured on the four bodies:
+        docs/skills/balance.md)."""
+        widest = -self.schema.by_name["torso_pitch"].minimum
+        beyond = (self.crouch_depth() - CONSTANTS.back_pitch_free_depth) / (CONSTANTS.back_pitch_depth - CONSTANTS.back_pitch_free_depth)
+        return widest - (widest - CONSTANTS.back_pitch_deep) * min(1.0, max(0.0, beyond))
+
+    def _check_back_pitch(self) -> None:
+        pitch, allowed = self.params["torso_pitch"], self.back_pitch_allowed()
+        if pitch < -allowed:
+            raise ParameterError(
+                f"parameter torso_pitch={pitch:g} rad leans the torso back further than the {self.ctx.character.name} "
+                f"holds in a crouch of {self.crouch_depth():.2f} of the standing hip height; allowed range is "
+                f"[{-math.floor(allowed * 1000) / 1000:g}, {self.schema.by_name['torso_pitch'].maximum:g}] rad")
 
     def _check_move_time(self) -> None:
         needed, asked = self.move_time_needed(), self.params["move_time"]
