@@ -326,11 +326,12 @@ class Balance(Behaviour):
 
     def _check_back_pitch(self) -> None:
         pitch, allowed = self.params["torso_pitch"], self.back_pitch_allowed()
+        shown = math.floor(allowed * 1000) / 1000        # definition: the message's mrad, rounded inward
         if pitch < -allowed:
             raise ParameterError(
                 f"parameter torso_pitch={pitch:g} rad leans the torso back further than the {self.ctx.character.name} "
                 f"holds in a crouch of {self.crouch_depth():.2f} of the standing hip height; allowed range is "
-                f"[{-math.floor(allowed * 1000) / 1000:g}, {self.schema.by_name['torso_pitch'].maximum:g}] rad")
+                f"[{-shown:g}, {self.schema.by_name['torso_pitch'].maximum:g}] rad")
 
     def _check_move_time(self) -> None:
         needed, asked = self.move_time_needed(), self.params["move_time"]
