@@ -33,7 +33,8 @@ the one wanted (``turn_headings``, turn_for_heading: the heading wanted moved by
 over the table's ``turn_slope``, from ``turn_gain`` x the bearing). A target straight to the side, in its
 ``sideways_region``, the same with the quarter turn (the leap's ``turn_first``, two hops) and its lines
 (``quarter_lines``). A target to the side at a long air time, in its ``turned_long_region``: the same hop and
-aim with the table read by long_body (the long row flown after the hop).
+aim with the table read by turned_long_body (the long row flown after the hop, with the table's
+``turned_long_settings`` over it).
 
 At most min(budget, aim_trials + landing_trials - 1) jumps (turned: turn_aim_trials + landing_trials - 1);
 the plan is the best trial (found or
@@ -50,7 +51,7 @@ from ..character.spec import load_character
 from ..control.leap import LEAP_SETTINGS
 from ..errors import ParameterError
 from ..skills.jump_to_target.commanded import (commanded_settings, commanded_way, long_body, near_long_body, planner_constants,
-                                               table, turn_for_heading, turn_for_point, turned_settings)
+                                               table, turn_for_heading, turn_for_point, turned_long_body, turned_settings)
 from .land import candidates, foot_step
 from .trials import Trials
 
@@ -124,9 +125,9 @@ def plan_turned(character: str, target, air_time: float, trial, budget: int, jud
                 progress: Callable | None, cancelled: Callable | None, body: dict, c, way: str = "turned") -> dict:
     """plan_commanded for a target to the side (the module's turned plan): turn first, then forward
     (``way`` "sideways": the quarter turn, its map ``quarter_lines``; "turned_long": the hop, then the long row,
-    commanded.long_body)."""
+    commanded.turned_long_body)."""
     if way == "turned_long":
-        body = long_body(body)
+        body = turned_long_body(body)
     x, y = float(target[0]), float(target[1])
     distance, bearing = math.hypot(x, y), math.atan2(y, x)
     along, side = (math.cos(bearing), math.sin(bearing)), (-math.sin(bearing), math.cos(bearing))

@@ -40,7 +40,9 @@ Fig. 6 with his thrust slowed for his strength, tools/scale_commanded.py and doc
   ``long_crouch_by_air_time`` its crouch pairs (long_body); a request there outside ``region`` is planned so;
 - ``turned_long_region`` (optional, with the long row and ``turned_region``): the same keys as ``turned_region`` for
   long air times: the hop first (chosen as the turned plan's, by ``turn_lines``), then the long row (long_body)
-  forward along the new heading; a request in it beyond ``region``'s target_y is planned so;
+  forward along the new heading; a request in it beyond ``region``'s target_y is planned so; ``turned_long_settings``
+  (optional) replace the long row's settings for it (turned_long_body: the man's landing arms without their pitch
+  feedback, whose hands touched the ground in the deep landings after the hop);
 - ``down_region`` (optional, with ``down_settings``): a jump straight ahead down from a box ``height`` m high
   ([low, high]) is flown by the same take-off where the flight of its lift-off velocity on flat ground lands in
   ``region`` with an air time in ``flat_air_time`` ([low, high] s) (flat_equivalent: the vertical speed's air
@@ -113,6 +115,8 @@ def _rows(body: dict):
         yield "long_settings", body["long_settings"]
     if "near_long_settings" in body:
         yield "near_long_settings", body["near_long_settings"]
+    if "turned_long_settings" in body:
+        yield "turned_long_settings", body["turned_long_settings"]
     for key in ("crouch_by_air_time", "long_crouch_by_air_time", "near_long_crouch_by_air_time"):
         for k, height in enumerate(body.get(key, {}).get("crouch_height", [])):
             yield f"{key} {k}", {"crouch_height": height}
@@ -178,6 +182,13 @@ def near_long_body(body: dict) -> dict:
     long = long_body(body)
     return {**long, "settings": {**long["settings"], **body["near_long_settings"]},
             "crouch_by_air_time": body["near_long_crouch_by_air_time"]}
+
+
+def turned_long_body(body: dict) -> dict:
+    """The table as the turned long air times' plan reads it (``turned_long_region``): long_body with
+    ``turned_long_settings`` (where the table has them) over its settings."""
+    long = long_body(body)
+    return {**long, "settings": {**long["settings"], **body.get("turned_long_settings", {})}}
 
 
 def flat_equivalent(target, air_time: float) -> tuple[float, float]:
