@@ -43,6 +43,9 @@ Fig. 6 with his thrust slowed for his strength, tools/scale_commanded.py and doc
   forward along the new heading; a request in it beyond ``region``'s target_y is planned so; ``turned_long_settings``
   (optional) replace the long row's settings for it (turned_long_body: the man's landing arms without their pitch
   feedback, whose hands touched the ground in the deep landings after the hop);
+- ``turned_near_long_region`` (optional, with the near long row and ``turned_region``): the same keys for long air
+  times nearer, the hop first, then the near long row as it is (near_long_body; the near row's landing kept its arms'
+  pitch feedback: without it more fell); a request in it beyond ``region``'s target_y is planned so;
 - ``down_region`` (optional, with ``down_settings``): a jump straight ahead down from a box ``height`` m high
   ([low, high]) is flown by the same take-off where the flight of its lift-off velocity on flat ground lands in
   ``region`` with an air time in ``flat_air_time`` ([low, high] s) (flat_equivalent: the vertical speed's air
@@ -221,7 +224,8 @@ def commanded_way(character: str, target, air_time: float) -> str | None:
     inside the table's ``region`` (bounds included), "long" inside its ``long_region`` beyond it (the
     vertical thrust, long_body), "near_long" inside its ``near_long_region`` beyond both (near_long_body), "turned"
     inside its ``turned_region`` beyond both (a turn first, then forward), "turned_long" inside its
-    ``turned_long_region`` (the turn first, then the long row), "sideways" inside its ``sideways_region`` (the
+    ``turned_long_region`` (the turn first, then the long row), "turned_near_long" inside its ``turned_near_long_region``
+    (the turn first, then the near long row), "sideways" inside its ``sideways_region`` (the
     quarter turn first); down
     from a box (z < 0) or onto one (z > 0) as box_way says; else None."""
     body = table(character)
@@ -244,7 +248,7 @@ def commanded_way(character: str, target, air_time: float) -> str | None:
     if region["target_y"][0] <= y <= region["target_y"][1]:
         return None
     values = {"distance": math.hypot(x, y), "bearing": abs(math.atan2(y, x)), "air_time": float(air_time)}
-    return next((way for way in ("turned", "turned_long", "sideways") if body.get(f"{way}_region") is not None
+    return next((way for way in ("turned", "turned_long", "turned_near_long", "sideways") if body.get(f"{way}_region") is not None
                  and all(body[f"{way}_region"][k][0] <= v <= body[f"{way}_region"][k][1] for k, v in values.items())), None)
 
 
@@ -317,6 +321,8 @@ def commanded_limit(character: str) -> str | None:
         parts.append(f"for long air times nearer (the vertical thrust with its own lean push) for {_flat(body['near_long_region'])}")
     if body.get("turned_long_region"):
         parts.append(f"turned first with long air times {_turned(body['turned_long_region'])}")
+    if body.get("turned_near_long_region"):
+        parts.append(f"turned first with long air times nearer {_turned(body['turned_near_long_region'])}")
     for key, way, sign in (("long_onto_region", "onto", "+"), ("long_down_region", "down from", "-")):
         if body.get(key):
             parts.append(_box(body[key], way, "the long air times' region", sign) + ")")
