@@ -62,7 +62,8 @@ class Draw:
     turned commanded region outside the measured one: turn first, then forward), "sideways" (a jump's,
     straight to the side in the sideways commanded region: a quarter turn first), "long" (a jump's, in the long
     air times' commanded region outside the measured one: the vertical thrust), "turned_long" (a jump's, in the
-    turned long air times' commanded region outside the measured one: the hop first, then the long row), "leap" (height) or
+    turned long air times' commanded regions outside the measured one: the hop first, then the long row, or nearer the near
+    long row), "leap" (height) or
     "broad" (distance), with its numbers in ``values``."""
     skill: str
     character: str
