@@ -160,7 +160,7 @@ def test_a_target_outside_both_regions_is_refused_naming_both(monkeypatch):
                          "a box 0.25-0.5 m high at target_x "
                          "0.85-1.6 m where the same lift-off on flat ground would land in the long air times' region in "
                          "0.52-0.7 s (T0 = air_time + 2 height / (g air_time))")
-    assert "the commanded take-off is offered on flat ground for target_x 0.5-1.2 m" in region_refusal("man", (1.0, 0.4), 0.6)
+    assert "the commanded take-off is offered on flat ground for target_x 0.5-1.2 m" in region_refusal("man", (1.3, 0.4), 0.6)
 
 
 def all_planned_and_run(character: str, draws, store):
