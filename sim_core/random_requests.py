@@ -62,7 +62,8 @@ class Draw:
     turned commanded region outside the measured one: turn first, then forward), "sideways" (a jump's,
     straight to the side in the sideways commanded region: a quarter turn first), "long" (a jump's, in the long
     air times' commanded region outside the measured one: the vertical thrust), "turned_long" (a jump's, in the
-    turned long air times' commanded region outside the measured one: the hop first, then the long row), "leap" (height) or
+    turned long air times' commanded regions outside the measured one: the hop first, then the long row, or nearer the near
+    long row), "leap" (height) or
     "broad" (distance), with its numbers in ``values``."""
     skill: str
     character: str
@@ -127,11 +128,12 @@ def draw_requests(seed: int, characters, jumps: int, leaps: int, broads: int, bo
                                                ("turned", turned, TURNED_STREAM, "turned_region", draw_turned),
                                                ("sideways", sideways, SIDEWAYS_STREAM, "sideways_region", draw_sideways),
                                                ("long", long, LONG_STREAM, "long_region", draw_long),
-                                               ("turned_long", turned_long, TURNED_LONG_STREAM, "turned_long_region",
-                                                draw_turned_long)):
+                                               ("turned_long", turned_long, TURNED_LONG_STREAM,
+                                                ("turned_long_region", "turned_near_long_region"), draw_turned_long)):
         stream_rng = np.random.default_rng((seed, stream))
         for character in characters:
-            if count and (table(character) or {}).get(region) is not None:
+            if count and any((table(character) or {}).get(key) is not None
+                             for key in ((region,) if isinstance(region, str) else region)):
                 drawn += [Draw(skill, character, draw(stream_rng, character)) for _ in range(count)]
     return drawn
 
@@ -152,24 +154,25 @@ def draw_sideways(rng, character: str) -> tuple:
     raise ParameterError(f"no target of the {character}'s sideways commanded region in {REGION_DRAWS} draws")
 
 
-def draw_turned(rng, character: str, way: str = "turned") -> tuple:
+def draw_turned(rng, character: str, ways: tuple = ("turned",)) -> tuple:
     """A jump target uniform in issue 29's box that the character's turned commanded region holds
-    (commanded.commanded_way ``way``: "turned", or "turned_long" for its turned long air times' region) and its
-    measured jumps do not offer (region.offered) - one that the turn and the commanded take-off serve - drawn
-    again until it is; as (target_x, target_y, air_time)."""
+    (commanded.commanded_way one of ``ways``: "turned", or "turned_long" / "turned_near_long" for its turned long air
+    times' regions) and its measured jumps do not offer (region.offered) - one that the turn and the commanded take-off
+    serve - drawn again until it is; as (target_x, target_y, air_time)."""
     from .skills.jump_to_target.commanded import commanded_way
     from .skills.jump_to_target.region import offered
     for _ in range(REGION_DRAWS):
         values = box_draw(rng, character)
-        if commanded_way(character, values[:2], values[2]) == way and not offered(character, values[:2], values[2]):
+        if commanded_way(character, values[:2], values[2]) in ways and not offered(character, values[:2], values[2]):
             return values
-    raise ParameterError(f"no target of issue 29's box in {REGION_DRAWS} draws lies in the {character}'s {way} "
-                         f"commanded region outside the region its measured jumps offer")
+    raise ParameterError(f"no target of issue 29's box in {REGION_DRAWS} draws lies in the {character}'s "
+                         f"{' or '.join(ways)} commanded region outside the region its measured jumps offer")
 
 
 def draw_turned_long(rng, character: str) -> tuple:
-    """draw_turned in the table's turned long air times' region (``turned_long_region``: the hop, then the long row)."""
-    return draw_turned(rng, character, "turned_long")
+    """draw_turned in the table's turned long air times' regions (``turned_long_region``: the hop, then the long row;
+    ``turned_near_long_region``: the hop, then the near long row), uniform in issue 29's box where either holds it."""
+    return draw_turned(rng, character, ("turned_long", "turned_near_long"))
 
 
 def draw_commanded(rng, character: str, keys: tuple = ("region",)) -> tuple:
@@ -462,8 +465,10 @@ def main(argv=None) -> int:
                "(near_long_body: its own lean push and crouch pairs). " if args.long else "")
             + ("Turned long air time targets (--turned-long) are drawn uniformly in issue 29's box and drawn again until "
                "they lie in the turned long air times' region of each character that has one (the table's "
-               "turned_long_region) and outside the region its measured jumps offer: the jump turns first by one hop "
-               "toward the target (as the turned targets) and flies the long row forward (plan_turned with long_body). "
+               "turned_long_region, and turned_near_long_region where the table has it: the man's) and outside the region "
+               "its measured jumps offer: the jump turns first by one hop toward the target (as the turned targets) and "
+               "flies the long row forward (plan_turned with turned_long_body; in turned_near_long_region the near long "
+               "row, near_long_body). "
                if args.turned_long else "")
             + "A target without a stored plan is planned first (into a temporary "
             "plan store; on flat ground or a box from the measured jumps, at most "

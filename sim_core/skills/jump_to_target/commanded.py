@@ -40,7 +40,12 @@ Fig. 6 with his thrust slowed for his strength, tools/scale_commanded.py and doc
   ``long_crouch_by_air_time`` its crouch pairs (long_body); a request there outside ``region`` is planned so;
 - ``turned_long_region`` (optional, with the long row and ``turned_region``): the same keys as ``turned_region`` for
   long air times: the hop first (chosen as the turned plan's, by ``turn_lines``), then the long row (long_body)
-  forward along the new heading; a request in it beyond ``region``'s target_y is planned so;
+  forward along the new heading; a request in it beyond ``region``'s target_y is planned so; ``turned_long_settings``
+  (optional) replace the long row's settings for it (turned_long_body: the man's landing arms without their pitch
+  feedback, whose hands touched the ground in the deep landings after the hop);
+- ``turned_near_long_region`` (optional, with the near long row and ``turned_region``): the same keys for long air
+  times nearer, the hop first, then the near long row as it is (near_long_body; the near row's landing kept its arms'
+  pitch feedback: without it more fell); a request in it beyond ``region``'s target_y is planned so;
 - ``down_region`` (optional, with ``down_settings``): a jump straight ahead down from a box ``height`` m high
   ([low, high]) is flown by the same take-off where the flight of its lift-off velocity on flat ground lands in
   ``region`` with an air time in ``flat_air_time`` ([low, high] s) (flat_equivalent: the vertical speed's air
@@ -113,6 +118,8 @@ def _rows(body: dict):
         yield "long_settings", body["long_settings"]
     if "near_long_settings" in body:
         yield "near_long_settings", body["near_long_settings"]
+    if "turned_long_settings" in body:
+        yield "turned_long_settings", body["turned_long_settings"]
     for key in ("crouch_by_air_time", "long_crouch_by_air_time", "near_long_crouch_by_air_time"):
         for k, height in enumerate(body.get(key, {}).get("crouch_height", [])):
             yield f"{key} {k}", {"crouch_height": height}
@@ -180,6 +187,13 @@ def near_long_body(body: dict) -> dict:
             "crouch_by_air_time": body["near_long_crouch_by_air_time"]}
 
 
+def turned_long_body(body: dict) -> dict:
+    """The table as the turned long air times' plan reads it (``turned_long_region``): long_body with
+    ``turned_long_settings`` (where the table has them) over its settings."""
+    long = long_body(body)
+    return {**long, "settings": {**long["settings"], **body.get("turned_long_settings", {})}}
+
+
 def flat_equivalent(target, air_time: float) -> tuple[float, float]:
     """The flat-ground flight of a jump's lift-off velocity: a target ``target`` (x, y, z) reached in
     ``air_time`` s leaves at x / T forward and at the vertical speed that lands z m higher (ballistics);
@@ -210,7 +224,8 @@ def commanded_way(character: str, target, air_time: float) -> str | None:
     inside the table's ``region`` (bounds included), "long" inside its ``long_region`` beyond it (the
     vertical thrust, long_body), "near_long" inside its ``near_long_region`` beyond both (near_long_body), "turned"
     inside its ``turned_region`` beyond both (a turn first, then forward), "turned_long" inside its
-    ``turned_long_region`` (the turn first, then the long row), "sideways" inside its ``sideways_region`` (the
+    ``turned_long_region`` (the turn first, then the long row), "turned_near_long" inside its ``turned_near_long_region``
+    (the turn first, then the near long row), "sideways" inside its ``sideways_region`` (the
     quarter turn first); down
     from a box (z < 0) or onto one (z > 0) as box_way says; else None."""
     body = table(character)
@@ -233,7 +248,7 @@ def commanded_way(character: str, target, air_time: float) -> str | None:
     if region["target_y"][0] <= y <= region["target_y"][1]:
         return None
     values = {"distance": math.hypot(x, y), "bearing": abs(math.atan2(y, x)), "air_time": float(air_time)}
-    return next((way for way in ("turned", "turned_long", "sideways") if body.get(f"{way}_region") is not None
+    return next((way for way in ("turned", "turned_long", "turned_near_long", "sideways") if body.get(f"{way}_region") is not None
                  and all(body[f"{way}_region"][k][0] <= v <= body[f"{way}_region"][k][1] for k, v in values.items())), None)
 
 
@@ -306,6 +321,8 @@ def commanded_limit(character: str) -> str | None:
         parts.append(f"for long air times nearer (the vertical thrust with its own lean push) for {_flat(body['near_long_region'])}")
     if body.get("turned_long_region"):
         parts.append(f"turned first with long air times {_turned(body['turned_long_region'])}")
+    if body.get("turned_near_long_region"):
+        parts.append(f"turned first with long air times nearer {_turned(body['turned_near_long_region'])}")
     for key, way, sign in (("long_onto_region", "onto", "+"), ("long_down_region", "down from", "-")):
         if body.get(key):
             parts.append(_box(body[key], way, "the long air times' region", sign) + ")")
