@@ -248,7 +248,7 @@ SETTING_RANGES = Schema(
     _tuned_parameter("ankle_extension", "rad", 0.0, 0.87, "tuned: ankle plantarflexion the stance ankle extends to in thrust"),
     _tuned_parameter("knee_extension", "rad", 0.0, 0.8, "tuned: knee angle the stance knee extends to in thrust"),
     _tuned_parameter("speed_gain", "s", 0.0, 0.3, "k of eqs. 1-2: extra forward placement of the foot per m/s of speed error"),
-    _tuned_parameter("touchdown_leg", "m", 0.75, 0.95, "hip-to-heel distance at touchdown (fixes z_hh of eqs. 1-2)"),
+    _tuned_parameter("touchdown_leg", "m", 0.34, 0.95, "hip-to-heel distance at touchdown (fixes z_hh of eqs. 1-2)"),
     _tuned_parameter("idle_knee", "rad", 0.5, 2.4, "knee flexion of the idle (shortened) leg"),
     *(_tuned_parameter(name, unit, low, high, help_text) for name, (unit, low, high, help_text) in SCHEDULED.items()),
     constant("contact_height", "m", 0.0, 0.05, "a foot contact sphere this close to the ground touches it"),
