@@ -96,6 +96,14 @@ def broad_range(character: str) -> tuple[float, float]:
     return float(min(travels)), float(max(travels))
 
 
+def drawn_inside(rng, low: float, high: float) -> float:
+    """A value uniform in [low, high], to DRAW_DECIMALS, rounded inward at the ends (a height drawn just above
+    the lowest offered and rounded down was refused)."""
+    step = 10.0 ** -DRAW_DECIMALS
+    inner = (math.ceil(low / step - 1e-9) * step, math.floor(high / step + 1e-9) * step)
+    return round(min(max(float(rng.uniform(low, high)), inner[0]), inner[1]), DRAW_DECIMALS)
+
+
 def draw_requests(seed: int, characters, jumps: int, leaps: int, broads: int, boxes: int = 0,
                   commanded: int = 0, turned: int = 0, sideways: int = 0, long: int = 0, turned_long: int = 0) -> list[Draw]:
     """The random requests of ``seed`` (NumPy's default generator), per character: ``jumps`` jump
@@ -116,9 +124,9 @@ def draw_requests(seed: int, characters, jumps: int, leaps: int, broads: int, bo
         for _ in range(jumps):
             drawn.append(Draw("jump", character, draw_jump(rng, character)))
         for _ in range(leaps):
-            drawn.append(Draw("leap", character, (round(float(rng.uniform(*heights)), DRAW_DECIMALS),)))
+            drawn.append(Draw("leap", character, (drawn_inside(rng, *heights),)))
         for _ in range(broads):
-            drawn.append(Draw("broad", character, (round(float(rng.uniform(*distances)), DRAW_DECIMALS),)))
+            drawn.append(Draw("broad", character, (drawn_inside(rng, *distances),)))
     boxes_rng = np.random.default_rng((seed, BOX_STREAM))
     for character in characters:
         drawn += [Draw("box", character, draw_box_jump(boxes_rng, character)) for _ in range(boxes)]
