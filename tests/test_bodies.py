@@ -504,7 +504,8 @@ def test_the_child_imports_and_bakes_balance_in_blender():
     assert bpy.ops.sim_athletics.simulate_bake(behaviour="balance", duration=1.0, start_frame=1) == {"FINISHED"}
     action = arm.animation_data.action
     assert action is not None and action.frame_range[1] >= 24
-    trajectory = run(RunRequest("balance", "child", duration=1.0))
+    from sim_core.request import behaviour_params
+    trajectory = run(RunRequest("balance", "child", params=behaviour_params("balance", "child"), duration=1.0))  # the panel's
     names = trajectory.body_names
     rest = rig.rest_matrices(arm, names)
     frames = [1, 9, 17, 25]

@@ -233,11 +233,11 @@ class Balance(Behaviour):
         ``character`` by Fig. 6 (geometric: they carry no mass; L its leg length over his): with the
         man's per-metre gains the child's COM crept toward her toes and she fell in slow pitched moves
         (docs/skills/balance.md). The balances inside other skills keep the schema's."""
-        if character == GAINS_SET_FOR:
-            return {}
         from ..adapt.scaling import ScaleFactors, Units, scale
         from ..character.dimensions import leg_length_ratio
-        from ..character.spec import load_character
+        from ..character.spec import available_characters, load_character
+        if character == GAINS_SET_FOR or character not in available_characters():
+            return {}               # a body made into a file of its own is known here by name only: the schema's
         factors = ScaleFactors(leg_length_ratio(load_character(GAINS_SET_FOR), load_character(character)))
         return {name: round(scale(cls.schema.by_name[name].default, Units.parse(cls.schema.by_name[name].unit), factors), 4)
                 for name in SCALED_GAINS}
