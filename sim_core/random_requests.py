@@ -132,16 +132,15 @@ def draw_requests(seed: int, characters, jumps: int, leaps: int, broads: int, bo
         drawn += [Draw("box", character, draw_box_jump(boxes_rng, character)) for _ in range(boxes)]
     from .skills.jump_to_target.commanded import table
     # the commanded take-off's regions, each from its own stream, for the characters whose table has the region
-    for skill, count, stream, region, draw in (("commanded", commanded, COMMANDED_STREAM, "region", draw_commanded),
-                                               ("turned", turned, TURNED_STREAM, "turned_region", draw_turned),
-                                               ("sideways", sideways, SIDEWAYS_STREAM, "sideways_region", draw_sideways),
-                                               ("long", long, LONG_STREAM, "long_region", draw_long),
+    for skill, count, stream, regions, draw in (("commanded", commanded, COMMANDED_STREAM, ("region",), draw_commanded),
+                                               ("turned", turned, TURNED_STREAM, ("turned_region",), draw_turned),
+                                               ("sideways", sideways, SIDEWAYS_STREAM, ("sideways_region",), draw_sideways),
+                                               ("long", long, LONG_STREAM, ("long_region",), draw_long),
                                                ("turned_long", turned_long, TURNED_LONG_STREAM,
                                                 ("turned_long_region", "turned_near_long_region"), draw_turned_long)):
         stream_rng = np.random.default_rng((seed, stream))
         for character in characters:
-            if count and any((table(character) or {}).get(key) is not None
-                             for key in ((region,) if isinstance(region, str) else region)):
+            if count and any((table(character) or {}).get(key) is not None for key in regions):
                 drawn += [Draw(skill, character, draw(stream_rng, character)) for _ in range(count)]
     return drawn
 

@@ -560,9 +560,9 @@ class Balance(Behaviour):
         # ankles' pitch servos both following the measured angles, nothing else holds the legs'
         # scissor - on a rigid floor the feet's grip does; on a soft mat the feet twist in it and
         # the body turns over them
-        on_soft = bool(self.soft_ground) and over_a_box(pts, self.soft_ground)
         square = (self.params["stagger_kp"] * (self.feet_stagger() - self._stagger)
-                  if on_soft or self.params["stagger_on_floor"] else 0.0)
+                  if self.params["stagger_on_floor"] or (self.soft_ground and over_a_box(pts, self.soft_ground))
+                  else 0.0)
         for k in (0, 1):
             j = idx[k]
             f = d.xmat[self.feet[k]].tolist()          # row-major 3x3: columns are the foot axes
