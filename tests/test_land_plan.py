@@ -7,7 +7,9 @@ import pickle
 
 import pytest
 
+from sim_core import tuned
 from sim_core.cli import main
+from sim_core.control.leap import landing_side_speed
 from sim_core.planning.land import LandingTrial, candidates, plan_landing
 from sim_core.simulate import RunRequest, StartState
 from sim_core.skills.land.calibrate import grid
@@ -26,11 +28,13 @@ def test_the_plan_tries_the_request_first_then_steps_on_either_side_nearest_firs
 
 
 def test_random_drops_are_drawn_inside_the_offered_range_and_differ_by_seed():
-    """Rounded to mm and cm/s, never out of the range (the child's slowest -0.6765 m/s is drawn as -0.67)."""
-    for character in ("man", "woman", "child"):
+    """Rounded to mm and cm/s, never out of the range (the child's slowest -0.6765 m/s is drawn as -0.67);
+    the drop inside what the body lands at the speed drawn, the sideways speed inside what it lands."""
+    for character in ("man", "woman", "child", "imaginary_runner"):
         (h0, h1), (v0, v1) = offered(character)
         draws = [random_drops(character, 20, seed) for seed in range(1, 30)]
-        assert all(h0 <= h <= h1 and v0 <= v <= v1 for d in draws for h, v in d)
+        side = landing_side_speed(tuned.load("landing", character))
+        assert all(h0 <= h <= h1 and v0 <= v <= v1 and abs(w) <= side for d in draws for h, v, w in d)
         assert draws[0] == random_drops(character, 20, 1) != draws[1]
 
 
@@ -54,17 +58,17 @@ def test_a_landing_trial_can_go_to_a_process_pool():
     assert pickle.loads(pickle.dumps(LandingTrial(request))).request == request
 
 
-@pytest.mark.parametrize("character, count", [("man", 2), ("woman", 2), ("child", 2)])
+@pytest.mark.parametrize("character, count", [("man", 2), ("woman", 2), ("child", 2), ("imaginary_runner", 2)])
 def test_random_drops_in_the_offered_range_land_balanced(character, count):
     """A few drops drawn at random (seed 11) in what the character's table offers, each planned and
     run as ``simulate land`` does: every one balanced, the feet staying where they touched down.
     (The figures over many draws: docs/bodies.md, ``python -m sim_core report land --random``.)"""
     (h0, h1), (v0, v1) = offered(character)
-    if character != "child":
+    if character in ("man", "woman"):
         assert (v0, v1) == TARGET_SPEEDS
-    for drop, speed in random_drops(character, count, seed=11):
+    for drop, speed, side in random_drops(character, count, seed=11):
         assert h0 <= drop <= h1 and v0 <= speed <= v1
-        result = planned_landing(character, drop, speed)
+        result = planned_landing(character, drop, speed, side)
         plan = result["plan"]
         assert result["outcome"] == "success" and plan["found"], (drop, speed, plan["tried"])
         assert plan["tried"][-1]["landing_skid"] <= SKID_LIMIT
@@ -120,3 +124,34 @@ def test_a_landing_table_that_serves_no_speed_is_refused_in_one_line_not_a_crash
     with pytest.raises(ParameterError, match="serves no horizontal speed"):
         landing_speeds(empty)
     assert fast_touchdown("man", empty) is None
+
+
+def test_the_drops_offered_at_a_speed_are_the_narrower_of_the_two_measured_speeds_around_it():
+    from sim_core.control.leap import landing_drops, landing_side_speed
+    rows = {"foot_delta": [{"drop": 0.2, "touchdown_speed": 2.0, "speed": [-1.0, 3.0], "delta": [0.0, 0.0]},
+                           {"drop": 0.6, "touchdown_speed": 3.4, "speed": [-1.0, 3.0], "delta": [0.0, 0.0]}]}
+    assert landing_drops(rows, 1.0) == (0.0, 0.6) and landing_side_speed(rows) == 0.0    # unmeasured: the rows
+    table = dict(rows, drop_limits={"speeds": [0.0, 1.0, 2.0], "low": [0.0, 0.1, 0.2], "high": [1.5, 1.0, 0.6],
+                                    "side": 0.3})
+    assert landing_drops(table, 1.0) == (0.1, 1.0)          # a measured speed: its own
+    assert landing_drops(table, 1.5) == (0.2, 0.6)          # between two: the narrower
+    assert landing_drops(table, 0.2) == (0.1, 1.0) and landing_side_speed(table) == 0.3
+
+
+@pytest.mark.parametrize("character", ["man", "woman", "child", "imaginary_runner"])
+def test_a_drop_or_a_sideways_speed_beyond_what_the_body_lands_is_refused_in_one_line_before_simulating(character):
+    """Measured (calibrate land --drop-limits): each body lands drops up to a height that depends on
+    its forward speed, and sideways speeds up to a limit; beyond them it falls, so it is refused."""
+    from sim_core.control.leap import landing_drops, landing_side_speed
+    from sim_core.errors import ParameterError
+    from sim_core.simulate import run
+    table = tuned.load("landing", character)
+    (_, _), (low, high) = offered(character)
+    assert "drop_limits" in table
+    for speed in (low, high):
+        too_high = landing_drops(table, speed)[1] + 0.05
+        with pytest.raises(ParameterError, match=r"drop of .* out of the .* landing range: at that speed it lands"):
+            run(RunRequest("land", character, start=StartState(height=too_high, velocity=(speed, 0.0, 0.0))))
+    side = landing_side_speed(table) + 0.05
+    with pytest.raises(ParameterError, match=r"sideways\) is out of the .* landing range"):
+        run(RunRequest("land", character, start=StartState(height=0.1, velocity=(0.0, -side, 0.0))))

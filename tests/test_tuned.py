@@ -23,7 +23,8 @@ SIM_CORE = Path(__file__).resolve().parents[1] / "sim_core"
 def driving_modules() -> list[Path]:
     """The modules that drive a run: the basis controllers and each skill's behaviour code (not
     its calibration, report or experiments, whose numbers are search settings and protocols)."""
-    skills = [p for p in sorted((SIM_CORE / "skills").glob("*/*.py")) if p.stem not in ("calibrate", "report", "experiments", "__init__")]
+    skills = [p for p in sorted((SIM_CORE / "skills").glob("*/*.py"))
+              if p.stem not in ("report", "experiments", "__init__") and not p.stem.startswith("calibrate")]
     return sorted((SIM_CORE / "control").glob("*.py")) + skills
 
 
@@ -174,6 +175,7 @@ ALLOWED = {
     "control.balance": {"CROUCH_TABLE_ROWS": "definition"},
     "skills.dive.behaviour": {"ROTATION_TOLERANCE": "criterion", "CALIBRATED_DIVES": "definition"},
     "skills.handspring.behaviour": {"SKID_LIMIT": "criterion", "OLD_ROW": "definition"},
+    "skills.land.behaviour": {"DROP_TOLERANCE": "criterion", "SPEED_TOLERANCE": "criterion"},
     "control.leap": {n: "criterion" for n in ("AIRBORNE_HEIGHT", "TOUCHDOWN_HEIGHT", "LANDING_SLIDE_LIMIT",
                                               "LANDING_SKID_LIMIT", "UNCOVERED_STEP")} | {"UP": "definition"},
     "skills.running.behaviour": {n: "definition" for n in ("FLIGHT", "LOADING", "HEEL", "HEEL_TOE", "TOE", "UNLOADING", "START", "TUNED")}

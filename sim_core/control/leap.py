@@ -644,6 +644,28 @@ def landing_speeds(table: dict) -> tuple[float, float]:
     return (low, high) if offered is None else (max(low, offered[0]), min(high, offered[1]))
 
 
+def landing_drops(table: dict, speed: float) -> tuple[float, float]:
+    """The drops (m; a start's drop is its vertical touchdown speed's v^2 / 2g) a landing table offers at
+    the horizontal ``speed``: those its ``drop_limits`` measured at that speed (``python -m sim_core
+    calibrate land --drop-limits``; between two measured speeds the narrower of the two); a table
+    without them offers from 0 up to its highest row's drop."""
+    limits = table.get("drop_limits")
+    if limits is None:
+        return 0.0, max(row["drop"] for row in table["foot_delta"] if row["speed"])
+    speeds = limits["speeds"]
+    near = [i for i, s in enumerate(speeds) if s == speed] or \
+        [i for i in (int(np.searchsorted(speeds, speed)) - 1, int(np.searchsorted(speeds, speed))) if 0 <= i < len(speeds)]
+    return max(limits["low"][i] for i in near), min(limits["high"][i] for i in near)
+
+
+def landing_side_speed(table: dict) -> float:
+    """The sideways COM speed (m/s, either way) a landing table offers: its ``drop_limits``' measured
+    one (the least landed at every forward speed it was tried at), else 0 (the table's rows land
+    straight ahead only)."""
+    limits = table.get("drop_limits")
+    return 0.0 if limits is None else limits["side"]
+
+
 LANDING_TABLE = register_table(TableType("landing", with_constants(LANDING_SETTINGS, LANDING_CONSTANTS), _landing_rows,
                                          (foot_delta_row,)))
 

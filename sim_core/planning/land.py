@@ -27,7 +27,7 @@ from typing import Callable
 
 from ..control.leap import LANDING_CONSTANTS
 from ..simulate import RunRequest, run
-from ..skills.land.calibrate import grid
+from ..skills.land.calibrate_grid import grid
 from ..tuned.constants import read_constants
 from ..tuning import Space, minimize
 

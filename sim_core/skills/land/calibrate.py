@@ -11,6 +11,13 @@ deltas by L, speeds by L^1/2 (a child's landing windows are a third of the man's
 and its drops a third of his). Rerun after a change to the model or the controllers:
 
     python -m sim_core calibrate land [--character man woman] [--processes 2]
+
+Then (``--drop-limits``, on the stored table) the drops and sideways speeds it lands, which the land
+skill offers and refuses beyond (landing_drops, landing_side_speed): at each horizontal speed it
+serves, drops up from its highest row and down from its lowest until one falls, each planned and
+run as ``simulate land`` runs it:
+
+    python -m sim_core calibrate land --drop-limits [--character man woman child imaginary_runner]
 """
 from __future__ import annotations
 
@@ -23,52 +30,11 @@ ROOT = Path.cwd()                   # docs are written under the folder it runs 
 
 from ...ballistics import GRAVITY
 from ... import tuned
-from ...control.leap import LANDING_TABLE  # noqa: F401  (declares the landing table's row type)
-from dataclasses import dataclass
-
-from ...character.dimensions import leg_length_ratio
-from ...character.spec import CharacterSpec, character_name, load_character
+from ...control.leap import LANDING_TABLE, landing_speeds  # noqa: F401  (declares the landing table's row type)
+from ...character.spec import character_name
+from ...planning.land import plan_landing
 from ...simulate import RunRequest, StartState, run
-
-SPEEDS = [-1.0, -0.5, 0.0, 0.5, 1.0, 1.5, 2.0, 2.5, 3.0]
-DELTA_STEP = 0.02            # m between the deltas tried (the landing's plan steps by a share of it, x L)
-DELTAS = [round(-0.3 + DELTA_STEP * k, 2) for k in range(28)]     # -0.30 ... 0.24 m
-DROPS = (0.2, 0.4, 0.6)      # m above standing: 0.2 puts the COM at about Wooten's 1.25 m (man) and
-                             # lands like a standing broad jump (0.45 s in the air); 0.6 lands like a
-                             # 0.6 m leap (forefoot first)
-
-
-FAST_FROM, FAST_RAMP = 3.9, 0.2     # m/s: the extra delta ramps in over this vertical touchdown speed
-FAST_DELTAS = [0.0, 0.02, 0.04, 0.06, 0.08]
-HIGH_DROPS = [0.8, 0.9, 1.0, 1.1, 1.15, 1.2, 1.3]
-
-
-@dataclass(frozen=True)
-class Grid:
-    """What the calibration tries for one body (the constants above are the man's)."""
-    speeds: list
-    deltas: list
-    drops: tuple
-    fast_from: float
-    fast_ramp: float
-    fast_deltas: list
-    high_drops: list
-    delta_step: float        # m between neighbouring deltas (a landing's plan steps by a share of it)
-
-    @property
-    def trials(self) -> int:
-        return len(self.drops) * len(self.speeds) * len(self.deltas) + len(self.fast_deltas) * len(self.high_drops)
-
-
-def grid(character) -> Grid:
-    """The man's grid scaled to ``character`` (a name, a spec file or a CharacterSpec) by Fig. 6
-    (lengths x L, speeds x L^1/2; the man's own numbers for the man, L = 1)."""
-    spec = character if isinstance(character, CharacterSpec) else load_character(character)
-    L = leg_length_ratio(load_character("man"), spec)
-    length = lambda values: [round(v * L, 4) for v in values]
-    speed = lambda values: [round(v * L ** 0.5, 4) for v in values]
-    return Grid(speed(SPEEDS), length(DELTAS), tuple(length(DROPS)), speed([FAST_FROM])[0], speed([FAST_RAMP])[0],
-                length(FAST_DELTAS), length(HIGH_DROPS), length([DELTA_STEP])[0])
+from .calibrate_grid import Grid, grid  # noqa: F401  (the grid's home; imported here as calibrate's)
 
 
 def fast_touchdown(character: str, table: dict) -> dict | None:
@@ -132,11 +98,81 @@ def calibrate(character: str, processes: int) -> dict:
             "landed": landed}
 
 
+def _lands(character: str, drop: float, speed: float, side: float = 0.0) -> bool:
+    """One start landed as ``simulate land`` lands it: planned (planning/land.py), then run."""
+    request, _ = plan_landing(RunRequest("land", character, start=StartState(height=drop, velocity=(speed, side, 0.0)),
+                                         duration=3.0))
+    return run(request).meta["outcome"] == "success"
+
+
+def _last_landed(character: str, values: list, start) -> float:
+    """The last of ``values`` (tried in order, ``start(value)`` -> lands?) before the first that
+    does not land; None if the first does not."""
+    last = None
+    for value in values:
+        if not start(value):
+            break
+        last = value
+    return last
+
+
+def drop_limits(character: str, table: dict) -> dict:
+    """The drops and sideways speeds the table lands (landing_drops, landing_side_speed), measured
+    with the landing's plan at each of its calibrated forward speeds it serves: up from its
+    highest row's drop and down from its lowest by the grid's limit drops until one falls; the
+    sideways speeds from the middle row's drop at the slowest, no and the fastest forward speed."""
+    g, name = grid(character), character_name(character)
+    low, high = landing_speeds(table)
+    speeds = sorted({low, high} | {v for v in g.speeds if low <= v <= high})
+    drops = [row["drop"] for row in table["foot_delta"] if row["speed"]]
+    middle = sorted(drops)[len(drops) // 2]
+    limits = {"speeds": speeds, "low": [], "high": []}
+    for speed in speeds:
+        up = _last_landed(character, g.limit_high_drops, lambda h: _lands(character, h, speed))
+        down = _last_landed(character, g.limit_low_drops, lambda h: _lands(character, h, speed))
+        limits["high"].append(max(drops) if up is None else up)
+        limits["low"].append(min(drops) if down is None else down)
+        print(f"  {name} at {speed:+.3f} m/s: lands drops {limits['low'][-1]:.3f}-{limits['high'][-1]:.3f} m", flush=True)
+    sides = []
+    for speed in sorted({low, 0.0, high} & set(speeds) | {low, high}):
+        side = _last_landed(character, g.limit_side_speeds, lambda s: _lands(character, middle, speed, s))
+        sides.append(0.0 if side is None else side)
+        print(f"  {name} from {middle:.3f} m at {speed:+.3f} m/s: lands sideways up to {sides[-1]:.3f} m/s", flush=True)
+    limits["side"] = min(sides)
+    limits["script"] = "python -m sim_core calibrate land --drop-limits"
+    return limits
+
+
+def measure_drop_limits(character: str) -> Path:
+    """``drop_limits`` measured on the stored table (its trials run with the limits open) and
+    written into it; a stopped measurement leaves the table byte for byte."""
+    name = character_name(character)
+    table = tuned.load("landing", name)
+    if table is None:
+        raise SystemExit(f"{name} has no landing table: python -m sim_core calibrate land --character {name} first")
+    table = {k: v for k, v in table.items() if k not in ("schema_version", "skill", "character", "strengths")}
+    table.pop("drop_limits", None)
+    open_limits = {"speeds": [0.0], "low": [0.0], "high": [float("inf")], "side": float("inf")}
+    with tuned.provisional("landing", name) as stored:
+        tuned.save("landing", name, dict(table, drop_limits=open_limits), strengths=["human"])
+        table["drop_limits"] = drop_limits(character, table)
+        path = tuned.save("landing", name, table, strengths=["human"])
+        stored.keep()
+    return path
+
+
 def main(argv=None) -> int:
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--character", nargs="+", default=["man", "woman"])
     parser.add_argument("--processes", type=int, default=2)
+    parser.add_argument("--drop-limits", action="store_true",
+                        help="only measure the drops and sideways speeds the stored table lands (landing_drops) and "
+                             "write them into it")
     args = parser.parse_args(argv)
+    if args.drop_limits:
+        for character in args.character:
+            print(f"wrote {measure_drop_limits(character).relative_to(ROOT)}: drop_limits")
+        return 0
     for character in args.character:
         table = calibrate(character, args.processes)
         # the fast-touchdown scan runs its trials with the candidate as the character's table; a

@@ -4,8 +4,9 @@ speed, for the man and the woman. Prints a table (paste into the README / docs):
     python -m sim_core report land
 
 ``--random N --seed S --character man woman child``: N random drops per character anywhere in
-what its landing table offers (drops between its rows' lowest and highest, horizontal speeds in
-its rows' common span, uniform, drawn from the seed), each planned and run as ``python -m sim_core
+what its landing table offers (horizontal speeds in its rows' common span, then drops in what it
+lands at that speed, landing_drops, and sideways speeds within what it lands, landing_side_speed,
+uniform, drawn from the seed), each planned and run as ``python -m sim_core
 simulate land`` does it (sim_core.planning.land, in this process): each drop's outcome, the plan's
 trials and foot_delta, and the wall seconds to a result; then passed / drawn and the median and
 worst seconds.
@@ -24,7 +25,7 @@ import numpy as np
 ROOT = Path.cwd()                   # docs are written under the folder it runs in (the checkout)
 
 from ... import tuned
-from ...control.leap import landing_speeds
+from ...control.leap import landing_drops, landing_side_speed, landing_speeds
 from ...simulate import RunRequest, StartState, run
 
 DROPS = [round(0.1 * k, 1) for k in range(1, 13)]
@@ -40,11 +41,13 @@ def landed(args) -> bool:
 
 
 def offered(character: str) -> tuple[tuple[float, float], tuple[float, float]]:
-    """(drops, horizontal speeds) a character's landing table offers: its rows' lowest to highest
-    drop, and the speeds every row serves."""
+    """(drops, horizontal speeds) a character's landing table offers: the lowest to the highest drop
+    it lands at any of its speeds (landing_drops), and the speeds every row serves."""
     table = tuned.load("landing", character)
-    drops = [row["drop"] for row in table["foot_delta"] if row["speed"]]
-    return (min(drops), max(drops)), landing_speeds(table)
+    speeds = landing_speeds(table)
+    measured = table.get("drop_limits", {}).get("speeds", [])
+    spans = [landing_drops(table, v) for v in [*speeds, *(v for v in measured if speeds[0] <= v <= speeds[1])]]
+    return (min(low for low, _ in spans), max(high for _, high in spans)), speeds
 
 
 def _rounded_inside(values, low: float, high: float, digits: int) -> list[float]:
@@ -55,23 +58,29 @@ def _rounded_inside(values, low: float, high: float, digits: int) -> list[float]
     return [min(max(round(float(v), digits), inner[0]), inner[1]) for v in values]
 
 
-def random_drops(character: str, count: int, seed: int) -> list[tuple[float, float]]:
-    """``count`` (drop m, speed m/s) drawn uniformly in what the table offers (rounded to mm and cm/s
-    inside it)."""
-    (h0, h1), (v0, v1) = offered(character)
+def random_drops(character: str, count: int, seed: int) -> list[tuple[float, float, float]]:
+    """``count`` (drop m, speed m/s, sideways speed m/s): the forward speed drawn uniformly in what the
+    table offers (rounded to cm/s inside it), the drop uniformly in what it offers at that speed
+    (landing_drops; mm), the sideways speed uniformly within what it offers (landing_side_speed; cm/s)."""
+    table = tuned.load("landing", character)
+    v0, v1 = landing_speeds(table)
+    side = landing_side_speed(table)
     rng = np.random.default_rng(seed)
-    drops, speeds = rng.uniform(h0, h1, count), rng.uniform(v0, v1, count)
-    return list(zip(_rounded_inside(drops, h0, h1, 3), _rounded_inside(speeds, v0, v1, 2)))
+    speeds = _rounded_inside(rng.uniform(v0, v1, count), v0, v1, 2)
+    fractions = rng.uniform(0.0, 1.0, count)
+    sides = _rounded_inside(rng.uniform(-side, side, count), -side, side, 2)
+    return [(_rounded_inside([low + f * (high - low)], low, high, 3)[0], v, w)
+            for f, v, w in zip(fractions, speeds, sides) for low, high in [landing_drops(table, v)]]
 
 
-def planned_landing(character: str, drop: float, speed: float, duration: float = 3.0) -> dict:
+def planned_landing(character: str, drop: float, speed: float, side: float = 0.0, duration: float = 3.0) -> dict:
     """One drop as ``simulate land`` runs it: planned, then run; what it did and its wall seconds."""
     from ...planning.land import plan_landing
     started = time.monotonic()
-    request, plan = plan_landing(RunRequest("land", character, start=StartState(height=drop, velocity=(speed, 0.0, 0.0)),
+    request, plan = plan_landing(RunRequest("land", character, start=StartState(height=drop, velocity=(speed, side, 0.0)),
                                             duration=duration))
     trajectory = run(request)
-    return {"drop": drop, "speed": speed, "outcome": trajectory.meta["outcome"], "plan": plan,
+    return {"drop": drop, "speed": speed, "side": side, "outcome": trajectory.meta["outcome"], "plan": plan,
             "seconds": time.monotonic() - started}
 
 
@@ -80,11 +89,11 @@ def random_report(characters: list[str], count: int, seed: int) -> int:
         (h0, h1), (v0, v1) = offered(character)
         print(f"{character}: {count} random drops {h0:g}-{h1:g} m at {v0:+g}..{v1:+g} m/s (seed {seed})", flush=True)
         results = []
-        for drop, speed in random_drops(character, count, seed):
-            r = planned_landing(character, drop, speed)
+        for drop, speed, side in random_drops(character, count, seed):
+            r = planned_landing(character, drop, speed, side)
             results.append(r)
             p = r["plan"]
-            print(f"  {drop:.3f} m at {speed:+.2f} m/s: {r['outcome']}, plan {p['trials']} trial(s), "
+            print(f"  {drop:.3f} m at {speed:+.2f} m/s, {side:+.2f} m/s sideways: {r['outcome']}, plan {p['trials']} trial(s), "
                   f"foot_delta {p['foot_delta']:+.4f} m{'' if p['found'] else ' (none found)'}, {r['seconds']:.1f} s",
                   flush=True)
         seconds = [r["seconds"] for r in results]
