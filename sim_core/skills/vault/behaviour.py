@@ -212,6 +212,14 @@ VAULT_SETTINGS = Schema(
     setting("absorb_stick", "bool", 0.0, 1.0,
             "1 = the knees stick the landing: their targets follow the measured knees (the servos only damp) while the "
             "COM still goes down, and hold where they are once it stops (no spring back up); 0 = absorb_knee deeper"),
+    setting("absorb_damp", "bool", 0.0, 1.0,
+            "1 = after the touchdown the knees', the spine's pitch and the waist's servos are pure dampers while the "
+            "COM falls (their targets follow the measured joints and the pelvis's lean) and hold where the fall "
+            "stopped: no push back up before the COM is at rest (the rebound off the mat was the servos' spring, "
+            "docs/vault.md); 0 = held at the touchdown's angles (absorb_knee deeper, the lean absorb_trunk)"),
+    setting("absorb_damp_vz", "m/s", 0.0, 2.0,
+            "absorb_damp: the fall counts as stopped once the COM goes down slower than this (the waist's and knees' "
+            "give also stops at catch_lean_max and catch_knee_max)"),
     setting("absorb_hip_gain", "1", 0.0, 5.0, "after the touchdown: gain factor of the hip servos (the waist)"),
     setting("absorb_trunk", "rad", -0.5, 1.5, "after the touchdown the hips servo the pelvis to lean this far forward"),
     setting("absorb_trunk_kp", "rad/m", -10.0, 10.0,
@@ -265,6 +273,12 @@ VAULT_SETTINGS = Schema(
             "over the feet, as the balance's eq. 7.2 does; 0: the ankles alone)"),
     setting("catch_rise_time", "s", 0.1, 5.0, "catch: the rise along the crouch table takes this long"),
     setting("catch_within", "m", 0.0, 0.3, "catch: the rise starts once the capture point is this close to catch_target ..."),
+    setting("rise_capture", "bool", 0.0, 1.0,
+            "1 = the rise servos the capture point (MatCaptureRise): it starts once the COM's fall has stopped and the "
+            "capture point is within rise_margin of catch_target, and goes up the crouch table no faster than "
+            "catch_rise_time, slowed to a stop as the capture point nears rise_margin; the ankles and the hips servo "
+            "the capture point meanwhile (the catch's catch_kp, catch_lean_kp); 0 = MatRise's (or the catch's) timed rise"),
+    setting("rise_margin", "m", 0.01, 0.3, "rise_capture: the capture point's distance from catch_target where the rise stops"),
     setting("catch_min", "s", 0.0, 2.0, "... and at least this long after the touchdown"),
     setting("recovery_step", "bool", 0.0, 1.0,
             "1 = when the capture point leaves step_at of catch_target after the touchdown (the catch's or the "
@@ -418,6 +432,7 @@ class MatAbsorb(Behaviour):
     and has slowed, or after ``absorb_max``."""
 
     schema = Schema()
+    gives = True                    # absorb_damp applies (not in the rise)
 
     def __init__(self, ctx: ControlContext, cfg: dict, landing: Landing):
         super().__init__({}, ctx)
@@ -431,8 +446,11 @@ class MatAbsorb(Behaviour):
                        for side in "rl"}
         self.knees = s.indices(["knee_r_y", "knee_l_y"])
         self.hips = s.indices(["hip_r_y", "hip_l_y"])
+        self.spine = s.indices([f"spine_{j}_y" for j in ("l3", "l1", "t7", "t4")])
+        self.held = None                        # absorb_damp: (knees, spine, lean) where the fall stopped
         self.ankle_front, self.ankle_back = landing.ankle_front, landing.ankle_back
         self.over_feet = False
+        self.stopped = False                    # rise_capture: the COM's fall has stopped
         self.stuck = None                       # absorb_stick: the knees where the fall stopped
 
     def start(self, t: float) -> None:
@@ -484,18 +502,47 @@ class MatAbsorb(Behaviour):
         angles = s.angles()
         # the capture point ahead of the feet's middle leans the trunk back, behind it forward
         capture, speed = self.capture_point(ahead, speed)
-        trunk_error = self.pelvis_lean() - (self.trunk_lean(t) - c["absorb_trunk_kp"] * capture)
-        self.knee_base(t, targets)
+        if float(d.subtree_linvel[self.pelvis][2]) >= 0.0:
+            self.stopped = True
+        damp = c["absorb_damp"] and self.gives
+        lean = self.damped(targets, angles) if damp else self.trunk_lean(t)
+        trunk_error = self.pelvis_lean() - (lean - c["absorb_trunk_kp"] * capture)
+        if not damp:
+            self.knee_base(t, targets)
         self.knee_targets = targets[self.knees].copy()
         left, left_speed = self.com_from_feet(1)
         sideways = c["absorb_side_kp"] * left + c["absorb_side_kv"] * left_speed
         self.feet_and_hips(targets, angles, ankle, sideways, trunk_error)
         s.hold(targets, t)
         spin = float(d.subtree_angmom[self.pelvis][1])
+        if c["rise_capture"]:
+            self.over_feet = self.capture_inside(capture)
+            return
         if (ahead >= -self.cfg["over_feet"] and abs(speed) < self.cfg["settled_speed"]
                 and abs(spin) < self.cfg["settled_spin"]) or (
                 t - self.t0 > self.cfg["capture_after"] and abs(capture) < self.cfg["capture_within"]):
             self.over_feet = True
+
+    def damped(self, targets: np.ndarray, angles: np.ndarray) -> float:
+        """absorb_damp: the knees' and the spine's targets (set in ``targets``) and the pelvis lean the hips servo:
+        the measured ones while the COM falls, held where the fall stopped."""
+        c = self.cfg
+        lean = min(self.pelvis_lean(), c["catch_lean_max"])
+        knees = np.minimum(angles[self.knees], c["catch_knee_max"])
+        if self.held is None and float(self.ctx.data.subtree_linvel[self.pelvis][2]) >= -c["absorb_damp_vz"]:
+            self.held = (knees, angles[self.spine].copy(), lean)
+        if self.held is None:
+            targets[self.knees], targets[self.spine] = knees, angles[self.spine]
+            return lean
+        targets[self.knees], targets[self.spine] = self.held[0], self.held[1]
+        return self.held[2]
+
+    def capture_inside(self, capture: float) -> bool:
+        """rise_capture's start: the COM's fall has stopped (it has moved up once since the touchdown) and the
+        capture point is within rise_margin of catch_target."""
+        if float(self.ctx.data.subtree_linvel[self.pelvis][2]) >= 0.0:
+            self.stopped = True
+        return self.stopped and abs(capture - self.cfg["catch_target"]) < self.cfg["rise_margin"]
 
     def feet_and_hips(self, targets: np.ndarray, angles: np.ndarray, ankle: float, sideways: float,
                       trunk_error: float, side_hip: float | None = None) -> None:
@@ -540,6 +587,8 @@ class MatRise(MatAbsorb):
     while the knees straighten over ``rise_time`` (Hermite) and the trunk's lean goes to upright;
     then the balance controller takes over near its standing height. (The balance standing up from
     the deep landed crouch itself, with the ankles at their dorsiflexion limit, let the COM drift.)"""
+
+    gives = False
 
     def __init__(self, ctx: ControlContext, cfg: dict, landing: Landing, absorb: MatAbsorb | None = None):
         super().__init__(ctx, cfg, landing)
@@ -618,7 +667,9 @@ class MatCatch(MatAbsorb):
         sideways = c["absorb_side_kp"] * left + c["absorb_side_kv"] * left_speed
         self.feet_and_hips(targets, angles, ankle, sideways, trunk_error, c["catch_side_hip"])
         s.hold(targets, t)
-        if (self.fallen and t - self.t0 >= c["catch_min"]
+        if c["rise_capture"]:
+            self.over_feet = self.capture_inside(self.capture)
+        elif (self.fallen and t - self.t0 >= c["catch_min"]
                 and abs(self.capture - c["catch_target"]) < c["catch_within"]):
             self.over_feet = True
 
@@ -662,6 +713,33 @@ class MatCatchRise(MatCatch):
     @property
     def finished(self) -> bool:
         return self.share(self.ctx.data.time) >= 1.0
+
+
+class MatCaptureRise(MatCatchRise):
+    """rise_capture: the catch's rise along the crouch table (the knees to the crouch of a rising height, the hips
+    leaning the pelvis as that crouch leans, less catch_lean_kp per metre of the capture point's error; the ankles
+    servo the capture point to catch_target) with its progress servoed by the capture point: it advances at
+    1 / catch_rise_time with the capture point at catch_target, slower as it moves away, and not at all from
+    rise_margin on, so the rise never carries the COM out of the feet (a timed rise ran it out: docs/vault.md)."""
+
+    def start(self, t: float) -> None:
+        self.progress, self.t_last = 0.0, t
+        super().start(t)
+
+    def share(self, t: float) -> float:
+        return hermite_scalar(self.progress)
+
+    def update(self, t: float) -> None:
+        c = self.cfg
+        error = abs(self.capture_point(*self.com_from_feet())[0] - c["catch_target"])
+        rate = max(0.0, 1.0 - error / c["rise_margin"]) / c["catch_rise_time"]
+        self.progress = min(1.0, self.progress + rate * (t - self.t_last))
+        self.t_last = t
+        super().update(t)
+
+    @property
+    def finished(self) -> bool:
+        return self.progress >= 1.0
 
 
 class ArmGesture(Behaviour):
@@ -927,6 +1005,7 @@ class Vault(Sequence):
             Step("absorb", lambda t: (MatCatch if c["catch"] else MatAbsorb)(ctx, c, self.previous),
                  lambda b, t: b.finished or t - b.t0 > c["absorb_max"] or self.must_step(b, t)),
             Step("rise", lambda t: self.recovery_step() if self.stepping else
+                 MatCaptureRise(ctx, c, self.previous.landing) if c["rise_capture"] else
                  MatCatchRise(ctx, c, self.previous.landing) if c["catch"] else
                  MatRise(ctx, c, self.previous.landing, self.previous),
                  lambda b, t: b.finished),
