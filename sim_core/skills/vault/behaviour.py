@@ -212,14 +212,6 @@ VAULT_SETTINGS = Schema(
     setting("absorb_stick", "bool", 0.0, 1.0,
             "1 = the knees stick the landing: their targets follow the measured knees (the servos only damp) while the "
             "COM still goes down, and hold where they are once it stops (no spring back up); 0 = absorb_knee deeper"),
-    setting("absorb_damp", "bool", 0.0, 1.0,
-            "1 = after the touchdown the knees', the spine's pitch and the waist's servos are pure dampers while the "
-            "COM falls (their targets follow the measured joints and the pelvis's lean) and hold where the fall "
-            "stopped: no push back up before the COM is at rest (the rebound off the mat was the servos' spring, "
-            "docs/vault.md); 0 = held at the touchdown's angles (absorb_knee deeper, the lean absorb_trunk)"),
-    setting("absorb_damp_vz", "m/s", 0.0, 2.0,
-            "absorb_damp: the fall counts as stopped once the COM goes down slower than this (the waist's and knees' "
-            "give also stops at catch_lean_max and catch_knee_max)"),
     setting("absorb_hip_gain", "1", 0.0, 5.0, "after the touchdown: gain factor of the hip servos (the waist)"),
     setting("absorb_trunk", "rad", -0.5, 1.5, "after the touchdown the hips servo the pelvis to lean this far forward"),
     setting("absorb_trunk_kp", "rad/m", -10.0, 10.0,
@@ -273,13 +265,13 @@ VAULT_SETTINGS = Schema(
             "over the feet, as the balance's eq. 7.2 does; 0: the ankles alone)"),
     setting("catch_rise_time", "s", 0.1, 5.0, "catch: the rise along the crouch table takes this long"),
     setting("catch_within", "m", 0.0, 0.3, "catch: the rise starts once the capture point is this close to catch_target ..."),
+    setting("catch_min", "s", 0.0, 2.0, "... and at least this long after the touchdown"),
     setting("rise_capture", "bool", 0.0, 1.0,
             "1 = the rise servos the capture point (MatCaptureRise): it starts once the COM's fall has stopped and the "
             "capture point is within rise_margin of catch_target, and goes up the crouch table no faster than "
             "catch_rise_time, slowed to a stop as the capture point nears rise_margin; the ankles and the hips servo "
             "the capture point meanwhile (the catch's catch_kp, catch_lean_kp); 0 = MatRise's (or the catch's) timed rise"),
     setting("rise_margin", "m", 0.01, 0.3, "rise_capture: the capture point's distance from catch_target where the rise stops"),
-    setting("catch_min", "s", 0.0, 2.0, "... and at least this long after the touchdown"),
     setting("recovery_step", "bool", 0.0, 1.0,
             "1 = when the capture point leaves step_at of catch_target after the touchdown (the catch's or the "
             "absorb's), one foot steps to it (control/recovery_step.py RecoveryStep) and the staggered stance is "
@@ -432,7 +424,6 @@ class MatAbsorb(Behaviour):
     and has slowed, or after ``absorb_max``."""
 
     schema = Schema()
-    gives = True                    # absorb_damp applies (not in the rise)
 
     def __init__(self, ctx: ControlContext, cfg: dict, landing: Landing):
         super().__init__({}, ctx)
@@ -446,8 +437,6 @@ class MatAbsorb(Behaviour):
                        for side in "rl"}
         self.knees = s.indices(["knee_r_y", "knee_l_y"])
         self.hips = s.indices(["hip_r_y", "hip_l_y"])
-        self.spine = s.indices([f"spine_{j}_y" for j in ("l3", "l1", "t7", "t4")])
-        self.held = None                        # absorb_damp: (knees, spine, lean) where the fall stopped
         self.ankle_front, self.ankle_back = landing.ankle_front, landing.ankle_back
         self.over_feet = False
         self.stopped = False                    # rise_capture: the COM's fall has stopped
@@ -502,13 +491,8 @@ class MatAbsorb(Behaviour):
         angles = s.angles()
         # the capture point ahead of the feet's middle leans the trunk back, behind it forward
         capture, speed = self.capture_point(ahead, speed)
-        if float(d.subtree_linvel[self.pelvis][2]) >= 0.0:
-            self.stopped = True
-        damp = c["absorb_damp"] and self.gives
-        lean = self.damped(targets, angles) if damp else self.trunk_lean(t)
-        trunk_error = self.pelvis_lean() - (lean - c["absorb_trunk_kp"] * capture)
-        if not damp:
-            self.knee_base(t, targets)
+        trunk_error = self.pelvis_lean() - (self.trunk_lean(t) - c["absorb_trunk_kp"] * capture)
+        self.knee_base(t, targets)
         self.knee_targets = targets[self.knees].copy()
         left, left_speed = self.com_from_feet(1)
         sideways = c["absorb_side_kp"] * left + c["absorb_side_kv"] * left_speed
@@ -522,20 +506,6 @@ class MatAbsorb(Behaviour):
                 and abs(spin) < self.cfg["settled_spin"]) or (
                 t - self.t0 > self.cfg["capture_after"] and abs(capture) < self.cfg["capture_within"]):
             self.over_feet = True
-
-    def damped(self, targets: np.ndarray, angles: np.ndarray) -> float:
-        """absorb_damp: the knees' and the spine's targets (set in ``targets``) and the pelvis lean the hips servo:
-        the measured ones while the COM falls, held where the fall stopped."""
-        c = self.cfg
-        lean = min(self.pelvis_lean(), c["catch_lean_max"])
-        knees = np.minimum(angles[self.knees], c["catch_knee_max"])
-        if self.held is None and float(self.ctx.data.subtree_linvel[self.pelvis][2]) >= -c["absorb_damp_vz"]:
-            self.held = (knees, angles[self.spine].copy(), lean)
-        if self.held is None:
-            targets[self.knees], targets[self.spine] = knees, angles[self.spine]
-            return lean
-        targets[self.knees], targets[self.spine] = self.held[0], self.held[1]
-        return self.held[2]
 
     def capture_inside(self, capture: float) -> bool:
         """rise_capture's start: the COM's fall has stopped (it has moved up once since the touchdown) and the
@@ -587,8 +557,6 @@ class MatRise(MatAbsorb):
     while the knees straighten over ``rise_time`` (Hermite) and the trunk's lean goes to upright;
     then the balance controller takes over near its standing height. (The balance standing up from
     the deep landed crouch itself, with the ankles at their dorsiflexion limit, let the COM drift.)"""
-
-    gives = False
 
     def __init__(self, ctx: ControlContext, cfg: dict, landing: Landing, absorb: MatAbsorb | None = None):
         super().__init__(ctx, cfg, landing)
