@@ -47,6 +47,7 @@ def test_at_the_shipped_speed_her_row_stands_on_the_first_trial():
 
 @pytest.mark.slow
 def test_at_6_71_m_s_the_search_finds_a_standing_placement():
-    """Measured (docs/vault.md): at 6.71 m/s her row falls, the search stands within 16 vaults (~40 s)."""
+    """Measured (docs/vault.md): at 6.71 m/s the search stands within 16 vaults (~40 s); her row since vault11
+    (the capture-point rise) stands there at its own foot_delta, the first trial (~6 s)."""
     plan = plan_foot_delta(lambda fd: run_at(6.71, overrides=[f"foot_delta={fd}"]), 0.2, -0.3, 0.3)
     assert plan["found"], plan["tried"]

@@ -266,6 +266,12 @@ VAULT_SETTINGS = Schema(
     setting("catch_rise_time", "s", 0.1, 5.0, "catch: the rise along the crouch table takes this long"),
     setting("catch_within", "m", 0.0, 0.3, "catch: the rise starts once the capture point is this close to catch_target ..."),
     setting("catch_min", "s", 0.0, 2.0, "... and at least this long after the touchdown"),
+    setting("rise_capture", "bool", 0.0, 1.0,
+            "1 = the rise servos the capture point (MatCaptureRise): it starts once the COM's fall has stopped and the "
+            "capture point is within rise_margin of catch_target, and goes up the crouch table no faster than "
+            "catch_rise_time, slowed to a stop as the capture point nears rise_margin; the ankles and the hips servo "
+            "the capture point meanwhile (the catch's catch_kp, catch_lean_kp); 0 = MatRise's (or the catch's) timed rise"),
+    setting("rise_margin", "m", 0.01, 0.3, "rise_capture: the capture point's distance from catch_target where the rise stops"),
     setting("recovery_step", "bool", 0.0, 1.0,
             "1 = when the capture point leaves step_at of catch_target after the touchdown (the catch's or the "
             "absorb's), one foot steps to it (control/recovery_step.py RecoveryStep) and the staggered stance is "
@@ -433,6 +439,7 @@ class MatAbsorb(Behaviour):
         self.hips = s.indices(["hip_r_y", "hip_l_y"])
         self.ankle_front, self.ankle_back = landing.ankle_front, landing.ankle_back
         self.over_feet = False
+        self.stopped = False                    # rise_capture: the COM's fall has stopped
         self.stuck = None                       # absorb_stick: the knees where the fall stopped
 
     def start(self, t: float) -> None:
@@ -492,10 +499,20 @@ class MatAbsorb(Behaviour):
         self.feet_and_hips(targets, angles, ankle, sideways, trunk_error)
         s.hold(targets, t)
         spin = float(d.subtree_angmom[self.pelvis][1])
+        if c["rise_capture"]:
+            self.over_feet = self.capture_inside(capture)
+            return
         if (ahead >= -self.cfg["over_feet"] and abs(speed) < self.cfg["settled_speed"]
                 and abs(spin) < self.cfg["settled_spin"]) or (
                 t - self.t0 > self.cfg["capture_after"] and abs(capture) < self.cfg["capture_within"]):
             self.over_feet = True
+
+    def capture_inside(self, capture: float) -> bool:
+        """rise_capture's start: the COM's fall has stopped (it has moved up once since the touchdown) and the
+        capture point is within rise_margin of catch_target."""
+        if float(self.ctx.data.subtree_linvel[self.pelvis][2]) >= 0.0:
+            self.stopped = True
+        return self.stopped and abs(capture - self.cfg["catch_target"]) < self.cfg["rise_margin"]
 
     def feet_and_hips(self, targets: np.ndarray, angles: np.ndarray, ankle: float, sideways: float,
                       trunk_error: float, side_hip: float | None = None) -> None:
@@ -618,7 +635,9 @@ class MatCatch(MatAbsorb):
         sideways = c["absorb_side_kp"] * left + c["absorb_side_kv"] * left_speed
         self.feet_and_hips(targets, angles, ankle, sideways, trunk_error, c["catch_side_hip"])
         s.hold(targets, t)
-        if (self.fallen and t - self.t0 >= c["catch_min"]
+        if c["rise_capture"]:
+            self.over_feet = self.capture_inside(self.capture)
+        elif (self.fallen and t - self.t0 >= c["catch_min"]
                 and abs(self.capture - c["catch_target"]) < c["catch_within"]):
             self.over_feet = True
 
@@ -662,6 +681,33 @@ class MatCatchRise(MatCatch):
     @property
     def finished(self) -> bool:
         return self.share(self.ctx.data.time) >= 1.0
+
+
+class MatCaptureRise(MatCatchRise):
+    """rise_capture: the catch's rise along the crouch table (the knees to the crouch of a rising height, the hips
+    leaning the pelvis as that crouch leans, less catch_lean_kp per metre of the capture point's error; the ankles
+    servo the capture point to catch_target) with its progress servoed by the capture point: it advances at
+    1 / catch_rise_time with the capture point at catch_target, slower as it moves away, and not at all from
+    rise_margin on, so the rise never carries the COM out of the feet (a timed rise ran it out: docs/vault.md)."""
+
+    def start(self, t: float) -> None:
+        self.progress, self.t_last = 0.0, t
+        super().start(t)
+
+    def share(self, t: float) -> float:
+        return hermite_scalar(self.progress)
+
+    def update(self, t: float) -> None:
+        c = self.cfg
+        error = abs(self.capture_point(*self.com_from_feet())[0] - c["catch_target"])
+        rate = max(0.0, 1.0 - error / c["rise_margin"]) / c["catch_rise_time"]
+        self.progress = min(1.0, self.progress + rate * (t - self.t_last))
+        self.t_last = t
+        super().update(t)
+
+    @property
+    def finished(self) -> bool:
+        return self.progress >= 1.0
 
 
 class ArmGesture(Behaviour):
@@ -927,6 +973,7 @@ class Vault(Sequence):
             Step("absorb", lambda t: (MatCatch if c["catch"] else MatAbsorb)(ctx, c, self.previous),
                  lambda b, t: b.finished or t - b.t0 > c["absorb_max"] or self.must_step(b, t)),
             Step("rise", lambda t: self.recovery_step() if self.stepping else
+                 MatCaptureRise(ctx, c, self.previous.landing) if c["rise_capture"] else
                  MatCatchRise(ctx, c, self.previous.landing) if c["catch"] else
                  MatRise(ctx, c, self.previous.landing, self.previous),
                  lambda b, t: b.finished),
