@@ -80,23 +80,6 @@ def test_leg_inverse_kinematics_puts_the_ankle_where_asked():
             np.testing.assert_allclose(ankle, target, atol=0.01)
 
 
-def test_the_task_space_stance_leg_length_is_the_model_s():
-    """The task-space stance's leg (hip to ankle) length at a knee angle, and its dL/dknee (J of J^T F), checked on
-    the model's own kinematics."""
-    ch = load_character("man")
-    model, _ = compile_model(ch)
-    data = mujoco.MjData(model)
-    leg = RunnerLeg(ch, "R")
-    for knee in (0.1, 0.6, 1.2):
-        set_standing_pose(model, data, ch)
-        data.qpos[model.joint("knee_r_y").qposadr[0]] = knee
-        mujoco.mj_kinematics(model, data)
-        length = np.linalg.norm(data.xpos[model.body("FOOT" + "R").id] - data.xpos[model.body("ULEGR").id])
-        assert leg.distance_for(knee) == pytest.approx(length, abs=1e-3)
-        assert leg.knee_for(leg.distance_for(knee)) == pytest.approx(knee, abs=1e-6)
-        assert leg.distance_rate(knee) == pytest.approx((leg.distance_for(knee + 1e-6) - leg.distance_for(knee - 1e-6)) / 2e-6, rel=1e-4)
-
-
 def test_path_follower_heads_along_a_turn():
     path = turn_path(math.pi / 2, 5.0, 3.0)
     follower = PathFollower(path, lookahead=2.0)

@@ -72,15 +72,6 @@ SCHEDULED = {
     "arm_yaw": ("1", -5.0, 5.0, "the arms turned about the trunk (one forward, one back) per radian of the pelvis's yaw error: they take the yaw off the stance hip"),
     "thrust_gain": ("1", 1.0, 4.0, "the knee's and ankle's position gain in the thrust, as a multiple of the default"),
     "toe_push": ("rad", 0.0, 0.7, "the toe joint's plantarflexion target in the thrust (0 = held flat)"),
-    # the task-space stance (Raibert's hopper, a SLIP leg): the hip-to-ankle line a spring of k = m (pi / t_c)^2
-    "leg_spring": ("1", 0.0, 1.0, "share of the stance knee's torque from the task-space stance (the hip-to-ankle leg a "
-                   "spring), the rest from the joint-angle stance (the knee a servo about its touchdown angle); 0: off"),
-    "contact_time": ("s", 0.1, 0.4, "t_c of the task-space stance: the leg spring's stiffness is m (pi / t_c)^2"),
-    "leg_preload": ("m", 0.0, 0.1, "the task-space stance's rest length is this much longer than the leg at touchdown"),
-    "leg_thrust": ("m", 0.0, 0.15, "the task-space stance's thrust: the spring's rest length grows this much from the thrust on"),
-    "leg_damping": ("1", 0.0, 1.0, "the task-space stance's damping ratio (of 2 sqrt(k m))"),
-    "leg_ankle": ("1", 0.0, 1.0, "share of the stance ankle's torque from the task-space stance, whose leg then ends at the "
-                  "ball of the foot once it is down (0: at the ankle, the ankle kept the joint-angle stance's servo)"),
 }
 SCHEDULED_CONSTANTS = {name: (low, high) for name, (_, low, high, _) in SCHEDULED.items()}   # the search's space
 
@@ -531,8 +522,6 @@ class Running(Behaviour):
                        sx=ix[f"shoulder_{c}_x"], sy=ix[f"shoulder_{c}_y"], sz=ix[f"shoulder_{c}_z"],
                        ez=ix[f"elbow_{c}_z"]) for c in "rl"]
         self.hip_joint_ids = np.array([ctx.actor.joint_id(f"hip_{c}_{ax}") for c in "rl" for ax in "yxz"])
-        # the task-space stance's leg to the ball: the hip's centre, the knee's and ankle's pitch axes
-        self.leg_joint_ids = [[ctx.actor.joint_id(f"{n}_{c}_y") for n in ("hip", "knee", "ankle")] for c in "rl"]
         self.leg_idx = [s.indices([f"hip_{c}_y", f"hip_{c}_x", f"hip_{c}_z", f"knee_{c}_y", f"ankle_{c}_y",
                                    f"ankle_{c}_x", f"mt_{c}_y"]) for c in "rl"]
         self.neck_y = ix["neck_c2_y"]
@@ -654,7 +643,6 @@ class Running(Behaviour):
         self.active_lo = [0.0, 0.0]          # active hip (y, x) at the last lift-off
         self.blend_from = None
         self.knee_touchdown = c.initial_touchdown_knee
-        self.ball_rest = None                # m: the task-space stance's rest length of its leg to the ball
         self.ankle_touchdown = 0.0
         self.ankle_flat = 0.0
         m_ = self.ctx.data.xmat[self.pelvis]
@@ -725,19 +713,6 @@ class Running(Behaviour):
             damping = self.p["thrust_damping"]       # the servos' damping would eat the push's power
             gain = self.p["thrust_gain"]            # a stiffer push: more vertical impulse, a longer flight
             self._set_gains(a, {"knee": (gain, damping), "ay": (gain, damping)})
-        if self.p["leg_spring"] > 0 and state in (LOADING, HEEL, HEEL_TOE, TOE):
-            # the task-space stance: the knee is torque-commanded (low gains, as the stance hip) until the
-            # unloading, when it folds under the thrust's gains as in the joint-angle stance; so is the
-            # ankle while the leg ends at the ball (leg_ankle)
-            self._set_gains(a, {"knee": (c.stance_hip_share, c.stance_hip_share)})
-            if state == LOADING:
-                self.ball_rest = None
-            if self.p["leg_ankle"] > 0 and state in (HEEL_TOE, TOE):
-                self._set_gains(a, {"ay": (c.stance_hip_share, c.stance_hip_share)})
-        elif self.p["leg_spring"] > 0 and state == UNLOADING:
-            self._set_gains(a, {"knee": self._stance_gains("knee", state)})
-            if self.p["leg_ankle"] > 0:
-                self._set_gains(a, {"ay": self._stance_gains("ay", state)})
 
     def _liftoff(self, t: float, q: list, targets: list) -> None:
         """The active leg has left the ground: it becomes the idle leg, the other the active one."""
@@ -946,23 +921,6 @@ class Running(Behaviour):
                     # the knee starts to fold so that the toe leaves the ground
                     u_ = hermite_scalar((t - self.t_state) / c.unload_ramp)
                     targets[ja["knee"]] += (c.unload_knee - targets[ja["knee"]]) * u_
-            if p["leg_spring"] > 0 and state != UNLOADING:
-                # the knee's torque: the joint-angle law's (its servo's, at the gains it would have) and the
-                # leg spring's, shared by leg_spring, through the torque-commanded knee servo
-                j_ = ja["knee"]
-                g, gv = self._stance_gains("knee", state)
-                joint = self.kp0[j_] * g * (targets[j_] - q[j_]) - self.kv0[j_] * gv * qd[j_]
-                if p["leg_ankle"] > 0 and state in (HEEL_TOE, TOE):
-                    spring, ankle = self._leg_to_ball(t, state, q[j_], qd[j_], qd[ja["ay"]])
-                    k_ = ja["ay"]
-                    gain = self._stance_gains("ay", state)
-                    held = self.kp0[k_] * gain[0] * (targets[k_] - q[k_]) - self.kv0[k_] * gain[1] * qd[k_]
-                    tau_a = (1.0 - p["leg_ankle"]) * held + p["leg_ankle"] * ankle
-                    targets[k_] = q[k_] + (tau_a + kv[k_] * qd[k_]) / kp[k_]
-                else:
-                    spring = self._leg_spring(t, state, q[j_], qd[j_])
-                tau = (1.0 - p["leg_spring"]) * joint + p["leg_spring"] * spring
-                targets[j_] = q[j_] + (tau + kv[j_] * qd[j_]) / kp[j_]
             targets[ja["ax"]] = 0.0
             hy_goal, hx_goal = q[ja["hy"]], q[ja["hx"]]
 
@@ -1012,63 +970,6 @@ class Running(Behaviour):
                 command[j_] = q[j_] + (math.copysign(self.idle_bound, tau) + kv[j_] * qd[j_]) / kp[j_]
         self.previous_goal = {j_: targets[j_] for j_ in tracked}
         servos.hold(np.array(command), t)
-
-    def _stance_gains(self, key: str, state: int) -> tuple[float, float]:
-        """The stance knee's or ankle's (key "knee" or "ay") (kp, kv) shares of the default in the
-        joint-angle stance (_enter's)."""
-        c = self.constants
-        if state == LOADING:
-            return 1.0, 1.0                         # the flight's
-        if state in (HEEL, HEEL_TOE):
-            share = c.stance_knee_gain if key == "knee" else c.heel_ankle_gain if state == HEEL else 1.0
-            return share, share
-        return self.p["thrust_gain"], self.p["thrust_damping"]
-
-    def _leg_stiffness(self) -> tuple[float, float]:
-        """The task-space stance's spring: stiffness m (pi / contact_time)^2 (m the body's mass) and damping
-        leg_damping x 2 sqrt(k m)."""
-        mass = float(self.ctx.model.body_subtreemass[self.pelvis])
-        k = mass * (math.pi / self.p["contact_time"]) ** 2
-        return k, 2.0 * self.p["leg_damping"] * math.sqrt(k * mass)
-
-    def _leg_spring(self, t: float, state: int, knee: float, knee_rate: float) -> float:
-        """The task-space stance (Raibert's hopper; a spring-mass leg): the knee torque J^T F that makes the
-        virtual leg from the hip to the ankle a spring of stiffness k = m (pi / t_c)^2 (t_c: the table's
-        contact_time; m the body's mass) and damping ratio leg_damping, pushing only, its rest length the
-        touchdown's plus leg_preload, grown by leg_thrust from the thrust on (the energy put in). The hip-to-ankle length
-        depends on the knee alone (the knee's axis is normal to the thigh and shank), so J is dL/dknee."""
-        p, leg = self.p, self.legs[self.active]
-        k, b = self._leg_stiffness()
-        rest = leg.distance_for(self.knee_touchdown) + p["leg_preload"]
-        if state == TOE:
-            rest += p["leg_thrust"] * hermite_scalar((t - self.t_thrust) / self.constants.thrust_ramp)
-        now = leg.distance_for(knee)
-        jacobian = leg.distance_rate(knee)        # dL/dknee
-        force = max(0.0, k * (rest - now) - b * jacobian * knee_rate)
-        return force * jacobian
-
-    def _leg_to_ball(self, t: float, state: int, knee: float, knee_rate: float, ankle_rate: float) -> tuple[float, float]:
-        """The task-space stance's leg from the hip to the ball of the foot (leg_ankle > 0, the ball down):
-        the knee's and the ankle's torques J^T F for the spring of _leg_spring along it (J: dL/d(knee, ankle)
-        from the joints' axes and anchors), so that the ground's push on the ball passes through the hip. Its
-        rest length is set when the ball comes down, to keep the compression the leg to the ankle had."""
-        p, d = self.p, self.ctx.data
-        hip_id, knee_id, ankle_id = self.leg_joint_ids[self.active]
-        ball = d.site_xpos[self.ball_sites[self.active][:2]].mean(axis=0)
-        leg = ball - d.xanchor[hip_id]
-        now = float(np.linalg.norm(leg))
-        unit = leg / now
-        dk = float(unit @ np.cross(d.xaxis[knee_id], ball - d.xanchor[knee_id]))      # dL/dknee
-        da = float(unit @ np.cross(d.xaxis[ankle_id], ball - d.xanchor[ankle_id]))    # dL/dankle
-        k, b = self._leg_stiffness()
-        if self.ball_rest is None:
-            leg_ = self.legs[self.active]
-            self.ball_rest = now + max(0.0, leg_.distance_for(self.knee_touchdown) + p["leg_preload"] - leg_.distance_for(knee))
-        rest = self.ball_rest
-        if state == TOE:
-            rest += p["leg_thrust"] * hermite_scalar((t - self.t_thrust) / self.constants.thrust_ramp)
-        force = max(0.0, k * (rest - now) - b * (dk * knee_rate + da * ankle_rate))
-        return force * dk, force * da
 
     def _yaw_first(self, taus, sa, m, bx, by, bz, share, ja, given_up):
         """The hip's rotation axis runs along the thigh, so with the thigh swept forward or back it

@@ -46,15 +46,6 @@ class RunnerLeg:
         flex = math.pi - math.acos(max(-1.0, min(1.0, c)))
         return flex - self.rest_flex
 
-    def distance_for(self, knee: float) -> float:
-        """Hip-to-ankle distance at a knee joint angle (knee_for's inverse)."""
-        u, l = self.upper, self.lower
-        return math.sqrt(u * u + l * l + 2.0 * u * l * math.cos(knee + self.rest_flex))
-
-    def distance_rate(self, knee: float) -> float:
-        """d(distance_for)/dknee: the Jacobian of the hip-to-ankle length (m/rad, negative: flexion shortens)."""
-        return -self.upper * self.lower * math.sin(knee + self.rest_flex) / self.distance_for(knee)
-
     def hip_knee_for(self, ax: float, ay: float, az: float) -> tuple[float, float, float]:
         """(hip_y, hip_x, knee) that put the ankle at (ax, ay, az) from the hip joint, in the
         pelvis frame. Hip gimbal: y (fixed in the pelvis), then x; the knee bends about the
