@@ -33,8 +33,8 @@ def test_random_drops_are_drawn_inside_the_offered_range_and_differ_by_seed():
     for character in ("man", "woman", "child", "imaginary_runner"):
         (h0, h1), (v0, v1) = offered(character)
         draws = [random_drops(character, 20, seed) for seed in range(1, 30)]
-        side = landing_side_speed(tuned.load("landing", character))
-        assert all(h0 <= h <= h1 and v0 <= v <= v1 and abs(w) <= side for d in draws for h, v, w in d)
+        table = tuned.load("landing", character)
+        assert all(h0 <= h <= h1 and v0 <= v <= v1 and abs(w) <= landing_side_speed(table, h) for d in draws for h, v, w in d)
         assert draws[0] == random_drops(character, 20, 1) != draws[1]
 
 
@@ -130,12 +130,13 @@ def test_the_drops_offered_at_a_speed_are_the_narrower_of_the_two_measured_speed
     from sim_core.control.leap import landing_drops, landing_side_speed
     rows = {"foot_delta": [{"drop": 0.2, "touchdown_speed": 2.0, "speed": [-1.0, 3.0], "delta": [0.0, 0.0]},
                            {"drop": 0.6, "touchdown_speed": 3.4, "speed": [-1.0, 3.0], "delta": [0.0, 0.0]}]}
-    assert landing_drops(rows, 1.0) == (0.0, 0.6) and landing_side_speed(rows) == 0.0    # unmeasured: the rows
+    assert landing_drops(rows, 1.0) == (0.2, 0.6) and landing_side_speed(rows, 0.3) == 0.0    # unmeasured: the rows
     table = dict(rows, drop_limits={"speeds": [0.0, 1.0, 2.0], "low": [0.0, 0.1, 0.2], "high": [1.5, 1.0, 0.6],
                                     "side": 0.3})
     assert landing_drops(table, 1.0) == (0.1, 1.0)          # a measured speed: its own
     assert landing_drops(table, 1.5) == (0.2, 0.6)          # between two: the narrower
-    assert landing_drops(table, 0.2) == (0.1, 1.0) and landing_side_speed(table) == 0.3
+    assert landing_drops(table, 0.2) == (0.1, 1.0) and landing_side_speed(table, 0.6) == 0.3
+    assert landing_side_speed(table, 0.61) == 0.0             # above the rows: straight ahead only
 
 
 @pytest.mark.parametrize("character", ["man", "woman", "child", "imaginary_runner"])
@@ -152,6 +153,8 @@ def test_a_drop_or_a_sideways_speed_beyond_what_the_body_lands_is_refused_in_one
         too_high = landing_drops(table, speed)[1] + 0.05
         with pytest.raises(ParameterError, match=r"drop of .* out of the .* landing range: at that speed it lands"):
             run(RunRequest("land", character, start=StartState(height=too_high, velocity=(speed, 0.0, 0.0))))
-    side = landing_side_speed(table) + 0.05
-    with pytest.raises(ParameterError, match=r"sideways\) is out of the .* landing range"):
-        run(RunRequest("land", character, start=StartState(height=0.1, velocity=(0.0, -side, 0.0))))
+    top = max(row["drop"] for row in table["foot_delta"] if row["speed"])
+    for drop in (top, top + 0.02):
+        side = landing_side_speed(table, drop) + 0.05
+        with pytest.raises(ParameterError, match=r"sideways\) is out of the .* landing range"):
+            run(RunRequest("land", character, start=StartState(height=drop, velocity=(0.0, -side, 0.0))))

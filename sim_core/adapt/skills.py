@@ -173,7 +173,7 @@ class LandingAdapter(Adapter):
         return (LANDING_SPEEDS[0] * L ** 0.5, LANDING_SPEEDS[1] * L ** 0.5)
 
     def check(self, character: str, rng) -> Check:
-        from ..control.leap import landing_speeds
+        from ..control.leap import landing_drops, landing_speeds
         from ..simulate import StartState
         from .. import tuned
         spec = load_character(character)
@@ -187,6 +187,9 @@ class LandingAdapter(Adapter):
         low, high = max(wanted[0], served[0]), min(wanted[1], served[1])
         drops = rng.uniform(LANDING_DROPS[0] * L, LANDING_DROPS[1] * L, size=CHECKS)
         speeds = rng.uniform(low, high, size=CHECKS) if high > low else np.full(CHECKS, low)
+        # inside what the table offers at each speed (landing_drops: a table scaled from another body's
+        # rows can start a little above the drops drawn; the land skill refuses drops outside it)
+        drops = np.array([min(max(h, lo), hi) for h, v in zip(drops, speeds) for lo, hi in [landing_drops(table, v)]])
         missed, failed = [], []
         for drop, speed in zip(drops, speeds):
             t = _run("land", character, start=StartState(height=float(drop), velocity=(float(speed), 0.0, 0.0)),

@@ -648,22 +648,26 @@ def landing_drops(table: dict, speed: float) -> tuple[float, float]:
     """The drops (m; a start's drop is its vertical touchdown speed's v^2 / 2g) a landing table offers at
     the horizontal ``speed``: those its ``drop_limits`` measured at that speed (``python -m sim_core
     calibrate land --drop-limits``; between two measured speeds the narrower of the two); a table
-    without them offers from 0 up to its highest row's drop."""
+    without them (a body ``adapt`` made) offers its rows' lowest to highest drop, what its check ran
+    (measured on the man: a drop of 0 at 0.5 m/s falls)."""
     limits = table.get("drop_limits")
     if limits is None:
-        return 0.0, max(row["drop"] for row in table["foot_delta"] if row["speed"])
+        drops = [row["drop"] for row in table["foot_delta"] if row["speed"]]
+        return min(drops), max(drops)
     speeds = limits["speeds"]
     near = [i for i, s in enumerate(speeds) if s == speed] or \
         [i for i in (int(np.searchsorted(speeds, speed)) - 1, int(np.searchsorted(speeds, speed))) if 0 <= i < len(speeds)]
     return max(limits["low"][i] for i in near), min(limits["high"][i] for i in near)
 
 
-def landing_side_speed(table: dict) -> float:
-    """The sideways COM speed (m/s, either way) a landing table offers: its ``drop_limits``' measured
-    one (the least landed at every forward speed it was tried at), else 0 (the table's rows land
-    straight ahead only)."""
+def landing_side_speed(table: dict, drop: float) -> float:
+    """The sideways COM speed (m/s, either way) a landing table offers from ``drop`` (m): its
+    ``drop_limits``' measured one (the least landed from its highest row's drop at every forward
+    speed tried) up to that drop; from higher, and on a table without them, 0 (straight ahead only:
+    measured, the man from 1.26 m with 0.25 m/s sideways fell)."""
     limits = table.get("drop_limits")
-    return 0.0 if limits is None else limits["side"]
+    top = max(row["drop"] for row in table["foot_delta"] if row["speed"])
+    return 0.0 if limits is None or drop > top else limits["side"]
 
 
 LANDING_TABLE = register_table(TableType("landing", with_constants(LANDING_SETTINGS, LANDING_CONSTANTS), _landing_rows,

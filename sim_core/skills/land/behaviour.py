@@ -57,13 +57,13 @@ class Land(Sequence):
         if not low <= speed <= high:
             raise ParameterError(f"start velocity {speed:+.2f} m/s (forward) is out of the {name}'s landing range: "
                                  f"its landing table serves [{low:+.2f}, {high:+.2f}] m/s ({source})")
-        side_limit = landing_side_speed(table)
-        if abs(side) > side_limit + SPEED_TOLERANCE:
-            raise ParameterError(f"start velocity {side:+.2f} m/s (sideways) is out of the {name}'s landing range: "
-                                 f"it lands sideways speeds within [{-side_limit:+.2f}, {side_limit:+.2f}] m/s "
-                                 f"({source} --drop-limits)")
         feet = max(float(SupportGeometry(model, prefix=self.ctx.actor.prefix).heights(d).min()), 0.0)
         drop = (vz * vz + 2.0 * GRAVITY * feet) / (2.0 * GRAVITY)
+        side_limit = landing_side_speed(table, drop - DROP_TOLERANCE)
+        if abs(side) > side_limit + SPEED_TOLERANCE:
+            raise ParameterError(f"start velocity {side:+.2f} m/s (sideways) is out of the {name}'s landing range: "
+                                 f"from a drop of {drop:.2f} m it lands sideways speeds within [{-side_limit:+.2f}, "
+                                 f"{side_limit:+.2f}] m/s ({source} --drop-limits)")
         lowest, highest = landing_drops(table, speed)
         if not lowest - DROP_TOLERANCE <= drop <= highest + DROP_TOLERANCE:
             raise ParameterError(f"a drop of {drop:.2f} m (the feet {feet:.2f} m up, {vz:+.2f} m/s vertically) at "

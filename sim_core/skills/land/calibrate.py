@@ -119,13 +119,12 @@ def _last_landed(character: str, values: list, start) -> float:
 def drop_limits(character: str, table: dict) -> dict:
     """The drops and sideways speeds the table lands (landing_drops, landing_side_speed), measured
     with the landing's plan at each of its calibrated forward speeds it serves: up from its
-    highest row's drop and down from its lowest by the grid's limit drops until one falls; the
-    sideways speeds from the middle row's drop at the slowest, no and the fastest forward speed."""
+    highest row's drop and down from its lowest by the grid's limit drops until one falls; then
+    the sideways speeds (side_limit)."""
     g, name = grid(character), character_name(character)
     low, high = landing_speeds(table)
     speeds = sorted({low, high} | {v for v in g.speeds if low <= v <= high})
     drops = [row["drop"] for row in table["foot_delta"] if row["speed"]]
-    middle = sorted(drops)[len(drops) // 2]
     limits = {"speeds": speeds, "low": [], "high": []}
     for speed in speeds:
         up = _last_landed(character, g.limit_high_drops, lambda h: _lands(character, h, speed))
@@ -133,14 +132,24 @@ def drop_limits(character: str, table: dict) -> dict:
         limits["high"].append(max(drops) if up is None else up)
         limits["low"].append(min(drops) if down is None else down)
         print(f"  {name} at {speed:+.3f} m/s: lands drops {limits['low'][-1]:.3f}-{limits['high'][-1]:.3f} m", flush=True)
-    sides = []
-    for speed in sorted({low, 0.0, high} & set(speeds) | {low, high}):
-        side = _last_landed(character, g.limit_side_speeds, lambda s: _lands(character, middle, speed, s))
-        sides.append(0.0 if side is None else side)
-        print(f"  {name} from {middle:.3f} m at {speed:+.3f} m/s: lands sideways up to {sides[-1]:.3f} m/s", flush=True)
-    limits["side"] = min(sides)
+    limits["side"] = side_limit(character, table)
     limits["script"] = "python -m sim_core calibrate land --drop-limits"
     return limits
+
+
+def side_limit(character: str, table: dict) -> float:
+    """The sideways speed (m/s, either way) landed from the table's highest row's drop at its slowest,
+    no and fastest forward speed: the grid's side speeds in order until one falls, the least of the
+    three (offered up to that drop; a higher drop lands straight only, landing_side_speed)."""
+    low, high = landing_speeds(table)
+    top = max(row["drop"] for row in table["foot_delta"] if row["speed"])
+    sides = []
+    for speed in sorted({low, high} | ({0.0} if low <= 0.0 <= high else set())):
+        side = _last_landed(character, grid(character).limit_side_speeds, lambda s: _lands(character, top, speed, s))
+        sides.append(0.0 if side is None else side)
+        print(f"  {character_name(character)} from {top:.3f} m at {speed:+.3f} m/s: lands sideways up to "
+              f"{sides[-1]:.3f} m/s", flush=True)
+    return min(sides)
 
 
 def measure_drop_limits(character: str) -> Path:

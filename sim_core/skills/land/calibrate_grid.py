@@ -22,7 +22,7 @@ FAST_DELTAS = [0.0, 0.02, 0.04, 0.06, 0.08]
 HIGH_DROPS = [0.8, 0.9, 1.0, 1.1, 1.15, 1.2, 1.3]
 # --drop-limits: the drops tried above the highest row and below the lowest (m, the man's; x L for another
 # body), each planned and run as simulate land runs it, in order until one falls; and the sideways
-# speeds (m/s, x L^1/2) tried from the middle row's drop at the slowest, no and the fastest forward speed
+# speeds (m/s, x L^1/2) tried from the highest row's drop at the slowest, no and the fastest forward speed
 LIMIT_HIGH_DROPS = [0.8, 1.0, 1.2, 1.4, 1.5]
 LIMIT_LOW_DROPS = [0.1, 0.0]
 LIMIT_SIDE_SPEEDS = [0.15, 0.3, 0.45, 0.6]

@@ -61,16 +61,20 @@ def _rounded_inside(values, low: float, high: float, digits: int) -> list[float]
 def random_drops(character: str, count: int, seed: int) -> list[tuple[float, float, float]]:
     """``count`` (drop m, speed m/s, sideways speed m/s): the forward speed drawn uniformly in what the
     table offers (rounded to cm/s inside it), the drop uniformly in what it offers at that speed
-    (landing_drops; mm), the sideways speed uniformly within what it offers (landing_side_speed; cm/s)."""
+    (landing_drops; mm), the sideways speed uniformly within what it offers from that drop
+    (landing_side_speed; cm/s)."""
     table = tuned.load("landing", character)
     v0, v1 = landing_speeds(table)
-    side = landing_side_speed(table)
     rng = np.random.default_rng(seed)
     speeds = _rounded_inside(rng.uniform(v0, v1, count), v0, v1, 2)
-    fractions = rng.uniform(0.0, 1.0, count)
-    sides = _rounded_inside(rng.uniform(-side, side, count), -side, side, 2)
-    return [(_rounded_inside([low + f * (high - low)], low, high, 3)[0], v, w)
-            for f, v, w in zip(fractions, speeds, sides) for low, high in [landing_drops(table, v)]]
+    fractions, side_fractions = rng.uniform(0.0, 1.0, count), rng.uniform(-1.0, 1.0, count)
+    draws = []
+    for f, v, s in zip(fractions, speeds, side_fractions):
+        low, high = landing_drops(table, v)
+        drop = _rounded_inside([low + f * (high - low)], low, high, 3)[0]
+        side = landing_side_speed(table, drop)
+        draws.append((drop, v, _rounded_inside([s * side], -side, side, 2)[0] + 0.0))    # + 0.0: no -0.0
+    return draws
 
 
 def planned_landing(character: str, drop: float, speed: float, side: float = 0.0, duration: float = 3.0) -> dict:
