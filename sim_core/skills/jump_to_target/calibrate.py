@@ -1457,7 +1457,10 @@ Fresh seeds with that (`turned_mid_long_region` 1.25-1.5 m, 0-0.6 rad (34 deg), 
 `lean_push` 5, `landing_arm_pitch_gain` 0): seed 311 **18 / 20** (median 9.8 s, worst 44.2 s; (1.199, -0.374) m in
 0.515 s 10.3 cm off after 21 jumps, (1.343, -0.167) m in 0.532 s 8.2 cm off to the side after 17; one of its 20 the
 straight band's, hit), seed 313 **19 / 20** (9.4 / 49.6 s; (1.248, +0.416) m in 0.515 s 7.8 cm off after 21), seed 317
-**19 / 20** (13.4 / 42.7 s; (1.408, +0.432) m in 0.629 s 5.2 cm off after 13): the turned row **55 / 59 (93 %)**. Straight
+**19 / 20** (13.4 / 42.7 s; (1.408, +0.432) m in 0.629 s 5.2 cm off after 13), and with the region as offered (no straight
+band) seed 331 **18 / 20** (11.0 / 35.8 s; (1.130, +0.550) m in 0.545 s 10.5 cm off after 15, (1.305, -0.092) m in 0.503 s
+16.1 cm off after 13): the turned row **73 / 79 (92 %)** - five of its six misses asked 0.503-0.545 s (the shallow
+crouches, whose aim map is the roughest; straight ahead too). Straight
 ahead the row was measured once more with the gain 0 (`tools/commanded_jumps.py --character man --table --long --set
 lean_push=5 --set landing_arm_pitch_gain=0 --crouch-by-air-time 0.6:0.52,0.575:0.55,0.55:0.6,0.525:0.655,0.5:0.675
 --random 12 --seed 37 --forward 1.25,1.5 --air-times 0.5,0.65 --aim 9 --plan-landing 9`): **8 / 12** (9.8-19 cm off at
