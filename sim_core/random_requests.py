@@ -45,10 +45,11 @@ TURNED_STREAM = 31                                          # the turned command
 SIDEWAYS_STREAM = 32                                        # the sideways commanded region's draws' own stream (seed, this)
 LONG_STREAM = 33                                            # the long air times' commanded region's draws' own stream
 TURNED_LONG_STREAM = 34                                     # the turned long air times' region's draws' own stream
+MID_LONG_STREAM = 35                                        # the mid long row's regions' draws' own stream
 BROAD_TOLERANCE = 0.1                                       # TARGETS.md: broad jump travel within 10 %
 DRAW_DECIMALS = 3                                           # requests are drawn to the millimetre / millisecond
 DEFAULT_BUDGET = 24                                         # trials of a plan: two of the planner's batches
-JUMP_SKILLS = ("jump", "box", "commanded", "turned", "sideways", "long", "turned_long")    # draws run as a jump to a target (_jump)
+JUMP_SKILLS = ("jump", "box", "commanded", "turned", "sideways", "long", "turned_long", "mid_long")    # draws run as a jump to a target (_jump)
 SKILLS = JUMP_SKILLS + ("leap", "broad")
 REGION_DRAWS = 1_000_000                                    # box draws tried for one target in the region offered
 SHARE_DRAWS = 20_000                                        # box draws that measure the region's share of the box
@@ -63,7 +64,8 @@ class Draw:
     straight to the side in the sideways commanded region: a quarter turn first), "long" (a jump's, in the long
     air times' commanded region outside the measured one: the vertical thrust), "turned_long" (a jump's, in the
     turned long air times' commanded regions outside the measured one: the hop first, then the long row, or nearer the near
-    long row), "leap" (height) or
+    long row), "mid_long" (a jump's, in the turned mid long row's region outside the measured one: the hop first, then
+    the mid long row), "leap" (height) or
     "broad" (distance), with its numbers in ``values``."""
     skill: str
     character: str
@@ -105,7 +107,8 @@ def drawn_inside(rng, low: float, high: float) -> float:
 
 
 def draw_requests(seed: int, characters, jumps: int, leaps: int, broads: int, boxes: int = 0,
-                  commanded: int = 0, turned: int = 0, sideways: int = 0, long: int = 0, turned_long: int = 0) -> list[Draw]:
+                  commanded: int = 0, turned: int = 0, sideways: int = 0, long: int = 0, turned_long: int = 0,
+                  mid_long: int = 0) -> list[Draw]:
     """The random requests of ``seed`` (NumPy's default generator), per character: ``jumps`` jump
     targets, ``leaps`` leap heights and ``broads`` broad-jump distances, uniform in their ranges;
     then ``boxes`` box targets per character (draw_box_jump, from their own stream); then ``commanded``
@@ -113,7 +116,8 @@ def draw_requests(seed: int, characters, jumps: int, leaps: int, broads: int, bo
     ``turned`` targets per character that has a turned commanded region (draw_turned, their own stream); then
     ``sideways`` targets per character that has a sideways commanded region (draw_sideways, their own stream); then
     ``long`` targets per character that has a long air times' commanded region (draw_long, their own stream); then
-    ``turned_long`` targets per character that has a turned long air times' region (draw_turned_long, their own stream)."""
+    ``turned_long`` targets per character that has a turned long air times' region (draw_turned_long, their own stream); then
+    ``mid_long`` targets per character that has a turned mid long row (draw_mid_long, their own stream)."""
     rng = np.random.default_rng(seed)
     drawn = []
     for character in characters:
@@ -137,7 +141,9 @@ def draw_requests(seed: int, characters, jumps: int, leaps: int, broads: int, bo
                                                ("sideways", sideways, SIDEWAYS_STREAM, ("sideways_region",), draw_sideways),
                                                ("long", long, LONG_STREAM, ("long_region",), draw_long),
                                                ("turned_long", turned_long, TURNED_LONG_STREAM,
-                                                ("turned_long_region", "turned_near_long_region"), draw_turned_long)):
+                                                ("turned_long_region", "turned_near_long_region"), draw_turned_long),
+                                               ("mid_long", mid_long, MID_LONG_STREAM,
+                                                ("turned_mid_long_region",), draw_mid_long)):
         stream_rng = np.random.default_rng((seed, stream))
         for character in characters:
             if count and any((table(character) or {}).get(key) is not None for key in regions):
@@ -180,6 +186,12 @@ def draw_turned_long(rng, character: str) -> tuple:
     """draw_turned in the table's turned long air times' regions (``turned_long_region``: the hop, then the long row;
     ``turned_near_long_region``: the hop, then the near long row), uniform in issue 29's box where either holds it."""
     return draw_turned(rng, character, ("turned_long", "turned_near_long"))
+
+
+def draw_mid_long(rng, character: str) -> tuple:
+    """draw_turned in the table's ``turned_mid_long_region`` (the hop, then the mid long row), uniform in issue 29's box
+    where it holds it."""
+    return draw_turned(rng, character, ("turned_mid_long",))
 
 
 def draw_commanded(rng, character: str, keys: tuple = ("region",)) -> tuple:
@@ -387,26 +399,29 @@ def main(argv=None) -> int:
                         help="targets per character in its long air times' commanded region, outside its measured jumps' region")
     parser.add_argument("--turned-long", type=int, default=0,
                         help="targets per character in its turned long air times' region, outside its measured jumps' region")
+    parser.add_argument("--mid-long", type=int, default=0,
+                        help="targets per character in its turned mid long row's region, outside its measured jumps' region")
     parser.add_argument("--characters", default="man,woman")
     parser.add_argument("--budget", type=int, default=DEFAULT_BUDGET, help="trials of each unplanned jump's plan")
     parser.add_argument("--workers", type=int, default=2, help="requests run at once, one process each")
     parser.add_argument("--store", help="plan store for the jumps' plans (default: a temporary one, removed after)")
     parser.add_argument("--out", default="docs/random_requests.md")
     args = parser.parse_args(argv)
-    for name in ("jumps", "leaps", "broad", "boxes", "commanded", "turned", "sideways", "long", "turned_long"):
+    for name in ("jumps", "leaps", "broad", "boxes", "commanded", "turned", "sideways", "long", "turned_long", "mid_long"):
         if getattr(args, name) < 0:
             parser.error(f"--{name}={getattr(args, name)}: must be 0 or more")
     if args.budget < 1:
         parser.error(f"--budget={args.budget}: must be at least 1 trial")
     characters = [c.strip() for c in args.characters.split(",") if c.strip()]
     draws = draw_requests(args.seed, characters, args.jumps, args.leaps, args.broad, args.boxes, args.commanded, args.turned,
-                          args.sideways, args.long, args.turned_long)
+                          args.sideways, args.long, args.turned_long, args.mid_long)
     command = (f"python -m sim_core report random --seed {args.seed} --jumps {args.jumps} --leaps {args.leaps} "
                f"--broad {args.broad}{f' --boxes {args.boxes}' if args.boxes else ''}"
                f"{f' --commanded {args.commanded}' if args.commanded else ''}"
                f"{f' --turned {args.turned}' if args.turned else ''}"
                f"{f' --sideways {args.sideways}' if args.sideways else ''}{f' --long {args.long}' if args.long else ''}"
-               f"{f' --turned-long {args.turned_long}' if args.turned_long else ''} --characters {','.join(characters)} --budget {args.budget} "
+               f"{f' --turned-long {args.turned_long}' if args.turned_long else ''}"
+               f"{f' --mid-long {args.mid_long}' if args.mid_long else ''} --characters {','.join(characters)} --budget {args.budget} "
                f"--workers {args.workers}")
     print(command, flush=True)
     began = time.perf_counter()
@@ -477,6 +492,10 @@ def main(argv=None) -> int:
                "flies the long row forward (plan_turned with turned_long_body; in turned_near_long_region the near long "
                "row, near_long_body). "
                if args.turned_long else "")
+            + ("Mid long air time targets (--mid-long) are drawn uniformly in issue 29's box and drawn again until they lie "
+               "in the turned mid long row's region of each character that has one (the table's turned_mid_long_region: "
+               "the man's) and outside the region its measured jumps offer: the hop first, then the long row with the mid "
+               "row's own lean push and crouch pairs (plan_turned with mid_long_body). " if args.mid_long else "")
             + "A target without a stored plan is planned first (into a temporary "
             "plan store; on flat ground or a box from the measured jumps, at most "
             f"{min(args.budget, MODEL_TRIALS)} trials; in the commanded region only, the commanded take-off aimed "

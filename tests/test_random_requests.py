@@ -130,3 +130,18 @@ def test_turned_long_draws_are_in_each_turned_long_region_outside_the_measured_j
         assert d.skill == "turned_long" and commanded_way(d.character, (x, y), t) in ("turned_long", "turned_near_long")
         assert not offered(d.character, (x, y), t)
     assert turned_long != draw_requests(2, ["man", "woman"], 2, 1, 1, turned=2, long=2, turned_long=3)[len(plain):]
+
+
+def test_mid_long_draws_are_in_the_mid_long_rows_regions_outside_the_measured_jumps():
+    from sim_core.skills.jump_to_target.commanded import commanded_way
+    from sim_core.skills.jump_to_target.region import offered
+    plain = draw_requests(1, ["man", "woman"], 2, 1, 1, turned=2, long=2, turned_long=2)
+    drawn = draw_requests(1, ["man", "woman"], 2, 1, 1, turned=2, long=2, turned_long=2, mid_long=3)
+    assert drawn[:len(plain)] == plain                       # their own stream: the other draws unchanged
+    mid = drawn[len(plain):]
+    assert [d.character for d in mid] == ["man"] * 3          # the woman's table has no mid long row
+    for d in mid:
+        x, y, t = d.values
+        assert d.skill == "mid_long" and commanded_way("man", (x, y), t) == "turned_mid_long"
+        assert not offered("man", (x, y), t)
+    assert mid != draw_requests(2, ["man", "woman"], 2, 1, 1, turned=2, long=2, turned_long=2, mid_long=3)[len(plain):]

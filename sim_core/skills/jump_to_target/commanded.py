@@ -57,6 +57,11 @@ Fig. 6 with his thrust slowed for his strength, tools/scale_commanded.py and doc
   ``near_long_settings`` over them (its own lean push, ``lean_push``: the man's long row leaves at ~1.3 m/s forward
   whatever is aimed nearer, a larger push starts the thrust earlier in the lean, docs/jump_to_target.md) and its own
   crouch pairs (near_long_body); a request there outside ``region`` and ``long_region`` is planned so;
+- ``turned_mid_long_region`` (optional, with ``long_settings``, ``mid_long_settings``, ``mid_long_crouch_by_air_time`` and
+  ``turned_region``): the same keys as ``turned_region``, between the turned near and far long rows: the hop first, then a
+  third long row with its own lean push and crouch pairs (mid_long_body: the man's push 5, between the far row's 3 and the
+  near row's 10, lands ~1.2-1.5 m); a request in it beyond ``region``'s target_y is planned so (straight ahead the row
+  was not offered: docs/jump_to_target.md, "The man's mid long row");
 - ``long_onto_region``, ``long_down_region`` (optional, with the long row): the same keys as ``down_region`` for a
   jump straight ahead onto a box / down from one flown by the long row (long_body) where the flight's flat
   equivalent lies in ``long_region`` with its air time in ``flat_air_time``; ``target_x`` (optional, [low, high] m)
@@ -118,9 +123,11 @@ def _rows(body: dict):
         yield "long_settings", body["long_settings"]
     if "near_long_settings" in body:
         yield "near_long_settings", body["near_long_settings"]
+    if "mid_long_settings" in body:
+        yield "mid_long_settings", body["mid_long_settings"]
     if "turned_long_settings" in body:
         yield "turned_long_settings", body["turned_long_settings"]
-    for key in ("crouch_by_air_time", "long_crouch_by_air_time", "near_long_crouch_by_air_time"):
+    for key in ("crouch_by_air_time", "long_crouch_by_air_time", "near_long_crouch_by_air_time", "mid_long_crouch_by_air_time"):
         for k, height in enumerate(body.get(key, {}).get("crouch_height", [])):
             yield f"{key} {k}", {"crouch_height": height}
     for k, angle in enumerate(body.get("turn_headings", {}).get("turn_angle", [])):
@@ -179,12 +186,19 @@ def long_body(body: dict) -> dict:
             "crouch_by_air_time": body["long_crouch_by_air_time"]}
 
 
-def near_long_body(body: dict) -> dict:
+def near_long_body(body: dict, row: str = "near_long") -> dict:
     """The table as the near long air times' plan reads it (``near_long_region``): long_body with
-    ``near_long_settings`` over its settings and ``near_long_crouch_by_air_time`` as the crouch pairs."""
+    ``near_long_settings`` over its settings and ``near_long_crouch_by_air_time`` as the crouch pairs
+    (``row`` "mid_long": the mid long row's ``mid_long_settings`` and ``mid_long_crouch_by_air_time``)."""
     long = long_body(body)
-    return {**long, "settings": {**long["settings"], **body["near_long_settings"]},
-            "crouch_by_air_time": body["near_long_crouch_by_air_time"]}
+    return {**long, "settings": {**long["settings"], **body[f"{row}_settings"]},
+            "crouch_by_air_time": body[f"{row}_crouch_by_air_time"]}
+
+
+def mid_long_body(body: dict) -> dict:
+    """The table as the turned mid long air times' plan reads it (``turned_mid_long_region``): near_long_body of the
+    mid row."""
+    return near_long_body(body, "mid_long")
 
 
 def turned_long_body(body: dict) -> dict:
@@ -225,7 +239,8 @@ def commanded_way(character: str, target, air_time: float) -> str | None:
     vertical thrust, long_body), "near_long" inside its ``near_long_region`` beyond both (near_long_body), "turned"
     inside its ``turned_region`` beyond both (a turn first, then forward), "turned_long" inside its
     ``turned_long_region`` (the turn first, then the long row), "turned_near_long" inside its ``turned_near_long_region``
-    (the turn first, then the near long row), "sideways" inside its ``sideways_region`` (the
+    (the turn first, then the near long row), "turned_mid_long" inside its ``turned_mid_long_region`` (the turn
+    first, then the mid long row), "sideways" inside its ``sideways_region`` (the
     quarter turn first); down
     from a box (z < 0) or onto one (z > 0) as box_way says; else None."""
     body = table(character)
@@ -248,7 +263,7 @@ def commanded_way(character: str, target, air_time: float) -> str | None:
     if region["target_y"][0] <= y <= region["target_y"][1]:
         return None
     values = {"distance": math.hypot(x, y), "bearing": abs(math.atan2(y, x)), "air_time": float(air_time)}
-    return next((way for way in ("turned", "turned_long", "turned_near_long", "sideways") if body.get(f"{way}_region") is not None
+    return next((way for way in ("turned", "turned_long", "turned_near_long", "turned_mid_long", "sideways") if body.get(f"{way}_region") is not None
                  and all(body[f"{way}_region"][k][0] <= v <= body[f"{way}_region"][k][1] for k, v in values.items())), None)
 
 
@@ -323,6 +338,8 @@ def commanded_limit(character: str) -> str | None:
         parts.append(f"turned first with long air times {_turned(body['turned_long_region'])}")
     if body.get("turned_near_long_region"):
         parts.append(f"turned first with long air times nearer {_turned(body['turned_near_long_region'])}")
+    if body.get("turned_mid_long_region"):
+        parts.append(f"turned first with long air times in the middle {_turned(body['turned_mid_long_region'])}")
     for key, way, sign in (("long_onto_region", "onto", "+"), ("long_down_region", "down from", "-")):
         if body.get(key):
             parts.append(_box(body[key], way, "the long air times' region", sign) + ")")
