@@ -189,16 +189,6 @@ VAULT_SETTINGS = Schema(
     setting("touchdown_lean", "rad", -1.0, 1.5,
             "... what is left: the whole body turned to this short of upright when the feet reach the mat"),
     setting("touchdown_com", "m", 0.3, 1.5, "the COM's height above the mat when the feet reach it (for the time left)"),
-    setting("open_capture", "bool", 0.0, 1.0,
-            "1 = the pike opens for the landing's capture point, not a fixed lean: from the state off the horse "
-            "(v_x, L_y and the touchdown's v_z by ballistics) the COM's place dx behind the feet that puts the "
-            "capture point of the angular momentum about the feet open_capture_target ahead of them is solved (h = "
-            "touchdown_com, as place_capture's), and the whole body is aimed to atan(-dx / h) + open_capture_offset "
-            "short of upright instead of touchdown_lean; 0 = touchdown_lean"),
-    setting("open_capture_target", "m", -0.3, 0.5,
-            "open_capture: the capture point at the touchdown (predicted with h = touchdown_com) this far ahead of the feet"),
-    setting("open_capture_offset", "rad", -1.0, 1.0,
-            "open_capture: the whole body's lean at the touchdown less the angle of the line from the feet to the COM"),
     setting("feet_apart", "rad", 0.0, 0.3,
             "hip abduction of each leg in the second flight, until the landing places the legs (the feet a little apart)"),
     setting("flight_feet_centre", "rad/m", 0.0, 20.0,
@@ -267,13 +257,6 @@ VAULT_SETTINGS = Schema(
             "1 = the landing places the feet from the predicted touchdown (MatLanding): so that the capture point "
             "of the angular momentum about the feet at the touchdown is place_target ahead of them; 0 = the leap's "
             "placement (foot_delta, landing_foot_lead_time, spin_placement)"),
-    setting("knee_capture_kp", "rad/m", 0.0, 20.0,
-            "the landing's knees in the last of the flight (the feet under knee_capture_below above the mat) "
-            "straighten this much per metre the COM is ahead of the place that puts the capture point at the "
-            "touchdown knee_capture_target ahead of the feet (com_place_for_capture, h = touchdown_com), bend "
-            "as much more behind it (a straighter leg reaches further); 0 = the landing's knee_flexion"),
-    setting("knee_capture_target", "m", -0.3, 0.5, "knee_capture_kp: the capture point aimed at"),
-    setting("knee_capture_below", "m", 0.0, 1.0, "knee_capture_kp: the feet's height above the mat it acts under"),
     setting("place_target", "m", -0.3, 0.3,
             "... the capture point at the touchdown, H_f / (m sqrt(g h)) ahead of the COM's place, this far ahead "
             "of the feet (H_f the angular momentum about the feet, kept through the impact)"),
@@ -289,9 +272,6 @@ VAULT_SETTINGS = Schema(
             "catch_rise_time, slowed to a stop as the capture point nears rise_margin; the ankles and the hips servo "
             "the capture point meanwhile (the catch's catch_kp, catch_lean_kp); 0 = MatRise's (or the catch's) timed rise"),
     setting("rise_margin", "m", 0.01, 0.3, "rise_capture: the capture point's distance from catch_target where the rise stops"),
-    setting("rise_after", "s", 0.0, 2.0,
-            "rise_capture: the rise starts no earlier than this after the absorb began (past the landing's rebound; "
-            "0: as soon as the capture point is inside)"),
     setting("recovery_step", "bool", 0.0, 1.0,
             "1 = when the capture point leaves step_at of catch_target after the touchdown (the catch's or the "
             "absorb's), one foot steps to it (control/recovery_step.py RecoveryStep) and the staggered stance is "
@@ -421,30 +401,6 @@ class MatLanding(Landing):
         super().__init__(params, ctx)
         self.cfg = cfg
 
-    def _flight_knee(self, vx: float) -> float:
-        knee = super()._flight_knee(vx)
-        c = self.cfg
-        if not c["knee_capture_kp"]:
-            return knee
-        d = self.ctx.data
-        drop = max(float(self.airborne.feet_heights(d).min()), 0.0)
-        if drop > c["knee_capture_below"]:
-            return knee
-        v = d.subtree_linvel[self.pelvis]
-        vz = -math.sqrt(float(v[2]) ** 2 + 2.0 * GRAVITY * drop)      # at the touchdown
-        spin = float(d.subtree_angmom[self.pelvis][1]) / self.mass
-        wanted = com_place_for_capture(c["knee_capture_target"], spin, float(v[0]), vz, c["touchdown_com"])
-        # where the COM will be over the feet at the touchdown: the line from the COM to the ankles turns
-        # at its measured rate for the time the feet take to come down at their measured speed
-        ankles = 0.5 * (d.xpos[self.feet[0]] + d.xpos[self.feet[1]]) - d.subtree_com[self.pelvis]
-        line, reach = math.atan2(float(ankles[0]), -float(ankles[2])), float(np.hypot(ankles[0], ankles[2]))
-        last, self.knee_line = getattr(self, "knee_line", None), (line, drop)
-        if last is None or drop >= last[1]:
-            return knee
-        line += (line - last[0]) * drop / (last[1] - drop)            # the turn until the feet reach the mat
-        ahead = -reach * math.sin(line) - self.sole_centre
-        return min(max(knee - c["knee_capture_kp"] * (ahead - wanted), 0.0), c["catch_knee_max"])
-
     def foot_wanted(self, vx: float, spin_offset: float) -> float:
         if not self.cfg["place_capture"]:
             return super().foot_wanted(vx, spin_offset)
@@ -453,17 +409,10 @@ class MatLanding(Landing):
         drop = max(float(self.airborne.feet_heights(d).min()), 0.0)
         vz = -math.sqrt(float(v[2]) ** 2 + 2.0 * GRAVITY * drop)      # at the touchdown
         h = self.cfg["touchdown_com"]                  # the COM above the feet at the touchdown (the flight's aim)
+        reach = math.sqrt(GRAVITY * h)
         spin = float(d.subtree_angmom[self.pelvis][1]) / self.mass
-        return -com_place_for_capture(self.cfg["place_target"], spin, float(v[0]), vz, h)
-
-
-def com_place_for_capture(target: float, spin: float, vx: float, vz: float, h: float) -> float:
-    """The COM's place dx ahead of the feet (- behind) at the touchdown that puts the capture point of the
-    angular momentum about the feet, dx + H_f / (m sqrt(g h)) with H_f = L_y + m (h v_x - dx v_z), ``target``
-    ahead of them; spin = L_y / m, (vx, vz) the COM's velocity at the touchdown, h the COM's height over the feet
-    (linear in dx)."""
-    reach = math.sqrt(GRAVITY * h)
-    return (target - (spin + h * vx) / reach) / (1.0 - vz / reach)
+        dx = (self.cfg["place_target"] - (spin + h * float(v[0])) / reach) / (1.0 - vz / reach)
+        return -dx
 
 
 class MatAbsorb(Behaviour):
@@ -551,20 +500,19 @@ class MatAbsorb(Behaviour):
         s.hold(targets, t)
         spin = float(d.subtree_angmom[self.pelvis][1])
         if c["rise_capture"]:
-            self.over_feet = self.capture_inside(capture, t)
+            self.over_feet = self.capture_inside(capture)
             return
         if (ahead >= -self.cfg["over_feet"] and abs(speed) < self.cfg["settled_speed"]
                 and abs(spin) < self.cfg["settled_spin"]) or (
                 t - self.t0 > self.cfg["capture_after"] and abs(capture) < self.cfg["capture_within"]):
             self.over_feet = True
 
-    def capture_inside(self, capture: float, t: float) -> bool:
-        """rise_capture's start: the COM's fall has stopped (it has moved up once since the touchdown), the
-        capture point is within rise_margin of catch_target and rise_after has passed since the absorb began."""
+    def capture_inside(self, capture: float) -> bool:
+        """rise_capture's start: the COM's fall has stopped (it has moved up once since the touchdown) and the
+        capture point is within rise_margin of catch_target."""
         if float(self.ctx.data.subtree_linvel[self.pelvis][2]) >= 0.0:
             self.stopped = True
-        return (self.stopped and abs(capture - self.cfg["catch_target"]) < self.cfg["rise_margin"]
-                and t - self.t0 >= self.cfg["rise_after"])
+        return self.stopped and abs(capture - self.cfg["catch_target"]) < self.cfg["rise_margin"]
 
     def feet_and_hips(self, targets: np.ndarray, angles: np.ndarray, ankle: float, sideways: float,
                       trunk_error: float, side_hip: float | None = None) -> None:
@@ -688,7 +636,7 @@ class MatCatch(MatAbsorb):
         self.feet_and_hips(targets, angles, ankle, sideways, trunk_error, c["catch_side_hip"])
         s.hold(targets, t)
         if c["rise_capture"]:
-            self.over_feet = self.capture_inside(self.capture, t)
+            self.over_feet = self.capture_inside(self.capture)
         elif (self.fallen and t - self.t0 >= c["catch_min"]
                 and abs(self.capture - c["catch_target"]) < c["catch_within"]):
             self.over_feet = True
@@ -1241,7 +1189,7 @@ class Vault(Sequence):
             s.move_to(s.indices(["hip_r_y", "hip_l_y"]), np.array([c["second_pike"]] * 2), c["second_open_time"], t)
             if c["second_knee"]:
                 s.move_to(s.indices(["knee_r_y", "knee_l_y"]), np.array([c["second_knee"]] * 2), c["second_open_time"], t)
-        remaining = 2 * math.pi - self.touchdown_lean() - self.rotation.whole_body
+        remaining = 2 * math.pi - c["touchdown_lean"] - self.rotation.whole_body
         rate_open = float(d.subtree_angmom[root][1]) / self.layout_inertia
         time_left = time_to_fall_to(float(d.subtree_com[root][2]), float(d.subtree_linvel[root][2]),
                                     self.mat_top + c["touchdown_com"])
@@ -1251,21 +1199,6 @@ class Vault(Sequence):
         self.second_opened = True
         self.event(t, "second_open")
         s.move_to(s.indices(["hip_r_y", "hip_l_y"]), np.zeros(2), c["second_open_time"], t)
-
-    def touchdown_lean(self) -> float:
-        """The whole body's lean short of upright the pike's opening aims at: touchdown_lean, or with
-        open_capture the lean that puts the capture point at the touchdown open_capture_target ahead of the
-        feet (com_place_for_capture, from v_x, L_y and the touchdown's v_z by ballistics: fixed in the flight)."""
-        c, d = self.cfg, self.ctx.data
-        if not c["open_capture"]:
-            return c["touchdown_lean"]
-        root = self.ctx.actor.root
-        v, h = d.subtree_linvel[root], c["touchdown_com"]
-        drop = max(float(d.subtree_com[root][2]) - self.mat_top - h, 0.0)
-        vz = -math.sqrt(float(v[2]) ** 2 + 2.0 * GRAVITY * drop)
-        spin = float(d.subtree_angmom[root][1]) / float(self.ctx.model.body_subtreemass[root])
-        dx = com_place_for_capture(c["open_capture_target"], spin, float(v[0]), vz, h)
-        return math.atan2(-dx, h) + c["open_capture_offset"]
 
     def centre_feet(self, t: float) -> None:
         """flight_feet_centre: both hips' abduction (positive swings a foot to her left, on either side) moves
