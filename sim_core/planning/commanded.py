@@ -27,12 +27,14 @@ A target beyond the table's straight region's target_y, in its ``turned_region``
 jump turns first (one hop, the leap's ``turn_angle``) and flies the commanded take-off forward; the aim
 moves the commanded distance along the target's bearing by a secant on the landing's distance along it,
 at most ``turn_aim_trials`` jumps; then the landing as 2. The hop is the measured one whose jump's line
-passes nearest the target (the table's ``turn_lines``, turn_for_point), the target moved against the landings'
-misses to the side so far; a table without them (the man's) takes the measured hop whose heading is nearest
-the one wanted (``turn_headings``, turn_for_heading: the heading wanted moved by the landing's bearing missed
+passes nearest the target (the table's ``turn_lines``, turn_for_point) - a hop already flown by its line moved to where
+its jump landed, one never flown by its measured line moved by the mean of those errors - kept while its jump lands
+within ``aim_tolerance`` to the side, its aim by a secant on its own jumps (steer_by_lines); a table without them
+(the man's) takes the measured hop whose heading is nearest the one wanted (``turn_headings``, turn_for_heading: the heading wanted moved by the landing's bearing missed
 over the table's ``turn_slope``, from ``turn_gain`` x the bearing). A target straight to the side, in its
 ``sideways_region``, the same with the quarter turn (the leap's ``turn_first``, two hops) and its lines
-(``quarter_lines``). A target to the side at a long air time, in its ``turned_long_region``: the same hop and
+(``quarter_lines``; the turn chosen anew after each jump, the target moved against the landings' misses to the side so
+far). A target to the side at a long air time, in its ``turned_long_region``: the same hop and
 aim with the table read by turned_long_body (the long row flown after the hop, with the table's
 ``turned_long_settings`` over it); in its ``turned_near_long_region``, the near long row after the hop
 (near_long_body).
