@@ -30,8 +30,8 @@ at most ``turn_aim_trials`` jumps; then the landing as 2. The hop is the measure
 passes nearest the target (the table's ``turn_lines``, turn_for_point) - a hop already flown by its line moved to where
 its jump landed, one never flown by its measured line moved by the mean of those errors - kept while its jump lands
 within ``aim_tolerance`` to the side, its aim by a secant on its own jumps (steer_by_lines); a table without them
-(the man's) takes the measured hop whose heading is nearest the one wanted (``turn_headings``, turn_for_heading: the heading wanted moved by the landing's bearing missed
-over the table's ``turn_slope``, from ``turn_gain`` x the bearing). A target straight to the side, in its
+(the man's) takes the measured hop whose heading is nearest the one wanted (``turn_headings``, turn_for_heading: the
+heading wanted moved by the landing's bearing missed over the table's ``turn_slope``, from ``turn_gain`` x the bearing). A target straight to the side, in its
 ``sideways_region``, the same with the quarter turn (the leap's ``turn_first``, two hops) and its lines
 (``quarter_lines``; the turn chosen anew after each jump, the target moved against the landings' misses to the side so
 far). A target to the side at a long air time, in its ``turned_long_region``: the same hop and
