@@ -285,6 +285,20 @@ def test_turn_lines_replay():
     assert turn_for_point(body, ahead, lines="turn_lines") == rows["turn_angle"][k]
 
 
+def test_turn_for_point_moves_each_flown_hops_line():
+    """A hop already flown is judged by where its jump landed (line_offset: its line moved by its error), the others by
+    their measured lines moved by the mean error (planning/commanded.py steer_by_lines). No simulation."""
+    from sim_core.skills.jump_to_target.commanded import line_offset, table, turn_for_point
+    body = table("woman")
+    target = (1.214, -0.211)        # seed 29's miss: the hop chosen anew swung between -0.455 and -0.11 rad
+    first = turn_for_point(body, target, lines="turn_lines")
+    assert turn_for_point(body, target, lines="turn_lines", errors={}, error=0.0) == first
+    _, off, _ = line_offset(body, first, target)
+    moved = turn_for_point(body, target, lines="turn_lines", errors={first: off - 0.13})    # it landed 13 cm right
+    assert moved != first
+    assert abs(line_offset(body, moved, target)[1]) < 0.13
+
+
 def test_the_mans_commanded_table_is_the_womans_scaled_by_fig_6():
     """The man's commanded take-off (tools/scale_commanded.py): his table's settings are the woman's scaled by
     Fig. 6 (adapt/settings.scale_settings, mass mode), his leap constants hers by scale_constants, with his

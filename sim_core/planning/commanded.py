@@ -27,12 +27,14 @@ A target beyond the table's straight region's target_y, in its ``turned_region``
 jump turns first (one hop, the leap's ``turn_angle``) and flies the commanded take-off forward; the aim
 moves the commanded distance along the target's bearing by a secant on the landing's distance along it,
 at most ``turn_aim_trials`` jumps; then the landing as 2. The hop is the measured one whose jump's line
-passes nearest the target (the table's ``turn_lines``, turn_for_point), the target moved against the landings'
-misses to the side so far; a table without them (the man's) takes the measured hop whose heading is nearest
-the one wanted (``turn_headings``, turn_for_heading: the heading wanted moved by the landing's bearing missed
-over the table's ``turn_slope``, from ``turn_gain`` x the bearing). A target straight to the side, in its
+passes nearest the target (the table's ``turn_lines``, turn_for_point) - a hop already flown by its line moved to where
+its jump landed, one never flown by its measured line moved by the mean of those errors - kept while its jump lands
+within ``aim_tolerance`` to the side, its aim by a secant on its own jumps (steer_by_lines); a table without them
+(the man's) takes the measured hop whose heading is nearest the one wanted (``turn_headings``, turn_for_heading: the
+heading wanted moved by the landing's bearing missed over the table's ``turn_slope``, from ``turn_gain`` x the bearing). A target straight to the side, in its
 ``sideways_region``, the same with the quarter turn (the leap's ``turn_first``, two hops) and its lines
-(``quarter_lines``). A target to the side at a long air time, in its ``turned_long_region``: the same hop and
+(``quarter_lines``; the turn chosen anew after each jump, the target moved against the landings' misses to the side so
+far). A target to the side at a long air time, in its ``turned_long_region``: the same hop and
 aim with the table read by turned_long_body (the long row flown after the hop, with the table's
 ``turned_long_settings`` over it); in its ``turned_near_long_region``, the near long row after the hop
 (near_long_body); in its ``turned_mid_long_region``, the mid long row after the hop (mid_long_body).
@@ -51,9 +53,9 @@ from ..ballistics import flat_air_time
 from ..character.spec import load_character
 from ..control.leap import LEAP_SETTINGS
 from ..errors import ParameterError
-from ..skills.jump_to_target.commanded import (commanded_settings, commanded_way, long_body, mid_long_body, near_long_body,
-                                               planner_constants,
-                                               table, turn_for_heading, turn_for_point, turned_long_body, turned_settings)
+from ..skills.jump_to_target.commanded import (commanded_settings, commanded_way, line_offset, long_body, mid_long_body,
+                                               near_long_body, planner_constants, table, turn_for_heading, turn_for_point,
+                                               turned_long_body, turned_settings)
 from .land import candidates, foot_step
 from .trials import Trials
 
@@ -144,6 +146,8 @@ def plan_turned(character: str, target, air_time: float, trial, budget: int, jud
     # the aim stays in its range and its flight target in the leap's (a quarter turn's aim is all target_y)
     top = min(c.aim_range[1], LEAP_SETTINGS.by_name["flight_target_y"].maximum / max(abs(math.sin(bearing)), 1e-3))
     lines = "quarter_lines" if way == "sideways" else ("turn_lines" if "turn_lines" in body else None)
+    if lines == "turn_lines":
+        return steer_by_lines(character, (x, y), air_time, trials, bound, judge, body, c, way, top)
     shift = 0.0         # by the lines: the landings' misses to the side so far (m, along ``side``)
     good = None         # the aim, heading and air time aimed of the nearest trial that flew
     grounded = set()    # the turns whose jump did not fly
@@ -187,3 +191,64 @@ def plan_turned(character: str, target, air_time: float, trial, budget: int, jud
         rate = secant(air_aims, flown, c.aim_slope_floor, 1.0)     # definition: the first step as flown
         air_aims.append(air_aims[-1] - late / rate)
     return landed_plan(character, trials, bound, judge, c)
+
+
+def steer_by_lines(character: str, target, air_time: float, trials: Trials, bound: int, judge: Callable, body: dict, c,
+                   way: str, top: float) -> dict:
+    """plan_turned's aim where the table has the hop's lines (``turn_lines``), with a model of each hop from the jumps
+    already flown: each hop's line moved to where its jump landed (line_offset: the long row after a hop does not fly
+    the line measured with the short row, and each hop misses its own way, so one shift for all - the hop chosen
+    anew after each jump - swung between two hops on either side of the target: the woman's (1.214, -0.211) m) and
+    its own distance secant (a hop lands its own distance for the same aim: secants across two hops stepped 0.3-0.6
+    m). The next hop: the last one again while its jump landed within ``aim_tolerance`` of the target's side,
+    else the hop whose line (its own as flown; one never flown, the measured one moved by the mean of the flown
+    hops' errors) passes nearest the target; its aim from its own last jump (a hop never flown: from the last jump)
+    by the secant of its last two (else ``aim_slope``). The crouch's air time by the secant on the air time flown."""
+    x, y = target
+    distance, bearing = math.hypot(x, y), math.atan2(y, x)
+    along = (math.cos(bearing), math.sin(bearing))
+    flown = []          # (turn, aim, distance reached along the bearing, the landing's error left of the hop's line)
+    air_aims, times = [float(air_time)], []
+    good = None         # the aim and air time of the nearest trial that flew
+    grounded = set()    # the turns whose jump did not fly
+    turn, aim = turn_for_point(body, target, grounded, "turn_lines"), distance
+    while True:
+        if turn is None:        # every measured line that stood and leads ahead was tried
+            if not trials.tried:
+                raise ParameterError(f"no measured turn of the {character} leads toward ({x:g}, {y:g}) m")
+            break
+        measured = trials.run(turned_settings(body, air_aims[-1], aim, bearing, turn, way))
+        if measured["fell_before_liftoff"] or not measured["air_time"] > 0.5 * air_time:   # definition: it did not fly
+            grounded.add(turn)
+            if len(trials.tried) >= min(c.turn_aim_trials, bound):
+                break
+            turn = turn_for_point(body, target, grounded, "turn_lines", *_errors(flown))
+            if good is not None:
+                aim, air_aims[-1] = (aim + good[0]) / 2.0, (air_aims[-1] + good[1]) / 2.0
+            continue
+        lx, ly = measured["landing"]
+        error = math.hypot(lx - x, ly - y)
+        if good is None or error < good[2]:
+            good = (aim, air_aims[-1], error)
+        reached = lx * along[0] + ly * along[1]
+        flown.append((turn, aim, reached, line_offset(body, turn, (lx, ly))[1]))
+        times.append(measured["air_time"])
+        miss, late = reached - distance, times[-1] - air_time
+        side = line_offset(body, turn, target)[1] - flown[-1][3]       # the target left of where the hop flew
+        if (judge(measured)[1] or (math.hypot(miss, side) <= c.aim_tolerance and abs(late) <= c.aim_time_tolerance)
+                or len(trials.tried) >= min(c.turn_aim_trials, bound) or not (math.isfinite(miss) and math.isfinite(side))):
+            break
+        if abs(side) > c.aim_tolerance:
+            turn = turn_for_point(body, target, grounded, "turn_lines", *_errors(flown))
+        same = [f for f in flown if f[0] == turn] or flown[-1:]        # the hop's own jumps (never flown: the last)
+        slope = secant([f[1] for f in same], [f[2] for f in same], c.aim_slope_floor, c.aim_slope)
+        aim = min(max(same[-1][1] - (same[-1][2] - distance) / slope, c.aim_range[0]), top)
+        rate = secant(air_aims, times, c.aim_slope_floor, 1.0)     # definition: the first step as flown
+        air_aims.append(air_aims[-1] - late / rate)
+    return landed_plan(character, trials, bound, judge, c)
+
+
+def _errors(flown: list) -> tuple[dict, float]:
+    """Each flown hop's last landing error left of its line, and their mean (for hops never flown)."""
+    errors = {turn: e for turn, _, _, e in flown}
+    return errors, (sum(errors.values()) / len(errors) if errors else 0.0)

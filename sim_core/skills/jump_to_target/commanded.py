@@ -152,20 +152,32 @@ def turn_for_heading(body: dict, heading: float, avoid=()) -> float:
     return float(pairs["turn_angle"][k])
 
 
-def turn_for_point(body: dict, point, avoid=(), lines: str = "quarter_lines") -> float:
+def turn_for_point(body: dict, point, avoid=(), lines: str = "quarter_lines", errors: dict | None = None,
+                   error: float = 0.0) -> float:
     """The turn of the table's ``lines`` (``quarter_lines``: the quarter turn's ``turn_first``; ``turn_lines``: the
     hop's ``turn_angle``) whose measured jump's line (from the feet the turn left, along ``line``) passes nearest
     ``point`` (x, y m) ahead of them, of those that stood (``stood`` above half) and are not in ``avoid``. As the
-    hop's heading, the turn's is not smooth in its setting but the same every run."""
+    hop's heading, the turn's is not smooth in its setting but the same every run. ``errors``: for turns already
+    flown, how far to the left of its line (line_offset) the turn's jump landed; the line of every other turn is taken
+    ``error`` to the left of the measured one (none: the lines as measured)."""
     rows = body[lines]
     best, chosen = math.inf, None
-    for turn, fx, fy, line, stood in zip(rows["turn_first" if lines == "quarter_lines" else "turn_angle"], rows["feet_x"],
-                                         rows["feet_y"], rows["line"], rows["stood"]):
-        dx, dy = float(point[0]) - fx, float(point[1]) - fy
-        along, off = dx * math.cos(line) + dy * math.sin(line), -dx * math.sin(line) + dy * math.cos(line)
-        if stood > 0.5 and turn not in avoid and along > 0.0 and abs(off) < best:
-            best, chosen = abs(off), float(turn)
+    for turn in rows["turn_first" if lines == "quarter_lines" else "turn_angle"]:
+        along, off, stood = line_offset(body, turn, point, lines)
+        miss = off - (errors or {}).get(float(turn), error)
+        if stood > 0.5 and turn not in avoid and along > 0.0 and abs(miss) < best:
+            best, chosen = abs(miss), float(turn)
     return chosen
+
+
+def line_offset(body: dict, turn: float, point, lines: str = "turn_lines") -> tuple[float, float, float]:
+    """Where ``point`` (x, y m) lies from the measured line of ``turn`` in the table's ``lines`` (turn_for_point):
+    (along it from the feet the turn left, to its left, m) and the share of its measured jumps that stood."""
+    rows = body[lines]
+    k = list(rows["turn_first" if lines == "quarter_lines" else "turn_angle"]).index(turn)
+    dx, dy = float(point[0]) - rows["feet_x"][k], float(point[1]) - rows["feet_y"][k]
+    line = rows["line"][k]
+    return (dx * math.cos(line) + dy * math.sin(line), -dx * math.sin(line) + dy * math.cos(line), rows["stood"][k])
 
 
 def commanded_settings(body: dict, air_time: float, aim: float, height: float = 0.0) -> dict:
