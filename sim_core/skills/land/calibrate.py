@@ -159,8 +159,7 @@ def measure_drop_limits(character: str) -> Path:
     table = tuned.load("landing", name)
     if table is None:
         raise SystemExit(f"{name} has no landing table: python -m sim_core calibrate land --character {name} first")
-    table = {k: v for k, v in table.items() if k not in ("schema_version", "skill", "character", "strengths")}
-    table.pop("drop_limits", None)
+    table = {k: v for k, v in table.items() if k != "drop_limits"}        # the body (load drops the header)
     open_limits = {"speeds": [0.0], "low": [0.0], "high": [float("inf")], "side": float("inf")}
     with tuned.provisional("landing", name) as stored:
         tuned.save("landing", name, dict(table, drop_limits=open_limits), strengths=["human"])
