@@ -1460,7 +1460,8 @@ straight band's, hit), seed 313 **19 / 20** (9.4 / 49.6 s; (1.248, +0.416) m in 
 **19 / 20** (13.4 / 42.7 s; (1.408, +0.432) m in 0.629 s 5.2 cm off after 13), and with the region as offered (no straight
 band) seed 331 **18 / 20** (11.0 / 35.8 s; (1.130, +0.550) m in 0.545 s 10.5 cm off after 15, (1.305, -0.092) m in 0.503 s
 16.1 cm off after 13): the turned row **73 / 79 (92 %)** - five of its six misses asked 0.503-0.545 s (the shallow
-crouches, whose aim map is the roughest; straight ahead too). Straight
+crouches, whose aim map is the roughest; straight ahead too); after the merge (the lead, same session) fresh seeds 337
+and 347 **20 / 20** each (5.1 / 13.1 s, 7.9 / 13.4 s) and seed 29's report 17 / 20: every draw of the row 130 / 139 (94 %). Straight
 ahead the row was measured once more with the gain 0 (`tools/commanded_jumps.py --character man --table --long --set
 lean_push=5 --set landing_arm_pitch_gain=0 --crouch-by-air-time 0.6:0.52,0.575:0.55,0.55:0.6,0.525:0.655,0.5:0.675
 --random 12 --seed 37 --forward 1.25,1.5 --air-times 0.5,0.65 --aim 9 --plan-landing 9`): **8 / 12** (9.8-19 cm off at
