@@ -12,7 +12,7 @@ from sim_core.cli import main
 from sim_core.control.leap import landing_side_speed
 from sim_core.planning.land import LandingTrial, candidates, plan_landing
 from sim_core.simulate import RunRequest, StartState
-from sim_core.skills.land.calibrate import grid
+from sim_core.skills.land.calibrate_grid import grid
 from sim_core.skills.land.report import offered, planned_landing, random_drops
 from sim_core.tuning import Space, SerialExecutor, minimize
 

@@ -223,7 +223,8 @@ class LandingAdapter(Adapter):
 
     def search(self, character: str, workers: int, minutes: float, check: Check) -> tuple[dict, int]:
         """calibrate land's sweep (every drop, speed and delta), then its fast-touchdown scan."""
-        from ..skills.land.calibrate import calibrate, fast_touchdown, grid
+        from ..skills.land.calibrate import calibrate, fast_touchdown
+        from ..skills.land.calibrate_grid import grid
         table = calibrate(character, workers)
         fast = fast_touchdown(character, table)
         if fast is not None:

@@ -655,8 +655,8 @@ def landing_drops(table: dict, speed: float) -> tuple[float, float]:
         drops = [row["drop"] for row in table["foot_delta"] if row["speed"]]
         return min(drops), max(drops)
     speeds = limits["speeds"]
-    near = [i for i, s in enumerate(speeds) if s == speed] or \
-        [i for i in (int(np.searchsorted(speeds, speed)) - 1, int(np.searchsorted(speeds, speed))) if 0 <= i < len(speeds)]
+    i = int(np.searchsorted(speeds, speed))
+    near = [i] if i < len(speeds) and speeds[i] == speed else [j for j in (i - 1, i) if 0 <= j < len(speeds)]
     return max(limits["low"][i] for i in near), min(limits["high"][i] for i in near)
 
 

@@ -624,10 +624,14 @@ class MatCatch(MatAbsorb):
         return self.held_lean - c["catch_lean_kp"] * (self.capture - c["catch_target"])
 
     def update(self, t: float) -> None:
+        self.capture, _ = self.capture_point(*self.com_from_feet())
+        self.steer(t)
+
+    def steer(self, t: float) -> None:
+        """This tick's targets from the capture point measured (``self.capture``)."""
         s, c = self.ctx.servos, self.cfg
         targets = self.base.copy()
         angles = s.angles()
-        self.capture, _ = self.capture_point(*self.com_from_feet())
         back, front = self.ankle_limits(t)
         ankle = min(max(c["catch_kp"] * (self.capture - c["catch_target"]), -back), front)
         trunk_error = self.pelvis_lean() - self.posture(t, targets, angles)
@@ -699,11 +703,11 @@ class MatCaptureRise(MatCatchRise):
 
     def update(self, t: float) -> None:
         c = self.cfg
-        error = abs(self.capture_point(*self.com_from_feet())[0] - c["catch_target"])
-        rate = max(0.0, 1.0 - error / c["rise_margin"]) / c["catch_rise_time"]
+        self.capture, _ = self.capture_point(*self.com_from_feet())
+        rate = max(0.0, 1.0 - abs(self.capture - c["catch_target"]) / c["rise_margin"]) / c["catch_rise_time"]
         self.progress = min(1.0, self.progress + rate * (t - self.t_last))
         self.t_last = t
-        super().update(t)
+        self.steer(t)
 
     @property
     def finished(self) -> bool:
