@@ -369,7 +369,7 @@ def parser() -> argparse.ArgumentParser:
                            "controller, unscaled, geometric and mass-scaled, on bodies from the man to the woman")
     sr.add_argument("--out", default="docs/bodies.md", help="Markdown file whose scaling block is rewritten")
     sr.add_argument("--skill", action="append", choices=["balance", "running"], help="repeatable; default both")
-    sr.add_argument("--cap", default="20", help="seconds: a run that has not fallen by then stops (default 20)")
+    sr.add_argument("--cap", default="100", help="seconds: a run that has not fallen by then stops (default 100, the seed's bar)")
     sr.set_defaults(func=cmd_character)
     ad = sub.add_parser("adapt", help="adapt every skill to a body (scale from the nearest calibrated character, "
                         "check by random runs, search where that fails) and report what works")

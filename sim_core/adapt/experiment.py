@@ -19,7 +19,7 @@ end, and the report lists every such value: the run then is not purely Fig. 6's.
 
 L is the leg-length ratio.
 
-    python -m sim_core character scaling-report [--cap 20] [--out docs/bodies.md]
+    python -m sim_core character scaling-report [--cap 100] [--out docs/bodies.md]
 """
 from __future__ import annotations
 
@@ -36,7 +36,7 @@ from ..errors import ParameterError
 from ..files import write_atomically
 
 FRACTIONS = (0.0, 0.25, 0.5, 0.7, 1.0)        # the seed's intermediates, and its two ends
-CAP = 20.0                                     # s: a run that has not fallen by then counts as the cap
+CAP = 100.0                                    # s: the seed's bar (§8.5 S5); a run that has not fallen by then counts as the cap
 BEGIN, END = "<!-- scaling:begin -->", "<!-- scaling:end -->"
 # the man's request per skill (the "controller" the columns carry): balance with a knee bend
 # (tests/addon's), running at its default speed
