@@ -591,23 +591,3 @@ def test_the_girdle_vault_lands_and_bows_but_hard(monkeypatch):
     assert abs(m["rotation"] - 2 * math.pi) <= ROTATION_TOLERANCE and m["feet_first"] and not m["fell"]
     assert m["balanced_time_at_end"] >= BALANCED_TIME and m["bow_feet_moved"] <= NO_STEP
     assert trajectory.meta["outcome"] == "hard_landing" and m["peak_landing_body_weights"] > PEAK_LANDING_LIMIT
-
-
-LAND_SKILL = ["land_skill=1", "foot_delta=0.16"]    # docs/vault.md "The landing handed to the land skill (vault13)"
-
-
-def test_the_landing_handed_to_the_land_skill_runs_its_controller_and_she_falls():
-    """land_skill (0 in both tables): at the second flight's end the land skill's controller (control.leap Landing
-    with the land skill's parameters, its absorb, then balance_after_landing) lands her instead of MatLanding, the
-    absorb and the rise. Measured (vault13): at 6.75 m/s no foot_delta stands (the fall turns from forward to back
-    between 0.160 and 0.165 m; 0 of 21 on 6.70-6.80 by 5 mm/s), the spin she lands with (L_y 52 kg m2/s, the pelvis
-    0.8 rad back) being what the land skill's landings never see. If she stands, re-measure."""
-    from sim_core.skills.vault.behaviour import calibrated
-    for body in ("woman", "man"):
-        assert calibrated(body, "human")["settings"]["land_skill"] == 0.0
-    trajectory = run_at(6.75, duration=3.0, overrides=LAND_SKILL)
-    events = [name for when, name in trajectory.meta["phase_events"]]
-    after = events[events.index("landing"):]
-    assert "touchdown" in after and "knees_restored" in after and "balance" in after, after
-    assert "absorb" not in after and "rise" not in after
-    assert trajectory.meta["outcome"] == "fell"

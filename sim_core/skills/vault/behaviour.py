@@ -26,8 +26,7 @@
                 feet's middle and slow (the seed's switch), the legs straighten (MatRise), then the
                 balance controller stands her up; the gesture (arms thrown up and back), the bow
                 (the balance pitches the torso forward and back, the COM kept over the feet), and she
-                stands until the run ends (docs/vault.md). With land_skill the land skill's landing and its
-                balance take the place of the landing, the absorb and the rise (measured, off: docs/vault.md).
+                stands until the run ends (docs/vault.md).
 
 Nothing but gravity, the contacts (board, horse, mat) and the joint servos moves her. The settings
 per character come from ``sim_core/tuned/tables/vault_<character>.json`` and the shared design values
@@ -52,7 +51,6 @@ from ...control.recovery_step import RecoveryStep, StaggeredStance, StepAndHold
 from ...control.sequencer import Sequence, Step
 from ...analysis import FOOT_BODIES
 from ..handspring.behaviour import HAND_BODIES, PoseMove
-from ..land.behaviour import Land
 from .assess import LIMP_ON_HORSE
 from ...control.tumble import FlightRotation, both_sides, inertia_about_com, rotation_to_come
 from ...errors import ParameterError
@@ -274,12 +272,6 @@ VAULT_SETTINGS = Schema(
             "catch_rise_time, slowed to a stop as the capture point nears rise_margin; the ankles and the hips servo "
             "the capture point meanwhile (the catch's catch_kp, catch_lean_kp); 0 = MatRise's (or the catch's) timed rise"),
     setting("rise_margin", "m", 0.01, 0.3, "rise_capture: the capture point's distance from catch_target where the rise stops"),
-    setting("land_skill", "bool", 0.0, 1.0,
-            "1 = at the second flight's end the land skill's controller lands her (skills/land: control.leap Landing "
-            "with the land skill's parameters, the feet placed by her landing table for the measured horizontal and "
-            "predicted touchdown speeds plus foot_delta; its absorb, then balance_after_landing) instead of "
-            "MatLanding, the absorb and the rise (docs/vault.md \"The landing handed to the land skill\"); 0 = the "
-            "vault's own landing"),
     setting("recovery_step", "bool", 0.0, 1.0,
             "1 = when the capture point leaves step_at of catch_target after the touchdown (the catch's or the "
             "absorb's), one foot steps to it (control/recovery_step.py RecoveryStep) and the staggered stance is "
@@ -964,9 +956,6 @@ class Vault(Sequence):
                                            ) and float(d.subtree_linvel[ctx.actor.root][2]) < 0
 
         def land(t):
-            if c["land_skill"]:
-                self.landing = Landing(Land.schema.validate(dict(foot_delta=c["foot_delta"])), ctx)
-                return self.landing
             return MatLanding(Landing.schema.validate(dict(
                 knee_flexion=c["landing_knee_flexion"], fast_knee_flexion=c["landing_knee_flexion"],
                 foot_delta=c["foot_delta"], foot_lead_time=c["landing_foot_lead_time"],
@@ -984,23 +973,6 @@ class Vault(Sequence):
             Step("first_flight", first_flight, lambda b, t: self.on_horse.touching(d)),
             Step("horse", horse, lambda b, t: self.off_horse(t)),
             Step("second_flight", second_flight, ready_to_land),
-            *([Step("landing", land, lambda b, t: b.finished),
-               Step("balance", lambda t: balance_after_landing(ctx, self.landing),
-                    lambda b, t: b.posture_reached(t) and t - b.t0 >= c["stand_time"] + CONSTANTS.stand_settle)]
-              if c["land_skill"] else self.own_landing(land)),
-            Step("gesture", lambda t: ArmGesture(ctx, self.previous),
-                 lambda b, t: b.finished),
-            Step("bow", lambda t: self.staggered((CONSTANTS.bow_pitch, CONSTANTS.bow_time, CONSTANTS.bow_hold))
-                 if self.stepping else self.bow(), lambda b, t: b.posture_back(t)),
-            Step("stand", lambda t: self.staggered() if self.stepping else
-                 self.rebalance(move_start=0.0, return_to_stand=0)),
-        ]
-
-    def own_landing(self, land) -> list[Step]:
-        """The vault's own landing: MatLanding to the touchdown, the absorb (or the catch), the rise (or the
-        recovery step), and the balance standing her up (or the staggered stance)."""
-        ctx, c = self.ctx, self.cfg
-        return [
             Step("landing", land, lambda b, t: b.stage != "flight"),
             Step("absorb", lambda t: (MatCatch if c["catch"] else MatAbsorb)(ctx, c, self.previous),
                  lambda b, t: b.finished or t - b.t0 > c["absorb_max"] or self.must_step(b, t)),
@@ -1013,6 +985,12 @@ class Vault(Sequence):
                  lambda b, t: (b.risen(t) and t - b.t_stance >= c["hold_rise_time"] + CONSTANTS.stand_settle)
                  if self.stepping
                  else b.posture_reached(t) and t - b.t0 >= c["stand_time"] + CONSTANTS.stand_settle),
+            Step("gesture", lambda t: ArmGesture(ctx, self.previous),
+                 lambda b, t: b.finished),
+            Step("bow", lambda t: self.staggered((CONSTANTS.bow_pitch, CONSTANTS.bow_time, CONSTANTS.bow_hold))
+                 if self.stepping else self.bow(), lambda b, t: b.posture_back(t)),
+            Step("stand", lambda t: self.staggered() if self.stepping else
+                 self.rebalance(move_start=0.0, return_to_stand=0)),
         ]
 
     def must_step(self, absorb: MatAbsorb, t: float) -> bool:
