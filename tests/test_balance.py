@@ -228,6 +228,20 @@ def test_a_crouch_leaning_back_further_than_measured_is_refused_and_at_the_limit
         pelvis_height=height, torso_pitch=-0.12, move_time=3.0, hold_time=1.0)))))
 
 
+
+def test_a_deep_crouch_whose_pitched_pelvis_sinks_below_half_is_refused_and_above_holds():
+    """docs/skills/balance.md, "A deep crouch with the torso pitched": the man at 0.462 m with the torso
+    0.277 rad forward fell (his pelvis below half its standing height); a crouch the posed pelvis clears holds."""
+    from sim_core.errors import ParameterError
+    from sim_core.request import behaviour_params
+    with pytest.raises(ParameterError) as error:
+        run(RunRequest("balance", "man", params=behaviour_params("balance", "man", dict(
+            pelvis_height=0.462, torso_pitch=0.277))))
+    message = str(error.value)
+    assert "\n" not in message and "pelvis_height=0.462" in message and "torso_pitch=0.277" in message and "allowed" in message
+    assert balanced(run(RunRequest("balance", "man", params=behaviour_params("balance", "man", dict(
+        pelvis_height=0.546, torso_pitch=1.0, move_time=4.0)))))
+
 PANEL = ("pelvis_height", "torso_pitch", "com_offset_x", "com_offset_y", "arm_abduction", "arm_flexion",
          "elbow_flexion", "head_pitch")
 

@@ -65,6 +65,12 @@ BALANCE_CONSTANTS = Schema(
     constant("hand_clearance", "1", 0.0, 1.0,
              "a posture whose hands come nearer the ground than this share of the standing hip height is "
              "refused (posed kinematically: the hands touched the ground below it)"),
+    constant("pelvis_held_share", "1", 0.0, 1.0,
+             "a posture whose pelvis, posed kinematically, stands lower than this share of its standing height is "
+             "refused (below 0.5 counts as a fall; the held crouch sags 0-0.017 of it below the posed one upright)"),
+    constant("pelvis_pitch_sag", "1", 0.0, 1.0,
+             "... and this share more with the torso pitched forward (the sag measured 0.034-0.049 from 0.3 rad on)"),
+    constant("pelvis_sag_pitch", "rad", 0.01, 2.0, "... reached linearly from no pitch at this torso pitch"),
     constant("settle_time", "s", 0.0, 10.0,
              "a run lasts at least this long after the request's timeline (move, hold, return) ends, so it is "
              "judged still (TARGETS.md) once the posture has settled, not in mid-move"),
@@ -268,11 +274,12 @@ class Balance(Behaviour):
         self._check_move_time()
         self._check_back_pitch()
         self._check_hands()
+        self._check_pelvis_held()
 
-    def hands_clearance(self) -> float:
-        """Height (m) of the hands' lowest point above the ground in the held posture, posed
-        kinematically: the nominal joint targets, the pelvis at the requested height and at the pitch
-        the hips hold (the feet and the balance feedback left out)."""
+    def _pose_held(self):
+        """The held posture posed kinematically (the nominal joint targets, the pelvis at the requested
+        height and at the pitch the hips hold; the feet and the balance feedback left out): the posing
+        data and how far its hip joints' middle stands above the requested pelvis height (m)."""
         m, actor = self.ctx.model, self.ctx.actor
         posture = self.target_posture()
         self.crouch = CrouchTable(m, self.ctx.character, [posture[0]], self.stand_height, actor=actor)  # start() builds the run's
@@ -285,12 +292,40 @@ class Balance(Behaviour):
         d.qpos[root + 3:root + 7] = (math.cos(0.5 * pitch), 0.0, math.sin(0.5 * pitch), 0.0)   # about +y: forward
         mujoco.mj_kinematics(m, d)
         hips = 0.5 * (d.xpos[self.hips[0]] + d.xpos[self.hips[1]])
+        return d, hips[2] - posture[0]
+
+    def hands_clearance(self) -> float:
+        """Height (m) of the hands' lowest point above the ground in the held posture, posed
+        kinematically (``_pose_held``)."""
+        m, actor = self.ctx.model, self.ctx.actor
+        d, above = self._pose_held()
         lowest = math.inf
         for side in "RL":
             body = actor.body_id("HAND" + side)
             for g in np.nonzero(m.geom_bodyid == body)[0]:
                 lowest = min(lowest, _geom_bottom(m, d, g))
-        return lowest - (hips[2] - posture[0])
+        return lowest - above
+
+    def held_pelvis_share(self) -> float:
+        """The pelvis's height in the held posture, posed kinematically (``_pose_held``), as a share of
+        its standing height: below 0.5 the run counts as a fall (TARGETS.md's "stable",
+        analysis.standard_metrics), whatever the hips' height."""
+        d, above = self._pose_held()
+        return (d.xpos[self.pelvis][2] - above) / self.ctx.character.bodies[0]["com"][2]
+
+    def pelvis_held_needed(self) -> float:
+        """The least posed pelvis share (``held_pelvis_share``) this request's torso pitch holds above a fall."""
+        forward = min(1.0, max(0.0, self.params["torso_pitch"]) / CONSTANTS.pelvis_sag_pitch)
+        return CONSTANTS.pelvis_held_share + CONSTANTS.pelvis_pitch_sag * forward
+
+    def _check_pelvis_held(self) -> None:
+        share, needed = self.held_pelvis_share(), self.pelvis_held_needed()
+        if share < needed:
+            p = self.params
+            raise ParameterError(
+                f"parameters pelvis_height={p['pelvis_height']:g} m, torso_pitch={p['torso_pitch']:g} rad hold the "
+                f"{self.ctx.character.name}'s pelvis at {share:.3f} of its standing height; allowed: at least "
+                f"{needed:.3f} with this torso pitch (below 0.5 is a fall): a higher pelvis_height or a smaller torso_pitch")
 
     def _check_hands(self) -> None:
         clearance = self.hands_clearance()
