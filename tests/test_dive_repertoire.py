@@ -179,3 +179,39 @@ def test_a_second_search_keeps_the_better_row_and_the_larger_momentum():
     assert better(old, new) == dict(old, largest_momentum_clear=95.0)
     assert better(None, new) == new
     assert better(old, dict(new, score=1.0))["settings"] == {"liftoff_hip": 1.2}
+
+
+def test_a_row_without_the_closure_settings_runs_as_it_was_calibrated():
+    """The position's closure (tuck_time, tuck_stiffness, tuck_damping; ``calibrate dive --closure``) defaults
+    to the move every row was calibrated with before it: a row without them runs bit for bit as its search
+    measured it (the man's 205B: the same somersaults, entry and take-off momentum)."""
+    params = Dive.schema.validate({"dive": "205B"})
+    row = calibrated_row(tuned.load("dives", "man"), params)
+    assert not {"tuck_time", "tuck_stiffness", "tuck_damping"} & set(row["settings"])
+    m = run(RunRequest("dive", "man", params={"dive": "205B"})).meta["metrics"]
+    for key in ("somersaults", "entry_angle_from_vertical_deg", "takeoff_angular_momentum"):
+        assert m[key] == row["measured"][key], key
+
+
+def test_a_dive_reached_with_a_faster_closure_enters_as_a_success():
+    """The man's inward 3½ tuck (407C) made 3.06 somersaults with the closure every row had (0.25 s, stiffness
+    3, damping 6) and the take-off its search found (68 kg m^2/s): refused. Closing in ~0.06 s (searched with
+    the take-off) it is reached; by its number it enters as a success."""
+    params = Dive.schema.validate({"dive": "407C"})
+    row = calibrated_row(tuned.load("dives", "man"), params)
+    assert row["settings"]["tuck_time"] < Dive.schema.by_name["tuck_time"].default
+    traj = run(RunRequest("dive", "man", params={"dive": "407C"}))
+    m = traj.meta["metrics"]
+    assert traj.meta["outcome"] == "success", m
+    assert abs(m["somersaults"] - 3.5) <= ROTATION_TOLERANCE and m["entry_angle_from_vertical_deg"] < 20.0
+    assert not m["hit_platform"] and m["angular_momentum_drift"] < 0.01
+
+
+def test_a_dive_the_faster_closure_did_not_reach_is_still_refused_in_one_line():
+    """The man's inward 3½ pike (407B): two searches with the closure made at most 2.71 somersaults (his inward
+    take-offs reach ~74 of the ~98 kg m^2/s it needs): refused before simulating, in one line."""
+    if "407B" not in not_reached_dives("man"):
+        pytest.xfail("the man reaches 407B")
+    with pytest.raises(ParameterError, match=r"is not reached by the man") as error:
+        run(RunRequest("dive", "man", params={"dive": "407B"}))
+    assert "\n" not in str(error.value)

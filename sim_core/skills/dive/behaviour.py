@@ -67,7 +67,7 @@ CONSTANTS = read_constants("dives", DIVE_CONSTANTS)
 GROUPS = ("inward", "back", "forward", "reverse")
 FORWARD_ROTATING = ("inward", "forward")      # the others somersault backward
 FACING_THE_WATER = ("forward", "reverse")     # the others stand backwards, heels at the edge
-LEAP_SETTINGS = SETTINGS + ("thrust_damping", "twist_lead")
+LEAP_SETTINGS = SETTINGS + ("thrust_damping", "twist_lead", "tuck_time", "tuck_stiffness", "tuck_damping")
 ROTATION_TOLERANCE = 0.25   # turns: a dive's somersaults and twists count within a quarter turn of its name
 
 CALIBRATED_DIVES = {   # the dives python -m sim_core calibrate dive calibrates, per character, in its table's order:
@@ -153,8 +153,8 @@ def calibrated_here(character: str, p: dict) -> bool:
 
 def dive_settings(character: str, p: dict) -> dict:
     """Every take-off setting a run of the dive ``p`` uses (without ``low_level``): load_settings over the
-    schema's defaults of the two a row may lack."""
-    defaults = {k: Dive.schema.by_name[k].default for k in ("thrust_damping", "twist_lead")}
+    schema's defaults of those a row may lack (the thrust's damping, the twist lead, the position's closure)."""
+    defaults = {k: Dive.schema.by_name[k].default for k in ("thrust_damping", "twist_lead", *CLOSURE_SETTINGS)}
     return {**defaults, **load_settings(character, p)}
 
 
@@ -178,7 +178,15 @@ DIVE_SETTINGS = Schema(
     Parameter("twist_lead", "s", 0.6, 0.0, 2.0,
               "twisting dives: open and throw the arms at the latest this long before the predicted entry "
               "(as soon as clear of the platform when it is longer than the flight)"),
+    # the closure into the position once clear of the platform (the defaults: every row calibrated before them)
+    Parameter("tuck_time", "s", Tumble.schema.by_name["move_time"].default, 0.05, 1.0,
+              "the servo move from the lift-off shape into the pike or tuck; shorter closes it sooner"),
+    Parameter("tuck_stiffness", "1", CONSTANTS.snap, 1.0, 4.0,
+              "gain factor of the hip, knee and spine servos for the move into the position"),
+    Parameter("tuck_damping", "1", 0.0, 0.0, 8.0,
+              "damping factor of those servos in that move; 0 = twice the stiffness (overdamped); less closes sooner"),
 )
+CLOSURE_SETTINGS = ("tuck_time", "tuck_stiffness", "tuck_damping")
 
 DIVES_TABLE = register_table(TableType(
     "dives", with_constants(DIVE_SETTINGS, DIVE_CONSTANTS),
@@ -372,7 +380,9 @@ class Dive(Sequence):
 
         def tumble(t):
             self.rotation.takeoff(t)
-            return _Aerial(Tumble.schema.validate(dict(position=p["position"], stiffness=CONSTANTS.snap)), ctx, self.rotation, self)
+            return _Aerial(Tumble.schema.validate(dict(position=p["position"], move_time=cfg["tuck_time"],
+                                                       stiffness=cfg["tuck_stiffness"], damping=cfg["tuck_damping"])),
+                           ctx, self.rotation, self)
 
         def entry(t):
             return _Aerial(Tumble.schema.validate(dict(position=3, move_time=CONSTANTS.open_move, stiffness=CONSTANTS.snap)), ctx,  # definition: 3 is the line

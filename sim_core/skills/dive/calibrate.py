@@ -46,7 +46,7 @@ import numpy as np
 
 ROOT = Path.cwd()                   # docs are written under the folder it runs in (the checkout)
 
-from .behaviour import (CALIBRATED_DIVES, CALIBRATION_PLATFORM, FORWARD_ROTATING, GROUPS, ROTATION_TOLERANCE, Dive,
+from .behaviour import (CALIBRATED_DIVES, CALIBRATION_PLATFORM, CLOSURE_SETTINGS, FORWARD_ROTATING, GROUPS, ROTATION_TOLERANCE, Dive,
                         calibrated_row, dive_key, dive_parameters, nearest_platform_row, row_platform)
 from .fina import REPERTOIRE, parse
 from ... import tuned
@@ -70,6 +70,11 @@ SPACE = {  # name: (low, high) per group
     # momentum of 2 1/2 somersaults only below ~0.6 (measured: 0.3 -> 29 kg m^2/s, 1.0 -> 22)
     "thrust_damping": {g: (0.15, 1.0) for g in GROUPS},
     "twist_lead": {g: (0.3, 1.9) for g in GROUPS},      # twisting dives only
+    # the closure into the position (--closure only): the man's 407C row closing in 0.05 s at stiffness 4, damping 3
+    # instead of 0.25 s at 3, 6 made 3.34 somersaults, not 3.06, with the same take-off (68 kg m^2/s)
+    "tuck_time": {g: (0.05, 0.25) for g in GROUPS},
+    "tuck_stiffness": {g: (2.0, 4.0) for g in GROUPS},
+    "tuck_damping": {g: (1.0, 6.0) for g in GROUPS},
 }
 
 
@@ -109,13 +114,14 @@ def dive_trial(character: str, dive: dict, settings: dict) -> tuple[float, dict]
 
 
 def search(character: str, dive: dict, budget: int, population: int, seed: int, start: dict | None = None,
-           method: str = "cma", executor=None, refine_best: bool = True) -> dict:
+           method: str = "cma", executor=None, refine_best: bool = True, closure: bool = False) -> dict:
     """A search (sim_core.tuning) from the middle of the space, or from ``start`` (the table's
     present settings for this dive and ``--start``; a setting it lacks starts from the middle of
     its range) with a narrower spread, stopped at the first dive that lands balanced within 8 deg
-    of vertical; then ``refine``."""
+    of vertical; then ``refine``. ``closure``: the position's closure (CLOSURE_SETTINGS) is searched too; else
+    a row runs the schema's defaults for it, as every row calibrated before it."""
     group = GROUPS[dive["group"]]
-    names = [n for n in SPACE if n != "twist_lead" or dive["twists"]]
+    names = [n for n in SPACE if (n != "twist_lead" or dive["twists"]) and (closure or n not in CLOSURE_SETTINGS)]
     space = Space({n: SPACE[n][group] for n in names}, decimals=4)
     start = start or {}
     first = {n: start.get(n, 0.5 * sum(SPACE[n][group])) for n in names}
@@ -267,6 +273,8 @@ def main(argv=None) -> None:
     parser.add_argument("--platform", type=float, default=CALIBRATION_PLATFORM,
                         help="platform height (m) the dives are searched from; a reached dive adds a row with this "
                              "platform (default: 10 m, the table's main rows)")
+    parser.add_argument("--closure", action="store_true",
+                        help="search the position's closure (tuck_time, tuck_stiffness, tuck_damping) with the take-off")
     parser.add_argument("--dive", action="append",
                         help="calibrate only this FINA dive of the repertoire (e.g. 107C; repeatable); keep the others' rows")
     args = parser.parse_args(argv)
@@ -292,14 +300,15 @@ def main(argv=None) -> None:
         starts = [dict({} if args.fresh else row["settings"] if reached(row) else nearest_momentum(stored, character, d),
                        **json.loads(args.start or "{}")) for d, row in zip(todo, near)]
         how = {"budget": budget, "population": args.population, "seed": args.seed, "method": args.method,
-               "refine": args.refine, "fresh": args.fresh, "start": args.start}     # a platform row's own search
+               "refine": args.refine, "fresh": args.fresh, "start": args.start,
+               **({"closure": True} if args.closure else {})}     # a platform row's own search
         dives = []
         with executor_for(args.workers) as executor:
             for k, dive in enumerate(todo):
                 key = {n: v for n, v in dive.items() if n != "number"}
                 if k in searched:
                     found = search(character, dict(key, platform_height=here), budget, args.population, args.seed,
-                                   starts[k], args.method, executor, args.refine)
+                                   starts[k], args.method, executor, args.refine, args.closure)
                     if main:
                         dives.append({"number": dive["number"], **better(rows[k], found)})
                     elif reached(found) or rows[k] is not None:
