@@ -185,7 +185,7 @@ def planned_and_run(draw):
 def test_a_target_down_from_a_box_is_offered_commanded_where_its_flat_equivalent_lies_in_the_region():
     """The table's down_region: the same lift-off on flat ground (flat_equivalent) in the commanded region, the box's
     height and the flat-ground air time T0 in down_region (the woman 0.25-0.75 m, T0 0.4-0.49 s; the man 0.25-0.4 m,
-    T0 0.42-0.5 s)."""
+    T0 0.42-0.5 s, and in his high_down_region 0.4-0.75 m with the target at most 1.1 m ahead)."""
     from sim_core.ballistics import flat_air_time
     from sim_core.skills.jump_to_target.commanded import commanded_way, flat_equivalent
     assert flat_equivalent((1.2, 0.0, -0.4), 0.6) == pytest.approx((1.2 * flat_air_time(-0.4, 0.6) / 0.6, 0.6 - 0.8 / (9.80665 * 0.6)))
@@ -194,7 +194,20 @@ def test_a_target_down_from_a_box_is_offered_commanded_where_its_flat_equivalent
     assert commanded_way("woman", (1.0, 0.0, 0.3), 0.6) is None         # onto a box: T0 0.70 s, beyond the long row
     assert commanded_way("woman", (1.0, 0.0, -0.45), 0.6) == "down"
     assert commanded_way("man", (1.2, 0.0, -0.35), 0.6) == "down"       # T0 0.48 s, flat-ground landing 0.96 m
-    assert commanded_way("man", (1.0, 0.0, -0.45), 0.6) is None         # his boxes from 0.42 m missed far targets
+    assert commanded_way("man", (1.2, 0.0, -0.45), 0.6) is None         # his boxes from 0.4 m missed far targets
+    assert commanded_way("man", (1.0, 0.0, -0.45), 0.6) == "down"       # ... and landed near ones (high_down_region)
+
+
+def test_the_man_down_from_a_higher_box_is_offered_near_and_refused_far_in_one_line():
+    """His high_down_region: down from a 0.4-0.75 m box where the flat equivalent lies in his straight row and the
+    target is at most 1.1 m ahead (from 1.28 m his landings fell on the target); just beyond, refused naming it."""
+    from sim_core.skills.jump_to_target.commanded import commanded_way
+    assert commanded_way("man", (1.05, 0.0, -0.7), 0.68) == "down"      # T0 0.47 s, flat-ground landing 0.73 m
+    assert commanded_way("man", (1.15, 0.0, -0.7), 0.68) is None        # 5 cm beyond the region's 1.1 m
+    assert commanded_way("man", (1.05, 0.0, -0.76), 0.68) is None       # higher than issue 29's boxes
+    text = region_refusal("man", (1.15, 0.0, -0.7), 0.68)
+    assert text and "\n" not in text
+    assert "down from a box 0.4-0.75 m high at target_x 0.5-1.1 m where the same lift-off on flat ground" in text
 
 
 @pytest.mark.parametrize("character", ["man", "woman"])
@@ -216,6 +229,22 @@ def test_a_random_target_down_from_a_box_is_flown_by_the_commanded_take_off_as_i
     assert result["measured"]["outcome"] == plan["measured"]["outcome"] == "success"
 
 
+def test_a_random_target_of_the_man_down_from_a_higher_box_lands_balanced():
+    """The first of the report's box draws for the man (seed SEED) down from a box above 0.4 m by his commanded take-off
+    (high_down_region) beyond 1 m ahead (the region's far part; the first such draw at all is the test above's),
+    planned and run as a user's request: within the tolerances and balanced, as its plan was."""
+    from sim_core.skills.jump_to_target.commanded import commanded_way
+    from sim_core.skills.jump_to_target.region import mode
+    box = next(d for d in draw_requests(SEED, ["man"], 0, 0, 0, 40) if d.values[1] < -0.4 and d.values[0] > 1.0
+               and mode("man", (d.values[0], 0.0, d.values[1]), d.values[2]) == "commanded"
+               and commanded_way("man", (d.values[0], 0.0, d.values[1]), d.values[2]) == "down")
+    assert box.values[0] <= 1.1 and box.values[1] >= -0.75
+    result, plan = planned_and_run(box)
+    assert plan["settings"]["commanded_takeoff"] == 1.0 and not plan["settings"].get("landing_recovery_step", 0.0)
+    assert result["passed"], result_line(result)
+    assert result["measured"]["landing"] == plan["measured"]["landing"]
+
+
 def test_a_random_target_onto_a_box_is_flown_by_the_long_row_as_its_plan_was():
     """Onto a box where the same lift-off on flat ground lands in her long air times' region (the table's
     long_onto_region: T0 = T + 2 h / (g T)): the first such draw of the report's box targets, planned commanded
@@ -232,6 +261,26 @@ def test_a_random_target_onto_a_box_is_flown_by_the_long_row_as_its_plan_was():
                if commanded_way("woman", (d.values[0], 0.0, d.values[1]), d.values[2]) == "long_onto")
     result, plan = planned_and_run(box)
     assert plan["settings"]["vertical_thrust"] == 1.0 and plan["settings"]["commanded_takeoff"] == 1.0
+    assert result["passed"], result_line(result)
+    assert result["measured"]["landing"] == plan["measured"]["landing"]
+
+
+def test_a_random_target_of_the_man_onto_a_box_is_flown_by_his_far_long_row():
+    """His long_onto_region: onto a 0.25-0.4 m box where the same lift-off on flat ground lands 1.6-1.9 m ahead (the far
+    long row's region, flat_target_x: nearer, the row's landings missed) in 0.55-0.65 s; the first such draw of the
+    report's box targets planned with the long row and run as a user's request; a target just outside refused in one
+    line naming the limit."""
+    from sim_core.skills.jump_to_target.commanded import commanded_way
+    assert commanded_way("man", (1.3, 0.0, 0.34), 0.48) == "long_onto"           # T0 0.62 s, flat landing 1.69 m
+    assert commanded_way("man", (1.25, 0.0, 0.255), 0.481) is None               # flat landing 1.53 m: short of 1.6 m
+    assert commanded_way("man", (1.2, 0.0, 0.44), 0.42) is None                  # above 0.4 m: 10 of 13 landed
+    text = region_refusal("man", (1.25, 0.0, 0.255), 0.481)
+    assert text and "\n" not in text and "onto a box 0.25-0.4 m high at target_x 0.85-1.9 m where the same lift-off on " \
+        "flat ground would land in the long air times' region at 1.6-1.9 m in 0.55-0.65 s" in text
+    box = next(d for d in draw_requests(SEED, ["man"], 0, 0, 0, 40)
+               if commanded_way("man", (d.values[0], 0.0, d.values[1]), d.values[2]) == "long_onto")
+    result, plan = planned_and_run(box)
+    assert plan["settings"]["vertical_thrust"] == 1.0 and plan["settings"]["lean_push"] == 3.0
     assert result["passed"], result_line(result)
     assert result["measured"]["landing"] == plan["measured"]["landing"]
 

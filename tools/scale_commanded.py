@@ -65,7 +65,7 @@ def main() -> None:
             "region": {"target_x": [x0, x1], "target_y": [y0, y1], "air_time": [t0, t1]},
             "measured": args.measured}
     before = read("jump_commanded", args.target) or {}
-    for key in ("turn_headings", "long_region", "long_settings", "long_crouch_by_air_time", "down_region", "down_settings",
+    for key in ("turn_headings", "long_region", "long_settings", "long_crouch_by_air_time", "down_region", "high_down_region", "long_onto_region", "down_settings",
                 "near_long_region", "near_long_settings", "near_long_crouch_by_air_time", "turned_long_region",
                 "turned_long_settings", "turned_near_long_region", "mid_long_settings",
                 "mid_long_crouch_by_air_time", "turned_mid_long_region"):

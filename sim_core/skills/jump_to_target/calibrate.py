@@ -1517,6 +1517,78 @@ Tests: tests/test_jump_region.py's `test_turn_for_point_moves_each_flown_hops_li
 turned long row at 0.52-0.55 s (a crouch-and-aim model of two knobs, or the region's air time from 0.55 s: every
 miss left but one of seeds 202 and 303 is there) and nearer than 1.0 m (seed 404's) and the woman's own long-row `turn_lines` (measuring them after the long row would give
 the first hop's line without a flown jump).
+**The man down from higher boxes and onto low ones: down from 0.4-0.75 m boxes up to 1.1 m ahead, onto 0.25-0.4 m
+boxes by his far long row (issue 29, twenty-fourth session, 2026-12-06): his box targets 3.7 % -> 6.6 %.** His
+commanded take-off was offered down from 0.25-0.4 m boxes only (`down_region`): the twentieth session's misses from
+0.42-0.5 m boxes were far targets that fell on the target. Reproduced with his table as it is (`tools/commanded_jumps.py
+--character man --table --random N --seed S --heights 0.4,0.75 --down [--forward F] --flat-air-times 0.42,0.5
+--flat-forward 0.5,1.2 --aim 9 --plan-landing 9 [--set landing_recovery_step=1]`; within 5 cm and 0.05 s and balanced):
+- seed 11, 0.5-1.9 m: **6 / 12** - every target from 0.68 to 0.98 m hit and balanced (6 / 6), every one from 1.28 m
+  (1.28-1.76 m from 0.53-0.74 m boxes) landed on the target (0-2 cm) and fell at every foot placement but one 12 cm
+  off; with the recovery step the same 6 hit, the far ones fell after the step or their aims ran 47-62 cm short;
+- seed 12, 0.5-1.1 m: **16 / 16** (boxes 0.42-0.72 m, trials a median of 3, at most 7);
+- seed 15, 1.1-1.3 m: **5 / 10** (the hits up to 1.15 m and one at 1.23 m; from 1.18 m falls on the target and aims
+  12-20 cm short).
+So what fails is the landing of a far target after a high drop: the far ones touch down faster forward (x / T
+2.0-2.7 m/s) after about the same drop (v_z^2 / 2 g 0.75-0.97 m) as the near ones that land (0.74-0.97 m at 1.3-1.6
+m/s). The jump's landing is the land skill's controller (control/leap.py `Landing`, its feet placed by the landing
+table's `foot_delta` rows for the horizontal and touchdown speeds, rows measured up to 0.6 m drops); that table's
+`drop_limits` (0.6 m at 1.5-3 m/s, 1.0 m at 1 m/s) would refuse every target of the higher boxes, the near ones that
+land too, so they are not the bound here. The bound is the target's own forward distance, measured: the table's new optional
+`high_down_region` (the keys of `down_region` and `target_x`, [low, high] m; `commanded.box_way` "down", planned as
+`down_region`'s targets: no recovery step) - heights 0.4-0.75 m, T0 0.42-0.5 s, target_x 0.5-1.1 m. A target beyond is
+refused in one line (`commanded_limit`: "... and down from a box 0.4-0.75 m high at target_x 0.5-1.1 m where the same
+lift-off on flat ground would land in that region in 0.42-0.5 s (T0 = air_time - 2 height / (g air_time), at target_x
+T0 / air_time)"). As a user's requests (`python -m sim_core report random --seed S --jumps 0 --leaps 0 --broad 0
+--boxes 20 --characters man --workers 1 --out ...`, budget 24), fresh seeds, before -> after (the draws differ: the
+region does):
+- 501: **17 / 20 -> 17 / 20** (median / worst 2.9 / 20.2 -> 7.8 / 14.0 s); after, the higher boxes 10 / 11 (the miss
+  (0.842 m, 0.472 m box, 0.611 s) 10.5 cm off after 9 aimed jumps), the misses of the 0.25-0.4 m row the same two as
+  before ((1.401 m, 0.351 m) on the target and fell at every placement; (1.309 m, 0.291 m) 5.1 cm off after 3 trials);
+- 502: **19 / 20 -> 19 / 20** (4.0 / 16.6 -> 3.8 / 10.5 s; higher boxes 8 / 8; the miss onto a 0.422 m box by his
+  measured jumps, 5.4 cm off, before and after);
+- 503: **19 / 20 -> 20 / 20** (2.9 / 15.9 -> 4.3 / 7.1 s; higher boxes 9 / 9).
+With the down row alone the new part landed 27 / 28 (96 %), every box draw 56 / 60 (93 %; before 55 / 60), his
+share of issue 29's box targets (seed 29, `random_requests.box_region_share`) 3.7 % -> 5.7 % (down 7.0 % -> 10.9 %).
+Onto a box needs T0 = T + 2 h / (g T) >= 0.53 s, only his long rows fly it. Three rows measured (`tools/commanded_jumps.py
+--character man --table --long [--set ...] --random N --seed S --heights 0.25,0.5 --onto --forward F --flat-air-times A
+--flat-forward X --aim 9 --plan-landing 9`):
+- the near row (`--set lean_push=10 --crouch-by-air-time 0.65:0.52,0.6:0.56,0.55:0.62,0.525:0.66`, seed 13, 0.85-1.3 m,
+  T0 0.5-0.65 s, flat 0.5-1.3 m): **5 / 12** - every box from 0.347 m fell, all but one on the target (aims run to 1.6-2.5 m: the
+  row's forward speed saturates), the hits 0.25-0.3 m;
+- the mid row (`--set lean_push=5 --set landing_arm_pitch_gain=0 --crouch-by-air-time
+  0.6:0.52,0.575:0.55,0.55:0.6,0.525:0.655,0.5:0.675`), seed 14 (0.85-1.3 m, T0 0.52-0.65 s, flat 1.2-1.5 m): **7 / 12**;
+  seed 16 (0.85-1.6 m, T0 0.55-0.65 s, flat 1.3-1.5 m): **5 / 12**, with `--set landing_recovery_step=0` the same five:
+  air times up to 0.43 s flew 0.04-0.07 s long (its shallowest crouch flies ~0.455 s), boxes from 0.43 m fell;
+- the far row as his table holds it now (`long_settings`: `lean_push` 3, `arm_swing` 1.5, `com_offset` 0; the
+  nineteenth session measured 7 / 12 onto boxes with his long row of then, the misses beyond the target), T0
+  0.55-0.65 s, flat equivalents in its `long_region` (1.5-1.9 m), 0.85-1.9 m: seed 17 **10 / 12**, 12 balanced, seed
+  18 **15 / 16**, 16 balanced; all three misses (6.3, 9.3 and 13.9 cm off) had flat equivalents 1.53-1.58 m (the row
+  on flat ground missed nearer than 1.54 m too: it leaves at ~1.3 m/s or more, the aims ran to 0.6-0.95 m), every one
+  from 1.6 m hit (21 / 21). So flat 1.6-1.9 m: fresh seed 19 **14 / 16**, 16 balanced - the misses onto 0.438 and 0.412 m
+  boxes in 0.441 and 0.404 s, 6.2 and 6.1 cm off; and as a user's requests (seed 501, the region 0.25-0.5 m) 3 / 4, the
+  miss onto a 0.418 m box in 0.432 s, 5.3 cm off. Every box up to 0.4 m landed (seeds 17-19 and 501: 28 / 28 from 1.6
+  m), above 0.4 m 10 / 13.
+So the man's table now has a `long_onto_region` (the woman's key; `box_way` "long_onto", flown by `long_body`: the far
+row with its recovery step): heights 0.25-0.4 m, T0 0.55-0.65 s, target_x 0.85-1.9 m, and a new optional key of the box
+regions, `flat_target_x` (the flat equivalent's landing, [low, high] m, within the row's region), 1.6-1.9 m. A target
+outside is refused in one line (`commanded_limit`: "... and onto a box 0.25-0.4 m high at target_x 0.85-1.9 m where the
+same lift-off on flat ground would land in the long air times' region at 1.6-1.9 m in 0.55-0.65 s (T0 = air_time + 2
+height / (g air_time))"). As a user's requests (`python -m sim_core report random --seed S --jumps 0 --leaps 0 --broad 0
+--boxes 20 --characters man --workers 1 --out ...`), seeds 501-503 again with both rows, before (the table at the
+session's start) -> after: 501 **17 / 20 -> 18 / 20** (median / worst 2.9 / 20.2 -> 7.8 / 15.1 s), 502 **19 / 20 -> 19 / 20**
+(4.0 / 16.6 -> 5.5 / 15.7 s; the miss the same, onto a 0.422 m box by his measured jumps), 503 **19 / 20 -> 20 / 20**
+(2.9 / 15.9 -> 5.7 / 16.7 s): 55 / 60 -> **57 / 60 (95 %)**; of the new parts the higher boxes 24 / 25 (the miss as
+above, (0.842 m, 0.472 m box) 10.5 cm off) and onto by the far row 8 / 8.
+His share of issue 29's box targets (seed 29, `random_requests.box_region_share`): 3.7 % -> **6.6 %** (onto 0.5 % ->
+2.2 %, down 7.0 % -> 10.9 %). The woman's unchanged: 16.7 %, and her 20 box draws of seed 501 (`--characters woman`)
+ran the same before and after, landing for landing (18 / 20 both; her table and her code path are untouched).
+Not done: his far targets down from higher boxes (from ~1.15 m their landings fall: a landing for fast, hard
+touchdowns - the land skill's rows stop at 0.6 m drops - would be the design); onto boxes above 0.4 m (10 / 13: the
+misses 5-6 cm off at air times 0.40-0.44 s) and onto a box whose flat equivalent is nearer than 1.6 m or beyond his far
+row's T0 0.65 s (most of issue 29's onto targets: T0 runs to 1.0 s; the woman's long row flies to 0.7 s); the two
+misses of his 0.25-0.4 m row seen on seed 501 ((1.401 m, 0.351 m box) on the target and fell at every placement,
+(1.309 m, 0.291 m) 5.1 cm off after 3 trials), left as they were.
 
 ![commanded vs achieved landing point](jump_to_target.png)
 

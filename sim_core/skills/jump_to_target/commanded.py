@@ -52,6 +52,10 @@ Fig. 6 with his thrust slowed for his strength, tools/scale_commanded.py and doc
   time on flat ground, ballistics.flat_air_time, and the forward speed over it; the crouch is chosen by that
   air time); ``down_settings`` replace the table's settings for it (the landing's recovery step: the drop
   lands harder).
+- ``high_down_region`` (optional, with ``down_region``): the same keys as ``down_region`` and ``target_x`` ([low, high] m,
+  the target's own forward distance) for higher boxes, flown as ``down_region``'s: from a higher box a far target's
+  landing (faster forward with a harder drop) fell at every foot placement while a nearer one's stood
+  (docs/jump_to_target.md, "The man down from higher boxes");
 - ``near_long_region`` (optional, with ``long_settings``, ``near_long_settings`` and ``near_long_crouch_by_air_time``):
   a second long row for long air times nearer than ``long_region`` (the same keys), flown with ``long_settings`` and
   ``near_long_settings`` over them (its own lean push, ``lean_push``: the man's long row leaves at ~1.3 m/s forward
@@ -66,7 +70,9 @@ Fig. 6 with his thrust slowed for his strength, tools/scale_commanded.py and doc
   jump straight ahead onto a box / down from one flown by the long row (long_body) where the flight's flat
   equivalent lies in ``long_region`` with its air time in ``flat_air_time``; ``target_x`` (optional, [low, high] m)
   bounds the target's own forward distance (onto a box: a nearer box's front edge, 0.3 m before the target, is
-  not cleared). Onto a box needs T0 = T + 2 h / (g T) >= 0.53 s: only the long row flies it.
+  not cleared); ``flat_target_x`` (optional, [low, high] m) bounds the flat equivalent's landing within the row's
+  region (the man's far long row onto a box missed where it lands nearer than 1.6 m on flat ground). Onto a box needs
+  T0 = T + 2 h / (g T) >= 0.53 s: only the long row flies it.
 
 ``jump_commanded_any.json`` holds the planner's constants (the aim's bound and tolerances, the
 landing plan's bound); a character's table may hold its own in a "constants" section
@@ -281,19 +287,22 @@ def commanded_way(character: str, target, air_time: float) -> str | None:
 
 def box_way(body: dict, target, air_time: float) -> str | None:
     """commanded_way for a target onto a box (z > 0) or down from one (z < 0), straight ahead: its flat equivalent
-    (flat_equivalent) in the table's ``region`` with the height and T0 in ``down_region``: "down"; in its
+    (flat_equivalent) in the table's ``region`` with the height and T0 in ``down_region`` or (and the target's own
+    forward distance) in ``high_down_region``: "down"; in its
     ``long_region`` with them in ``long_down_region`` / ``long_onto_region``: "long_down" / "long_onto" (the long row,
     long_body); else None."""
     z = float(target[2])
     x, air_time = flat_equivalent(target, air_time)
     values = {"target_x": x, "target_y": float(target[1]), "air_time": air_time}
-    rows = (("down", "region", "down_region"), ("long_down", "long_region", "long_down_region")) if z < 0.0 \
+    rows = (("down", "region", "down_region"), ("down", "region", "high_down_region"),
+            ("long_down", "long_region", "long_down_region")) if z < 0.0 \
         else (("long_onto", "long_region", "long_onto_region"),)
     for way, region_key, box_key in rows:
         region, box = body.get(region_key), body.get(box_key)
         if (region is not None and box is not None and box["height"][0] <= abs(z) <= box["height"][1]
                 and box.get("target_x", (-math.inf, math.inf))[0] <= float(target[0]) <= box.get("target_x", (-math.inf, math.inf))[1]
                 and box["flat_air_time"][0] <= air_time <= box["flat_air_time"][1]
+                and box.get("flat_target_x", (-math.inf, math.inf))[0] <= x <= box.get("flat_target_x", (-math.inf, math.inf))[1]
                 and all(region[k][0] <= v <= region[k][1] for k, v in values.items())):
             return way
     return None
@@ -323,10 +332,13 @@ def _turned(region: dict) -> str:
 
 
 def _box(region: dict, way: str, landing: str, sign: str) -> str:
-    """A box region (height, flat_air_time, optional target_x) in words: the same lift-off's flat landing in ``landing``."""
+    """A box region (height, flat_air_time, optional target_x and flat_target_x) in words: the same lift-off's flat
+    landing in ``landing``."""
     return (f"{way} a box {region['height'][0]:g}-{region['height'][1]:g} m high"
             + (f" at target_x {region['target_x'][0]:g}-{region['target_x'][1]:g} m" if "target_x" in region else "")
-            + f" where the same lift-off on flat ground would land in {landing} in "
+            + f" where the same lift-off on flat ground would land in {landing}"
+            + (f" at {region['flat_target_x'][0]:g}-{region['flat_target_x'][1]:g} m" if "flat_target_x" in region else "")
+            + " in "
               f"{region['flat_air_time'][0]:g}-{region['flat_air_time'][1]:g} s (T0 = air_time {sign} 2 height / (g air_time)")
 
 
@@ -340,6 +352,8 @@ def commanded_limit(character: str) -> str | None:
         parts.append(f"turned first {_turned(body['turned_region'])}")
     if body.get("down_region"):
         parts.append(_box(body["down_region"], "down from", "that region", "-") + ", at target_x T0 / air_time)")
+    if body.get("high_down_region"):
+        parts.append(_box(body["high_down_region"], "down from", "that region", "-") + ", at target_x T0 / air_time)")
     if body.get("sideways_region"):
         parts.append(f"turned a quarter first {_turned(body['sideways_region'])}")
     if body.get("long_region"):
