@@ -12,7 +12,7 @@ and air time interpolated between the two, ``served``); anything else is refused
 simulating, in one line naming the limit (``region_refusal``). Only reads the table: the measuring
 is planning's.
 
-A character with a commanded take-off table (commanded.py: the woman's) is also offered the box
+A character with a commanded take-off table (commanded.py: the man's and the woman's) is also offered the box
 measured for it on flat ground (``in_region``); ``mode`` says which of the two plans a request
 (planning/jump.py: the measured jumps', or planning/commanded.py), and a refusal of a request
 outside both names both limits.
