@@ -258,6 +258,21 @@ def test_a_deep_crouch_whose_pitched_pelvis_sinks_below_half_is_refused_and_abov
     assert balanced(run(RunRequest("balance", "man", params=behaviour_params("balance", "man", dict(
         pelvis_height=0.546, torso_pitch=1.0, move_time=4.0)))))
 
+def test_the_cyclists_pitched_crouch_is_refused_by_its_own_sag_and_above_it_holds():
+    """docs/skills/balance.md, "The imaginary cyclist": its pelvis sinks 0.11-0.19 of its standing height below
+    the posed one with the torso pitched (the man's 0.03-0.05); at 0.435 m with 0.6 rad it fell; its own
+    table (balance_imaginary_cyclist.json) refuses that in one line, and 0.585 m with 1.0 rad holds."""
+    from sim_core.errors import ParameterError
+    from sim_core.request import behaviour_params
+    with pytest.raises(ParameterError) as error:
+        run(RunRequest("balance", "imaginary_cyclist", params=behaviour_params("balance", "imaginary_cyclist", dict(
+            pelvis_height=0.435, torso_pitch=0.6, move_time=4.0))))
+    message = str(error.value)
+    assert "\n" not in message and "pelvis_height=0.435" in message and "allowed" in message
+    assert balanced(run(RunRequest("balance", "imaginary_cyclist", params=behaviour_params(
+        "balance", "imaginary_cyclist", dict(pelvis_height=0.585, torso_pitch=1.0, move_time=4.0)))))
+
+
 PANEL = ("pelvis_height", "torso_pitch", "com_offset_x", "com_offset_y", "arm_abduction", "arm_flexion",
          "elbow_flexion", "head_pitch")
 

@@ -23,7 +23,7 @@ from .measure import SupportGeometry, compliant_boxes, over_a_box
 from .servo import hermite_scalar
 from ..errors import ParameterError
 from ..schema import Parameter, Schema
-from ..tuned.constants import constant, read_constants, register_constants
+from ..tuned.constants import constant, own_constants, read_constants, register_constants
 
 # the balance's hand-set constants: data, balance_any.json's "constants" (docs/tables.md)
 BALANCE_CONSTANTS = Schema(
@@ -334,9 +334,11 @@ class Balance(Behaviour):
         return (d.xpos[self.pelvis][2] - above) / self.ctx.character.bodies[0]["com"][2]
 
     def pelvis_held_needed(self) -> float:
-        """The least posed pelvis share (``held_pelvis_share``) this request's torso pitch holds above a fall."""
-        forward = min(1.0, max(0.0, self.params["torso_pitch"]) / CONSTANTS.pelvis_sag_pitch)
-        return CONSTANTS.pelvis_held_share + CONSTANTS.pelvis_pitch_sag * forward
+        """The least posed pelvis share (``held_pelvis_share``) this request's torso pitch holds above a fall
+        (the body's own sag where its ``balance_<character>.json`` holds one: the imaginary cyclist's)."""
+        own = own_constants("balance", self.ctx.character.name, CONSTANTS)
+        forward = min(1.0, max(0.0, self.params["torso_pitch"]) / own.pelvis_sag_pitch)
+        return own.pelvis_held_share + own.pelvis_pitch_sag * forward
 
     def _check_pelvis_held(self) -> None:
         share, needed = self.held_pelvis_share(), self.pelvis_held_needed()
