@@ -195,6 +195,22 @@ def test_a_body_gets_the_com_servo_gains_scaled_to_its_size():
     assert behaviour_params("balance", "child", ["com_kp=4"])["com_kp"] == 4.0       # a value the user sets is kept
 
 
+def test_a_body_whose_hip_servo_is_stiffer_than_the_mans_gets_a_gentler_hip_strategy():
+    """docs/skills/balance.md, "The imaginary cyclist": its hip servo is 2.8 times the man's per kg of body and
+    metre of leg; the hip strategy's offsets scaled by his over its own stiffness, it stands with the default
+    request through behaviour_params (the CLI's), which it fell from at 2.3 s with the man's hip strategy."""
+    from sim_core.character.spec import load_character
+    from sim_core.control.balance import hip_servo_stiffness
+    from sim_core.request import behaviour_params
+    assert behaviour_params("balance", "man")["hip_strategy_scale"] == 1.0
+    params = behaviour_params("balance", "imaginary_cyclist")
+    ratio = hip_servo_stiffness(load_character("man")) / hip_servo_stiffness(load_character("imaginary_cyclist"))
+    assert params["hip_strategy_scale"] == pytest.approx(ratio, abs=1e-4) and ratio < 0.4
+    traj = run(RunRequest("balance", "imaginary_cyclist", params=params))
+    assert balanced(traj), traj.meta["metrics"]
+    assert not balanced(run(RunRequest("balance", "imaginary_cyclist", params={**params, "hip_strategy_scale": 1.0})))
+
+
 def test_the_child_holds_a_slow_pitched_move_with_her_own_gains_and_square_feet():
     """docs/skills/balance.md, "The child's slow moves": with the man's per-metre COM gains her COM crept
     toward her toes in a slow pitched move with a forward offset and she fell on the way back (13.5 s);
@@ -241,6 +257,21 @@ def test_a_deep_crouch_whose_pitched_pelvis_sinks_below_half_is_refused_and_abov
     assert "\n" not in message and "pelvis_height=0.462" in message and "torso_pitch=0.277" in message and "allowed" in message
     assert balanced(run(RunRequest("balance", "man", params=behaviour_params("balance", "man", dict(
         pelvis_height=0.546, torso_pitch=1.0, move_time=4.0)))))
+
+def test_the_cyclists_pitched_crouch_is_refused_by_its_own_sag_and_above_it_holds():
+    """docs/skills/balance.md, "The imaginary cyclist": its pelvis sinks 0.11-0.19 of its standing height below
+    the posed one with the torso pitched (the man's 0.03-0.05); at 0.435 m with 0.6 rad it fell; its own
+    table (balance_imaginary_cyclist.json) refuses that in one line, and 0.585 m with 1.0 rad holds."""
+    from sim_core.errors import ParameterError
+    from sim_core.request import behaviour_params
+    with pytest.raises(ParameterError) as error:
+        run(RunRequest("balance", "imaginary_cyclist", params=behaviour_params("balance", "imaginary_cyclist", dict(
+            pelvis_height=0.435, torso_pitch=0.6, move_time=4.0))))
+    message = str(error.value)
+    assert "\n" not in message and "pelvis_height=0.435" in message and "allowed" in message
+    assert balanced(run(RunRequest("balance", "imaginary_cyclist", params=behaviour_params(
+        "balance", "imaginary_cyclist", dict(pelvis_height=0.585, torso_pitch=1.0, move_time=4.0)))))
+
 
 PANEL = ("pelvis_height", "torso_pitch", "com_offset_x", "com_offset_y", "arm_abduction", "arm_flexion",
          "elbow_flexion", "head_pitch")

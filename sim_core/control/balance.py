@@ -23,7 +23,7 @@ from .measure import SupportGeometry, compliant_boxes, over_a_box
 from .servo import hermite_scalar
 from ..errors import ParameterError
 from ..schema import Parameter, Schema
-from ..tuned.constants import constant, read_constants, register_constants
+from ..tuned.constants import constant, own_constants, read_constants, register_constants
 
 # the balance's hand-set constants: data, balance_any.json's "constants" (docs/tables.md)
 BALANCE_CONSTANTS = Schema(
@@ -82,6 +82,16 @@ SCALED_GAINS = ("com_kp", "com_kv", "height_kp")  # definition: the gains per me
 
 SPINE_Y = ("spine_l3_y", "spine_l1_y", "spine_t7_y", "spine_t4_y")
 CROUCH_TABLE_ROWS = 6      # balanced crouch poses solved between standing and the requested height
+
+
+def hip_servo_stiffness(character) -> float:
+    """The hip pitch servo's stiffness per kg of body and metre of leg (N m/rad / (kg m)): a hip offset's
+    push on the whole body through the legs and the ground (the fast hip strategy's authority per tick).
+    Fig. 6's scaling keeps it for a body shaped like the man; Fig. 3's bodies differ (the imaginary
+    cyclist's heavy trunk, whose inertia about the hip sets its hip servo, gives 2.8 times his)."""
+    from ..character.dimensions import fig3_measures
+    kp = character.dofs[character.dof_index["hip_r_y"]].kp
+    return kp / (character.total_mass * fig3_measures(character)["leg length"])
 
 
 def standing_hip_height(character) -> float:
@@ -189,6 +199,11 @@ class Balance(Behaviour):
                   "skills, whose tables were measured without it"),
         Parameter("height_kp", "rad/m", 10.0, 0.0, 40.0,
                   "pelvis height servo: knee offset per metre of height error (corrects servo sag)"),
+        Parameter("hip_strategy_scale", "1", 1.0, 0.0, 2.0,
+                  "the fast hip strategy's hip offsets (hip_share and excess_to_hip per unit of the COM servo's "
+                  "speed term) times this; 1 = as set for the man. A body whose hip servo is stiffer per kg of "
+                  "body and metre of leg than his gets his stiffness over its own (character_defaults): the "
+                  "imaginary cyclist's, 2.8 times his, drove the hips tick against tick and it fell standing"),
     )
 
     def __init__(self, params, ctx: ControlContext, from_height: float | None = None,
@@ -238,15 +253,20 @@ class Balance(Behaviour):
         """The COM and height servos' gains (SCALED_GAINS, set for the man: Wooten's) scaled to
         ``character`` by Fig. 6 (geometric: they carry no mass; L its leg length over his): with the
         man's per-metre gains the child's COM crept toward her toes and she fell in slow pitched moves
-        (docs/skills/balance.md). The balances inside other skills keep the schema's."""
+        (docs/skills/balance.md). And ``hip_strategy_scale``: the man's hip servo stiffness over the body's
+        (``hip_servo_stiffness``), at most 1 - the imaginary cyclist's stiff hip drove the hip strategy tick
+        against tick and it fell standing. The balances inside other skills keep the schema's."""
         from ..adapt.scaling import ScaleFactors, Units, scale
         from ..character.dimensions import leg_length_ratio
         from ..character.spec import available_characters, load_character
         if character == GAINS_SET_FOR or character not in available_characters():
             return {}               # a body made into a file of its own is known here by name only: the schema's
-        factors = ScaleFactors(leg_length_ratio(load_character(GAINS_SET_FOR), load_character(character)))
-        return {name: round(scale(cls.schema.by_name[name].default, Units.parse(cls.schema.by_name[name].unit), factors), 4)
-                for name in SCALED_GAINS}
+        man, body = load_character(GAINS_SET_FOR), load_character(character)
+        factors = ScaleFactors(leg_length_ratio(man, body))
+        gains = {name: round(scale(cls.schema.by_name[name].default, Units.parse(cls.schema.by_name[name].unit), factors), 4)
+                 for name in SCALED_GAINS}
+        hip_scale = min(1.0, hip_servo_stiffness(man) / hip_servo_stiffness(body))
+        return {**gains, "hip_strategy_scale": round(hip_scale, 4)}
 
     @classmethod
     def duration_for(cls, params: dict, character: str, strength) -> float:
@@ -314,9 +334,11 @@ class Balance(Behaviour):
         return (d.xpos[self.pelvis][2] - above) / self.ctx.character.bodies[0]["com"][2]
 
     def pelvis_held_needed(self) -> float:
-        """The least posed pelvis share (``held_pelvis_share``) this request's torso pitch holds above a fall."""
-        forward = min(1.0, max(0.0, self.params["torso_pitch"]) / CONSTANTS.pelvis_sag_pitch)
-        return CONSTANTS.pelvis_held_share + CONSTANTS.pelvis_pitch_sag * forward
+        """The least posed pelvis share (``held_pelvis_share``) this request's torso pitch holds above a fall
+        (the body's own sag where its ``balance_<character>.json`` holds one: the imaginary cyclist's)."""
+        own = own_constants("balance", self.ctx.character.name, CONSTANTS)
+        forward = min(1.0, max(0.0, self.params["torso_pitch"]) / own.pelvis_sag_pitch)
+        return own.pelvis_held_share + own.pelvis_pitch_sag * forward
 
     def _check_pelvis_held(self) -> None:
         share, needed = self.held_pelvis_share(), self.pelvis_held_needed()
@@ -564,7 +586,8 @@ class Balance(Behaviour):
         # (forward only: bending at the hips stops a forward fall; leaning the trunk back to stop
         # a backward one tips a character that is already behind its heels)
         velocity_excess = max(velocity_x - self.ankle_limit_front, 0.0)
-        hip_x = -CONSTANTS.hip_share * velocity_x - CONSTANTS.excess_to_hip * velocity_excess
+        hip_x = self.params["hip_strategy_scale"] * (-CONSTANTS.hip_share * velocity_x
+                                                     - CONSTANTS.excess_to_hip * velocity_excess)
         hip_x = min(max(hip_x, -CONSTANTS.hip_strategy_max), CONSTANTS.hip_strategy_max)
         delta_y = kp * (-s * gx + c * gy - centre_y - posture[3]) + kv * (-s * vx + c * vy)  # eq. 7.2
 
