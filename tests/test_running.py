@@ -464,12 +464,11 @@ def test_the_woman_runs_a_random_speed_of_her_range():
 @pytest.mark.slow
 @pytest.mark.parametrize("character", ["child", "imaginary_runner"])
 def test_a_scaled_character_runs_100_s_at_a_speed_of_its_table(character):
-    """The child (Fig. 3, 1.08 m, 26 kg: the man's row mass-scaled, then searched; 2.5-3.0 m/s) and
+    """The child (Fig. 3, 1.08 m, 26 kg: the man's row mass-scaled, then searched; 2.5-2.8 and 3.0 m/s) and
     the imaginary runner (1.61 m, 46.5 kg: reached through bodies between the woman and it; 3.0 m/s;
     docs/running.md): 100 s from a stand at a speed drawn in the table's range, no fall, speed within
     5 %; a speed beyond the range is refused."""
-    speeds = SpeedTable.load(character).speeds
-    low, high = speeds[0], speeds[-1]
+    low, high = SpeedTable.load(character).offered()[0]      # the child's 2.8-3.0 m/s is refused (docs/running.md)
     speed = float(np.random.default_rng(28).uniform(low, high))
     traj = run(RunRequest("running", character, params={"speed": speed}, duration=100.0))
     m = traj.meta["metrics"]
@@ -477,7 +476,34 @@ def test_a_scaled_character_runs_100_s_at_a_speed_of_its_table(character):
     assert not_fallen(traj), f"fell at {m['fall_time']:.1f} s"
     assert abs(m["gait"]["mean_speed"] - speed) <= SPEED_TOLERANCE * speed
     with pytest.raises(ParameterError, match=rf"\[{low:g}, {high:g}\]"):
-        run(RunRequest("running", character, params={"speed": high + 0.2}, duration=0.05))
+        run(RunRequest("running", character, params={"speed": SpeedTable.load(character).speeds[-1] + 0.2}, duration=0.05))
+
+
+@pytest.mark.slow
+def test_the_child_runs_20_s_at_a_random_speed_of_her_offered_range():
+    """Through the CLI's parameter path (``behaviour_params``) the child fell 4.8-5.9 s from a stand at single
+    speeds of 2.82-2.94 m/s (2.825, 2.8325, 2.8375, 2.84, 2.891, 2.9325); 2.8-3.0 m/s is refused since (docs/running.md,
+    the child's arrival at her speed): a speed drawn in what she is offered, its top (2.8) and 3.0 run 20 s."""
+    from sim_core.request import behaviour_params
+    low, high = SpeedTable.load("child").offered()[0]
+    drawn = round(float(np.random.default_rng(1406).uniform(low, high)), 3)
+    for speed in (drawn, high, 3.0):
+        traj = run(RunRequest("running", "child", params=behaviour_params("running", "child", {"speed": speed}),
+                              duration=20.0))
+        assert not_fallen(traj), f"{speed} m/s: fell at {traj.meta['metrics']['fall_time']:.2f} s"
+
+
+@pytest.mark.parametrize("speed, allowed", [(2.45, "[2.5, 5]"), (2.825, "[2.5, 2.8] or [3, 3]"),
+                                            (2.95, "[2.5, 2.8] or [3, 3]"), (3.05, "[2.5, 2.8] or [3, 3]")])
+def test_a_child_speed_outside_what_she_is_offered_is_refused_in_one_line(speed, allowed):
+    """The child is offered 2.5-2.8 and 3.0 m/s (2.8-3.0 refused: single speeds fell there, docs/running.md); any
+    other speed is refused before anything runs, naming what is allowed (below 2.5 m/s the schema's own range,
+    whose floor is hers)."""
+    from sim_core.request import behaviour_params
+    with pytest.raises(ParameterError) as error:
+        run(RunRequest("running", "child", params=behaviour_params("running", "child", {"speed": speed}), duration=0.05))
+    text = str(error.value)
+    assert "\n" not in text and f"speed={speed:g}" in text and allowed in text, text
 
 
 @pytest.mark.parametrize("character, values, words", [
