@@ -273,12 +273,29 @@ def test_the_cyclists_pitched_crouch_is_refused_by_its_own_sag_and_above_it_hold
         "balance", "imaginary_cyclist", dict(pelvis_height=0.585, torso_pitch=1.0, move_time=4.0)))))
 
 
+def test_the_cyclists_own_pitch_rate_back_pitch_and_hands_refuse_what_it_fell_in_and_a_lean_back_holds():
+    """docs/skills/balance.md, "The imaginary cyclist's own limits": it fell pitching to 1.19 rad in a 0.93 s move
+    at 0.587 m, leaning back -0.24 rad at 0.586 m, and with the torso at 1.6 rad standing (its hands reached the
+    ground); its own table refuses each in one line, and -0.2 rad in a crouch to 0.51 m holds."""
+    from sim_core.errors import ParameterError
+    from sim_core.request import behaviour_params
+    for params, named in ((dict(pelvis_height=0.587, torso_pitch=1.19, move_time=0.93), "move_time=0.93"),
+                          (dict(pelvis_height=0.586, torso_pitch=-0.24, move_time=3.0), "torso_pitch=-0.24"),
+                          (dict(torso_pitch=1.6, move_time=6.0), "hands")):
+        with pytest.raises(ParameterError) as error:
+            run(RunRequest("balance", "imaginary_cyclist", params=behaviour_params("balance", "imaginary_cyclist", params)))
+        message = str(error.value)
+        assert "\n" not in message and named in message and "allowed" in message
+    assert balanced(run(RunRequest("balance", "imaginary_cyclist", params=behaviour_params(
+        "balance", "imaginary_cyclist", dict(pelvis_height=0.51, torso_pitch=-0.2, move_time=3.0, hold_time=1.0)))))
+
+
 PANEL = ("pelvis_height", "torso_pitch", "com_offset_x", "com_offset_y", "arm_abduction", "arm_flexion",
          "elbow_flexion", "head_pitch")
 
 
 @pytest.mark.slow
-@pytest.mark.parametrize("name", ["man", "woman", "child", "imaginary_runner"])
+@pytest.mark.parametrize("name", ["man", "woman", "child", "imaginary_runner", "imaginary_cyclist"])
 def test_random_requests_over_the_panel_are_refused_or_balanced(name):
     """Draws over the whole panel (the posture parameters uniform, 30 % standing, move_time log-uniform
     over 0.2-20 s, hold 0-3 s): each is refused in one line naming a parameter and what is allowed, or

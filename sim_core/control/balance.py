@@ -351,14 +351,15 @@ class Balance(Behaviour):
 
     def _check_hands(self) -> None:
         clearance = self.hands_clearance()
-        least = CONSTANTS.hand_clearance * self.stand_height
+        own = own_constants("balance", self.ctx.character.name, CONSTANTS)
+        least = own.hand_clearance * self.stand_height
         if clearance < least:
             p = self.params
             raise ParameterError(
                 f"parameters torso_pitch={p['torso_pitch']:g} rad, arm_flexion={p['arm_flexion']:g} rad, "
                 f"elbow_flexion={p['elbow_flexion']:g} rad at pelvis_height={p['pelvis_height']:g} m bring the "
                 f"{self.ctx.character.name}'s hands to {clearance:.3f} m above the ground; allowed: at least "
-                f"{least:.3f} m ({CONSTANTS.hand_clearance:g} of the standing hip height)")
+                f"{least:.3f} m ({own.hand_clearance:g} of the standing hip height)")
 
     def crouch_depth(self) -> float:
         """How far the request lowers the pelvis, as a share of the standing hip height (0: standing)."""
@@ -368,18 +369,21 @@ class Balance(Behaviour):
     def move_time_needed(self) -> float:
         """The shortest move_time (s) that holds this request's crouch depth and torso pitch: the
         crouch at ``crouch_rate`` standing hip heights per second, the pitch beyond ``free_pitch`` at
-        ``pitch_rate`` (measured on the four bodies: docs/skills/balance.md)."""
-        pitch_beyond = max(0.0, self.params["torso_pitch"] - CONSTANTS.free_pitch)
-        return max(self.crouch_depth() / CONSTANTS.crouch_rate, pitch_beyond / CONSTANTS.pitch_rate)
+        ``pitch_rate`` (measured on the four bodies, the imaginary cyclist's its own where its
+        ``balance_<character>.json`` holds them: docs/skills/balance.md)."""
+        own = own_constants("balance", self.ctx.character.name, CONSTANTS)
+        pitch_beyond = max(0.0, self.params["torso_pitch"] - own.free_pitch)
+        return max(self.crouch_depth() / own.crouch_rate, pitch_beyond / own.pitch_rate)
 
     def back_pitch_allowed(self) -> float:
         """The largest backward torso pitch (rad, as a positive number) this request's crouch holds: the
         panel's whole range down to ``back_pitch_free_depth`` of the standing hip height, narrowing
-        linearly to ``back_pitch_deep`` at ``back_pitch_depth`` and deeper (measured on the four bodies:
-        docs/skills/balance.md)."""
+        linearly to ``back_pitch_deep`` at ``back_pitch_depth`` and deeper (measured on the four bodies,
+        the imaginary cyclist's its own where its ``balance_<character>.json`` holds them: docs/skills/balance.md)."""
+        own = own_constants("balance", self.ctx.character.name, CONSTANTS)
         widest = -self.schema.by_name["torso_pitch"].minimum
-        beyond = (self.crouch_depth() - CONSTANTS.back_pitch_free_depth) / (CONSTANTS.back_pitch_depth - CONSTANTS.back_pitch_free_depth)
-        return widest - (widest - CONSTANTS.back_pitch_deep) * min(1.0, max(0.0, beyond))
+        beyond = (self.crouch_depth() - own.back_pitch_free_depth) / (own.back_pitch_depth - own.back_pitch_free_depth)
+        return widest - (widest - own.back_pitch_deep) * min(1.0, max(0.0, beyond))
 
     def _check_back_pitch(self) -> None:
         pitch, allowed = self.params["torso_pitch"], self.back_pitch_allowed()
