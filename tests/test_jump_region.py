@@ -182,6 +182,22 @@ def planned_and_run(draw):
     return result, plan
 
 
+def first_commanded_box_draw(character, way, accept=lambda values: True):
+    """The first of the report's box draws (seed SEED) that ``accept`` takes, planned commanded and flown the
+    commanded table's ``way`` (e.g. "down", "long_onto")."""
+    from sim_core.skills.jump_to_target.commanded import commanded_way
+    from sim_core.skills.jump_to_target.region import mode
+    return next(d for d in draw_requests(SEED, [character], 0, 0, 0, 40) if accept(d.values)
+                and mode(character, (d.values[0], 0.0, d.values[1]), d.values[2]) == "commanded"
+                and commanded_way(character, (d.values[0], 0.0, d.values[1]), d.values[2]) == way)
+
+
+def assert_run_as_planned(result, plan):
+    """The run passed (within the tolerances, balanced) and landed where its plan's trial did."""
+    assert result["passed"], result_line(result)
+    assert result["measured"]["landing"] == plan["measured"]["landing"]
+
+
 def test_a_target_down_from_a_box_is_offered_commanded_where_its_flat_equivalent_lies_in_the_region():
     """The table's down_region: the same lift-off on flat ground (flat_equivalent) in the commanded region, the box's
     height and the flat-ground air time T0 in down_region (the woman 0.25-0.75 m, T0 0.4-0.49 s; the man 0.25-0.4 m,
@@ -216,16 +232,12 @@ def test_a_random_target_down_from_a_box_is_flown_by_the_commanded_take_off_as_i
     down_region): drawn as the report draws box targets, planned commanded (the crouch by the flat-ground air
     time; the woman's landing's recovery step of down_settings, the man has none) and run as a user's request -
     the run is the plan's trial (the recovery step read from the plan's settings, not the run's parameters)."""
-    from sim_core.skills.jump_to_target.commanded import commanded_way, table
-    from sim_core.skills.jump_to_target.region import mode
-    box = next(d for d in draw_requests(SEED, [character], 0, 0, 0, 40)
-               if mode(character, (d.values[0], 0.0, d.values[1]), d.values[2]) == "commanded"
-               and commanded_way(character, (d.values[0], 0.0, d.values[1]), d.values[2]) == "down")
+    from sim_core.skills.jump_to_target.commanded import table
+    box = first_commanded_box_draw(character, "down")
     result, plan = planned_and_run(box)
     step = table(character).get("down_settings", {}).get("landing_recovery_step", 0.0)
     assert plan["settings"].get("landing_recovery_step", 0.0) == step and plan["settings"]["commanded_takeoff"] == 1.0
-    assert result["passed"], result_line(result)
-    assert result["measured"]["landing"] == plan["measured"]["landing"]
+    assert_run_as_planned(result, plan)
     assert result["measured"]["outcome"] == plan["measured"]["outcome"] == "success"
 
 
@@ -233,16 +245,11 @@ def test_a_random_target_of_the_man_down_from_a_higher_box_lands_balanced():
     """The first of the report's box draws for the man (seed SEED) down from a box above 0.4 m by his commanded take-off
     (high_down_region) beyond 1 m ahead (the region's far part; the first such draw at all is the test above's),
     planned and run as a user's request: within the tolerances and balanced, as its plan was."""
-    from sim_core.skills.jump_to_target.commanded import commanded_way
-    from sim_core.skills.jump_to_target.region import mode
-    box = next(d for d in draw_requests(SEED, ["man"], 0, 0, 0, 40) if d.values[1] < -0.4 and d.values[0] > 1.0
-               and mode("man", (d.values[0], 0.0, d.values[1]), d.values[2]) == "commanded"
-               and commanded_way("man", (d.values[0], 0.0, d.values[1]), d.values[2]) == "down")
+    box = first_commanded_box_draw("man", "down", lambda values: values[1] < -0.4 and values[0] > 1.0)
     assert box.values[0] <= 1.1 and box.values[1] >= -0.75
     result, plan = planned_and_run(box)
     assert plan["settings"]["commanded_takeoff"] == 1.0 and not plan["settings"].get("landing_recovery_step", 0.0)
-    assert result["passed"], result_line(result)
-    assert result["measured"]["landing"] == plan["measured"]["landing"]
+    assert_run_as_planned(result, plan)
 
 
 def test_a_random_target_onto_a_box_is_flown_by_the_long_row_as_its_plan_was():
@@ -257,12 +264,10 @@ def test_a_random_target_onto_a_box_is_flown_by_the_long_row_as_its_plan_was():
     assert commanded_way("woman", (0.95, 0.0, 0.45), 0.43) == "long_onto"        # T0 0.64 s at 1.42 m
     assert commanded_way("woman", (0.95, 0.0, 0.52), 0.43) is None                # T0 0.68 s, but higher than measured
     assert commanded_way("man", (1.0, 0.0, 0.35), 0.5) is None                    # his flat equivalent 1.28 m: short of his long row
-    box = next(d for d in draw_requests(SEED, ["woman"], 0, 0, 0, 40)
-               if commanded_way("woman", (d.values[0], 0.0, d.values[1]), d.values[2]) == "long_onto")
+    box = first_commanded_box_draw("woman", "long_onto")
     result, plan = planned_and_run(box)
     assert plan["settings"]["vertical_thrust"] == 1.0 and plan["settings"]["commanded_takeoff"] == 1.0
-    assert result["passed"], result_line(result)
-    assert result["measured"]["landing"] == plan["measured"]["landing"]
+    assert_run_as_planned(result, plan)
 
 
 def test_a_random_target_of_the_man_onto_a_box_is_flown_by_his_far_long_row():
@@ -277,12 +282,10 @@ def test_a_random_target_of_the_man_onto_a_box_is_flown_by_his_far_long_row():
     text = region_refusal("man", (1.25, 0.0, 0.255), 0.481)
     assert text and "\n" not in text and "onto a box 0.25-0.4 m high at target_x 0.85-1.9 m where the same lift-off on " \
         "flat ground would land in the long air times' region at 1.6-1.9 m in 0.55-0.65 s" in text
-    box = next(d for d in draw_requests(SEED, ["man"], 0, 0, 0, 40)
-               if commanded_way("man", (d.values[0], 0.0, d.values[1]), d.values[2]) == "long_onto")
+    box = first_commanded_box_draw("man", "long_onto")
     result, plan = planned_and_run(box)
     assert plan["settings"]["vertical_thrust"] == 1.0 and plan["settings"]["lean_push"] == 3.0
-    assert result["passed"], result_line(result)
-    assert result["measured"]["landing"] == plan["measured"]["landing"]
+    assert_run_as_planned(result, plan)
 
 
 TURNED_TARGETS = 3          # random targets in a character's turned commanded region, outside its measured jumps' region
