@@ -296,6 +296,12 @@ class Balance(Behaviour):
         self._check_hands()
         self._check_pelvis_held()
 
+    @property
+    def body_constants(self):
+        """The balance's constants for this body: balance_any.json's, each one its own
+        ``balance_<character>.json`` holds replaced (the imaginary cyclist's)."""
+        return own_constants("balance", self.ctx.character.name, CONSTANTS)
+
     def _pose_held(self):
         """The held posture posed kinematically (the nominal joint targets, the pelvis at the requested
         height and at the pitch the hips hold; the feet and the balance feedback left out): the posing
@@ -336,7 +342,7 @@ class Balance(Behaviour):
     def pelvis_held_needed(self) -> float:
         """The least posed pelvis share (``held_pelvis_share``) this request's torso pitch holds above a fall
         (the body's own sag where its ``balance_<character>.json`` holds one: the imaginary cyclist's)."""
-        own = own_constants("balance", self.ctx.character.name, CONSTANTS)
+        own = self.body_constants
         forward = min(1.0, max(0.0, self.params["torso_pitch"]) / own.pelvis_sag_pitch)
         return own.pelvis_held_share + own.pelvis_pitch_sag * forward
 
@@ -351,7 +357,7 @@ class Balance(Behaviour):
 
     def _check_hands(self) -> None:
         clearance = self.hands_clearance()
-        own = own_constants("balance", self.ctx.character.name, CONSTANTS)
+        own = self.body_constants
         least = own.hand_clearance * self.stand_height
         if clearance < least:
             p = self.params
@@ -371,7 +377,7 @@ class Balance(Behaviour):
         crouch at ``crouch_rate`` standing hip heights per second, the pitch beyond ``free_pitch`` at
         ``pitch_rate`` (measured on the four bodies, the imaginary cyclist's its own where its
         ``balance_<character>.json`` holds them: docs/skills/balance.md)."""
-        own = own_constants("balance", self.ctx.character.name, CONSTANTS)
+        own = self.body_constants
         pitch_beyond = max(0.0, self.params["torso_pitch"] - own.free_pitch)
         return max(self.crouch_depth() / own.crouch_rate, pitch_beyond / own.pitch_rate)
 
@@ -380,7 +386,7 @@ class Balance(Behaviour):
         panel's whole range down to ``back_pitch_free_depth`` of the standing hip height, narrowing
         linearly to ``back_pitch_deep`` at ``back_pitch_depth`` and deeper (measured on the four bodies,
         the imaginary cyclist's its own where its ``balance_<character>.json`` holds them: docs/skills/balance.md)."""
-        own = own_constants("balance", self.ctx.character.name, CONSTANTS)
+        own = self.body_constants
         widest = -self.schema.by_name["torso_pitch"].minimum
         beyond = (self.crouch_depth() - own.back_pitch_free_depth) / (own.back_pitch_depth - own.back_pitch_free_depth)
         return widest - (widest - own.back_pitch_deep) * min(1.0, max(0.0, beyond))
