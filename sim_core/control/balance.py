@@ -214,6 +214,7 @@ class Balance(Behaviour):
         self.from_height = from_height
         self.from_pitch = from_pitch
         self.t0 = 0.0
+        self._held = None           # the held posture's hands and pelvis, posed once (_pose_held)
         ch = ctx.character
         m = ctx.model
         self.legs = {s: LegGeometry(ch, s) for s in "RL"}
@@ -302,42 +303,39 @@ class Balance(Behaviour):
         ``balance_<character>.json`` holds replaced (the imaginary cyclist's)."""
         return own_constants("balance", self.ctx.character.name, CONSTANTS)
 
-    def _pose_held(self):
+    def _pose_held(self) -> tuple[float, float]:
         """The held posture posed kinematically (the nominal joint targets, the pelvis at the requested
-        height and at the pitch the hips hold; the feet and the balance feedback left out): the posing
-        data and how far its hip joints' middle stands above the requested pelvis height (m)."""
-        m, actor = self.ctx.model, self.ctx.actor
-        posture = self.target_posture()
-        self.crouch = CrouchTable(m, self.ctx.character, [posture[0]], self.stand_height, actor=actor)  # start() builds the run's
-        q = self.joint_targets(posture)
-        pitch = posture[1] * (1.0 - CONSTANTS.spine_share) + self._crouch_pitch
-        d = self.crouch.data
-        d.qpos[:] = self.crouch.base_qpos
-        d.qpos[self.ctx.servos.qpos_adr] = q
-        root = actor.root_qpos
-        d.qpos[root + 3:root + 7] = (math.cos(0.5 * pitch), 0.0, math.sin(0.5 * pitch), 0.0)   # about +y: forward
-        mujoco.mj_kinematics(m, d)
-        hips = 0.5 * (d.xpos[self.hips[0]] + d.xpos[self.hips[1]])
-        return d, hips[2] - posture[0]
+        height and at the pitch the hips hold; the feet and the balance feedback left out), once per request:
+        (the hands' lowest point above the ground, m; the pelvis's height as a share of its standing height)."""
+        if self._held is None:
+            m, actor = self.ctx.model, self.ctx.actor
+            posture = self.target_posture()
+            self.crouch = CrouchTable(m, self.ctx.character, [posture[0]], self.stand_height, actor=actor)  # start() builds the run's
+            q = self.joint_targets(posture)
+            pitch = posture[1] * (1.0 - CONSTANTS.spine_share) + self._crouch_pitch
+            d = self.crouch.data
+            d.qpos[:] = self.crouch.base_qpos
+            d.qpos[self.ctx.servos.qpos_adr] = q
+            root = actor.root_qpos
+            d.qpos[root + 3:root + 7] = (math.cos(0.5 * pitch), 0.0, math.sin(0.5 * pitch), 0.0)   # about +y: forward
+            mujoco.mj_kinematics(m, d)
+            hips = 0.5 * (d.xpos[self.hips[0]] + d.xpos[self.hips[1]])
+            above = hips[2] - posture[0]            # the posed hips over the requested pelvis height
+            hands = min(_geom_bottom(m, d, g) for side in "RL"
+                        for g in np.nonzero(m.geom_bodyid == actor.body_id("HAND" + side))[0])
+            self._held = (hands - above, (d.xpos[self.pelvis][2] - above) / self.ctx.character.bodies[0]["com"][2])
+        return self._held
 
     def hands_clearance(self) -> float:
         """Height (m) of the hands' lowest point above the ground in the held posture, posed
         kinematically (``_pose_held``)."""
-        m, actor = self.ctx.model, self.ctx.actor
-        d, above = self._pose_held()
-        lowest = math.inf
-        for side in "RL":
-            body = actor.body_id("HAND" + side)
-            for g in np.nonzero(m.geom_bodyid == body)[0]:
-                lowest = min(lowest, _geom_bottom(m, d, g))
-        return lowest - above
+        return self._pose_held()[0]
 
     def held_pelvis_share(self) -> float:
         """The pelvis's height in the held posture, posed kinematically (``_pose_held``), as a share of
         its standing height: below 0.5 the run counts as a fall (TARGETS.md's "stable",
         analysis.standard_metrics), whatever the hips' height."""
-        d, above = self._pose_held()
-        return (d.xpos[self.pelvis][2] - above) / self.ctx.character.bodies[0]["com"][2]
+        return self._pose_held()[1]
 
     def pelvis_held_needed(self) -> float:
         """The least posed pelvis share (``held_pelvis_share``) this request's torso pitch holds above a fall
