@@ -67,7 +67,8 @@ CONSTANTS = read_constants("dives", DIVE_CONSTANTS)
 GROUPS = ("inward", "back", "forward", "reverse")
 FORWARD_ROTATING = ("inward", "forward")      # the others somersault backward
 FACING_THE_WATER = ("forward", "reverse")     # the others stand backwards, heels at the edge
-LEAP_SETTINGS = SETTINGS + ("thrust_damping", "twist_lead", "tuck_time", "tuck_stiffness", "tuck_damping")
+CLOSURE_SETTINGS = ("tuck_time", "tuck_stiffness", "tuck_damping")   # the closure into the position (DIVE_SETTINGS)
+LEAP_SETTINGS = SETTINGS + ("thrust_damping", "twist_lead", *CLOSURE_SETTINGS)
 ROTATION_TOLERANCE = 0.25   # turns: a dive's somersaults and twists count within a quarter turn of its name
 
 CALIBRATED_DIVES = {   # the dives python -m sim_core calibrate dive calibrates, per character, in its table's order:
@@ -186,7 +187,6 @@ DIVE_SETTINGS = Schema(
     Parameter("tuck_damping", "1", 0.0, 0.0, 8.0,
               "damping factor of those servos in that move; 0 = twice the stiffness (overdamped); less closes sooner"),
 )
-CLOSURE_SETTINGS = ("tuck_time", "tuck_stiffness", "tuck_damping")
 
 DIVES_TABLE = register_table(TableType(
     "dives", with_constants(DIVE_SETTINGS, DIVE_CONSTANTS),

@@ -297,13 +297,15 @@ def box_way(body: dict, target, air_time: float) -> str | None:
     rows = (("down", "region", "down_region"), ("down", "region", "high_down_region"),
             ("long_down", "long_region", "long_down_region")) if z < 0.0 \
         else (("long_onto", "long_region", "long_onto_region"),)
+    def within(box: dict, key: str, value: float) -> bool:       # an optional bound holds when absent
+        low, high = box.get(key, (-math.inf, math.inf))
+        return low <= value <= high
+
     for way, region_key, box_key in rows:
         region, box = body.get(region_key), body.get(box_key)
-        if (region is not None and box is not None and box["height"][0] <= abs(z) <= box["height"][1]
-                and box.get("target_x", (-math.inf, math.inf))[0] <= float(target[0]) <= box.get("target_x", (-math.inf, math.inf))[1]
-                and box["flat_air_time"][0] <= air_time <= box["flat_air_time"][1]
-                and box.get("flat_target_x", (-math.inf, math.inf))[0] <= x <= box.get("flat_target_x", (-math.inf, math.inf))[1]
-                and all(region[k][0] <= v <= region[k][1] for k, v in values.items())):
+        if (region is not None and box is not None and within(box, "height", abs(z))
+                and within(box, "target_x", float(target[0])) and within(box, "flat_air_time", air_time)
+                and within(box, "flat_target_x", x) and all(within(region, k, v) for k, v in values.items())):
             return way
     return None
 
@@ -350,10 +352,9 @@ def commanded_limit(character: str) -> str | None:
     parts = [f"the commanded take-off is offered on flat ground for {_flat(body['region'])}"]
     if body.get("turned_region"):
         parts.append(f"turned first {_turned(body['turned_region'])}")
-    if body.get("down_region"):
-        parts.append(_box(body["down_region"], "down from", "that region", "-") + ", at target_x T0 / air_time)")
-    if body.get("high_down_region"):
-        parts.append(_box(body["high_down_region"], "down from", "that region", "-") + ", at target_x T0 / air_time)")
+    for key in ("down_region", "high_down_region"):
+        if body.get(key):
+            parts.append(_box(body[key], "down from", "that region", "-") + ", at target_x T0 / air_time)")
     if body.get("sideways_region"):
         parts.append(f"turned a quarter first {_turned(body['sideways_region'])}")
     if body.get("long_region"):
