@@ -255,7 +255,7 @@ def test_a_random_target_of_the_man_down_from_a_higher_box_lands_balanced():
 def test_a_target_down_from_a_box_with_a_low_lift_off_is_offered_by_the_shallow_crouch_and_refused_below_it():
     """The table's low_down_regions: down from a box where the lift-off flies below the commanded region's air times on
     flat ground (T0 0.28-0.4 s, the woman's boxes 0.25-0.6 m; the man's T0 0.3-0.5 s from 0.25-0.4 m boxes up to 1.45 m
-    ahead, T0 0.3-0.42 s from 0.4-0.75 m boxes 0.6-1.15 m ahead), flown with the shallower crouch's pairs; a lower
+    ahead, T0 0.3-0.42 s from 0.4-0.6 m boxes 0.6-1.15 m and from 0.6-0.75 m boxes 0.6-1.0 m ahead), flown with the shallower crouch's pairs; a lower
     lift-off (T0 0.12-0.27 s: 0 of 6 measured) is refused in one line naming the limit."""
     from sim_core.skills.jump_to_target.commanded import commanded_way, flat_equivalent, low_down_body, table
     assert flat_equivalent((1.0, 0.0, -0.5), 0.5)[1] == pytest.approx(0.296, abs=0.001)
