@@ -371,6 +371,11 @@ def commanded_limit(character: str) -> str | None:
     for key in ("down_region", "high_down_region"):
         if body.get(key):
             parts.append(_box(body[key], "down from", "that region", "-") + ", at target_x T0 / air_time)")
+    for box in body.get("low_down_regions", ()):
+        parts.append(f"down from a box {box['height'][0]:g}-{box['height'][1]:g} m high at target_x "
+                     f"{box['target_x'][0]:g}-{box['target_x'][1]:g} m where the lift-off would fly "
+                     f"{box['flat_air_time'][0]:g}-{box['flat_air_time'][1]:g} s on flat ground (T0 = air_time - 2 height / "
+                     f"(g air_time); a lower lift-off than its shallowest crouch's is not flown)")
     if body.get("sideways_region"):
         parts.append(f"turned a quarter first {_turned(body['sideways_region'])}")
     if body.get("long_region"):
@@ -383,11 +388,6 @@ def commanded_limit(character: str) -> str | None:
         parts.append(f"turned first with long air times nearer {_turned(body['turned_near_long_region'])}")
     if body.get("turned_mid_long_region"):
         parts.append(f"turned first with long air times in the middle {_turned(body['turned_mid_long_region'])}")
-    for box in body.get("low_down_regions", ()):
-        parts.append(f"down from a box {box['height'][0]:g}-{box['height'][1]:g} m high at target_x "
-                     f"{box['target_x'][0]:g}-{box['target_x'][1]:g} m where the lift-off would fly "
-                     f"{box['flat_air_time'][0]:g}-{box['flat_air_time'][1]:g} s on flat ground (T0 = air_time - 2 height / "
-                     f"(g air_time); a lower lift-off than its shallowest crouch's is not flown)")
     for key, way, sign in (("long_onto_region", "onto", "+"), ("long_down_region", "down from", "-")):
         if body.get(key):
             parts.append(_box(body[key], way, "the long air times' region", sign) + ")")
