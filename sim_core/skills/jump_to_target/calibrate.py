@@ -1637,8 +1637,9 @@ her `down_region`'s, from 0.66-0.67 m boxes at 1.34-1.58 m, and one of her measu
 (the new row 8 / 8; the miss onto a 0.472 m box by her long row, 16.5 cm short). The test's draw (seed 29's first of
 his new rows, 1.104 m from a 0.669 m box in 0.577 s) then missed, the aim 38 cm short: from 0.6-0.75 m boxes beyond
 1.0 m 1 of 4 had landed (seeds 35 and 607 too), so his boxes above 0.6 m end at 1.0 m ahead (the draws of 601-611 it
-leaves out: that one miss). With the final regions: the man's fresh seed 613 **20 / 20** (the new rows 11 / 11); the
-new rows on the fresh seeds 607-613 46 / 47 (98 %), every box draw 97 / 100.
+leaves out: that one miss). With the final regions: the man's fresh seed 613 **20 / 20** (the new rows 11 / 11); fresh
+seed 617 man **20 / 20** (11 / 11), woman **19 / 20** (the new row 6 / 7: 0.575 m from a 0.271 m box in 0.481 s, 5.1 cm
+off after her 5 aims). The new rows on the fresh seeds 607-617 63 / 65 (97 %), every box draw 136 / 140.
 A target below the shallowest crouch's lift-off is refused in one line naming it (`commanded_limit`: "... and down from
 a box 0.25-0.6 m high at target_x 0.5-1.6 m where the lift-off would fly 0.28-0.4 s on flat ground (T0 = air_time - 2
 height / (g air_time); a lower lift-off than its shallowest crouch's is not flown)").
