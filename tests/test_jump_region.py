@@ -152,7 +152,10 @@ def test_a_target_outside_both_regions_is_refused_naming_both(monkeypatch):
                          "target_y -0.02-0.02 m, air_time 0.4-0.52 s, and turned first for a distance of 0.7-1.25 m "
                          "at a bearing of 0-26 deg to either side, air_time 0.4-0.48 s, and down from a box 0.25-0.75 m "
                          "high where the same lift-off on flat ground would land in that region in 0.4-0.49 s "
-                         "(T0 = air_time - 2 height / (g air_time), at target_x T0 / air_time), and turned a quarter "
+                         "(T0 = air_time - 2 height / (g air_time), at target_x T0 / air_time), and down from a box "
+                         "0.25-0.6 m high at target_x 0.5-1.6 m where the lift-off would fly 0.28-0.4 s on flat ground "
+                         "(T0 = air_time - 2 height / (g air_time); a lower lift-off than its shallowest crouch's is not "
+                         "flown), and turned a quarter "
                          "first for a distance of 1-1.2 m at a bearing of 87-90 deg to either side, air_time 0.4-0.44 s, "
                          "and for long air times (the leap's vertical thrust) on flat ground for target_x 0.5-1.6 m, "
                          "target_y -0.02-0.02 m, air_time 0.52-0.7 s, and turned first with long air times for a "
@@ -249,6 +252,39 @@ def test_a_random_target_of_the_man_down_from_a_higher_box_lands_balanced():
     assert box.values[0] <= 1.1 and box.values[1] >= -0.75
     result, plan = planned_and_run(box)
     assert plan["settings"]["commanded_takeoff"] == 1.0 and not plan["settings"].get("landing_recovery_step", 0.0)
+    assert_run_as_planned(result, plan)
+
+
+def test_a_target_down_from_a_box_with_a_low_lift_off_is_offered_by_the_shallow_crouch_and_refused_below_it():
+    """The table's low_down_regions: down from a box where the lift-off flies below the commanded region's air times on
+    flat ground (T0 0.28-0.4 s, the woman's boxes 0.25-0.6 m; the man's T0 0.3-0.5 s from 0.25-0.4 m boxes up to 1.45 m
+    ahead, T0 0.3-0.42 s from 0.4-0.6 m boxes 0.6-1.15 m and from 0.6-0.75 m boxes 0.6-1.0 m ahead), flown with the shallower crouch's pairs; a lower
+    lift-off (T0 0.12-0.27 s: 0 of 6 measured) is refused in one line naming the limit."""
+    from sim_core.skills.jump_to_target.commanded import commanded_way, flat_equivalent, low_down_body, table
+    assert flat_equivalent((1.0, 0.0, -0.5), 0.5)[1] == pytest.approx(0.296, abs=0.001)
+    assert commanded_way("woman", (1.0, 0.0, -0.5), 0.5) == "low_down"            # T0 0.30 s
+    assert commanded_way("woman", (1.0, 0.0, -0.65), 0.55) is None                # above 0.6 m: half fell
+    assert commanded_way("man", (1.4, 0.0, -0.35), 0.5) == "low_down"             # T0 0.36 s
+    assert commanded_way("man", (1.6, 0.0, -0.35), 0.5) is None                   # beyond 1.45 m: the aim fell short
+    assert commanded_way("man", (0.9, 0.0, -0.6), 0.55) == "low_down"             # T0 0.33 s from a higher box
+    assert commanded_way("man", (0.55, 0.0, -0.6), 0.55) is None                  # near a higher box: fell on the target
+    assert commanded_way("man", (1.2, 0.0, -0.35), 0.6) == "down"                 # the straight row's as before
+    assert low_down_body(table("woman"))["crouch_by_air_time"]["crouch_height"][0] == 0.6
+    text = region_refusal("woman", (1.0, 0.0, -0.7), 0.45)                         # T0 0.13 s
+    assert text and "\n" not in text and "down from a box 0.25-0.6 m high at target_x 0.5-1.6 m where the lift-off " \
+        "would fly 0.28-0.4 s on flat ground" in text and "a lower lift-off than its shallowest crouch's is not flown" in text
+
+
+@pytest.mark.parametrize("character", ["man", "woman"])
+def test_a_random_target_down_from_a_box_with_a_low_lift_off_lands_balanced(character):
+    """The first of the report's box draws (seed SEED) in the low_down_regions, planned with the shallow crouch's pairs
+    and run as a user's request: within 5 cm and 0.05 s and balanced, as its plan was."""
+    from sim_core.skills.jump_to_target.commanded import flat_equivalent, table
+    box = first_commanded_box_draw(character, "low_down")
+    result, plan = planned_and_run(box)
+    low = table(character)["low_down_regions"]
+    assert flat_equivalent((box.values[0], 0.0, box.values[1]), box.values[2])[1] <= max(b["flat_air_time"][1] for b in low)
+    assert plan["settings"]["commanded_takeoff"] == 1.0
     assert_run_as_planned(result, plan)
 
 

@@ -21,7 +21,9 @@ a few simulated jumps, not a search over the leap's settings:
 A long air time on flat ground, in the table's ``long_region`` beyond its ``region``, or onto or down from a box
 where the flat equivalent lies there (``long_onto_region``, ``long_down_region``): the same aim with the table read
 by commanded.long_body (the leap's vertical thrust and its own crouch pairs); in its ``near_long_region`` beyond both,
-by commanded.near_long_body (the same with the near row's own lean push and crouch pairs).
+by commanded.near_long_body (the same with the near row's own lean push and crouch pairs). Down from a box with a
+lift-off lower than the table's region flies (``low_down_regions``): the same aim with commanded.low_down_body (its
+crouch pairs with a shallower crouch's).
 
 A target beyond the table's straight region's target_y, in its ``turned_region`` (plan_turned): the
 jump turns first (one hop, the leap's ``turn_angle``) and flies the commanded take-off forward; the aim
@@ -53,8 +55,8 @@ from ..ballistics import flat_air_time
 from ..character.spec import load_character
 from ..control.leap import LEAP_SETTINGS
 from ..errors import ParameterError
-from ..skills.jump_to_target.commanded import (commanded_settings, commanded_way, line_offset, long_body, mid_long_body,
-                                               near_long_body, planner_constants, table, turn_for_heading, turn_for_point,
+from ..skills.jump_to_target.commanded import (commanded_settings, commanded_way, line_offset, long_body, low_down_body,
+                                               mid_long_body, near_long_body, planner_constants, table, turn_for_heading, turn_for_point,
                                                turned_long_body, turned_settings)
 from .land import candidates, foot_step
 from .trials import Trials
@@ -86,6 +88,8 @@ def plan_commanded(character: str, target, air_time: float, trial, budget: int, 
         body = long_body(body)      # long air times (onto or down from a box too): the vertical thrust's settings and crouch pairs
     elif way == "near_long" and "near_long_settings" in body:
         body = near_long_body(body)  # long air times nearer: the same with the near row's own lean push and crouch pairs
+    elif way == "low_down":
+        body = low_down_body(body)   # a low lift-off down from a box: the crouch pairs with the shallower crouch's
     x = float(target[0])
     bound = min(budget, c.aim_trials + c.landing_trials - 1)
     trials = Trials(trial, bound, progress, cancelled)

@@ -66,6 +66,13 @@ Fig. 6 with his thrust slowed for his strength, tools/scale_commanded.py and doc
   third long row with its own lean push and crouch pairs (mid_long_body: the man's push 5, between the far row's 3 and the
   near row's 10, lands ~1.2-1.5 m); a request in it beyond ``region``'s target_y is planned so (straight ahead the row
   was not offered: docs/jump_to_target.md, "The man's mid long row");
+- ``low_down_regions`` (optional, with ``low_down_crouch_by_air_time``): boxes with the keys of ``high_down_region``
+  (``height``, ``flat_air_time``, ``target_x``) for a jump straight ahead down from a box whose lift-off flies lower
+  than ``region``'s air times on flat ground (T0 below them), bounded by the target's own forward distance alone (the
+  flat equivalent of a low lift-off lands nearer than any flat target measured): flown as ``down_region``'s (the
+  table's settings with its ``down_settings``) with ``low_down_crouch_by_air_time`` as the crouch pairs
+  (low_down_body: the table's pairs and a shallower crouch's, whose lift-off flies ~0.3 s on flat ground; a shallower
+  one still leaves as fast up, docs/jump_to_target.md "Down from a box with a shallow crouch");
 - ``long_onto_region``, ``long_down_region`` (optional, with the long row): the same keys as ``down_region`` for a
   jump straight ahead onto a box / down from one flown by the long row (long_body) where the flight's flat
   equivalent lies in ``long_region`` with its air time in ``flat_air_time``; ``target_x`` (optional, [low, high] m)
@@ -133,7 +140,8 @@ def _rows(body: dict):
         yield "mid_long_settings", body["mid_long_settings"]
     if "turned_long_settings" in body:
         yield "turned_long_settings", body["turned_long_settings"]
-    for key in ("crouch_by_air_time", "long_crouch_by_air_time", "near_long_crouch_by_air_time", "mid_long_crouch_by_air_time"):
+    for key in ("crouch_by_air_time", "long_crouch_by_air_time", "near_long_crouch_by_air_time", "mid_long_crouch_by_air_time",
+                "low_down_crouch_by_air_time"):
         for k, height in enumerate(body.get(key, {}).get("crouch_height", [])):
             yield f"{key} {k}", {"crouch_height": height}
     for k, angle in enumerate(body.get("turn_headings", {}).get("turn_angle", [])):
@@ -219,6 +227,12 @@ def mid_long_body(body: dict) -> dict:
     return near_long_body(body, "mid_long")
 
 
+def low_down_body(body: dict) -> dict:
+    """The table as a low lift-off's plan down from a box reads it (``low_down_regions``): its
+    ``low_down_crouch_by_air_time`` as the crouch pairs."""
+    return {**body, "crouch_by_air_time": body["low_down_crouch_by_air_time"]}
+
+
 def turned_long_body(body: dict) -> dict:
     """The table as the turned long air times' plan reads it (``turned_long_region``): long_body with
     ``turned_long_settings`` (where the table has them) over its settings."""
@@ -288,21 +302,23 @@ def commanded_way(character: str, target, air_time: float) -> str | None:
 def box_way(body: dict, target, air_time: float) -> str | None:
     """commanded_way for a target onto a box (z > 0) or down from one (z < 0), straight ahead: its flat equivalent
     (flat_equivalent) in the table's ``region`` with the height and T0 in ``down_region`` or (and the target's own
-    forward distance) in ``high_down_region``: "down"; in its
+    forward distance) in ``high_down_region``: "down"; the height, T0 and the target's own forward distance in one of
+    its ``low_down_regions``: "low_down" (low_down_body); in its
     ``long_region`` with them in ``long_down_region`` / ``long_onto_region``: "long_down" / "long_onto" (the long row,
     long_body); else None."""
     z = float(target[2])
     x, air_time = flat_equivalent(target, air_time)
     values = {"target_x": x, "target_y": float(target[1]), "air_time": air_time}
-    rows = (("down", "region", "down_region"), ("down", "region", "high_down_region"),
-            ("long_down", "long_region", "long_down_region")) if z < 0.0 \
-        else (("long_onto", "long_region", "long_onto_region"),)
+    rows = (("down", "region", body.get("down_region")), ("down", "region", body.get("high_down_region")),
+            *(("low_down", None, box) for box in body.get("low_down_regions", ())),
+            ("long_down", "long_region", body.get("long_down_region"))) if z < 0.0 \
+        else (("long_onto", "long_region", body.get("long_onto_region")),)
     def within(box: dict, key: str, value: float) -> bool:       # an optional bound holds when absent
         low, high = box.get(key, (-math.inf, math.inf))
         return low <= value <= high
 
-    for way, region_key, box_key in rows:
-        region, box = body.get(region_key), body.get(box_key)
+    for way, region_key, box in rows:
+        region = body.get(region_key) if region_key else {}     # a low lift-off: the box's own bounds alone
         if (region is not None and box is not None and within(box, "height", abs(z))
                 and within(box, "target_x", float(target[0])) and within(box, "flat_air_time", air_time)
                 and within(box, "flat_target_x", x) and all(within(region, k, v) for k, v in values.items())):
@@ -355,6 +371,11 @@ def commanded_limit(character: str) -> str | None:
     for key in ("down_region", "high_down_region"):
         if body.get(key):
             parts.append(_box(body[key], "down from", "that region", "-") + ", at target_x T0 / air_time)")
+    for box in body.get("low_down_regions", ()):
+        parts.append(f"down from a box {box['height'][0]:g}-{box['height'][1]:g} m high at target_x "
+                     f"{box['target_x'][0]:g}-{box['target_x'][1]:g} m where the lift-off would fly "
+                     f"{box['flat_air_time'][0]:g}-{box['flat_air_time'][1]:g} s on flat ground (T0 = air_time - 2 height / "
+                     f"(g air_time); a lower lift-off than its shallowest crouch's is not flown)")
     if body.get("sideways_region"):
         parts.append(f"turned a quarter first {_turned(body['sideways_region'])}")
     if body.get("long_region"):
