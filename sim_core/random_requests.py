@@ -141,7 +141,8 @@ def draw_requests(seed: int, characters, jumps: int, leaps: int, broads: int, bo
                                                ("sideways", sideways, SIDEWAYS_STREAM, ("sideways_region",), draw_sideways),
                                                ("long", long, LONG_STREAM, ("long_region",), draw_long),
                                                ("turned_long", turned_long, TURNED_LONG_STREAM,
-                                                ("turned_long_region", "turned_near_long_region"), draw_turned_long),
+                                                ("turned_long_region", "turned_long_short_region", "turned_near_long_region"),
+                                                draw_turned_long),
                                                ("mid_long", mid_long, MID_LONG_STREAM,
                                                 ("turned_mid_long_region",), draw_mid_long)):
         stream_rng = np.random.default_rng((seed, stream))
@@ -183,9 +184,10 @@ def draw_turned(rng, character: str, ways: tuple = ("turned",)) -> tuple:
 
 
 def draw_turned_long(rng, character: str) -> tuple:
-    """draw_turned in the table's turned long air times' regions (``turned_long_region``: the hop, then the long row;
+    """draw_turned in the table's turned long air times' regions (``turned_long_region``: the hop, then the long row,
+    and ``turned_long_short_region``: the same at shorter air times;
     ``turned_near_long_region``: the hop, then the near long row), uniform in issue 29's box where either holds it."""
-    return draw_turned(rng, character, ("turned_long", "turned_near_long"))
+    return draw_turned(rng, character, ("turned_long", "turned_long_short", "turned_near_long"))
 
 
 def draw_mid_long(rng, character: str) -> tuple:
@@ -488,7 +490,8 @@ def main(argv=None) -> int:
                "(near_long_body: its own lean push and crouch pairs). " if args.long else "")
             + ("Turned long air time targets (--turned-long) are drawn uniformly in issue 29's box and drawn again until "
                "they lie in the turned long air times' region of each character that has one (the table's "
-               "turned_long_region, and turned_near_long_region where the table has it: the man's) and outside the region "
+               "turned_long_region, turned_long_short_region (the same at shorter air times: the woman's) and turned_near_long_region "
+               "where the table has it: the man's) and outside the region "
                "its measured jumps offer: the jump turns first by one hop toward the target (as the turned targets) and "
                "flies the long row forward (plan_turned with turned_long_body; in turned_near_long_region the near long "
                "row, near_long_body). "

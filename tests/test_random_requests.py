@@ -127,7 +127,8 @@ def test_turned_long_draws_are_in_each_turned_long_region_outside_the_measured_j
     assert [d.character for d in turned_long] == ["man"] * 3 + ["woman"] * 3
     for d in turned_long:
         x, y, t = d.values
-        assert d.skill == "turned_long" and commanded_way(d.character, (x, y), t) in ("turned_long", "turned_near_long")
+        assert d.skill == "turned_long" and commanded_way(d.character, (x, y), t) in ("turned_long", "turned_long_short",
+                                                                                      "turned_near_long")
         assert not offered(d.character, (x, y), t)
     assert turned_long != draw_requests(2, ["man", "woman"], 2, 1, 1, turned=2, long=2, turned_long=3)[len(plain):]
 

@@ -82,7 +82,7 @@ def plan_commanded(character: str, target, air_time: float, trial, budget: int, 
     {"settings", "measured", "trials", "found"}."""
     c, body = constants or planner_constants(character), body or table(character)
     way = commanded_way(character, target, air_time)
-    if way in ("turned", "turned_long", "turned_near_long", "turned_mid_long", "sideways"):
+    if way in ("turned", "turned_long", "turned_long_short", "turned_near_long", "turned_mid_long", "sideways"):
         return plan_turned(character, target, air_time, trial, budget, judge, progress, cancelled, body, c, way)
     if way in ("long", "long_down", "long_onto") and "long_settings" in body:
         body = long_body(body)      # long air times (onto or down from a box too): the vertical thrust's settings and crouch pairs
@@ -132,10 +132,10 @@ def landed_plan(character: str, trials: Trials, bound: int, judge: Callable, c) 
 def plan_turned(character: str, target, air_time: float, trial, budget: int, judge: Callable,
                 progress: Callable | None, cancelled: Callable | None, body: dict, c, way: str = "turned") -> dict:
     """plan_commanded for a target to the side (the module's turned plan): turn first, then forward
-    (``way`` "sideways": the quarter turn, its map ``quarter_lines``; "turned_long": the hop, then the long row,
-    commanded.turned_long_body; "turned_near_long" / "turned_mid_long": the hop, then the near / mid long row,
+    (``way`` "sideways": the quarter turn, its map ``quarter_lines``; "turned_long" / "turned_long_short": the hop, then
+    the long row, commanded.turned_long_body; "turned_near_long" / "turned_mid_long": the hop, then the near / mid long row,
     commanded.near_long_body / mid_long_body)."""
-    if way == "turned_long":
+    if way in ("turned_long", "turned_long_short"):
         body = turned_long_body(body)
     elif way == "turned_near_long":
         body = near_long_body(body)

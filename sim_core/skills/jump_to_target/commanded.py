@@ -43,6 +43,10 @@ Fig. 6 with his thrust slowed for his strength, tools/scale_commanded.py and doc
   forward along the new heading; a request in it beyond ``region``'s target_y is planned so; ``turned_long_settings``
   (optional) replace the long row's settings for it (turned_long_body: the man's landing arms without their pitch
   feedback, whose hands touched the ground in the deep landings after the hop);
+- ``turned_long_short_region`` (optional, with the long row and ``turned_region``): the same keys as ``turned_region`` for
+  shorter air times than ``turned_long_region``'s, flown as it (the hop, then turned_long_body): the long row's shallow
+  crouches far ahead fly 0.42-0.52 s, where the broad thrust's forward speed ends (docs/jump_to_target.md, "The woman's
+  long row at short air times"); a request in it beyond ``region``'s target_y is planned so;
 - ``turned_near_long_region`` (optional, with the near long row and ``turned_region``): the same keys for long air
   times nearer, the hop first, then the near long row as it is (near_long_body; the near row's landing kept its arms'
   pitch feedback: without it more fell); a request in it beyond ``region``'s target_y is planned so;
@@ -270,7 +274,8 @@ def commanded_way(character: str, target, air_time: float) -> str | None:
     inside the table's ``region`` (bounds included), "long" inside its ``long_region`` beyond it (the
     vertical thrust, long_body), "near_long" inside its ``near_long_region`` beyond both (near_long_body), "turned"
     inside its ``turned_region`` beyond both (a turn first, then forward), "turned_long" inside its
-    ``turned_long_region`` (the turn first, then the long row), "turned_near_long" inside its ``turned_near_long_region``
+    ``turned_long_region`` (the turn first, then the long row; "turned_long_short" inside its ``turned_long_short_region``),
+    "turned_near_long" inside its ``turned_near_long_region``
     (the turn first, then the near long row), "turned_mid_long" inside its ``turned_mid_long_region`` (the turn
     first, then the mid long row), "sideways" inside its ``sideways_region`` (the
     quarter turn first); down
@@ -295,7 +300,7 @@ def commanded_way(character: str, target, air_time: float) -> str | None:
     if region["target_y"][0] <= y <= region["target_y"][1]:
         return None
     values = {"distance": math.hypot(x, y), "bearing": abs(math.atan2(y, x)), "air_time": float(air_time)}
-    return next((way for way in ("turned", "turned_long", "turned_near_long", "turned_mid_long", "sideways") if body.get(f"{way}_region") is not None
+    return next((way for way in ("turned", "turned_long", "turned_long_short", "turned_near_long", "turned_mid_long", "sideways") if body.get(f"{way}_region") is not None
                  and all(body[f"{way}_region"][k][0] <= v <= body[f"{way}_region"][k][1] for k, v in values.items())), None)
 
 
@@ -384,6 +389,8 @@ def commanded_limit(character: str) -> str | None:
         parts.append(f"for long air times nearer (the vertical thrust with its own lean push) for {_flat(body['near_long_region'])}")
     if body.get("turned_long_region"):
         parts.append(f"turned first with long air times {_turned(body['turned_long_region'])}")
+    if body.get("turned_long_short_region"):
+        parts.append(f"turned first with the long row at shorter air times {_turned(body['turned_long_short_region'])}")
     if body.get("turned_near_long_region"):
         parts.append(f"turned first with long air times nearer {_turned(body['turned_near_long_region'])}")
     if body.get("turned_mid_long_region"):
