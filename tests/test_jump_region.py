@@ -458,7 +458,8 @@ def test_the_mans_near_long_air_times_are_flown_by_the_near_long_row_and_land_ba
         f"{near['target_x'][1]:g} m, target_y {near['target_y'][0]:g}-{near['target_y'][1]:g} m, air_time "
         f"{near['air_time'][0]:g}-{near['air_time'][1]:g} s") in refusal
     draws = draw_requests(SEED, ["man"], 0, 0, 0, long=6)
-    assert {commanded_way("man", d.values[:2], d.values[2]) for d in draws} == {"long", "near_long"}
+    assert {"long", "near_long"} <= {commanded_way("man", d.values[:2], d.values[2]) for d in draws} \
+        <= {"long", "near_long", "deep_long"}                                          # the deep row is in the union too
     draw = next(d for d in draws if commanded_way("man", d.values[:2], d.values[2]) == "near_long")
     result, plan = planned_and_run(draw)
     assert plan["settings"]["lean_push"] == body["near_long_settings"]["lean_push"]
