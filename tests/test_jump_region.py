@@ -165,7 +165,7 @@ def test_a_target_outside_both_regions_is_refused_naming_both(monkeypatch):
                          "a box 0.25-0.5 m high at target_x "
                          "0.85-1.6 m where the same lift-off on flat ground would land in the long air times' region in "
                          "0.52-0.7 s (T0 = air_time + 2 height / (g air_time))")
-    assert "the commanded take-off is offered on flat ground for target_x 0.5-1.2 m" in region_refusal("man", (1.3, 0.4), 0.68)
+    assert "the commanded take-off is offered on flat ground for target_x 0.5-1.2 m" in region_refusal("man", (1.3, 0.4), 0.72)
 
 
 def all_planned_and_run(character: str, draws, store):
@@ -455,7 +455,7 @@ def test_random_long_air_times_are_flown_by_the_vertical_thrust_and_land_balance
     x, t = 0.5 * sum(region["target_x"]), 0.5 * sum(region["air_time"])
     assert region["air_time"][0] <= 0.55 and region["air_time"][1] >= 0.65 > body["region"]["air_time"][1]
     assert commanded_way(character, (x, 0.0), t) == "long"
-    assert commanded_way(character, (x, 0.0), region["air_time"][1] + 0.05) is None
+    assert commanded_way(character, (x, 0.0), region["air_time"][1] + 0.08) is None      # beyond the man's deep row too
     assert commanded_way(character, (region["target_x"][1] + 0.05, 0.0), t) is None
     assert commanded_way(character, (x, 0.0, -0.3), t) is None      # down from a box: the long row flies none
     refusal = region_refusal(character, (x, 0.0), region["air_time"][1] + 0.1)
@@ -465,7 +465,7 @@ def test_random_long_air_times_are_flown_by_the_vertical_thrust_and_land_balance
         f"{region['air_time'][0]:g}-{region['air_time'][1]:g} s") in refusal
     draws = draw_requests(SEED, [character], 0, 0, 0, long=LONG_TARGETS)
     assert [d.character for d in draws] == [character] * LONG_TARGETS
-    assert all(commanded_way(character, d.values[:2], d.values[2]) in ("long", "near_long")       # the man's near row too
+    assert all(commanded_way(character, d.values[:2], d.values[2]) in ("long", "near_long", "deep_long")   # the man's near and deep rows too
                and mode(character, d.values[:2], d.values[2]) == "commanded" for d in draws)
     results, lines, plans, c = all_planned_and_run(character, draws, tmp_path)
     assert len(plans) == LONG_TARGETS
@@ -488,15 +488,16 @@ def test_the_mans_near_long_air_times_are_flown_by_the_near_long_row_and_land_ba
     assert commanded_way("man", (0.9, 0.0), 0.6) == "near_long"
     assert commanded_way("man", (0.9, 0.0), 0.45) == "straight"                      # his commanded row first
     assert commanded_way("man", (1.7, 0.0), 0.6) == "long"
-    assert commanded_way("man", (0.9, 0.0), near["air_time"][1] + 0.03) is None
+    assert commanded_way("man", (0.9, 0.0), near["air_time"][1] + 0.08) is None     # beyond the deep row too
     assert commanded_way("man", (0.9, 0.0, 0.28), 0.47) is None     # onto a box by the near row: measured 25 / 30, not offered
-    refusal = region_refusal("man", (0.9, 0.0), near["air_time"][1] + 0.03)
+    refusal = region_refusal("man", (0.9, 0.0), near["air_time"][1] + 0.08)
     assert "\n" not in refusal and (
         f"for long air times nearer (the vertical thrust with its own lean push) for target_x {near['target_x'][0]:g}-"
         f"{near['target_x'][1]:g} m, target_y {near['target_y'][0]:g}-{near['target_y'][1]:g} m, air_time "
         f"{near['air_time'][0]:g}-{near['air_time'][1]:g} s") in refusal
     draws = draw_requests(SEED, ["man"], 0, 0, 0, long=6)
-    assert {commanded_way("man", d.values[:2], d.values[2]) for d in draws} == {"long", "near_long"}
+    assert {"long", "near_long"} <= {commanded_way("man", d.values[:2], d.values[2]) for d in draws} \
+        <= {"long", "near_long", "deep_long"}                                          # the deep row is in the union too
     draw = next(d for d in draws if commanded_way("man", d.values[:2], d.values[2]) == "near_long")
     result, plan = planned_and_run(draw)
     assert plan["settings"]["lean_push"] == body["near_long_settings"]["lean_push"]
@@ -517,13 +518,14 @@ def test_random_lateral_targets_at_long_air_times_turn_first_and_fly_the_long_ro
     region = table(character)["turned_long_region"]
     d, b, t = (0.5 * sum(region[k]) for k in ("distance", "bearing", "air_time"))
     assert commanded_way(character, (d * math.cos(b), -d * math.sin(b)), t) == "turned_long"
-    assert commanded_way(character, (d * math.cos(b), d * math.sin(b)), region["air_time"][1] + 0.05) is None
+    assert commanded_way(character, (d * math.cos(b), d * math.sin(b)), region["air_time"][1] + 0.08) is None
     refusal = region_refusal(character, (d * math.cos(b), d * math.sin(b)), region["air_time"][1] + 0.1)
     assert "\n" not in refusal and (
         f"turned first with long air times for a distance of {region['distance'][0]:g}-{region['distance'][1]:g} m") in refusal
     draws = draw_requests(SEED, [character], 0, 0, 0, turned_long=TURNED_LONG_TARGETS)
     assert [d.skill for d in draws] == ["turned_long"] * TURNED_LONG_TARGETS
-    assert all(commanded_way(character, d.values[:2], d.values[2]) in ("turned_long", "turned_long_short", "turned_near_long")
+    assert all(commanded_way(character, d.values[:2], d.values[2]) in ("turned_long", "turned_long_short", "turned_near_long",
+                                                                       "turned_deep_long")
                and not offered(character, d.values[:2], d.values[2]) for d in draws)
     results, lines, plans, c = all_planned_and_run(character, draws, tmp_path)
     assert len(plans) == TURNED_LONG_TARGETS
@@ -576,7 +578,7 @@ def test_the_mans_turned_long_rows_fly_the_long_row_without_the_arms_feedback_an
     assert commanded_way("man", (0.85, 0.3), 0.55) == "turned_near_long"
     assert commanded_way("man", (0.85, 0.3), 0.45) == "turned"                     # his short turned row first
     assert commanded_way("man", (1.2, 0.3), 0.6) is None                           # between the near and mid rows
-    assert commanded_way("man", (0.85, 0.3), near["air_time"][1] + 0.02) is None
+    assert commanded_way("man", (0.85, 0.3), near["air_time"][1] + 0.1) is None     # beyond the deep row too
     settings = turned_long_body(body)["settings"]
     assert settings["landing_arm_pitch_gain"] == body["turned_long_settings"]["landing_arm_pitch_gain"] == 0.0
     assert {**settings, "landing_arm_pitch_gain": 0.0} == {**long_body(body)["settings"], "landing_arm_pitch_gain": 0.0}
@@ -604,7 +606,7 @@ def test_the_mans_mid_long_row_flies_between_his_near_and_far_rows_with_its_own_
     assert commanded_way("man", (1.3, 0.3), 0.6) == "turned_mid_long"
     assert commanded_way("man", (1.6, 0.4), 0.6) == "turned_long"                  # the far row's as before
     assert commanded_way("man", (0.85, 0.3), 0.55) == "turned_near_long"           # the near row's as before
-    assert commanded_way("man", (1.3, 0.3), turned["air_time"][1] + 0.02) is None
+    assert commanded_way("man", (1.3, 0.3), turned["air_time"][1] + 0.07) is None   # beyond the deep row too
     settings = mid_long_body(body)["settings"]
     push = body["mid_long_settings"]["lean_push"]
     assert body["long_settings"]["lean_push"] < push < body["near_long_settings"]["lean_push"] == \
@@ -614,7 +616,7 @@ def test_the_mans_mid_long_row_flies_between_his_near_and_far_rows_with_its_own_
         {**long_body(body)["settings"], "lean_push": 0, "landing_arm_pitch_gain": 0}
     assert mid_long_body(body)["crouch_by_air_time"] == body["mid_long_crouch_by_air_time"]
     assert "mid_long_region" not in table("woman")
-    refusal = region_refusal("man", (1.3, 0.3), turned["air_time"][1] + 0.03)
+    refusal = region_refusal("man", (1.3, 0.3), turned["air_time"][1] + 0.08)
     assert "\n" not in refusal and (f"turned first with long air times in the middle for a distance of "
                                      f"{turned['distance'][0]:g}-{turned['distance'][1]:g} m") in refusal
 
@@ -637,4 +639,56 @@ def test_random_targets_of_the_mans_mid_long_row_land_balanced(tmp_path):
                and p["settings"]["turn_angle"] != 0.0 for p in plans)
     assert all(p["trials"] <= c.turn_aim_trials + c.landing_trials - 1 for p in plans)
     assert sum(r["passed"] for r in results) >= MID_LONG_TARGETS - 1, "\n".join(lines)
+    assert max(r["seconds"] for r in results) <= 60, "\n".join(lines)
+
+
+def test_the_mans_deep_long_row_flies_his_far_row_at_its_deepest_crouches():
+    """The man's longest air times (docs/jump_to_target.md, "The man's deep long row"): where none of his long rows
+    reaches (0.62-0.7 s), straight ahead (deep_long_region) and after the hop (turned_deep_long_region), flown by his far
+    long row as it is (turned: with turned_long_settings) with the deep row's crouch pairs; his other rows keep their
+    regions; beyond 0.7 s refused in one line naming it. No simulation."""
+    from sim_core.skills.jump_to_target.commanded import (commanded_way, deep_long_body, long_body, table,
+                                                          turned_long_body)
+    body = table("man")
+    straight, turned = body["deep_long_region"], body["turned_deep_long_region"]
+    assert straight["air_time"][1] == turned["air_time"][1] > body["turned_long_region"]["air_time"][1]
+    assert commanded_way("man", (1.6, 0.0), 0.68) == "deep_long"
+    assert commanded_way("man", (1.55, 0.4), 0.68) == "turned_deep_long"
+    assert commanded_way("man", (1.3, 0.3), 0.68) is None                           # nearer: the aim's map is rough there
+    assert commanded_way("man", (1.7, 0.3), 0.6) == "turned_long"                   # the far row's as before
+    assert commanded_way("man", (1.3, 0.3), 0.6) == "turned_mid_long"               # the mid row's as before
+    assert commanded_way("man", (1.0, 0.0), 0.6) == "near_long"                     # the near row's as before
+    assert commanded_way("man", (1.8, 0.3), 0.68) is None                           # farther: aims at the cap
+    assert commanded_way("man", (1.0, 0.4), 0.72) is None
+    deep = deep_long_body(body)
+    assert deep["settings"] == long_body(body)["settings"] and deep["crouch_by_air_time"] == \
+        body["deep_long_crouch_by_air_time"]
+    assert deep_long_body(body, turned=True)["settings"] == turned_long_body(body)["settings"]
+    assert min(deep["crouch_by_air_time"]["crouch_height"]) < min(body["long_crouch_by_air_time"]["crouch_height"])
+    assert "deep_long_region" not in table("woman") and "turned_deep_long_region" not in table("woman")
+    refusal = region_refusal("man", (1.0, 0.4), 0.72)
+    assert "\n" not in refusal and (f"turned first with the longest air times for a distance of "
+                                     f"{turned['distance'][0]:g}-{turned['distance'][1]:g} m") in refusal
+
+
+DEEP_LONG_TARGETS = 3       # random targets in the man's turned deep long row's region, outside his measured jumps'
+
+
+@pytest.mark.slow
+def test_random_targets_of_the_mans_deep_long_row_land_balanced(tmp_path):
+    """Random targets uniform in issue 29's box where the man's turned deep long row holds them (the report's draw,
+    random_requests.draw_turned, with a fixed seed), planned and run as a user's requests: the hop, then the far long
+    row's vertical thrust at its deepest crouches, landing within the tolerances and balanced."""
+    import numpy as np
+    from sim_core.random_requests import Draw, draw_turned
+    from sim_core.skills.jump_to_target.commanded import commanded_way
+    rng = np.random.default_rng(SEED)
+    draws = [Draw("turned_long", "man", draw_turned(rng, "man", ("turned_deep_long",))) for _ in range(DEEP_LONG_TARGETS)]
+    assert all(commanded_way("man", d.values[:2], d.values[2]) == "turned_deep_long"
+               and not offered("man", d.values[:2], d.values[2]) for d in draws)
+    results, lines, plans, c = all_planned_and_run("man", draws, tmp_path)
+    assert all(p["settings"]["vertical_thrust"] == 1.0 and p["settings"]["turn_angle"] != 0.0
+               and p["settings"]["crouch_height"] < 0.55 for p in plans)
+    assert all(p["trials"] <= c.turn_aim_trials + c.landing_trials - 1 for p in plans)
+    assert sum(r["passed"] for r in results) >= DEEP_LONG_TARGETS - 1, "\n".join(lines)
     assert max(r["seconds"] for r in results) <= 60, "\n".join(lines)

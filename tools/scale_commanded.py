@@ -68,7 +68,8 @@ def main() -> None:
     for key in ("turn_headings", "long_region", "long_settings", "long_crouch_by_air_time", "down_region", "high_down_region", "long_onto_region", "down_settings",
                 "near_long_region", "near_long_settings", "near_long_crouch_by_air_time", "turned_long_region",
                 "turned_long_settings", "turned_near_long_region", "mid_long_settings",
-                "mid_long_crouch_by_air_time", "turned_mid_long_region", "low_down_regions", "low_down_crouch_by_air_time"):
+                "mid_long_crouch_by_air_time", "turned_mid_long_region", "low_down_regions", "low_down_crouch_by_air_time",
+                "deep_long_crouch_by_air_time", "deep_long_region", "turned_deep_long_region", "turned_long_short_region"):
         if key in before:       # the hop's measured map (tools/turn_headings.py), the long rows, the box row and the turned
             body[key] = before[key]     # long row's region, measured on it, are kept
     if args.turned_region:

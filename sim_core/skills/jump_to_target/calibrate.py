@@ -1722,6 +1722,72 @@ beyond 34 deg at any air time (the hop lines beyond 40 deg: `tools/turn_headings
 jumps after them), straight far quick targets (the aim on both coordinates), near targets (0.5-0.7 m) at 0.4-0.52 s to
 the side, and distances beyond 1.6 m.
 
+**The man's deep long row: his far row at its deepest crouches, 0.62-0.69 s at 1.45-1.75 m (issue 29, twenty-fourth
+session, 2026-12-07): his share of issue 29's box 52.1 % -> 54.9 %.** Every long row of his stopped at 0.62-0.65 s (by
+forward distance x air time, 6000 uniform draws of `region.in_region`, /work/scratch/jump21/regmap.py: 0.625-0.7 s
+offered 13-35 % at every distance, the woman's 90-100 % beyond 0.7 m). Why, measured: not a landing that falls or a
+flight that does not reach - no row was measured flying it. The far row's deepest crouch pair was 0.55 m: 0.61 s; the
+near row's push 10 at a 0.5 m crouch leaves at most ~0.95 m/s forward, the mid row's push 5 lands at most ~1.45 m. The
+far row itself (`lean_push` 3) at deeper crouches (`tools/commanded_jumps.py --character man --table --long --set
+crouch_height=C --sweep 1.4,2.4,0.2 --air-time 0.68`): C 0.5 m flew 0.65-0.685 s and landed 1.23 / 1.36 / 1.47 / 1.55 /
+1.68 / 1.76 m at aims 1.4-2.4 m, all six balanced; 0.525 m 0.62-0.66 s, 1.42-1.85 m at aims 1.6-2.4 m (one fell); 0.51 m 0.635-0.675 s,
+1.37-1.77 m at aims 1.6-2.4 m. Further: `lean_push` 2 at 0.5 m landed 1.66-2.12 m, 3 of 5 fell; `arm_swing` 2.0 no further (1.81 m at
+aim 2.4); the aim stops at the leap's `flight_target_x` 2.5 m - so ~1.75-1.8 m is the end at 0.65-0.7 s. Nearer (0.5
+m, aims 0.6-1.5 m every 5 cm): 0.83 / 0.70 / 0.99 / 0.78 / 0.79 / 1.10 / 1.14 / 1.09 / 1.15 / 1.16 / 1.19 / 1.16 / 1.21
+/ 1.30 / 1.29 / 1.28 / 1.23 / 1.32 / 1.35 m in 0.675-0.705 s (one fell, three stepped; 0.515 m: 6 of 19 fell) - below
+~1.1 m the landing does not follow the aim, at 1.15-1.3 m it hardly moves with it; the same at 0.5 m with `lean_push` 2 /
+2.5 / 4 / 5 / 7, aims 0.8-1.8 (or 0.4-1.6) m: 1.11-1.74 m (4 of 11 fell) / 1.14-1.58 m (2 fell) / 0.78-1.32 m / 0.72-1.19
+m / 0.65-1.10 m, none of them smoother.
+The design kept, the far row as it is at its deepest crouches: a table's new optional `deep_long_crouch_by_air_time`
+(`commanded.deep_long_body`: long_body, after the hop turned_long_body, with these pairs), `deep_long_region` (keys of
+`long_region`; `commanded_way` "deep_long" after the other straight rows) and `turned_deep_long_region` (keys of
+`turned_region`; "turned_deep_long", the hop then the far row, checked after the other turned rows, so it takes only what
+they leave); the report's `--long` and `--turned-long` draw in the unions with them (`draw_long`, `draw_turned_long`).
+His pairs 0.525 m: 0.64 s, 0.5 m: 0.69 s. Measured:
+- straight ahead, planned (`tools/commanded_jumps.py --character man --table --long --crouch-by-air-time C --random 12
+  --seed S --forward F --air-times 0.62,0.7 --aim 9 --plan-landing 9`): the far row's pairs with a 0.5 m one added
+  (`0.6:0.55,0.55:0.61,0.5:0.67`), seed 401, 1.5-1.9 m: **9 / 12**, 12 balanced (the misses 1.83-1.86 m, aims at the
+  cap, 5.0-12.5 cm off; every target to 1.78 m hit); the deep pairs, seed 403, 0.8-1.8 m: **10 / 12** (0.98 m 5.8 cm off,
+  1.06 m on the target and fell);
+- after the hop (a scratch script drawing as `draw_turned` in `turned_deep_long_region` only, each planned and run by
+  `random_requests.evaluate` as a user's request, budget 24), 0-0.6 rad, 0.62-0.7 s: first attempt 0.8-1.8 m, seeds 501
+  **11 / 12** and 503 **17 / 20** (of the 32, 8 / 11 nearer than 1.05 m, 5.3-7.4 cm off; (1.762, +0.332) m in 0.684 s 9.9
+  cm off, aims at the cap); second attempt 1.05-1.75 m, seeds 505 **18 / 20** (both misses (1.265, -0.272) and (1.284,
+  +0.271) m in 0.671 s: on the target and fell at every placement) and 507 **15 / 20** (three misses at 1.21-1.42 m
+  5.5-14.1 cm off, two at 1.59 and 1.75 m in 0.696-0.7 s flown 0.645 s), and the report's `--turned-long 20` (the union of
+  his turned long rows: `python -m sim_core report random --seed 603 --jumps 0 --leaps 0 --broad 0 --turned-long 20
+  --characters man --budget 24 --workers 1 --out ...`) **18 / 20** (median 11.2 s, worst 29.6 s; both misses the deep
+  row's (its deep draws 5 / 7), (1.349, +0.183) m in 0.659 s 7.3 cm off, (1.142, +0.260) m in 0.673 s 5.7 cm off). Over
+  these seeds the deep draws at 1.15-1.45 m: **25 / 32 (78 %)** - where the landing per aimed m is flattest; 1.05-1.15 m
+  12 / 12, 1.45-1.75 m 21 / 23, nearer than 1.05 m 8 / 11; so not offered nearer than 1.45 m (two focused attempts);
+- 1.45-1.75 m, 0-0.6 rad (34 deg), 0.62-0.7 s: the draws of the seeds above inside it 21 / 23; fresh seeds 509 **18 /
+  20** ((1.460, -0.021) m in 0.688 s 6.0 cm off after 10 jumps, (1.724, -0.222) m in 0.685 s 6.2 cm off, flown 0.635 s)
+  and 511 **18 / 20** ((1.593, +0.113) m in 0.697 s flown 0.645 s, (1.664, +0.343) m in 0.682 s 7.8 cm off): 57 / 63
+  (90.5 %) - of them 0.62-0.69 s **45 / 48 (94 %)**, 0.69-0.7 s 15 / 18 (83 %): far targets asked 0.68-0.7 s fly
+  0.635-0.655 s (within 0.05 s, barely: 0.5 m is the deepest crouch of his rows), so the air time
+  asked is bounded at 0.69 s;
+- kept `deep_long_region` **1.45-1.75 m, +-2 cm, 0.62-0.69 s** and `turned_deep_long_region` **1.45-1.75 m, 0-0.6 rad
+  (34 deg; every lateral offset of the box at these distances), 0.62-0.69 s**: fresh seed 513 **19 / 20** ((1.684, +0.310)
+  m in 0.678 s, 2.1 cm off but flown 0.62 s) - the turned row inside it **64 / 68 (94 %)** over the seeds; straight ahead
+  (the scratch script drawing as `draw_commanded` in `deep_long_region`) fresh seed 515 **11 / 12** ((1.735, -0.010) m in
+  0.649 s 6.4 cm off after 10 jumps);
+- as a user's long requests (`python -m sim_core report random --seed 601 --jumps 0 --leaps 0 --broad 0 --long 20
+  --characters man --budget 24 --workers 1 --out ...`, the union of his straight long rows, drawn with the first
+  attempt's region): **20 / 20** (2.7 / 9.4 s; its two deep draws hit).
+Offered share of issue 29's box (`random_requests.region_share`, seed 29's 20,000 draws): the man 52.1 % -> **54.9 %**
+(the woman unchanged). regmap.py's 6000 draws, the 0.625-0.7 s column before -> after: 1.3-1.5 m 35 -> 60 %, 1.5-1.7 m
+33 -> 89 %, 1.7-1.9 m 28 -> 32 %, 0.5-1.3 m as before (13-33 %). A target outside is refused in one line
+naming every limit (`commanded_limit`: "... for the longest air times (the vertical thrust's deepest crouches) for
+target_x 1.45-1.75 m, target_y -0.02-0.02 m, air_time 0.62-0.69 s, ... and turned first with the longest air times for
+a distance of 1.45-1.75 m at a bearing of 0-34 deg to either side, air_time 0.62-0.69 s"). Tests: tests/test_jump_region.py
+checks the deep row's ways, body and refusal (no simulation) and plans and runs three random draws of its turned region
+with a fixed seed (slow); the other rows' limit probes now lie beyond 0.7 s. Not done: 0.5-1.45 m at 0.62-0.7 s (the far
+row's landing there does not follow its aim; pushes 2-7 no smoother - the take-off's forward speed for a near, long
+flight, rather than the lean push's trigger, would be the next design), 1.75-1.9 m at 0.65-0.7 s (the aim's cap),
+0.69-0.7 s, and his short air times 0.4-0.475 s beyond 1.1 m (4-30 %): why, one sweep (his commanded row, `--table --set
+crouch_height=C --sweep 1.2,2.4,0.2 --air-time 0.44`, C 0.63 / 0.6 m): it leaves at most 2.1 m/s forward and lands at
+most 1.53 m in 0.35-0.5 s, 13 of 14 fell - 1.9 m in 0.44 s asks 4.3 m/s; a broad-jump-like take-off would be the design.
+
 ![commanded vs achieved landing point](jump_to_target.png)
 
 ![the man's 1.3 m jump to a target, 1.0-2.1 s: crouch, thrust, flight, landing, standing up](jump_to_target_filmstrip.png)

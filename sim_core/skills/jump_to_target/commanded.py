@@ -77,6 +77,12 @@ Fig. 6 with his thrust slowed for his strength, tools/scale_commanded.py and doc
   table's settings with its ``down_settings``) with ``low_down_crouch_by_air_time`` as the crouch pairs
   (low_down_body: the table's pairs and a shallower crouch's, whose lift-off flies ~0.3 s on flat ground; a shallower
   one still leaves as fast up, docs/jump_to_target.md "Down from a box with a shallow crouch");
+- ``deep_long_region``, ``turned_deep_long_region`` (optional, with the long row and ``deep_long_crouch_by_air_time``):
+  the same keys as ``long_region`` / ``turned_region`` for the longest air times, flown by the long row as it is (and,
+  turned, with ``turned_long_settings``) at its deepest crouches, ``deep_long_crouch_by_air_time`` (deep_long_body): the
+  man's far row at a 0.5 m crouch flies 0.65-0.7 s and lands up to ~1.75 m as aimed (nearer than ~1.45 m its landing
+  per aimed m is flat and rough), beyond his other rows' deepest crouches (docs/jump_to_target.md, "The man's deep long
+  row"); a request there outside the rows above is planned so;
 - ``long_onto_region``, ``long_down_region`` (optional, with the long row): the same keys as ``down_region`` for a
   jump straight ahead onto a box / down from one flown by the long row (long_body) where the flight's flat
   equivalent lies in ``long_region`` with its air time in ``flat_air_time``; ``target_x`` (optional, [low, high] m)
@@ -145,7 +151,7 @@ def _rows(body: dict):
     if "turned_long_settings" in body:
         yield "turned_long_settings", body["turned_long_settings"]
     for key in ("crouch_by_air_time", "long_crouch_by_air_time", "near_long_crouch_by_air_time", "mid_long_crouch_by_air_time",
-                "low_down_crouch_by_air_time"):
+                "low_down_crouch_by_air_time", "deep_long_crouch_by_air_time"):
         for k, height in enumerate(body.get(key, {}).get("crouch_height", [])):
             yield f"{key} {k}", {"crouch_height": height}
     for k, angle in enumerate(body.get("turn_headings", {}).get("turn_angle", [])):
@@ -244,6 +250,13 @@ def turned_long_body(body: dict) -> dict:
     return {**long, "settings": {**long["settings"], **body.get("turned_long_settings", {})}}
 
 
+def deep_long_body(body: dict, turned: bool = False) -> dict:
+    """The table as the deep long air times' plan reads it (``deep_long_region``; ``turned``: ``turned_deep_long_region``):
+    long_body (turned: turned_long_body) with ``deep_long_crouch_by_air_time`` as the crouch pairs."""
+    return {**(turned_long_body(body) if turned else long_body(body)),
+            "crouch_by_air_time": body["deep_long_crouch_by_air_time"]}
+
+
 def flat_equivalent(target, air_time: float) -> tuple[float, float]:
     """The flat-ground flight of a jump's lift-off velocity: a target ``target`` (x, y, z) reached in
     ``air_time`` s leaves at x / T forward and at the vertical speed that lands z m higher (ballistics);
@@ -277,7 +290,8 @@ def commanded_way(character: str, target, air_time: float) -> str | None:
     ``turned_long_region`` (the turn first, then the long row; "turned_long_short" inside its ``turned_long_short_region``),
     "turned_near_long" inside its ``turned_near_long_region``
     (the turn first, then the near long row), "turned_mid_long" inside its ``turned_mid_long_region`` (the turn
-    first, then the mid long row), "sideways" inside its ``sideways_region`` (the
+    first, then the mid long row), "turned_deep_long" inside its ``turned_deep_long_region`` (the turn first, then the
+    long row at its deepest crouches), "sideways" inside its ``sideways_region`` (the
     quarter turn first); down
     from a box (z < 0) or onto one (z > 0) as box_way says; else None."""
     body = table(character)
@@ -297,10 +311,15 @@ def commanded_way(character: str, target, air_time: float) -> str | None:
     near = body.get("near_long_region")
     if near is not None and all(near[k][0] <= v <= near[k][1] for k, v in values.items()):
         return "near_long"
+    deep = body.get("deep_long_region")
+    if deep is not None and all(deep[k][0] <= v <= deep[k][1] for k, v in values.items()):
+        return "deep_long"
     if region["target_y"][0] <= y <= region["target_y"][1]:
         return None
     values = {"distance": math.hypot(x, y), "bearing": abs(math.atan2(y, x)), "air_time": float(air_time)}
-    return next((way for way in ("turned", "turned_long", "turned_long_short", "turned_near_long", "turned_mid_long", "sideways") if body.get(f"{way}_region") is not None
+    return next((way for way in ("turned", "turned_long", "turned_long_short", "turned_near_long", "turned_mid_long",
+                                 "turned_deep_long", "sideways")
+                 if body.get(f"{way}_region") is not None
                  and all(body[f"{way}_region"][k][0] <= v <= body[f"{way}_region"][k][1] for k, v in values.items())), None)
 
 
@@ -387,6 +406,8 @@ def commanded_limit(character: str) -> str | None:
         parts.append(f"for long air times (the leap's vertical thrust) on flat ground for {_flat(body['long_region'])}")
     if body.get("near_long_region"):
         parts.append(f"for long air times nearer (the vertical thrust with its own lean push) for {_flat(body['near_long_region'])}")
+    if body.get("deep_long_region"):
+        parts.append(f"for the longest air times (the vertical thrust's deepest crouches) for {_flat(body['deep_long_region'])}")
     if body.get("turned_long_region"):
         parts.append(f"turned first with long air times {_turned(body['turned_long_region'])}")
     if body.get("turned_long_short_region"):
@@ -395,6 +416,8 @@ def commanded_limit(character: str) -> str | None:
         parts.append(f"turned first with long air times nearer {_turned(body['turned_near_long_region'])}")
     if body.get("turned_mid_long_region"):
         parts.append(f"turned first with long air times in the middle {_turned(body['turned_mid_long_region'])}")
+    if body.get("turned_deep_long_region"):
+        parts.append(f"turned first with the longest air times {_turned(body['turned_deep_long_region'])}")
     for key, way, sign in (("long_onto_region", "onto", "+"), ("long_down_region", "down from", "-")):
         if body.get(key):
             parts.append(_box(body[key], way, "the long air times' region", sign) + ")")
