@@ -57,10 +57,9 @@ from ..ballistics import flat_air_time
 from ..character.spec import load_character
 from ..control.leap import LEAP_SETTINGS
 from ..errors import ParameterError
-from ..skills.jump_to_target.commanded import (commanded_settings, commanded_way, deep_long_body, line_offset, long_body,
-                                               low_down_body, mid_long_body,
-                                               near_long_body, planner_constants, table, turn_for_heading, turn_for_point,
-                                               turned_long_body, turned_settings)
+from ..skills.jump_to_target.commanded import (TURNED_WAYS, commanded_settings, commanded_way, line_offset,
+                                               planner_constants, table, turn_for_heading, turn_for_point, turned_settings,
+                                               way_body)
 from .land import candidates, foot_step
 from .trials import Trials
 
@@ -85,17 +84,9 @@ def plan_commanded(character: str, target, air_time: float, trial, budget: int, 
     {"settings", "measured", "trials", "found"}."""
     c, body = constants or planner_constants(character), body or table(character)
     way = commanded_way(character, target, air_time)
-    if way in ("turned", "turned_long", "turned_long_short", "turned_near_long", "turned_mid_long", "turned_deep_long",
-               "sideways"):
+    if way in TURNED_WAYS:
         return plan_turned(character, target, air_time, trial, budget, judge, progress, cancelled, body, c, way)
-    if way in ("long", "long_down", "long_onto") and "long_settings" in body:
-        body = long_body(body)      # long air times (onto or down from a box too): the vertical thrust's settings and crouch pairs
-    elif way == "near_long" and "near_long_settings" in body:
-        body = near_long_body(body)  # long air times nearer: the same with the near row's own lean push and crouch pairs
-    elif way == "low_down":
-        body = low_down_body(body)   # a low lift-off down from a box: the crouch pairs with the shallower crouch's
-    elif way == "deep_long" and "deep_long_crouch_by_air_time" in body:
-        body = deep_long_body(body)  # the longest air times: the long row at its deepest crouches
+    body = way_body(body, way)
     x = float(target[0])
     bound = min(budget, c.aim_trials + c.landing_trials - 1)
     trials = Trials(trial, bound, progress, cancelled)
@@ -142,14 +133,7 @@ def plan_turned(character: str, target, air_time: float, trial, budget: int, jud
     the long row, commanded.turned_long_body; "turned_near_long" / "turned_mid_long": the hop, then the near / mid long row,
     commanded.near_long_body / mid_long_body; "turned_deep_long": the hop, then the long row at its deepest crouches,
     commanded.deep_long_body)."""
-    if way in ("turned_long", "turned_long_short"):
-        body = turned_long_body(body)
-    elif way == "turned_near_long":
-        body = near_long_body(body)
-    elif way == "turned_mid_long":
-        body = mid_long_body(body)
-    elif way == "turned_deep_long":
-        body = deep_long_body(body, turned=True)
+    body = way_body(body, way)
     x, y = float(target[0]), float(target[1])
     distance, bearing = math.hypot(x, y), math.atan2(y, x)
     along, side = (math.cos(bearing), math.sin(bearing)), (-math.sin(bearing), math.cos(bearing))

@@ -257,6 +257,33 @@ def deep_long_body(body: dict, turned: bool = False) -> dict:
             "crouch_by_air_time": body["deep_long_crouch_by_air_time"]}
 
 
+TURNED_WAYS = ("turned", "turned_long", "turned_long_short", "turned_near_long", "turned_mid_long", "turned_deep_long",
+               "sideways")      # the ways commanded_way names that turn first (planning.commanded.plan_turned)
+
+
+def way_body(body: dict, way: str) -> dict:
+    """The table as the plan of a request that commanded_way (or box_way) sends ``way`` reads it: the row that flies it
+    (long_body, near_long_body, mid_long_body, low_down_body, turned_long_body, deep_long_body; straight ahead a row
+    the table lacks flies as the table's own settings), else the table as it is."""
+    if way in ("long", "long_down", "long_onto") and "long_settings" in body:
+        return long_body(body)      # long air times (onto or down from a box too): the vertical thrust's settings and pairs
+    if way == "near_long" and "near_long_settings" in body:
+        return near_long_body(body)  # long air times nearer: the same with the near row's own lean push and crouch pairs
+    if way == "low_down":
+        return low_down_body(body)   # a low lift-off down from a box: the crouch pairs with the shallower crouch's
+    if way == "deep_long" and "deep_long_crouch_by_air_time" in body:
+        return deep_long_body(body)  # the longest air times: the long row at its deepest crouches
+    if way in ("turned_long", "turned_long_short"):
+        return turned_long_body(body)
+    if way == "turned_near_long":
+        return near_long_body(body)
+    if way == "turned_mid_long":
+        return mid_long_body(body)
+    if way == "turned_deep_long":
+        return deep_long_body(body, turned=True)
+    return body
+
+
 def flat_equivalent(target, air_time: float) -> tuple[float, float]:
     """The flat-ground flight of a jump's lift-off velocity: a target ``target`` (x, y, z) reached in
     ``air_time`` s leaves at x / T forward and at the vertical speed that lands z m higher (ballistics);
@@ -317,9 +344,7 @@ def commanded_way(character: str, target, air_time: float) -> str | None:
     if region["target_y"][0] <= y <= region["target_y"][1]:
         return None
     values = {"distance": math.hypot(x, y), "bearing": abs(math.atan2(y, x)), "air_time": float(air_time)}
-    return next((way for way in ("turned", "turned_long", "turned_long_short", "turned_near_long", "turned_mid_long",
-                                 "turned_deep_long", "sideways")
-                 if body.get(f"{way}_region") is not None
+    return next((way for way in TURNED_WAYS if body.get(f"{way}_region") is not None
                  and all(body[f"{way}_region"][k][0] <= v <= body[f"{way}_region"][k][1] for k, v in values.items())), None)
 
 
