@@ -409,41 +409,44 @@ def _box(region: dict, way: str, landing: str, sign: str) -> str:
               f"{region['flat_air_time'][0]:g}-{region['flat_air_time'][1]:g} s (T0 = air_time {sign} 2 height / (g air_time)")
 
 
-def commanded_limit(character: str) -> str | None:
-    """The commanded region's limits in words (None: the character has none)."""
+def commanded_limit(character: str, z: float = 0.0) -> str | None:
+    """The commanded region's limits in words for a target ``z`` m up (0: on flat ground, turned or not; > 0: onto a
+    box; < 0: down from one): the flat region (the box regions are read from it) and the regions of that kind alone
+    (None: the character has none)."""
     body = table(character)
     if body is None:
         return None
-    parts = [f"the commanded take-off is offered on flat ground for {_flat(body['region'])}"]
+    kind = "flat" if z == 0.0 else ("onto" if z > 0.0 else "down")
+    parts = [("flat", f"the commanded take-off is offered on flat ground for {_flat(body['region'])}")]
     if body.get("turned_region"):
-        parts.append(f"turned first {_turned(body['turned_region'])}")
+        parts.append(("flat", f"turned first {_turned(body['turned_region'])}"))
     for key in ("down_region", "high_down_region"):
         if body.get(key):
-            parts.append(_box(body[key], "down from", "that region", "-") + ", at target_x T0 / air_time)")
+            parts.append(("down", _box(body[key], "down from", "that region", "-") + ", at target_x T0 / air_time)"))
     for box in body.get("low_down_regions", ()):
-        parts.append(f"down from a box {box['height'][0]:g}-{box['height'][1]:g} m high at target_x "
+        parts.append(("down", f"down from a box {box['height'][0]:g}-{box['height'][1]:g} m high at target_x "
                      f"{box['target_x'][0]:g}-{box['target_x'][1]:g} m where the lift-off would fly "
                      f"{box['flat_air_time'][0]:g}-{box['flat_air_time'][1]:g} s on flat ground (T0 = air_time - 2 height / "
-                     f"(g air_time); a lower lift-off than its shallowest crouch's is not flown)")
+                     f"(g air_time); a lower lift-off than its shallowest crouch's is not flown)"))
     if body.get("sideways_region"):
-        parts.append(f"turned a quarter first {_turned(body['sideways_region'])}")
+        parts.append(("flat", f"turned a quarter first {_turned(body['sideways_region'])}"))
     if body.get("long_region"):
-        parts.append(f"for long air times (the leap's vertical thrust) on flat ground for {_flat(body['long_region'])}")
+        parts.append(("flat", f"for long air times (the leap's vertical thrust) on flat ground for {_flat(body['long_region'])}"))
     if body.get("near_long_region"):
-        parts.append(f"for long air times nearer (the vertical thrust with its own lean push) for {_flat(body['near_long_region'])}")
+        parts.append(("flat", f"for long air times nearer (the vertical thrust with its own lean push) for {_flat(body['near_long_region'])}"))
     if body.get("deep_long_region"):
-        parts.append(f"for the longest air times (the vertical thrust's deepest crouches) for {_flat(body['deep_long_region'])}")
+        parts.append(("flat", f"for the longest air times (the vertical thrust's deepest crouches) for {_flat(body['deep_long_region'])}"))
     if body.get("turned_long_region"):
-        parts.append(f"turned first with long air times {_turned(body['turned_long_region'])}")
+        parts.append(("flat", f"turned first with long air times {_turned(body['turned_long_region'])}"))
     if body.get("turned_long_short_region"):
-        parts.append(f"turned first with the long row at shorter air times {_turned(body['turned_long_short_region'])}")
+        parts.append(("flat", f"turned first with the long row at shorter air times {_turned(body['turned_long_short_region'])}"))
     if body.get("turned_near_long_region"):
-        parts.append(f"turned first with long air times nearer {_turned(body['turned_near_long_region'])}")
+        parts.append(("flat", f"turned first with long air times nearer {_turned(body['turned_near_long_region'])}"))
     if body.get("turned_mid_long_region"):
-        parts.append(f"turned first with long air times in the middle {_turned(body['turned_mid_long_region'])}")
+        parts.append(("flat", f"turned first with long air times in the middle {_turned(body['turned_mid_long_region'])}"))
     if body.get("turned_deep_long_region"):
-        parts.append(f"turned first with the longest air times {_turned(body['turned_deep_long_region'])}")
+        parts.append(("flat", f"turned first with the longest air times {_turned(body['turned_deep_long_region'])}"))
     for key, way, sign in (("long_onto_region", "onto", "+"), ("long_down_region", "down from", "-")):
         if body.get(key):
-            parts.append(_box(body[key], way, "the long air times' region", sign) + ")")
-    return ", and ".join(parts)
+            parts.append(("onto" if sign == "+" else "down", _box(body[key], way, "the long air times' region", sign) + ")"))
+    return ", and ".join(text for k, (of, text) in enumerate(parts) if k == 0 or of == kind)

@@ -221,7 +221,7 @@ def region_refusal(character: str, target, air_time: float) -> str | None:
     refusal = measured_refusal(character, target, air_time)
     if refusal is None or commanded_offers(character, target, air_time):
         return None
-    limit = commanded_limit(character)
+    limit = commanded_limit(character, height_of(target))
     return refusal if limit is None else f"{refusal}; {limit}"
 
 
