@@ -64,14 +64,9 @@ def main() -> None:
             "crouch_by_air_time": {"air_time": [t for t, _ in pairs], "crouch_height": [h for _, h in pairs]},
             "region": {"target_x": [x0, x1], "target_y": [y0, y1], "air_time": [t0, t1]},
             "measured": args.measured}
-    before = read("jump_commanded", args.target) or {}
-    for key in ("turn_headings", "long_region", "long_settings", "long_crouch_by_air_time", "down_region", "high_down_region", "long_onto_region", "down_settings",
-                "near_long_region", "near_long_settings", "near_long_crouch_by_air_time", "turned_long_region",
-                "turned_long_settings", "turned_near_long_region", "mid_long_settings",
-                "mid_long_crouch_by_air_time", "turned_mid_long_region", "low_down_regions", "low_down_crouch_by_air_time",
-                "deep_long_crouch_by_air_time", "deep_long_region", "turned_deep_long_region", "turned_long_short_region"):
-        if key in before:       # the hop's measured map (tools/turn_headings.py), the long rows, the box row and the turned
-            body[key] = before[key]     # long row's region, measured on it, are kept
+    for key, value in (read("jump_commanded", args.target) or {}).items():
+        body.setdefault(key, value)     # what was measured on the target (the hop's map, the other rows, their regions,
+        #                                 the planner's constants) is kept; the options below replace what they name
     if args.turned_region:
         d0, d1, b0, b1, a0, a1 = (float(v) for v in args.turned_region.split(","))
         body["turned_region"] = {"distance": [d0, d1], "bearing": [b0, b1], "air_time": [a0, a1]}

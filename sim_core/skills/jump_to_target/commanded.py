@@ -257,6 +257,7 @@ def deep_long_body(body: dict, turned: bool = False) -> dict:
             "crouch_by_air_time": body["deep_long_crouch_by_air_time"]}
 
 
+STRAIGHT_WAYS = ("long", "near_long", "deep_long")     # the ways commanded_way names beyond ``region``, straight ahead
 TURNED_WAYS = ("turned", "turned_long", "turned_long_short", "turned_near_long", "turned_mid_long", "turned_deep_long",
                "sideways")      # the ways commanded_way names that turn first (planning.commanded.plan_turned)
 
@@ -332,17 +333,10 @@ def commanded_way(character: str, target, air_time: float) -> str | None:
     values = {"target_x": x, "target_y": y, "air_time": float(air_time)}
     if all(region[k][0] <= v <= region[k][1] for k, v in values.items()):
         return "straight"
-    long = body.get("long_region")
-    if long is not None and all(long[k][0] <= v <= long[k][1] for k, v in values.items()):
-        return "long"
-    near = body.get("near_long_region")
-    if near is not None and all(near[k][0] <= v <= near[k][1] for k, v in values.items()):
-        return "near_long"
-    deep = body.get("deep_long_region")
-    if deep is not None and all(deep[k][0] <= v <= deep[k][1] for k, v in values.items()):
-        return "deep_long"
-    if region["target_y"][0] <= y <= region["target_y"][1]:
-        return None
+    straight = next((way for way in STRAIGHT_WAYS if body.get(f"{way}_region") is not None
+                     and all(body[f"{way}_region"][k][0] <= v <= body[f"{way}_region"][k][1] for k, v in values.items())), None)
+    if straight is not None or region["target_y"][0] <= y <= region["target_y"][1]:
+        return straight
     values = {"distance": math.hypot(x, y), "bearing": abs(math.atan2(y, x)), "air_time": float(air_time)}
     return next((way for way in TURNED_WAYS if body.get(f"{way}_region") is not None
                  and all(body[f"{way}_region"][k][0] <= v <= body[f"{way}_region"][k][1] for k, v in values.items())), None)
@@ -409,6 +403,19 @@ def _box(region: dict, way: str, landing: str, sign: str) -> str:
               f"{region['flat_air_time'][0]:g}-{region['flat_air_time'][1]:g} s (T0 = air_time {sign} 2 height / (g air_time)")
 
 
+FLAT_REGION_WORDS = (       # commanded_limit's words for each region on flat ground beyond ``region``, in its order
+    ("turned_region", "turned first"),
+    ("sideways_region", "turned a quarter first"),
+    ("long_region", "for long air times (the leap's vertical thrust) on flat ground for"),
+    ("near_long_region", "for long air times nearer (the vertical thrust with its own lean push) for"),
+    ("deep_long_region", "for the longest air times (the vertical thrust's deepest crouches) for"),
+    ("turned_long_region", "turned first with long air times"),
+    ("turned_long_short_region", "turned first with the long row at shorter air times"),
+    ("turned_near_long_region", "turned first with long air times nearer"),
+    ("turned_mid_long_region", "turned first with long air times in the middle"),
+    ("turned_deep_long_region", "turned first with the longest air times"))
+
+
 def commanded_limit(character: str, z: float = 0.0) -> str | None:
     """The commanded region's limits in words for a target ``z`` m up (0: on flat ground, turned or not; > 0: onto a
     box; < 0: down from one): the flat region (the box regions are read from it) and the regions of that kind alone
@@ -418,8 +425,6 @@ def commanded_limit(character: str, z: float = 0.0) -> str | None:
         return None
     kind = "flat" if z == 0.0 else ("onto" if z > 0.0 else "down")
     parts = [("flat", f"the commanded take-off is offered on flat ground for {_flat(body['region'])}")]
-    if body.get("turned_region"):
-        parts.append(("flat", f"turned first {_turned(body['turned_region'])}"))
     for key in ("down_region", "high_down_region"):
         if body.get(key):
             parts.append(("down", _box(body[key], "down from", "that region", "-") + ", at target_x T0 / air_time)"))
@@ -428,24 +433,8 @@ def commanded_limit(character: str, z: float = 0.0) -> str | None:
                      f"{box['target_x'][0]:g}-{box['target_x'][1]:g} m where the lift-off would fly "
                      f"{box['flat_air_time'][0]:g}-{box['flat_air_time'][1]:g} s on flat ground (T0 = air_time - 2 height / "
                      f"(g air_time); a lower lift-off than its shallowest crouch's is not flown)"))
-    if body.get("sideways_region"):
-        parts.append(("flat", f"turned a quarter first {_turned(body['sideways_region'])}"))
-    if body.get("long_region"):
-        parts.append(("flat", f"for long air times (the leap's vertical thrust) on flat ground for {_flat(body['long_region'])}"))
-    if body.get("near_long_region"):
-        parts.append(("flat", f"for long air times nearer (the vertical thrust with its own lean push) for {_flat(body['near_long_region'])}"))
-    if body.get("deep_long_region"):
-        parts.append(("flat", f"for the longest air times (the vertical thrust's deepest crouches) for {_flat(body['deep_long_region'])}"))
-    if body.get("turned_long_region"):
-        parts.append(("flat", f"turned first with long air times {_turned(body['turned_long_region'])}"))
-    if body.get("turned_long_short_region"):
-        parts.append(("flat", f"turned first with the long row at shorter air times {_turned(body['turned_long_short_region'])}"))
-    if body.get("turned_near_long_region"):
-        parts.append(("flat", f"turned first with long air times nearer {_turned(body['turned_near_long_region'])}"))
-    if body.get("turned_mid_long_region"):
-        parts.append(("flat", f"turned first with long air times in the middle {_turned(body['turned_mid_long_region'])}"))
-    if body.get("turned_deep_long_region"):
-        parts.append(("flat", f"turned first with the longest air times {_turned(body['turned_deep_long_region'])}"))
+    parts += [("flat", f"{words} {(_flat if key.removesuffix('_region') in STRAIGHT_WAYS else _turned)(body[key])}")
+              for key, words in FLAT_REGION_WORDS if body.get(key)]
     for key, way, sign in (("long_onto_region", "onto", "+"), ("long_down_region", "down from", "-")):
         if body.get(key):
             parts.append(("onto" if sign == "+" else "down", _box(body[key], way, "the long air times' region", sign) + ")"))
