@@ -141,8 +141,7 @@ def draw_requests(seed: int, characters, jumps: int, leaps: int, broads: int, bo
                                                ("sideways", sideways, SIDEWAYS_STREAM, ("sideways_region",), draw_sideways),
                                                ("long", long, LONG_STREAM, ("long_region",), draw_long),
                                                ("turned_long", turned_long, TURNED_LONG_STREAM,
-                                                ("turned_long_region", "turned_long_short_region", "turned_near_long_region",
-                                                 "turned_deep_long_region"), draw_turned_long),
+                                                tuple(f"{way}_region" for way in TURNED_LONG_WAYS), draw_turned_long),
                                                ("mid_long", mid_long, MID_LONG_STREAM,
                                                 ("turned_mid_long_region",), draw_mid_long)):
         stream_rng = np.random.default_rng((seed, stream))
@@ -183,12 +182,15 @@ def draw_turned(rng, character: str, ways: tuple = ("turned",)) -> tuple:
                          f"{' or '.join(ways)} commanded region outside the region its measured jumps offer")
 
 
+TURNED_LONG_WAYS = ("turned_long", "turned_long_short", "turned_near_long", "turned_deep_long")   # --turned-long's rows
+
+
 def draw_turned_long(rng, character: str) -> tuple:
     """draw_turned in the table's turned long air times' regions (``turned_long_region``: the hop, then the long row,
     and ``turned_long_short_region``: the same at shorter air times; ``turned_near_long_region``: the hop, then the near
     long row; ``turned_deep_long_region``: the hop, then the long row at its deepest crouches), uniform in issue 29's box
     where one of them holds it."""
-    return draw_turned(rng, character, ("turned_long", "turned_long_short", "turned_near_long", "turned_deep_long"))
+    return draw_turned(rng, character, TURNED_LONG_WAYS)
 
 
 def draw_mid_long(rng, character: str) -> tuple:
