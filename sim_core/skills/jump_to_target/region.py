@@ -12,6 +12,10 @@ and air time interpolated between the two, ``served``); anything else is refused
 simulating, in one line naming the limit (``region_refusal``). Only reads the table: the measuring
 is planning's.
 
+A request onto a box that asks a faster lift-off up than any the character was measured to fly at its forward speed
+(``lift_envelope``: its measured balanced jumps, its commanded rows' regions, its highest vertical leap) is refused
+naming the two speeds (``takeoff_refusal``, the first limit ``region_refusal`` names for it).
+
 A character with a commanded take-off table (commanded.py: the man's and the woman's) is also offered the box
 measured for it on flat ground (``in_region``); ``mode`` says which of the two plans a request
 (planning/jump.py: the measured jumps', or planning/commanded.py), and a refusal of a request
