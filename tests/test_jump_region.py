@@ -158,11 +158,15 @@ def test_a_target_outside_both_regions_is_refused_naming_both(monkeypatch):
                          "distance of 0.5-1.6 m at a bearing of 0-34 deg to either side, air_time 0.52-0.7 s, and turned "
                          "first with the long row at shorter air times for a distance of 0.7-1.6 m at a bearing of 0-26 "
                          "deg to either side, air_time 0.42-0.52 s")
-    onto = region_refusal("woman", (1.2, 0.0, 0.7), 0.45)       # onto a box: the flat region and the onto regions
+    onto = region_refusal("woman", (0.7, 0.0, 0.6), 0.5)        # onto a box: the flat region and the onto regions
     assert onto.endswith("the commanded take-off is offered on flat ground for target_x 0.5-1.25 m, target_y -0.02-0.02 m, "
                          "air_time 0.4-0.52 s, and onto a box 0.25-0.5 m high at target_x 0.85-1.6 m where the same "
                          "lift-off on flat ground would land in the long air times' region in 0.52-0.7 s "
+                         "(T0 = air_time + 2 height / (g air_time)), and onto a box 0.25-0.5 m high at target_x 0.55-0.85 m "
+                         "where the same lift-off on flat ground would land in the long air times' region in 0.52-0.7 s "
                          "(T0 = air_time + 2 height / (g air_time))")
+    beyond = region_refusal("woman", (1.2, 0.0, 0.7), 0.45)     # onto a box beyond her take-off: that limit alone
+    assert beyond.startswith("target (1.2, 0, 0.7) m in air_time=0.45 s is beyond the woman's take-off")
     down = region_refusal("woman", (1.5, 0.0, -0.7), 0.45)      # down from one: the down regions, no turned one
     assert "down from a box 0.25-0.75 m high" in down and "turned first" not in down and "onto a box" not in down
     assert "the commanded take-off is offered on flat ground for target_x 0.5-1.2 m" in region_refusal("man", (1.3, 0.4), 0.72)
