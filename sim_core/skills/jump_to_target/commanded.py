@@ -93,7 +93,9 @@ Fig. 6 with his thrust slowed for his strength, tools/scale_commanded.py and doc
 - ``tucked_onto_region`` (optional, with the long row and ``tucked_onto_settings``): the keys of ``long_onto_region`` for a
   box nearer than it, flown by the long row with ``tucked_onto_settings`` over its settings (tucked_onto_body: the arms held
   back in the crouch, ``crouch_arms``: leaning on to a box whose front edge is ~0.4 m ahead of the feet, the hands
-  touched it before the lift-off and the jump fell back, docs/jump_to_target.md "Onto a near box").
+  touched it before the lift-off and the jump fell back; and the knees tucked in flight, ``landing_tuck_knee_flexion``
+  for ``landing_tuck_share`` of the air time: the toes caught the box's front edge on the way up; docs/jump_to_target.md
+  "Onto a box: the take-off's limit, and a near box tucked").
 
 ``jump_commanded_any.json`` holds the planner's constants (the aim's bound and tolerances, the
 landing plan's bound); a character's table may hold its own in a "constants" section
@@ -282,7 +284,7 @@ def way_body(body: dict, way: str) -> dict:
     if way in ("long", "long_down", "long_onto") and "long_settings" in body:
         return long_body(body)      # long air times (onto or down from a box too): the vertical thrust's settings and pairs
     if way == "tucked_onto":
-        return tucked_onto_body(body)  # onto a near box: the long row with the arms held back in the crouch
+        return tucked_onto_body(body)  # onto a near box: the long row, the arms back in the crouch, the flight tucked
     if way == "near_long" and "near_long_settings" in body:
         return near_long_body(body)  # long air times nearer: the same with the near row's own lean push and crouch pairs
     if way == "low_down":
