@@ -1842,8 +1842,11 @@ So her table's new `tucked_onto_region` (the keys of `long_onto_region`): height
 flat_air_time 0.52-0.7 s (her long row's), flown by the long row with `tucked_onto_settings` over it
 (`commanded.tucked_onto_body`, `box_way` "tucked_onto"). As a user's box requests (`python -m sim_core report random
 --seed 611 --jumps 0 --leaps 0 --broad 0 --boxes 20 --characters man,woman --workers 1`): fresh seed 611 man **20 / 20**, woman **19 / 20** (the new row 3 / 3; the miss
-(0.901 m, a 0.472 m box, 0.418 s) her long_onto row's, 16.5 cm off, flown 0.087 s long). In the new region with its final
-settings 53 / 55 (96 %) over seeds 602-604 and 611.
+(0.901 m, a 0.472 m box, 0.418 s) her long_onto row's, 16.5 cm off, flown 0.087 s long); fresh seed 613 man **20 / 20**,
+woman **16 / 20** (the new row 1 / 2: (0.802 m, a 0.381 m box, 0.485 s) 2.3 cm off, flown 0.055 s long after her 5 aims;
+the other misses her older rows': two onto by the long row, (1.223 m, 0.295 m box, 0.575 s) flown 0.085 s short and
+(1.215 m, 0.396 m box, 0.529 s) 17.3 cm short and fell, one down from a 0.691 m box at 1.554 m, fell at every placement).
+In the new region with its final settings 54 / 57 (95 %) over seeds 602-604, 611 and 613.
 The man, two designs, neither kept: his near boxes by his near long row (`lean_push` 10) with the arms back, seed 265
 (0.55-1.0 m, 0.25-0.45 m) **3 / 12** (the aims ran to the 0.05 m floor, 7 fell); onto 0.4-0.55 m boxes by his far row
 (seed 268, eight targets 1.1-1.35 m), as the row is **5 / 8** (7 balanced), with the tuck (2.0 rad, 0.3) **4 / 8** (4
