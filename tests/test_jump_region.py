@@ -158,11 +158,15 @@ def test_a_target_outside_both_regions_is_refused_naming_both(monkeypatch):
                          "distance of 0.5-1.6 m at a bearing of 0-34 deg to either side, air_time 0.52-0.7 s, and turned "
                          "first with the long row at shorter air times for a distance of 0.7-1.6 m at a bearing of 0-26 "
                          "deg to either side, air_time 0.42-0.52 s")
-    onto = region_refusal("woman", (1.2, 0.0, 0.7), 0.45)       # onto a box: the flat region and the onto regions
+    onto = region_refusal("woman", (0.7, 0.0, 0.6), 0.5)        # onto a box: the flat region and the onto regions
     assert onto.endswith("the commanded take-off is offered on flat ground for target_x 0.5-1.25 m, target_y -0.02-0.02 m, "
                          "air_time 0.4-0.52 s, and onto a box 0.25-0.5 m high at target_x 0.85-1.6 m where the same "
                          "lift-off on flat ground would land in the long air times' region in 0.52-0.7 s "
+                         "(T0 = air_time + 2 height / (g air_time)), and onto a box 0.25-0.5 m high at target_x 0.55-0.85 m "
+                         "where the same lift-off on flat ground would land in the long air times' region in 0.52-0.7 s "
                          "(T0 = air_time + 2 height / (g air_time))")
+    beyond = region_refusal("woman", (1.2, 0.0, 0.7), 0.45)     # onto a box beyond her take-off: that limit alone
+    assert beyond.startswith("target (1.2, 0, 0.7) m in air_time=0.45 s is beyond the woman's take-off")
     down = region_refusal("woman", (1.5, 0.0, -0.7), 0.45)      # down from one: the down regions, no turned one
     assert "down from a box 0.25-0.75 m high" in down and "turned first" not in down and "onto a box" not in down
     assert "the commanded take-off is offered on flat ground for target_x 0.5-1.2 m" in region_refusal("man", (1.3, 0.4), 0.72)
@@ -297,7 +301,7 @@ def test_a_random_target_onto_a_box_is_flown_by_the_long_row_as_its_plan_was():
     a nearer box (its front edge not cleared) and a higher flat-ground air time are not offered."""
     from sim_core.skills.jump_to_target.commanded import commanded_way
     assert commanded_way("woman", (1.0, 0.0, 0.35), 0.5) == "long_onto"          # T0 0.64 s at 1.28 m
-    assert commanded_way("woman", (0.7, 0.0, 0.35), 0.5) is None                  # the box's edge 0.4 m ahead
+    assert commanded_way("woman", (0.7, 0.0, 0.35), 0.5) == "tucked_onto"         # the box's edge 0.4 m ahead: not the long row
     assert commanded_way("woman", (1.0, 0.0, 0.6), 0.5) is None                   # T0 0.74 s
     assert commanded_way("woman", (0.95, 0.0, 0.45), 0.43) == "long_onto"        # T0 0.64 s at 1.42 m
     assert commanded_way("woman", (0.95, 0.0, 0.52), 0.43) is None                # T0 0.68 s, but higher than measured
@@ -324,6 +328,51 @@ def test_a_random_target_of_the_man_onto_a_box_is_flown_by_his_far_long_row():
     result, plan = planned_and_run(box)
     assert plan["settings"]["vertical_thrust"] == 1.0 and plan["settings"]["lean_push"] == 3.0
     assert_run_as_planned(result, plan)
+
+
+def test_a_random_target_of_the_woman_onto_a_near_box_is_flown_by_the_long_row_tucked():
+    """Her tucked_onto_region: onto a 0.25-0.5 m box 0.55-0.85 m ahead (its front edge 0.25-0.55 m ahead of the start's
+    feet), flown by the long row with the arms held back in the crouch (the hands touched a near box before lift-off)
+    and the knees tucked from lift-off for half the air time (the toes caught the box's front edge on the way up);
+    the first such draw of the report's box targets planned so and run as a user's request."""
+    from sim_core.skills.jump_to_target.commanded import commanded_way
+    assert commanded_way("woman", (0.62, 0.0, 0.34), 0.45) == "tucked_onto"      # T0 0.60 s
+    assert commanded_way("woman", (0.5, 0.0, 0.34), 0.45) is None                # nearer than measured
+    assert commanded_way("woman", (0.7, 0.0, 0.55), 0.45) is None                # higher than measured
+    assert commanded_way("man", (0.7, 0.0, 0.35), 0.5) is None                   # his rows fall or miss there
+    box = first_commanded_box_draw("woman", "tucked_onto")
+    result, plan = planned_and_run(box)
+    assert plan["settings"]["vertical_thrust"] == 1.0 and plan["settings"]["crouch_arms"] == -0.8
+    assert plan["settings"]["landing_tuck_knee_flexion"] > 1.5 and 0.0 < plan["settings"]["landing_tuck_share"] < 1.0
+    assert_run_as_planned(result, plan)
+
+
+def test_an_onto_box_target_beyond_the_take_off_is_refused_naming_the_lift_off_speeds(monkeypatch):
+    """A target onto a box needs a lift-off at h / T + g T / 2 up with x / T forward (the flat equivalent's); one
+    beyond every lift-off the character was measured to fly (region.lift_envelope: its measured balanced jumps, its
+    commanded rows' regions, its highest vertical leap) is refused before simulating in one line naming the speeds;
+    nothing offered is beyond it."""
+    import numpy as np
+    import sim_core.simulate as simulate
+    from sim_core.random_requests import box_target_draw
+    from sim_core.skills.jump_to_target.region import lift_envelope, lift_off, takeoff_capacity, takeoff_refusal
+    monkeypatch.setattr(simulate, "Recorder", None)         # a run that started would fail differently
+    params = {"target_x": 1.0, "target_y": 0.0, "target_z": 0.7, "air_time": 0.6, "plan_trials": 24}
+    with pytest.raises(ParameterError) as refused:
+        run(RunRequest("jump_to_target", "man", params=params))
+    text = str(refused.value)
+    assert "\n" not in text and "beyond the man's take-off" in text and "4.11 m/s up with 1.67 m/s forward" in text
+    assert "the most the man's measured take-offs reach at that forward speed is" in text
+    assert region_refusal("man", (1.0, 0.0, 0.7), 0.6) == text
+    assert lift_off((1.0, 0.0, 0.7), 0.6) == pytest.approx((1.0 / 0.6, 0.7 / 0.6 + 9.80665 * 0.3))
+    for character in ("man", "woman"):
+        envelope = lift_envelope(character)
+        assert envelope[0, 0] == 0.0 and envelope[0, 1] == pytest.approx(takeoff_capacity(character, "vertical"))
+        rng = np.random.default_rng(SEED)
+        for _ in range(400):
+            x, z, t = box_target_draw(rng, character)
+            if in_region(character, (x, 0.0, z), t):
+                assert takeoff_refusal(character, (x, 0.0, z), t) is None, (x, z, t)
 
 
 TURNED_TARGETS = 3          # random targets in a character's turned commanded region, outside its measured jumps' region

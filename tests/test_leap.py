@@ -88,6 +88,18 @@ def test_leap_replays_bit_for_bit():
     assert largest_difference(traj, replay(traj)) == 0.0
 
 
+def test_a_tucked_commanded_leap_replays_bit_for_bit_and_differs_from_the_untucked():
+    """The flight's tuck (landing_tuck_knee_flexion from lift-off for landing_tuck_share of the commanded air time): a
+    servo target like any other, so the run replays exactly; and it changes the run (the knees bend in flight)."""
+    params = dict(low_level=1, distance=0.0, crouch_height=0.6, commanded_takeoff=1, flight_target_x=0.7,
+                  flight_air_time=0.5)
+    tucked = run(RunRequest("leap", "woman", params={**params, "landing_tuck_knee_flexion": 2.0,
+                                                                  "landing_tuck_share": 0.5}, duration=2.5))
+    assert largest_difference(tucked, replay(tucked)) == 0.0
+    plain = run(RunRequest("leap", "woman", params=params, duration=2.5))
+    assert np.abs(tucked.arrays["qpos"] - plain.arrays["qpos"]).max() > 0.1
+
+
 @pytest.mark.parametrize("name, height, strength", [
     ("man", 0.1, "human"), ("man", 0.2, "human"), ("man", 0.35, "human"), ("man", 0.4, "human"), ("man", 0.6, "human"),
     ("woman", 0.16, "human"), ("woman", 0.25, "human"), ("woman", 0.33, "human"), ("woman", 0.4, "human"),

@@ -239,6 +239,10 @@ class Landing(Behaviour):
 
     schema = Schema(
         Parameter("knee_flexion", "rad", 0.9, 0.0, 1.5, "knee bend held in flight, ready to absorb"),
+        Parameter("tuck_knee_flexion", "rad", 0.0, 0.0, 2.4,
+                  "knee bend held in flight from lift-off for tuck_time (the feet drawn up over a box's front "
+                  "edge), then knee_flexion"),
+        Parameter("tuck_time", "s", 0.0, 0.0, 1.5, "how long after lift-off the tuck is held (0 = no tuck)"),
         Parameter("fast_knee_flexion", "rad", 0.65, 0.0, 1.5,
                   "knee bend held in flight when the COM moves 1.5 m/s or faster horizontally (eased in "
                   "from 1.0 m/s; backward: 1.0 m/s, from 0.5): straighter legs land a fast COM (the leap's "
@@ -432,6 +436,8 @@ class Landing(Behaviour):
                 self.stage == "absorb" and t - self.touchdown_at > self.constants.absorb_time)):
             self.finished_at = t
         knee = self._flight_knee(vx) if self.stage == "flight" else None
+        if knee is not None and t - self.started_at < p.get("tuck_time", 0.0):
+            knee = max(knee, p["tuck_knee_flexion"])    # the tuck: the thigh servo keeps the foot's place, so the feet rise
         spin_offset = 0.0
         if self.stage == "flight" and p["spin_placement"]:
             # against the somersault angular momentum (about the body's lateral axis), per unit mass
@@ -764,6 +770,12 @@ LANDING_RECOVERY_STEP = Parameter(
 LANDING_STEP_MARGIN = Parameter("landing_step_margin", "m", 0.03, -0.2, 0.3,
                                 "landing: with landing_recovery_step, a step once the capture point is this close to the "
                                 "support's edge")
+LANDING_TUCK_KNEE_FLEXION = Parameter(
+    "landing_tuck_knee_flexion", "rad", 0.0, 0.0, 2.4,
+    "landing: the knee bend held in flight from lift-off for landing_tuck_share of flight_air_time (the feet drawn up "
+    "over a box's front edge), then the landing's")
+LANDING_TUCK_SHARE = Parameter("landing_tuck_share", "1", 0.0, 0.0, 1.0,
+                               "landing: the share of flight_air_time the tuck is held from lift-off (0 = no tuck)")
 LEAN_PUSH = Parameter("lean_push", "1", 0.0, 0.0, 10.0,
                       "commanded take-off: the push's forward speed per unit of lean as the commanded_lean_push "
                       "constant, for a row measured with its own (a commanded table's long row); 0 = the character's constant")
@@ -797,7 +809,7 @@ LEAP_SETTINGS = Schema(
               "above 0.5 the thrust servoes the COM velocity to the commanded flight's lift-off velocity and "
               "ends on reaching it (control/commanded_thrust.py)"),
     FLIGHT_TARGET_X, FLIGHT_TARGET_Y, TURN_ANGLE, LANDING_ARM_PITCH_GAIN, LANDING_ARM_PITCH, LANDING_RECOVERY_STEP, LANDING_STEP_MARGIN,
-    LEAN_PUSH,
+    LEAN_PUSH, LANDING_TUCK_KNEE_FLEXION, LANDING_TUCK_SHARE,
 )
 LEAP_MEASURED = ("com_rise", "com_travel", "peak_thrust_grf_body_weights")   # columns a calibration measured
 

@@ -31,13 +31,13 @@ import numpy as np
 from ...analysis import feet_above_surface, surface_under_points
 from ...ballistics import GRAVITY
 from ...control.behaviour import register
-from ...control.leap import AIRBORNE_HEIGHT, LEAP_SETTINGS, leap_assess, load_mapping, run_strength, vertical_table
+from ...control.leap import AIRBORNE_HEIGHT, LEAP_SETTINGS, leap_assess, run_strength, vertical_table
 from ...control.turn import jump_start, turn_duration
 from ..leap.behaviour import Leap
 from ...errors import ParameterError
 from ...schema import Parameter, Schema
 from ...tuned import TableType, characters_of, load, register as register_table, require_calibrated, table_path
-from .region import AIR_TIME_TOLERANCE, LANDING_TOLERANCE, model, region_refusal
+from .region import AIR_TIME_TOLERANCE, LANDING_TOLERANCE, model, region_refusal, takeoff_capacity
 
 # where the COM is, relative to the middle of the feet, at take-off and at touchdown of a broad
 # jump (measured on the man's calibrated 1.0 m jump; used only for the path estimate)
@@ -79,12 +79,6 @@ def path_estimate(target, air_time: float) -> np.ndarray:
     start = np.array([*(TAKEOFF_COM[0] * ahead), TAKEOFF_COM[1]])
     end = np.array([*(target[:2] + TOUCHDOWN_COM[0] * ahead), target[2] + TOUCHDOWN_COM[1]])
     return takeoff_velocity(start, end, air_time)
-
-
-def takeoff_capacity(character: str, key: str) -> float:
-    """The fastest take-off (m/s) the character's calibrated vertical leaps reach."""
-    rises = load_mapping(character).get(key, {}).get("com_rise", [])
-    return math.sqrt(2.0 * GRAVITY * max(rises)) if rises else 0.0
 
 
 BOX_LENGTH, BOX_WIDTH = 0.6, 1.0    # m: a box under a raised target, centred on it
@@ -226,6 +220,7 @@ def turn_of(settings: dict) -> dict:
 
 ARM_FEEDBACK = ("landing_arm_pitch_gain", "landing_arm_pitch")    # the arms' pitch feedback: only plans that name it
 RECOVERY_SETTINGS = ("landing_recovery_step", "landing_step_margin")  # the landing's recovery step: likewise
+TUCK_SETTINGS = ("landing_tuck_knee_flexion", "landing_tuck_share")     # the flight's tuck: likewise
 
 
 def landing_settings(settings: dict) -> dict:
@@ -235,7 +230,7 @@ def landing_settings(settings: dict) -> dict:
             "landing_foot_lead_time": settings["landing_foot_lead_time"],
             "landing_place_sideways": float(abs(settings.get("com_offset_y", 0.0)) > 0.0),
             "landing_right_time": float(settings.get("landing_right_time", 0.0)),
-            **{k: float(settings[k]) for k in ARM_FEEDBACK + RECOVERY_SETTINGS if k in settings}}
+            **{k: float(settings[k]) for k in ARM_FEEDBACK + RECOVERY_SETTINGS + TUCK_SETTINGS if k in settings}}
 
 
 def crouch_time(windup_time: float) -> float:

@@ -89,7 +89,13 @@ Fig. 6 with his thrust slowed for his strength, tools/scale_commanded.py and doc
   bounds the target's own forward distance (onto a box: a nearer box's front edge, 0.3 m before the target, is
   not cleared); ``flat_target_x`` (optional, [low, high] m) bounds the flat equivalent's landing within the row's
   region (the man's far long row onto a box missed where it lands nearer than 1.6 m on flat ground). Onto a box needs
-  T0 = T + 2 h / (g T) >= 0.53 s: only the long row flies it.
+  T0 = T + 2 h / (g T) >= 0.53 s: only the long row flies it;
+- ``tucked_onto_region`` (optional, with the long row and ``tucked_onto_settings``): the keys of ``long_onto_region`` for a
+  box nearer than it, flown by the long row with ``tucked_onto_settings`` over its settings (tucked_onto_body: the arms held
+  back in the crouch, ``crouch_arms``: leaning on to a box whose front edge is ~0.4 m ahead of the feet, the hands
+  touched it before the lift-off and the jump fell back; and the knees tucked in flight, ``landing_tuck_knee_flexion``
+  for ``landing_tuck_share`` of the air time: the toes caught the box's front edge on the way up; docs/jump_to_target.md
+  "Onto a box: the take-off's limit, and a near box tucked").
 
 ``jump_commanded_any.json`` holds the planner's constants (the aim's bound and tolerances, the
 landing plan's bound); a character's table may hold its own in a "constants" section
@@ -150,6 +156,8 @@ def _rows(body: dict):
         yield "mid_long_settings", body["mid_long_settings"]
     if "turned_long_settings" in body:
         yield "turned_long_settings", body["turned_long_settings"]
+    if "tucked_onto_settings" in body:
+        yield "tucked_onto_settings", body["tucked_onto_settings"]
     for key in ("crouch_by_air_time", "long_crouch_by_air_time", "near_long_crouch_by_air_time", "mid_long_crouch_by_air_time",
                 "low_down_crouch_by_air_time", "deep_long_crouch_by_air_time"):
         for k, height in enumerate(body.get(key, {}).get("crouch_height", [])):
@@ -257,6 +265,13 @@ def deep_long_body(body: dict, turned: bool = False) -> dict:
             "crouch_by_air_time": body["deep_long_crouch_by_air_time"]}
 
 
+def tucked_onto_body(body: dict) -> dict:
+    """The table as a near box's plan reads it (``tucked_onto_region``): long_body with ``tucked_onto_settings`` over its
+    settings."""
+    long = long_body(body)
+    return {**long, "settings": {**long["settings"], **body["tucked_onto_settings"]}}
+
+
 STRAIGHT_WAYS = ("long", "near_long", "deep_long")     # the ways commanded_way names beyond ``region``, straight ahead
 TURNED_WAYS = ("turned", "turned_long", "turned_long_short", "turned_near_long", "turned_mid_long", "turned_deep_long",
                "sideways")      # the ways commanded_way names that turn first (planning.commanded.plan_turned)
@@ -268,6 +283,8 @@ def way_body(body: dict, way: str) -> dict:
     the table lacks flies as the table's own settings), else the table as it is."""
     if way in ("long", "long_down", "long_onto") and "long_settings" in body:
         return long_body(body)      # long air times (onto or down from a box too): the vertical thrust's settings and pairs
+    if way == "tucked_onto":
+        return tucked_onto_body(body)  # onto a near box: the long row, the arms back in the crouch, the flight tucked
     if way == "near_long" and "near_long_settings" in body:
         return near_long_body(body)  # long air times nearer: the same with the near row's own lean push and crouch pairs
     if way == "low_down":
@@ -348,14 +365,15 @@ def box_way(body: dict, target, air_time: float) -> str | None:
     forward distance) in ``high_down_region``: "down"; the height, T0 and the target's own forward distance in one of
     its ``low_down_regions``: "low_down" (low_down_body); in its
     ``long_region`` with them in ``long_down_region`` / ``long_onto_region``: "long_down" / "long_onto" (the long row,
-    long_body); else None."""
+    long_body), in ``tucked_onto_region``: "tucked_onto" (tucked_onto_body); else None."""
     z = float(target[2])
     x, air_time = flat_equivalent(target, air_time)
     values = {"target_x": x, "target_y": float(target[1]), "air_time": air_time}
     rows = (("down", "region", body.get("down_region")), ("down", "region", body.get("high_down_region")),
             *(("low_down", None, box) for box in body.get("low_down_regions", ())),
             ("long_down", "long_region", body.get("long_down_region"))) if z < 0.0 \
-        else (("long_onto", "long_region", body.get("long_onto_region")),)
+        else (("long_onto", "long_region", body.get("long_onto_region")),
+              ("tucked_onto", "long_region", body.get("tucked_onto_region")))
     def within(box: dict, key: str, value: float) -> bool:       # an optional bound holds when absent
         low, high = box.get(key, (-math.inf, math.inf))
         return low <= value <= high
@@ -435,7 +453,8 @@ def commanded_limit(character: str, z: float = 0.0) -> str | None:
                      f"(g air_time); a lower lift-off than its shallowest crouch's is not flown)"))
     parts += [("flat", f"{words} {(_flat if key.removesuffix('_region') in STRAIGHT_WAYS else _turned)(body[key])}")
               for key, words in FLAT_REGION_WORDS if body.get(key)]
-    for key, way, sign in (("long_onto_region", "onto", "+"), ("long_down_region", "down from", "-")):
+    for key, way, sign in (("long_onto_region", "onto", "+"), ("tucked_onto_region", "onto", "+"),
+                           ("long_down_region", "down from", "-")):
         if body.get(key):
             parts.append(("onto" if sign == "+" else "down", _box(body[key], way, "the long air times' region", sign) + ")"))
     return ", and ".join(text for k, (of, text) in enumerate(parts) if k == 0 or of == kind)

@@ -12,6 +12,10 @@ and air time interpolated between the two, ``served``); anything else is refused
 simulating, in one line naming the limit (``region_refusal``). Only reads the table: the measuring
 is planning's.
 
+A request onto a box that asks a faster lift-off up than any the character was measured to fly at its forward speed
+(``lift_envelope``: its measured balanced jumps, its commanded rows' regions, its highest vertical leap) is refused
+naming the two speeds (``takeoff_refusal``, the first limit ``region_refusal`` names for it).
+
 A character with a commanded take-off table (commanded.py: the man's and the woman's) is also offered the box
 measured for it on flat ground (``in_region``); ``mode`` says which of the two plans a request
 (planning/jump.py: the measured jumps', or planning/commanded.py), and a refusal of a request
@@ -24,9 +28,9 @@ import math
 import numpy as np
 
 from ...ballistics import GRAVITY
-from ...control.leap import LEAP_SETTINGS
+from ...control.leap import LEAP_SETTINGS, load_mapping
 from ...tuned import TableType, load_fresh, register as register_table
-from .commanded import commanded_limit, commanded_offers
+from .commanded import commanded_limit, commanded_offers, flat_equivalent, table
 
 LANDING_TOLERANCE = 0.05            # m: TARGETS.md: the landing point within this of the target
 AIR_TIME_TOLERANCE = 0.05           # s: TARGETS.md: the air time within this of the one asked
@@ -213,6 +217,71 @@ def mode(character: str, target, air_time: float) -> str | None:
     return "commanded" if commanded_offers(character, target, air_time) else None
 
 
+def takeoff_capacity(character: str, key: str) -> float:
+    """The fastest take-off (m/s) the character's calibrated vertical leaps reach."""
+    rises = load_mapping(character).get(key, {}).get("com_rise", [])
+    return math.sqrt(2.0 * GRAVITY * max(rises)) if rises else 0.0
+
+
+def lift_off(target, air_time: float) -> tuple[float, float]:
+    """The lift-off velocity (m/s along the ground, up) of a flight to ``target`` (x, y[, z]) in ``air_time`` s as the
+    commanded take-off flies it: its flat equivalent's (commanded.flat_equivalent: the vertical speed that flies T0 on
+    flat ground, g T0 / 2, and the target's distance over the air time)."""
+    distance = math.hypot(float(target[0]), float(target[1]))
+    _, flat_time = flat_equivalent((distance, 0.0, height_of(target)), air_time)
+    return distance / float(air_time), 0.5 * GRAVITY * flat_time
+
+
+def lift_envelope(character: str) -> np.ndarray:
+    """The most vertical lift-off speed the character was measured to fly at each speed along the ground: rows
+    (along, up) m/s of the upper hull of the lift-offs (lift_off) of its measured balanced jumps (the jump_model table:
+    flat ground, onto and down from boxes), of the far corners of its commanded table's flat straight regions (each
+    measured to land there: ``region``, ``long_region``, ...), and of the leap's highest vertical leap
+    (takeoff_capacity, nothing along the ground); between two measured lift-offs the hull's straight line."""
+    body, commanded = model(character), table(character)
+    cached = _ENVELOPES.get(character)
+    if cached is not None and cached[0] is body and cached[1] is commanded:     # the tables as read now
+        return cached[2]
+    points = [lift_off((*p["measured"]["landing"], surface(p["measured"])), p["measured"]["air_time"])
+              for p in balanced(body) if p["measured"]["air_time"] > 0.0]
+    for key, region in (commanded or {}).items():
+        if key.endswith("region") and isinstance(region, dict) and {"target_x", "air_time"} <= region.keys():
+            points += [lift_off((x, 0.0), t) for x in region["target_x"] for t in region["air_time"]]
+    points.append((0.0, takeoff_capacity(character, "vertical")))
+    hull = []
+    for p in sorted(points):        # the upper hull, left to right (monotone chain)
+        while len(hull) >= 2 and ((hull[-1][0] - hull[-2][0]) * (p[1] - hull[-2][1])
+                                  - (hull[-1][1] - hull[-2][1]) * (p[0] - hull[-2][0])) >= 0.0:
+            hull.pop()
+        hull.append(p)
+    envelope = np.asarray([h for h in hull if h[0] >= 0.0] or hull, dtype=float)
+    _ENVELOPES[character] = (body, commanded, envelope)
+    return envelope
+
+
+_ENVELOPES: dict = {}
+
+
+def takeoff_refusal(character: str, target, air_time: float) -> str | None:
+    """None unless the request is onto a box (z > 0) and needs a faster lift-off up than any the character was
+    measured to fly at its speed along the ground (lift_envelope); then the one-line refusal naming the speeds."""
+    z = height_of(target)
+    if z <= 0.0:
+        return None
+    along, up = lift_off(target, air_time)
+    envelope = lift_envelope(character)
+    where = (f"target ({float(target[0]):g}, {float(target[1]):g}, {z:g}) m in air_time={air_time:g} s is beyond the "
+             f"{character}'s take-off: onto a {z:g} m box it needs a lift-off at {up:.2f} m/s up with {along:.2f} m/s "
+             f"forward (the flight of T0 = air_time + 2 height / (g air_time) = {2.0 * up / GRAVITY:.2f} s on flat ground)")
+    if along > envelope[-1, 0]:
+        return f"{where}; none of the {character}'s measured take-offs goes faster than {envelope[-1, 0]:.2f} m/s forward"
+    most = float(np.interp(along, envelope[:, 0], envelope[:, 1]))
+    if up <= most:
+        return None
+    return (f"{where}; the most the {character}'s measured take-offs reach at that forward speed is {most:.2f} m/s up "
+            f"({envelope[0, 1]:.2f} m/s straight up, the leap's highest) - a lower box or a shorter air time")
+
+
 def region_refusal(character: str, target, air_time: float) -> str | None:
     """None if the request (x, y, air time) is in the region offered (in_region), else the one-line
     refusal naming the limit it breaks: the forward distances measured (no balanced jump lands near
@@ -221,6 +290,9 @@ def region_refusal(character: str, target, air_time: float) -> str | None:
     refusal = measured_refusal(character, target, air_time)
     if refusal is None or commanded_offers(character, target, air_time):
         return None
+    beyond = takeoff_refusal(character, target, air_time)
+    if beyond is not None:      # onto a box beyond the body's take-off: that limit alone
+        return beyond
     limit = commanded_limit(character, height_of(target))
     return refusal if limit is None else f"{refusal}; {limit}"
 

@@ -12,7 +12,7 @@ from ...control.behaviour import register
 from ...control.commanded_thrust import CommandedThrust, FlightCommand, thrust_due
 from ...control.measure import SupportGeometry
 from ...control.recovery_step import RecoveryStep, StaggeredStance, StanceMeasure, StepAndHold
-from ...control.leap import FLIGHT_TARGET_X, FLIGHT_TARGET_Y, LANDING_ARM_PITCH, LANDING_ARM_PITCH_GAIN, LANDING_RECOVERY_STEP, LANDING_STEP_MARGIN, LEAN_PUSH, RECOVERY_STEP_EVENT, LOW_LEVEL_SETTINGS, Landing, LeapThrust, balance_after_landing, calibrated_foot_delta, broad_distances, broad_row, broad_rows, commandable_heights, leap_assess, leap_constants, load_mapping, vertical_key, vertical_row, vertical_table
+from ...control.leap import FLIGHT_TARGET_X, FLIGHT_TARGET_Y, LANDING_ARM_PITCH, LANDING_ARM_PITCH_GAIN, LANDING_RECOVERY_STEP, LANDING_STEP_MARGIN, LANDING_TUCK_KNEE_FLEXION, LANDING_TUCK_SHARE, LEAN_PUSH, RECOVERY_STEP_EVENT, LOW_LEVEL_SETTINGS, Landing, LeapThrust, balance_after_landing, calibrated_foot_delta, broad_distances, broad_row, broad_rows, commandable_heights, leap_assess, leap_constants, load_mapping, vertical_key, vertical_row, vertical_table
 from ...control.sequencer import Sequence, Step
 from ...control.turn import jump_start, turn_steps
 from ...errors import ParameterError
@@ -63,6 +63,8 @@ class Leap(Sequence):
                   "landing: after touchdown the hips right the trunk over this time (0 = at once)"),
         LANDING_RECOVERY_STEP,
         LANDING_STEP_MARGIN,
+        LANDING_TUCK_KNEE_FLEXION,
+        LANDING_TUCK_SHARE,
         LEAN_PUSH,
         settings=LOW_LEVEL_SETTINGS,
     )
@@ -186,6 +188,10 @@ class Leap(Sequence):
             landing = {k: cfg.get("landing_" + k, p.get("landing_" + k, Landing.schema.defaults()[k]))
                        for k in ("swing_arms", "arm_flexion", "foot_lead_time", "place_sideways", "knee_flexion",
                                  "right_time", "arm_pitch_gain", "arm_pitch")}
+            share = cfg.get("landing_tuck_share", p.get("landing_tuck_share", LANDING_TUCK_SHARE.default))
+            if share > 0.0:     # the tuck, held for its share of the commanded flight's air time
+                knee = cfg.get("landing_tuck_knee_flexion", p.get("landing_tuck_knee_flexion", LANDING_TUCK_KNEE_FLEXION.default))
+                landing.update(tuck_knee_flexion=knee, tuck_time=share * float(self.flight_target(p)[1]))
             return delta, landing
 
         commanded = cfg.get("commanded_takeoff", 0.0) > 0.5
