@@ -1846,7 +1846,9 @@ with its own lean push) for target_x 1.1-1.6 m, ..., and turned first with short
 distance of 1.1-1.5 m ..., air_time 0.4-0.52 s"). Tests: tests/test_jump_region.py checks the short rows' ways, bodies and
 refusal (no simulation) and plans and runs three random draws of each turned short region with a fixed seed (slow); the
 refusal probe to the side moved to (0.8, 0.6) m in 0.45 s (beyond 34 deg; (1.3, 0.4) m in 0.45 s is now offered). Not
-done: 1.5-1.9 m at 0.4-0.42 s (the far row's shallowest pair, 0.70 m, flies 0.41-0.475 s; not measured shallower), the far
+done: 1.5-1.9 m at 0.4-0.42 s (the far row's shallowest pair, 0.70 m, flies 0.41-0.475 s; one sweep shallower, aims 1.0-2.0
+m at `--air-time 0.41`: 0.72 m 0.38-0.40 s, 1.52-2.02 m, 3 of 5 balanced, 0.74 m 0.37-0.395 s, 1.54-1.97 m, 3 of 5 - a
+0.72 m pair is the next step, not planned or offered), the far
 row straight ahead at 1.5-1.6 m (lands >= 1.59 m), the turned rows beyond 34 deg (as the other turned rows: the hop's
 map), and the existing straight row's miss the report drew at (1.126, -0.001) m in 0.5 s (the new near row's box overlaps
 his commanded `region` there, which keeps it).
