@@ -182,14 +182,16 @@ def draw_turned(rng, character: str, ways: tuple = ("turned",)) -> tuple:
                          f"{' or '.join(ways)} commanded region outside the region its measured jumps offer")
 
 
-TURNED_LONG_WAYS = ("turned_long", "turned_long_short", "turned_near_long", "turned_deep_long")   # --turned-long's rows
+TURNED_LONG_WAYS = ("turned_long", "turned_long_short", "turned_near_long", "turned_deep_long", "turned_far_short",
+                    "turned_near_short")   # --turned-long's rows
 
 
 def draw_turned_long(rng, character: str) -> tuple:
     """draw_turned in the table's turned long air times' regions (``turned_long_region``: the hop, then the long row,
     and ``turned_long_short_region``: the same at shorter air times; ``turned_near_long_region``: the hop, then the near
-    long row; ``turned_deep_long_region``: the hop, then the long row at its deepest crouches), uniform in issue 29's box
-    where one of them holds it."""
+    long row; ``turned_deep_long_region``: the hop, then the long row at its deepest crouches; ``turned_far_short_region``
+    / ``turned_near_short_region``: the hop, then the long / near long row at its shallowest crouches), uniform in issue
+    29's box where one of them holds it."""
     return draw_turned(rng, character, TURNED_LONG_WAYS)
 
 
@@ -220,9 +222,10 @@ def draw_commanded(rng, character: str, keys: tuple = ("region",)) -> tuple:
 
 def draw_long(rng, character: str) -> tuple:
     """draw_commanded in the table's long air times' boxes: ``long_region`` (the vertical thrust's) and, where the
-    table has them, ``near_long_region`` (the near row's) and ``deep_long_region`` (the long row's deepest crouches),
-    uniform in their union."""
-    return draw_commanded(rng, character, ("long_region", "near_long_region", "deep_long_region"))
+    table has them, ``near_long_region`` (the near row's), ``deep_long_region`` (the long row's deepest crouches) and
+    ``far_short_region`` / ``near_short_region`` (the long / near long row's shallowest crouches), uniform in their union."""
+    return draw_commanded(rng, character, ("long_region", "near_long_region", "deep_long_region", "far_short_region",
+                                           "near_short_region"))
 
 
 def box_target_draw(rng, character: str) -> tuple:

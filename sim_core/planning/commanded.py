@@ -41,7 +41,8 @@ aim with the table read by turned_long_body (the long row flown after the hop, w
 ``turned_long_settings`` over it); in its ``turned_near_long_region``, the near long row after the hop
 (near_long_body); in its ``turned_mid_long_region``, the mid long row after the hop (mid_long_body); in its
 ``turned_deep_long_region`` (and straight ahead ``deep_long_region``), the long row at its deepest crouches after the
-hop (deep_long_body).
+hop (deep_long_body); in its ``turned_far_short_region`` / ``turned_near_short_region`` (and straight ahead
+``far_short_region`` / ``near_short_region``), the long / near long row at its shallowest crouches (short_body).
 
 At most min(budget, aim_trials + landing_trials - 1) jumps (turned: turn_aim_trials + landing_trials - 1);
 the plan is the best trial (found or

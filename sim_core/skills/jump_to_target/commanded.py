@@ -83,6 +83,13 @@ Fig. 6 with his thrust slowed for his strength, tools/scale_commanded.py and doc
   man's far row at a 0.5 m crouch flies 0.65-0.7 s and lands up to ~1.75 m as aimed (nearer than ~1.45 m its landing
   per aimed m is flat and rough), beyond his other rows' deepest crouches (docs/jump_to_target.md, "The man's deep long
   row"); a request there outside the rows above is planned so;
+- ``far_short_region``, ``turned_far_short_region`` (optional, with the long row and ``far_short_crouch_by_air_time``) and
+  ``near_short_region``, ``turned_near_short_region`` (optional, with the near long row and ``near_short_crouch_by_air_time``):
+  the same keys as ``long_region`` / ``turned_region`` for short air times far ahead, flown by the long row or the near
+  long row as they are (after the hop too) at their shallowest crouches, each row's own
+  ``*_short_crouch_by_air_time`` (short_body): the man's straight row leaves at most ~2.1 m/s forward, his far and near
+  long rows at 0.62-0.76 m crouches fly 0.4-0.52 s and land ~1.6-2.2 m and ~1.0-1.6 m (docs/jump_to_target.md, "The man's
+  long rows at short air times"); a request there outside the rows above is planned so;
 - ``long_onto_region``, ``long_down_region`` (optional, with the long row): the same keys as ``down_region`` for a
   jump straight ahead onto a box / down from one flown by the long row (long_body) where the flight's flat
   equivalent lies in ``long_region`` with its air time in ``flat_air_time``; ``target_x`` (optional, [low, high] m)
@@ -159,7 +166,8 @@ def _rows(body: dict):
     if "tucked_onto_settings" in body:
         yield "tucked_onto_settings", body["tucked_onto_settings"]
     for key in ("crouch_by_air_time", "long_crouch_by_air_time", "near_long_crouch_by_air_time", "mid_long_crouch_by_air_time",
-                "low_down_crouch_by_air_time", "deep_long_crouch_by_air_time"):
+                "low_down_crouch_by_air_time", "deep_long_crouch_by_air_time", "far_short_crouch_by_air_time",
+                "near_short_crouch_by_air_time"):
         for k, height in enumerate(body.get(key, {}).get("crouch_height", [])):
             yield f"{key} {k}", {"crouch_height": height}
     for k, angle in enumerate(body.get("turn_headings", {}).get("turn_angle", [])):
@@ -272,14 +280,24 @@ def tucked_onto_body(body: dict) -> dict:
     return {**long, "settings": {**long["settings"], **body["tucked_onto_settings"]}}
 
 
-STRAIGHT_WAYS = ("long", "near_long", "deep_long")     # the ways commanded_way names beyond ``region``, straight ahead
+def short_body(body: dict, row: str) -> dict:
+    """The table as a short air times' plan far ahead reads it, straight or after the hop (``row`` "far_short":
+    ``far_short_region`` and ``turned_far_short_region``, long_body - after the hop too: the landing arms' pitch feedback
+    kept, without it the man fell on the target at 0.42-0.45 s; "near_short": ``near_short_region`` and
+    ``turned_near_short_region``, near_long_body) with the row's ``<row>_crouch_by_air_time`` as the crouch pairs."""
+    rows = long_body(body) if row == "far_short" else near_long_body(body)
+    return {**rows, "crouch_by_air_time": body[f"{row}_crouch_by_air_time"]}
+
+
+STRAIGHT_WAYS = ("long", "near_long", "deep_long", "far_short", "near_short")   # commanded_way's ways beyond ``region``, straight
 TURNED_WAYS = ("turned", "turned_long", "turned_long_short", "turned_near_long", "turned_mid_long", "turned_deep_long",
+               "turned_far_short", "turned_near_short",
                "sideways")      # the ways commanded_way names that turn first (planning.commanded.plan_turned)
 
 
 def way_body(body: dict, way: str) -> dict:
     """The table as the plan of a request that commanded_way (or box_way) sends ``way`` reads it: the row that flies it
-    (long_body, near_long_body, mid_long_body, low_down_body, turned_long_body, deep_long_body; straight ahead a row
+    (long_body, near_long_body, mid_long_body, low_down_body, turned_long_body, deep_long_body, short_body; straight ahead a row
     the table lacks flies as the table's own settings), else the table as it is."""
     if way in ("long", "long_down", "long_onto") and "long_settings" in body:
         return long_body(body)      # long air times (onto or down from a box too): the vertical thrust's settings and pairs
@@ -299,6 +317,8 @@ def way_body(body: dict, way: str) -> dict:
         return mid_long_body(body)
     if way == "turned_deep_long":
         return deep_long_body(body, turned=True)
+    if way in ("far_short", "near_short", "turned_far_short", "turned_near_short"):
+        return short_body(body, way.removeprefix("turned_"))      # the long rows at their shallowest crouches
     return body
 
 
@@ -336,7 +356,9 @@ def commanded_way(character: str, target, air_time: float) -> str | None:
     "turned_near_long" inside its ``turned_near_long_region``
     (the turn first, then the near long row), "turned_mid_long" inside its ``turned_mid_long_region`` (the turn
     first, then the mid long row), "turned_deep_long" inside its ``turned_deep_long_region`` (the turn first, then the
-    long row at its deepest crouches), "sideways" inside its ``sideways_region`` (the
+    long row at its deepest crouches), "far_short" / "near_short" inside its ``far_short_region`` / ``near_short_region``
+    and "turned_far_short" / "turned_near_short" inside its ``turned_far_short_region`` / ``turned_near_short_region`` (the
+    long / near long row at its shallowest crouches, short_body), "sideways" inside its ``sideways_region`` (the
     quarter turn first); down
     from a box (z < 0) or onto one (z > 0) as box_way says; else None."""
     body = table(character)
@@ -427,11 +449,15 @@ FLAT_REGION_WORDS = (       # commanded_limit's words for each region on flat gr
     ("long_region", "for long air times (the leap's vertical thrust) on flat ground for"),
     ("near_long_region", "for long air times nearer (the vertical thrust with its own lean push) for"),
     ("deep_long_region", "for the longest air times (the vertical thrust's deepest crouches) for"),
+    ("far_short_region", "for short air times far ahead (the vertical thrust's shallowest crouches) for"),
+    ("near_short_region", "for short air times nearer (the same with its own lean push) for"),
     ("turned_long_region", "turned first with long air times"),
     ("turned_long_short_region", "turned first with the long row at shorter air times"),
     ("turned_near_long_region", "turned first with long air times nearer"),
     ("turned_mid_long_region", "turned first with long air times in the middle"),
-    ("turned_deep_long_region", "turned first with the longest air times"))
+    ("turned_deep_long_region", "turned first with the longest air times"),
+    ("turned_far_short_region", "turned first with short air times far ahead"),
+    ("turned_near_short_region", "turned first with short air times nearer"))
 
 
 def commanded_limit(character: str, z: float = 0.0) -> str | None:
