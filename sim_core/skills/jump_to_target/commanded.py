@@ -83,6 +83,12 @@ Fig. 6 with his thrust slowed for his strength, tools/scale_commanded.py and doc
   man's far row at a 0.5 m crouch flies 0.65-0.7 s and lands up to ~1.75 m as aimed (nearer than ~1.45 m its landing
   per aimed m is flat and rough), beyond his other rows' deepest crouches (docs/jump_to_target.md, "The man's deep long
   row"); a request there outside the rows above is planned so;
+- ``near_deep_long_region``, ``turned_near_deep_long_region`` (optional, with the near long row and
+  ``near_deep_long_crouch_by_air_time``): the same keys as ``long_region`` / ``turned_region`` for the longest air times
+  nearer, flown by the near long row as it is (its lean push) at its deepest crouches, ``near_deep_long_crouch_by_air_time``
+  (near_deep_long_body): the man's near row at a 0.5 m crouch flies 0.65-0.72 s and lands 0.35-0.9 m as aimed, balanced,
+  where his far row's landing does not follow its aim (docs/jump_to_target.md, "The man's near deep long row"); a request
+  there outside the rows above is planned so;
 - ``long_onto_region``, ``long_down_region`` (optional, with the long row): the same keys as ``down_region`` for a
   jump straight ahead onto a box / down from one flown by the long row (long_body) where the flight's flat
   equivalent lies in ``long_region`` with its air time in ``flat_air_time``; ``target_x`` (optional, [low, high] m)
@@ -151,7 +157,7 @@ def _rows(body: dict):
     if "turned_long_settings" in body:
         yield "turned_long_settings", body["turned_long_settings"]
     for key in ("crouch_by_air_time", "long_crouch_by_air_time", "near_long_crouch_by_air_time", "mid_long_crouch_by_air_time",
-                "low_down_crouch_by_air_time", "deep_long_crouch_by_air_time"):
+                "low_down_crouch_by_air_time", "deep_long_crouch_by_air_time", "near_deep_long_crouch_by_air_time"):
         for k, height in enumerate(body.get(key, {}).get("crouch_height", [])):
             yield f"{key} {k}", {"crouch_height": height}
     for k, angle in enumerate(body.get("turn_headings", {}).get("turn_angle", [])):
@@ -257,15 +263,21 @@ def deep_long_body(body: dict, turned: bool = False) -> dict:
             "crouch_by_air_time": body["deep_long_crouch_by_air_time"]}
 
 
-STRAIGHT_WAYS = ("long", "near_long", "deep_long")     # the ways commanded_way names beyond ``region``, straight ahead
+def near_deep_long_body(body: dict) -> dict:
+    """The table as the near deep long air times' plan reads it (``near_deep_long_region``, and after the hop
+    ``turned_near_deep_long_region``): near_long_body with ``near_deep_long_crouch_by_air_time`` as the crouch pairs."""
+    return {**near_long_body(body), "crouch_by_air_time": body["near_deep_long_crouch_by_air_time"]}
+
+
+STRAIGHT_WAYS = ("long", "near_long", "deep_long", "near_deep_long")   # commanded_way's ways beyond ``region``, straight ahead
 TURNED_WAYS = ("turned", "turned_long", "turned_long_short", "turned_near_long", "turned_mid_long", "turned_deep_long",
-               "sideways")      # the ways commanded_way names that turn first (planning.commanded.plan_turned)
+               "turned_near_deep_long", "sideways")      # the ways commanded_way names that turn first (planning.commanded.plan_turned)
 
 
 def way_body(body: dict, way: str) -> dict:
     """The table as the plan of a request that commanded_way (or box_way) sends ``way`` reads it: the row that flies it
-    (long_body, near_long_body, mid_long_body, low_down_body, turned_long_body, deep_long_body; straight ahead a row
-    the table lacks flies as the table's own settings), else the table as it is."""
+    (long_body, near_long_body, mid_long_body, low_down_body, turned_long_body, deep_long_body, near_deep_long_body;
+    straight ahead a row the table lacks flies as the table's own settings), else the table as it is."""
     if way in ("long", "long_down", "long_onto") and "long_settings" in body:
         return long_body(body)      # long air times (onto or down from a box too): the vertical thrust's settings and pairs
     if way == "near_long" and "near_long_settings" in body:
@@ -282,6 +294,8 @@ def way_body(body: dict, way: str) -> dict:
         return mid_long_body(body)
     if way == "turned_deep_long":
         return deep_long_body(body, turned=True)
+    if way in ("near_deep_long", "turned_near_deep_long") and "near_deep_long_crouch_by_air_time" in body:
+        return near_deep_long_body(body)   # the longest air times nearer: the near row at its deepest crouches
     return body
 
 
@@ -319,7 +333,8 @@ def commanded_way(character: str, target, air_time: float) -> str | None:
     "turned_near_long" inside its ``turned_near_long_region``
     (the turn first, then the near long row), "turned_mid_long" inside its ``turned_mid_long_region`` (the turn
     first, then the mid long row), "turned_deep_long" inside its ``turned_deep_long_region`` (the turn first, then the
-    long row at its deepest crouches), "sideways" inside its ``sideways_region`` (the
+    long row at its deepest crouches), "near_deep_long" / "turned_near_deep_long" inside its ``near_deep_long_region`` /
+    ``turned_near_deep_long_region`` (the near long row at its deepest crouches, straight / after the hop), "sideways" inside its ``sideways_region`` (the
     quarter turn first); down
     from a box (z < 0) or onto one (z > 0) as box_way says; else None."""
     body = table(character)
@@ -409,11 +424,13 @@ FLAT_REGION_WORDS = (       # commanded_limit's words for each region on flat gr
     ("long_region", "for long air times (the leap's vertical thrust) on flat ground for"),
     ("near_long_region", "for long air times nearer (the vertical thrust with its own lean push) for"),
     ("deep_long_region", "for the longest air times (the vertical thrust's deepest crouches) for"),
+    ("near_deep_long_region", "for the longest air times nearer (the near row's deepest crouches) for"),
     ("turned_long_region", "turned first with long air times"),
     ("turned_long_short_region", "turned first with the long row at shorter air times"),
     ("turned_near_long_region", "turned first with long air times nearer"),
     ("turned_mid_long_region", "turned first with long air times in the middle"),
-    ("turned_deep_long_region", "turned first with the longest air times"))
+    ("turned_deep_long_region", "turned first with the longest air times"),
+    ("turned_near_deep_long_region", "turned first with the longest air times nearer"))
 
 
 def commanded_limit(character: str, z: float = 0.0) -> str | None:
