@@ -445,7 +445,7 @@ FLAT_REGION_WORDS = (       # commanded_limit's words for each region on flat gr
     ("near_long_region", "for long air times nearer (the vertical thrust with its own lean push) for"),
     ("deep_long_region", "for the longest air times (the vertical thrust's deepest crouches) for"),
     ("near_deep_long_region", "for the longest air times nearer (the near row's deepest crouches) for"),
-    ("mid_deep_long_region", "for the longest air times in the middle (their own lean push's deepest crouches) for"),
+    ("mid_deep_long_region", "for the longest air times in the middle (the vertical thrust with its own push, deepest crouches) for"),
     ("turned_long_region", "turned first with long air times"),
     ("turned_long_short_region", "turned first with the long row at shorter air times"),
     ("turned_near_long_region", "turned first with long air times nearer"),
