@@ -183,15 +183,16 @@ def draw_turned(rng, character: str, ways: tuple = ("turned",)) -> tuple:
 
 
 TURNED_LONG_WAYS = ("turned_long", "turned_long_short", "turned_near_long", "turned_deep_long", "turned_far_short",
-                    "turned_near_short")   # --turned-long's rows
+                    "turned_near_short", "turned_near_deep_long", "turned_mid_deep_long")   # --turned-long's rows
 
 
 def draw_turned_long(rng, character: str) -> tuple:
     """draw_turned in the table's turned long air times' regions (``turned_long_region``: the hop, then the long row,
     and ``turned_long_short_region``: the same at shorter air times; ``turned_near_long_region``: the hop, then the near
     long row; ``turned_deep_long_region``: the hop, then the long row at its deepest crouches; ``turned_far_short_region``
-    / ``turned_near_short_region``: the hop, then the long / near long row at its shallowest crouches), uniform in issue
-    29's box where one of them holds it."""
+    / ``turned_near_short_region``: the hop, then the long / near long row at its shallowest crouches;
+    ``turned_near_deep_long_region`` / ``turned_mid_deep_long_region``: the hop, then the near / mid deep row), uniform
+    in issue 29's box where one of them holds it."""
     return draw_turned(rng, character, TURNED_LONG_WAYS)
 
 
@@ -223,9 +224,10 @@ def draw_commanded(rng, character: str, keys: tuple = ("region",)) -> tuple:
 def draw_long(rng, character: str) -> tuple:
     """draw_commanded in the table's long air times' boxes: ``long_region`` (the vertical thrust's) and, where the
     table has them, ``near_long_region`` (the near row's), ``deep_long_region`` (the long row's deepest crouches) and
-    ``far_short_region`` / ``near_short_region`` (the long / near long row's shallowest crouches), uniform in their union."""
+    ``far_short_region`` / ``near_short_region`` (the long / near long row's shallowest crouches) and
+    ``near_deep_long_region`` / ``mid_deep_long_region`` (the near / mid deep rows), uniform in their union."""
     return draw_commanded(rng, character, ("long_region", "near_long_region", "deep_long_region", "far_short_region",
-                                           "near_short_region"))
+                                           "near_short_region", "near_deep_long_region", "mid_deep_long_region"))
 
 
 def box_target_draw(rng, character: str) -> tuple:
@@ -495,7 +497,9 @@ def main(argv=None) -> int:
                "(skills/jump_to_target/commanded.py long_body), aimed as the commanded targets; where the table has a "
                "near_long_region too (the man's), uniformly in the union of both, the nearer ones flown by its near row "
                "(near_long_body: its own lean push and crouch pairs), and in its deep_long_region (the man's) the longest air "
-               "times, by the long row at its deepest crouches (deep_long_body). " if args.long else "")
+               "times, by the long row at its deepest crouches (deep_long_body), in its near_deep_long_region (the man's) by the near "
+               "row at its deepest crouches (near_deep_long_body), in its mid_deep_long_region (the man's) by the long row with its "
+               "own push at its deepest crouches (mid_deep_long_body). " if args.long else "")
             + ("Turned long air time targets (--turned-long) are drawn uniformly in issue 29's box and drawn again until "
                "they lie in the turned long air times' region of each character that has one (the table's "
                "turned_long_region, turned_long_short_region (the same at shorter air times: the woman's) and turned_near_long_region "
@@ -503,7 +507,8 @@ def main(argv=None) -> int:
                "its measured jumps offer: the jump turns first by one hop toward the target (as the turned targets) and "
                "flies the long row forward (plan_turned with turned_long_body; in turned_near_long_region the near long "
                "row, near_long_body; in turned_deep_long_region, the man's, the long row at its deepest crouches, "
-               "deep_long_body). "
+               "deep_long_body; in turned_near_deep_long_region, the man's, the near long row at its deepest crouches, "
+               "near_deep_long_body; in turned_mid_deep_long_region, the man's, the mid deep row, mid_deep_long_body). "
                if args.turned_long else "")
             + ("Mid long air time targets (--mid-long) are drawn uniformly in issue 29's box and drawn again until they lie "
                "in the turned mid long row's region of each character that has one (the table's turned_mid_long_region: "

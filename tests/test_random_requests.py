@@ -109,9 +109,10 @@ def test_long_draws_are_in_each_long_region_outside_the_measured_jumps():
     assert [d.character for d in long] == ["man"] * 3 + ["woman"] * 3 and all(d.skill == "long" for d in long)
     for d in long:
         x, y, t = d.values
-        way = commanded_way(d.character, (x, y), t)       # the man's long draws: his long, near or deep row's (the union)
+        way = commanded_way(d.character, (x, y), t)       # the man's long draws: his long, near or deep rows' (the union)
         region = table(d.character)[f"{way}_region"]
-        assert way in ("long", "near_long", "deep_long", "far_short", "near_short") and not offered(d.character, (x, y), t)
+        assert way in ("long", "near_long", "deep_long", "far_short", "near_short", "near_deep_long",
+                       "mid_deep_long") and not offered(d.character, (x, y), t)
         assert all(region[k][0] <= v <= region[k][1] for k, v in zip(("target_x", "target_y", "air_time"), d.values))
     assert all(commanded_way("woman", d.values[:2], d.values[2]) == "long" for d in long if d.character == "woman")
     assert long != draw_requests(2, ["man", "woman"], 2, 1, 1, commanded=2, long=3)[len(plain):]
@@ -129,7 +130,9 @@ def test_turned_long_draws_are_in_each_turned_long_region_outside_the_measured_j
         x, y, t = d.values
         assert d.skill == "turned_long" and commanded_way(d.character, (x, y), t) in ("turned_long", "turned_long_short",
                                                                                       "turned_near_long", "turned_deep_long",
-                                                                                      "turned_far_short", "turned_near_short")
+                                                                                      "turned_far_short", "turned_near_short",
+                                                                                      "turned_near_deep_long",
+                                                                                      "turned_mid_deep_long")
         assert not offered(d.character, (x, y), t)
     assert turned_long != draw_requests(2, ["man", "woman"], 2, 1, 1, turned=2, long=2, turned_long=3)[len(plain):]
 

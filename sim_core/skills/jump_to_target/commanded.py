@@ -90,6 +90,17 @@ Fig. 6 with his thrust slowed for his strength, tools/scale_commanded.py and doc
   ``*_short_crouch_by_air_time`` (short_body): the man's straight row leaves at most ~2.1 m/s forward, his far and near
   long rows at 0.62-0.76 m crouches fly 0.4-0.52 s and land ~1.6-2.2 m and ~1.0-1.6 m (docs/jump_to_target.md, "The man's
   long rows at short air times"); a request there outside the rows above is planned so;
+- ``near_deep_long_region``, ``turned_near_deep_long_region`` (optional, with the near long row and
+  ``near_deep_long_crouch_by_air_time``): the same keys as ``long_region`` / ``turned_region`` for the longest air times
+  nearer, flown by the near long row as it is (its lean push) at its deepest crouches, ``near_deep_long_crouch_by_air_time``
+  (near_deep_long_body): the man's near row at a 0.5 m crouch flies 0.65-0.72 s and lands 0.35-0.9 m as aimed, balanced,
+  where his far row's landing does not follow its aim (docs/jump_to_target.md, "The man's near deep long row"); a request
+  there outside the rows above is planned so;
+- ``mid_deep_long_region``, ``turned_mid_deep_long_region`` (optional, with the long row, ``mid_deep_long_settings`` and
+  ``mid_deep_long_crouch_by_air_time``): the same keys for the longest air times between the near deep and the deep
+  rows, flown by the long row with its own lean push (``mid_deep_long_settings`` over ``long_settings``) at its deepest
+  crouches (mid_deep_long_body): the man's push 4 at a 0.5 m crouch lands 1.0-1.45 m in 0.65-0.7 s, all balanced
+  (docs/jump_to_target.md, "The man's near deep long row"); a request there outside the rows above is planned so;
 - ``long_onto_region``, ``long_down_region`` (optional, with the long row): the same keys as ``down_region`` for a
   jump straight ahead onto a box / down from one flown by the long row (long_body) where the flight's flat
   equivalent lies in ``long_region`` with its air time in ``flat_air_time``; ``target_x`` (optional, [low, high] m)
@@ -165,9 +176,11 @@ def _rows(body: dict):
         yield "turned_long_settings", body["turned_long_settings"]
     if "tucked_onto_settings" in body:
         yield "tucked_onto_settings", body["tucked_onto_settings"]
+    if "mid_deep_long_settings" in body:
+        yield "mid_deep_long_settings", body["mid_deep_long_settings"]
     for key in ("crouch_by_air_time", "long_crouch_by_air_time", "near_long_crouch_by_air_time", "mid_long_crouch_by_air_time",
                 "low_down_crouch_by_air_time", "deep_long_crouch_by_air_time", "far_short_crouch_by_air_time",
-                "near_short_crouch_by_air_time"):
+                "near_short_crouch_by_air_time", "near_deep_long_crouch_by_air_time", "mid_deep_long_crouch_by_air_time"):
         for k, height in enumerate(body.get(key, {}).get("crouch_height", [])):
             yield f"{key} {k}", {"crouch_height": height}
     for k, angle in enumerate(body.get("turn_headings", {}).get("turn_angle", [])):
@@ -289,16 +302,31 @@ def short_body(body: dict, row: str) -> dict:
     return {**rows, "crouch_by_air_time": body[f"{row}_crouch_by_air_time"]}
 
 
-STRAIGHT_WAYS = ("long", "near_long", "deep_long", "far_short", "near_short")   # commanded_way's ways beyond ``region``, straight
+def near_deep_long_body(body: dict) -> dict:
+    """The table as the near deep long air times' plan reads it (``near_deep_long_region``, and after the hop
+    ``turned_near_deep_long_region``): near_long_body with ``near_deep_long_crouch_by_air_time`` as the crouch pairs."""
+    return {**near_long_body(body), "crouch_by_air_time": body["near_deep_long_crouch_by_air_time"]}
+
+
+def mid_deep_long_body(body: dict) -> dict:
+    """The table as the mid deep long air times' plan reads it (``mid_deep_long_region``, and after the hop
+    ``turned_mid_deep_long_region``): near_long_body of the mid deep row (``mid_deep_long_settings``,
+    ``mid_deep_long_crouch_by_air_time``)."""
+    return near_long_body(body, "mid_deep_long")
+
+
+STRAIGHT_WAYS = ("long", "near_long", "deep_long", "far_short", "near_short", "near_deep_long",
+                 "mid_deep_long")   # commanded_way's ways beyond ``region``, straight ahead
 TURNED_WAYS = ("turned", "turned_long", "turned_long_short", "turned_near_long", "turned_mid_long", "turned_deep_long",
-               "turned_far_short", "turned_near_short",
+               "turned_far_short", "turned_near_short", "turned_near_deep_long", "turned_mid_deep_long",
                "sideways")      # the ways commanded_way names that turn first (planning.commanded.plan_turned)
 
 
 def way_body(body: dict, way: str) -> dict:
     """The table as the plan of a request that commanded_way (or box_way) sends ``way`` reads it: the row that flies it
-    (long_body, near_long_body, mid_long_body, low_down_body, turned_long_body, deep_long_body, short_body; straight ahead a row
-    the table lacks flies as the table's own settings), else the table as it is."""
+    (long_body, near_long_body, mid_long_body, low_down_body, turned_long_body, deep_long_body, short_body,
+    near_deep_long_body, mid_deep_long_body; straight ahead a row the table lacks flies as the table's own settings), else
+    the table as it is."""
     if way in ("long", "long_down", "long_onto") and "long_settings" in body:
         return long_body(body)      # long air times (onto or down from a box too): the vertical thrust's settings and pairs
     if way == "tucked_onto":
@@ -319,6 +347,10 @@ def way_body(body: dict, way: str) -> dict:
         return deep_long_body(body, turned=True)
     if way in ("far_short", "near_short", "turned_far_short", "turned_near_short"):
         return short_body(body, way.removeprefix("turned_"))      # the long rows at their shallowest crouches
+    if way in ("near_deep_long", "turned_near_deep_long") and "near_deep_long_crouch_by_air_time" in body:
+        return near_deep_long_body(body)   # the longest air times nearer: the near row at its deepest crouches
+    if way in ("mid_deep_long", "turned_mid_deep_long") and "mid_deep_long_settings" in body:
+        return mid_deep_long_body(body)    # between them: the long row with its own push at its deepest crouches
     return body
 
 
@@ -358,7 +390,11 @@ def commanded_way(character: str, target, air_time: float) -> str | None:
     first, then the mid long row), "turned_deep_long" inside its ``turned_deep_long_region`` (the turn first, then the
     long row at its deepest crouches), "far_short" / "near_short" inside its ``far_short_region`` / ``near_short_region``
     and "turned_far_short" / "turned_near_short" inside its ``turned_far_short_region`` / ``turned_near_short_region`` (the
-    long / near long row at its shallowest crouches, short_body), "sideways" inside its ``sideways_region`` (the
+    long / near long row at its shallowest crouches, short_body), "near_deep_long" / "turned_near_deep_long" inside its
+    ``near_deep_long_region`` / ``turned_near_deep_long_region`` (the near long row at its deepest crouches, straight /
+    after the hop), "mid_deep_long" / "turned_mid_deep_long" inside its ``mid_deep_long_region`` /
+    ``turned_mid_deep_long_region`` (the long row with the mid deep row's push at its deepest crouches), "sideways" inside
+    its ``sideways_region`` (the
     quarter turn first); down
     from a box (z < 0) or onto one (z > 0) as box_way says; else None."""
     body = table(character)
@@ -451,13 +487,17 @@ FLAT_REGION_WORDS = (       # commanded_limit's words for each region on flat gr
     ("deep_long_region", "for the longest air times (the vertical thrust's deepest crouches) for"),
     ("far_short_region", "for short air times far ahead (the vertical thrust's shallowest crouches) for"),
     ("near_short_region", "for short air times nearer (the same with its own lean push) for"),
+    ("near_deep_long_region", "for the longest air times nearer (the near row's deepest crouches) for"),
+    ("mid_deep_long_region", "for the longest air times in the middle (the vertical thrust with its own push, deepest crouches) for"),
     ("turned_long_region", "turned first with long air times"),
     ("turned_long_short_region", "turned first with the long row at shorter air times"),
     ("turned_near_long_region", "turned first with long air times nearer"),
     ("turned_mid_long_region", "turned first with long air times in the middle"),
     ("turned_deep_long_region", "turned first with the longest air times"),
     ("turned_far_short_region", "turned first with short air times far ahead"),
-    ("turned_near_short_region", "turned first with short air times nearer"))
+    ("turned_near_short_region", "turned first with short air times nearer"),
+    ("turned_near_deep_long_region", "turned first with the longest air times nearer"),
+    ("turned_mid_deep_long_region", "turned first with the longest air times in the middle"))
 
 
 def commanded_limit(character: str, z: float = 0.0) -> str | None:
