@@ -160,7 +160,7 @@ def test_a_target_outside_both_regions_is_refused_naming_both(monkeypatch):
                          "deg to either side, air_time 0.42-0.52 s")
     onto = region_refusal("woman", (0.7, 0.0, 0.6), 0.5)        # onto a box: the flat region and the onto regions
     assert onto.endswith("the commanded take-off is offered on flat ground for target_x 0.5-1.25 m, target_y -0.02-0.02 m, "
-                         "air_time 0.4-0.52 s, and onto a box 0.25-0.5 m high at target_x 0.85-1.6 m where the same "
+                         "air_time 0.4-0.52 s, and onto a box 0.25-0.5 m high at target_x 0.92-1.6 m where the same "
                          "lift-off on flat ground would land in the long air times' region in 0.52-0.7 s "
                          "(T0 = air_time + 2 height / (g air_time)), and onto a box 0.25-0.5 m high at target_x 0.55-0.85 m "
                          "where the same lift-off on flat ground would land in the long air times' region in 0.52-0.7 s "
@@ -305,6 +305,9 @@ def test_a_random_target_onto_a_box_is_flown_by_the_long_row_as_its_plan_was():
     assert commanded_way("woman", (1.0, 0.0, 0.6), 0.5) is None                   # T0 0.74 s
     assert commanded_way("woman", (0.95, 0.0, 0.45), 0.43) == "long_onto"        # T0 0.64 s at 1.42 m
     assert commanded_way("woman", (0.95, 0.0, 0.52), 0.43) is None                # T0 0.68 s, but higher than measured
+    assert commanded_way("woman", (0.9, 0.0, 0.3), 0.45) is None                 # 0.85-0.92 m: the long row's near edge missed
+    text = region_refusal("woman", (0.9, 0.0, 0.3), 0.45)
+    assert text and "\n" not in text and "onto a box 0.25-0.5 m high at target_x 0.92-1.6 m" in text
     assert commanded_way("man", (1.0, 0.0, 0.35), 0.5) is None                    # his flat equivalent 1.28 m: short of his long row
     box = first_commanded_box_draw("woman", "long_onto")
     result, plan = planned_and_run(box)
@@ -313,17 +316,20 @@ def test_a_random_target_onto_a_box_is_flown_by_the_long_row_as_its_plan_was():
 
 
 def test_a_random_target_of_the_man_onto_a_box_is_flown_by_his_far_long_row():
-    """His long_onto_region: onto a 0.25-0.4 m box where the same lift-off on flat ground lands 1.6-1.9 m ahead (the far
-    long row's region, flat_target_x: nearer, the row's landings missed) in 0.55-0.65 s; the first such draw of the
+    """His long_onto_region: onto a 0.25-0.35 m box (higher: 5 of 7) where the same lift-off on flat ground lands 1.6-1.9 m ahead (the far
+    long row's region, flat_target_x: nearer, the row's landings missed) in 0.55-0.65 s, asked in 0.44-0.7 s (shorter: its
+    aims missed, target_air_time); the first such draw of the
     report's box targets planned with the long row and run as a user's request; a target just outside refused in one
     line naming the limit."""
     from sim_core.skills.jump_to_target.commanded import commanded_way
     assert commanded_way("man", (1.3, 0.0, 0.34), 0.48) == "long_onto"           # T0 0.62 s, flat landing 1.69 m
     assert commanded_way("man", (1.25, 0.0, 0.255), 0.481) is None               # flat landing 1.53 m: short of 1.6 m
     assert commanded_way("man", (1.2, 0.0, 0.44), 0.42) is None                  # above 0.4 m: 10 of 13 landed
+    assert commanded_way("man", (1.37, 0.0, 0.37), 0.5) is None                  # above 0.35 m: 5 of 7
+    assert commanded_way("man", (1.29, 0.0, 0.38), 0.42) is None                 # air time below 0.44 s: its aims missed
     text = region_refusal("man", (1.25, 0.0, 0.255), 0.481)
-    assert text and "\n" not in text and "onto a box 0.25-0.4 m high at target_x 0.85-1.9 m where the same lift-off on " \
-        "flat ground would land in the long air times' region at 1.6-1.9 m in 0.55-0.65 s" in text
+    assert text and "\n" not in text and "onto a box 0.25-0.35 m high at target_x 0.85-1.9 m in air_time 0.44-0.7 s where the same " \
+        "lift-off on flat ground would land in the long air times' region at 1.6-1.9 m in 0.55-0.65 s" in text
     box = first_commanded_box_draw("man", "long_onto")
     result, plan = planned_and_run(box)
     assert plan["settings"]["vertical_thrust"] == 1.0 and plan["settings"]["lean_push"] == 3.0

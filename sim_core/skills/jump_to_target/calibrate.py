@@ -1982,6 +1982,47 @@ near and mid deep rows (0.5-1.45 m in 0.62-0.7 s) lie in disjoint air times; wit
 1.4 / 1.6 / 1.8 m, columns 0.43 / 0.47 / 0.53 / 0.57 / 0.62 / 0.67 s) left open: 0.5-0.7 m at 0.5-0.6 s (33-43 %), 1.6-1.9
 m at 0.4-0.45 s (50-59 %) and 1.75-1.9 m at 0.65-0.7 s (9 %).
 
+**Each box row measured alone (issue 29, twenty-seventh session, 2026-12-07): the woman's far onto-box row from 0.92 m,
+the man's onto a 0.25-0.35 m box asked in 0.44-0.7 s; their shares of issue 29's box targets 30.2 % -> 29.4 % (onto 17.2
+-> 15.8 %) and 13.0 % -> 12.6 % (onto 2.2 -> 1.4 %).** The report's box draws mix the rows (fresh seed 613: the
+woman 16 / 20), so each row of the commanded table (`down_region`, `high_down_region`, each of `low_down_regions`,
+`long_onto_region`, `tucked_onto_region`) was drawn alone: a scratch script draws `random_requests.box_target_draw`
+until the table with that row alone gives a way (`commanded.box_way`), the whole table the same way and `region.mode`
+"commanded" (the target is flown by that row as a user's request would be), and runs each by `random_requests.evaluate`
+(budget 24), fresh seeds 701-704:
+
+| row | woman | man |
+| --- | --- | --- |
+| down_region | 15 / 15 | 14 / 15 (the miss (1.575 m, a 0.383 m box, 0.564 s) 13.8 cm long) |
+| high_down_region | - | 15 / 15 |
+| low_down_regions | 15 / 15 | 11 / 12, 12 / 12, 12 / 12 |
+| tucked_onto_region | 12 / 12 | - |
+| long_onto_region, as it was | 28 / 30 (701, 702) | 20 / 26 (701, 702) |
+| long_onto_region, kept | 18 / 20 (703) | 16 / 16 (704) |
+
+The down rows pass; the onto rows did not:
+- the woman's far row (`long_onto_region`, the long row): its misses lie at the row's near edge - (0.885 m, a 0.312 m
+  box, 0.502 s) 10 cm short flown 0.083 s long, (0.910 m, 0.488 m, 0.474 s) 13 cm short, and the report's (0.901 m,
+  0.472 m, 0.418 s) 16.5 cm off: the aim not followed in her 5 aims (the box's front edge 0.3 m before the target); with
+  seeds 611 and 613 the draws nearer than 0.92 m **7 / 10**, from 0.92 m **24 / 26**. Attempt: the tucked row's settings
+  (arms back, the knees tucked) out to 0.95 m, seed 711 (0.85-0.95 m) **8 / 12** (the misses onto 0.39-0.47 m boxes, 5-16
+  cm off) - not kept. So `long_onto_region` target_x **0.92-1.6 m** (0.85-0.92 m refused in one line naming both onto
+  rows): fresh seed 703 **18 / 20** ((1.309 m, 0.275 m, 0.549 s) on the target but flown 0.1 s short, (0.951 m, 0.448 m,
+  0.495 s) 5.7 cm off); over every draw from 0.92 m (701-703, 611, 613) **42 / 46 (91 %)**. Three of the four misses fly
+  T0 0.68 s (from 0.66 s 16 / 19; below it 26 / 27): her long row's deepest crouches, left as they are;
+- the man's far row (`long_onto_region`): the misses are aims that do not settle in his 9 (the landing scatters 8-10 cm
+  about the aim), most at the shortest air times (the fastest forward): asked in under 0.44 s **3 / 7**, from 0.44 s
+  **22 / 24** (with the report's seeds 611 and 613); the optional bound of the target's own air time
+  (`target_air_time`, [low, high] s, `commanded.box_way`) 0.44-0.7 s: fresh seed 703 **13 / 16** (the misses onto 0.32-0.37
+  m boxes, 7.7-9.5 cm off after 9-13 trials) - from 0.44 s over 701-703 and the report's draws 0.25-0.35 m high **30 / 33**,
+  0.35-0.4 m **5 / 7**; so height **0.25-0.35 m**: fresh seed 704 **16 / 16**. A target outside is refused in one line ("onto
+  a box 0.25-0.35 m high at target_x 0.85-1.9 m in air_time 0.44-0.7 s where the same lift-off on flat ground would land
+  in the long air times' region at 1.6-1.9 m in 0.55-0.65 s ...").
+The woman's report miss down from a 0.691 m box at 1.554 m (seed 613, her `down_region`) was alone: her row's draws
+15 / 15 (boxes to 0.72 m, targets to 1.6 m). As a user's box requests with the final regions (`python -m sim_core report random --seed 617
+--jumps 0 --leaps 0 --broad 0 --boxes 20 --characters man,woman --budget 24 --workers 1`): fresh seed 617 man **20 / 20**,
+woman **20 / 20** (median 4.1 / 2.6 s, worst 9.1 / 12.0 s).
+
 ![commanded vs achieved landing point](jump_to_target.png)
 
 ![the man's 1.3 m jump to a target, 1.0-2.1 s: crouch, thrust, flight, landing, standing up](jump_to_target_filmstrip.png)

@@ -106,7 +106,9 @@ Fig. 6 with his thrust slowed for his strength, tools/scale_commanded.py and doc
   equivalent lies in ``long_region`` with its air time in ``flat_air_time``; ``target_x`` (optional, [low, high] m)
   bounds the target's own forward distance (onto a box: a nearer box's front edge, 0.3 m before the target, is
   not cleared); ``flat_target_x`` (optional, [low, high] m) bounds the flat equivalent's landing within the row's
-  region (the man's far long row onto a box missed where it lands nearer than 1.6 m on flat ground). Onto a box needs
+  region (the man's far long row onto a box missed where it lands nearer than 1.6 m on flat ground);
+  ``target_air_time`` (optional, [low, high] s) bounds the target's own air time (the man's far row onto a box missed
+  its aim at the shortest air times, the fastest forward). Onto a box needs
   T0 = T + 2 h / (g T) >= 0.53 s: only the long row flies it;
 - ``tucked_onto_region`` (optional, with the long row and ``tucked_onto_settings``): the keys of ``long_onto_region`` for a
   box nearer than it, flown by the long row with ``tucked_onto_settings`` over its settings (tucked_onto_body: the arms held
@@ -424,7 +426,7 @@ def box_way(body: dict, target, air_time: float) -> str | None:
     its ``low_down_regions``: "low_down" (low_down_body); in its
     ``long_region`` with them in ``long_down_region`` / ``long_onto_region``: "long_down" / "long_onto" (the long row,
     long_body), in ``tucked_onto_region``: "tucked_onto" (tucked_onto_body); else None."""
-    z = float(target[2])
+    z, asked = float(target[2]), float(air_time)
     x, air_time = flat_equivalent(target, air_time)
     values = {"target_x": x, "target_y": float(target[1]), "air_time": air_time}
     rows = (("down", "region", body.get("down_region")), ("down", "region", body.get("high_down_region")),
@@ -440,7 +442,8 @@ def box_way(body: dict, target, air_time: float) -> str | None:
         region = body.get(region_key) if region_key else {}     # a low lift-off: the box's own bounds alone
         if (region is not None and box is not None and within(box, "height", abs(z))
                 and within(box, "target_x", float(target[0])) and within(box, "flat_air_time", air_time)
-                and within(box, "flat_target_x", x) and all(within(region, k, v) for k, v in values.items())):
+                and within(box, "flat_target_x", x) and within(box, "target_air_time", float(asked))
+                and all(within(region, k, v) for k, v in values.items())):
             return way
     return None
 
@@ -469,10 +472,12 @@ def _turned(region: dict) -> str:
 
 
 def _box(region: dict, way: str, landing: str, sign: str) -> str:
-    """A box region (height, flat_air_time, optional target_x and flat_target_x) in words: the same lift-off's flat
-    landing in ``landing``."""
+    """A box region (height, flat_air_time, optional target_x, target_air_time and flat_target_x) in words: the same
+    lift-off's flat landing in ``landing``."""
     return (f"{way} a box {region['height'][0]:g}-{region['height'][1]:g} m high"
             + (f" at target_x {region['target_x'][0]:g}-{region['target_x'][1]:g} m" if "target_x" in region else "")
+            + (f" in air_time {region['target_air_time'][0]:g}-{region['target_air_time'][1]:g} s"
+               if "target_air_time" in region else "")
             + f" where the same lift-off on flat ground would land in {landing}"
             + (f" at {region['flat_target_x'][0]:g}-{region['flat_target_x'][1]:g} m" if "flat_target_x" in region else "")
             + " in "
