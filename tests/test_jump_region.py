@@ -748,7 +748,9 @@ def test_the_mans_short_air_times_far_ahead_are_flown_by_his_long_rows_at_their_
     assert commanded_way("man", (1.0, 0.3), 0.45) == "turned"                         # his commanded row's as before
     assert commanded_way("man", (1.7, 0.3), 0.6) == "turned_long"                     # the far row's as before
     assert commanded_way("man", (1.8, 0.0), 0.6) == "long"
-    assert commanded_way("man", (1.75, 0.0), 0.405) is None                           # the far row's shallowest flies 0.41 s
+    assert commanded_way("man", (1.75, 0.0), 0.405) == "far_short"                   # its 0.72 m pair flies 0.38-0.40 s
+    assert commanded_way("man", (1.75, 0.3), 0.405) == "turned_far_short"
+    assert commanded_way("man", (1.75, 0.0), 0.395) is None                           # below the far row's 0.72 m pair
     far, near = short_body(body, "far_short"), short_body(body, "near_short")
     assert far["settings"] == long_body(body)["settings"] and far["crouch_by_air_time"] == body["far_short_crouch_by_air_time"]
     assert far["settings"] != turned_long_body(body)["settings"]     # after the hop too: the landing arms' feedback kept
@@ -759,7 +761,7 @@ def test_the_mans_short_air_times_far_ahead_are_flown_by_his_long_rows_at_their_
     assert not {"far_short_region", "near_short_region", "turned_far_short_region", "turned_near_short_region"} & \
         set(table("woman"))
     turned = body["turned_far_short_region"]
-    refusal = region_refusal("man", (1.75, 0.3), 0.405)
+    refusal = region_refusal("man", (1.75, 0.3), 0.395)
     assert "\n" not in refusal and (f"turned first with short air times far ahead for a distance of "
                                      f"{turned['distance'][0]:g}-{turned['distance'][1]:g} m") in refusal
 
