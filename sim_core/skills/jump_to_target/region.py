@@ -30,7 +30,7 @@ import numpy as np
 from ...ballistics import GRAVITY
 from ...control.leap import LEAP_SETTINGS, load_mapping
 from ...tuned import TableType, load_fresh, register as register_table
-from .commanded import commanded_limit, commanded_offers, flat_equivalent, table
+from .commanded import STRAIGHT_WAYS, commanded_limit, commanded_offers, flat_equivalent, table
 
 LANDING_TOLERANCE = 0.05            # m: TARGETS.md: the landing point within this of the target
 AIR_TIME_TOLERANCE = 0.05           # s: TARGETS.md: the air time within this of the one asked
@@ -244,8 +244,9 @@ def lift_envelope(character: str) -> np.ndarray:
         return cached[2]
     points = [lift_off((*p["measured"]["landing"], surface(p["measured"])), p["measured"]["air_time"])
               for p in balanced(body) if p["measured"]["air_time"] > 0.0]
-    for key, region in (commanded or {}).items():
-        if key.endswith("region") and isinstance(region, dict) and {"target_x", "air_time"} <= region.keys():
+    for key in ("region", *(f"{way}_region" for way in STRAIGHT_WAYS)):     # the flat straight rows' regions
+        region = (commanded or {}).get(key)
+        if region:
             points += [lift_off((x, 0.0), t) for x in region["target_x"] for t in region["air_time"]]
     points.append((0.0, takeoff_capacity(character, "vertical")))
     hull = []
