@@ -164,27 +164,15 @@ def planner_constants(character: str):
 
 
 def _rows(body: dict):
-    if "settings" in body:
-        yield "settings", body["settings"]
-    if "down_settings" in body:
-        yield "down_settings", body["down_settings"]
-    if "long_settings" in body:
-        yield "long_settings", body["long_settings"]
-    if "near_long_settings" in body:
-        yield "near_long_settings", body["near_long_settings"]
-    if "mid_long_settings" in body:
-        yield "mid_long_settings", body["mid_long_settings"]
-    if "turned_long_settings" in body:
-        yield "turned_long_settings", body["turned_long_settings"]
-    if "tucked_onto_settings" in body:
-        yield "tucked_onto_settings", body["tucked_onto_settings"]
-    if "mid_deep_long_settings" in body:
-        yield "mid_deep_long_settings", body["mid_deep_long_settings"]
-    for key in ("crouch_by_air_time", "long_crouch_by_air_time", "near_long_crouch_by_air_time", "mid_long_crouch_by_air_time",
-                "low_down_crouch_by_air_time", "deep_long_crouch_by_air_time", "far_short_crouch_by_air_time",
-                "near_short_crouch_by_air_time", "near_deep_long_crouch_by_air_time", "mid_deep_long_crouch_by_air_time"):
-        for k, height in enumerate(body.get(key, {}).get("crouch_height", [])):
-            yield f"{key} {k}", {"crouch_height": height}
+    """The table's rows of leap settings as the schema checks them: every ``*settings`` section (a row's settings over
+    the table's own) and each crouch height of every ``*crouch_by_air_time`` pairs, then the turn maps and constants."""
+    for key, section in body.items():
+        if key.endswith("settings"):
+            yield key, section
+    for key, pairs in body.items():
+        if key.endswith("crouch_by_air_time"):
+            for k, height in enumerate(pairs.get("crouch_height", [])):
+                yield f"{key} {k}", {"crouch_height": height}
     for k, angle in enumerate(body.get("turn_headings", {}).get("turn_angle", [])):
         yield f"turn_headings {k}", {"turn_angle": angle}
     for k, scale in enumerate(body.get("quarter_lines", {}).get("turn_first", [])):
