@@ -109,7 +109,8 @@ Fig. 6 with his thrust slowed for his strength, tools/scale_commanded.py and doc
   region (the man's far long row onto a box missed where it lands nearer than 1.6 m on flat ground);
   ``target_air_time`` (optional, [low, high] s) bounds the target's own air time (the man's far row onto a box missed
   its aim at the shortest air times, the fastest forward). Onto a box needs
-  T0 = T + 2 h / (g T) >= 0.53 s: only the long row flies it;
+  T0 = T + 2 h / (g T) >= 0.53 s: only the long row flies it; ``<row>_onto_region``, ``<row>_down_region`` (optional)
+  the same for any other straight row (``<row>_region``, STRAIGHT_WAYS), flown by that row (way_body);
 - ``tucked_onto_region`` (optional, with the long row and ``tucked_onto_settings``): the keys of ``long_onto_region`` for a
   box nearer than it, flown by the long row with ``tucked_onto_settings`` over its settings (tucked_onto_body: the arms held
   back in the crouch, ``crouch_arms``: leaning on to a box whose front edge is ~0.4 m ahead of the feet, the hands
@@ -317,7 +318,9 @@ def way_body(body: dict, way: str) -> dict:
     (long_body, near_long_body, mid_long_body, low_down_body, turned_long_body, deep_long_body, short_body,
     near_deep_long_body, mid_deep_long_body; straight ahead a row the table lacks flies as the table's own settings), else
     the table as it is."""
-    if way in ("long", "long_down", "long_onto") and "long_settings" in body:
+    if way.endswith(("_down", "_onto")) and way.rsplit("_", 1)[0] in STRAIGHT_WAYS:
+        way = way.rsplit("_", 1)[0]  # onto or down from a box by a straight row (box_way): flown by that row
+    if way == "long" and "long_settings" in body:
         return long_body(body)      # long air times (onto or down from a box too): the vertical thrust's settings and pairs
     if way == "tucked_onto":
         return tucked_onto_body(body)  # onto a near box: the long row, the arms back in the crouch, the flight tucked
@@ -411,16 +414,17 @@ def box_way(body: dict, target, air_time: float) -> str | None:
     """commanded_way for a target onto a box (z > 0) or down from one (z < 0), straight ahead: its flat equivalent
     (flat_equivalent) in the table's ``region`` with the height and T0 in ``down_region`` or (and the target's own
     forward distance) in ``high_down_region``: "down"; the height, T0 and the target's own forward distance in one of
-    its ``low_down_regions``: "low_down" (low_down_body); in its
-    ``long_region`` with them in ``long_down_region`` / ``long_onto_region``: "long_down" / "long_onto" (the long row,
-    long_body), in ``tucked_onto_region``: "tucked_onto" (tucked_onto_body); else None."""
+    its ``low_down_regions``: "low_down" (low_down_body); in one of its straight rows' regions (``long_region``, ...,
+    STRAIGHT_WAYS) with them in that row's ``<row>_down_region`` / ``<row>_onto_region``: "<row>_down" / "<row>_onto" (flown
+    by that row, way_body; e.g. "long_down" / "long_onto", the long row, long_body), in ``tucked_onto_region``:
+    "tucked_onto" (tucked_onto_body); else None."""
     z, asked = float(target[2]), float(air_time)
     x, air_time = flat_equivalent(target, air_time)
     values = {"target_x": x, "target_y": float(target[1]), "air_time": air_time}
     rows = (("down", "region", body.get("down_region")), ("down", "region", body.get("high_down_region")),
             *(("low_down", None, box) for box in body.get("low_down_regions", ())),
-            ("long_down", "long_region", body.get("long_down_region"))) if z < 0.0 \
-        else (("long_onto", "long_region", body.get("long_onto_region")),
+            *((f"{row}_down", f"{row}_region", body.get(f"{row}_down_region")) for row in STRAIGHT_WAYS)) if z < 0.0 \
+        else (*((f"{row}_onto", f"{row}_region", body.get(f"{row}_onto_region")) for row in STRAIGHT_WAYS),
               ("tucked_onto", "long_region", body.get("tucked_onto_region")))
     def within(box: dict, key: str, value: float) -> bool:       # an optional bound holds when absent
         low, high = box.get(key, (-math.inf, math.inf))
@@ -512,8 +516,10 @@ def commanded_limit(character: str, z: float = 0.0) -> str | None:
                      f"(g air_time); a lower lift-off than its shallowest crouch's is not flown)"))
     parts += [("flat", f"{words} {(_flat if key.removesuffix('_region') in STRAIGHT_WAYS else _turned)(body[key])}")
               for key, words in FLAT_REGION_WORDS if body.get(key)]
-    for key, way, sign in (("long_onto_region", "onto", "+"), ("tucked_onto_region", "onto", "+"),
-                           ("long_down_region", "down from", "-")):
+    boxes = (*((f"{row}_onto_region", "onto", "+", row) for row in STRAIGHT_WAYS), ("tucked_onto_region", "onto", "+", "long"),
+             *((f"{row}_down_region", "down from", "-", row) for row in STRAIGHT_WAYS))
+    for key, way, sign, row in boxes:
         if body.get(key):
-            parts.append(("onto" if sign == "+" else "down", _box(body[key], way, "the long air times' region", sign) + ")"))
+            landing = "the long air times' region" if row == "long" else f"the {row.replace('_', ' ')} row's region"
+            parts.append(("onto" if sign == "+" else "down", _box(body[key], way, landing, sign) + ")"))
     return ", and ".join(text for k, (of, text) in enumerate(parts) if k == 0 or of == kind)
