@@ -314,6 +314,31 @@ def test_a_random_target_down_from_a_box_with_a_low_lift_off_lands_balanced(char
     assert_run_as_planned(result, plan)
 
 
+def test_the_man_down_from_a_box_by_his_near_long_row_is_offered_near_and_refused_beyond_in_one_line():
+    """His near_long_down_region: down from a 0.25-0.45 m box where the same lift-off on flat ground lands in his near
+    long row's region (T0 0.5-0.65 s), the target at most 1.2 m ahead (beyond, the landings fell on the target) and asked
+    in at most 0.655 s (longer, the same: the drop from the flight's peak lands hard); just beyond, refused naming it."""
+    from sim_core.skills.jump_to_target.commanded import commanded_way
+    assert commanded_way("man", (1.1, 0.0, -0.35), 0.65) == "near_long_down"     # T0 0.54 s, flat landing 0.91 m
+    assert commanded_way("man", (1.3, 0.0, -0.35), 0.65) is None                 # beyond 1.2 m: fell on the target
+    assert commanded_way("man", (1.0, 0.0, -0.35), 0.68) is None                 # asked above 0.655 s: fell or missed
+    text = region_refusal("man", (1.3, 0.0, -0.35), 0.65)
+    assert text and "\n" not in text and "down from a box 0.25-0.45 m high at target_x 0.5-1.2 m in air_time 0.4-0.655 s " \
+        "where the same lift-off on flat ground would land in the near long row's region in 0.5-0.65 s" in text
+
+
+@pytest.mark.slow
+def test_a_random_target_of_the_man_down_from_a_box_by_his_near_long_row_lands_balanced():
+    """The first of the report's box draws for the man (seed SEED) in his near_long_down_region, planned with the near
+    long row (the vertical thrust, its lean push 10, the recovery step) and run as a user's request: within 5 cm and
+    0.05 s and balanced, as its plan was."""
+    box = first_commanded_box_draw("man", "near_long_down")
+    result, plan = planned_and_run(box)
+    assert plan["settings"]["vertical_thrust"] == 1.0 and plan["settings"]["lean_push"] == 10.0
+    assert plan["settings"]["commanded_takeoff"] == 1.0
+    assert_run_as_planned(result, plan)
+
+
 def test_a_random_target_onto_a_box_is_flown_by_the_long_row_as_its_plan_was():
     """Onto a box where the same lift-off on flat ground lands in her long air times' region (the table's
     long_onto_region: T0 = T + 2 h / (g T)): the first such draw of the report's box targets, planned commanded
