@@ -474,7 +474,7 @@ def main(argv=None) -> int:
                f"{HEIGHT_REACH * 100:.0f} cm apart, within the tolerances interpolated; or where its commanded take-off's "
                f"box regions hold it - down_region, high_down_region, long_onto_region, long_down_region: the same lift-off on flat ground "
                f"lands in its commanded region or its long air times' region; low_down_regions: a lower lift-off by a shallower "
-               f"crouch; planned as a commanded target): {box_text} of those targets "
+               f"crouch; push_down_regions: lower still, within a forward speed; planned as a commanded target): {box_text} of those targets "
                f"({SHARE_DRAWS} uniform draws). " if box_shares else "")
             + ("Commanded targets (--commanded) are drawn uniformly in the commanded region of each character "
                "that has one (sim_core.skills.jump_to_target.commanded's table: the man's and the woman's) and drawn again until "

@@ -211,12 +211,12 @@ def planned_and_run(draw):
     return result, plan
 
 
-def first_commanded_box_draw(character, way, accept=lambda values: True):
-    """The first of the report's box draws (seed SEED) that ``accept`` takes, planned commanded and flown the
-    commanded table's ``way`` (e.g. "down", "long_onto")."""
+def first_commanded_box_draw(character, way, accept=lambda values: True, count=80):
+    """The first of the report's box draws (seed SEED, the first ``count``) that ``accept`` takes, planned commanded and
+    flown the commanded table's ``way`` (e.g. "down", "long_onto")."""
     from sim_core.skills.jump_to_target.commanded import commanded_way
     from sim_core.skills.jump_to_target.region import mode
-    return next(d for d in draw_requests(SEED, [character], 0, 0, 0, 40) if accept(d.values)
+    return next(d for d in draw_requests(SEED, [character], 0, 0, 0, count) if accept(d.values)
                 and mode(character, (d.values[0], 0.0, d.values[1]), d.values[2]) == "commanded"
                 and commanded_way(character, (d.values[0], 0.0, d.values[1]), d.values[2]) == way)
 
@@ -336,6 +336,42 @@ def test_a_random_target_of_the_man_down_from_a_box_by_his_near_long_row_lands_b
     result, plan = planned_and_run(box)
     assert plan["settings"]["vertical_thrust"] == 1.0 and plan["settings"]["lean_push"] == 10.0
     assert plan["settings"]["commanded_takeoff"] == 1.0
+def test_a_target_down_from_a_box_with_a_lower_lift_off_is_offered_by_its_forward_speed_and_refused_beyond():
+    """The table's push_down_regions: down from a box where the lift-off flies below the shallow crouch's on flat ground
+    (the man's T0 0.1-0.3 s from 0.25-0.75 m boxes, his lean push 10; the woman's T0 0.25-0.28 s from 0.25-0.4 m boxes),
+    bounded by the target's forward speed x / air time (the man's 1.55-2.2 m/s, the woman's 2.0-2.4 m/s: faster his
+    landings fell, slower the aim overshot); the rows before keep their targets; beyond, refused in one line naming it.
+    No simulation."""
+    from sim_core.skills.jump_to_target.commanded import commanded_way, push_down_body, table
+    assert commanded_way("man", (0.85, 0.0, -0.6), 0.45) == "push_down"          # T0 0.18 s at 1.89 m/s
+    assert commanded_way("man", (1.2, 0.0, -0.6), 0.45) is None                   # 2.67 m/s: fell after the drop
+    assert commanded_way("man", (0.6, 0.0, -0.6), 0.45) is None                   # 1.33 m/s: the aim overshot
+    assert commanded_way("man", (0.9, 0.0, -0.6), 0.55) == "low_down"             # T0 0.33 s: the shallow crouch's as before
+    assert commanded_way("woman", (0.9, 0.0, -0.3), 0.42) == "push_down"          # T0 0.27 s at 2.14 m/s
+    assert commanded_way("woman", (0.9, 0.0, -0.4), 0.42) is None                 # T0 0.23 s: half flew long or short
+    assert commanded_way("woman", (1.05, 0.0, -0.45), 0.47) is None               # T0 0.27 s above 0.4 m: the aims fell short
+    assert commanded_way("woman", (1.0, 0.0, -0.5), 0.5) == "low_down"            # T0 0.30 s as before
+    assert push_down_body(table("man"))["settings"]["lean_push"] == 10.0
+    text = region_refusal("man", (1.2, 0.0, -0.6), 0.45)
+    assert text and "\n" not in text and "down from a box 0.25-0.75 m high at a forward speed of 1.55-2.2 m/s " \
+        "(target_x / air_time) where the lift-off would fly 0.1-0.3 s on flat ground" in text
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("character", ["man", "woman"])
+def test_a_random_target_down_from_a_box_with_a_lower_lift_off_lands_balanced(character):
+    """The first of the report's box draws (seed SEED) in the push_down_regions (the woman's is small: the first 200
+    draws), planned with the row's settings and crouch pairs and run as a user's request: within 5 cm and 0.05 s and
+    balanced, as its plan was."""
+    from sim_core.skills.jump_to_target.commanded import flat_equivalent, table
+    box = first_commanded_box_draw(character, "push_down", count=200)
+    x, z, air_time = box.values
+    row, = table(character)["push_down_regions"]
+    assert row["flat_air_time"][0] <= flat_equivalent((x, 0.0, z), air_time)[1] <= row["flat_air_time"][1]
+    assert row["target_speed"][0] <= x / air_time <= row["target_speed"][1]
+    result, plan = planned_and_run(box)
+    assert plan["settings"]["commanded_takeoff"] == 1.0
+    assert plan["settings"].get("lean_push", 0.0) == table(character)["push_down_settings"].get("lean_push", 0.0)
     assert_run_as_planned(result, plan)
 
 

@@ -176,8 +176,11 @@ def main(argv=None) -> int:
                 draws.append(draw)
         # the skill's planner (planning/commanded.py) with these settings and crouch pairs as its table, and
         # --aim / --plan-landing as its bounds
-        body = {"settings": settings, "crouch_by_air_time": (stored["crouch_by_air_time"] if stored and not args.crouch_by_air_time
-                                                             else crouch_pairs(args.crouch_by_air_time, settings)),
+        pairs = (stored["crouch_by_air_time"] if stored and not args.crouch_by_air_time
+                 else crouch_pairs(args.crouch_by_air_time, settings))
+        body = {"settings": settings, "crouch_by_air_time": pairs,
+                # a low lift-off down from a box (low_down_body, push_down_body): the same pairs, --set's settings
+                "low_down_crouch_by_air_time": pairs, "push_down_crouch_by_air_time": pairs, "push_down_settings": {},
                 **({"down_settings": stored["down_settings"]} if stored and "down_settings" in stored else {})}
         constants = SimpleNamespace(**{**vars(CONSTANTS), "aim_trials": args.aim,
                                        "landing_trials": max(args.plan_landing, 1)})

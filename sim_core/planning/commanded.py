@@ -23,7 +23,8 @@ where the flat equivalent lies there (``long_onto_region``, ``long_down_region``
 by commanded.long_body (the leap's vertical thrust and its own crouch pairs); in its ``near_long_region`` beyond both,
 by commanded.near_long_body (the same with the near row's own lean push and crouch pairs). Down from a box with a
 lift-off lower than the table's region flies (``low_down_regions``): the same aim with commanded.low_down_body (its
-crouch pairs with a shallower crouch's).
+crouch pairs with a shallower crouch's); lower still, within a forward speed (``push_down_regions``): with
+commanded.push_down_body (its own settings and crouch pairs).
 
 A target beyond the table's straight region's target_y, in its ``turned_region`` (plan_turned): the
 jump turns first (one hop, the leap's ``turn_angle``) and flies the commanded take-off forward; the aim

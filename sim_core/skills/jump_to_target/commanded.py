@@ -77,6 +77,13 @@ Fig. 6 with his thrust slowed for his strength, tools/scale_commanded.py and doc
   table's settings with its ``down_settings``) with ``low_down_crouch_by_air_time`` as the crouch pairs
   (low_down_body: the table's pairs and a shallower crouch's, whose lift-off flies ~0.3 s on flat ground; a shallower
   one still leaves as fast up, docs/jump_to_target.md "Down from a box with a shallow crouch");
+- ``push_down_regions`` (optional, with ``push_down_settings`` and ``push_down_crouch_by_air_time``): boxes with the keys
+  of ``low_down_regions`` and ``target_speed`` ([low, high] m/s, the target's forward distance over its air time: the
+  lift-off's forward speed) for a jump straight ahead down from a box with a lift-off lower still (T0 below the
+  shallowest crouch's), flown as ``low_down_regions``' with ``push_down_settings`` over the table's settings (the man's
+  lean push 10: the thrust starts earlier in the lean, the body does not pitch off the box's edge) and
+  ``push_down_crouch_by_air_time`` as the crouch pairs (push_down_body); bounded by the forward speed, where the landing
+  after the drop stood (docs/jump_to_target.md "Down from a box with a lower lift-off still");
 - ``deep_long_region``, ``turned_deep_long_region`` (optional, with the long row and ``deep_long_crouch_by_air_time``):
   the same keys as ``long_region`` / ``turned_region`` for the longest air times, flown by the long row as it is (and,
   turned, with ``turned_long_settings``) at its deepest crouches, ``deep_long_crouch_by_air_time`` (deep_long_body): the
@@ -263,6 +270,13 @@ def low_down_body(body: dict) -> dict:
     return {**body, "crouch_by_air_time": body["low_down_crouch_by_air_time"]}
 
 
+def push_down_body(body: dict) -> dict:
+    """The table as a lower lift-off's plan down from a box reads it (``push_down_regions``): ``push_down_settings`` over
+    its settings and ``push_down_crouch_by_air_time`` as the crouch pairs."""
+    return {**body, "settings": {**body["settings"], **body["push_down_settings"]},
+            "crouch_by_air_time": body["push_down_crouch_by_air_time"]}
+
+
 def turned_long_body(body: dict) -> dict:
     """The table as the turned long air times' plan reads it (``turned_long_region``): long_body with
     ``turned_long_settings`` (where the table has them) over its settings."""
@@ -315,7 +329,7 @@ TURNED_WAYS = ("turned", "turned_long", "turned_long_short", "turned_near_long",
 
 def way_body(body: dict, way: str) -> dict:
     """The table as the plan of a request that commanded_way (or box_way) sends ``way`` reads it: the row that flies it
-    (long_body, near_long_body, mid_long_body, low_down_body, turned_long_body, deep_long_body, short_body,
+    (long_body, near_long_body, mid_long_body, low_down_body, push_down_body, turned_long_body, deep_long_body, short_body,
     near_deep_long_body, mid_deep_long_body; straight ahead a row the table lacks flies as the table's own settings), else
     the table as it is."""
     if way.endswith(("_down", "_onto")) and way.rsplit("_", 1)[0] in STRAIGHT_WAYS:
@@ -328,6 +342,8 @@ def way_body(body: dict, way: str) -> dict:
         return near_long_body(body)  # long air times nearer: the same with the near row's own lean push and crouch pairs
     if way == "low_down":
         return low_down_body(body)   # a low lift-off down from a box: the crouch pairs with the shallower crouch's
+    if way == "push_down":
+        return push_down_body(body)  # a lower one still: its own settings (the lean push) and crouch pairs
     if way == "deep_long" and "deep_long_crouch_by_air_time" in body:
         return deep_long_body(body)  # the longest air times: the long row at its deepest crouches
     if way in ("turned_long", "turned_long_short"):
@@ -417,13 +433,15 @@ def box_way(body: dict, target, air_time: float) -> str | None:
     its ``low_down_regions``: "low_down" (low_down_body); in one of its straight rows' regions (``long_region``, ...,
     STRAIGHT_WAYS) with them in that row's ``<row>_down_region`` / ``<row>_onto_region``: "<row>_down" / "<row>_onto" (flown
     by that row, way_body; e.g. "long_down" / "long_onto", the long row, long_body), in ``tucked_onto_region``:
-    "tucked_onto" (tucked_onto_body); else None."""
+    "tucked_onto" (tucked_onto_body); down from a box after all those, the height, T0 and the target's forward speed
+    (x / air time) in one of its ``push_down_regions``: "push_down" (push_down_body); else None."""
     z, asked = float(target[2]), float(air_time)
     x, air_time = flat_equivalent(target, air_time)
     values = {"target_x": x, "target_y": float(target[1]), "air_time": air_time}
     rows = (("down", "region", body.get("down_region")), ("down", "region", body.get("high_down_region")),
             *(("low_down", None, box) for box in body.get("low_down_regions", ())),
-            *((f"{row}_down", f"{row}_region", body.get(f"{row}_down_region")) for row in STRAIGHT_WAYS)) if z < 0.0 \
+            *((f"{row}_down", f"{row}_region", body.get(f"{row}_down_region")) for row in STRAIGHT_WAYS),
+            *(("push_down", None, box) for box in body.get("push_down_regions", ()))) if z < 0.0 \
         else (*((f"{row}_onto", f"{row}_region", body.get(f"{row}_onto_region")) for row in STRAIGHT_WAYS),
               ("tucked_onto", "long_region", body.get("tucked_onto_region")))
     def within(box: dict, key: str, value: float) -> bool:       # an optional bound holds when absent
@@ -435,6 +453,7 @@ def box_way(body: dict, target, air_time: float) -> str | None:
         if (region is not None and box is not None and within(box, "height", abs(z))
                 and within(box, "target_x", float(target[0])) and within(box, "flat_air_time", air_time)
                 and within(box, "flat_target_x", x) and within(box, "target_air_time", float(asked))
+                and within(box, "target_speed", float(target[0]) / float(asked))
                 and all(within(region, k, v) for k, v in values.items())):
             return way
     return None
@@ -514,6 +533,11 @@ def commanded_limit(character: str, z: float = 0.0) -> str | None:
                      f"{box['target_x'][0]:g}-{box['target_x'][1]:g} m where the lift-off would fly "
                      f"{box['flat_air_time'][0]:g}-{box['flat_air_time'][1]:g} s on flat ground (T0 = air_time - 2 height / "
                      f"(g air_time); a lower lift-off than its shallowest crouch's is not flown)"))
+    for box in body.get("push_down_regions", ()):
+        parts.append(("down", f"down from a box {box['height'][0]:g}-{box['height'][1]:g} m high at a forward speed of "
+                     f"{box['target_speed'][0]:g}-{box['target_speed'][1]:g} m/s (target_x / air_time) where the lift-off "
+                     f"would fly {box['flat_air_time'][0]:g}-{box['flat_air_time'][1]:g} s on flat ground (the lean push's "
+                     f"low lift-off; faster forward its landing fell)"))
     parts += [("flat", f"{words} {(_flat if key.removesuffix('_region') in STRAIGHT_WAYS else _turned)(body[key])}")
               for key, words in FLAT_REGION_WORDS if body.get(key)]
     boxes = (*((f"{row}_onto_region", "onto", "+", row) for row in STRAIGHT_WAYS), ("tucked_onto_region", "onto", "+", "long"),
