@@ -242,20 +242,25 @@ def commanded_settings(body: dict, air_time: float, aim: float, height: float = 
             "crouch_height": float(np.interp(air_time, pairs["air_time"], pairs["crouch_height"]))}
 
 
+def over(under: dict, body: dict, settings: str | None = None, pairs: str | None = None) -> dict:
+    """A row of the table ``body`` as its plan reads it: the table ``under`` (the row it stands on: the table itself, or
+    another row) with ``body``'s ``settings`` section over its settings and ``body``'s ``pairs`` as its crouch pairs
+    (commanded_settings); each optional (None: ``under``'s kept)."""
+    return {**under, **({"settings": {**under["settings"], **body[settings]}} if settings else {}),
+            **({"crouch_by_air_time": body[pairs]} if pairs else {})}
+
+
 def long_body(body: dict) -> dict:
     """The table as the long air times' plan reads it (``long_region``): its ``settings`` with ``long_settings``
     over them and ``long_crouch_by_air_time`` as the crouch pairs (commanded_settings)."""
-    return {**body, "settings": {**body["settings"], **body["long_settings"]},
-            "crouch_by_air_time": body["long_crouch_by_air_time"]}
+    return over(body, body, "long_settings", "long_crouch_by_air_time")
 
 
 def near_long_body(body: dict, row: str = "near_long") -> dict:
     """The table as the near long air times' plan reads it (``near_long_region``): long_body with
     ``near_long_settings`` over its settings and ``near_long_crouch_by_air_time`` as the crouch pairs
     (``row`` "mid_long": the mid long row's ``mid_long_settings`` and ``mid_long_crouch_by_air_time``)."""
-    long = long_body(body)
-    return {**long, "settings": {**long["settings"], **body[f"{row}_settings"]},
-            "crouch_by_air_time": body[f"{row}_crouch_by_air_time"]}
+    return over(long_body(body), body, f"{row}_settings", f"{row}_crouch_by_air_time")
 
 
 def mid_long_body(body: dict) -> dict:
@@ -267,35 +272,31 @@ def mid_long_body(body: dict) -> dict:
 def low_down_body(body: dict) -> dict:
     """The table as a low lift-off's plan down from a box reads it (``low_down_regions``): its
     ``low_down_crouch_by_air_time`` as the crouch pairs."""
-    return {**body, "crouch_by_air_time": body["low_down_crouch_by_air_time"]}
+    return over(body, body, pairs="low_down_crouch_by_air_time")
 
 
 def push_down_body(body: dict) -> dict:
     """The table as a lower lift-off's plan down from a box reads it (``push_down_regions``): ``push_down_settings`` over
     its settings and ``push_down_crouch_by_air_time`` as the crouch pairs."""
-    return {**body, "settings": {**body["settings"], **body["push_down_settings"]},
-            "crouch_by_air_time": body["push_down_crouch_by_air_time"]}
+    return over(body, body, "push_down_settings", "push_down_crouch_by_air_time")
 
 
 def turned_long_body(body: dict) -> dict:
     """The table as the turned long air times' plan reads it (``turned_long_region``): long_body with
     ``turned_long_settings`` (where the table has them) over its settings."""
-    long = long_body(body)
-    return {**long, "settings": {**long["settings"], **body.get("turned_long_settings", {})}}
+    return over(long_body(body), body, "turned_long_settings" if "turned_long_settings" in body else None)
 
 
 def deep_long_body(body: dict, turned: bool = False) -> dict:
     """The table as the deep long air times' plan reads it (``deep_long_region``; ``turned``: ``turned_deep_long_region``):
     long_body (turned: turned_long_body) with ``deep_long_crouch_by_air_time`` as the crouch pairs."""
-    return {**(turned_long_body(body) if turned else long_body(body)),
-            "crouch_by_air_time": body["deep_long_crouch_by_air_time"]}
+    return over(turned_long_body(body) if turned else long_body(body), body, pairs="deep_long_crouch_by_air_time")
 
 
 def tucked_onto_body(body: dict) -> dict:
     """The table as a near box's plan reads it (``tucked_onto_region``): long_body with ``tucked_onto_settings`` over its
     settings."""
-    long = long_body(body)
-    return {**long, "settings": {**long["settings"], **body["tucked_onto_settings"]}}
+    return over(long_body(body), body, "tucked_onto_settings")
 
 
 def short_body(body: dict, row: str) -> dict:
@@ -303,14 +304,13 @@ def short_body(body: dict, row: str) -> dict:
     ``far_short_region`` and ``turned_far_short_region``, long_body - after the hop too: the landing arms' pitch feedback
     kept, without it the man fell on the target at 0.42-0.45 s; "near_short": ``near_short_region`` and
     ``turned_near_short_region``, near_long_body) with the row's ``<row>_crouch_by_air_time`` as the crouch pairs."""
-    rows = long_body(body) if row == "far_short" else near_long_body(body)
-    return {**rows, "crouch_by_air_time": body[f"{row}_crouch_by_air_time"]}
+    return over(long_body(body) if row == "far_short" else near_long_body(body), body, pairs=f"{row}_crouch_by_air_time")
 
 
 def near_deep_long_body(body: dict) -> dict:
     """The table as the near deep long air times' plan reads it (``near_deep_long_region``, and after the hop
     ``turned_near_deep_long_region``): near_long_body with ``near_deep_long_crouch_by_air_time`` as the crouch pairs."""
-    return {**near_long_body(body), "crouch_by_air_time": body["near_deep_long_crouch_by_air_time"]}
+    return over(near_long_body(body), body, pairs="near_deep_long_crouch_by_air_time")
 
 
 def mid_deep_long_body(body: dict) -> dict:
