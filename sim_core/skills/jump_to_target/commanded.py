@@ -495,6 +495,16 @@ def _box(region: dict, way: str, landing: str, sign: str) -> str:
               f"{region['flat_air_time'][0]:g}-{region['flat_air_time'][1]:g} s (T0 = air_time {sign} 2 height / (g air_time)")
 
 
+def _low_box(box: dict, why: str) -> str:
+    """A low lift-off's box down from it (``low_down_regions``, ``push_down_regions``: height, flat_air_time and an
+    optional target_x and target_speed) in words, ``why`` in brackets at the end."""
+    return (f"down from a box {box['height'][0]:g}-{box['height'][1]:g} m high"
+            + (f" at target_x {box['target_x'][0]:g}-{box['target_x'][1]:g} m" if "target_x" in box else "")
+            + (f" at a forward speed of {box['target_speed'][0]:g}-{box['target_speed'][1]:g} m/s (target_x / air_time)"
+               if "target_speed" in box else "")
+            + f" where the lift-off would fly {box['flat_air_time'][0]:g}-{box['flat_air_time'][1]:g} s on flat ground ({why})")
+
+
 FLAT_REGION_WORDS = (       # commanded_limit's words for each region on flat ground beyond ``region``, in its order
     ("turned_region", "turned first"),
     ("sideways_region", "turned a quarter first"),
@@ -528,16 +538,10 @@ def commanded_limit(character: str, z: float = 0.0) -> str | None:
     for key in ("down_region", "high_down_region"):
         if body.get(key):
             parts.append(("down", _box(body[key], "down from", "that region", "-") + ", at target_x T0 / air_time)"))
-    for box in body.get("low_down_regions", ()):
-        parts.append(("down", f"down from a box {box['height'][0]:g}-{box['height'][1]:g} m high at target_x "
-                     f"{box['target_x'][0]:g}-{box['target_x'][1]:g} m where the lift-off would fly "
-                     f"{box['flat_air_time'][0]:g}-{box['flat_air_time'][1]:g} s on flat ground (T0 = air_time - 2 height / "
-                     f"(g air_time); a lower lift-off than its shallowest crouch's is not flown)"))
-    for box in body.get("push_down_regions", ()):
-        parts.append(("down", f"down from a box {box['height'][0]:g}-{box['height'][1]:g} m high at a forward speed of "
-                     f"{box['target_speed'][0]:g}-{box['target_speed'][1]:g} m/s (target_x / air_time) where the lift-off "
-                     f"would fly {box['flat_air_time'][0]:g}-{box['flat_air_time'][1]:g} s on flat ground (the lean push's "
-                     f"low lift-off; faster forward its landing fell)"))
+    for key, why in (("low_down_regions", "T0 = air_time - 2 height / (g air_time); a lower lift-off than its shallowest "
+                                          "crouch's is not flown"),
+                     ("push_down_regions", "the lean push's low lift-off; faster forward its landing fell")):
+        parts += [("down", _low_box(box, why)) for box in body.get(key, ())]
     parts += [("flat", f"{words} {(_flat if key.removesuffix('_region') in STRAIGHT_WAYS else _turned)(body[key])}")
               for key, words in FLAT_REGION_WORDS if body.get(key)]
     boxes = (*((f"{row}_onto_region", "onto", "+", row) for row in STRAIGHT_WAYS), ("tucked_onto_region", "onto", "+", "long"),
