@@ -233,7 +233,11 @@ def cmd_skill_part(args) -> int:
     else:
         module = skill_module(args.skill, args.part)
     sys.argv = [f"python -m sim_core {args.part} {args.skill}", *args.options]     # its usage line names it so
-    return module.main(args.options) or 0
+    if args.part != "calibrate":
+        return module.main(args.options) or 0
+    from .skills.jump_to_target.behaviour import shipped_plans_only
+    with shipped_plans_only():      # a calibration writes the shipped tables and docs: the user's plans set aside
+        return module.main(args.options) or 0
 
 
 def cmd_character(args) -> int:

@@ -18,7 +18,6 @@ from __future__ import annotations
 
 import argparse
 import math
-import os
 import statistics
 import tempfile
 import time
@@ -301,20 +300,14 @@ def box_region_share(character: str, seed: int, draws: int = SHARE_DRAWS) -> tup
 def evaluate(draw: Draw, budget: int, store: str) -> dict:
     """Run one request as a user's would and judge it by TARGETS.md; a module-level function so a
     process pool can run it. ``store``: the plan store a jump is planned into."""
-    from .skills.jump_to_target.behaviour import PLAN_STORE_VARIABLE
-    before = os.environ.get(PLAN_STORE_VARIABLE)
-    os.environ[PLAN_STORE_VARIABLE] = store           # the plans go to the report's store, not the user's
+    from .skills.jump_to_target.behaviour import plan_store_at
     began = time.perf_counter()
     result = {"draw": draw}
-    try:
-        result.update(_jump(draw, budget) if draw.skill in JUMP_SKILLS else _leap(draw))
-    except ParameterError as exc:
-        result.update(refused=str(exc), passed=False)
-    finally:
-        if before is None:
-            os.environ.pop(PLAN_STORE_VARIABLE)
-        else:
-            os.environ[PLAN_STORE_VARIABLE] = before
+    with plan_store_at(store):              # the plans go to the report's store, not the user's
+        try:
+            result.update(_jump(draw, budget) if draw.skill in JUMP_SKILLS else _leap(draw))
+        except ParameterError as exc:
+            result.update(refused=str(exc), passed=False)
     result["seconds"] = time.perf_counter() - began
     return result
 

@@ -126,6 +126,26 @@ def test_a_plan_in_the_user_store_is_found_by_the_behaviour(monkeypatch):
     assert stored_plan("man", request)["settings"] == plan["settings"]
 
 
+def test_a_calibration_sets_the_user_store_aside(monkeypatch):
+    """A user's plan is not seen while ``python -m sim_core calibrate SKILL`` runs (its tables and docs are
+    the shipped ones on every machine), and is seen again after."""
+    import types
+    from sim_core import cli, skills
+    from sim_core.skills.jump_to_target.behaviour import read_plans, stored_plans, user_plans_path
+    shipped = read_plans("man")
+    user = {**shipped[0], "request": {**shipped[0]["request"], "target_x": 1.234}}
+    user_plans_path("man").parent.mkdir(parents=True, exist_ok=True)
+    table = json.loads((ROOT / "sim_core/tuned/tables/jump_targets_man.json").read_text())
+    user_plans_path("man").write_text(json.dumps({**table, "plans": [user]}))
+    assert len(stored_plans("man")) == len(shipped) + 1
+    seen = []
+    calibration = types.SimpleNamespace(main=lambda options: seen.append(len(stored_plans("man"))))
+    monkeypatch.setattr(skills, "skill_module", lambda skill, part: calibration)
+    assert cli.main(["calibrate", "jump_to_target", "--report-only"]) == 0
+    assert seen == [len(shipped)]
+    assert len(stored_plans("man")) == len(shipped) + 1
+
+
 def test_cancel_mid_plan_raises_within_a_second_and_writes_nothing():
     """A cancelled() that turns true 1.2 s into the plan (the second or third trial): Cancelled,
     within a second, and no plan file."""

@@ -21,9 +21,11 @@ on the way (Ooi's box -> over a second box -> ground; see ``scene_for``).
 """
 from __future__ import annotations
 
+import contextlib
 import dataclasses
 import math
 import os
+import tempfile
 from pathlib import Path
 
 import numpy as np
@@ -311,6 +313,29 @@ def plan_store_dir() -> Path:
         return Path(os.environ[PLAN_STORE_VARIABLE]).expanduser()
     cache = os.environ.get("XDG_CACHE_HOME") or Path.home() / ".cache"
     return Path(cache) / "sim_athletics" / "plans"
+
+
+@contextlib.contextmanager
+def plan_store_at(directory):
+    """The plan store is ``directory`` while the block runs ($SIM_ATHLETICS_PLANS set, restored after;
+    worker processes started inside inherit it)."""
+    before = os.environ.get(PLAN_STORE_VARIABLE)
+    os.environ[PLAN_STORE_VARIABLE] = str(directory)
+    try:
+        yield
+    finally:
+        if before is None:
+            os.environ.pop(PLAN_STORE_VARIABLE, None)
+        else:
+            os.environ[PLAN_STORE_VARIABLE] = before
+
+
+@contextlib.contextmanager
+def shipped_plans_only():
+    """The user's plan store set aside (an empty temporary one) while the block runs: what a
+    calibration plans, remeasures and reports are the shipped tables, the same on every machine."""
+    with tempfile.TemporaryDirectory(prefix="sim_athletics_no_plans_") as empty, plan_store_at(empty):
+        yield
 
 
 def user_plans_path(character: str) -> Path:
