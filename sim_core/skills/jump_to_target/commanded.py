@@ -332,6 +332,8 @@ def way_body(body: dict, way: str) -> dict:
     (long_body, near_long_body, mid_long_body, low_down_body, push_down_body, turned_long_body, deep_long_body, short_body,
     near_deep_long_body, mid_deep_long_body; straight ahead a row the table lacks flies as the table's own settings), else
     the table as it is."""
+    if way.endswith("_onto") and f"{way}_settings" in body and way.rsplit("_", 1)[0] in STRAIGHT_WAYS:
+        return over(way_body(body, way.rsplit("_", 1)[0]), body, f"{way}_settings")    # that row, its box settings over it
     if way.endswith(("_down", "_onto")) and way.rsplit("_", 1)[0] in STRAIGHT_WAYS:
         way = way.rsplit("_", 1)[0]  # onto or down from a box by a straight row (box_way): flown by that row
     if way == "long" and "long_settings" in body:
