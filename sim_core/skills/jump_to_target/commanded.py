@@ -117,7 +117,10 @@ Fig. 6 with his thrust slowed for his strength, tools/scale_commanded.py and doc
   ``target_air_time`` (optional, [low, high] s) bounds the target's own air time (the man's far row onto a box missed
   its aim at the shortest air times, the fastest forward). Onto a box needs
   T0 = T + 2 h / (g T) >= 0.53 s: only the long row flies it; ``<row>_onto_region``, ``<row>_down_region`` (optional)
-  the same for any other straight row (``<row>_region``, STRAIGHT_WAYS), flown by that row (way_body);
+  the same for any other straight row (``<row>_region``, STRAIGHT_WAYS), flown by that row (way_body); with
+  ``<row>_onto_settings`` (optional) over that row's settings onto a box (the man's deep rows: the arms held back in
+  their deepest crouches, whose hands touched the box before the lift-off; docs/jump_to_target.md "The man onto boxes by
+  his near and deep long rows");
 - ``tucked_onto_region`` (optional, with the long row and ``tucked_onto_settings``): the keys of ``long_onto_region`` for a
   box nearer than it, flown by the long row with ``tucked_onto_settings`` over its settings (tucked_onto_body: the arms held
   back in the crouch, ``crouch_arms``: leaning on to a box whose front edge is ~0.4 m ahead of the feet, the hands
