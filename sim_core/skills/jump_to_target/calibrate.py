@@ -2243,7 +2243,7 @@ In the kept regions 71 / 72 (99 %) over seeds 803-809 (808-809 with every row in
 0.62-0.65 s, is the near row's, `STRAIGHT_WAYS`' order). As a user's box requests (`python -m sim_core report random
 --seed 821 --jumps 0 --leaps 0 --broad 0 --boxes 20 --characters man --budget 24 --workers 1`): fresh seed 821 **17 / 20**,
 onto **8 / 8**; the three misses down from 0.34-0.39 m boxes (two flown 0.07 s short, one 28 cm long), rows not changed
-here. A target outside is refused in one line (`commanded_limit`: "... and onto a box 0.25-0.5 m high at target_x
+here; fresh seed 823 **19 / 20**, onto **2 / 2** (both by the near rows; the miss down from a 0.404 m box, 6.1 cm off). A target outside is refused in one line (`commanded_limit`: "... and onto a box 0.25-0.5 m high at target_x
 0.78-1.3 m where the same lift-off on flat ground would land in the near long row's region in 0.52-0.65 s (T0 = air_time
 + 2 height / (g air_time)), and onto a box 0.25-0.5 m high in air_time 0.48-0.7 s where the same lift-off on flat ground
 would land in the deep long row's region in 0.635-0.69 s ..."). His share of issue 29's box targets (seed 29): 17.4 % ->
