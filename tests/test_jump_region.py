@@ -389,7 +389,7 @@ def test_a_random_target_onto_a_box_is_flown_by_the_long_row_as_its_plan_was():
     assert commanded_way("woman", (0.9, 0.0, 0.3), 0.45) is None                 # 0.85-0.92 m: the long row's near edge missed
     text = region_refusal("woman", (0.9, 0.0, 0.3), 0.45)
     assert text and "\n" not in text and "onto a box 0.25-0.5 m high at target_x 0.92-1.6 m" in text
-    assert commanded_way("man", (1.0, 0.0, 0.35), 0.5) is None                    # his flat equivalent 1.28 m: short of his long row
+    assert commanded_way("man", (1.0, 0.0, 0.35), 0.5) == "near_long_onto"        # his flat equivalent 1.28 m: short of his long row, his near row's
     box = first_commanded_box_draw("woman", "long_onto")
     result, plan = planned_and_run(box)
     assert plan["settings"]["vertical_thrust"] == 1.0 and plan["settings"]["commanded_takeoff"] == 1.0
@@ -414,6 +414,44 @@ def test_a_random_target_of_the_man_onto_a_box_is_flown_by_his_far_long_row():
     box = first_commanded_box_draw("man", "long_onto")
     result, plan = planned_and_run(box)
     assert plan["settings"]["vertical_thrust"] == 1.0 and plan["settings"]["lean_push"] == 3.0
+    assert_run_as_planned(result, plan)
+
+
+MAN_ONTO_ROWS = ("near_long_onto", "near_deep_long_onto", "deep_long_onto", "mid_deep_long_onto")
+
+
+def test_the_man_onto_a_box_by_his_near_and_deep_rows_and_beyond_them_refused():
+    """His `<row>_onto_region`s for his near, near deep, deep and mid deep long rows (0.25-0.5 m boxes): each a target's
+    way by its flat equivalent, with the row's `<row>_onto_settings` over the row (the arms held back in the crouch: in
+    the deep crouches the hands touched the box; the near rows also tucked, the thrust's COM behind the feet); a target
+    outside refused in one line naming the rows (no simulation)."""
+    from sim_core.skills.jump_to_target.commanded import commanded_way, table, way_body
+    assert commanded_way("man", (0.85, 0.0, 0.35), 0.5) == "near_long_onto"       # T0 0.64 s, flat landing 1.09 m
+    assert commanded_way("man", (0.85, 0.0, 0.4), 0.5) == "near_deep_long_onto"   # T0 0.66 s, flat landing 1.12 m
+    assert commanded_way("man", (1.0, 0.0, 0.45), 0.52) == "mid_deep_long_onto"   # T0 0.70 s, flat landing 1.34 m
+    assert commanded_way("man", (1.25, 0.0, 0.4), 0.52) == "deep_long_onto"       # T0 0.68 s, flat landing 1.64 m
+    assert commanded_way("man", (0.72, 0.0, 0.35), 0.5) is None                   # nearer than 0.78 m: landed long or fell
+    assert commanded_way("man", (1.0, 0.0, 0.45), 0.46) is None                   # asked in under 0.48 s: flown long
+    assert commanded_way("man", (1.0, 0.0, 0.55), 0.52) is None                   # higher than measured (and T0 0.74 s)
+    body = table("man")
+    for way in MAN_ONTO_ROWS:
+        assert way_body(body, way)["settings"]["crouch_arms"] == -0.8
+    assert way_body(body, "near_long_onto")["settings"]["lean_push"] == body["near_long_settings"]["lean_push"]
+    text = region_refusal("man", (0.72, 0.0, 0.35), 0.5)
+    assert text and "\n" not in text and ("onto a box 0.25-0.5 m high at target_x 0.78-1.3 m where the same lift-off on "
+                                           "flat ground would land in the near long row's region in 0.52-0.65 s") in text
+    assert "onto a box 0.25-0.5 m high in air_time 0.48-0.7 s where the same lift-off on flat ground would land in the " \
+        "deep long row's region in 0.635-0.69 s" in text
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("way", MAN_ONTO_ROWS)
+def test_a_random_target_of_the_man_onto_a_box_by_his_near_and_deep_rows_lands_as_planned(way):
+    """The first of the report's box draws (seed SEED) in each of those rows, planned with that row and its onto settings
+    and run as a user's request: within the tolerances, balanced, as its plan's trial landed."""
+    box = first_commanded_box_draw("man", way, count=400)
+    result, plan = planned_and_run(box)
+    assert plan["settings"]["commanded_takeoff"] == 1.0 and plan["settings"]["crouch_arms"] == -0.8
     assert_run_as_planned(result, plan)
 
 
@@ -627,7 +665,7 @@ def test_the_mans_near_long_air_times_are_flown_by_the_near_long_row_and_land_ba
     assert commanded_way("man", (0.9, 0.0), 0.45) == "straight"                      # his commanded row first
     assert commanded_way("man", (1.7, 0.0), 0.6) == "long"
     assert commanded_way("man", (0.9, 0.0), near["air_time"][1] + 0.08) is None     # beyond the deep row too
-    assert commanded_way("man", (0.9, 0.0, 0.28), 0.47) is None     # onto a box by the near row: measured 25 / 30, not offered
+    assert commanded_way("man", (0.9, 0.0, 0.28), 0.47) == "near_long_onto"     # onto a box by the near row, arms back, tucked
     refusal = region_refusal("man", (0.9, 0.0), near["air_time"][1] + 0.08)
     assert "\n" not in refusal and (
         f"for long air times nearer (the vertical thrust with its own lean push) for target_x {near['target_x'][0]:g}-"

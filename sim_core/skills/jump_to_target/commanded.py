@@ -117,7 +117,10 @@ Fig. 6 with his thrust slowed for his strength, tools/scale_commanded.py and doc
   ``target_air_time`` (optional, [low, high] s) bounds the target's own air time (the man's far row onto a box missed
   its aim at the shortest air times, the fastest forward). Onto a box needs
   T0 = T + 2 h / (g T) >= 0.53 s: only the long row flies it; ``<row>_onto_region``, ``<row>_down_region`` (optional)
-  the same for any other straight row (``<row>_region``, STRAIGHT_WAYS), flown by that row (way_body);
+  the same for any other straight row (``<row>_region``, STRAIGHT_WAYS), flown by that row (way_body); with
+  ``<row>_onto_settings`` (optional) over that row's settings onto a box (the man's deep rows: the arms held back in
+  their deepest crouches, whose hands touched the box before the lift-off; docs/jump_to_target.md "The man onto boxes by
+  his near and deep long rows");
 - ``tucked_onto_region`` (optional, with the long row and ``tucked_onto_settings``): the keys of ``long_onto_region`` for a
   box nearer than it, flown by the long row with ``tucked_onto_settings`` over its settings (tucked_onto_body: the arms held
   back in the crouch, ``crouch_arms``: leaning on to a box whose front edge is ~0.4 m ahead of the feet, the hands
@@ -332,6 +335,8 @@ def way_body(body: dict, way: str) -> dict:
     (long_body, near_long_body, mid_long_body, low_down_body, push_down_body, turned_long_body, deep_long_body, short_body,
     near_deep_long_body, mid_deep_long_body; straight ahead a row the table lacks flies as the table's own settings), else
     the table as it is."""
+    if way.endswith("_onto") and f"{way}_settings" in body and way.rsplit("_", 1)[0] in STRAIGHT_WAYS:
+        return over(way_body(body, way.rsplit("_", 1)[0]), body, f"{way}_settings")    # that row, its box settings over it
     if way.endswith(("_down", "_onto")) and way.rsplit("_", 1)[0] in STRAIGHT_WAYS:
         way = way.rsplit("_", 1)[0]  # onto or down from a box by a straight row (box_way): flown by that row
     if way == "long" and "long_settings" in body:
