@@ -135,7 +135,7 @@ def test_random_targets_in_the_commanded_region_are_planned_commanded_and_land_b
     results, lines, plans, c = all_planned_and_run(character, draws, tmp_path)
     assert len(plans) == COMMANDED_TARGETS
     assert all(p["settings"]["commanded_takeoff"] == 1.0 and "flight_target_x" in p["settings"] for p in plans)
-    assert all(p["trials"] <= c.aim_trials + c.landing_trials - 1 for p in plans)
+    assert all(p["trials"] <= c.aim_trials + c.landing_trials - 1 + len(c.landing_leads) for p in plans)
     assert sum(r["passed"] for r in results) >= COMMANDED_TARGETS - 1, "\n".join(lines)
     assert max(r["seconds"] for r in results) <= 60, "\n".join(lines)
 
@@ -195,7 +195,7 @@ def turned_row_planned_and_run(way: str, count: int, store):
                and not offered("man", d.values[:2], d.values[2]) for d in draws)
     results, lines, plans, c = all_planned_and_run("man", draws, store)
     assert all(p["settings"]["vertical_thrust"] == 1.0 and p["settings"]["turn_angle"] != 0.0 for p in plans)
-    assert all(p["trials"] <= c.turn_aim_trials + c.landing_trials - 1 for p in plans)
+    assert all(p["trials"] <= c.turn_aim_trials + c.landing_trials - 1 + len(c.landing_leads) for p in plans)
     assert sum(r["passed"] for r in results) >= count - 1, "\n".join(lines)
     assert max(r["seconds"] for r in results) <= 60, "\n".join(lines)
     return draws, plans
@@ -475,7 +475,7 @@ def test_random_lateral_targets_turn_first_and_land_balanced(character, tmp_path
     assert all(commanded_way(character, d.values[:2], d.values[2]) == "turned" for d in draws)
     results, lines, plans, c = all_planned_and_run(character, draws, tmp_path)
     assert len(plans) == TURNED_TARGETS and all(p["settings"]["turn_angle"] != 0.0 for p in plans)
-    assert all(p["trials"] <= c.turn_aim_trials + c.landing_trials - 1 for p in plans)
+    assert all(p["trials"] <= c.turn_aim_trials + c.landing_trials - 1 + len(c.landing_leads) for p in plans)
     assert sum(r["passed"] for r in results) >= TURNED_TARGETS - 1, "\n".join(lines)
     assert max(r["seconds"] for r in results) <= 60, "\n".join(lines)
 
@@ -608,7 +608,7 @@ def test_random_long_air_times_are_flown_by_the_vertical_thrust_and_land_balance
     results, lines, plans, c = all_planned_and_run(character, draws, tmp_path)
     assert len(plans) == LONG_TARGETS
     assert all(p["settings"]["vertical_thrust"] == 1.0 and p["settings"]["commanded_takeoff"] == 1.0 for p in plans)
-    assert all(p["trials"] <= c.aim_trials + c.landing_trials - 1 for p in plans)
+    assert all(p["trials"] <= c.aim_trials + c.landing_trials - 1 + len(c.landing_leads) for p in plans)
     assert sum(r["passed"] for r in results) >= LONG_TARGETS - 1, "\n".join(lines)
     assert max(r["seconds"] for r in results) <= 60, "\n".join(lines)
 
@@ -644,6 +644,44 @@ def test_the_mans_near_long_air_times_are_flown_by_the_near_long_row_and_land_ba
     assert result["passed"], result_line(result)
 
 
+def test_a_jump_that_fell_at_every_placement_is_tried_with_the_feet_led_later_and_only_then():
+    """The landing from the arriving state (planning/commanded.py landed_plan): the nearest jump that landed on the
+    target and fell is tried with its feet placed a landing step more and less (landing_trials) and, only where every
+    placement fell, with its landing_foot_lead_time moved by each of the table's landing_leads in turn
+    (docs/jump_to_target.md, "The woman's turned long row from 0.52 s again"). A stand-in trial, no simulation."""
+    from sim_core.planning.commanded import landed_plan
+    from sim_core.planning.trials import Trials
+    from sim_core.skills.jump_to_target.commanded import planner_constants, table
+    c = planner_constants("woman")
+    assert c.landing_leads and all(lead < 0.0 for lead in c.landing_leads)
+    assert planner_constants("man").landing_leads
+    lead = table("woman")["settings"]["landing_foot_lead_time"]
+    base = {**table("woman")["settings"], "commanded_takeoff": 1.0, "flight_target_x": 1.0, "crouch_height": 0.6}
+    judge = lambda m: (True, m["outcome"] == "success")             # every trial on the target; standing is all
+
+    def planned(stands):
+        ran = []
+
+        def trial(settings):
+            ran.append(settings)
+            return 0.01 * len(ran), {"outcome": "success" if stands(settings) else "fell", "landing": (1.0, 0.0),
+                                     "air_time": 0.55}
+        trials = Trials(trial, 40)
+        trials.run(base)
+        return landed_plan("woman", trials, 40, judge, c), ran
+
+    plan, ran = planned(lambda s: s["landing_foot_lead_time"] == lead + c.landing_leads[-1])
+    assert plan["found"] and len(ran) == c.landing_trials + len(c.landing_leads)
+    assert all(s["landing_foot_lead_time"] == lead for s in ran[:c.landing_trials])        # the placements first
+    assert len({s["foot_delta"] for s in ran[:c.landing_trials]}) == c.landing_trials
+    assert [s["landing_foot_lead_time"] - lead for s in ran[c.landing_trials:]] == pytest.approx(list(c.landing_leads))
+    assert all(s["foot_delta"] == base["foot_delta"] for s in ran[c.landing_trials:])
+    plan, ran = planned(lambda s: s["foot_delta"] != base["foot_delta"])    # a placement stands: no lead is tried
+    assert plan["found"] and len(ran) == 2 and ran[-1]["landing_foot_lead_time"] == lead
+    plan, ran = planned(lambda s: False)                                    # none stands: the placements and leads
+    assert not plan["found"] and len(ran) == c.landing_trials + len(c.landing_leads)
+
+
 TURNED_LONG_TARGETS = 3     # random targets in a character's turned long air times' region, outside its measured jumps'
 
 
@@ -671,7 +709,7 @@ def test_random_lateral_targets_at_long_air_times_turn_first_and_fly_the_long_ro
     results, lines, plans, c = all_planned_and_run(character, draws, tmp_path)
     assert len(plans) == TURNED_LONG_TARGETS
     assert all(p["settings"]["vertical_thrust"] == 1.0 and p["settings"]["turn_angle"] != 0.0 for p in plans)
-    assert all(p["trials"] <= c.turn_aim_trials + c.landing_trials - 1 for p in plans)
+    assert all(p["trials"] <= c.turn_aim_trials + c.landing_trials - 1 + len(c.landing_leads) for p in plans)
     assert sum(r["passed"] for r in results) >= TURNED_LONG_TARGETS - 1, "\n".join(lines)
     assert max(r["seconds"] for r in results) <= 60, "\n".join(lines)
 
@@ -782,7 +820,7 @@ def test_random_targets_of_the_mans_mid_long_row_land_balanced(tmp_path):
     push = table("man")["mid_long_settings"]["lean_push"]
     assert all(p["settings"]["vertical_thrust"] == 1.0 and p["settings"]["lean_push"] == push
                and p["settings"]["turn_angle"] != 0.0 for p in plans)
-    assert all(p["trials"] <= c.turn_aim_trials + c.landing_trials - 1 for p in plans)
+    assert all(p["trials"] <= c.turn_aim_trials + c.landing_trials - 1 + len(c.landing_leads) for p in plans)
     assert sum(r["passed"] for r in results) >= MID_LONG_TARGETS - 1, "\n".join(lines)
     assert max(r["seconds"] for r in results) <= 60, "\n".join(lines)
 
