@@ -2202,8 +2202,8 @@ issue 29's box: the man 82.3 % -> 83.9 %, the woman 71.2 % -> 82.4 %.** The last
 after the hop seemed not to settle (the woman 0.52-0.57 s 14 / 19, "aims 5-7 cm off after 13 jumps"; more aimed jumps,
 17, fixed 2 of 6). Traced trial by trial first (a scratch script running `random_requests.evaluate` as the report does,
 budget 24, printing each jump's hop, aim, crouch, foot placement, landing, air time and outcome; her row widened to
-0.52 s in the worktree's table): seven misses of seeds 2901, 2941 and 3001 (five of the row at 0.535-0.563 s, two of
-`turned_long_short_region` at 0.493-0.502 s) and one more at 0.458 s. Five of the seven had landed **on the target and
+0.52 s in the worktree's table): seven misses of seeds 29, 2901, 2941 and 3001 (four of the row at 0.535-0.563 s, two of
+`turned_long_short_region` at 0.493-0.502 s, one at 0.458 s). Five of the seven had landed **on the target and
 fallen**: (0.930, -0.575) m in 0.535 s 2.6 cm off at its second jump and 0.0 cm at its ninth, fallen, its placements
 fallen or standing 5.6 cm off; (1.090, +0.509) m in 0.537 s every jump from the eighth 1.2-3.6 cm off and fallen, all nine
 placements; (1.499, -0.025) m in 0.541 s 2.4 cm off at the thirteenth, fallen; (1.287, -0.319) m and (1.422, +0.078) m the
@@ -2227,9 +2227,10 @@ budget 24): seed 2971 **20 / 20** (one found by a lead, 23 jumps), seed 2973 **1
 (1.064, +0.153) and (0.922, +0.103) m at 0.522-0.548 s, 5.1-5.3 cm off after 13 aimed jumps with none on the target: the
 aim); the report (`python -m sim_core report random --seed 3011 --jumps 0 --leaps 0 --broad 0 --turned-long 20
 --characters woman --budget 24 --workers 1 --out ...`) **19 / 20** (median 5.5 s, worst 27.4 s): 0.52-0.57 s 4 / 5
-((1.251, -0.109) m in 0.539 s 6.6 cm off after 23 jumps), `turned_long_short_region` 6 / 6, 0.57-0.7 s 9 / 9. The band
-on fresh seeds **41 / 45 (91 %)**; with the last session's draws there, traced again (1 of their 5 misses found), 56 / 64
-(88 %) over every draw (the fifth, (0.975, +0.595) m in 0.552 s, 6.0 cm off after 23 jumps). Kept: the woman's `turned_long_region` air time **0.52-0.7 s** again. The man's mid long row
+((1.251, -0.109) m in 0.539 s 6.6 cm off after 23 jumps), `turned_long_short_region` 6 / 6, 0.57-0.7 s 9 / 9; the scratch draws again, seed 2977 **19 / 20** (the miss
+(1.029, -0.071) m in 0.530 s 21.5 cm off after 13 aimed jumps, none on the target). The band on fresh seeds **60 / 65
+(92 %)**; with the last session's 19 draws there (seeds 29, 2901, 2941; their five misses planned again, 1 found; the
+fifth, (0.975, +0.595) m in 0.552 s, 6.0 cm off after 23 jumps) 75 / 84 (89 %) over every draw. Kept: the woman's `turned_long_region` air time **0.52-0.7 s** again. The man's mid long row
 (`turned_mid_long_region`, 0.55-0.62 s) from 0.52 s (0.5-0.52 s at 1.25-1.5 m is his `turned_near_short_region`'s, flown
 as before): the same scratch draws at 0.52-0.55 s, his table's `landing_leads` the woman's, seed 3021 **19 / 20** (the
 miss (1.268, -0.343) m in 0.545 s 11 cm off after 23 jumps: on the target and fallen, the leads too), seed 3023 **18 / 20** (the misses
