@@ -15,8 +15,10 @@ a few simulated jumps, not a search over the leap's settings:
    ``aim_time_tolerance`` (or within TARGETS.md's tolerances and balanced), at most ``aim_trials`` jumps;
 2. the landing from the arriving state: if the nearest jump that landed on the target fell, the same
    jump with its feet placed a landing plan step (planning.land.foot_step) more and less, two, ...
-   (planning.land.candidates), at most ``landing_trials`` placements in all; the first that ends
-   balanced on the target is the plan.
+   (planning.land.candidates), at most ``landing_trials`` placements in all; where every placement fell, the same
+   jump with its ``landing_foot_lead_time`` moved by each of the table's ``landing_leads`` in turn (the feet led
+   later: the woman's turned long row fell on the target at its shallow crouches); the first that ends balanced on the
+   target is the plan.
 
 A long air time on flat ground, in the table's ``long_region`` beyond its ``region``, or onto or down from a box
 where the flat equivalent lies there (``long_onto_region``, ``long_down_region``): the same aim with the table read
@@ -45,7 +47,8 @@ aim with the table read by turned_long_body (the long row flown after the hop, w
 hop (deep_long_body); in its ``turned_far_short_region`` / ``turned_near_short_region`` (and straight ahead
 ``far_short_region`` / ``near_short_region``), the long / near long row at its shallowest crouches (short_body).
 
-At most min(budget, aim_trials + landing_trials - 1) jumps (turned: turn_aim_trials + landing_trials - 1);
+At most min(budget, aim_trials + landing_trials - 1 + len(landing_leads)) jumps (turned: turn_aim_trials in place of
+aim_trials);
 the plan is the best trial (found or
 not: of those found, else of all, the lowest cost), as plan_from_model's. The seed-free steps make
 the same request give the same plan.
@@ -90,7 +93,7 @@ def plan_commanded(character: str, target, air_time: float, trial, budget: int, 
         return plan_turned(character, target, air_time, trial, budget, judge, progress, cancelled, body, c, way)
     body = way_body(body, way)
     x = float(target[0])
-    bound = min(budget, c.aim_trials + c.landing_trials - 1)
+    bound = min(budget, c.aim_trials + c.landing_trials - 1 + len(c.landing_leads))
     trials = Trials(trial, bound, progress, cancelled)
     tried, run_trial = trials.tried, trials.run
 
@@ -124,6 +127,10 @@ def landed_plan(character: str, trials: Trials, bound: int, judge: Callable, c) 
         for delta in deltas[:max(bound - len(tried), 0)]:
             if judge(run_trial({**base, "foot_delta": delta}))[1]:
                 break
+        else:   # every placement fell: the same jump with its feet led by landing_leads (later: shorter leads)
+            for lead in c.landing_leads[:max(bound - len(tried), 0)]:
+                if judge(run_trial({**base, "landing_foot_lead_time": base["landing_foot_lead_time"] + lead}))[1]:
+                    break
     cost, _, settings, measured = min(tried, key=lambda e: (not judge(e[3])[1], e[0], e[1]))   # found first
     return {"settings": settings, "measured": measured, "trials": len(tried), "found": bool(judge(measured)[1])}
 
@@ -139,7 +146,7 @@ def plan_turned(character: str, target, air_time: float, trial, budget: int, jud
     x, y = float(target[0]), float(target[1])
     distance, bearing = math.hypot(x, y), math.atan2(y, x)
     along, side = (math.cos(bearing), math.sin(bearing)), (-math.sin(bearing), math.cos(bearing))
-    bound = min(budget, c.turn_aim_trials + c.landing_trials - 1)
+    bound = min(budget, c.turn_aim_trials + c.landing_trials - 1 + len(c.landing_leads))
     trials = Trials(trial, bound, progress, cancelled)
     aims, reached, headings, bearings, air_aims, flown = [distance], [], [c.turn_gain * bearing], [], [float(air_time)], []
     # the aim stays in its range and its flight target in the leap's (a quarter turn's aim is all target_y)

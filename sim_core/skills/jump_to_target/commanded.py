@@ -164,6 +164,9 @@ COMMANDED_CONSTANTS = Schema(
     constant("landing_trials", "count", 1, 30,
              "an aimed jump that lands on the target and falls is tried again with its feet placed a landing plan "
              "step (planning/land.py) more and less, two, ...: this many placements in all, its own the first"),
+    constant("landing_leads", "s", -0.2, 0.2,
+             "where every placement fell, the same jump with its landing_foot_lead_time moved by each of these in turn "
+             "(none: no more), one jump each beyond the placements"),
 )
 CONSTANTS = read_constants("jump_commanded", COMMANDED_CONSTANTS)
 
