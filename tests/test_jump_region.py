@@ -230,7 +230,7 @@ def assert_run_as_planned(result, plan):
 def test_a_target_down_from_a_box_is_offered_commanded_where_its_flat_equivalent_lies_in_the_region():
     """The table's down_region: the same lift-off on flat ground (flat_equivalent) in the commanded region, the box's
     height and the flat-ground air time T0 in down_region (the woman 0.25-0.75 m, T0 0.4-0.49 s; the man 0.25-0.4 m,
-    T0 0.42-0.5 s, and in his high_down_region 0.4-0.75 m with the target at most 1.1 m ahead)."""
+    T0 0.42-0.5 s, and in his high_down_region 0.4-0.75 m with the target at most 1.6 m ahead)."""
     from sim_core.ballistics import flat_air_time
     from sim_core.skills.jump_to_target.commanded import commanded_way, flat_equivalent
     assert flat_equivalent((1.2, 0.0, -0.4), 0.6) == pytest.approx((1.2 * flat_air_time(-0.4, 0.6) / 0.6, 0.6 - 0.8 / (9.80665 * 0.6)))
@@ -239,27 +239,32 @@ def test_a_target_down_from_a_box_is_offered_commanded_where_its_flat_equivalent
     assert commanded_way("woman", (1.0, 0.0, 0.3), 0.6) is None         # onto a box: T0 0.70 s, beyond the long row
     assert commanded_way("woman", (1.0, 0.0, -0.45), 0.6) == "down"
     assert commanded_way("man", (1.2, 0.0, -0.35), 0.6) == "down"       # T0 0.48 s, flat-ground landing 0.96 m
-    assert commanded_way("man", (1.2, 0.0, -0.45), 0.6) is None         # his boxes from 0.4 m missed far targets
-    assert commanded_way("man", (1.0, 0.0, -0.45), 0.6) == "down"       # ... and landed near ones (high_down_region)
+    assert commanded_way("man", (1.2, 0.0, -0.45), 0.6) == "down"       # from 0.4 m far targets: the landing for a drop
+    assert commanded_way("man", (1.0, 0.0, -0.45), 0.6) == "down"       # ... and near ones (high_down_region)
+    assert commanded_way("man", (1.65, 0.0, -0.7), 0.68) is None        # beyond its 1.6 m (flat-ground landing 1.14 m)
 
 
 def test_the_man_down_from_a_higher_box_is_offered_near_and_refused_far_in_one_line():
     """His high_down_region: down from a 0.4-0.75 m box where the flat equivalent lies in his straight row and the
-    target is at most 1.1 m ahead (from 1.28 m his landings fell on the target); just beyond, refused naming it."""
+    target is at most 1.6 m ahead (the landing for a drop, down_settings: before it, from 1.28 m his landings fell on the
+    target and the region stopped at 1.1 m), with T0 up to 0.48 s (the forefoot touches down earlier: above 0.48 s the
+    straight row's deepest crouch flew short); just beyond, refused naming it."""
     from sim_core.skills.jump_to_target.commanded import commanded_way
     assert commanded_way("man", (1.05, 0.0, -0.7), 0.68) == "down"      # T0 0.47 s, flat-ground landing 0.73 m
-    assert commanded_way("man", (1.15, 0.0, -0.7), 0.68) is None        # 5 cm beyond the region's 1.1 m
+    assert commanded_way("man", (1.55, 0.0, -0.6), 0.66) == "down"      # T0 0.47 s, flat-ground landing 1.1 m
+    assert commanded_way("man", (1.65, 0.0, -0.6), 0.66) is None        # 5 cm beyond the region's 1.6 m (flat 1.19 m)
     assert commanded_way("man", (1.05, 0.0, -0.76), 0.68) is None       # higher than issue 29's boxes
-    text = region_refusal("man", (1.15, 0.0, -0.7), 0.68)
+    assert commanded_way("man", (1.0, 0.0, -0.45), 0.64) is None        # T0 0.497 s: above 0.48 s, flown short
+    text = region_refusal("man", (1.65, 0.0, -0.6), 0.66)
     assert text and "\n" not in text
-    assert "down from a box 0.4-0.75 m high at target_x 0.5-1.1 m where the same lift-off on flat ground" in text
+    assert "down from a box 0.4-0.75 m high at target_x 0.5-1.6 m where the same lift-off on flat ground" in text
 
 
 @pytest.mark.parametrize("character", ["man", "woman"])
 def test_a_random_target_down_from_a_box_is_flown_by_the_commanded_take_off_as_its_plan_was(character):
     """Down from a box where the same lift-off on flat ground lands in the character's commanded region (the table's
     down_region): drawn as the report draws box targets, planned commanded (the crouch by the flat-ground air
-    time; the woman's landing's recovery step of down_settings, the man has none) and run as a user's request -
+    time; the woman's landing's recovery step of down_settings, the man's have it off) and run as a user's request -
     the run is the plan's trial (the recovery step read from the plan's settings, not the run's parameters)."""
     from sim_core.skills.jump_to_target.commanded import table
     box = first_commanded_box_draw(character, "down")
@@ -275,7 +280,7 @@ def test_a_random_target_of_the_man_down_from_a_higher_box_lands_balanced():
     (high_down_region) beyond 1 m ahead (the region's far part; the first such draw at all is the test above's),
     planned and run as a user's request: within the tolerances and balanced, as its plan was."""
     box = first_commanded_box_draw("man", "down", lambda values: values[1] < -0.4 and values[0] > 1.0)
-    assert box.values[0] <= 1.1 and box.values[1] >= -0.75
+    assert box.values[0] <= 1.6 and box.values[1] >= -0.75
     result, plan = planned_and_run(box)
     assert plan["settings"]["commanded_takeoff"] == 1.0 and not plan["settings"].get("landing_recovery_step", 0.0)
     assert_run_as_planned(result, plan)
@@ -315,36 +320,68 @@ def test_a_random_target_down_from_a_box_with_a_low_lift_off_lands_balanced(char
 
 
 def test_the_man_down_from_a_box_by_his_near_long_row_is_offered_near_and_refused_beyond_in_one_line():
-    """His near_long_down_region: down from a 0.25-0.45 m box where the same lift-off on flat ground lands in his near
-    long row's region (T0 0.5-0.65 s), the target at most 1.2 m ahead (beyond, the landings fell on the target) and asked
-    in at most 0.655 s (longer, the same: the drop from the flight's peak lands hard); just beyond, refused naming it."""
+    """His near_long_down_region: down from a 0.25-0.6 m box where the same lift-off on flat ground lands in his near
+    long row's region (T0 0.5-0.65 s), the target at most 1.3 m ahead; with the landing for a drop (down_settings: the
+    forefoot first at any forward speed, the landing table's delta for the drop, no recovery step) - before it the region
+    stopped at 0.45 m, 1.2 m and 0.655 s (beyond, the landings fell on the target: the shanks touched the ground);
+    beyond 1.3 m the landings stand but the aims miss; just beyond, refused naming it."""
     from sim_core.skills.jump_to_target.commanded import commanded_way
     assert commanded_way("man", (1.1, 0.0, -0.35), 0.65) == "near_long_down"     # T0 0.54 s, flat landing 0.91 m
-    assert commanded_way("man", (1.3, 0.0, -0.35), 0.65) is None                 # beyond 1.2 m: fell on the target
-    assert commanded_way("man", (1.0, 0.0, -0.35), 0.68) is None                 # asked above 0.655 s: fell or missed
-    text = region_refusal("man", (1.3, 0.0, -0.35), 0.65)
-    assert text and "\n" not in text and "down from a box 0.25-0.45 m high at target_x 0.5-1.2 m in air_time 0.4-0.655 s " \
+    assert commanded_way("man", (1.28, 0.0, -0.35), 0.65) == "near_long_down"    # beyond 1.2 m: the landing for a drop
+    assert commanded_way("man", (1.4, 0.0, -0.35), 0.65) is None                 # beyond 1.3 m: the aims missed
+    assert commanded_way("man", (1.0, 0.0, -0.35), 0.68) == "near_long_down"     # asked above 0.655 s: likewise
+    assert commanded_way("man", (1.0, 0.0, -0.55), 0.7) == "near_long_down"      # T0 0.54 s from a 0.55 m box
+    assert commanded_way("man", (1.0, 0.0, -0.65), 0.7) is None                  # above 0.6 m: not measured
+    text = region_refusal("man", (1.0, 0.0, -0.65), 0.7)
+    assert text and "\n" not in text and "down from a box 0.25-0.6 m high at target_x 0.5-1.3 m " \
         "where the same lift-off on flat ground would land in the near long row's region in 0.5-0.65 s" in text
+
+
+OLD_DOWN_LIMITS = {      # the man's down-from-a-box regions before the landing for a drop (down_settings): beyond them, new
+    "down": lambda x, z, t: z < -0.4 and x > 1.1,                          # high_down_region's target_x 1.1 m
+    "push_down": lambda x, z, t: x / t > 2.2,                              # target_speed 2.2 m/s
+    "near_long_down": lambda x, z, t: x > 1.2 or z < -0.45 or t > 0.655,   # 0.45 m, 1.2 m, 0.655 s
+}
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("way", list(OLD_DOWN_LIMITS))
+def test_a_random_target_of_the_man_down_from_a_box_beyond_the_old_limits_lands_balanced(way):
+    """The first of the report's box draws for the man (seed SEED) in each of his down-from-a-box rows beyond where that
+    row stopped before the landing for a drop (the table's down_settings: the forefoot lands first at any forward speed,
+    landing_toe_first_at_speed - landed flat after a ~0.75 m drop the soles sank 3.7 cm and the shanks touched the ground;
+    the landing table's delta for the touchdown speed on the ground below, landing_delta_from_drop; no recovery step),
+    planned and run as a user's request: within 5 cm and 0.05 s and balanced, as its plan was, with those settings."""
+    box = first_commanded_box_draw("man", way, lambda values: OLD_DOWN_LIMITS[way](*values), count=200)
+    result, plan = planned_and_run(box)
+    settings = plan["settings"]
+    assert settings["landing_toe_first_at_speed"] == 1.0 and settings["landing_delta_from_drop"] == 1.0
+    assert settings["commanded_takeoff"] == 1.0 and not settings.get("landing_recovery_step", 0.0)
+    assert_run_as_planned(result, plan)
 
 
 @pytest.mark.slow
 def test_a_random_target_of_the_man_down_from_a_box_by_his_near_long_row_lands_balanced():
     """The first of the report's box draws for the man (seed SEED) in his near_long_down_region, planned with the near
-    long row (the vertical thrust, its lean push 10, the recovery step) and run as a user's request: within 5 cm and
-    0.05 s and balanced, as its plan was."""
+    long row (the vertical thrust, its lean push 10; the landing for a drop, down_settings, without the row's recovery
+    step) and run as a user's request: within 5 cm and 0.05 s and balanced, as its plan was."""
     box = first_commanded_box_draw("man", "near_long_down")
     result, plan = planned_and_run(box)
     assert plan["settings"]["vertical_thrust"] == 1.0 and plan["settings"]["lean_push"] == 10.0
     assert plan["settings"]["commanded_takeoff"] == 1.0
+    assert_run_as_planned(result, plan)
+
+
 def test_a_target_down_from_a_box_with_a_lower_lift_off_is_offered_by_its_forward_speed_and_refused_beyond():
     """The table's push_down_regions: down from a box where the lift-off flies below the shallow crouch's on flat ground
     (the man's T0 0.1-0.3 s from 0.25-0.75 m boxes, his lean push 10; the woman's T0 0.25-0.28 s from 0.25-0.4 m boxes),
-    bounded by the target's forward speed x / air time (the man's 1.55-2.2 m/s, the woman's 2.0-2.4 m/s: faster his
-    landings fell, slower the aim overshot); the rows before keep their targets; beyond, refused in one line naming it.
-    No simulation."""
+    bounded by the target's forward speed x / air time (the man's 1.55-3.6 m/s - to 2.2 m/s before the landing for a
+    drop, down_settings, faster his landings fell; beyond 3.6 m/s his aims miss - the woman's 2.0-2.4 m/s; slower the aim
+    overshot); the rows before keep their targets; beyond, refused in one line naming it. No simulation."""
     from sim_core.skills.jump_to_target.commanded import commanded_way, push_down_body, table
     assert commanded_way("man", (0.85, 0.0, -0.6), 0.45) == "push_down"          # T0 0.18 s at 1.89 m/s
-    assert commanded_way("man", (1.2, 0.0, -0.6), 0.45) is None                   # 2.67 m/s: fell after the drop
+    assert commanded_way("man", (1.2, 0.0, -0.6), 0.45) == "push_down"            # 2.67 m/s: the landing for a drop
+    assert commanded_way("man", (1.7, 0.0, -0.6), 0.45) is None                   # 3.78 m/s: the aims missed
     assert commanded_way("man", (0.6, 0.0, -0.6), 0.45) is None                   # 1.33 m/s: the aim overshot
     assert commanded_way("man", (0.9, 0.0, -0.6), 0.55) == "low_down"             # T0 0.33 s: the shallow crouch's as before
     assert commanded_way("woman", (0.9, 0.0, -0.3), 0.42) == "push_down"          # T0 0.27 s at 2.14 m/s
@@ -352,8 +389,8 @@ def test_a_target_down_from_a_box_with_a_lower_lift_off_is_offered_by_its_forwar
     assert commanded_way("woman", (1.05, 0.0, -0.45), 0.47) is None               # T0 0.27 s above 0.4 m: the aims fell short
     assert commanded_way("woman", (1.0, 0.0, -0.5), 0.5) == "low_down"            # T0 0.30 s as before
     assert push_down_body(table("man"))["settings"]["lean_push"] == 10.0
-    text = region_refusal("man", (1.2, 0.0, -0.6), 0.45)
-    assert text and "\n" not in text and "down from a box 0.25-0.75 m high at a forward speed of 1.55-2.2 m/s " \
+    text = region_refusal("man", (1.7, 0.0, -0.6), 0.45)
+    assert text and "\n" not in text and "down from a box 0.25-0.75 m high at a forward speed of 1.55-3.6 m/s " \
         "(target_x / air_time) where the lift-off would fly 0.1-0.3 s on flat ground" in text
 
 

@@ -281,6 +281,15 @@ class Landing(Behaviour):
         Parameter("untwist", "bool", 0.0, 0.0, 1.0,
                   "1 = the hips' rotation goes back to 0 in flight, turning the legs under a pelvis that a "
                   "turning take-off (liftoff_turn) left rotated against them; 0 = held as the take-off left it"),
+        Parameter("toe_first_at_speed", "bool", 0.0, 0.0, 1.0,
+                  "1 = a fast touchdown lands on the forefoot at any horizontal speed (the toe-down pitch is not "
+                  "faded out by the COM's horizontal speed): down from a box, a 0.75 m drop landed flat at 1.5 m/s "
+                  "forward sank the soles 3.7 cm into the ground and the shanks touched it; 0 = faded (flat feet "
+                  "at speed)"),
+        Parameter("delta_from_drop", "bool", 0.0, 0.0, 1.0,
+                  "1 = the landing table's delta is read for the touchdown speed over the surface the feet are "
+                  "above, through the flight (down from a box: the ground below once the feet have passed its edge); "
+                  "0 = read once at lift-off (over the box stood on: a flat landing's delta)"),
         Parameter("blend_time", "s", 0.0, 0.0, 0.3,
                   "the joint targets blend from where the landing started to the landing's own over this "
                   "time (opening from a tuck: a gentler move keeps the flight's angular momentum constant "
@@ -417,7 +426,8 @@ class Landing(Behaviour):
             toe_point = min(max(self.constants.toe_point_per_speed * (touchdown_speed - self.constants.toe_point_from), 0.0), self.constants.toe_point_max)
             # moving forward or back fast, the feet land flat: the whole sole has to stop the COM's
             # horizontal speed (the forefoot alone would let the ankles give way)
-            toe_point *= min(max((self.constants.toe_fade_speed[1] - abs(vx)) / (self.constants.toe_fade_speed[1] - self.constants.toe_fade_speed[0]), 0.0), 1.0)
+            if not p.get("toe_first_at_speed", 0.0):
+                toe_point *= min(max((self.constants.toe_fade_speed[1] - abs(vx)) / (self.constants.toe_fade_speed[1] - self.constants.toe_fade_speed[0]), 0.0), 1.0)
         if self.stage == "flight" and self.airborne.touching(d):
             self.stage = "absorb"
             self.ctx.step_division = 1      # a flight run at a finer physics step lands at the model's
@@ -464,7 +474,7 @@ class Landing(Behaviour):
                 fx = c * (foot[0] - com[0]) + sn * (foot[1] - com[1]) + self.sole_centre
                 fx_rate = 0.0 if self.last_fx[k] is None else (fx - self.last_fx[k]) / self.ctx.control_dt
                 self.last_fx[k] = fx
-                if self.calibrated_delta is None:          # the horizontal and touchdown speeds of this flight
+                if self.calibrated_delta is None or p.get("delta_from_drop", 0.0):    # the horizontal and touchdown speeds
                     self.calibrated_delta = (calibrated_foot_delta(self.ctx.character.name, vx, touchdown_speed)
                                              if p.get("landing_table", 1.0) else 0.0)
                 wanted = self.foot_wanted(vx, spin_offset)
@@ -774,6 +784,15 @@ LANDING_TUCK_KNEE_FLEXION = Parameter(
     "landing_tuck_knee_flexion", "rad", 0.0, 0.0, 2.4,
     "landing: the knee bend held in flight from lift-off for landing_tuck_share of flight_air_time (the feet drawn up "
     "over a box's front edge), then the landing's")
+LANDING_TOE_FIRST_AT_SPEED = Parameter(
+    "landing_toe_first_at_speed", "bool", 0.0, 0.0, 1.0,
+    "landing: 1 = a fast touchdown lands on the forefoot at any horizontal speed (the landing's toe_first_at_speed: "
+    "a high drop landed flat sinks the soles until the shanks touch the ground); 0 = flat feet at speed")
+LANDING_DELTA_FROM_DROP = Parameter(
+    "landing_delta_from_drop", "bool", 0.0, 0.0, 1.0,
+    "landing: 1 = the landing table's delta is read for the touchdown speed on the surface landed on (the landing's "
+    "delta_from_drop; down from a box, the drop to the ground below), and the commanded take-off aims with it; 0 = "
+    "for the lift-off's vertical speed (a flat landing's)")
 LANDING_TUCK_SHARE = Parameter("landing_tuck_share", "1", 0.0, 0.0, 1.0,
                                "landing: the share of flight_air_time the tuck is held from lift-off (0 = no tuck)")
 LEAN_PUSH = Parameter("lean_push", "1", 0.0, 0.0, 10.0,
@@ -809,7 +828,8 @@ LEAP_SETTINGS = Schema(
               "above 0.5 the thrust servoes the COM velocity to the commanded flight's lift-off velocity and "
               "ends on reaching it (control/commanded_thrust.py)"),
     FLIGHT_TARGET_X, FLIGHT_TARGET_Y, TURN_ANGLE, LANDING_ARM_PITCH_GAIN, LANDING_ARM_PITCH, LANDING_RECOVERY_STEP, LANDING_STEP_MARGIN,
-    LEAN_PUSH, LANDING_TUCK_KNEE_FLEXION, LANDING_TUCK_SHARE,
+    LEAN_PUSH, LANDING_TUCK_KNEE_FLEXION, LANDING_TUCK_SHARE, LANDING_TOE_FIRST_AT_SPEED,
+    LANDING_DELTA_FROM_DROP,
 )
 LEAP_MEASURED = ("com_rise", "com_travel", "peak_thrust_grf_body_weights")   # columns a calibration measured
 

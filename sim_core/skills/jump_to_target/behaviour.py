@@ -223,6 +223,8 @@ def turn_of(settings: dict) -> dict:
 ARM_FEEDBACK = ("landing_arm_pitch_gain", "landing_arm_pitch")    # the arms' pitch feedback: only plans that name it
 RECOVERY_SETTINGS = ("landing_recovery_step", "landing_step_margin")  # the landing's recovery step: likewise
 TUCK_SETTINGS = ("landing_tuck_knee_flexion", "landing_tuck_share")     # the flight's tuck: likewise
+TOE_SETTINGS = ("landing_toe_first_at_speed", "landing_delta_from_drop")   # the forefoot first at speed, the
+                                                                             # delta for the drop: likewise
 
 
 def landing_settings(settings: dict) -> dict:
@@ -232,7 +234,7 @@ def landing_settings(settings: dict) -> dict:
             "landing_foot_lead_time": settings["landing_foot_lead_time"],
             "landing_place_sideways": float(abs(settings.get("com_offset_y", 0.0)) > 0.0),
             "landing_right_time": float(settings.get("landing_right_time", 0.0)),
-            **{k: float(settings[k]) for k in ARM_FEEDBACK + RECOVERY_SETTINGS + TUCK_SETTINGS if k in settings}}
+            **{k: float(settings[k]) for k in ARM_FEEDBACK + RECOVERY_SETTINGS + TUCK_SETTINGS + TOE_SETTINGS if k in settings}}
 
 
 def crouch_time(windup_time: float) -> float:

@@ -54,8 +54,10 @@ Fig. 6 with his thrust slowed for his strength, tools/scale_commanded.py and doc
   ([low, high]) is flown by the same take-off where the flight of its lift-off velocity on flat ground lands in
   ``region`` with an air time in ``flat_air_time`` ([low, high] s) (flat_equivalent: the vertical speed's air
   time on flat ground, ballistics.flat_air_time, and the forward speed over it; the crouch is chosen by that
-  air time); ``down_settings`` replace the table's settings for it (the landing's recovery step: the drop
-  lands harder).
+  air time); ``down_settings`` replace the table's settings for it and for every other way down from a box
+  (commanded_settings: the woman's landing's recovery step, the drop lands harder; the man's landing for a drop, the
+  forefoot first at any forward speed and the landing table's delta for the drop, control.leap.Landing's
+  ``toe_first_at_speed`` and ``delta_from_drop``).
 - ``high_down_region`` (optional, with ``down_region``): the same keys as ``down_region`` and ``target_x`` ([low, high] m,
   the target's own forward distance) for higher boxes, flown as ``down_region``'s: from a higher box a far target's
   landing (faster forward with a harder drop) fell at every foot placement while a nearer one's stood
@@ -548,7 +550,7 @@ def commanded_limit(character: str, z: float = 0.0) -> str | None:
             parts.append(("down", _box(body[key], "down from", "that region", "-") + ", at target_x T0 / air_time)"))
     for key, why in (("low_down_regions", "T0 = air_time - 2 height / (g air_time); a lower lift-off than its shallowest "
                                           "crouch's is not flown"),
-                     ("push_down_regions", "the lean push's low lift-off; faster forward its landing fell")):
+                     ("push_down_regions", "the lean push's low lift-off; faster forward its landings fell or its aims missed")):
         parts += [("down", _low_box(box, why)) for box in body.get(key, ())]
     parts += [("flat", f"{words} {(_flat if key.removesuffix('_region') in STRAIGHT_WAYS else _turned)(body[key])}")
               for key, words in FLAT_REGION_WORDS if body.get(key)]

@@ -7,12 +7,13 @@ import math
 
 import numpy as np
 
+from ...ballistics import GRAVITY
 from ...control.balance import Balance, inside_a_skill, standing_hip_height
 from ...control.behaviour import register
 from ...control.commanded_thrust import CommandedThrust, FlightCommand, thrust_due
 from ...control.measure import SupportGeometry
 from ...control.recovery_step import RecoveryStep, StaggeredStance, StanceMeasure, StepAndHold
-from ...control.leap import FLIGHT_TARGET_X, FLIGHT_TARGET_Y, LANDING_ARM_PITCH, LANDING_ARM_PITCH_GAIN, LANDING_RECOVERY_STEP, LANDING_STEP_MARGIN, LANDING_TUCK_KNEE_FLEXION, LANDING_TUCK_SHARE, LEAN_PUSH, RECOVERY_STEP_EVENT, LOW_LEVEL_SETTINGS, Landing, LeapThrust, balance_after_landing, calibrated_foot_delta, broad_distances, broad_row, broad_rows, commandable_heights, leap_assess, leap_constants, load_mapping, vertical_key, vertical_row, vertical_table
+from ...control.leap import FLIGHT_TARGET_X, FLIGHT_TARGET_Y, LANDING_ARM_PITCH, LANDING_ARM_PITCH_GAIN, LANDING_RECOVERY_STEP, LANDING_STEP_MARGIN, LANDING_DELTA_FROM_DROP, LANDING_TOE_FIRST_AT_SPEED, LANDING_TUCK_KNEE_FLEXION, LANDING_TUCK_SHARE, LEAN_PUSH, RECOVERY_STEP_EVENT, LOW_LEVEL_SETTINGS, Landing, LeapThrust, balance_after_landing, calibrated_foot_delta, broad_distances, broad_row, broad_rows, commandable_heights, leap_assess, leap_constants, load_mapping, vertical_key, vertical_row, vertical_table
 from ...control.sequencer import Sequence, Step
 from ...control.turn import jump_start, turn_steps
 from ...errors import ParameterError
@@ -65,6 +66,8 @@ class Leap(Sequence):
         LANDING_STEP_MARGIN,
         LANDING_TUCK_KNEE_FLEXION,
         LANDING_TUCK_SHARE,
+        LANDING_TOE_FIRST_AT_SPEED,
+        LANDING_DELTA_FROM_DROP,
         LEAN_PUSH,
         settings=LOW_LEVEL_SETTINGS,
     )
@@ -146,18 +149,23 @@ class Leap(Sequence):
         middle of the feet at the start) and the air time (s)."""
         return (p["flight_target_x"], p["flight_target_y"], p["flight_target_z"]), p["flight_air_time"]
 
-    def flight_command(self, p: dict, constants, delta: float, lead: float, push: float) -> FlightCommand:
+    def flight_command(self, p: dict, constants, delta: float, lead: float, push: float,
+                       from_drop: bool = False) -> FlightCommand:
         """The commanded take-off's flight (control.commanded_thrust), landed by this leap's landing
-        (its foot lead, its delta and the landing table's own delta); ``push`` its lean's push (LEAN_PUSH)."""
+        (its foot lead, its delta and the landing table's own delta); ``push`` its lean's push (LEAN_PUSH);
+        ``from_drop``: the landing reads the table's delta for the touchdown speed on the surface landed on
+        (LANDING_DELTA_FROM_DROP: the lift-off's vertical speed and the drop to it), else for the lift-off's."""
         target, air_time = self.flight_target(p)
         name = self.ctx.character.name
+        drop = -float(target[2])
+        touchdown = (lambda up: math.sqrt(max(up * up + 2.0 * GRAVITY * drop, 0.0))) if from_drop else abs   # ballistics
         hip = standing_hip_height(self.ctx.character)
         return FlightCommand(tuple(float(v) for v in target), float(air_time), float(lead), float(delta),
                              constants.commanded_touchdown_height * hip, constants.commanded_liftoff_height * hip,
                              push, constants.commanded_servo_time,
                              constants.commanded_correction_limit, constants.commanded_start_share,
                              constants.commanded_spin, constants.commanded_spin_gain,
-                             lambda speed, touchdown: calibrated_foot_delta(name, speed, touchdown))
+                             lambda speed, up: calibrated_foot_delta(name, speed, touchdown(up)))
 
     def is_broad(self, p: dict) -> bool:
         """The broad jump's thrust (0.15/0.20/0.45 s extension, triggered by the leaning COM) for
@@ -187,7 +195,7 @@ class Leap(Sequence):
             delta = min(max(p.get("foot_delta", 0.0) + cfg.get("foot_delta", 0.0), knob.minimum), knob.maximum)
             landing = {k: cfg.get("landing_" + k, p.get("landing_" + k, Landing.schema.defaults()[k]))
                        for k in ("swing_arms", "arm_flexion", "foot_lead_time", "place_sideways", "knee_flexion",
-                                 "right_time", "arm_pitch_gain", "arm_pitch")}
+                                 "right_time", "arm_pitch_gain", "arm_pitch", "toe_first_at_speed", "delta_from_drop")}
             share = cfg.get("landing_tuck_share", p.get("landing_tuck_share", LANDING_TUCK_SHARE.default))
             if share > 0.0:     # the tuck, held for its share of the commanded flight's air time
                 knee = cfg.get("landing_tuck_knee_flexion", p.get("landing_tuck_knee_flexion", LANDING_TUCK_KNEE_FLEXION.default))
@@ -199,7 +207,8 @@ class Leap(Sequence):
             delta, landing = landing_settings()
             # the lean's push: the plan's own (a row measured with its own) over the run's, else the constant
             push = cfg.get("lean_push", p.get("lean_push", 0.0)) or constants.commanded_lean_push
-            command = self.flight_command(p, constants, delta, landing["foot_lead_time"], push)
+            command = self.flight_command(p, constants, delta, landing["foot_lead_time"], push,
+                                          landing["delta_from_drop"] > 0.5)
             support = SupportGeometry(ctx.model, prefix=ctx.actor.prefix)
             origin = support.points(ctx.data)
             origin = np.array([*origin[:, :2].mean(axis=0), float(origin[:, 2].min())])
