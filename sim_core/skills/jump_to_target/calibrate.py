@@ -2368,6 +2368,25 @@ Tests: tests/test_jump_region.py plans and runs the report's first draw beyond e
 Not done: the woman (her `down_settings` keep the recovery step; her higher boxes at short air times and her lower boxes
 at long ones were not measured with the new landing); the land skill's own `drop_limits` (0.6 m at 1.5 m/s and faster)
 may be the same shank's touch - not measured.
+**The woman's far onto-box row at T0 0.66-0.7 s with the man's arms back: measured, not offered (issue 29, thirtieth
+session, 2026-12-07).** `long_onto_region` (flat_air_time 0.52-0.66 s) was widened to 0.7 s in a scratch table and its
+draws beyond 0.66 s run alone (`random_requests.box_target_draw` until `commanded_way` gives "long_onto", `region.mode`
+"commanded", flat_air_time 0.66-0.7 s; each by `random_requests.evaluate`, budget 24; ~5 s a draw): as it is, seed 2901
+**8 / 12**, the four misses landed 7-14 cm off, none found in 5 trials. One traced (a scratch script logging each of the
+plan's trials, then the first body on the box from the trajectory's `contact_force`): (1.198 m, a 0.397 m box, 0.526 s:
+T0 0.68 s) - the first trial (aim 1.198 m, crouch 0.495 m) met the box's front edge with the left toes at 1.99 s (the right
+toes 0.29 m up then, below its top), not the hands, and fell (landed 0.63 m, "air" 0.84 s); the secant then moved the crouch to 0.64 m (flights
+of 0.115-0.13 s) and the nearest of the five was 10 cm short. With `long_onto_settings` `crouch_arms` -0.8 (the man's
+deep rows') that draw passed (4 trials, 4.3 cm off), but fresh seed 2902 **8 / 12** (two misses' first trials landed 0.72 m,
+fallen at the box's edge, and 0.85 m from aims of 1.21 m and 1.285 m); the arms back below 0.66 s, seed 2903
+**12 / 12** (harmless there, not needed). With the tucked row's settings as well (the knees tucked 2.0 rad for 0.5 of the
+air time, the toes' clearance): the three traced misses 1 / 3, fresh seed 2904 **9 / 12** (misses 1.2-16.5 cm off, the
+first trials still landing 0.2-0.6 m short of the aim at the 0.48-0.5 m crouches). Two settings attempts under 90 % (in
+all 25 / 36 beyond 0.66 s): not kept, her table unchanged; her box targets stay 28.4 % of issue 29's (onto 13.4 %,
+`box_region_share('woman', 29)`). What fails is the plan's first step: at her long row's deepest crouches the aim at
+the target lands 0.2-0.6 m short, at the box's front face, and the air-time secant takes a fallen trial's air time as flown -
+a change to the commanded plan, not to the row's settings. Her boxes 0.5-0.6 m lie in her take-off only near 0.95 m at
+T0 0.67-0.71 s (`region.takeoff_refusal`), inside the same band: not tried.
 
 ![commanded vs achieved landing point](jump_to_target.png)
 
