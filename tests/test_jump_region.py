@@ -821,8 +821,9 @@ def test_random_lateral_targets_at_short_air_times_far_turn_first_and_fly_the_lo
 def test_the_mans_turned_long_rows_fly_the_long_row_without_the_arms_feedback_and_the_near_row_as_it_is():
     """The man's turned long rows (docs/jump_to_target.md, "The man's turned long rows"): beyond 1.5 m the hop, then
     the long row with turned_long_settings over it (the landing arms without their pitch feedback: with it his hands
-    touched the ground in the deep landings after the hop); at 0.7-1.15 m the hop, then the near long row unchanged;
-    between them and beyond both refused in one line naming both."""
+    touched the ground in the deep landings after the hop); at 0.5-1.15 m the hop, then the near long row unchanged
+    (from 0.5 m: "The man's holes to the side at 0.5-0.62 s"); between them and beyond both refused in one line naming
+    both."""
     from sim_core.skills.jump_to_target.commanded import (commanded_way, long_body, near_long_body, table,
                                                           turned_long_body)
     body = table("man")
@@ -832,6 +833,7 @@ def test_the_mans_turned_long_rows_fly_the_long_row_without_the_arms_feedback_an
     assert commanded_way("man", (0.85, 0.3), 0.55) == "turned_near_long"
     assert commanded_way("man", (0.85, 0.3), 0.45) == "turned"                     # his short turned row first
     assert commanded_way("man", (1.2, 0.3), 0.6) is None                           # between the near and mid rows
+    assert commanded_way("man", (0.55, 0.25), 0.56) == "turned_near_long"         # 0.6 m: the near row's from 0.5 m
     assert commanded_way("man", (0.85, 0.3), near["air_time"][1] + 0.1) is None     # beyond the deep row too
     settings = turned_long_body(body)["settings"]
     assert settings["landing_arm_pitch_gain"] == body["turned_long_settings"]["landing_arm_pitch_gain"] == 0.0
@@ -962,6 +964,55 @@ def test_the_weakest_rows_are_refused_where_their_fresh_draws_missed():
     assert "\n" not in refusal and "turned first with long air times in the middle for a distance of 1.25-1.5 m at a " \
         "bearing of 0-34 deg to either side, air_time 0.52-0.62 s" in refusal
     assert commanded_way("man", (1.35, 0.3), 0.635) == "turned_mid_deep_long"
+
+
+NEAR_HOLE = (0.5, 0.7)       # the man's near row's distances offered after the hop from 0.5 m (m; was from 0.7 m)
+
+
+def test_the_mans_near_targets_to_the_side_are_flown_by_his_near_long_row():
+    """The man's near targets to the side at 0.5-0.62 s (docs/jump_to_target.md, "The man's holes to the side at
+    0.5-0.62 s"): 0.5-0.7 m flown by the near long row after the hop (turned_near_long_region from 0.5 m); 1.15-1.25 m,
+    between his near and mid rows, still refused (the near row 4 / 6 there, the mid row 16 / 20), in one line naming
+    both. No simulation."""
+    from sim_core.skills.jump_to_target.commanded import commanded_way, table
+    body = table("man")
+    near, mid = body["turned_near_long_region"], body["turned_mid_long_region"]
+    assert near["distance"] == [NEAR_HOLE[0], 1.15] and mid["distance"] == [1.25, 1.5]
+    assert commanded_way("man", (0.55, 0.25), 0.56) == "turned_near_long"         # 0.6 m: was refused
+    assert commanded_way("man", (0.5, 0.1), 0.61) == "turned_near_long"
+    assert commanded_way("man", (0.55, 0.25), 0.47) == "turned"                   # his short turned row first
+    assert commanded_way("man", (0.55, 0.25), 0.65) == "turned_near_deep_long"    # from 0.62 s the near deep row's
+    assert commanded_way("man", (0.45, 0.45), 0.56) is None                       # 45 deg: beyond the row's bearings
+    assert commanded_way("man", (1.146, 0.355), 0.57) is None                     # 1.2 m: between the rows
+    for target, air_time in (((0.45, 0.45), 0.56), ((1.146, 0.355), 0.57)):
+        refusal = region_refusal("man", target, air_time)
+        assert "\n" not in refusal and "turned first with long air times nearer for a distance of 0.5-1.15 m at a " \
+            "bearing of 0-34 deg to either side, air_time 0.5-0.62 s" in refusal and "turned first with long air " \
+            "times in the middle for a distance of 1.25-1.5 m at a bearing of 0-34 deg to either side, air_time " \
+            "0.52-0.62 s" in refusal
+
+
+@pytest.mark.slow
+def test_random_near_targets_of_the_man_to_the_side_land_balanced(tmp_path):
+    """Random targets of the report's kind (draw_turned, a fixed seed, drawn again until 0.5-0.7 m away: NEAR_HOLE) in
+    the man's near long row after the hop, planned by plan_turned and run as a user's requests, judged by TARGETS.md."""
+    import numpy as np
+
+    from sim_core.random_requests import Draw, draw_turned
+    from sim_core.skills.jump_to_target.commanded import commanded_way
+    rng, draws = np.random.default_rng((SEED, 39)), []
+    while len(draws) < TURNED_LONG_TARGETS:
+        values = draw_turned(rng, "man", ("turned_near_long",))
+        if NEAR_HOLE[0] <= math.hypot(*values[:2]) <= NEAR_HOLE[1]:
+            draws.append(Draw("turned_long", "man", values))
+    assert all(commanded_way("man", d.values[:2], d.values[2]) == "turned_near_long"
+               and not offered("man", d.values[:2], d.values[2]) for d in draws)
+    results, lines, plans, c = all_planned_and_run("man", draws, tmp_path)
+    assert len(plans) == TURNED_LONG_TARGETS
+    assert all(p["settings"]["vertical_thrust"] == 1.0 and p["settings"]["turn_angle"] != 0.0 for p in plans)
+    assert all(p["trials"] <= c.turn_aim_trials + c.landing_trials - 1 + len(c.landing_leads) for p in plans)
+    assert sum(r["passed"] for r in results) >= TURNED_LONG_TARGETS - 1, "\n".join(lines)
+    assert max(r["seconds"] for r in results) <= 60, "\n".join(lines)
 
 
 def test_the_mans_deep_long_row_flies_his_far_row_at_its_deepest_crouches():

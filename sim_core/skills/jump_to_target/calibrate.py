@@ -2387,6 +2387,32 @@ all 25 / 36 beyond 0.66 s): not kept, her table unchanged; her box targets stay 
 the target lands 0.2-0.6 m short, at the box's front face, and the air-time secant takes a fallen trial's air time as flown -
 a change to the commanded plan, not to the row's settings. Her boxes 0.5-0.6 m lie in her take-off only near 0.95 m at
 T0 0.67-0.71 s (`region.takeoff_refusal`), inside the same band: not tried.
+**The man's holes to the side at 0.5-0.62 s: 0.5-0.7 m offered by his near long row after the hop, 1.15-1.25 m not
+(issue 29, 2026-12-07): his share of issue 29's box 83.4 % -> 85.7 %.** Two holes were left to the side at 0.5-0.62 s
+between his turned rows: (a) 1.15-1.25 m, between `turned_near_long_region` (0.7-1.15 m) and `turned_mid_long_region`
+(1.25-1.5 m), and (b) 0.5-0.7 m, nearer than the near row (the twenty-first session had measured it with the far row's
+landing, gain 0: targets nearer than 0.6 m fell at every placement). Each measured by draws inside the hole alone (a
+scratch script drawing `random_requests.box_draw` until the distance lies in the hole, the bearing 0-0.6 rad, 0.5-0.62 s,
+`commanded_way` gives the row and the measured jumps do not offer it, each run by `random_requests.evaluate`, budget 24,
+with the worktree's table widened):
+- (b) by the near long row as it is (`turned_near_long_region` from 0.5 m): seed 3101 **6 / 6**, fresh seeds 3103
+  **12 / 12** and 3109 **8 / 8** - **26 / 26**, every landing 1.1-5.0 cm off, 1-8 jumps each (none reached the
+  landing's leads). Kept: `turned_near_long_region` **0.5-1.15 m**, 0-0.6 rad (34 deg), 0.5-0.62 s.
+- (a) by the near row to 1.25 m: seed 3101 **4 / 6** (the misses (1.214, +0.186) m in 0.556 s and (1.163, -0.147) m in
+  0.612 s landed 5.6 / 6.9 cm short after 16 / 23 jumps: the near row's reach after the hop, as seed 277's 6 / 8 to 1.3
+  m); by the mid row from 1.15 m (`turned_mid_long_region` 1.15-1.5 m; below 0.52 s the near short row flies it as
+  before): seed 3105 **7 / 8** (the miss (1.103, -0.373) m in 0.527 s on the target and fallen), fresh seed 3107 **9 /
+  12** (the misses (1.211, +0.249) m in 0.522 s 12.5 cm long, (1.158, +0.060) m in 0.578 s 8.5 cm short and (1.226,
+  +0.225) m in 0.539 s 5.3 cm long, no jump on the target in 11-12: the mid row's aim, push 5, not settling there; seed 301
+  had missed five of six at 1.17-1.24 m) - **16 / 20 (80 %)**. Not kept: 1.15-1.25 m stays refused (the misses at bearings 0.05-0.33 rad; the hits
+  0.06-0.54 rad: no bound of the row's keys separates them).
+Offered share of issue 29's box (`random_requests.region_share`, seed 29's 20,000 draws): the man 83.4 % -> **85.7 %**
+(a scratch regmap's 20,000 uniform draws of `region.in_region`: x 0.5-0.7 m at 0.5-0.6 s 33-43 % -> 69 / 67 %). A target
+outside is refused in one line (`commanded_limit`: "... turned first with long air times nearer for a distance of
+0.5-1.15 m at a bearing of 0-34 deg to either side, air_time 0.5-0.62 s ..."). Tests: tests/test_jump_region.py checks
+the near row's ways from 0.5 m and the refusals between the rows and beyond their bearings (no simulation) and plans and
+runs three seeded draws at 0.5-0.7 m (slow). Not done: 1.15-1.25 m to the side at 0.52-0.62 s (above: the near row's
+reach, the mid row's aim), 0.5-0.7 m beyond 34 deg.
 
 ![commanded vs achieved landing point](jump_to_target.png)
 
