@@ -22,6 +22,7 @@ from __future__ import annotations
 
 import math
 from types import SimpleNamespace
+from typing import Callable
 
 import numpy as np
 
@@ -318,6 +319,7 @@ class Landing(Behaviour):
         self.hip_rotation = s.indices(["hip_r_z", "hip_l_z"])
         self.stage = "flight"
         self.calibrated_delta = None
+        self.table_delta = foot_delta_lookup(ctx.character.name)
         self.last_fx = [None, None]
         self.last_fy = [None, None]
         self.hip_x_range = [tuple(m.jnt_range[ctx.actor.joint_id(f"hip_{side}_x")]) for side in "rl"]
@@ -453,6 +455,10 @@ class Landing(Behaviour):
             # against the somersault angular momentum (about the body's lateral axis), per unit mass
             h = d.subtree_angmom[self.pelvis]
             spin_offset = p["spin_placement"] * (-sn * float(h[0]) + c * float(h[1])) / self.mass
+        if self.stage == "flight" and (self.calibrated_delta is None or p.get("delta_from_drop", 0.0)):
+            # the landing table's delta for this flight's horizontal and touchdown speeds (delta_from_drop: read again
+            # each step, for the surface the feet are now above)
+            self.calibrated_delta = self.table_delta(vx, touchdown_speed) if p.get("landing_table", 1.0) else 0.0
         for k in (0, 1):
             j = self.idx[k]
             f = d.xmat[self.feet[k]].tolist()
@@ -474,9 +480,6 @@ class Landing(Behaviour):
                 fx = c * (foot[0] - com[0]) + sn * (foot[1] - com[1]) + self.sole_centre
                 fx_rate = 0.0 if self.last_fx[k] is None else (fx - self.last_fx[k]) / self.ctx.control_dt
                 self.last_fx[k] = fx
-                if self.calibrated_delta is None or p.get("delta_from_drop", 0.0):    # the horizontal and touchdown speeds
-                    self.calibrated_delta = (calibrated_foot_delta(self.ctx.character.name, vx, touchdown_speed)
-                                             if p.get("landing_table", 1.0) else 0.0)
                 wanted = self.foot_wanted(vx, spin_offset)
                 hip = d.xpos[self.hips[k]]
                 hip_from_com = c * (hip[0] - com[0]) + sn * (hip[1] - com[1])
@@ -690,11 +693,14 @@ LANDING_TABLE = register_table(TableType("landing", with_constants(LANDING_SETTI
                                          (foot_delta_row,)))
 
 
-def calibrated_foot_delta(character: str, horizontal_speed: float, touchdown_speed: float = 0.0) -> float:
-    """Foot servo delta from python -m sim_core calibrate land's table (0 where there is none), for the
-    horizontal speed and the expected vertical touchdown speed (foot_delta_row)."""
+def foot_delta_lookup(character: str) -> Callable[[float, float], float]:
+    """The foot servo delta of python -m sim_core calibrate land's table (0 where there is none) for a
+    horizontal speed and an expected vertical touchdown speed (foot_delta_row), the table read once: for
+    lookups made every control step (the commanded thrust's lift-off velocity, the landing in flight)."""
     table = load("landing", character)
-    return 0.0 if table is None else foot_delta_row(table, horizontal_speed, touchdown_speed)
+    if table is None:
+        return lambda horizontal_speed, touchdown_speed: 0.0
+    return lambda horizontal_speed, touchdown_speed: foot_delta_row(table, horizontal_speed, touchdown_speed)
 
 
 # ------------------------------------------------------------------------------- leap mapping

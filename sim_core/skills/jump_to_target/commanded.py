@@ -120,7 +120,7 @@ Fig. 6 with his thrust slowed for his strength, tools/scale_commanded.py and doc
   its aim at the shortest air times, the fastest forward). Onto a box needs
   T0 = T + 2 h / (g T) >= 0.53 s: only the long row flies it; ``<row>_onto_region``, ``<row>_down_region`` (optional)
   the same for any other straight row (``<row>_region``, STRAIGHT_WAYS), flown by that row (way_body); with
-  ``<row>_onto_settings`` (optional) over that row's settings onto a box (the man's deep rows: the arms held back in
+  ``<row>_onto_settings`` / ``<row>_down_settings`` (optional) over that row's settings onto / down from a box (the man's deep rows: the arms held back in
   their deepest crouches, whose hands touched the box before the lift-off; docs/jump_to_target.md "The man onto boxes by
   his near and deep long rows");
 - ``tucked_onto_region`` (optional, with the long row and ``tucked_onto_settings``): the keys of ``long_onto_region`` for a
@@ -340,10 +340,10 @@ def way_body(body: dict, way: str) -> dict:
     (long_body, near_long_body, mid_long_body, low_down_body, push_down_body, turned_long_body, deep_long_body, short_body,
     near_deep_long_body, mid_deep_long_body; straight ahead a row the table lacks flies as the table's own settings), else
     the table as it is."""
-    if way.endswith("_onto") and f"{way}_settings" in body and way.rsplit("_", 1)[0] in STRAIGHT_WAYS:
-        return over(way_body(body, way.rsplit("_", 1)[0]), body, f"{way}_settings")    # that row, its box settings over it
-    if way.endswith(("_down", "_onto")) and way.rsplit("_", 1)[0] in STRAIGHT_WAYS:
-        way = way.rsplit("_", 1)[0]  # onto or down from a box by a straight row (box_way): flown by that row
+    row = way.rsplit("_", 1)[0]
+    if way.endswith(("_down", "_onto")) and row in STRAIGHT_WAYS:
+        # onto or down from a box by a straight row (box_way): flown by that row, its ``<way>_settings`` over it if any
+        return over(way_body(body, row), body, f"{way}_settings" if f"{way}_settings" in body else None)
     if way == "long" and "long_settings" in body:
         return long_body(body)      # long air times (onto or down from a box too): the vertical thrust's settings and pairs
     if way == "tucked_onto":

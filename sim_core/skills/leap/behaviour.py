@@ -13,7 +13,7 @@ from ...control.behaviour import register
 from ...control.commanded_thrust import CommandedThrust, FlightCommand, thrust_due
 from ...control.measure import SupportGeometry
 from ...control.recovery_step import RecoveryStep, StaggeredStance, StanceMeasure, StepAndHold
-from ...control.leap import FLIGHT_TARGET_X, FLIGHT_TARGET_Y, LANDING_ARM_PITCH, LANDING_ARM_PITCH_GAIN, LANDING_RECOVERY_STEP, LANDING_STEP_MARGIN, LANDING_DELTA_FROM_DROP, LANDING_TOE_FIRST_AT_SPEED, LANDING_TUCK_KNEE_FLEXION, LANDING_TUCK_SHARE, LEAN_PUSH, RECOVERY_STEP_EVENT, LOW_LEVEL_SETTINGS, Landing, LeapThrust, balance_after_landing, calibrated_foot_delta, broad_distances, broad_row, broad_rows, commandable_heights, leap_assess, leap_constants, load_mapping, vertical_key, vertical_row, vertical_table
+from ...control.leap import FLIGHT_TARGET_X, FLIGHT_TARGET_Y, LANDING_ARM_PITCH, LANDING_ARM_PITCH_GAIN, LANDING_RECOVERY_STEP, LANDING_STEP_MARGIN, LANDING_DELTA_FROM_DROP, LANDING_TOE_FIRST_AT_SPEED, LANDING_TUCK_KNEE_FLEXION, LANDING_TUCK_SHARE, LEAN_PUSH, RECOVERY_STEP_EVENT, LOW_LEVEL_SETTINGS, Landing, LeapThrust, balance_after_landing, foot_delta_lookup, broad_distances, broad_row, broad_rows, commandable_heights, leap_assess, leap_constants, load_mapping, vertical_key, vertical_row, vertical_table
 from ...control.sequencer import Sequence, Step
 from ...control.turn import jump_start, turn_steps
 from ...errors import ParameterError
@@ -156,7 +156,7 @@ class Leap(Sequence):
         ``from_drop``: the landing reads the table's delta for the touchdown speed on the surface landed on
         (LANDING_DELTA_FROM_DROP: the lift-off's vertical speed and the drop to it), else for the lift-off's."""
         target, air_time = self.flight_target(p)
-        name = self.ctx.character.name
+        table_delta = foot_delta_lookup(self.ctx.character.name)
         drop = -float(target[2])
         touchdown = (lambda up: math.sqrt(max(up * up + 2.0 * GRAVITY * drop, 0.0))) if from_drop else abs   # ballistics
         hip = standing_hip_height(self.ctx.character)
@@ -165,7 +165,7 @@ class Leap(Sequence):
                              push, constants.commanded_servo_time,
                              constants.commanded_correction_limit, constants.commanded_start_share,
                              constants.commanded_spin, constants.commanded_spin_gain,
-                             lambda speed, up: calibrated_foot_delta(name, speed, touchdown(up)))
+                             lambda speed, up: table_delta(speed, touchdown(up)))
 
     def is_broad(self, p: dict) -> bool:
         """The broad jump's thrust (0.15/0.20/0.45 s extension, triggered by the leaning COM) for
@@ -208,7 +208,7 @@ class Leap(Sequence):
             # the lean's push: the plan's own (a row measured with its own) over the run's, else the constant
             push = cfg.get("lean_push", p.get("lean_push", 0.0)) or constants.commanded_lean_push
             command = self.flight_command(p, constants, delta, landing["foot_lead_time"], push,
-                                          landing["delta_from_drop"] > 0.5)
+                                          bool(landing["delta_from_drop"]))
             support = SupportGeometry(ctx.model, prefix=ctx.actor.prefix)
             origin = support.points(ctx.data)
             origin = np.array([*origin[:, :2].mean(axis=0), float(origin[:, 2].min())])
