@@ -2429,7 +2429,9 @@ balanced):
   / 3 over the three: as `high_down_region`'s flights from T0 0.48 s, the deepest pair's flight less the forefoot's earlier
   touchdown), so T0 0.3-**0.46** s: fresh seed 3007 **11 / 12** (the miss (0.523 m, a 0.493 m box, 0.501 s: T0 0.300 s)
   8.9 cm long, the shallowest crouch's edge) - inside the kept bounds 39 / 41 over the four. Kept: a fourth box of
-  `low_down_regions`, heights 0.4-0.75 m, T0 0.3-0.46 s, target_x 0.5-0.7 m.
+  `low_down_regions`, heights 0.4-0.75 m, T0 0.3-0.46 s, target_x 0.5-0.7 m (of seed 29's 20,000 box draws 249 refused before are
+  offered by it, every one offered before keeps its way, `commanded_way`: its T0 lies between the push's and the near
+  long row's, and the down rows before it are checked first).
 - far, traced first: the shallow crouch's row to 1.9 m (T0 0.3-0.42 s, from 1.45 m), seed 3001 **3 / 6** - two
   misses' aims ran to `aim_range`'s 2.5 m and landed at most 1.78 / 1.76 m for 1.894 / 1.573 m (his straight row's forward
   speed; at the cap the same settings ran again, up to 4 identical trials), (1.576 m, a 0.738 m box) fell on the target at
