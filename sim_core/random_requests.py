@@ -466,7 +466,9 @@ def main(argv=None) -> int:
                f"offered (where one of its measured jumps landed balanced at the measured heights on both sides, "
                f"{HEIGHT_REACH * 100:.0f} cm apart, within the tolerances interpolated; or where its commanded take-off's "
                f"box regions hold it - down_region, high_down_region, a straight row's <row>_onto_region / <row>_down_region (long_onto_region, "
-               f"long_down_region, near_long_down_region, ...): the same lift-off on flat ground lands in its commanded region or that row's region; low_down_regions: a lower lift-off by a shallower "
+               f"long_down_region, near_long_down_region, ...): the same lift-off on flat ground lands in its commanded region or that row's region; <row>_high_onto_region: "
+               f"the same lift-off lands within that row's forward distances with a higher lift-off than the row flies "
+               f"(within the take-off); low_down_regions: a lower lift-off by a shallower "
                f"crouch; push_down_regions: lower still, within a forward speed; planned as a commanded target): {box_text} of those targets "
                f"({SHARE_DRAWS} uniform draws). " if box_shares else "")
             + ("Commanded targets (--commanded) are drawn uniformly in the commanded region of each character "

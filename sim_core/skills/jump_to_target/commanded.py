@@ -123,6 +123,12 @@ Fig. 6 with his thrust slowed for his strength, tools/scale_commanded.py and doc
   ``<row>_onto_settings`` / ``<row>_down_settings`` (optional) over that row's settings onto / down from a box (the man's deep rows: the arms held back in
   their deepest crouches, whose hands touched the box before the lift-off; docs/jump_to_target.md "The man onto boxes by
   his near and deep long rows");
+- ``<row>_high_onto_region`` (optional, the keys of ``long_onto_region``, with ``<row>_high_onto_settings`` and
+  ``<row>_high_onto_crouch_by_air_time``): onto a box with a higher lift-off than the straight row ``<row>`` flies on
+  flat ground (T0 beyond its region's air times): the flat equivalent's landing in that row's region (target_x,
+  target_y), T0 in the box's own ``flat_air_time``, flown by that row with ``<row>_high_onto_settings`` over it and its
+  own crouch pairs (way_body: the man's deep rows with the thrust's damping lowered and the arms' swing smaller, whose
+  hands touched a high box's edge in the take-off; docs/jump_to_target.md "The man onto higher boxes");
 - ``tucked_onto_region`` (optional, with the long row and ``tucked_onto_settings``): the keys of ``long_onto_region`` for a
   box nearer than it, flown by the long row with ``tucked_onto_settings`` over its settings (tucked_onto_body: the arms held
   back in the crouch, ``crouch_arms``: leaning on to a box whose front edge is ~0.4 m ahead of the feet, the hands
@@ -188,7 +194,8 @@ def _rows(body: dict):
     for key, pairs in body.items():
         if key.endswith("crouch_by_air_time"):
             for k, height in enumerate(pairs.get("crouch_height", [])):
-                yield f"{key} {k}", {"crouch_height": height}
+                yield f"{key} {k}", {"crouch_height": height,
+                                     **({"thrust_damping": pairs["thrust_damping"][k]} if "thrust_damping" in pairs else {})}
     for k, angle in enumerate(body.get("turn_headings", {}).get("turn_angle", [])):
         yield f"turn_headings {k}", {"turn_angle": angle}
     for k, scale in enumerate(body.get("quarter_lines", {}).get("turn_first", [])):
@@ -243,11 +250,13 @@ def commanded_settings(body: dict, air_time: float, aim: float, height: float = 
     """The settings of a commanded jump aimed at ``aim`` m forward with the crouch of ``air_time`` s
     (its flat-ground air time): the table's ``settings`` (down a box, ``height`` < 0, with its
     ``down_settings``) with the commanded take-off on, ``flight_target_x`` the aim and the crouch height
-    interpolated in ``crouch_by_air_time`` (held beyond its ends)."""
+    interpolated in ``crouch_by_air_time`` (held beyond its ends; and the thrust's damping where the pairs have a
+    ``thrust_damping`` column: a higher lift-off from the same crouch)."""
     pairs = body["crouch_by_air_time"]
     return {**body["settings"], **(body.get("down_settings", {}) if height < 0.0 else {}), "commanded_takeoff": 1.0,
             "flight_target_x": float(aim),
-            "crouch_height": float(np.interp(air_time, pairs["air_time"], pairs["crouch_height"]))}
+            **{key: float(np.interp(air_time, pairs["air_time"], pairs[key]))       # the pairs' columns but the air time
+               for key in ("crouch_height", "thrust_damping") if key in pairs}}
 
 
 def over(under: dict, body: dict, settings: str | None = None, pairs: str | None = None) -> dict:
@@ -337,9 +346,13 @@ TURNED_WAYS = ("turned", "turned_long", "turned_long_short", "turned_near_long",
 
 def way_body(body: dict, way: str) -> dict:
     """The table as the plan of a request that commanded_way (or box_way) sends ``way`` reads it: the row that flies it
-    (long_body, near_long_body, mid_long_body, low_down_body, push_down_body, turned_long_body, deep_long_body, short_body,
+    ("<row>_high_onto": that row with its ``<way>_settings`` and ``<way>_crouch_by_air_time``; long_body, near_long_body, mid_long_body, low_down_body, push_down_body, turned_long_body, deep_long_body, short_body,
     near_deep_long_body, mid_deep_long_body; straight ahead a row the table lacks flies as the table's own settings), else
     the table as it is."""
+    if way.endswith("_high_onto") and way.removesuffix("_high_onto") in STRAIGHT_WAYS:
+        # onto a box by a straight row with a higher lift-off (box_way): that row, its ``<way>_settings`` and crouch pairs
+        return over(way_body(body, way.removesuffix("_high_onto")), body, f"{way}_settings" if f"{way}_settings" in body else None,
+                    f"{way}_crouch_by_air_time" if f"{way}_crouch_by_air_time" in body else None)
     row = way.rsplit("_", 1)[0]
     if way.endswith(("_down", "_onto")) and row in STRAIGHT_WAYS:
         # onto or down from a box by a straight row (box_way): flown by that row, its ``<way>_settings`` over it if any
@@ -443,7 +456,8 @@ def box_way(body: dict, target, air_time: float) -> str | None:
     its ``low_down_regions``: "low_down" (low_down_body); in one of its straight rows' regions (``long_region``, ...,
     STRAIGHT_WAYS) with them in that row's ``<row>_down_region`` / ``<row>_onto_region``: "<row>_down" / "<row>_onto" (flown
     by that row, way_body; e.g. "long_down" / "long_onto", the long row, long_body), in ``tucked_onto_region``:
-    "tucked_onto" (tucked_onto_body); down from a box after all those, the height, T0 and the target's forward speed
+    "tucked_onto" (tucked_onto_body); onto a box, the flat equivalent's landing in a straight row's region and T0 in its
+    ``<row>_high_onto_region``'s own flat_air_time (the height too): "<row>_high_onto" (way_body); down from a box after all those, the height, T0 and the target's forward speed
     (x / air time) in one of its ``push_down_regions``: "push_down" (push_down_body); else None."""
     z, asked = float(target[2]), float(air_time)
     x, air_time = flat_equivalent(target, air_time)
@@ -453,7 +467,8 @@ def box_way(body: dict, target, air_time: float) -> str | None:
             *((f"{row}_down", f"{row}_region", body.get(f"{row}_down_region")) for row in STRAIGHT_WAYS),
             *(("push_down", None, box) for box in body.get("push_down_regions", ()))) if z < 0.0 \
         else (*((f"{row}_onto", f"{row}_region", body.get(f"{row}_onto_region")) for row in STRAIGHT_WAYS),
-              ("tucked_onto", "long_region", body.get("tucked_onto_region")))
+              ("tucked_onto", "long_region", body.get("tucked_onto_region")),
+              *((f"{row}_high_onto", f"{row}_region", body.get(f"{row}_high_onto_region")) for row in STRAIGHT_WAYS))
     def within(box: dict, key: str, value: float) -> bool:       # an optional bound holds when absent
         low, high = box.get(key, (-math.inf, math.inf))
         return low <= value <= high
@@ -464,7 +479,8 @@ def box_way(body: dict, target, air_time: float) -> str | None:
                 and within(box, "target_x", float(target[0])) and within(box, "flat_air_time", air_time)
                 and within(box, "flat_target_x", x) and within(box, "target_air_time", float(asked))
                 and within(box, "target_speed", float(target[0]) / float(asked))
-                and all(within(region, k, v) for k, v in values.items())):
+                and all(within(region, k, v) for k, v in values.items()
+                        if not (k == "air_time" and way.endswith("_high_onto")))):   # a higher lift-off: T0 its own
             return way
     return None
 
@@ -555,9 +571,12 @@ def commanded_limit(character: str, z: float = 0.0) -> str | None:
     parts += [("flat", f"{words} {(_flat if key.removesuffix('_region') in STRAIGHT_WAYS else _turned)(body[key])}")
               for key, words in FLAT_REGION_WORDS if body.get(key)]
     boxes = (*((f"{row}_onto_region", "onto", "+", row) for row in STRAIGHT_WAYS), ("tucked_onto_region", "onto", "+", "long"),
+             *((f"{row}_high_onto_region", "onto", "+", row) for row in STRAIGHT_WAYS),
              *((f"{row}_down_region", "down from", "-", row) for row in STRAIGHT_WAYS))
     for key, way, sign, row in boxes:
         if body.get(key):
             landing = "the long air times' region" if row == "long" else f"the {row.replace('_', ' ')} row's region"
+            if key.endswith("_high_onto_region"):     # the row's landings, its own (higher) lift-off's air times
+                landing = f"the {row.replace('_', ' ')} row's target_x {_span(body[f'{row}_region'], 'target_x', 'm')[9:]} (a higher lift-off)"
             parts.append(("onto" if sign == "+" else "down", _box(body[key], way, landing, sign) + ")"))
     return ", and ".join(text for k, (of, text) in enumerate(parts) if k == 0 or of == kind)

@@ -204,8 +204,15 @@ _ARRAYS: dict = {}
 
 def in_region(character: str, target, air_time: float) -> bool:
     """Whether the request is offered: in the measured jumps' region (offered) or in the commanded
-    take-off's (commanded.commanded_offers)."""
-    return offered(character, target, air_time) or commanded_offers(character, target, air_time)
+    take-off's (commanded_in_region)."""
+    return offered(character, target, air_time) or commanded_in_region(character, target, air_time)
+
+
+def commanded_in_region(character: str, target, air_time: float) -> bool:
+    """Whether the commanded take-off offers the request (commanded.commanded_offers) within the character's take-off
+    (takeoff_refusal: a row onto higher boxes, ``<row>_high_onto_region``, reaches T0 beyond the lift-offs measured at
+    the faster forward speeds)."""
+    return commanded_offers(character, target, air_time) and takeoff_refusal(character, target, air_time) is None
 
 
 def mode(character: str, target, air_time: float) -> str | None:
@@ -214,7 +221,7 @@ def mode(character: str, target, air_time: float) -> str | None:
     in its own), or None (refused: region_refusal says why)."""
     if model(character) is None or offered(character, target, air_time):
         return "measured"
-    return "commanded" if commanded_offers(character, target, air_time) else None
+    return "commanded" if commanded_in_region(character, target, air_time) else None
 
 
 def takeoff_capacity(character: str, key: str) -> float:
@@ -289,7 +296,7 @@ def region_refusal(character: str, target, air_time: float) -> str | None:
     x), the air times offered at x, or the lateral offsets offered at x in that air time; and the
     nearest measured balanced jump; and the commanded take-off's limits where the character has them."""
     refusal = measured_refusal(character, target, air_time)
-    if refusal is None or commanded_offers(character, target, air_time):
+    if refusal is None or commanded_in_region(character, target, air_time):
         return None
     beyond = takeoff_refusal(character, target, air_time)
     if beyond is not None:      # onto a box beyond the body's take-off: that limit alone
