@@ -2461,8 +2461,11 @@ ground ..."). `tools/scale_commanded.py` carries settings from one body to anoth
 `down_settings`; it derives no region (each row's bounds are measured on the body), so her rows were measured, not
 scaled. Tests: tests/test_jump_region.py checks her `down_settings` in every way down from a box and the new bounds and
 refusals (no simulation) and plans and runs the report's first draw beyond each widened row (`push_down` above 0.4 m,
-`low_down` above 0.6 m; slow). Not done: her T0 below 0.25 s (22 % of her down targets: her shallowest crouch's lift-off
-flies long, a take-off question); faster than 2.4 m/s at T0 0.25-0.28 s and beyond 2.5 m/s at 0.28-0.4 s from the higher
+`low_down` above 0.6 m; slow). Measured once and not kept: `push_down_regions` down to T0 0.2 s (2.0-2.4 m/s, 0.25-0.75
+m boxes), draws at T0 0.2-0.25 s seed 3041 **9 / 12** - the three misses (T0 0.209-0.229 s, 2.31-2.37 m/s, from 0.51-0.72
+m boxes) toppled off the box at each of 5 aims (airborne 0.05-0.06 s, landed behind the start) and the hits flew up to
+0.046 s long: her shallowest crouch's take-off, not the landing. Not done: her T0 below 0.25 s (22 % of her down
+targets, above: a take-off question); faster than 2.4 m/s at T0 0.25-0.28 s and beyond 2.5 m/s at 0.28-0.4 s from the higher
 boxes; T0 0.49-0.52 s (between `down_region` and her long row); the long row down from a box (its aim, above).
 
 ![commanded vs achieved landing point](jump_to_target.png)
