@@ -401,9 +401,9 @@ def test_a_random_target_of_the_man_down_from_a_box_by_his_near_long_row_lands_b
 
 def test_a_target_down_from_a_box_with_a_lower_lift_off_is_offered_by_its_forward_speed_and_refused_beyond():
     """The table's push_down_regions: down from a box where the lift-off flies below the shallow crouch's on flat ground
-    (the man's T0 0.1-0.3 s from 0.25-0.75 m boxes, his lean push 10; the woman's T0 0.25-0.28 s from 0.25-0.75 m boxes - to 0.4 m before her landing for a drop),
+    (the man's T0 0.1-0.3 s from 0.25-0.75 m boxes, his lean push 10; the woman's T0 0.25-0.28 s from 0.25-0.75 m boxes - to 0.4 m and from 2.0 m/s before her landing for a drop),
     bounded by the target's forward speed x / air time (the man's 1.55-3.6 m/s - to 2.2 m/s before the landing for a
-    drop, down_settings, faster his landings fell; beyond 3.6 m/s his aims miss - the woman's 2.0-2.4 m/s; slower the aim
+    drop, down_settings, faster his landings fell; beyond 3.6 m/s his aims miss - the woman's 1.6-2.4 m/s; slower the aim
     overshot); the rows before keep their targets; beyond, refused in one line naming it. No simulation."""
     from sim_core.skills.jump_to_target.commanded import commanded_way, push_down_body, table
     assert commanded_way("man", (0.85, 0.0, -0.6), 0.45) == "push_down"          # T0 0.18 s at 1.89 m/s
@@ -422,8 +422,10 @@ def test_a_target_down_from_a_box_with_a_lower_lift_off_is_offered_by_its_forwar
     text = region_refusal("man", (1.7, 0.0, -0.6), 0.45)
     assert text and "\n" not in text and "down from a box 0.25-0.75 m high at a forward speed of 1.55-3.6 m/s " \
         "(target_x / air_time) where the lift-off would fly 0.1-0.3 s on flat ground" in text
+    assert commanded_way("woman", (0.8, 0.0, -0.4), 0.45) == "push_down"          # T0 0.27 s at 1.78 m/s: slower, new
+    assert commanded_way("woman", (0.66, 0.0, -0.4), 0.45) is None                # 1.47 m/s: not measured
     text = region_refusal("woman", (1.35, 0.0, -0.7), 0.53)
-    assert text and "\n" not in text and "down from a box 0.25-0.75 m high at a forward speed of 2-2.4 m/s " \
+    assert text and "\n" not in text and "down from a box 0.25-0.75 m high at a forward speed of 1.6-2.4 m/s " \
         "(target_x / air_time) where the lift-off would fly 0.25-0.28 s on flat ground" in text
 
 
