@@ -2544,7 +2544,9 @@ run by `random_requests.evaluate`, budget 24):
   (7.7-13.1 cm off), every target to T0 0.768 s landed; so T0 **0.72-0.76 s**: fresh seeds 3005 **11 / 12** (the miss a
   0.591 m box in 0.519 s, fell) and 3007 **9 / 12** (the misses 0.526, 0.582 and 0.6 m boxes in 0.516-0.531 s, fell, 21-25
   cm off); of boxes above 0.52 m over the four seeds 4 / 10 landed, to 0.52 m at T0 to 0.76 s 26 / 26; so boxes **0.25-0.5 m** (her onto
-  rows' height): fresh seed 3009 **12 / 12** (0.28-0.47 m boxes at 0.92-1.25 m).
+  rows' height): fresh seed 3009 **12 / 12** (0.28-0.47 m boxes at 0.92-1.25 m). As a user's box requests (`python -m
+  sim_core report random --seed 3021 --jumps 0 --leaps 0 --broad 0 --boxes 20 --characters woman --budget 24 --workers 1`):
+  **20 / 20**, three by the new row ((1.246 m, a 0.382 m box, 0.611 s), (0.964, 0.433, 0.587), (0.941, 0.487, 0.59)).
 Kept: heights 0.25-0.5 m, target_x 0.92-1.6 m, T0 0.72-0.76 s, within her take-off (`region.commanded_in_region`); a target
 outside is refused in one line (`commanded_limit`: "... and onto a box 0.25-0.5 m high at target_x 0.92-1.6 m where the same
 lift-off on flat ground would land in the long row's target_x 0.5-1.6 m (a higher lift-off) in 0.72-0.76 s ..."). Her share
