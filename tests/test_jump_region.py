@@ -164,7 +164,9 @@ def test_a_target_outside_both_regions_is_refused_naming_both(monkeypatch):
                          "lift-off on flat ground would land in the long air times' region in 0.52-0.66 s "
                          "(T0 = air_time + 2 height / (g air_time)), and onto a box 0.25-0.5 m high at target_x 0.55-0.85 m "
                          "where the same lift-off on flat ground would land in the long air times' region in 0.52-0.7 s "
-                         "(T0 = air_time + 2 height / (g air_time))")
+                         "(T0 = air_time + 2 height / (g air_time)), and onto a box 0.25-0.5 m high at target_x 0.92-1.6 m "
+                         "where the same lift-off on flat ground would land in the long row's target_x 0.5-1.6 m (a higher "
+                         "lift-off) in 0.72-0.76 s (T0 = air_time + 2 height / (g air_time))")
     beyond = region_refusal("woman", (1.2, 0.0, 0.7), 0.45)     # onto a box beyond her take-off: that limit alone
     assert beyond.startswith("target (1.2, 0, 0.7) m in air_time=0.45 s is beyond the woman's take-off")
     down = region_refusal("woman", (1.5, 0.0, -0.7), 0.45)      # down from one: the down regions, no turned one
@@ -631,6 +633,45 @@ def test_a_random_target_of_the_man_onto_a_higher_box_lands_as_planned(way):
     result, plan = planned_and_run(box)
     assert plan["settings"]["commanded_takeoff"] == 1.0 and plan["settings"]["arm_swing"] == 1.0
     assert plan["settings"]["thrust_damping"] < table_settings_damping("man")
+    assert_run_as_planned(result, plan)
+
+
+def test_the_woman_onto_higher_boxes_by_her_long_row_with_a_higher_lift_off_and_beyond_it_refused():
+    """Her `long_high_onto_region` (issue 29): onto a 0.25-0.5 m box at target_x 0.92-1.6 m whose lift-off flies T0
+    0.72-0.76 s on flat ground, beyond her long row's onto region (0.66 s), the flat equivalent's landing in her long
+    row's region; flown by the long row at its deepest crouch (0.45 m) with the thrust's damping lowered by the air time
+    (the crouch pairs' ``thrust_damping`` column); within her take-off alone; a target outside refused in one line
+    naming it (no simulation)."""
+    from sim_core.skills.jump_to_target.commanded import commanded_settings, commanded_way, table, way_body
+    from sim_core.skills.jump_to_target.region import takeoff_refusal
+    assert commanded_way("woman", (1.1, 0.0, 0.4), 0.6) == "long_high_onto"     # T0 0.74 s, flat landing 1.35 m
+    assert commanded_way("woman", (1.2, 0.0, 0.25), 0.55) == "long_onto"       # T0 0.64 s: the row as it was
+    assert commanded_way("woman", (1.0, 0.0, 0.5), 0.6) is None      # T0 0.77 s: flown short (0.71-0.74 s) or fell
+    assert commanded_way("woman", (0.85, 0.0, 0.45), 0.6) is None    # nearer than 0.92 m at T0 0.75 s: not measured
+    assert commanded_way("woman", (0.95, 0.0, 0.56), 0.53) is None   # a 0.56 m box at T0 0.75 s: higher than 0.5 m fell
+    body = table("woman")
+    row = way_body(body, "long_high_onto")
+    low, high = (commanded_settings(row, t, 1.0) for t in (0.72, 0.76))
+    assert low["crouch_height"] == high["crouch_height"] == 0.45                  # her deepest crouch
+    assert high["thrust_damping"] < low["thrust_damping"] < body["settings"]["thrust_damping"]
+    assert way_body(body, "long_onto")["settings"]["thrust_damping"] == body["settings"]["thrust_damping"]
+    assert takeoff_refusal("woman", (1.4, 0.0, 0.5), 0.55) is not None          # beyond her take-off: not offered
+    assert not in_region("woman", (1.4, 0.0, 0.5), 0.55)
+    text = region_refusal("woman", (1.0, 0.0, 0.5), 0.6)
+    assert text and "\n" not in text and ("onto a box 0.25-0.5 m high at target_x 0.92-1.6 m where the same lift-off on "
+                                           "flat ground would land in the long row's target_x 0.5-1.6 m (a higher "
+                                           "lift-off) in 0.72-0.76 s") in text
+
+
+@pytest.mark.slow
+def test_a_random_target_of_the_woman_onto_a_higher_box_lands_as_planned():
+    """The first of the report's box draws (seed SEED) in her long row onto higher boxes, planned with the long row at
+    its deepest crouch and the lowered damping, and run as a user's request: within the tolerances, balanced, as its
+    plan's trial landed."""
+    box = first_commanded_box_draw("woman", "long_high_onto", count=400)
+    result, plan = planned_and_run(box)
+    assert plan["settings"]["commanded_takeoff"] == 1.0 and plan["settings"]["crouch_height"] == 0.45
+    assert plan["settings"]["thrust_damping"] < table_settings_damping("woman")
     assert_run_as_planned(result, plan)
 
 
