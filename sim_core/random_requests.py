@@ -133,11 +133,12 @@ def draw_requests(seed: int, characters, jumps: int, leaps: int, broads: int, bo
     boxes_rng = np.random.default_rng((seed, BOX_STREAM))
     for character in characters:
         drawn += [Draw("box", character, draw_box_jump(boxes_rng, character)) for _ in range(boxes)]
-    from .skills.jump_to_target.commanded import table
+    from .skills.jump_to_target.commanded import SIDEWAYS_WAYS, table
     # the commanded take-off's regions, each from its own stream, for the characters whose table has the region
     for skill, count, stream, regions, draw in (("commanded", commanded, COMMANDED_STREAM, ("region",), draw_commanded),
                                                ("turned", turned, TURNED_STREAM, ("turned_region",), draw_turned),
-                                               ("sideways", sideways, SIDEWAYS_STREAM, ("sideways_region",), draw_sideways),
+                                               ("sideways", sideways, SIDEWAYS_STREAM,
+                                                tuple(f"{way}_region" for way in SIDEWAYS_WAYS), draw_sideways),
                                                ("long", long, LONG_STREAM, ("long_region",), draw_long),
                                                ("turned_long", turned_long, TURNED_LONG_STREAM,
                                                 tuple(f"{way}_region" for way in TURNED_LONG_WAYS), draw_turned_long),
@@ -152,18 +153,20 @@ def draw_requests(seed: int, characters, jumps: int, leaps: int, broads: int, bo
 
 def draw_sideways(rng, character: str) -> tuple:
     """A jump target to the side (issue 29's left and right jumps), left or right equally likely, its distance,
-    bearing and air time uniform in the character's sideways commanded region (the table's sideways_region),
-    drawn again until commanded.commanded_way flies it "sideways"; as (target_x, target_y, air_time)."""
-    from .skills.jump_to_target.commanded import commanded_way, table
-    region = table(character)["sideways_region"]
+    bearing and air time uniform over the character's sideways commanded regions (the table's ``sideways_region``: the
+    quarter turn, then the short row; ``sideways_<row>_region``: then a long row), drawn again until
+    commanded.commanded_way flies it one of SIDEWAYS_WAYS; as (target_x, target_y, air_time)."""
+    from .skills.jump_to_target.commanded import SIDEWAYS_WAYS, commanded_way, table
+    regions = [table(character)[f"{way}_region"] for way in SIDEWAYS_WAYS if f"{way}_region" in table(character)]
+    bounds = {k: (min(r[k][0] for r in regions), max(r[k][1] for r in regions)) for k in ("distance", "bearing", "air_time")}
     for _ in range(REGION_DRAWS):
-        distance, bearing, air_time = (float(rng.uniform(*region[k])) for k in ("distance", "bearing", "air_time"))
+        distance, bearing, air_time = (float(rng.uniform(*bounds[k])) for k in ("distance", "bearing", "air_time"))
         side = float(rng.choice((-1.0, 1.0)))
         values = tuple(round(v, DRAW_DECIMALS) for v in (distance * math.cos(bearing), side * distance * math.sin(bearing),
                                                           air_time))
-        if commanded_way(character, values[:2], values[2]) == "sideways":
+        if commanded_way(character, values[:2], values[2]) in SIDEWAYS_WAYS:
             return values
-    raise ParameterError(f"no target of the {character}'s sideways commanded region in {REGION_DRAWS} draws")
+    raise ParameterError(f"no target of the {character}'s sideways commanded regions in {REGION_DRAWS} draws")
 
 
 def draw_turned(rng, character: str, ways: tuple = ("turned",)) -> tuple:

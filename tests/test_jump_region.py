@@ -135,7 +135,7 @@ def test_random_targets_in_the_commanded_region_are_planned_commanded_and_land_b
     results, lines, plans, c = all_planned_and_run(character, draws, tmp_path)
     assert len(plans) == COMMANDED_TARGETS
     assert all(p["settings"]["commanded_takeoff"] == 1.0 and "flight_target_x" in p["settings"] for p in plans)
-    assert all(p["trials"] <= c.aim_trials + c.landing_trials - 1 + len(c.landing_leads) for p in plans)
+    assert all(p["trials"] <= c.aim_trials + c.landing_trials - 1 + len(c.landing_leads) + c.landing_aims for p in plans)
     assert sum(r["passed"] for r in results) >= COMMANDED_TARGETS - 1, "\n".join(lines)
     assert max(r["seconds"] for r in results) <= 60, "\n".join(lines)
 
@@ -153,6 +153,8 @@ def test_a_target_outside_both_regions_is_refused_naming_both(monkeypatch):
                          "target_y -0.02-0.02 m, air_time 0.4-0.52 s, and turned first for a distance of 0.7-1.25 m "
                          "at a bearing of 0-26 deg to either side, air_time 0.4-0.48 s, and turned a quarter "
                          "first for a distance of 1-1.2 m at a bearing of 87-90 deg to either side, air_time 0.4-0.44 s, "
+                         "and turned a quarter first with long air times for a distance of 1-1.6 m at a bearing of "
+                         "87-90 deg to either side, air_time 0.44-0.7 s, "
                          "and for long air times (the leap's vertical thrust) on flat ground for target_x 0.5-1.6 m, "
                          "target_y -0.02-0.02 m, air_time 0.52-0.7 s, and turned first with long air times for a "
                          "distance of 0.5-1.6 m at a bearing of 0-34 deg to either side, air_time 0.52-0.7 s, and turned "
@@ -189,7 +191,7 @@ def turned_long_judged(character: str, draws, store) -> list[dict]:
     miss allowed) in at most 60 s each; returns the stored plans."""
     results, lines, plans, c = all_planned_and_run(character, draws, store)
     assert all(p["settings"]["vertical_thrust"] == 1.0 and p["settings"]["turn_angle"] != 0.0 for p in plans)
-    assert all(p["trials"] <= c.turn_aim_trials + c.landing_trials - 1 + len(c.landing_leads) for p in plans)
+    assert all(p["trials"] <= c.turn_aim_trials + c.landing_trials - 1 + len(c.landing_leads) + c.landing_aims for p in plans)
     assert sum(r["passed"] for r in results) >= len(draws) - 1, "\n".join(lines)
     assert max(r["seconds"] for r in results) <= 60, "\n".join(lines)
     return plans
@@ -738,7 +740,7 @@ def test_random_lateral_targets_turn_first_and_land_balanced(character, tmp_path
     assert all(commanded_way(character, d.values[:2], d.values[2]) == "turned" for d in draws)
     results, lines, plans, c = all_planned_and_run(character, draws, tmp_path)
     assert len(plans) == TURNED_TARGETS and all(p["settings"]["turn_angle"] != 0.0 for p in plans)
-    assert all(p["trials"] <= c.turn_aim_trials + c.landing_trials - 1 + len(c.landing_leads) for p in plans)
+    assert all(p["trials"] <= c.turn_aim_trials + c.landing_trials - 1 + len(c.landing_leads) + c.landing_aims for p in plans)
     assert sum(r["passed"] for r in results) >= TURNED_TARGETS - 1, "\n".join(lines)
     assert max(r["seconds"] for r in results) <= 60, "\n".join(lines)
 
@@ -826,17 +828,46 @@ def test_sideways_targets_turn_a_quarter_first_by_the_measured_line_nearest():
     assert commanded_way("woman", (0.0, middle[0]), middle[1]) == commanded_way("woman", (0.0, -middle[0]), middle[1]) \
         == "sideways"
     assert commanded_way("woman", (0.0, region["distance"][1] + 0.05), middle[1]) is None
-    assert commanded_way("woman", (0.0, middle[0]), region["air_time"][1] + 0.05) is None
+    assert commanded_way("woman", (0.0, middle[0]), region["air_time"][1] + 0.05) == "sideways_long"   # the long row's
     assert commanded_way("man", (0.0, middle[0]), middle[1]) is None          # the man's table has no sideways_region
     k = random.Random(SEED).choice([i for i, stood in enumerate(rows["stood"]) if stood])     # one seeded row
     row = quarter_line("woman", rows["turn_first"][k])
     assert all(abs(row[name] - rows[name][k]) < 1e-4 for name in ("heading", "feet_x", "feet_y", "line", "stood"))
     ahead = (rows["feet_x"][k] + math.cos(rows["line"][k]), rows["feet_y"][k] + math.sin(rows["line"][k]))
     assert turn_for_point(body, ahead) == rows["turn_first"][k]
-    draw, = draw_requests(SEED, ["man", "woman"], 0, 0, 0, sideways=1)        # planned and run as a user's request
+    draw = first_sideways_draw("sideways")                                    # planned and run as a user's request
     result, plan = planned_and_run(draw)
     assert plan["settings"]["turn_first"] != 0.0 and plan["settings"]["commanded_takeoff"] == 1.0
     assert result["passed"], result_line(result)
+
+
+def first_sideways_draw(way, count=40):
+    """The first of the report's sideways draws of the woman (seed SEED, the first ``count``) flown ``way``."""
+    from sim_core.skills.jump_to_target.commanded import commanded_way
+    return next(d for d in draw_requests(SEED, ["woman"], 0, 0, 0, sideways=count)
+                if commanded_way("woman", d.values[:2], d.values[2]) == way)
+
+
+@pytest.mark.slow
+def test_sideways_targets_at_longer_air_times_turn_a_quarter_then_fly_the_long_row():
+    """Straight to the side 1.0-1.6 m at 0.44-0.7 s (the woman's sideways_long_region): planned with the quarter turn
+    (turn_first) steered by its lines as flown, then the long row (the vertical thrust: way_body "sideways_long" reads
+    the table as "turned_long" does); a seeded draw planned and run as a user's request; the man is not offered it,
+    nor the woman beyond its bounds (refused in one line naming the region)."""
+    from sim_core.skills.jump_to_target.commanded import commanded_way, table, way_body
+    body = table("woman")
+    region = body["sideways_long_region"]
+    assert region["distance"] == [1.0, 1.6] and region["air_time"][1] == 0.7
+    assert way_body(body, "sideways_long") == way_body(body, "turned_long")
+    assert commanded_way("woman", (0.0, 1.45), 0.6) == commanded_way("woman", (0.0, -1.45), 0.6) == "sideways_long"
+    assert commanded_way("woman", (0.0, 1.45), 0.42) is None and commanded_way("woman", (0.0, 1.7), 0.6) is None
+    assert commanded_way("man", (0.0, 1.45), 0.6) is None
+    text = region_refusal("woman", (0.0, 1.7), 0.6)
+    assert "\n" not in text and "turned a quarter first with long air times for a distance of 1-1.6 m" in text
+    draw = first_sideways_draw("sideways_long")
+    result, plan = planned_and_run(draw)
+    assert plan["settings"]["turn_first"] != 0.0 and plan["settings"]["vertical_thrust"] == 1.0
+    assert_run_as_planned(result, plan)
 
 
 LONG_TARGETS = 3            # random targets in a character's long air times' region, outside its measured jumps' region
@@ -871,7 +902,7 @@ def test_random_long_air_times_are_flown_by_the_vertical_thrust_and_land_balance
     results, lines, plans, c = all_planned_and_run(character, draws, tmp_path)
     assert len(plans) == LONG_TARGETS
     assert all(p["settings"]["vertical_thrust"] == 1.0 and p["settings"]["commanded_takeoff"] == 1.0 for p in plans)
-    assert all(p["trials"] <= c.aim_trials + c.landing_trials - 1 + len(c.landing_leads) for p in plans)
+    assert all(p["trials"] <= c.aim_trials + c.landing_trials - 1 + len(c.landing_leads) + c.landing_aims for p in plans)
     assert sum(r["passed"] for r in results) >= LONG_TARGETS - 1, "\n".join(lines)
     assert max(r["seconds"] for r in results) <= 60, "\n".join(lines)
 
@@ -931,7 +962,7 @@ def test_a_jump_that_fell_at_every_placement_is_tried_with_the_feet_led_later_an
                                      "air_time": 0.55}
         trials = Trials(trial, 40)
         trials.run(base)
-        return landed_plan("woman", trials, 40, judge, c), ran
+        return landed_plan("woman", (1.0, 0.0), trials, 40, judge, c), ran
 
     plan, ran = planned(lambda s: s["landing_foot_lead_time"] == lead + c.landing_leads[-1])
     assert plan["found"] and len(ran) == c.landing_trials + len(c.landing_leads)
@@ -943,6 +974,44 @@ def test_a_jump_that_fell_at_every_placement_is_tried_with_the_feet_led_later_an
     assert plan["found"] and len(ran) == 2 and ran[-1]["landing_foot_lead_time"] == lead
     plan, ran = planned(lambda s: False)                                    # none stands: the placements and leads
     assert not plan["found"] and len(ran) == c.landing_trials + len(c.landing_leads)
+
+
+def test_a_jump_that_stood_off_the_target_is_flown_again_aimed_by_its_miss():
+    """The landing's last step (planning/commanded.py reaim): where no trial landed balanced on the target, the
+    balanced one nearest it is flown again with its flight target moved by its miss, forward and to the side, at most
+    landing_aims jumps, and only while the last one stood (docs/jump_to_target.md, "Straight to the side with the long
+    row"). A stand-in trial whose landing falls short of its flight target by a fixed miss, no simulation."""
+    from sim_core.planning.commanded import landed_plan
+    from sim_core.planning.trials import Trials
+    from sim_core.skills.jump_to_target.commanded import planner_constants, table
+    c = planner_constants("woman")
+    assert c.landing_aims >= 1 and planner_constants("man").landing_aims >= 1
+    target, short = (0.03, -1.3), (0.02, 0.07)          # the trial lands this much behind its flight target
+    base = {**table("woman")["settings"], "commanded_takeoff": 1.0, "flight_target_x": target[0],
+            "flight_target_y": target[1], "crouch_height": 0.6}
+    judge = lambda m: ((on := math.hypot(m["landing"][0] - target[0], m["landing"][1] - target[1]) <= 0.05),
+                       on and m["outcome"] == "success")
+
+    def planned(stands):
+        ran = []
+
+        def trial(settings):
+            ran.append(settings)
+            landing = (settings["flight_target_x"] - short[0], settings["flight_target_y"] + short[1])
+            return 0.01 * len(ran), {"outcome": "success" if stands(settings) else "fell", "landing": landing,
+                                     "air_time": 0.55}
+        trials = Trials(trial, 40)
+        trials.run(base)
+        return landed_plan("woman", target, trials, 40, judge, c), ran
+
+    plan, ran = planned(lambda s: True)
+    assert plan["found"] and len(ran) == 2
+    assert (ran[1]["flight_target_x"], ran[1]["flight_target_y"]) == pytest.approx(
+        (target[0] + short[0], target[1] - short[1]))
+    plan, ran = planned(lambda s: s is ran[0])              # the moved jump fell: no more
+    assert not plan["found"] and len(ran) == 2
+    plan, ran = planned(lambda s: False)                    # nothing stood: nothing to move
+    assert not plan["found"] and len(ran) == 1
 
 
 TURNED_LONG_TARGETS = 3     # random targets in a character's turned long air times' region, outside its measured jumps'
@@ -1080,7 +1149,7 @@ def test_random_targets_of_the_mans_mid_long_row_land_balanced(tmp_path):
     push = table("man")["mid_long_settings"]["lean_push"]
     assert all(p["settings"]["vertical_thrust"] == 1.0 and p["settings"]["lean_push"] == push
                and p["settings"]["turn_angle"] != 0.0 for p in plans)
-    assert all(p["trials"] <= c.turn_aim_trials + c.landing_trials - 1 + len(c.landing_leads) for p in plans)
+    assert all(p["trials"] <= c.turn_aim_trials + c.landing_trials - 1 + len(c.landing_leads) + c.landing_aims for p in plans)
     assert sum(r["passed"] for r in results) >= MID_LONG_TARGETS - 1, "\n".join(lines)
     assert max(r["seconds"] for r in results) <= 60, "\n".join(lines)
 

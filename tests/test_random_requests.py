@@ -85,16 +85,17 @@ def test_box_draws_are_in_range_in_the_region_and_leave_the_other_draws_as_they_
 
 
 def test_sideways_draws_are_the_womans_to_either_side_in_her_sideways_region():
-    from sim_core.skills.jump_to_target.commanded import commanded_way, table
+    from sim_core.skills.jump_to_target.commanded import SIDEWAYS_WAYS, commanded_way, table
     plain = draw_requests(1, ["man", "woman"], 2, 1, 1)
     drawn = draw_requests(1, ["man", "woman"], 2, 1, 1, sideways=6)
     assert drawn[:len(plain)] == plain                       # their own stream: the other draws unchanged
     side = drawn[len(plain):]
     assert [d.character for d in side] == ["woman"] * 6 and all(d.skill == "sideways" for d in side)  # the man: none
-    region = table("woman")["sideways_region"]
     for d in side:
         x, y, t = d.values
-        assert commanded_way("woman", (x, y), t) == "sideways" and x >= 0.0
+        way = commanded_way("woman", (x, y), t)
+        assert way in SIDEWAYS_WAYS and x >= 0.0
+        region = table("woman")[f"{way}_region"]
         assert region["distance"][0] - 1e-3 <= abs(y) <= region["distance"][1] and region["air_time"][0] <= t <= region["air_time"][1]
     assert {y > 0 for _, y, _ in (d.values for d in side)} == {True, False}     # left and right
 

@@ -767,7 +767,7 @@ def vertical_table(strength: str) -> str:
 FLIGHT_TARGET_X = Parameter("flight_target_x", "m", 1.0, -2.5, 2.5,
                             "commanded take-off (low_level, commanded_takeoff=1): the feet land this far forward of the "
                             "middle of the feet at the start")
-FLIGHT_TARGET_Y = Parameter("flight_target_y", "m", 0.0, -2.0, 2.0,
+FLIGHT_TARGET_Y = Parameter("flight_target_y", "m", 0.0, -2.5, 2.5,
                             "commanded take-off: the feet land this far to the left (+) of the middle of the feet at the start")
 TURN_ANGLE = Parameter("turn_angle", "rad", 0.0, -1.2, 1.2,
                        "before the leap one hop turns the body about the vertical by about this much (counter-clockwise "

@@ -18,7 +18,8 @@ a few simulated jumps, not a search over the leap's settings:
    (planning.land.candidates), at most ``landing_trials`` placements in all; where every placement fell, the same
    jump with its ``landing_foot_lead_time`` moved by each of the table's ``landing_leads`` in turn (the feet led
    later: the woman's turned long row fell on the target at its shallow crouches); the first that ends balanced on the
-   target is the plan.
+   target is the plan. Where none did, the balanced trial nearest the target is flown again with its flight target
+   moved by its miss, at most ``landing_aims`` jumps (reaim).
 
 A long air time on flat ground, in the table's ``long_region`` beyond its ``region``, or onto or down from a box
 where the flat equivalent lies there (``long_onto_region``, ``long_down_region``): the same aim with the table read
@@ -39,7 +40,8 @@ within ``aim_tolerance`` to the side, its aim by a secant on its own jumps (stee
 heading wanted moved by the landing's bearing missed over the table's ``turn_slope``, from ``turn_gain`` x the bearing). A target straight to the side, in its
 ``sideways_region``, the same with the quarter turn (the leap's ``turn_first``, two hops) and its lines
 (``quarter_lines``; the turn chosen anew after each jump, the target moved against the landings' misses to the side so
-far). A target to the side at a long air time, in its ``turned_long_region``: the same hop and
+far); in its ``sideways_<row>_region``, the quarter turn and then the row ``turned_<row>`` flies (way_body), steered as
+the hop's lines are (steer_by_lines over ``quarter_lines``). A target to the side at a long air time, in its ``turned_long_region``: the same hop and
 aim with the table read by turned_long_body (the long row flown after the hop, with the table's
 ``turned_long_settings`` over it); in its ``turned_near_long_region``, the near long row after the hop
 (near_long_body); in its ``turned_mid_long_region``, the mid long row after the hop (mid_long_body); in its
@@ -47,7 +49,7 @@ aim with the table read by turned_long_body (the long row flown after the hop, w
 hop (deep_long_body); in its ``turned_far_short_region`` / ``turned_near_short_region`` (and straight ahead
 ``far_short_region`` / ``near_short_region``), the long / near long row at its shallowest crouches (short_body).
 
-At most min(budget, aim_trials + landing_trials - 1 + len(landing_leads)) jumps (turned: turn_aim_trials in place of
+At most min(budget, aim_trials + landing_trials - 1 + len(landing_leads) + landing_aims) jumps (turned: turn_aim_trials in place of
 aim_trials);
 the plan is the best trial (found or
 not: of those found, else of all, the lowest cost), as plan_from_model's. The seed-free steps make
@@ -93,7 +95,7 @@ def plan_commanded(character: str, target, air_time: float, trial, budget: int, 
         return plan_turned(character, target, air_time, trial, budget, judge, progress, cancelled, body, c, way)
     body = way_body(body, way)
     x = float(target[0])
-    bound = min(budget, c.aim_trials + c.landing_trials - 1 + len(c.landing_leads))
+    bound = min(budget, c.aim_trials + c.landing_trials - 1 + len(c.landing_leads) + c.landing_aims)
     trials = Trials(trial, bound, progress, cancelled)
     tried, run_trial = trials.tried, trials.run
 
@@ -111,10 +113,10 @@ def plan_commanded(character: str, target, air_time: float, trial, budget: int, 
         aims.append(min(max(aims[-1] - miss / slope, c.aim_range[0]), c.aim_range[1]))
         rate = secant(air_aims, flown, c.aim_slope_floor, 1.0)     # definition: the first step as flown
         air_aims.append(air_aims[-1] - late / rate)
-    return landed_plan(character, trials, bound, judge, c)
+    return landed_plan(character, target, trials, bound, judge, c)
 
 
-def landed_plan(character: str, trials: Trials, bound: int, judge: Callable, c) -> dict:
+def landed_plan(character: str, target, trials: Trials, bound: int, judge: Callable, c) -> dict:
     """The landing from the arriving state (the module's 2) after the aim's ``trials``, and the plan."""
     tried, run_trial = trials.tried, trials.run
     found = any(judge(e[3])[1] for e in tried)
@@ -131,8 +133,29 @@ def landed_plan(character: str, trials: Trials, bound: int, judge: Callable, c) 
             for lead in c.landing_leads[:max(bound - len(tried), 0)]:
                 if judge(run_trial({**base, "landing_foot_lead_time": base["landing_foot_lead_time"] + lead}))[1]:
                     break
+    reaim(target, trials, bound, judge, c)
     cost, _, settings, measured = min(tried, key=lambda e: (not judge(e[3])[1], e[0], e[1]))   # found first
     return {"settings": settings, "measured": measured, "trials": len(tried), "found": bool(judge(measured)[1])}
+
+
+def reaim(target, trials: Trials, bound: int, judge: Callable, c) -> None:
+    """Where no trial has landed balanced on the target (the landing's placements and leads spent too): the balanced
+    trial nearest the target flown again with its flight target moved by its miss, forward and to the side (a placement
+    or lead that stood moved the landing with it: the woman's quarter turn's 7-12 cm), at most ``landing_aims`` jumps,
+    while the last one stood and the move is new."""
+    x, y = float(target[0]), float(target[1])
+    tried = trials.tried
+    for _ in range(min(c.landing_aims, max(bound - len(tried), 0))):
+        stood = [e for e in tried if e[3]["outcome"] == "success" and all(map(math.isfinite, e[3]["landing"]))]
+        if any(judge(e[3])[1] for e in tried) or not stood:
+            return
+        _, _, base, measured = min(stood, key=lambda e: math.hypot(e[3]["landing"][0] - x, e[3]["landing"][1] - y))
+        moved = dict(base)
+        for key, miss in (("flight_target_x", x - measured["landing"][0]), ("flight_target_y", y - measured["landing"][1])):
+            knob = LEAP_SETTINGS.by_name[key]
+            moved[key] = min(max(base.get(key, knob.default) + miss, knob.minimum), knob.maximum)
+        if any(moved == e[2] for e in tried) or trials.run(moved)["outcome"] != "success":
+            return
 
 
 def plan_turned(character: str, target, air_time: float, trial, budget: int, judge: Callable,
@@ -146,14 +169,14 @@ def plan_turned(character: str, target, air_time: float, trial, budget: int, jud
     x, y = float(target[0]), float(target[1])
     distance, bearing = math.hypot(x, y), math.atan2(y, x)
     along, side = (math.cos(bearing), math.sin(bearing)), (-math.sin(bearing), math.cos(bearing))
-    bound = min(budget, c.turn_aim_trials + c.landing_trials - 1 + len(c.landing_leads))
+    bound = min(budget, c.turn_aim_trials + c.landing_trials - 1 + len(c.landing_leads) + c.landing_aims)
     trials = Trials(trial, bound, progress, cancelled)
     aims, reached, headings, bearings, air_aims, flown = [distance], [], [c.turn_gain * bearing], [], [float(air_time)], []
     # the aim stays in its range and its flight target in the leap's (a quarter turn's aim is all target_y)
     top = min(c.aim_range[1], LEAP_SETTINGS.by_name["flight_target_y"].maximum / max(abs(math.sin(bearing)), 1e-3))
-    lines = "quarter_lines" if way == "sideways" else ("turn_lines" if "turn_lines" in body else None)
-    if lines == "turn_lines":
-        return steer_by_lines(character, (x, y), air_time, trials, bound, judge, body, c, way, top)
+    lines = "quarter_lines" if way.startswith("sideways") else ("turn_lines" if "turn_lines" in body else None)
+    if lines == "turn_lines" or way.startswith("sideways_"):    # a long row after the turn: each turn's line as flown
+        return steer_by_lines(character, (x, y), air_time, trials, bound, judge, body, c, way, top, lines)
     shift = 0.0         # by the lines: the landings' misses to the side so far (m, along ``side``)
     good = None         # the aim, heading and air time aimed of the nearest trial that flew
     grounded = set()    # the turns whose jump did not fly
@@ -196,11 +219,11 @@ def plan_turned(character: str, target, air_time: float, trial, budget: int, jud
         shift += off
         rate = secant(air_aims, flown, c.aim_slope_floor, 1.0)     # definition: the first step as flown
         air_aims.append(air_aims[-1] - late / rate)
-    return landed_plan(character, trials, bound, judge, c)
+    return landed_plan(character, target, trials, bound, judge, c)
 
 
 def steer_by_lines(character: str, target, air_time: float, trials: Trials, bound: int, judge: Callable, body: dict, c,
-                   way: str, top: float) -> dict:
+                   way: str, top: float, lines: str = "turn_lines") -> dict:
     """plan_turned's aim where the table has the hop's lines (``turn_lines``), with a model of each hop from the jumps
     already flown: each hop's line moved to where its jump landed (line_offset: the long row after a hop does not fly
     the line measured with the short row, and each hop misses its own way, so one shift for all - the hop chosen
@@ -217,7 +240,7 @@ def steer_by_lines(character: str, target, air_time: float, trials: Trials, boun
     air_aims, times = [float(air_time)], []
     good = None         # the aim and air time of the nearest trial that flew
     grounded = set()    # the turns whose jump did not fly
-    turn, aim = turn_for_point(body, target, grounded, "turn_lines"), distance
+    turn, aim = turn_for_point(body, target, grounded, lines), distance
     while True:
         if turn is None:        # every measured line that stood and leads ahead was tried
             if not trials.tried:
@@ -228,7 +251,7 @@ def steer_by_lines(character: str, target, air_time: float, trials: Trials, boun
             grounded.add(turn)
             if len(trials.tried) >= min(c.turn_aim_trials, bound):
                 break
-            turn = turn_for_point(body, target, grounded, "turn_lines", *_errors(flown))
+            turn = turn_for_point(body, target, grounded, lines, *_errors(flown))
             if good is not None:
                 aim, air_aims[-1] = (aim + good[0]) / 2.0, (air_aims[-1] + good[1]) / 2.0
             continue
@@ -237,21 +260,21 @@ def steer_by_lines(character: str, target, air_time: float, trials: Trials, boun
         if good is None or error < good[2]:
             good = (aim, air_aims[-1], error)
         reached = lx * along[0] + ly * along[1]
-        flown.append((turn, aim, reached, line_offset(body, turn, (lx, ly))[1]))
+        flown.append((turn, aim, reached, line_offset(body, turn, (lx, ly), lines)[1]))
         times.append(measured["air_time"])
         miss, late = reached - distance, times[-1] - air_time
-        side = line_offset(body, turn, target)[1] - flown[-1][3]       # the target left of where the hop flew
+        side = line_offset(body, turn, target, lines)[1] - flown[-1][3]       # the target left of where the hop flew
         if (judge(measured)[1] or (math.hypot(miss, side) <= c.aim_tolerance and abs(late) <= c.aim_time_tolerance)
                 or len(trials.tried) >= min(c.turn_aim_trials, bound) or not (math.isfinite(miss) and math.isfinite(side))):
             break
         if abs(side) > c.aim_tolerance:
-            turn = turn_for_point(body, target, grounded, "turn_lines", *_errors(flown))
+            turn = turn_for_point(body, target, grounded, lines, *_errors(flown))
         same = [f for f in flown if f[0] == turn] or flown[-1:]        # the hop's own jumps (never flown: the last)
         slope = secant([f[1] for f in same], [f[2] for f in same], c.aim_slope_floor, c.aim_slope)
         aim = min(max(same[-1][1] - (same[-1][2] - distance) / slope, c.aim_range[0]), top)
         rate = secant(air_aims, times, c.aim_slope_floor, 1.0)     # definition: the first step as flown
         air_aims.append(air_aims[-1] - late / rate)
-    return landed_plan(character, trials, bound, judge, c)
+    return landed_plan(character, target, trials, bound, judge, c)
 
 
 def _errors(flown: list) -> tuple[dict, float]:

@@ -39,7 +39,7 @@ from ..leap.behaviour import Leap
 from ...errors import ParameterError
 from ...schema import Parameter, Schema
 from ...tuned import TableType, characters_of, load, register as register_table, require_calibrated, table_path
-from .region import AIR_TIME_TOLERANCE, LANDING_TOLERANCE, model, region_refusal, takeoff_capacity
+from .region import AIR_TIME_TOLERANCE, LANDING_TOLERANCE, mode, model, region_refusal, takeoff_capacity
 
 # where the COM is, relative to the middle of the feet, at take-off and at touchdown of a broad
 # jump (measured on the man's calibrated 1.0 m jump; used only for the path estimate)
@@ -361,7 +361,16 @@ def stored_plans(character: str) -> list[dict]:
 
 
 def stored_plan(character: str, request: dict) -> dict | None:
-    return plan_row({"plans": stored_plans(character)}, request)
+    """The plan stored for ``request``, or None; a search stored as not found is no plan where the commanded take-off
+    offers the request now (region.mode "commanded": planned anew, as an unplanned one; e.g. the woman's sideways
+    searches of 0.6 s, offered by her sideways_long_region since)."""
+    plan = plan_row({"plans": stored_plans(character)}, request)
+    if (plan is not None and not plan["found"] and not request.get("obstacle_height", 0.0)
+            and request.get("strength", "human") == "human"
+            and mode(character, tuple(request.get(k, 0.0) for k in ("target_x", "target_y", "target_z")),
+                     request["air_time"]) == "commanded"):
+        return None
+    return plan
 
 
 REQUEST_KEYS = ("target_x", "target_y", "target_z", "obstacle_height", "air_time", "windup_time")

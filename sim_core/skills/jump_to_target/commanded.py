@@ -28,6 +28,9 @@ Fig. 6 with his thrust slowed for his strength, tools/scale_commanded.py and doc
   ``turn_first``, ``heading``, ``feet_x``, ``feet_y``, ``line``, ``stood``) is each ``turn_first`` of a fine grid
   measured (planning/turn_map.py quarter_line): where the hops left the feet, and the line a commanded jump from
   there flew along (rad), whether it stood (turn_for_point);
+- ``sideways_<row>_region`` (optional, with ``quarter_lines``; "sideways_<row>" one of SIDEWAYS_WAYS): the same keys;
+  straight to the side beyond ``sideways_region``, flown by the quarter turn and then the row the turned way ``turned_<row>`` flies (way_body: "long" turned_long_body, "near_long" near_long_body, ...), its
+  turn and aim steered by the quarter lines as flown (planning/commanded.py steer_by_lines);
 - ``turn_lines`` (optional, with ``turned_region``): the same for the hop's ``turn_angle`` (columns ``turn_angle``,
   ``heading``, ``feet_x``, ``feet_y``, ``line``, ``stood``): each hop of ``turn_headings`` turned up to ~40 deg and two
   commanded jumps along its heading after it (planning/turn_map.py hop_line: ``line`` through the middle of their
@@ -175,6 +178,10 @@ COMMANDED_CONSTANTS = Schema(
     constant("landing_leads", "s", -0.2, 0.2,
              "where every placement fell, the same jump with its landing_foot_lead_time moved by each of these in turn "
              "(none: no more), one jump each beyond the placements"),
+    constant("landing_aims", "count", 0, 5,
+             "where no jump has landed balanced on the target after the placements and leads, the balanced one nearest "
+             "it flown again with its flight target moved by its miss (forward and to the side): at most this many "
+             "jumps (0: none)"),
 )
 CONSTANTS = read_constants("jump_commanded", COMMANDED_CONSTANTS)
 
@@ -339,9 +346,12 @@ def mid_deep_long_body(body: dict) -> dict:
 
 STRAIGHT_WAYS = ("long", "near_long", "deep_long", "far_short", "near_short", "near_deep_long",
                  "mid_deep_long")   # commanded_way's ways beyond ``region``, straight ahead
+SIDEWAYS_WAYS = ("sideways", "sideways_long")
+# the ways straight to the side: the quarter turn, then the table's own row ("sideways") or the row the turned way
+# "turned_<row>" flies (way_body)
 TURNED_WAYS = ("turned", "turned_long", "turned_long_short", "turned_near_long", "turned_mid_long", "turned_deep_long",
                "turned_far_short", "turned_near_short", "turned_near_deep_long", "turned_mid_deep_long",
-               "sideways")      # the ways commanded_way names that turn first (planning.commanded.plan_turned)
+               *SIDEWAYS_WAYS)      # the ways commanded_way names that turn first (planning.commanded.plan_turned)
 
 
 def way_body(body: dict, way: str) -> dict:
@@ -369,6 +379,8 @@ def way_body(body: dict, way: str) -> dict:
         return push_down_body(body)  # a lower one still: its own settings (the lean push) and crouch pairs
     if way == "deep_long" and "deep_long_crouch_by_air_time" in body:
         return deep_long_body(body)  # the longest air times: the long row at its deepest crouches
+    if way.startswith("sideways_"):
+        return way_body(body, way.replace("sideways", "turned", 1))     # the quarter turn, then the turned row's row
     if way in ("turned_long", "turned_long_short"):
         return turned_long_body(body)
     if way == "turned_near_long":
@@ -399,7 +411,7 @@ def turned_settings(body: dict, air_time: float, aim: float, bearing: float, tur
     ``bearing`` (rad, + to the left), after a turn of ``turn_angle`` ``turn`` rad (``way`` "sideways": the
     quarter turn's ``turn_first`` ``turn``)."""
     return {**commanded_settings(body, air_time, aim * math.cos(bearing)),
-            "flight_target_y": float(aim * math.sin(bearing)), "turn_first" if way == "sideways" else "turn_angle": float(turn)}
+            "flight_target_y": float(aim * math.sin(bearing)), "turn_first" if way.startswith("sideways") else "turn_angle": float(turn)}
 
 
 JUMP_COMMANDED_TABLE = register_table(TableType("jump_commanded", with_constants(LEAP_SETTINGS, COMMANDED_CONSTANTS),
@@ -427,7 +439,7 @@ def commanded_way(character: str, target, air_time: float) -> str | None:
     after the hop), "mid_deep_long" / "turned_mid_deep_long" inside its ``mid_deep_long_region`` /
     ``turned_mid_deep_long_region`` (the long row with the mid deep row's push at its deepest crouches), "sideways" inside
     its ``sideways_region`` (the
-    quarter turn first); down
+    quarter turn first), "sideways_<row>" inside its ``sideways_<row>_region`` (the quarter turn, then the turned row's row); down
     from a box (z < 0) or onto one (z > 0) as box_way says; else None."""
     body = table(character)
     z = float(target[2]) if len(target) > 2 else 0.0
@@ -534,6 +546,7 @@ def _low_box(box: dict, why: str) -> str:
 FLAT_REGION_WORDS = (       # commanded_limit's words for each region on flat ground beyond ``region``, in its order
     ("turned_region", "turned first"),
     ("sideways_region", "turned a quarter first"),
+    ("sideways_long_region", "turned a quarter first with long air times"),
     ("long_region", "for long air times (the leap's vertical thrust) on flat ground for"),
     ("near_long_region", "for long air times nearer (the vertical thrust with its own lean push) for"),
     ("deep_long_region", "for the longest air times (the vertical thrust's deepest crouches) for"),
