@@ -269,9 +269,9 @@ def commanded_settings(body: dict, air_time: float, aim: float, height: float = 
 def over(under: dict, body: dict, settings: str | None = None, pairs: str | None = None) -> dict:
     """A row of the table ``body`` as its plan reads it: the table ``under`` (the row it stands on: the table itself, or
     another row) with ``body``'s ``settings`` section over its settings and ``body``'s ``pairs`` as its crouch pairs
-    (commanded_settings); each optional (None: ``under``'s kept)."""
-    return {**under, **({"settings": {**under["settings"], **body[settings]}} if settings else {}),
-            **({"crouch_by_air_time": body[pairs]} if pairs else {})}
+    (commanded_settings); each optional (None, or a section the table lacks: ``under``'s kept)."""
+    return {**under, **({"settings": {**under["settings"], **body[settings]}} if settings in body else {}),
+            **({"crouch_by_air_time": body[pairs]} if pairs in body else {})}
 
 
 def long_body(body: dict) -> dict:
@@ -308,7 +308,7 @@ def push_down_body(body: dict) -> dict:
 def turned_long_body(body: dict) -> dict:
     """The table as the turned long air times' plan reads it (``turned_long_region``): long_body with
     ``turned_long_settings`` (where the table has them) over its settings."""
-    return over(long_body(body), body, "turned_long_settings" if "turned_long_settings" in body else None)
+    return over(long_body(body), body, "turned_long_settings")
 
 
 def deep_long_body(body: dict, turned: bool = False) -> dict:
@@ -361,12 +361,11 @@ def way_body(body: dict, way: str) -> dict:
     the table as it is."""
     if way.endswith("_high_onto") and way.removesuffix("_high_onto") in STRAIGHT_WAYS:
         # onto a box by a straight row with a higher lift-off (box_way): that row, its ``<way>_settings`` and crouch pairs
-        return over(way_body(body, way.removesuffix("_high_onto")), body, f"{way}_settings" if f"{way}_settings" in body else None,
-                    f"{way}_crouch_by_air_time" if f"{way}_crouch_by_air_time" in body else None)
+        return over(way_body(body, way.removesuffix("_high_onto")), body, f"{way}_settings", f"{way}_crouch_by_air_time")
     row = way.rsplit("_", 1)[0]
     if way.endswith(("_down", "_onto")) and row in STRAIGHT_WAYS:
         # onto or down from a box by a straight row (box_way): flown by that row, its ``<way>_settings`` over it if any
-        return over(way_body(body, row), body, f"{way}_settings" if f"{way}_settings" in body else None)
+        return over(way_body(body, row), body, f"{way}_settings")
     if way == "long" and "long_settings" in body:
         return long_body(body)      # long air times (onto or down from a box too): the vertical thrust's settings and pairs
     if way == "tucked_onto":
