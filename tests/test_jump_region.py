@@ -1014,6 +1014,26 @@ def test_a_jump_that_stood_off_the_target_is_flown_again_aimed_by_its_miss():
     assert not plan["found"] and len(ran) == 1
 
 
+def test_an_aim_held_at_its_bound_is_not_flown_again():
+    """The trials are deterministic, so an aim the planner holds at its bound (aim_range's end: a target beyond what
+    the row reaches) is not flown twice (planning/trials.py seen): the aim's step stops and its trials are left to
+    the landing (docs/jump_to_target.md: the man's far down targets ran up to four identical jumps at the 2.5 m cap).
+    A stand-in trial that lands at a third of its aim, no simulation."""
+    from sim_core.planning.commanded import plan_commanded
+    from sim_core.skills.jump_to_target.commanded import planner_constants
+    c = planner_constants("man")
+    ran = []
+
+    def trial(settings):
+        ran.append(settings)
+        return 1.0, {"outcome": "success", "landing": (settings["flight_target_x"] / 3.0, 0.0), "air_time": 0.45}
+    plan = plan_commanded("man", (1.0, 0.0, 0.0, None), 0.45, trial, 40, lambda m: (False, False))
+    assert c.aim_trials > 2 and not plan["found"]
+    aims = [s["flight_target_x"] for s in ran]
+    assert aims[0] == 1.0 and aims[-1] == c.aim_range[1] and aims.count(c.aim_range[1]) == 1 and len(ran) < c.aim_trials
+    assert all(a != b for i, a in enumerate(ran) for b in ran[:i])
+
+
 TURNED_LONG_TARGETS = 3     # random targets in a character's turned long air times' region, outside its measured jumps'
 
 

@@ -12,7 +12,9 @@ a few simulated jumps, not a search over the leap's settings:
    point is moved by a secant on where it landed (the previous two jumps' landing per commanded metre;
    below ``aim_slope_floor`` the table's ``aim_slope`` instead) and the crouch's air time by a secant on
    the air time flown (the first step as flown), until a jump lands within ``aim_tolerance`` and
-   ``aim_time_tolerance`` (or within TARGETS.md's tolerances and balanced), at most ``aim_trials`` jumps;
+   ``aim_time_tolerance`` (or within TARGETS.md's tolerances and balanced), at most ``aim_trials`` jumps, or until
+   the next aim is a jump already flown (held at a bound: ``aim_range``'s end, the crouch pairs' end; the trials are
+   deterministic, planning/trials.py seen, so its trials go to the landing);
 2. the landing from the arriving state: if the nearest jump that landed on the target fell, the same
    jump with its feet placed a landing plan step (planning.land.foot_step) more and less, two, ...
    (planning.land.candidates), at most ``landing_trials`` placements in all; where every placement fell, the same
@@ -102,7 +104,10 @@ def plan_commanded(character: str, target, air_time: float, trial, budget: int, 
     # the crouch is measured on flat ground: onto or down from a box it is the one of the same lift-off speed up
     aims, landed, air_aims, flown = [x], [], [flat_air_time(float(target[2]), float(air_time))], []
     while True:
-        measured = run_trial(commanded_settings(body, air_aims[-1], aims[-1], float(target[2])))
+        settings = commanded_settings(body, air_aims[-1], aims[-1], float(target[2]))
+        if trials.seen(settings):   # the aim held at a bound (aim_range, the crouch pairs' end): the same jump again
+            break
+        measured = run_trial(settings)
         landed.append(measured["landing"][0])
         flown.append(measured["air_time"])
         miss, late = landed[-1] - x, flown[-1] - air_time
@@ -153,8 +158,10 @@ def reaim(target, trials: Trials, bound: int, judge: Callable, c) -> None:
         moved = dict(base)
         for key, miss in (("flight_target_x", x - measured["landing"][0]), ("flight_target_y", y - measured["landing"][1])):
             knob = LEAP_SETTINGS.by_name[key]
-            moved[key] = min(max(base.get(key, knob.default) + miss, knob.minimum), knob.maximum)
-        if any(moved == e[2] for e in tried) or trials.run(moved)["outcome"] != "success":
+            value, was = min(max(base.get(key, knob.default) + miss, knob.minimum), knob.maximum), base.get(key, knob.default)
+            if value != was:        # a flight target held at its bound leaves the jump as it was (seen: not flown)
+                moved[key] = value
+        if trials.seen(moved) or trials.run(moved)["outcome"] != "success":
             return
 
 
@@ -189,7 +196,10 @@ def plan_turned(character: str, target, air_time: float, trial, budget: int, jud
             if not trials.tried:
                 raise ParameterError(f"no measured turn of the {character} leads toward ({x:g}, {y:g}) m")
             break
-        measured = trials.run(turned_settings(body, air_aims[-1], aims[-1], bearing, turn, way))
+        settings = turned_settings(body, air_aims[-1], aims[-1], bearing, turn, way)
+        if trials.seen(settings):   # the aim held at a bound: the same jump again
+            break
+        measured = trials.run(settings)
         if measured["fell_before_liftoff"] or not measured["air_time"] > 0.5 * air_time:   # definition: it did not fly
             # a trial that did not fly tells nothing of the aim: the next measured hop nearest the heading (another
             # stance to jump from), halfway back to the nearest trial that flew, not secants on it
@@ -246,7 +256,10 @@ def steer_by_lines(character: str, target, air_time: float, trials: Trials, boun
             if not trials.tried:
                 raise ParameterError(f"no measured turn of the {character} leads toward ({x:g}, {y:g}) m")
             break
-        measured = trials.run(turned_settings(body, air_aims[-1], aim, bearing, turn, way))
+        settings = turned_settings(body, air_aims[-1], aim, bearing, turn, way)
+        if trials.seen(settings):   # the aim held at a bound: the same jump again
+            break
+        measured = trials.run(settings)
         if measured["fell_before_liftoff"] or not measured["air_time"] > 0.5 * air_time:   # definition: it did not fly
             grounded.add(turn)
             if len(trials.tried) >= min(c.turn_aim_trials, bound):

@@ -278,7 +278,7 @@ def plan_from_model(character: str, target, air_time: float, trial, budget: int,
     for settings in candidates(near, target, air_time):
         if len(tried) >= min(budget, MODEL_TRIALS):
             break
-        if any(settings == t[2] for t in tried):       # the same jump measured at two heights: run once
+        if trials.seen(settings):       # the same jump measured at two heights: run once
             continue
         if found := run_trial(settings):
             break

@@ -1,7 +1,9 @@
 """The trials of one plan that runs jumps one after another (planning/jump.py's plan from the measured
 jumps, planning/commanded.py's aimed jumps): each trial's settings run through the planner's ``trial``
 (settings -> (cost, measured)), the request's cancel checked before it and its progress reported after
-it, and every trial kept in the order run."""
+it, and every trial kept in the order run. The trials are deterministic (the same settings fly the same jump, bit for
+bit): ``seen(settings)`` says whether a settings dict was run already, so a planner whose next step repeats one (an
+aim held at its range's bound) stops that step rather than spend a trial on no new information."""
 from __future__ import annotations
 
 from typing import Callable
@@ -18,6 +20,9 @@ class Trials:
                  cancelled: Callable | None = None):
         self.trial, self.bound, self.progress, self.cancelled = trial, bound, progress, cancelled
         self.tried: list[tuple] = []
+
+    def seen(self, settings: dict) -> bool:
+        return any(settings == e[2] for e in self.tried)
 
     def run(self, settings: dict) -> dict:
         if self.cancelled is not None and self.cancelled():

@@ -2459,8 +2459,17 @@ flown) ..."). Tests: tests/test_jump_region.py checks the new box's ways and ref
 the report's first draw beyond the old boxes (slow). Not done: his far down targets (above: a row between his near and
 far rows' forward speeds, 3.1-3.6 m/s at T0 0.4-0.47 s, with a landing that stands at ~3 m/s after a 0.45-0.65 m drop,
 would be the design), slower than 1.55 m/s at T0 below 0.3 s (the push overshoots), T0 0.46-0.5 s near (flown short);
-the planner reruns the same settings when the aim sits at `aim_range`'s cap (deterministic: no new information, the
-trials lost to the landing plan) - left as it is.
+the planner reran the same settings when the aim sat at `aim_range`'s cap (deterministic: no new information, the
+trials lost to the landing plan) - changed since (next paragraph).
+**A jump already flown is not flown again (issue 29, thirty-third session, 2026-12-07).** A trial is deterministic (the same
+settings fly the same jump bit for bit), so the planner's aim (`planning/commanded.py`: `plan_commanded`, `plan_turned`,
+`steer_by_lines`) stops where its next step is a jump already flown - an aim held at `aim_range`'s end or the crouch held
+at its pairs' end - and its trials go to the landing; `reaim` likewise stops where the moved flight target is held at
+its bound (it had added the flight target's default to a jump without it: the same jump under another dict), and
+`planning/jump.py`'s plan from the measured jumps asks the same `Trials.seen`. Measured first (a scratch script
+counting repeated settings in every plan's trials): seed 29's nine commanded misses of docs/random_requests.md planned
+again ran **0** repeated jumps (so their plans are as before), where the man's far down targets above had run up to four.
+tests/test_jump_region.py checks it with a stand-in trial that lands at a third of its aim (the aim reaches the cap once).
 **The man onto higher boxes: his deep rows with the thrust's damping lowered (issue 29, thirty-first session,
 2026-12-07): his onto-box targets 7.2 % -> 18.9 %, his box targets 30.3 % -> 36.2 %.** Of issue 29's onto-box targets
 (`box_region_share`'s draws, seed 29) 49 % lay within his take-off (`region.takeoff_refusal` None) and 16 % of those were
