@@ -2599,7 +2599,10 @@ rows onto higher boxes' keys). Drawn as a user's requests (a scratch script draw
 - the pairs on to T0 0.741 / 0.776 s (damping 0.3 / 0.2), the region to T0 0.76 s: seed 3105 (its draws at T0 0.7-0.76 s
   alone) **10 / 10**, fresh seeds 3106 **12 / 12** and 3107 **12 / 12**.
 Kept: heights 0.25-0.5 m, target_x 0.65-0.78 m, T0 0.6-0.76 s (the crouch pairs T0 0.626 / 0.683 / 0.721 / 0.741 / 0.776 s:
-crouch 0.6 m, damping 0.79 / 0.6 / 0.45 / 0.3 / 0.2); in it **57 / 58 (98 %)** over fresh seeds 3103-3107. A target outside is
+crouch 0.6 m, damping 0.79 / 0.6 / 0.45 / 0.3 / 0.2); in it **57 / 58 (98 %)** over fresh seeds 3103-3107. As a user's box
+requests (`python -m sim_core report random --seed 3121 --jumps 0 --leaps 0 --broad 0 --boxes 20 --characters man --budget
+24 --workers 1`): fresh seed 3121 **19 / 20**, onto 6 / 7 (none drawn in the new row; the miss (0.816 m, a 0.298 m box,
+0.446 s) the near row's onto region's, 6.8 cm long). A target outside is
 refused in one line (`commanded_limit`: "... and onto a box 0.25-0.5 m high at target_x 0.65-0.78 m where the same lift-off
 on flat ground would land in the near long row's target_x 0.5-1.3 m (a higher lift-off) in 0.6-0.76 s ..."). His share of
 issue 29's box targets (`random_requests.box_region_share('man', 29)`): 37.4 % -> **39.0 %** (onto 18.9 % -> **22.0 %**,
