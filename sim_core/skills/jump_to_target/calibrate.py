@@ -2570,6 +2570,61 @@ and the refusal (no simulation) and plans and runs the first of the report's box
 0.5 m at T0 0.72-0.76 s (fell, above), T0 above 0.76 s (flown short: a damping below 0.45 would be next, the man's 0.3
 fell), the near boxes at T0 0.7-0.76 s (the tucked row above: landed short near the box's far end).
 
+**The man onto near boxes: his near row at a shallower crouch with the thrust's damping lowered (issue 29, 2026-12-07):
+his onto-box targets 18.9 % -> 22.0 %, his box targets 37.4 % -> 39.0 %.** Of issue 29's onto-box targets
+(`box_region_share`'s draws, seed 29: 4994 of 10033 within his take-off, `region.takeoff_refusal` None) 37.9 % of those
+within were offered and 39.4 % were boxes nearer than 0.78 m (the box's front edge 0.22-0.5 m ahead of the start's feet,
+his rows' onto regions from 0.78 m; a scratch count of the same draws). Traced one jump at a time (a scratch script
+running one commanded jump with a row's settings and naming the bodies on the box from the trajectory's
+`contact_force`):
+- (0.65 m, a 0.45 m box, 0.55 s; T0 0.717 s) by the near deep row's higher lift-off as it is (crouch 0.5 m, damping 0.78,
+  the arms back, the tuck): both hands on the box's face at 1.06 s, the end of the crouch - in the 0.5 m crouch the knees
+  reach 0.28 m ahead and the hands hang by them (0.30 m; the face at 0.37 m) -, the lift-off backward (-1.04 m/s), landed
+  -0.39 m and fell. The torso more upright (`crouch_pitch` 0): the thighs on the face at 0.75 s; 0.3: the hands at 0.85 s;
+  the COM behind the feet (`com_offset` -0.05 m): no body on the box, but the lift-off backward (-1.76 m/s); a 0.55 m
+  crouch: the hands at 1.0 s. A 0.6 m crouch with the damping 0.5: no body on the box before the feet, landed 0.692 m in
+  0.495 s, balanced (0.3: 0.73 m in 0.575 s, a step) - the shallower crouch's lean is shorter (the thrust at 1.41 s, at
+  0.5-0.55 m 1.86 s) and the knees stay 0.19 m ahead;
+- the 0.6 m crouch's lift-off by the damping: onto (0.7 m, a 0.4 m box, 0.55 s) 0.79 / 0.6 / 0.45 / 0.3 flew T0 0.626 /
+  0.683 / 0.721 / 0.725 s (all balanced), onto (0.7, 0.4, 0.6) 0.3 / 0.2 0.741 / 0.776 s (balanced / a step); beyond:
+  (0.7, 0.4, 0.7; T0 0.817 s) 0.2 / 0.15 / 0.1 flew T0 0.70 / 0.725 / 0.74 s and fell, (0.75, 0.5, 0.6; T0 0.77 s) 0.2
+  skidded, 0.1 fell back;
+- nearer than 0.65 m the thighs meet the box's face in the crouch itself: (0.6, 0.4, 0.55) at 0.65 s and fell at every
+  damping 0.3-0.9, (0.62, 0.4, 0.55) at 0.73 s, fell; a 0.65 m crouch likewise ((0.58, 0.45, 0.55) and (0.55, 0.4, 0.5):
+  the thighs at 0.6-0.64 s); boxes below the knees not: (0.6, 0.3, 0.5) landed 0.709 m balanced, (0.6, 0.3, 0.6) 0.600 m,
+  (0.55, 0.3, 0.5) 0.738 m, not still.
+So the near row (`lean_push` 10) at a 0.6 m crouch with the damping by T0: `near_long_high_onto_region` (the keys of
+`long_onto_region`; `box_way` "near_long_high_onto", the flat equivalent's landing in `near_long_region`),
+`near_long_high_onto_settings` (the near deep row's higher lift-off's: `crouch_arms` -0.8, the tuck 2.0 rad for 0.5,
+`thrust_lean` -0.05, `arm_swing` 1.0) and `near_long_high_onto_crouch_by_air_time` (crouch 0.6 m; no code changed: the
+rows onto higher boxes' keys). Drawn as a user's requests (a scratch script drawing `random_requests.box_target_draw` until
+`commanded_way` gives the row and `region.mode` "commanded", each run by `random_requests.evaluate`, budget 24):
+- first attempt, 0.25-0.75 m boxes at target_x 0.62-0.78 m, T0 0.6-0.72 s (the pairs T0 0.626 / 0.683 / 0.721 s: damping
+  0.79 / 0.6 / 0.45): seed 3101 **5 / 10** - four of the five boxes above 0.5 m missed ((0.778 m, a 0.536 m box, 0.408 s)
+  0.6 cm off and fell, (0.655, 0.62, 0.407) and (0.636, 0.613, 0.422) fell, (0.628, 0.508, 0.508) landed before the box), and
+  (0.692, 0.291, 0.608; T0 0.706 s) flown 0.063 s short;
+- second, boxes 0.25-0.5 m at target_x 0.65-0.78 m, T0 0.6-0.7 s: seed 3102 **12 / 12**, fresh seeds 3103 **12 / 12** and
+  3104 **11 / 12** (the miss (0.68 m, a 0.252 m box, 0.607 s; T0 0.69 s) 2.1 cm off, flown 0.057 s short);
+- the pairs on to T0 0.741 / 0.776 s (damping 0.3 / 0.2), the region to T0 0.76 s: seed 3105 (its draws at T0 0.7-0.76 s
+  alone) **10 / 10**, fresh seeds 3106 **12 / 12** and 3107 **12 / 12**.
+Kept: heights 0.25-0.5 m, target_x 0.65-0.78 m, T0 0.6-0.76 s (the crouch pairs T0 0.626 / 0.683 / 0.721 / 0.741 / 0.776 s:
+crouch 0.6 m, damping 0.79 / 0.6 / 0.45 / 0.3 / 0.2); in it **57 / 58 (98 %)** over fresh seeds 3103-3107. As a user's box
+requests (`python -m sim_core report random --seed 3121 --jumps 0 --leaps 0 --broad 0 --boxes 20 --characters man --budget
+24 --workers 1`): fresh seed 3121 **19 / 20**, onto 6 / 7 (none drawn in the new row; the miss (0.816 m, a 0.298 m box,
+0.446 s) the near row's onto region's, 6.8 cm long). A target outside is
+refused in one line (`commanded_limit`: "... and onto a box 0.25-0.5 m high at target_x 0.65-0.78 m where the same lift-off
+on flat ground would land in the near long row's target_x 0.5-1.3 m (a higher lift-off) in 0.6-0.76 s ..."). His share of
+issue 29's box targets (`random_requests.box_region_share('man', 29)`): 37.4 % -> **39.0 %** (onto 18.9 % -> **22.0 %**,
+down 56.1 % as it was); of the onto targets within his take-off 37.9 % -> 44.2 % offered, the boxes nearer than 0.78 m
+refused 39.4 % -> 33.1 % of them. The woman's table is untouched. Tests: tests/test_jump_region.py checks the row's ways,
+settings (the crouch, the damping by T0) and the refusal (no simulation) and plans and runs the first of the report's box
+draws in it (slow); two targets the tests held refused as nearer than 0.78 m ((0.72, 0, 0.35) m and (0.7, 0, 0.35) m in 0.5
+s) are now this row's. Not done (of the onto targets within his take-off, the near boxes still refused): nearer than 0.65 m
+(21.4 %: the thighs on the box's face in the crouch; boxes below the knees, ~0.3 m, landed in single jumps above - a second
+region for them, 0.25-0.33 m at T0 0.6-0.76 s, would add 1.1 % of the onto targets; one region per row now), T0 above
+0.76 s (7.8 %: the 0.6 m crouch's lift-off ends there, above), boxes above 0.5 m (3.1 %: fell, the first attempt), T0
+below 0.6 s (0.8 %: below the 0.6 m crouch's flight at damping 0.79).
+
 **The woman down from a box with the landing for a drop: higher boxes at short air times offered (issue 29, thirtieth
 session, 2026-12-07): her box targets 28.4 % -> 31.9 % (down 43.5 % -> 50.5 %; seed 29, `random_requests.box_region_share`).**
 Her `down_settings` had kept the landing's recovery step and never flown the man's landing for a drop (above). Each of
