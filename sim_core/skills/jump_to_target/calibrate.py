@@ -2466,7 +2466,7 @@ trials lost to the landing plan) - left as it is.
 Of his down targets not offered (seed 29's 9,967 down draws) 27.4 % of all lay 1.4-1.9 m ahead; by the lift-off's
 flat-ground air time T0 = T - 2 h / (g T) and the target's forward speed x / T (a scratch map): T0 0.3-0.4 s 8.8 % (2.8-3.6
 m/s 5.8 %), T0 0.4-0.47 s 4.7 % (2.8-3.6 m/s 2.7 %), T0 0.47-0.52 s 4.0 %, T0 0.52-0.6 s 4.0 % (2.0-2.8 m/s), below 0.3 s
-faster than the push's 3.6 m/s 5.8 %. Each candidate drawn alone as before (a scratch script drawing
+faster than the push's 3.6 m/s 5.6 %. Each candidate drawn alone as before (a scratch script drawing
 `random_requests.box_target_draw` until `commanded_way` with a scratch table gives the row and `region.mode` "commanded",
 each run by `random_requests.evaluate`, budget 24, his 9 aims, every trial printed; within 5 cm and 0.05 s and balanced):
 - attempt 1, the lean push's row (`push_down_regions`' settings and pairs: his straight row with lean push 10, pairs
