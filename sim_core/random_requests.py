@@ -472,7 +472,8 @@ def main(argv=None) -> int:
                f"long_down_region, near_long_down_region, ...): the same lift-off on flat ground lands in its commanded region or that row's region; <row>_high_onto_region: "
                f"the same lift-off lands within that row's forward distances with a higher lift-off than the row flies "
                f"(within the take-off); low_down_regions: a lower lift-off by a shallower "
-               f"crouch; push_down_regions: lower still, within a forward speed; planned as a commanded target): {box_text} of those targets "
+               f"crouch; push_down_regions: lower still, within a forward speed; a straight row's <row>_down_regions (far_short_down_regions): "
+               f"that row down from the box within its boxes' heights, lift-offs and forward speeds; planned as a commanded target): {box_text} of those targets "
                f"({SHARE_DRAWS} uniform draws). " if box_shares else "")
             + ("Commanded targets (--commanded) are drawn uniformly in the commanded region of each character "
                "that has one (sim_core.skills.jump_to_target.commanded's table: the man's and the woman's) and drawn again until "

@@ -9,6 +9,7 @@ from pathlib import Path
 
 import pytest
 
+from sim_core.ballistics import flat_air_time
 from sim_core.errors import ParameterError
 from sim_core.random_requests import draw_requests, evaluate, result_line
 from sim_core.simulate import RunRequest, run
@@ -310,7 +311,8 @@ def test_a_target_down_from_a_box_with_a_low_lift_off_is_offered_by_the_shallow_
     assert commanded_way("woman", (0.6, 0.0, -0.7), 0.55) is None                 # 1.09 m/s: she fell back onto the box
     assert commanded_way("woman", (1.5, 0.0, -0.65), 0.55) is None                # 2.73 m/s: fell forward on the target
     assert commanded_way("man", (1.4, 0.0, -0.35), 0.5) == "low_down"             # T0 0.36 s
-    assert commanded_way("man", (1.6, 0.0, -0.35), 0.5) is None                   # beyond 1.45 m: the aim fell short
+    assert commanded_way("man", (1.6, 0.0, -0.35), 0.5) == "far_short_down"       # beyond 1.45 m the aim fell short: at
+    assert commanded_way("man", (1.55, 0.0, -0.3), 0.56) is None                  # 3.2 m/s the far short row's, 2.77 m/s none
     assert commanded_way("man", (0.9, 0.0, -0.6), 0.55) == "low_down"             # T0 0.33 s from a higher box
     assert commanded_way("man", (0.55, 0.0, -0.6), 0.55) == "low_down"            # near a higher box: the landing for a drop
     assert commanded_way("man", (0.45, 0.0, -0.6), 0.55) is None                  # nearer than 0.5 m: not offered
@@ -500,12 +502,63 @@ def test_a_random_target_down_from_a_box_with_a_lower_lift_off_lands_balanced(ch
     from sim_core.skills.jump_to_target.commanded import flat_equivalent, table
     box = first_commanded_box_draw(character, "push_down", count=200)
     x, z, air_time = box.values
-    row, = table(character)["push_down_regions"]
+    row = table(character)["push_down_regions"][0]         # the lower lift-off's box (the man's second: the test below)
     assert row["flat_air_time"][0] <= flat_equivalent((x, 0.0, z), air_time)[1] <= row["flat_air_time"][1]
     assert row["target_speed"][0] <= x / air_time <= row["target_speed"][1]
     result, plan = planned_and_run(box)
     assert plan["settings"]["commanded_takeoff"] == 1.0
     assert plan["settings"].get("lean_push", 0.0) == table(character)["push_down_settings"].get("lean_push", 0.0)
+    assert_run_as_planned(result, plan)
+
+
+def test_the_man_down_from_a_box_far_ahead_is_offered_by_the_push_and_the_far_short_row_by_forward_speed():
+    """The man's targets down from a box far ahead: the lean push's second box (push_down_regions: 0.25-0.6 m boxes, T0
+    0.3-0.44 s, 2.2-2.6 m/s; faster its landings fell or scattered, from higher boxes too) and his far short row's
+    far_short_down_regions (the long row at its shallowest crouches: 0.25-0.75 m boxes, T0 0.35-0.47 s, 2.9-3.6 m/s; slower
+    it overshoots, as on flat ground), both bounded by the target's forward speed alone and checked after every other way
+    down (the targets offered before keep their ways); beyond, refused in one line naming them. No simulation."""
+    from sim_core.skills.jump_to_target.commanded import commanded_settings, commanded_way, table, way_body
+    assert commanded_way("man", (1.4, 0.0, -0.55), 0.58) == "push_down"           # T0 0.39 s at 2.41 m/s
+    assert commanded_way("man", (1.5, 0.0, -0.55), 0.6) == "push_down"            # T0 0.41 s at 2.5 m/s
+    assert commanded_way("man", (1.5, 0.0, -0.5), 0.555) is None                  # 2.70 m/s: on the target and fell
+    assert commanded_way("man", (1.45, 0.0, -0.7), 0.62) is None                  # a 0.7 m box at 2.34 m/s: fell
+    assert commanded_way("man", (1.45, 0.0, -0.5), 0.6) == "down"                 # T0 0.43 s: the straight row's as before
+    assert commanded_way("man", (0.9, 0.0, -0.6), 0.55) == "low_down"             # the shallow crouch's as before
+    assert commanded_way("man", (1.75, 0.0, -0.35), 0.56) == "far_short_down"     # T0 0.43 s at 3.12 m/s
+    assert commanded_way("man", (1.9, 0.0, -0.7), 0.64) == "far_short_down"       # from a 0.7 m box at 2.97 m/s
+    assert commanded_way("man", (1.6, 0.0, -0.35), 0.56) is None                  # 2.86 m/s: the far row overshoots
+    assert commanded_way("man", (1.65, 0.0, -0.3), 0.49) == "far_short_down"      # T0 0.36 s: its shallowest crouch held
+    assert commanded_way("man", (1.6, 0.0, -0.45), 0.52) is None                  # T0 0.34 s: not measured
+    body = way_body(table("man"), "far_short_down")
+    assert body["crouch_by_air_time"] == table("man")["far_short_crouch_by_air_time"]
+    settings = commanded_settings(body, 0.43, 1.75, -0.35)
+    assert settings["lean_push"] == table("man")["long_settings"]["lean_push"] and settings["vertical_thrust"] == 1.0
+    assert settings["landing_toe_first_at_speed"] == 1.0 and settings["landing_recovery_step"] == 0.0   # down_settings
+    text = region_refusal("man", (1.6, 0.0, -0.35), 0.56)
+    assert text and "\n" not in text
+    assert "down from a box 0.25-0.6 m high at a forward speed of 2.2-2.6 m/s (target_x / air_time) where the lift-off " \
+        "would fly 0.3-0.44 s on flat ground" in text
+    assert "down from a box 0.25-0.75 m high at a forward speed of 2.9-3.6 m/s (target_x / air_time) where the lift-off " \
+        "would fly 0.35-0.47 s on flat ground (the far short row's lift-off, its own forward speed)" in text
+
+
+FAR_DOWN_ROWS = {       # the man's new boxes down from a box far ahead: the way, and which of its draws are the new box's
+    "push_down": lambda x, z, t: flat_air_time(z, t) > 0.3,       # the second box (the first: T0 0.1-0.3 s)
+    "far_short_down": lambda x, z, t: True,
+}
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("way", list(FAR_DOWN_ROWS))
+def test_a_random_target_of_the_man_down_from_a_box_far_ahead_lands_balanced(way):
+    """The first of the report's box draws for the man (seed SEED) in each new box down from a box far ahead (the lean
+    push's second box, the far short row's), planned with that row and the landing for a drop (down_settings) and run
+    as a user's request: within 5 cm and 0.05 s and balanced, as its plan was."""
+    box = first_commanded_box_draw("man", way, lambda values: FAR_DOWN_ROWS[way](*values), count=400)
+    result, plan = planned_and_run(box)
+    settings = plan["settings"]
+    assert settings["commanded_takeoff"] == 1.0 and settings["landing_toe_first_at_speed"] == 1.0
+    assert settings["lean_push"] == (10.0 if way == "push_down" else 3.0)
     assert_run_as_planned(result, plan)
 
 

@@ -2470,6 +2470,65 @@ its bound (it had added the flight target's default to a jump without it: the sa
 counting repeated settings in every plan's trials): seed 29's nine commanded misses of docs/random_requests.md planned
 again ran **0** repeated jumps (so their plans are as before), where the man's far down targets above had run up to four.
 tests/test_jump_region.py checks it with a stand-in trial that lands at a third of its aim (the aim reaches the cap once).
+**The man down from a box far ahead: his far short row at 2.9-3.6 m/s and the lean push at 2.2-2.6 m/s (issue 29,
+2026-12-07): his box targets 37.4 % -> 40.7 % (down 56.1 % -> 62.7 %; seed 29, `random_requests.box_region_share`).**
+Of his down targets not offered (seed 29's 9,967 down draws) 27.4 % of all lay 1.4-1.9 m ahead; by the lift-off's
+flat-ground air time T0 = T - 2 h / (g T) and the target's forward speed x / T (a scratch map): T0 0.3-0.4 s 8.8 % (2.8-3.6
+m/s 5.8 %), T0 0.4-0.47 s 4.7 % (2.8-3.6 m/s 2.7 %), T0 0.47-0.52 s 4.0 %, T0 0.52-0.6 s 4.0 % (2.0-2.8 m/s), below 0.3 s
+faster than the push's 3.6 m/s 5.6 %. Each candidate drawn alone as before (a scratch script drawing
+`random_requests.box_target_draw` until `commanded_way` with a scratch table gives the row and `region.mode` "commanded",
+each run by `random_requests.evaluate`, budget 24, his 9 aims, every trial printed; within 5 cm and 0.05 s and balanced):
+- attempt 1, the lean push's row (`push_down_regions`' settings and pairs: his straight row with lean push 10, pairs
+  0.27-0.525 s) in a second box at T0 0.3-0.47 s, 2.5-3.6 m/s, 0.25-0.75 m boxes: seed 3101 **6 / 12** - from 2.88 m/s
+  the aims ran to `aim_range`'s 2.5 m cap and landed at most 1.62-1.69 m for 1.57-1.81 m (the row's forward speed ends
+  near 3 m/s), and at 2.68 m/s the landings scattered for nearly the same aim (aims 2.07-2.29 m landed 1.13-1.47 m and
+  fell). Traced (the draw planned with every trial logged, its nearest trial run again and read from the trajectory's
+  `contact_force`): (1.543 m, a 0.520 m box, 0.576 s, 2.68 m/s), 11 trials, 7 fallen; the nearest (1.518 m) touches the
+  ground with the feet alone (the toes 5 ms before the heels), the COM sinks to 0.20 m over the ground (the pelvis 0.22 m),
+  passes the toes 0.3 s after the touchdown and the feet step 0.5 m forward: the landing does not take out ~2.7 m/s after
+  a 0.5 m drop.
+- attempt 2, the same row slower: 2.0-2.8 m/s seed 3102 **10 / 12** (the misses (1.711 m, T0 0.460 s) at the aim's cap
+  and (1.188 m, 2.03 m/s) fallen); 2.2-2.8 m/s fresh seeds 3103 **11 / 12**, 3104 **9 / 12** - at 2.6-2.8 m/s 15 / 20
+  over 3101-3104 (the misses on the target and fallen at every placement, or landings scattered), at 2.2-2.6 m/s every
+  draw from a box up to 0.6 m hit; 2.2-2.6 m/s fresh seeds 3105 **10 / 12** and 3106 **10 / 12** - all four misses from
+  0.64-0.73 m boxes at 1.45-1.57 m (fallen at every placement or landings scattered over 1.17-1.72 m), 17 / 21 from boxes
+  above 0.6 m over 3102-3106. Kept: a second box of `push_down_regions`, heights **0.25-0.6 m**, T0 **0.3-0.44 s**,
+  target_speed **2.2-2.6 m/s**: fresh seeds 3107 **12 / 12** and 3108 **12 / 12**; inside these bounds over 3101-3108
+  **45 / 45**. Most of it is nearer than the far band (2.2-2.6 m/s is 1.0-1.6 m at these air times: 8 of the 45 from
+  1.4 m).
+- the design changed, the row: his far short row (`far_short_region`'s: the long row, lean push 3, at its shallowest
+  crouches, `far_short_crouch_by_air_time` 0.72-0.62 m for 0.4-0.515 s; on flat ground 1.6-2.2 m in 0.4-0.52 s,
+  3.1-4.5 m/s) down from the box with his landing for a drop (`down_settings`), T0 0.4-0.47 s (a scratch table: the push
+  box's settings and pairs replaced by the far short row's): 2.8-3.6 m/s from 0.25-0.6 m boxes seed 3111 **8 / 10** - the
+  misses at 2.87-2.88 m/s overshot (aims of 0.7-1.1 m landed 1.4-1.8 m: the row leaves no slower, as on flat ground nearer
+  than 1.6 m), from 2.9 m/s 6 / 6; 2.9-3.6 m/s from 0.25-0.75 m boxes seed 3112 **11 / 12** (the miss (1.584 m, 2.98 m/s)
+  the same overshoot, 9.7 cm), from 0.6-0.75 m boxes alone seed 3113 **8 / 8**; fresh seeds 3114 **12 / 12** and 3115
+  **12 / 12** (trials a median of 5, at most 9; every landing 0.5-4.9 cm off). Why the far row's landings stand at 2.9-3.5 m/s from the
+  same boxes where the push's fell at 2.7 m/s was not traced (the take-offs differ: the vertical thrust, the arms' swing
+  1.5, no COM offset and lean push 3 against the straight row's settings and lean push 10).
+Kept: a new optional key of the table, `<row>_down_regions` (`commanded.box_way` "<row>_down", flown by that straight row
+as `<row>_down_region`'s, `way_body`; boxes with the keys of `push_down_regions`, bounded by their own bounds alone - down
+from a box the flat equivalent lands nearer than the row's region; checked after every other way down, so every target
+offered before keeps its way, and seed 29's report draws are the same up to the first the new boxes take), the man's
+`far_short_down_regions`: heights **0.25-0.75 m**, T0 **0.35-0.47 s**, target_speed **2.9-3.6 m/s** (its draws 1.5-1.9
+m ahead). Over 3111-3115 inside T0 0.4-0.47 s **49 / 50**. Below the row's shallowest pair (0.72 m: 0.40 s on flat
+ground), T0 0.34-0.4 s: with a guessed pair 0.76 m: 0.36 s (not measured on flat ground) seed 3116 **7 / 8** - its
+first trials flew 0.03-0.05 s short and the air time's secant deepened the crouch to 0.66-0.7 m, so the guessed pair
+is not what lands it; without it (the 0.72 m crouch held below 0.4 s, as `commanded_settings` holds the pairs' ends)
+from T0 0.35 s fresh seeds 3117 **11 / 12** (the miss (1.562 m, a 0.299 m box, 0.485 s: T0 0.359 s, 3.22 m/s), aims of
+0.4-0.9 m landing 1.5-1.7 m, 6.1 cm off after 20 trials: the row's slowest) and 3118 **12 / 12**. Kept: T0 from 0.35 s.
+Lower still, T0 0.3-0.35 s (the same held crouch): seeds 3119 **9 / 10** and 3120 **11 / 12**, both misses flown 0.054-0.075
+s long (T0 0.303 and 0.329 s) and five of the hits 0.037-0.050 s long, at the air time's tolerance: not offered (a
+shallower pair of the far row measured on flat ground would be the change).
+Of seed 29's down draws the new boxes offer 187 (the push's second box; 44 of them 1.4 m or further) and 477 (the far
+short row's, all 1.4-1.9 m): the far band not offered 27.4 % -> 22.1 % of the down draws. A target outside is refused in
+one line (`commanded_limit`: "... and down from a box 0.25-0.6 m high at a forward speed of 2.2-2.6 m/s (target_x /
+air_time) where the lift-off would fly 0.3-0.44 s on flat ground (the lean push's low lift-off; ...), and down from a box
+0.25-0.75 m high at a forward speed of 2.9-3.6 m/s (target_x / air_time) where the lift-off would fly 0.35-0.47 s on flat
+ground (the far short row's lift-off, its own forward speed) ..."). Tests: tests/test_jump_region.py checks the new boxes'
+ways, the far row's settings and the refusal (no simulation) and plans and runs the report's first draw in each new box
+(slow). Not done: T0 0.3-0.35 s at 2.9-3.6 m/s (above), 2.6-2.9 m/s (the push's landing falls, the far row overshoots), T0
+0.47-0.6 s far (8 %), faster than 3.6 m/s, and why the far row's landing stands where the push's fell.
 **The man onto higher boxes: his deep rows with the thrust's damping lowered (issue 29, thirty-first session,
 2026-12-07): his onto-box targets 7.2 % -> 18.9 %, his box targets 30.3 % -> 36.2 %.** Of issue 29's onto-box targets
 (`box_region_share`'s draws, seed 29) 49 % lay within his take-off (`region.takeoff_refusal` None) and 16 % of those were

@@ -88,7 +88,15 @@ Fig. 6 with his thrust slowed for his strength, tools/scale_commanded.py and doc
   shallowest crouch's), flown as ``low_down_regions``' with ``push_down_settings`` over the table's settings (the man's
   lean push 10: the thrust starts earlier in the lean, the body does not pitch off the box's edge) and
   ``push_down_crouch_by_air_time`` as the crouch pairs (push_down_body); bounded by the forward speed, where the landing
-  after the drop stood (docs/jump_to_target.md "Down from a box with a lower lift-off still");
+  after the drop stood (docs/jump_to_target.md "Down from a box with a lower lift-off still"); checked after every
+  other way down, a box may also ask T0 within the shallow crouch's where that row's aims ran short (the man's targets at
+  2.2-2.6 m/s, T0 0.3-0.44 s: docs/jump_to_target.md "The man down from a box far ahead");
+- ``<row>_down_regions`` (optional, a straight row of STRAIGHT_WAYS): boxes with the keys of ``push_down_regions``
+  (``height``, ``flat_air_time``, ``target_speed``) for a jump straight ahead down from a box flown by that row
+  (way "<row>_down", way_body, with its ``<row>_down_settings`` if any, as ``<row>_down_region``'s) where the flat
+  equivalent lands nearer than the row's own region (the drop adds the forward distance): bounded by the box's own
+  bounds alone, checked after every other way down (the man's far short row, the long row at its shallowest crouches,
+  leaves at ~2.9-3.6 m/s forward: docs/jump_to_target.md "The man down from a box far ahead");
 - ``deep_long_region``, ``turned_deep_long_region`` (optional, with the long row and ``deep_long_crouch_by_air_time``):
   the same keys as ``long_region`` / ``turned_region`` for the longest air times, flown by the long row as it is (and,
   turned, with ``turned_long_settings``) at its deepest crouches, ``deep_long_crouch_by_air_time`` (deep_long_body): the
@@ -469,14 +477,17 @@ def box_way(body: dict, target, air_time: float) -> str | None:
     by that row, way_body; e.g. "long_down" / "long_onto", the long row, long_body), in ``tucked_onto_region``:
     "tucked_onto" (tucked_onto_body); onto a box, the flat equivalent's landing in a straight row's region and T0 in its
     ``<row>_high_onto_region``'s own flat_air_time (the height too): "<row>_high_onto" (way_body); down from a box after all those, the height, T0 and the target's forward speed
-    (x / air time) in one of its ``push_down_regions``: "push_down" (push_down_body); else None."""
+    (x / air time) in one of its ``push_down_regions``: "push_down" (push_down_body); after those, the same in one of a
+    straight row's ``<row>_down_regions``: "<row>_down" (that row, way_body); else None."""
     z, asked = float(target[2]), float(air_time)
     x, air_time = flat_equivalent(target, air_time)
     values = {"target_x": x, "target_y": float(target[1]), "air_time": air_time}
     rows = (("down", "region", body.get("down_region")), ("down", "region", body.get("high_down_region")),
             *(("low_down", None, box) for box in body.get("low_down_regions", ())),
             *((f"{row}_down", f"{row}_region", body.get(f"{row}_down_region")) for row in STRAIGHT_WAYS),
-            *(("push_down", None, box) for box in body.get("push_down_regions", ()))) if z < 0.0 \
+            *(("push_down", None, box) for box in body.get("push_down_regions", ())),
+            *((f"{row}_down", None, box) for row in STRAIGHT_WAYS for box in body.get(f"{row}_down_regions", ()))) \
+        if z < 0.0 \
         else (*((f"{row}_onto", f"{row}_region", body.get(f"{row}_onto_region")) for row in STRAIGHT_WAYS),
               ("tucked_onto", "long_region", body.get("tucked_onto_region")),
               *((f"{row}_high_onto", f"{row}_region", body.get(f"{row}_high_onto_region")) for row in STRAIGHT_WAYS))
@@ -580,6 +591,8 @@ def commanded_limit(character: str, z: float = 0.0) -> str | None:
                                           "crouch's is not flown"),
                      ("push_down_regions", "the lean push's low lift-off; faster forward its landings fell or its aims missed")):
         parts += [("down", _low_box(box, why)) for box in body.get(key, ())]
+    parts += [("down", _low_box(box, f"the {row.replace('_', ' ')} row's lift-off, its own forward speed"))
+              for row in STRAIGHT_WAYS for box in body.get(f"{row}_down_regions", ())]
     parts += [("flat", f"{words} {(_flat if key.removesuffix('_region') in STRAIGHT_WAYS else _turned)(body[key])}")
               for key, words in FLAT_REGION_WORDS if body.get(key)]
     boxes = (*((f"{row}_onto_region", "onto", "+", row) for row in STRAIGHT_WAYS), ("tucked_onto_region", "onto", "+", "long"),
