@@ -2698,12 +2698,12 @@ either side, each run by `random_requests.evaluate`, budget 24; within 5 cm and 
   seed 37 **11 / 12** (the miss (1.4 m to the left, 0.577 s) on the target but 0.052 s short; 11 of its 12 draws to the
   left), fresh seed 39 **11 / 12** (7 of its 12 to the right, all landed; the miss (1.371 m to the left, 0.566 s) 5.9 cm
   off, 4.9 cm of it forward): **22 / 24 (92 %)**, a median of ~11 s to a result, worst 51 s.
-- screened (8 draws each, scratch table rows, each way's arms without their pitch feedback): his near short row (the near
+- screened (8 draws each, scratch table rows; the two deep rows with the arms without their pitch feedback): his near short row (the near
   long row's shallowest crouches, `near_short_crouch_by_air_time`) at 1.0-1.6 m in 0.4-0.5 s, seed 41 **5 / 8** - the
-  three misses at 1.51-1.57 m landed 8-12 cm short, every draw to 1.36 m landed (5 / 5); his near deep long row at
+  three misses at 1.51-1.57 m landed 8-13 cm short, every draw to 1.36 m landed (5 / 5); his near deep long row at
   1.0-1.3 m in 0.6-0.7 s, seed 43 **1 / 3** (stopped: (1.175 m, 0.675 s) 37 cm short, (1.079 m, 0.645 s) 5 cm short after
   23 jumps); his mid deep long row (lean push 4, crouches 0.5-0.525 m) at 1.3-1.6 m in 0.6-0.7 s, seed 45 **7 / 8**, fresh
-  seed 47 **5 / 9** (stopped) - every miss at 1.52-1.59 m asked 0.655-0.682 s (three fell within 6 cm of the target, two landed 14 and 57 cm short), to
+  seed 47 **5 / 9** (stopped) - every miss at 1.52-1.59 m asked 0.655-0.682 s (three fell within 7 cm of the target, two landed 14 and 57 cm short), to
   1.5 m and 0.66 s 5 / 5; so 1.3-1.5 m in 0.6-0.66 s: fresh seed 49 **11 / 12** (the miss (1.456 m to the right,
   0.651 s) 6.1 cm off after 22 jumps), with the 5 inside it before **16 / 17 (94 %)**.
 Kept: the man's `sideways_near_long_region` distance 1.0-1.3 m, bearing 87-90 deg, 0.5-0.6 s (with
