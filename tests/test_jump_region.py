@@ -935,19 +935,19 @@ def test_sideways_targets_turn_a_quarter_first_by_the_measured_line_nearest():
     assert result["passed"], result_line(result)
 
 
-def first_sideways_draw(way, count=40):
-    """The first of the report's sideways draws of the woman (seed SEED, the first ``count``) flown ``way``."""
+def first_sideways_draw(way, count=40, character="woman"):
+    """The first of the report's sideways draws of ``character`` (seed SEED, the first ``count``) flown ``way``."""
     from sim_core.skills.jump_to_target.commanded import commanded_way
-    return next(d for d in draw_requests(SEED, ["woman"], 0, 0, 0, sideways=count)
-                if commanded_way("woman", d.values[:2], d.values[2]) == way)
+    return next(d for d in draw_requests(SEED, [character], 0, 0, 0, sideways=count)
+                if commanded_way(character, d.values[:2], d.values[2]) == way)
 
 
 @pytest.mark.slow
 def test_sideways_targets_at_longer_air_times_turn_a_quarter_then_fly_the_long_row():
     """Straight to the side 1.0-1.6 m at 0.55-0.7 s (the woman's sideways_long_region): planned with the quarter turn
     (turn_first) steered by its lines as flown, then the long row (the vertical thrust: way_body "sideways_long" reads
-    the table as "turned_long" does); a seeded draw planned and run as a user's request; the man is not offered it,
-    nor the woman beyond its bounds (refused in one line naming the region)."""
+    the table as "turned_long" does); a seeded draw planned and run as a user's request; the man flies his mid long row
+    there, not it; the woman beyond its bounds is refused in one line naming the region."""
     from sim_core.skills.jump_to_target.commanded import commanded_way, table, way_body
     body = table("woman")
     region = body["sideways_long_region"]
@@ -955,12 +955,54 @@ def test_sideways_targets_at_longer_air_times_turn_a_quarter_then_fly_the_long_r
     assert way_body(body, "sideways_long") == way_body(body, "turned_long")
     assert commanded_way("woman", (0.0, 1.45), 0.6) == commanded_way("woman", (0.0, -1.45), 0.6) == "sideways_long"
     assert commanded_way("woman", (0.0, 1.45), 0.5) is None and commanded_way("woman", (0.0, 1.7), 0.6) is None
-    assert commanded_way("man", (0.0, 1.45), 0.6) is None
+    assert commanded_way("man", (0.0, 1.45), 0.6) == "sideways_mid_long"       # the man: his own row, not the long row
     text = region_refusal("woman", (0.0, 1.7), 0.6)
     assert "\n" not in text and "turned a quarter first with long air times for a distance of 1-1.6 m" in text
     draw = first_sideways_draw("sideways_long")
     result, plan = planned_and_run(draw)
     assert plan["settings"]["turn_first"] != 0.0 and plan["settings"]["vertical_thrust"] == 1.0
+    assert_run_as_planned(result, plan)
+
+
+def test_the_mans_sideways_targets_turn_a_quarter_then_fly_one_of_his_long_rows():
+    """Straight to the side 1.0-1.3 m at 0.5-0.6 s (the man's sideways_near_long_region): the quarter turn (his own
+    quarter_lines), then his near long row (way_body "sideways_near_long": the row "turned_near_long" flies, with
+    ``sideways_near_long_settings``, the landing's arms without their pitch feedback, over it); 1.3-1.6 m
+    (sideways_mid_long_region): then his mid long row; 1.3-1.5 m at 0.6-0.66 s (sideways_mid_deep_long_region): his mid
+    deep long row; beyond their bounds refused in one line naming the region (no simulation)."""
+    from sim_core.skills.jump_to_target.commanded import commanded_way, over, table, way_body
+    body = table("man")
+    region = body["sideways_near_long_region"]
+    assert region["distance"] == [1.0, 1.3] and region["air_time"] == [0.5, 0.6] and len(body["quarter_lines"]["stood"]) > 0
+    assert way_body(body, "sideways_near_long") == over(way_body(body, "turned_near_long"), body, "sideways_near_long_settings")
+    assert way_body(body, "sideways_near_long")["settings"]["landing_arm_pitch_gain"] == 0.0
+    assert commanded_way("man", (0.0, 1.15), 0.55) == commanded_way("man", (0.0, -1.15), 0.55) == "sideways_near_long"
+    assert commanded_way("man", (0.0, 1.15), 0.62) is None and commanded_way("man", (0.0, -1.15), 0.45) is None
+    assert body["sideways_mid_long_region"]["distance"] == [1.3, 1.6] and body["sideways_mid_long_region"]["air_time"] == [0.5, 0.6]
+    assert way_body(body, "sideways_mid_long") == way_body(body, "turned_mid_long")
+    assert commanded_way("man", (0.0, 1.45), 0.55) == commanded_way("man", (0.0, -1.45), 0.55) == "sideways_mid_long"
+    assert commanded_way("man", (0.0, 1.45), 0.63) == commanded_way("man", (0.0, -1.45), 0.63) == "sideways_mid_deep_long"
+    assert way_body(body, "sideways_mid_deep_long") == over(way_body(body, "turned_mid_deep_long"), body,
+                                                            "sideways_mid_deep_long_settings")
+    assert commanded_way("man", (0.0, 1.55), 0.63) is None and commanded_way("man", (0.0, -1.65), 0.55) is None
+    assert commanded_way("man", (0.0, 1.15), 0.63) is None and commanded_way("man", (0.0, 1.45), 0.67) is None
+    text = region_refusal("man", (0.0, 1.15), 0.62)
+    assert "\n" not in text and "turned a quarter first with long air times nearer for a distance of 1-1.3 m" in text
+    assert "turned a quarter first with long air times in the middle for a distance of 1.3-1.6 m" in text
+    assert "turned a quarter first with the longest air times in the middle for a distance of 1.3-1.5 m" in text
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("way, push", (("sideways_near_long", 10.0), ("sideways_mid_long", 5.0),
+                                       ("sideways_mid_deep_long", 4.0)))
+def test_a_seeded_sideways_draw_of_the_man_is_flown_by_the_quarter_turn_and_his_long_row(way, push):
+    """The first of the report's sideways draws of the man (seed SEED) in each of his sideways rows planned and run as a
+    user's request: the quarter turn, then the near / mid / mid deep long row (the vertical thrust, its lean push), landing within
+    the tolerances and balanced where its plan's trial did."""
+    draw = first_sideways_draw(way, character="man")
+    result, plan = planned_and_run(draw)
+    assert plan["settings"]["turn_first"] != 0.0 and plan["settings"]["vertical_thrust"] == 1.0
+    assert plan["settings"]["lean_push"] == push and plan["settings"]["landing_arm_pitch_gain"] == 0.0
     assert_run_as_planned(result, plan)
 
 

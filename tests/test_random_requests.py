@@ -84,20 +84,21 @@ def test_box_draws_are_in_range_in_the_region_and_leave_the_other_draws_as_they_
     assert 0.0 < every < 1.0 and 0.0 < onto and 0.0 < down
 
 
-def test_sideways_draws_are_the_womans_to_either_side_in_her_sideways_region():
+def test_sideways_draws_are_each_characters_to_either_side_in_its_sideways_regions():
     from sim_core.skills.jump_to_target.commanded import SIDEWAYS_WAYS, commanded_way, table
     plain = draw_requests(1, ["man", "woman"], 2, 1, 1)
     drawn = draw_requests(1, ["man", "woman"], 2, 1, 1, sideways=6)
     assert drawn[:len(plain)] == plain                       # their own stream: the other draws unchanged
     side = drawn[len(plain):]
-    assert [d.character for d in side] == ["woman"] * 6 and all(d.skill == "sideways" for d in side)  # the man: none
+    assert [d.character for d in side] == ["man"] * 6 + ["woman"] * 6 and all(d.skill == "sideways" for d in side)
     for d in side:
         x, y, t = d.values
-        way = commanded_way("woman", (x, y), t)
+        way = commanded_way(d.character, (x, y), t)
         assert way in SIDEWAYS_WAYS and x >= 0.0
-        region = table("woman")[f"{way}_region"]
+        region = table(d.character)[f"{way}_region"]
         assert region["distance"][0] - 1e-3 <= abs(y) <= region["distance"][1] and region["air_time"][0] <= t <= region["air_time"][1]
-    assert {y > 0 for _, y, _ in (d.values for d in side)} == {True, False}     # left and right
+    for character in ("man", "woman"):      # left and right
+        assert {y > 0 for _, y, _ in (d.values for d in side if d.character == character)} == {True, False}
 
 
 def test_long_draws_are_in_each_long_region_outside_the_measured_jumps():

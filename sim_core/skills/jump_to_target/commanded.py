@@ -30,7 +30,9 @@ Fig. 6 with his thrust slowed for his strength, tools/scale_commanded.py and doc
   there flew along (rad), whether it stood (turn_for_point);
 - ``sideways_<row>_region`` (optional, with ``quarter_lines``; "sideways_<row>" one of SIDEWAYS_WAYS): the same keys;
   straight to the side beyond ``sideways_region``, flown by the quarter turn and then the row the turned way ``turned_<row>`` flies (way_body: "long" turned_long_body, "near_long" near_long_body, ...), its
-  turn and aim steered by the quarter lines as flown (planning/commanded.py steer_by_lines);
+  turn and aim steered by the quarter lines as flown (planning/commanded.py steer_by_lines); ``sideways_<row>_settings``
+  (optional) replace the row's settings for it (the man's near long row: the landing's arms without their pitch
+  feedback, whose deeper landings after the quarter turn fell at every placement, docs/jump_to_target.md);
 - ``turn_lines`` (optional, with ``turned_region``): the same for the hop's ``turn_angle`` (columns ``turn_angle``,
   ``heading``, ``feet_x``, ``feet_y``, ``line``, ``stood``): each hop of ``turn_headings`` turned up to ~40 deg and two
   commanded jumps along its heading after it (planning/turn_map.py hop_line: ``line`` through the middle of their
@@ -354,7 +356,7 @@ def mid_deep_long_body(body: dict) -> dict:
 
 STRAIGHT_WAYS = ("long", "near_long", "deep_long", "far_short", "near_short", "near_deep_long",
                  "mid_deep_long")   # commanded_way's ways beyond ``region``, straight ahead
-SIDEWAYS_WAYS = ("sideways", "sideways_long")
+SIDEWAYS_WAYS = ("sideways", "sideways_long", "sideways_near_long", "sideways_mid_long", "sideways_mid_deep_long")
 # the ways straight to the side: the quarter turn, then the table's own row ("sideways") or the row the turned way
 # "turned_<row>" flies (way_body)
 TURNED_WAYS = ("turned", "turned_long", "turned_long_short", "turned_near_long", "turned_mid_long", "turned_deep_long",
@@ -386,8 +388,8 @@ def way_body(body: dict, way: str) -> dict:
         return push_down_body(body)  # a lower one still: its own settings (the lean push) and crouch pairs
     if way == "deep_long" and "deep_long_crouch_by_air_time" in body:
         return deep_long_body(body)  # the longest air times: the long row at its deepest crouches
-    if way.startswith("sideways_"):
-        return way_body(body, way.replace("sideways", "turned", 1))     # the quarter turn, then the turned row's row
+    if way.startswith("sideways_"):     # the quarter turn, then the turned row's row, its ``<way>_settings`` over it if any
+        return over(way_body(body, way.replace("sideways", "turned", 1)), body, f"{way}_settings")
     if way in ("turned_long", "turned_long_short"):
         return turned_long_body(body)
     if way == "turned_near_long":
@@ -557,6 +559,9 @@ FLAT_REGION_WORDS = (       # commanded_limit's words for each region on flat gr
     ("turned_region", "turned first"),
     ("sideways_region", "turned a quarter first"),
     ("sideways_long_region", "turned a quarter first with long air times"),
+    ("sideways_near_long_region", "turned a quarter first with long air times nearer"),
+    ("sideways_mid_long_region", "turned a quarter first with long air times in the middle"),
+    ("sideways_mid_deep_long_region", "turned a quarter first with the longest air times in the middle"),
     ("long_region", "for long air times (the leap's vertical thrust) on flat ground for"),
     ("near_long_region", "for long air times nearer (the vertical thrust with its own lean push) for"),
     ("deep_long_region", "for the longest air times (the vertical thrust's deepest crouches) for"),
