@@ -156,6 +156,8 @@ def test_a_target_outside_both_regions_is_refused_naming_both(monkeypatch):
                          "first for a distance of 1-1.2 m at a bearing of 87-90 deg to either side, air_time 0.4-0.44 s, "
                          "and turned a quarter first with long air times for a distance of 1-1.6 m at a bearing of "
                          "87-90 deg to either side, air_time 0.55-0.7 s, "
+                         "and turned a quarter first with the long row at shorter air times for a distance of 1-1.6 m "
+                         "at a bearing of 87-90 deg to the left, air_time 0.44-0.55 s, "
                          "and for long air times (the leap's vertical thrust) on flat ground for target_x 0.5-1.6 m, "
                          "target_y -0.02-0.02 m, air_time 0.52-0.7 s, and turned first with long air times for a "
                          "distance of 0.5-1.6 m at a bearing of 0-34 deg to either side, air_time 0.52-0.7 s, and turned "
@@ -922,7 +924,7 @@ def test_sideways_targets_turn_a_quarter_first_by_the_measured_line_nearest():
     assert commanded_way("woman", (0.0, middle[0]), middle[1]) == commanded_way("woman", (0.0, -middle[0]), middle[1]) \
         == "sideways"
     assert commanded_way("woman", (0.0, region["distance"][1] + 0.05), middle[1]) is None
-    assert commanded_way("woman", (0.0, middle[0]), region["air_time"][1] + 0.05) is None
+    assert commanded_way("woman", (0.0, -middle[0]), region["air_time"][1] + 0.05) is None   # (the left: sideways_long_short)
     assert commanded_way("man", (0.0, middle[0]), middle[1]) is None          # the man's table has no sideways_region
     k = random.Random(SEED).choice([i for i, stood in enumerate(rows["stood"]) if stood])     # one seeded row
     row = quarter_line("woman", rows["turn_first"][k])
@@ -954,7 +956,7 @@ def test_sideways_targets_at_longer_air_times_turn_a_quarter_then_fly_the_long_r
     assert region["distance"] == [1.0, 1.6] and region["air_time"][1] == 0.7
     assert way_body(body, "sideways_long") == way_body(body, "turned_long")
     assert commanded_way("woman", (0.0, 1.45), 0.6) == commanded_way("woman", (0.0, -1.45), 0.6) == "sideways_long"
-    assert commanded_way("woman", (0.0, 1.45), 0.5) is None and commanded_way("woman", (0.0, 1.7), 0.6) is None
+    assert commanded_way("woman", (0.0, -1.45), 0.5) is None and commanded_way("woman", (0.0, 1.7), 0.6) is None
     assert commanded_way("man", (0.0, 1.45), 0.6) == "sideways_mid_long"       # the man: his own row, not the long row
     text = region_refusal("woman", (0.0, 1.7), 0.6)
     assert "\n" not in text and "turned a quarter first with long air times for a distance of 1-1.6 m" in text
@@ -1003,6 +1005,29 @@ def test_a_seeded_sideways_draw_of_the_man_is_flown_by_the_quarter_turn_and_his_
     result, plan = planned_and_run(draw)
     assert plan["settings"]["turn_first"] != 0.0 and plan["settings"]["vertical_thrust"] == 1.0
     assert plan["settings"]["lean_push"] == push and plan["settings"]["landing_arm_pitch_gain"] == 0.0
+    assert_run_as_planned(result, plan)
+
+
+@pytest.mark.slow
+def test_left_jumps_at_shorter_air_times_turn_a_quarter_then_fly_the_long_row_and_right_ones_are_refused():
+    """Straight to the left 1.0-1.6 m at 0.44-0.55 s (the woman's sideways_long_short_region, ``side`` [1, 1]): the
+    quarter turn, then the long row at its shorter air times (way_body "sideways_long_short" reads the table as
+    "turned_long_short" does); to the right there her landings missed (docs/jump_to_target.md, "Her left jumps at
+    shorter air times"), so a right jump there is refused in one line naming the left; a seeded draw planned and run."""
+    from sim_core.skills.jump_to_target.commanded import commanded_way, table, way_body
+    body = table("woman")
+    region = body["sideways_long_short_region"]
+    assert region["side"] == [1.0, 1.0] and region["air_time"] == [0.44, 0.55] and region["distance"] == [1.0, 1.6]
+    assert way_body(body, "sideways_long_short") == way_body(body, "turned_long_short")
+    assert commanded_way("woman", (0.0, 1.3), 0.5) == "sideways_long_short"
+    assert commanded_way("woman", (0.0, -1.3), 0.5) is None and commanded_way("woman", (0.0, 1.3), 0.43) is None
+    text = region_refusal("woman", (0.0, -1.3), 0.5)
+    assert "\n" not in text and ("turned a quarter first with the long row at shorter air times for a distance of "
+                                 "1-1.6 m at a bearing of 87-90 deg to the left, air_time 0.44-0.55 s") in text
+    draw = first_sideways_draw("sideways_long_short")
+    assert draw.values[1] > 0.0
+    result, plan = planned_and_run(draw)
+    assert plan["settings"]["turn_first"] != 0.0 and plan["settings"]["vertical_thrust"] == 1.0
     assert_run_as_planned(result, plan)
 
 

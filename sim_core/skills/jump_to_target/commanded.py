@@ -33,6 +33,8 @@ Fig. 6 with his thrust slowed for his strength, tools/scale_commanded.py and doc
   turn and aim steered by the quarter lines as flown (planning/commanded.py steer_by_lines); ``sideways_<row>_settings``
   (optional) replace the row's settings for it (the man's near long row: the landing's arms without their pitch
   feedback, whose deeper landings after the quarter turn fell at every placement, docs/jump_to_target.md);
+  a turned region may hold one side only (optional ``side`` [1, 1]: to the left, [-1, -1]: to the right; the target's
+  sign of target_y);
 - ``turn_lines`` (optional, with ``turned_region``): the same for the hop's ``turn_angle`` (columns ``turn_angle``,
   ``heading``, ``feet_x``, ``feet_y``, ``line``, ``stood``): each hop of ``turn_headings`` turned up to ~40 deg and two
   commanded jumps along its heading after it (planning/turn_map.py hop_line: ``line`` through the middle of their
@@ -356,7 +358,8 @@ def mid_deep_long_body(body: dict) -> dict:
 
 STRAIGHT_WAYS = ("long", "near_long", "deep_long", "far_short", "near_short", "near_deep_long",
                  "mid_deep_long")   # commanded_way's ways beyond ``region``, straight ahead
-SIDEWAYS_WAYS = ("sideways", "sideways_long", "sideways_near_long", "sideways_mid_long", "sideways_mid_deep_long")
+SIDEWAYS_WAYS = ("sideways", "sideways_long", "sideways_long_short", "sideways_near_long", "sideways_mid_long",
+                 "sideways_mid_deep_long")
 # the ways straight to the side: the quarter turn, then the table's own row ("sideways") or the row the turned way
 # "turned_<row>" flies (way_body)
 TURNED_WAYS = ("turned", "turned_long", "turned_long_short", "turned_near_long", "turned_mid_long", "turned_deep_long",
@@ -465,9 +468,10 @@ def commanded_way(character: str, target, air_time: float) -> str | None:
                      and all(body[f"{way}_region"][k][0] <= v <= body[f"{way}_region"][k][1] for k, v in values.items())), None)
     if straight is not None or region["target_y"][0] <= y <= region["target_y"][1]:
         return straight
-    values = {"distance": math.hypot(x, y), "bearing": abs(math.atan2(y, x)), "air_time": float(air_time)}
+    values = {"distance": math.hypot(x, y), "bearing": abs(math.atan2(y, x)), "air_time": float(air_time),
+              "side": math.copysign(1.0, y)}
     return next((way for way in TURNED_WAYS if body.get(f"{way}_region") is not None
-                 and all(body[f"{way}_region"][k][0] <= v <= body[f"{way}_region"][k][1] for k, v in values.items())), None)
+                 and all(low <= values[k] <= high for k, (low, high) in body[f"{way}_region"].items())), None)
 
 
 def box_way(body: dict, target, air_time: float) -> str | None:
@@ -525,10 +529,17 @@ def _flat(region: dict) -> str:
     return ", ".join(_span(region, key, unit) for key, unit in (("target_x", "m"), ("target_y", "m"), ("air_time", "s")))
 
 
+def _side(region: dict) -> str:
+    """A turned region's ``side`` (the sign of target_y it holds; none: both) in words."""
+    low, high = region.get("side", (-1.0, 1.0))
+    return "to either side" if low < 0.0 < high else ("to the left" if low > 0.0 else "to the right")
+
+
 def _turned(region: dict) -> str:
     """A turned region (distance, bearing, air_time) in words."""
     return (f"for a distance of {region['distance'][0]:g}-{region['distance'][1]:g} m at a bearing of "
-            f"{math.degrees(region['bearing'][0]):.0f}-{math.degrees(region['bearing'][1]):.0f} deg to either side, "
+            f"{math.degrees(region['bearing'][0]):.0f}-{math.degrees(region['bearing'][1]):.0f} deg "
+            f"{_side(region)}, "
             + _span(region, "air_time", "s"))
 
 
@@ -559,6 +570,7 @@ FLAT_REGION_WORDS = (       # commanded_limit's words for each region on flat gr
     ("turned_region", "turned first"),
     ("sideways_region", "turned a quarter first"),
     ("sideways_long_region", "turned a quarter first with long air times"),
+    ("sideways_long_short_region", "turned a quarter first with the long row at shorter air times"),
     ("sideways_near_long_region", "turned a quarter first with long air times nearer"),
     ("sideways_mid_long_region", "turned a quarter first with long air times in the middle"),
     ("sideways_mid_deep_long_region", "turned a quarter first with the longest air times in the middle"),
