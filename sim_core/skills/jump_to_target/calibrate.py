@@ -2761,7 +2761,8 @@ pairs with her `down_settings`, `commanded.commanded_settings`, as leaps):
   `random_requests.evaluate`, budget 24, every trial printed), seed 4001: **1 / 8**, 5 of its 68 trials balanced; the
   same eight with the recovery step off **0 / 8** (4 of 80); with the man's near row's lean push 10 **0 / 8** (1 of 71 trials
   balanced); with `landing_foot_lead_time` 0.1 s (hers 0.187 s; the take-off aims with the lead) the aims settle - 7
-  of the 8 land within 2 cm of the target - and **0 / 8**: all 101 trials fell.
+  of the 8 land within 2 cm of the target - and **0 / 8**: all 101 trials fell; with the man's long row's arms and lean
+  (`arm_swing` 1.5, `com_offset` 0) **2 / 8** (3 of 65 trials balanced).
 Traced (1.096 m, a 0.264 m box, 0.617 s), on the target: with her lead the feet touch down 0.11 m ahead of the COM,
 the COM goes back at 0.9 m/s 0.2 s later and she falls back, the head on the start box; with 0.1 s she falls forward
 out of a squat with the COM 0.45 m high; 0.12 / 0.14 / 0.16 s (0.12 / 0.14 also without the step) fell or were not still.
@@ -2779,8 +2780,10 @@ the whole slice (0.25-0.75 m boxes, 1.4-1.9 m, T0 0.47-0.6 s, 2.0-3.3 m/s) fresh
 0.49-0.6 s 25 / 26, below 4 / 6); T0 0.49-0.6 s fresh seed 4104 **9 / 12** - the three misses at 2.07-2.23 m/s from
 0.53-0.58 m boxes landed 5.5-18 cm long, balanced (the row overshoots below its speeds on flat ground, 1.5 m in 0.65 s
 = 2.3 m/s; below 2.3 m/s 3 / 7 over 4102-4104, from it 29 / 30); so 2.3-3.3 m/s: fresh seed 4105 **12 / 12** (inside
-the kept box over 4101-4105 **41 / 42**, every miss balanced). Kept: the man's `long_down_regions`, heights 0.25-0.75
-m, target_x 1.4-1.9 m, T0 0.49-0.6 s, target_speed 2.3-3.3 m/s; of seed 29's 20,000 box draws 492 refused before are
+the kept box over 4101-4105 **41 / 42**, every miss balanced). As a user's box requests (`python -m sim_core report
+random --seed 4111 --jumps 0 --leaps 0 --broad 0 --boxes 20 --characters man --budget 24 --workers 1`): **20 / 20**
+(median 6.4 s, worst 10.8 s; the row's one draw, 1.521 m from a 0.287 m box in 0.596 s, 2.7 cm off).
+Kept: the man's `long_down_regions`, heights 0.25-0.75 m, target_x 1.4-1.9 m, T0 0.49-0.6 s, target_speed 2.3-3.3 m/s; of seed 29's 20,000 box draws 492 refused before are
 offered by it, every one offered before keeps its way (the tests' first draws in his other rows as they were). A target
 outside is refused in one line (`commanded_limit`: "... and down from a box 0.25-0.75 m high at target_x 1.4-1.9 m at
 a forward speed of 2.3-3.3 m/s (target_x / air_time) where the lift-off would fly 0.49-0.6 s on flat ground (the long
