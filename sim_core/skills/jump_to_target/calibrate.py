@@ -2788,9 +2788,8 @@ offered by it, every one offered before keeps its way (the tests' first draws in
 outside is refused in one line (`commanded_limit`: "... and down from a box 0.25-0.75 m high at target_x 1.4-1.9 m at
 a forward speed of 2.3-3.3 m/s (target_x / air_time) where the lift-off would fly 0.49-0.6 s on flat ground (the long
 row's lift-off, its own forward speed) ..."). Tests: tests/test_jump_region.py checks the row's ways, settings and
-refusal (no simulation) and plans and runs the report's first box draw in it (slow). Not done: his far targets at T0
-0.47-0.49 s (aims 5-9 cm off) and slower than 2.3 m/s (overshoot), 1.3-1.4 m (between his near and far rows), T0
-above 0.6 s.
+refusal (no simulation) and plans and runs the report's first box draw in it (slow). Not done (of his down targets, seed 29): his far
+targets at T0 0.47-0.49 s (1.5 %: aims 5-9 cm off), slower than 2.3 m/s (1.5 %: overshoot), T0 above 0.6 s (0.2 %).
 
 **Straight to the side with the long row: the woman's left and right jumps 1.0-1.6 m in 0.55-0.7 s (issue 29, thirtieth
 session, 2026-12-07): her share of issue 29's left and right jumps (target_x 0, target_y +-1.0 ... +-1.6 m, 0.4-0.7 s)
