@@ -544,9 +544,39 @@ def test_the_man_down_from_a_box_far_ahead_is_offered_by_the_push_and_the_far_sh
         "would fly 0.35-0.47 s on flat ground (the far short row's lift-off, its own forward speed)" in text
 
 
+def test_the_man_down_from_a_box_far_ahead_by_his_long_row_is_offered_by_forward_speed_and_refused_beyond():
+    """His long_down_regions: down from a 0.25-0.75 m box 1.4-1.9 m ahead where the lift-off flies 0.49-0.6 s on flat
+    ground (below, its aims missed), at a forward speed of 2.3-3.3 m/s (target_x / air_time: his long row's speeds on
+    flat ground; slower it overshot), flown by his far long row (the vertical thrust, its lean push 3 and crouch pairs)
+    with the landing for a drop (down_settings); checked after every other way down (the targets offered before keep
+    their ways); the woman's long row down from a box is not offered (its landings fell); beyond, refused in one line
+    naming it. No simulation."""
+    from sim_core.skills.jump_to_target.commanded import commanded_settings, commanded_way, table, way_body
+    assert commanded_way("man", (1.6, 0.0, -0.4), 0.63) == "long_down"            # T0 0.50 s at 2.54 m/s
+    assert commanded_way("man", (1.6, 0.0, -0.45), 0.62) is None                  # T0 0.47 s: its aims missed
+    assert commanded_way("man", (1.5, 0.0, -0.55), 0.68) is None                  # 2.21 m/s: it overshot
+    assert commanded_way("man", (1.9, 0.0, -0.3), 0.6) == "long_down"             # T0 0.50 s at 3.17 m/s
+    assert commanded_way("man", (1.8, 0.0, -0.6), 0.65) is None                   # T0 0.46 s: not measured
+    assert commanded_way("man", (1.45, 0.0, -0.35), 0.72) is None                 # T0 0.62 s: not measured
+    assert commanded_way("man", (1.95, 0.0, -0.35), 0.6) is None                  # beyond 1.9 m
+    assert commanded_way("man", (1.3, 0.0, -0.35), 0.6) == "down"                 # the straight row's as before
+    assert commanded_way("man", (1.75, 0.0, -0.35), 0.56) == "far_short_down"     # T0 0.43 s: the far short row's as before
+    assert commanded_way("woman", (1.2, 0.0, -0.35), 0.68) is None                # hers: T0 0.57 s, not offered
+    body = way_body(table("man"), "long_down")
+    assert body["crouch_by_air_time"] == table("man")["long_crouch_by_air_time"]
+    settings = commanded_settings(body, 0.52, 1.6, -0.4)
+    assert settings["vertical_thrust"] == 1.0 and settings["lean_push"] == table("man")["long_settings"]["lean_push"]
+    assert settings["landing_toe_first_at_speed"] == 1.0 and settings["landing_recovery_step"] == 0.0   # down_settings
+    text = region_refusal("man", (1.8, 0.0, -0.6), 0.65)
+    assert text and "\n" not in text
+    assert "down from a box 0.25-0.75 m high at target_x 1.4-1.9 m at a forward speed of 2.3-3.3 m/s (target_x / air_time) " \
+        "where the lift-off would fly 0.49-0.6 s on flat ground (the long row's lift-off, its own forward speed)" in text
+
+
 FAR_DOWN_ROWS = {       # the man's new boxes down from a box far ahead: the way, and which of its draws are the new box's
     "push_down": lambda x, z, t: flat_air_time(z, t) > 0.3,       # the second box (the first: T0 0.1-0.3 s)
     "far_short_down": lambda x, z, t: True,
+    "long_down": lambda x, z, t: True,                            # his far long row's (T0 0.49-0.6 s)
 }
 
 
@@ -554,8 +584,8 @@ FAR_DOWN_ROWS = {       # the man's new boxes down from a box far ahead: the way
 @pytest.mark.parametrize("way", list(FAR_DOWN_ROWS))
 def test_a_random_target_of_the_man_down_from_a_box_far_ahead_lands_balanced(way):
     """The first of the report's box draws for the man (seed SEED) in each new box down from a box far ahead (the lean
-    push's second box, the far short row's), planned with that row and the landing for a drop (down_settings) and run
-    as a user's request: within 5 cm and 0.05 s and balanced, as its plan was."""
+    push's second box, the far short row's, the far long row's), planned with that row and the landing for a drop
+    (down_settings) and run as a user's request: within 5 cm and 0.05 s and balanced, as its plan was."""
     box = first_commanded_box_draw("man", way, lambda values: FAR_DOWN_ROWS[way](*values), count=400)
     result, plan = planned_and_run(box)
     settings = plan["settings"]
@@ -1030,7 +1060,8 @@ def test_random_long_air_times_are_flown_by_the_vertical_thrust_and_land_balance
     assert commanded_way(character, (x, 0.0), t) == "long"
     assert commanded_way(character, (x, 0.0), region["air_time"][1] + 0.08) is None      # beyond the man's deep row too
     assert commanded_way(character, (region["target_x"][1] + 0.05, 0.0), t) is None
-    assert commanded_way(character, (x, 0.0, -0.3), t) is None      # down from a box: the long row flies none
+    assert commanded_way(character, (x, 0.0, -0.3), t) == {"man": "long_down", "woman": None}[character]
+    # down from a box: the man's far long row (his long_down_regions, 2.3-3.3 m/s), hers none (its landings fell)
     refusal = region_refusal(character, (x, 0.0), region["air_time"][1] + 0.1)
     assert "\n" not in refusal and (
         f"and for long air times (the leap's vertical thrust) on flat ground for target_x {region['target_x'][0]:g}-"
