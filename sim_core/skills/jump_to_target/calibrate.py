@@ -2739,12 +2739,17 @@ target_x 0.5-1.6 m (a higher lift-off) in 0.7-0.76 s ..."). Her share of issue 2
 long row's higher boxes 0.35 %; down 50.5 % as it was); of the onto targets within her take-off 29.6 % -> 32.5 % offered. The
 man's table and her down rows are untouched. Measured and not offered: her tucked row (`tucked_onto_region`) from 0.85 to
 0.92 m (T0 0.52-0.7 s, the gap to her long row's onto region): seeds 4011 **11 / 12** and 4012 **10 / 12** (21 / 24: the
-misses 0.42-0.43 m boxes at 2.0-2.2 m/s, landed 2-6 cm off or fallen; hits at the same speeds). Tests:
+misses 0.42-0.43 m boxes at 2.0-2.2 m/s, landed 2-6 cm off or fallen; hits at the same speeds); the tucked row onto higher
+boxes on to T0 0.8 s with a 0.5 m crouch beyond 0.76 s (a single jump onto (0.7 m, a 0.35 m box, 0.68 s; T0 0.785 s) at
+crouch 0.5 m, damping 0.45, aimed at 1.4 m landed 0.684 m in 0.68 s, balanced, where the 0.55 m crouch had flown short or
+fallen; the pairs T0 0.76 / 0.8 / 0.85 s: crouch 0.55 / 0.5 / 0.5 m, damping 0.392 / 0.45 / 0.3, the pairs to 0.76 s as
+kept): its draws at T0 0.76-0.8 s alone, seeds 4041 **10 / 12** and 4042 **10 / 12** (20 / 24; the misses at T0 0.761-0.785 s
+flown 0.04-0.11 s short or 6-14 cm off, where the crouch moves from 0.55 to 0.5 m) - T0 stays 0.7-0.76 s. Tests:
 tests/test_jump_region.py checks the tucked row's ways, settings (the crouch, the damping by T0) and refusal (no
 simulation) and plans and runs the first of the report's box draws in it and in the long row's (now a 0.546 m box) (slow).
 Not done (of her onto targets, a scratch count of the same draws): boxes 0.5-0.75 m nearer than 0.92 m (15.6 %: the head on
 the box's edge in the lean, or too slow forward from the deepest crouch, above), boxes below 0.5 m at T0 0.76-0.85 s (6.0
-%: flown short or fallen, seed 4003), at T0 below 0.7 s from 0.92 m (4.7 %: beyond her long row's onto region's 0.66 s,
+%: flown short or fallen, seeds 4003, 4041-4042), at T0 below 0.7 s from 0.92 m (4.7 %: beyond her long row's onto region's 0.66 s,
 measured at 0.66-0.7 s before, 25 / 36), nearer than 0.65 m (3.1 %), 0.85-0.92 m (1.5 %, above), 0.5-0.75 m boxes from 0.92 m (2.0 %:
 fell or flown short above 0.55 m).
 
