@@ -2685,8 +2685,8 @@ region for them, 0.25-0.33 m at T0 0.6-0.76 s, would add 1.1 % of the onto targe
 below 0.6 s (0.8 %: below the 0.6 m crouch's flight at damping 0.79).
 
 **The woman onto near boxes: her tucked row at a shallower crouch with the thrust's damping lowered, and her long row
-onto 0.55 m boxes (issue 29, thirty-third session, 2026-12-07): her onto-box targets 15.6 % -> 17.1 %, her box targets
-33.0 % -> 33.7 %.** Of issue 29's onto-box targets (`box_region_share`'s draws, seed 29) 52.6 % lay within her take-off
+onto 0.55 m boxes and from T0 0.7 s (issue 29, thirty-third session, 2026-12-07): her onto-box targets 15.6 % -> 18.9 %,
+her box targets 33.0 % -> 34.6 %.** Of issue 29's onto-box targets (`box_region_share`'s draws, seed 29) 52.6 % lay within her take-off
 (`region.takeoff_refusal` None) and 15.6 % of all were offered; of the rest (a scratch count of the same draws, % of all
 her onto targets) boxes 0.5-0.75 m high nearer than 1.1 m 17.9 %, boxes below 0.5 m 19 % (nearer than 0.92 m 10.7 %), by
 the flat equivalent T0 0.7-0.85 s ~32 %. Traced one jump at a time (a scratch script running one commanded jump with a row's
@@ -2729,14 +2729,18 @@ from 4004-4006). And the long row onto higher boxes (`long_high_onto_region`) fr
 flown 0.05-0.08 s short or fallen; to 0.55 m 18 / 20); with the arms back in its crouch (`crouch_arms` -0.8, the pairs T0
 0.71 / 0.76 / 0.81 s: damping 0.79 / 0.65 / 0.55) 4021's ten **0 / 10** (landed 0.52-0.74 m, at the box's face: the arms back
 cost the forward speed), not kept; to 0.55 m fresh seeds 4024 (above 0.5 m) **11 / 12** and 4025 (the region) **11 / 12**
-(the miss (1.019 m, a 0.324 m box, 0.645 s) 5.2 cm off). As a user's box requests (`python -m sim_core report random --seed
+(the miss (1.019 m, a 0.324 m box, 0.645 s) 5.2 cm off). And from T0 0.7 s (was 0.72 s; below its first pair the
+damping is held at 0.79): its draws at T0 0.7-0.72 s alone, seed 4051 **12 / 12**, fresh 4053 **12 / 12**, the region fresh
+4054 **12 / 12**; from 0.66 s (the long row's onto region's end), its draws at T0 0.66-0.7 s seed 4052 **8 / 12** (the four
+misses flown 0.06-0.1 s long: the damping held), so `long_high_onto_region` T0 **0.7-0.76 s**, boxes **0.25-0.55 m**. As a user's box requests (`python -m sim_core report random --seed
 4031 --jumps 0 --leaps 0 --broad 0 --boxes 20 --characters woman --budget 24 --workers 1`): fresh seed 4031 **19 / 20**, onto 1 / 1 (none drawn in the new bounds: (0.673 m, a 0.49 m
 box, 0.47 s) her tucked row's); the miss down from a 0.457 m box at 1.579 m, flown 0.058 s short (her down rows').
 A target outside is refused in one line (`commanded_limit`: "... and onto a box 0.25-0.5 m high at target_x 0.65-0.77 m at a
 forward speed of 0.9-1.3 m/s (target_x / air_time) where the same lift-off on flat ground would land in the long row's
 target_x 0.5-1.6 m (a higher lift-off) in 0.7-0.76 s ..."). Her share of issue 29's box targets
-(`random_requests.box_region_share('woman', 29)`): 33.0 % -> **33.7 %** (onto 15.6 % -> **17.1 %**: the tucked row 1.2 %, the
-long row's higher boxes 0.35 %; down 50.5 % as it was); of the onto targets within her take-off 29.6 % -> 32.5 % offered. The
+(`random_requests.box_region_share('woman', 29)`): 33.0 % -> **34.6 %** (onto 15.6 % -> **18.9 %**: the tucked row 1.2 %, the
+long row's boxes to 0.55 m 0.35 %, from T0 0.7 s 1.75 %; down 50.5 % as it was); of the onto targets within her take-off
+29.6 % -> 35.9 % offered. The
 man's table and her down rows are untouched. Measured and not offered: her tucked row (`tucked_onto_region`) from 0.85 to
 0.92 m (T0 0.52-0.7 s, the gap to her long row's onto region): seeds 4011 **11 / 12** and 4012 **10 / 12** (21 / 24: the
 misses 0.42-0.43 m boxes at 2.0-2.2 m/s, landed 2-6 cm off or fallen; hits at the same speeds); the tucked row onto higher
@@ -2746,11 +2750,13 @@ fallen; the pairs T0 0.76 / 0.8 / 0.85 s: crouch 0.55 / 0.5 / 0.5 m, damping 0.3
 kept): its draws at T0 0.76-0.8 s alone, seeds 4041 **10 / 12** and 4042 **10 / 12** (20 / 24; the misses at T0 0.761-0.785 s
 flown 0.04-0.11 s short or 6-14 cm off, where the crouch moves from 0.55 to 0.5 m) - T0 stays 0.7-0.76 s. Tests:
 tests/test_jump_region.py checks the tucked row's ways, settings (the crouch, the damping by T0) and refusal (no
-simulation) and plans and runs the first of the report's box draws in it and in the long row's (now a 0.546 m box) (slow).
+simulation) and plans and runs the first of the report's box draws in it and in the long row's (now a 0.546 m box) (slow);
+the target the tests held refused as beyond the long row ((1.0, 0, 0.3) m in 0.6 s, T0 0.70 s) is now the long row's higher
+lift-off, (1.0, 0, 0.3) m in 0.56 s (T0 0.67 s) stays refused.
 Not done (of her onto targets, a scratch count of the same draws): boxes 0.5-0.75 m nearer than 0.92 m (15.6 %: the head on
 the box's edge in the lean, or too slow forward from the deepest crouch, above), boxes below 0.5 m at T0 0.76-0.85 s (6.0
 %: flown short or fallen, seeds 4003, 4041-4042), at T0 below 0.7 s from 0.92 m (4.7 %: beyond her long row's onto region's 0.66 s,
-measured at 0.66-0.7 s before, 25 / 36), nearer than 0.65 m (3.1 %), 0.85-0.92 m (1.5 %, above), 0.5-0.75 m boxes from 0.92 m (2.0 %:
+measured at 0.66-0.7 s before, 25 / 36, and by the long row onto higher boxes above, 8 / 12), nearer than 0.65 m (3.1 %), 0.85-0.92 m (1.5 %, above), 0.5-0.75 m boxes from 0.92 m (1.8 %:
 fell or flown short above 0.55 m).
 
 **The woman down from a box with the landing for a drop: higher boxes at short air times offered (issue 29, thirtieth
