@@ -2684,6 +2684,81 @@ region for them, 0.25-0.33 m at T0 0.6-0.76 s, would add 1.1 % of the onto targe
 0.76 s (7.8 %: the 0.6 m crouch's lift-off ends there, above), boxes above 0.5 m (3.1 %: fell, the first attempt), T0
 below 0.6 s (0.8 %: below the 0.6 m crouch's flight at damping 0.79).
 
+**The woman onto near boxes: her tucked row at a shallower crouch with the thrust's damping lowered, and her long row
+onto 0.55 m boxes and from T0 0.7 s (issue 29, thirty-third session, 2026-12-07): her onto-box targets 15.6 % -> 18.9 %,
+her box targets 33.0 % -> 34.6 %.** Of issue 29's onto-box targets (`box_region_share`'s draws, seed 29) 52.6 % lay within her take-off
+(`region.takeoff_refusal` None) and 15.6 % of all were offered; of the rest (a scratch count of the same draws, % of all
+her onto targets) boxes 0.5-0.75 m high nearer than 1.1 m 17.9 %, boxes below 0.5 m 19 % (nearer than 0.92 m 10.7 %), by
+the flat equivalent T0 0.7-0.85 s ~32 %. Traced one jump at a time (a scratch script running one commanded jump with a row's
+settings and naming the bodies on the box from the trajectory's `contact_force`):
+- near boxes below 0.5 m by the tucked row (the arms back, the tuck) at a 0.55 m crouch (her long row's at T0 0.625 s;
+  the tucked row's 0.45 m at T0 0.7-0.76 s had landed short, 19 / 24): (0.75 m, a 0.4 m box, 0.6 s; T0 0.736 s) aimed at
+  the target landed 0.43 m, on the box's front edge, and fell; aimed at 1.0 m, damping 0.45 / 0.3 flew T0 0.732 / 0.792 s
+  (landed 0.63 m balanced / 0.48 m, not still; lift-off (0.68, 3.52) m/s where (1.25, 3.61) was asked: the aim's lean
+  gives the forward speed); onto (0.7, 0.35, 0.6) aimed at 1.1 m damping 0.79 / 0.6 / 0.2 flew T0 0.629 / 0.687 / 0.998 s
+  (0.2 left at 0.46 m/s forward, met the box's face and fell);
+- a higher near box, (0.8 m, a 0.6 m box, 0.55 s; T0 0.772 s): at crouches of 0.55 / 0.6 / 0.65 m the head met the box's
+  top edge in the lean (1.42-1.58 s, 0.3-1.3 kN; in the 0.55 m crouch the head at 0.37 m ahead and 0.69 m up, the box's
+  front 0.5 m ahead), the lift-off 0.5-0.9 m/s forward of 1.45 asked, landed 0.5-0.8 m on the box's front edge and fell at
+  every damping 0.45-0.2 and aim 1.1-1.6 m (the torso upright, `crouch_pitch` 0, `thrust_lean` -0.05, `arm_swing` 1.0,
+  the arms not held back: the head on the edge still); at the 0.45 m crouch the head cleared it but the lift-off left at
+  0.47-0.78 m/s forward, landed 0.47-0.72 m and fell;
+- a 0.56 m box by the long row onto higher boxes as it is, (0.95 m, 0.56 m, 0.53 s): aimed at 1.7 m it landed 0.93 m in
+  0.595 s, pitched forward (the head 0.28 m ahead of the COM and 0.14 m above it at touchdown), stepped forward twice and
+  fell off the box; with the arms back in the crouch (`crouch_arms` -0.8) it landed upright and balanced but 0.80 m (0.85
+  m/s forward of 1.79).
+So a way "tucked_high_onto" (`tucked_high_onto_region`, the keys of `long_onto_region` with `target_speed`, the target's
+forward speed x / air time; `tucked_high_onto_crouch_by_air_time`: the tucked row over its own crouch pairs, way_body; the
+flat equivalent's landing in her long row's region; `commanded.HIGH_ONTO_ROWS`: the straight rows and "tucked"), drawn as a
+user's requests (a scratch script drawing `random_requests.box_target_draw` until `commanded_way` gives the row and
+`region.mode` "commanded", each run by `random_requests.evaluate`, budget 24):
+- first, 0.25-0.5 m boxes at target_x 0.55-0.92 m, T0 0.7-0.8 s (crouch 0.55 m, the pairs T0 0.69 / 0.735 / 0.8 s: damping
+  0.6 / 0.45 / 0.3): seed 4001 **7 / 10** - the misses at 0.583-0.643 m landed 6-14 cm off, the landing per aim not
+  monotonic by the box's edge ((0.643 m, a 0.489 m box, 0.643 s): aims 0.643 / 0.847 / 1.248 m landed 0.50 / 0.36 (fell) /
+  0.58 m);
+- second, target_x 0.65-0.92 m: seed 4002 **7 / 12** - four at 0.80-0.90 m (1.33-1.45 m/s) flown 0.07-0.12 s short, one at
+  T0 0.787 s fell; the pairs on to T0 0.85 s (damping 0.2) and the forward speed bounded to 0.9-1.3 m/s: 4002's five misses
+  **0 / 5**, seed 4003 **7 / 12** (the misses at T0 0.771-0.795 s, 7-17 cm off or fallen; every target to T0 0.755 s landed);
+- so T0 **0.7-0.76 s**: fresh seeds 4004 **10 / 12** (the misses (0.773 m, a 0.451 m box, 0.607 s) and (0.805, 0.307, 0.658)
+  flown 0.10-0.11 s short), 4005 **12 / 12** and 4006 **11 / 12** (the miss (0.798, 0.352, 0.648) 0.108 s short): from 0.77 m
+  3 of 6 landed over seeds 4002-4006, nearer all; so target_x **0.65-0.77 m**: fresh seed 4007 **12 / 12**.
+Kept: `tucked_high_onto_region` heights 0.25-0.5 m, target_x 0.65-0.77 m, 0.9-1.3 m/s, T0 0.7-0.76 s (crouch 0.55 m, damping
+0.6 / 0.45 / 0.3 / 0.2 at T0 0.69 / 0.735 / 0.8 / 0.85 s); in it **43 / 43** over seeds 4004-4007 (the target_x bound set
+from 4004-4006). And the long row onto higher boxes (`long_high_onto_region`) from 0.5 to **0.55 m** boxes: its draws above
+0.5 m as it is, seed 4021 (0.5-0.6 m) **8 / 10**, fresh 4022 **9 / 12** and 4023 **9 / 12** (the misses on 0.556-0.588 m boxes
+flown 0.05-0.08 s short or fallen; to 0.55 m 18 / 20); with the arms back in its crouch (`crouch_arms` -0.8, the pairs T0
+0.71 / 0.76 / 0.81 s: damping 0.79 / 0.65 / 0.55) 4021's ten **0 / 10** (landed 0.52-0.74 m, at the box's face: the arms back
+cost the forward speed), not kept; to 0.55 m fresh seeds 4024 (above 0.5 m) **11 / 12** and 4025 (the region) **11 / 12**
+(the miss (1.019 m, a 0.324 m box, 0.645 s) 5.2 cm off). And from T0 0.7 s (was 0.72 s; below its first pair the
+damping is held at 0.79): its draws at T0 0.7-0.72 s alone, seed 4051 **12 / 12**, fresh 4053 **12 / 12**, the region fresh
+4054 **12 / 12**; from 0.66 s (the long row's onto region's end), its draws at T0 0.66-0.7 s seed 4052 **8 / 12** (the four
+misses flown 0.06-0.1 s long: the damping held), so `long_high_onto_region` T0 **0.7-0.76 s**, boxes **0.25-0.55 m**. As a user's box requests (`python -m sim_core report random --seed
+4031 --jumps 0 --leaps 0 --broad 0 --boxes 20 --characters woman --budget 24 --workers 1`): fresh seed 4031 **19 / 20**, onto 1 / 1 (none drawn in the new bounds: (0.673 m, a 0.49 m
+box, 0.47 s) her tucked row's); the miss down from a 0.457 m box at 1.579 m, flown 0.058 s short (her down rows').
+A target outside is refused in one line (`commanded_limit`: "... and onto a box 0.25-0.5 m high at target_x 0.65-0.77 m at a
+forward speed of 0.9-1.3 m/s (target_x / air_time) where the same lift-off on flat ground would land in the long row's
+target_x 0.5-1.6 m (a higher lift-off) in 0.7-0.76 s ..."). Her share of issue 29's box targets
+(`random_requests.box_region_share('woman', 29)`): 33.0 % -> **34.6 %** (onto 15.6 % -> **18.9 %**: the tucked row 1.2 %, the
+long row's boxes to 0.55 m 0.35 %, from T0 0.7 s 1.75 %; down 50.5 % as it was); of the onto targets within her take-off
+29.6 % -> 35.9 % offered. The
+man's table and her down rows are untouched. Measured and not offered: her tucked row (`tucked_onto_region`) from 0.85 to
+0.92 m (T0 0.52-0.7 s, the gap to her long row's onto region): seeds 4011 **11 / 12** and 4012 **10 / 12** (21 / 24: the
+misses 0.42-0.43 m boxes at 2.0-2.2 m/s, landed 2-6 cm off or fallen; hits at the same speeds); the tucked row onto higher
+boxes on to T0 0.8 s with a 0.5 m crouch beyond 0.76 s (a single jump onto (0.7 m, a 0.35 m box, 0.68 s; T0 0.785 s) at
+crouch 0.5 m, damping 0.45, aimed at 1.4 m landed 0.684 m in 0.68 s, balanced, where the 0.55 m crouch had flown short or
+fallen; the pairs T0 0.76 / 0.8 / 0.85 s: crouch 0.55 / 0.5 / 0.5 m, damping 0.392 / 0.45 / 0.3, the pairs to 0.76 s as
+kept): its draws at T0 0.76-0.8 s alone, seeds 4041 **10 / 12** and 4042 **10 / 12** (20 / 24; the misses at T0 0.761-0.785 s
+flown 0.04-0.11 s short or 6-14 cm off, where the crouch moves from 0.55 to 0.5 m) - T0 stays 0.7-0.76 s. Tests:
+tests/test_jump_region.py checks the tucked row's ways, settings (the crouch, the damping by T0) and refusal (no
+simulation) and plans and runs the first of the report's box draws in it and in the long row's (now a 0.546 m box) (slow);
+the target the tests held refused as beyond the long row ((1.0, 0, 0.3) m in 0.6 s, T0 0.70 s) is now the long row's higher
+lift-off, (1.0, 0, 0.3) m in 0.56 s (T0 0.67 s) stays refused.
+Not done (of her onto targets, a scratch count of the same draws): boxes 0.5-0.75 m nearer than 0.92 m (15.6 %: the head on
+the box's edge in the lean, or too slow forward from the deepest crouch, above), boxes below 0.5 m at T0 0.76-0.85 s (6.0
+%: flown short or fallen, seeds 4003, 4041-4042), at T0 below 0.7 s from 0.92 m (4.7 %: beyond her long row's onto region's 0.66 s,
+measured at 0.66-0.7 s before, 25 / 36, and by the long row onto higher boxes above, 8 / 12), nearer than 0.65 m (3.1 %), 0.85-0.92 m (1.5 %, above), 0.5-0.75 m boxes from 0.92 m (1.8 %:
+fell or flown short above 0.55 m).
+
 **The woman down from a box with the landing for a drop: higher boxes at short air times offered (issue 29, thirtieth
 session, 2026-12-07): her box targets 28.4 % -> 31.9 % (down 43.5 % -> 50.5 %; seed 29, `random_requests.box_region_share`).**
 Her `down_settings` had kept the landing's recovery step and never flown the man's landing for a drop (above). Each of

@@ -143,7 +143,10 @@ Fig. 6 with his thrust slowed for his strength, tools/scale_commanded.py and doc
   flat ground (T0 beyond its region's air times): the flat equivalent's landing in that row's region (target_x,
   target_y), T0 in the box's own ``flat_air_time``, flown by that row with ``<row>_high_onto_settings`` over it and its
   own crouch pairs (way_body: the man's deep rows with the thrust's damping lowered and the arms' swing smaller, whose
-  hands touched a high box's edge in the take-off; docs/jump_to_target.md "The man onto higher boxes");
+  hands touched a high box's edge in the take-off; docs/jump_to_target.md "The man onto higher boxes"); ``<row>`` may
+  also be "tucked" (HIGH_ONTO_ROWS: the tucked row, tucked_onto_body, its landings in the long row's region; the woman's
+  near boxes at a shallower crouch, docs/jump_to_target.md "The woman onto near boxes"); ``target_speed`` (optional,
+  [low, high] m/s) bounds the target's forward speed x / air_time;
 - ``tucked_onto_region`` (optional, with the long row and ``tucked_onto_settings``): the keys of ``long_onto_region`` for a
   box nearer than it, flown by the long row with ``tucked_onto_settings`` over its settings (tucked_onto_body: the arms held
   back in the crouch, ``crouch_arms``: leaning on to a box whose front edge is ~0.4 m ahead of the feet, the hands
@@ -362,6 +365,7 @@ SIDEWAYS_WAYS = ("sideways", "sideways_long", "sideways_long_short", "sideways_n
                  "sideways_mid_deep_long")
 # the ways straight to the side: the quarter turn, then the table's own row ("sideways") or the row the turned way
 # "turned_<row>" flies (way_body)
+HIGH_ONTO_ROWS = (*STRAIGHT_WAYS, "tucked")   # the rows a ``<row>_high_onto_region`` may fly (way_body; "tucked": tucked_onto_body)
 TURNED_WAYS = ("turned", "turned_long", "turned_long_short", "turned_near_long", "turned_mid_long", "turned_deep_long",
                "turned_far_short", "turned_near_short", "turned_near_deep_long", "turned_mid_deep_long",
                *SIDEWAYS_WAYS)      # the ways commanded_way names that turn first (planning.commanded.plan_turned)
@@ -372,9 +376,12 @@ def way_body(body: dict, way: str) -> dict:
     ("<row>_high_onto": that row with its ``<way>_settings`` and ``<way>_crouch_by_air_time``; long_body, near_long_body, mid_long_body, low_down_body, push_down_body, turned_long_body, deep_long_body, short_body,
     near_deep_long_body, mid_deep_long_body; straight ahead a row the table lacks flies as the table's own settings), else
     the table as it is."""
-    if way.endswith("_high_onto") and way.removesuffix("_high_onto") in STRAIGHT_WAYS:
-        # onto a box by a straight row with a higher lift-off (box_way): that row, its ``<way>_settings`` and crouch pairs
-        return over(way_body(body, way.removesuffix("_high_onto")), body, f"{way}_settings", f"{way}_crouch_by_air_time")
+    if way.endswith("_high_onto") and way.removesuffix("_high_onto") in HIGH_ONTO_ROWS:
+        # onto a box by a straight row (or the tucked row) with a higher lift-off (box_way): that row, its
+        # ``<way>_settings`` and crouch pairs
+        under = way.removesuffix("_high_onto")
+        return over(way_body(body, "tucked_onto" if under == "tucked" else under), body, f"{way}_settings",
+                    f"{way}_crouch_by_air_time")
     row = way.rsplit("_", 1)[0]
     if way.endswith(("_down", "_onto")) and row in STRAIGHT_WAYS:
         # onto or down from a box by a straight row (box_way): flown by that row, its ``<way>_settings`` over it if any
@@ -496,7 +503,8 @@ def box_way(body: dict, target, air_time: float) -> str | None:
         if z < 0.0 \
         else (*((f"{row}_onto", f"{row}_region", body.get(f"{row}_onto_region")) for row in STRAIGHT_WAYS),
               ("tucked_onto", "long_region", body.get("tucked_onto_region")),
-              *((f"{row}_high_onto", f"{row}_region", body.get(f"{row}_high_onto_region")) for row in STRAIGHT_WAYS))
+              *((f"{row}_high_onto", f"{'long' if row == 'tucked' else row}_region", body.get(f"{row}_high_onto_region"))
+                for row in HIGH_ONTO_ROWS))
     def within(box: dict, key: str, value: float) -> bool:       # an optional bound holds when absent
         low, high = box.get(key, (-math.inf, math.inf))
         return low <= value <= high
@@ -544,12 +552,14 @@ def _turned(region: dict) -> str:
 
 
 def _box(region: dict, way: str, landing: str, sign: str) -> str:
-    """A box region (height, flat_air_time, optional target_x, target_air_time and flat_target_x) in words: the same
+    """A box region (height, flat_air_time, optional target_x, target_air_time, target_speed and flat_target_x) in words: the same
     lift-off's flat landing in ``landing``."""
     return (f"{way} a box {region['height'][0]:g}-{region['height'][1]:g} m high"
             + (f" at target_x {region['target_x'][0]:g}-{region['target_x'][1]:g} m" if "target_x" in region else "")
             + (f" in air_time {region['target_air_time'][0]:g}-{region['target_air_time'][1]:g} s"
                if "target_air_time" in region else "")
+            + (f" at a forward speed of {region['target_speed'][0]:g}-{region['target_speed'][1]:g} m/s (target_x / air_time)"
+               if "target_speed" in region else "")
             + f" where the same lift-off on flat ground would land in {landing}"
             + (f" at {region['flat_target_x'][0]:g}-{region['flat_target_x'][1]:g} m" if "flat_target_x" in region else "")
             + " in "
@@ -613,7 +623,7 @@ def commanded_limit(character: str, z: float = 0.0) -> str | None:
     parts += [("flat", f"{words} {(_flat if key.removesuffix('_region') in STRAIGHT_WAYS else _turned)(body[key])}")
               for key, words in FLAT_REGION_WORDS if body.get(key)]
     boxes = (*((f"{row}_onto_region", "onto", "+", row) for row in STRAIGHT_WAYS), ("tucked_onto_region", "onto", "+", "long"),
-             *((f"{row}_high_onto_region", "onto", "+", row) for row in STRAIGHT_WAYS),
+             *((f"{row}_high_onto_region", "onto", "+", "long" if row == "tucked" else row) for row in HIGH_ONTO_ROWS),
              *((f"{row}_down_region", "down from", "-", row) for row in STRAIGHT_WAYS))
     for key, way, sign, row in boxes:
         if body.get(key):
