@@ -1065,7 +1065,8 @@ def test_sideways_targets_turn_a_quarter_first_by_the_measured_line_nearest():
         == "sideways"
     assert commanded_way("woman", (0.0, region["distance"][1] + 0.05), middle[1]) is None
     assert commanded_way("woman", (0.0, -middle[0]), region["air_time"][1] + 0.05) is None   # (the left: sideways_long_short)
-    assert commanded_way("man", (0.0, middle[0]), middle[1]) is None          # the man's table has no sideways_region
+    assert "sideways_region" not in table("man")                            # the man's table has no sideways_region:
+    assert commanded_way("man", (0.0, middle[0]), middle[1]) == "sideways_near_short"   # his near short row flies it
     k = random.Random(SEED).choice([i for i, stood in enumerate(rows["stood"]) if stood])     # one seeded row
     row = quarter_line("woman", rows["turn_first"][k])
     assert all(abs(row[name] - rows[name][k]) < 1e-4 for name in ("heading", "feet_x", "feet_y", "line", "stood"))
@@ -1119,7 +1120,7 @@ def test_the_mans_sideways_targets_turn_a_quarter_then_fly_one_of_his_long_rows(
     assert way_body(body, "sideways_near_long") == over(way_body(body, "turned_near_long"), body, "sideways_near_long_settings")
     assert way_body(body, "sideways_near_long")["settings"]["landing_arm_pitch_gain"] == 0.0
     assert commanded_way("man", (0.0, 1.15), 0.55) == commanded_way("man", (0.0, -1.15), 0.55) == "sideways_near_long"
-    assert commanded_way("man", (0.0, 1.15), 0.62) is None and commanded_way("man", (0.0, -1.15), 0.45) is None
+    assert commanded_way("man", (0.0, 1.15), 0.62) is None and commanded_way("man", (0.0, -1.15), 0.45) == "sideways_near_short"
     assert body["sideways_mid_long_region"]["distance"] == [1.3, 1.6] and body["sideways_mid_long_region"]["air_time"] == [0.5, 0.6]
     assert way_body(body, "sideways_mid_long") == way_body(body, "turned_mid_long")
     assert commanded_way("man", (0.0, 1.45), 0.55) == commanded_way("man", (0.0, -1.45), 0.55) == "sideways_mid_long"
@@ -1145,6 +1146,48 @@ def test_a_seeded_sideways_draw_of_the_man_is_flown_by_the_quarter_turn_and_his_
     result, plan = planned_and_run(draw)
     assert plan["settings"]["turn_first"] != 0.0 and plan["settings"]["vertical_thrust"] == 1.0
     assert plan["settings"]["lean_push"] == push and plan["settings"]["landing_arm_pitch_gain"] == 0.0
+    assert_run_as_planned(result, plan)
+
+
+def test_the_mans_sideways_targets_at_short_air_times_turn_a_quarter_then_fly_his_short_rows():
+    """Straight to the side 1.0-1.36 m at 0.4-0.5 s (the man's sideways_near_short_region): the quarter turn, then his
+    near long row at its shallowest crouches (way_body "sideways_near_short" reads the table as "turned_near_short" does:
+    short_body, the near short row's crouch pairs); 1.36-1.6 m (sideways_far_short_region, where the near short row
+    landed 8-13 cm short): then his far long row at its shallowest crouches ("turned_far_short"); either side; beyond
+    their bounds refused in one line naming the regions (no simulation)."""
+    from sim_core.skills.jump_to_target.commanded import commanded_way, short_body, table, way_body
+    body = table("man")
+    near, far = body["sideways_near_short_region"], body["sideways_far_short_region"]
+    assert near["distance"] == [1.0, 1.36] and near["air_time"] == [0.4, 0.5] and "side" not in near
+    assert far["distance"] == [1.36, 1.6] and far["air_time"] == [0.4, 0.5] and "side" not in far
+    for row in ("near_short", "far_short"):
+        assert way_body(body, f"sideways_{row}") == way_body(body, f"turned_{row}") == short_body(body, row)
+        assert way_body(body, f"sideways_{row}")["crouch_by_air_time"] == body[f"{row}_crouch_by_air_time"]
+    assert commanded_way("man", (0.0, 1.2), 0.45) == commanded_way("man", (0.0, -1.2), 0.45) == "sideways_near_short"
+    assert commanded_way("man", (0.0, 1.0), 0.4) == commanded_way("man", (0.0, -1.35), 0.49) == "sideways_near_short"
+    assert commanded_way("man", (0.0, 1.5), 0.45) == commanded_way("man", (0.0, -1.5), 0.45) == "sideways_far_short"
+    assert commanded_way("man", (0.0, -1.6), 0.4) == commanded_way("man", (0.0, 1.37), 0.49) == "sideways_far_short"
+    assert commanded_way("man", (0.0, 1.2), 0.55) == "sideways_near_long"      # from 0.5 s his long rows as before
+    assert commanded_way("man", (0.0, -1.5), 0.55) == "sideways_mid_long"
+    assert commanded_way("man", (0.0, 1.65), 0.45) is None and commanded_way("man", (0.0, -1.2), 0.39) is None
+    assert commanded_way("man", (0.0, 0.95), 0.45) is None
+    text = region_refusal("man", (0.0, 1.65), 0.45)
+    assert "\n" not in text and ("turned a quarter first with short air times nearer for a distance of 1-1.36 m at a "
+                                 "bearing of 87-90 deg to either side, air_time 0.4-0.5 s") in text
+    assert ("turned a quarter first with short air times far ahead for a distance of 1.36-1.6 m at a bearing of 87-90 deg "
+            "to either side, air_time 0.4-0.5 s") in text
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("way, push", (("sideways_near_short", 10.0), ("sideways_far_short", 3.0)))
+def test_a_seeded_sideways_draw_of_the_man_at_short_air_times_is_flown_by_the_quarter_turn_and_a_short_row(way, push):
+    """The first of the report's sideways draws of the man (seed SEED) in each of his short sideways rows planned and
+    run as a user's request: the quarter turn, then the near / far long row (the vertical thrust, its lean push) at its
+    shallowest crouches, landing within the tolerances and balanced where its plan's trial did."""
+    draw = first_sideways_draw(way, character="man")
+    result, plan = planned_and_run(draw)
+    assert plan["settings"]["turn_first"] != 0.0 and plan["settings"]["vertical_thrust"] == 1.0
+    assert plan["settings"]["lean_push"] == push and plan["settings"]["crouch_height"] >= 0.62
     assert_run_as_planned(result, plan)
 
 
