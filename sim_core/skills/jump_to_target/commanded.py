@@ -371,6 +371,12 @@ TURNED_WAYS = ("turned", "turned_long", "turned_long_short", "turned_near_long",
                *SIDEWAYS_WAYS)      # the ways commanded_way names that turn first (planning.commanded.plan_turned)
 
 
+def landing_row(row: str) -> str:
+    """The row whose flat region a ``<row>_high_onto_region``'s flat equivalent lands in: the row itself, the long row
+    for the tucked row (tucked_onto_body flies the long row)."""
+    return "long" if row == "tucked" else row
+
+
 def way_body(body: dict, way: str) -> dict:
     """The table as the plan of a request that commanded_way (or box_way) sends ``way`` reads it: the row that flies it
     ("<row>_high_onto": that row with its ``<way>_settings`` and ``<way>_crouch_by_air_time``; long_body, near_long_body, mid_long_body, low_down_body, push_down_body, turned_long_body, deep_long_body, short_body,
@@ -503,7 +509,7 @@ def box_way(body: dict, target, air_time: float) -> str | None:
         if z < 0.0 \
         else (*((f"{row}_onto", f"{row}_region", body.get(f"{row}_onto_region")) for row in STRAIGHT_WAYS),
               ("tucked_onto", "long_region", body.get("tucked_onto_region")),
-              *((f"{row}_high_onto", f"{'long' if row == 'tucked' else row}_region", body.get(f"{row}_high_onto_region"))
+              *((f"{row}_high_onto", f"{landing_row(row)}_region", body.get(f"{row}_high_onto_region"))
                 for row in HIGH_ONTO_ROWS))
     def within(box: dict, key: str, value: float) -> bool:       # an optional bound holds when absent
         low, high = box.get(key, (-math.inf, math.inf))
@@ -625,7 +631,7 @@ def commanded_limit(character: str, z: float = 0.0) -> str | None:
     parts += [("flat", f"{words} {(_flat if key.removesuffix('_region') in STRAIGHT_WAYS else _turned)(body[key])}")
               for key, words in FLAT_REGION_WORDS if body.get(key)]
     boxes = (*((f"{row}_onto_region", "onto", "+", row) for row in STRAIGHT_WAYS), ("tucked_onto_region", "onto", "+", "long"),
-             *((f"{row}_high_onto_region", "onto", "+", "long" if row == "tucked" else row) for row in HIGH_ONTO_ROWS),
+             *((f"{row}_high_onto_region", "onto", "+", landing_row(row)) for row in HIGH_ONTO_ROWS),
              *((f"{row}_down_region", "down from", "-", row) for row in STRAIGHT_WAYS))
     for key, way, sign, row in boxes:
         if body.get(key):
