@@ -3066,7 +3066,7 @@ is (its landing arms' pitch feedback kept, no `sideways_<row>_settings`):
 Kept: the man's `sideways_near_short_region` distance 1.0-1.36 m, bearing 87-90 deg, 0.4-0.5 s and `sideways_far_short_region`
 1.36-1.6 m, 87-90 deg, 0.4-0.5 s (two more ways of SIDEWAYS_WAYS, "sideways_near_short" / "sideways_far_short": the quarter
 turn, then the row "turned_near_short" / "turned_far_short" flies, `commanded.short_body`), the near row either side,
-the far row **to the right only** (`side` [-1, -1]: its fresh seeds to the left 13 / 17 would not meet 90 %; at the merge);
+the far row **to the right only** (`side` [-1, -1]: its fresh seeds to the left 18 / 22 would not meet 90 %, to the right 14 / 14; at the merge);
 beyond them refused in one line naming them ("turned a quarter first with short air times nearer / far ahead for a
 distance of ..."). Where a draw lies in both a short and a long row's bounds (0.5 s) the long row flies it, as before.
 The report's `--sideways N` draws the man's over 0.4-0.66 s now, so its first draws in his long rows are others than last
