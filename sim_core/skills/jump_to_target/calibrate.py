@@ -2915,7 +2915,7 @@ height), and nothing flies them commanded. Measured as above (scratch table, dra
 - a higher lift-off from the same crouch by the thrust's damping (as her long row's onto boxes, `long_high_onto_crouch_by_air_time`):
   on flat ground (`tools/commanded_jumps.py --character woman --table --set crouch_height=0.45 --set thrust_damping=D
   --sweep 0.6,1.2,0.2 --air-time 0.52`) the 0.45 m crouch flew 0.48-0.565 s at her damping 0.79, 0.535-0.59 s at 0.65 and
-  0.57-0.62 s at 0.5. A `thrust_damping` column in `low_down_crouch_by_air_time` (her settings' damping to 0.49 s, so her
+  0.57-0.62 s at 0.5. A `thrust_damping` column in `low_down_crouch_by_air_time` (null to 0.49 s: her settings' own damping, so her
   low_down boxes plan as before where the plan's air time stays below it; 0.65 at 0.52 s) and a third box of
   `low_down_regions`, T0 0.49-0.52 s, 0.25-0.75 m boxes, 1.0-2.6 m/s: seed 4122 **9 / 12** (the misses at 2.03-2.32 m/s:
   the first aim flew near the asked time 32-52 cm short, the larger aims flew 0.053-0.062 s short); with 0.5 at 0.56 s (the

@@ -217,7 +217,8 @@ def _rows(body: dict):
         if key.endswith("crouch_by_air_time"):
             for k, height in enumerate(pairs.get("crouch_height", [])):
                 yield f"{key} {k}", {"crouch_height": height,
-                                     **({"thrust_damping": pairs["thrust_damping"][k]} if "thrust_damping" in pairs else {})}
+                                     **({"thrust_damping": pairs["thrust_damping"][k]}
+                                        if pairs.get("thrust_damping", [None] * (k + 1))[k] is not None else {})}
     for k, angle in enumerate(body.get("turn_headings", {}).get("turn_angle", [])):
         yield f"turn_headings {k}", {"turn_angle": angle}
     for k, scale in enumerate(body.get("quarter_lines", {}).get("turn_first", [])):
@@ -273,11 +274,12 @@ def commanded_settings(body: dict, air_time: float, aim: float, height: float = 
     (its flat-ground air time): the table's ``settings`` (down a box, ``height`` < 0, with its
     ``down_settings``) with the commanded take-off on, ``flight_target_x`` the aim and the crouch height
     interpolated in ``crouch_by_air_time`` (held beyond its ends; and the thrust's damping where the pairs have a
-    ``thrust_damping`` column: a higher lift-off from the same crouch)."""
+    ``thrust_damping`` column: a higher lift-off from the same crouch; a null in it is the settings' own)."""
     pairs = body["crouch_by_air_time"]
-    return {**body["settings"], **(body.get("down_settings", {}) if height < 0.0 else {}), "commanded_takeoff": 1.0,
-            "flight_target_x": float(aim),
-            **{key: float(np.interp(air_time, pairs["air_time"], pairs[key]))       # the pairs' columns but the air time
+    settings = {**body["settings"], **(body.get("down_settings", {}) if height < 0.0 else {})}
+    column = lambda key: [settings[key] if value is None else value for value in pairs[key]]     # noqa: E731
+    return {**settings, "commanded_takeoff": 1.0, "flight_target_x": float(aim),
+            **{key: float(np.interp(air_time, pairs["air_time"], column(key)))       # the pairs' columns but the air time
                for key in ("crouch_height", "thrust_damping") if key in pairs}}
 
 
@@ -365,16 +367,12 @@ SIDEWAYS_WAYS = ("sideways", "sideways_long", "sideways_long_short", "sideways_n
                  "sideways_mid_deep_long", "sideways_near_short", "sideways_far_short")
 # the ways straight to the side: the quarter turn, then the table's own row ("sideways") or the row the turned way
 # "turned_<row>" flies (way_body)
-HIGH_ONTO_ROWS = (*STRAIGHT_WAYS, "tucked")   # the rows a ``<row>_high_onto_region`` may fly (way_body; "tucked": tucked_onto_body)
+HIGH_ONTO_ROWS = {**{row: (row, row) for row in STRAIGHT_WAYS}, "tucked": ("tucked_onto", "long")}
+# the rows a ``<row>_high_onto_region`` may fly: the way whose table flies it (way_body) and the row whose flat region its
+# flat equivalent lands in ("tucked": tucked_onto_body, the long row flying with the arms back and the tuck)
 TURNED_WAYS = ("turned", "turned_long", "turned_long_short", "turned_near_long", "turned_mid_long", "turned_deep_long",
                "turned_far_short", "turned_near_short", "turned_near_deep_long", "turned_mid_deep_long",
                *SIDEWAYS_WAYS)      # the ways commanded_way names that turn first (planning.commanded.plan_turned)
-
-
-def landing_row(row: str) -> str:
-    """The row whose flat region a ``<row>_high_onto_region``'s flat equivalent lands in: the row itself, the long row
-    for the tucked row (tucked_onto_body flies the long row)."""
-    return "long" if row == "tucked" else row
 
 
 def way_body(body: dict, way: str) -> dict:
@@ -385,9 +383,8 @@ def way_body(body: dict, way: str) -> dict:
     if way.endswith("_high_onto") and way.removesuffix("_high_onto") in HIGH_ONTO_ROWS:
         # onto a box by a straight row (or the tucked row) with a higher lift-off (box_way): that row, its
         # ``<way>_settings`` and crouch pairs
-        under = way.removesuffix("_high_onto")
-        return over(way_body(body, "tucked_onto" if under == "tucked" else under), body, f"{way}_settings",
-                    f"{way}_crouch_by_air_time")
+        flown_by, _ = HIGH_ONTO_ROWS[way.removesuffix("_high_onto")]
+        return over(way_body(body, flown_by), body, f"{way}_settings", f"{way}_crouch_by_air_time")
     row = way.rsplit("_", 1)[0]
     if way.endswith(("_down", "_onto")) and row in STRAIGHT_WAYS:
         # onto or down from a box by a straight row (box_way): flown by that row, its ``<way>_settings`` over it if any
@@ -509,7 +506,7 @@ def box_way(body: dict, target, air_time: float) -> str | None:
         if z < 0.0 \
         else (*((f"{row}_onto", f"{row}_region", body.get(f"{row}_onto_region")) for row in STRAIGHT_WAYS),
               ("tucked_onto", "long_region", body.get("tucked_onto_region")),
-              *((f"{row}_high_onto", f"{landing_row(row)}_region", body.get(f"{row}_high_onto_region"))
+              *((f"{row}_high_onto", f"{HIGH_ONTO_ROWS[row][1]}_region", body.get(f"{row}_high_onto_region"))
                 for row in HIGH_ONTO_ROWS))
     def within(box: dict, key: str, value: float) -> bool:       # an optional bound holds when absent
         low, high = box.get(key, (-math.inf, math.inf))
@@ -631,7 +628,7 @@ def commanded_limit(character: str, z: float = 0.0) -> str | None:
     parts += [("flat", f"{words} {(_flat if key.removesuffix('_region') in STRAIGHT_WAYS else _turned)(body[key])}")
               for key, words in FLAT_REGION_WORDS if body.get(key)]
     boxes = (*((f"{row}_onto_region", "onto", "+", row) for row in STRAIGHT_WAYS), ("tucked_onto_region", "onto", "+", "long"),
-             *((f"{row}_high_onto_region", "onto", "+", landing_row(row)) for row in HIGH_ONTO_ROWS),
+             *((f"{row}_high_onto_region", "onto", "+", HIGH_ONTO_ROWS[row][1]) for row in HIGH_ONTO_ROWS),
              *((f"{row}_down_region", "down from", "-", row) for row in STRAIGHT_WAYS))
     for key, way, sign, row in boxes:
         if body.get(key):
