@@ -808,7 +808,8 @@ def test_the_man_onto_higher_boxes_by_his_deep_rows_with_a_higher_lift_off_and_b
 
 @pytest.mark.slow
 @pytest.mark.parametrize("character, way", [*(("man", way) for way in MAN_HIGH_ONTO_ROWS), ("man", "near_long_high_onto"),
-                                            ("woman", "long_high_onto"), ("woman", "tucked_high_onto")])
+                                            ("woman", "long_high_onto"), ("woman", "tucked_high_onto"),
+                                            ("woman", "shallow_long_high_onto")])
 def test_a_random_target_onto_a_higher_box_lands_as_planned(character, way):
     """The first of the report's box draws (seed SEED) in each row onto higher boxes (the man's deep rows, his near row
     onto near boxes at its 0.6 m crouch, the woman's long row at its deepest crouch, her tucked row onto near boxes at a
@@ -867,7 +868,7 @@ def test_the_woman_onto_higher_boxes_by_her_long_row_with_a_higher_lift_off_and_
     assert commanded_way("woman", (0.85, 0.0, 0.45), 0.6) is None    # nearer than 0.92 m at T0 0.75 s: not measured
     assert commanded_way("woman", (0.95, 0.0, 0.56), 0.53) is None   # a 0.56 m box at T0 0.75 s: above 0.55 m short or fell
     assert commanded_way("woman", (1.1, 0.0, 0.3), 0.6) == "long_high_onto"    # T0 0.70 s: the damping 0.79
-    assert commanded_way("woman", (1.0, 0.0, 0.41), 0.53) is None    # T0 0.69 s: below 0.7 s flown 0.06-0.1 s long
+    assert commanded_way("woman", (1.0, 0.0, 0.41), 0.53) == "shallow_long_high_onto"   # T0 0.69 s: at 0.45 m flown long
     body = table("woman")
     row = way_body(body, "long_high_onto")
     low, high = (commanded_settings(row, t, 1.0) for t in (0.72, 0.76))
@@ -881,6 +882,35 @@ def test_the_woman_onto_higher_boxes_by_her_long_row_with_a_higher_lift_off_and_
     assert text and "\n" not in text and ("onto a box 0.25-0.55 m high at target_x 0.92-1.6 m where the same lift-off on "
                                            "flat ground would land in the long row's target_x 0.5-1.6 m (a higher "
                                            "lift-off) in 0.7-0.76 s") in text
+
+
+def test_the_woman_onto_boxes_between_her_long_rows_by_a_shallower_crouch_and_beyond_it_refused():
+    """Her `shallow_long_high_onto_region` (issue 29): onto a 0.25-0.55 m box at target_x 0.92-1.6 m whose lift-off flies
+    T0 0.67-0.7 s on flat ground, between her long row's onto region (0.66 s) and its higher lift-off (0.7 s), the flat
+    equivalent's landing in her long row's region; flown by the long row at a 0.5 m crouch with her damping (at her
+    deepest 0.45 m crouch these flew 0.06-0.1 s long whatever the damping); a target outside refused in one line naming
+    it (no simulation)."""
+    from sim_core.skills.jump_to_target.commanded import commanded_settings, commanded_way, table, way_body
+    from sim_core.skills.jump_to_target.region import takeoff_refusal
+    assert commanded_way("woman", (1.1, 0.0, 0.35), 0.56) == "shallow_long_high_onto"   # T0 0.68 s, flat landing 1.34 m
+    assert in_region("woman", (1.1, 0.0, 0.35), 0.56)
+    assert commanded_way("woman", (1.1, 0.0, 0.3), 0.6) == "long_high_onto"    # T0 0.70 s: the deepest crouch as it was
+    assert commanded_way("woman", (1.2, 0.0, 0.25), 0.55) == "long_onto"       # T0 0.64 s: the row as it was
+    assert commanded_way("woman", (1.3, 0.0, 0.3), 0.56) is None      # T0 0.669 s: below 0.67 s flown long
+    assert commanded_way("woman", (0.95, 0.0, 0.56), 0.42) is None    # a 0.56 m box at T0 0.69 s: above 0.55 m
+    assert commanded_way("woman", (0.93, 0.0, 0.54), 0.44) == "shallow_long_high_onto"    # a 0.54 m box at T0 0.69 s
+    body = table("woman")
+    row = way_body(body, "shallow_long_high_onto")
+    assert row["settings"]["vertical_thrust"] == 1.0 and "crouch_arms" not in row["settings"]   # the long row's
+    low, high = (commanded_settings(row, t, 1.0) for t in (0.67, 0.7))
+    assert low["crouch_height"] == high["crouch_height"] == 0.5                   # shallower than her deepest 0.45 m
+    assert low["thrust_damping"] == high["thrust_damping"] == 0.79
+    assert takeoff_refusal("woman", (1.5, 0.0, 0.55), 0.47) is not None          # beyond her take-off: not offered
+    assert not in_region("woman", (1.5, 0.0, 0.55), 0.47)
+    text = region_refusal("woman", (1.3, 0.0, 0.3), 0.56)
+    assert text and "\n" not in text and ("onto a box 0.25-0.55 m high at target_x 0.92-1.6 m where the same lift-off on "
+                                           "flat ground would land in the long row's target_x 0.5-1.6 m (a higher "
+                                           "lift-off) in 0.67-0.7 s") in text
 
 
 def test_the_woman_onto_near_boxes_by_her_tucked_row_at_a_shallower_crouch_and_beyond_it_refused():
