@@ -169,12 +169,14 @@ def test_a_target_outside_both_regions_is_refused_naming_both(monkeypatch):
                          "lift-off on flat ground would land in the long air times' region in 0.52-0.66 s "
                          "(T0 = air_time + 2 height / (g air_time)), and onto a box 0.25-0.5 m high at target_x 0.55-0.85 m "
                          "where the same lift-off on flat ground would land in the long air times' region in 0.52-0.7 s "
-                         "(T0 = air_time + 2 height / (g air_time)), and onto a box 0.25-0.55 m high at target_x 0.92-1.6 m "
+                         "(T0 = air_time + 2 height / (g air_time)), and onto a box 0.25-0.55 m high at target_x 0.85-1.6 m "
                          "where the same lift-off on flat ground would land in the long row's target_x 0.5-1.6 m (a higher "
                          "lift-off) in 0.7-0.76 s (T0 = air_time + 2 height / (g air_time)), and onto a box 0.25-0.5 m "
                          "high at target_x 0.65-0.77 m at a forward speed of 0.9-1.3 m/s (target_x / air_time) where the "
                          "same lift-off on flat ground would land in the long row's target_x 0.5-1.6 m (a higher lift-off) "
-                         "in 0.7-0.76 s (T0 = air_time + 2 height / (g air_time))")
+                         "in 0.7-0.76 s (T0 = air_time + 2 height / (g air_time)), and onto a box 0.25-0.55 m high at "
+                         "target_x 0.85-1.6 m where the same lift-off on flat ground would land in the long row's "
+                         "target_x 0.5-1.6 m (a higher lift-off) in 0.67-0.7 s (T0 = air_time + 2 height / (g air_time))")
     beyond = region_refusal("woman", (1.2, 0.0, 0.7), 0.45)     # onto a box beyond her take-off: that limit alone
     assert beyond.startswith("target (1.2, 0, 0.7) m in air_time=0.45 s is beyond the woman's take-off")
     down = region_refusal("woman", (1.5, 0.0, -0.7), 0.45)      # down from one: the down regions, no turned one
@@ -699,7 +701,8 @@ def test_a_random_target_onto_a_box_is_flown_by_the_long_row_as_its_plan_was():
     assert commanded_way("woman", (0.7, 0.0, 0.35), 0.5) == "tucked_onto"         # the box's edge 0.4 m ahead: not the long row
     assert commanded_way("woman", (1.0, 0.0, 0.6), 0.5) is None                   # T0 0.74 s
     assert commanded_way("woman", (0.95, 0.0, 0.45), 0.43) == "long_onto"        # T0 0.64 s at 1.42 m
-    assert commanded_way("woman", (0.95, 0.0, 0.52), 0.43) is None                # T0 0.68 s, but higher than measured
+    assert commanded_way("woman", (0.95, 0.0, 0.52), 0.43) == "shallow_long_high_onto"   # T0 0.68 s: a 0.5 m crouch's
+    assert commanded_way("woman", (0.95, 0.0, 0.56), 0.42) is None                # T0 0.69 s, but higher than measured
     assert commanded_way("woman", (0.9, 0.0, 0.3), 0.45) is None                 # 0.85-0.92 m: the long row's near edge missed
     text = region_refusal("woman", (0.9, 0.0, 0.3), 0.45)
     assert text and "\n" not in text and "onto a box 0.25-0.5 m high at target_x 0.92-1.6 m" in text
@@ -808,7 +811,8 @@ def test_the_man_onto_higher_boxes_by_his_deep_rows_with_a_higher_lift_off_and_b
 
 @pytest.mark.slow
 @pytest.mark.parametrize("character, way", [*(("man", way) for way in MAN_HIGH_ONTO_ROWS), ("man", "near_long_high_onto"),
-                                            ("woman", "long_high_onto"), ("woman", "tucked_high_onto")])
+                                            ("woman", "long_high_onto"), ("woman", "tucked_high_onto"),
+                                            ("woman", "shallow_long_high_onto")])
 def test_a_random_target_onto_a_higher_box_lands_as_planned(character, way):
     """The first of the report's box draws (seed SEED) in each row onto higher boxes (the man's deep rows, his near row
     onto near boxes at its 0.6 m crouch, the woman's long row at its deepest crouch, her tucked row onto near boxes at a
@@ -854,7 +858,7 @@ def test_the_man_onto_near_boxes_by_his_near_row_at_a_shallower_crouch_and_beyon
 
 
 def test_the_woman_onto_higher_boxes_by_her_long_row_with_a_higher_lift_off_and_beyond_it_refused():
-    """Her `long_high_onto_region` (issue 29): onto a 0.25-0.55 m box at target_x 0.92-1.6 m whose lift-off flies T0
+    """Her `long_high_onto_region` (issue 29): onto a 0.25-0.55 m box at target_x 0.85-1.6 m whose lift-off flies T0
     0.7-0.76 s on flat ground, beyond her long row's onto region (0.66 s), the flat equivalent's landing in her long
     row's region; flown by the long row at its deepest crouch (0.45 m) with the thrust's damping lowered by the air time
     (the crouch pairs' ``thrust_damping`` column); within her take-off alone; a target outside refused in one line
@@ -864,10 +868,11 @@ def test_the_woman_onto_higher_boxes_by_her_long_row_with_a_higher_lift_off_and_
     assert commanded_way("woman", (1.1, 0.0, 0.4), 0.6) == "long_high_onto"     # T0 0.74 s, flat landing 1.35 m
     assert commanded_way("woman", (1.2, 0.0, 0.25), 0.55) == "long_onto"       # T0 0.64 s: the row as it was
     assert commanded_way("woman", (1.0, 0.0, 0.5), 0.6) is None      # T0 0.77 s: flown short (0.71-0.74 s) or fell
-    assert commanded_way("woman", (0.85, 0.0, 0.45), 0.6) is None    # nearer than 0.92 m at T0 0.75 s: not measured
+    assert commanded_way("woman", (0.85, 0.0, 0.45), 0.6) == "long_high_onto"   # from 0.85 m (was 0.92 m): measured
+    assert commanded_way("woman", (0.84, 0.0, 0.45), 0.6) is None    # nearer than 0.85 m at T0 0.75 s: not measured
     assert commanded_way("woman", (0.95, 0.0, 0.56), 0.53) is None   # a 0.56 m box at T0 0.75 s: above 0.55 m short or fell
     assert commanded_way("woman", (1.1, 0.0, 0.3), 0.6) == "long_high_onto"    # T0 0.70 s: the damping 0.79
-    assert commanded_way("woman", (1.0, 0.0, 0.41), 0.53) is None    # T0 0.69 s: below 0.7 s flown 0.06-0.1 s long
+    assert commanded_way("woman", (1.0, 0.0, 0.41), 0.53) == "shallow_long_high_onto"   # T0 0.69 s: at 0.45 m flown long
     body = table("woman")
     row = way_body(body, "long_high_onto")
     low, high = (commanded_settings(row, t, 1.0) for t in (0.72, 0.76))
@@ -878,9 +883,40 @@ def test_the_woman_onto_higher_boxes_by_her_long_row_with_a_higher_lift_off_and_
     assert not in_region("woman", (1.4, 0.0, 0.5), 0.55)
     assert commanded_way("woman", (1.0, 0.0, 0.53), 0.53) == "long_high_onto"   # a 0.53 m box at T0 0.73 s
     text = region_refusal("woman", (1.0, 0.0, 0.5), 0.6)
-    assert text and "\n" not in text and ("onto a box 0.25-0.55 m high at target_x 0.92-1.6 m where the same lift-off on "
+    assert text and "\n" not in text and ("onto a box 0.25-0.55 m high at target_x 0.85-1.6 m where the same lift-off on "
                                            "flat ground would land in the long row's target_x 0.5-1.6 m (a higher "
                                            "lift-off) in 0.7-0.76 s") in text
+
+
+def test_the_woman_onto_boxes_between_her_long_rows_by_a_shallower_crouch_and_beyond_it_refused():
+    """Her `shallow_long_high_onto_region` (issue 29): onto a 0.25-0.55 m box at target_x 0.85-1.6 m whose lift-off flies
+    T0 0.67-0.7 s on flat ground, between her long row's onto region (0.66 s) and its higher lift-off (0.7 s), the flat
+    equivalent's landing in her long row's region; flown by the long row at a 0.5 m crouch with her damping (at her
+    deepest 0.45 m crouch these flew 0.06-0.1 s long whatever the damping); a target outside refused in one line naming
+    it (no simulation)."""
+    from sim_core.skills.jump_to_target.commanded import commanded_settings, commanded_way, table, way_body
+    from sim_core.skills.jump_to_target.region import takeoff_refusal
+    assert commanded_way("woman", (1.1, 0.0, 0.35), 0.56) == "shallow_long_high_onto"   # T0 0.68 s, flat landing 1.34 m
+    assert in_region("woman", (1.1, 0.0, 0.35), 0.56)
+    assert commanded_way("woman", (1.1, 0.0, 0.3), 0.6) == "long_high_onto"    # T0 0.70 s: the deepest crouch as it was
+    assert commanded_way("woman", (1.2, 0.0, 0.25), 0.55) == "long_onto"       # T0 0.64 s: the row as it was
+    assert commanded_way("woman", (1.3, 0.0, 0.3), 0.56) is None      # T0 0.669 s: below 0.67 s flown long
+    assert commanded_way("woman", (0.95, 0.0, 0.56), 0.42) is None    # a 0.56 m box at T0 0.69 s: above 0.55 m
+    assert commanded_way("woman", (0.93, 0.0, 0.54), 0.44) == "shallow_long_high_onto"    # a 0.54 m box at T0 0.69 s
+    assert commanded_way("woman", (0.88, 0.0, 0.4), 0.52) == "shallow_long_high_onto"     # from 0.85 m, T0 0.68 s
+    assert commanded_way("woman", (0.83, 0.0, 0.4), 0.52) == "tucked_onto"   # nearer than 0.85 m: the tucked row's
+    body = table("woman")
+    row = way_body(body, "shallow_long_high_onto")
+    assert row["settings"]["vertical_thrust"] == 1.0 and "crouch_arms" not in row["settings"]   # the long row's
+    low, high = (commanded_settings(row, t, 1.0) for t in (0.67, 0.7))
+    assert low["crouch_height"] == high["crouch_height"] == 0.5                   # shallower than her deepest 0.45 m
+    assert low["thrust_damping"] == high["thrust_damping"] == 0.79
+    assert takeoff_refusal("woman", (1.5, 0.0, 0.55), 0.47) is not None          # beyond her take-off: not offered
+    assert not in_region("woman", (1.5, 0.0, 0.55), 0.47)
+    text = region_refusal("woman", (1.3, 0.0, 0.3), 0.56)
+    assert text and "\n" not in text and ("onto a box 0.25-0.55 m high at target_x 0.85-1.6 m where the same lift-off on "
+                                           "flat ground would land in the long row's target_x 0.5-1.6 m (a higher "
+                                           "lift-off) in 0.67-0.7 s") in text
 
 
 def test_the_woman_onto_near_boxes_by_her_tucked_row_at_a_shallower_crouch_and_beyond_it_refused():
@@ -893,7 +929,8 @@ def test_the_woman_onto_near_boxes_by_her_tucked_row_at_a_shallower_crouch_and_b
     assert commanded_way("woman", (0.7, 0.0, 0.4), 0.6) == "tucked_high_onto"    # T0 0.74 s, 1.17 m/s
     assert in_region("woman", (0.7, 0.0, 0.4), 0.6)
     assert commanded_way("woman", (0.7, 0.0, 0.4), 0.5) == "tucked_onto"         # T0 0.66 s: the row as it was
-    assert commanded_way("woman", (0.85, 0.0, 0.4), 0.62) is None     # 0.85 m at T0 0.75 s: flown ~0.1 s short
+    assert commanded_way("woman", (0.8, 0.0, 0.4), 0.62) is None      # 0.8 m at T0 0.75 s: flown ~0.1 s short
+    assert commanded_way("woman", (0.85, 0.0, 0.4), 0.62) == "long_high_onto"    # 0.85 m: her long row's (from 0.85 m)
     assert commanded_way("woman", (0.7, 0.0, 0.35), 0.68) is None     # T0 0.79 s: flown short or fell
     assert commanded_way("woman", (0.7, 0.0, 0.55), 0.55) is None     # a 0.55 m box: the head on its edge in the lean
     assert commanded_way("woman", (0.6, 0.0, 0.4), 0.6) is None       # nearer than 0.65 m: landed 6-14 cm off

@@ -2759,6 +2759,59 @@ the box's edge in the lean, or too slow forward from the deepest crouch, above),
 measured at 0.66-0.7 s before, 25 / 36, and by the long row onto higher boxes above, 8 / 12), nearer than 0.65 m (3.1 %), 0.85-0.92 m (1.5 %, above), 0.5-0.75 m boxes from 0.92 m (1.8 %:
 fell or flown short above 0.55 m).
 
+**The woman onto boxes between her long row's onto rows: T0 0.67-0.7 s by a 0.5 m crouch (issue 29, 2026-12-07): her
+onto-box targets 18.9 % -> 21.9 %, her box targets 39.8 % -> 41.4 %.** Of issue 29's onto-box targets
+(`box_region_share`'s draws, seed 29) 18.9 % were offered, 35.9 % of those within her take-off (`region.takeoff_refusal`
+None); of the refused within it (a scratch count, % of all her onto targets) 0.8-1.1 m 11.8 % (half of it boxes above 0.5
+m), 1.1-1.4 m below 0.5 m 4.1 %, by the flat equivalent T0 0.7-0.8 s ~19 % and ~3 % at T0 0.66-0.7 s, between her long
+row's onto region (0.52-0.66 s) and its higher lift-off (`long_high_onto_region`, 0.7-0.76 s: the 0.45 m crouch's draws
+at 0.66-0.7 s had flown 0.06-0.1 s long, 8 / 12 above). One jump at a time (a scratch script running one commanded jump
+with a row's settings and naming the bodies on the box):
+- at her deepest crouch (0.45 m) onto (1.045 m, a 0.324 m box, 0.564 s; T0 0.681 s), aimed at 1.6 m, the thrust's damping
+  0.79 / 0.9 / 1.0 (the leap's bound) left at 3.34 / 3.32 / 3.31 m/s up and flew T0 0.702 / 0.702 / 0.674 s (fell, fell,
+  not still): a higher damping does not lower her lift-off; a 0.47 m crouch flew 0.727 s (3.46 m/s up), 0.5 m 0.678 s
+  (3.17 m/s);
+- at a 0.5 m crouch onto (1.1 m, a 0.4 m box, 0.6 s; T0 0.736 s), aimed at 1.7 m, damping 0.79 / 0.65 / 0.55 / 0.45 /
+  0.35 flew T0 0.687 / 0.724 / 0.780 s (balanced, a step, balanced) and fell twice (3.17 / 3.33 / 3.52 / 3.56 / 3.64 m/s
+  up, 1.11 -> 0.84 m/s forward) - the man's design (his rows' crouch held, the damping by T0) on her.
+Each drawn as a user's requests (a scratch script drawing `random_requests.box_target_draw` until `commanded_way` with
+a scratch table gives the row and `region.mode` "commanded", each run by `random_requests.evaluate`, budget 24):
+- first, her long row onto higher boxes from T0 0.66 s with pairs below its 0.45 m (T0 0.64 / 0.68 / 0.7 s: crouch 0.525
+  / 0.5 / 0.45 m, damping 0.79): draws at T0 0.66-0.7 s seed 5101 **9 / 12** - traced, (1.061 m, a 0.436 m box, 0.523 s)
+  swung its crouch 0.467 -> 0.525 -> 0.519 -> 0.481 -> 0.507 m as the air-time secant crossed the pairs' 0.68-0.7 s and
+  landed 0.77-1.4 m, fallen or stepped;
+- second, the crouch 0.5 m held below T0 0.69 s (then 0.45 m at 0.7 s as it was): seed 5101 **12 / 12**, fresh 5103
+  **10 / 12** (T0 0.662 s flown 0.064 s long, 6.2 cm long); but its draws over the whole row (T0 0.66-0.76 s) fresh 5105
+  **7 / 12** - five misses at T0 0.71-0.76 s (flown 0.04-0.08 s short or long, 10 cm off): the secant now stepping to the
+  0.5 m crouch below 0.7 s; not kept;
+- the man's design on her whole row (crouch 0.5 m, damping 0.79 / 0.65 / 0.55 at T0 0.69 / 0.725 / 0.78 s): T0 0.66-0.8 s
+  seed 5111 **12 / 12**, fresh 5113 **9 / 12** and 5115 **10 / 12** (T0 from 0.76 s 5 / 8, flown 0.07-0.15 s short), T0
+  0.66-0.76 s fresh 5121 **9 / 12** and 5123 **11 / 12**: inside 0.66-0.76 s **46 / 52 (88 %)** - boxes to 0.45 m 33 /
+  35, above 12 / 16 (the 0.45 m crouch's row had landed them); not kept.
+So a second box of the long row (`commanded.HIGH_ONTO_ROWS` "shallow_long": the long row as "long" flies it, its flat
+equivalent in her long row's region; `shallow_long_high_onto_region`, the keys of `long_onto_region`, and
+`shallow_long_high_onto_crouch_by_air_time`, crouch 0.5 m, damping 0.79 held): 0.25-0.55 m boxes at target_x 0.92-1.6 m,
+T0 **0.67-0.7 s** (the draws from 0.66 s flown long at 0.661-0.662 s, above), her long row onto higher boxes as it was
+(checked first: at 0.7 s its own): fresh seeds 5131 **12 / 12** and 5133 **11 / 12** (the miss (0.945 m, a 0.508 m box,
+0.438 s) flown 0.072 s long) at target_x 0.92-1.6 m. And both rows from 0.85 m
+(`long_high_onto_region` had kept `long_onto_region`'s 0.92 m, not measured for it; 0.85-0.92 m at T0 0.66-0.76 s lay
+between her tucked rows and these): their draws at 0.85-0.92 m alone fresh seeds 5141 **10 / 12**, 5143 **12 / 12** and
+5147 **11 / 12** (the three misses onto 0.505-0.55 m boxes: flown 0.06-0.09 s long, or 5.5 cm off; to 0.5 m 23 / 23), both
+rows' draws fresh seed 5145 **12 / 12**. Kept: `shallow_long_high_onto_region` 0.25-0.55 m boxes at target_x **0.85**-1.6 m,
+T0 **0.67-0.7 s**, and `long_high_onto_region` from target_x **0.85 m**; inside the kept bounds over the fresh seeds
+5131-5147 **68 / 72 (94 %)**, every miss onto a box above 0.5 m.
+A target outside is refused in one line (`commanded_limit`: "... and onto a box 0.25-0.55 m high at target_x 0.85-1.6 m where
+the same lift-off on flat ground would land in the long row's target_x 0.5-1.6 m (a higher lift-off) in 0.67-0.7 s ...").
+Her share of issue 29's box targets (`random_requests.box_region_share('woman', 29)`): 39.8 % -> **41.4 %** (onto 18.9 %
+-> **21.9 %**: T0 0.67-0.7 s 2.1 %, the rows from 0.85 m 0.9 %; down 61.0 % as it was; of the onto targets within her take-off
+35.9 % -> 41.7 % offered); the man's table is untouched (his share 44.8 %, onto 22.0 %). Tests:
+tests/test_jump_region.py checks the row's ways, settings (the crouch, the damping) and the refusal (no simulation) and
+plans and runs the first of the report's box draws in it (slow); the targets the tests held refused at T0 0.68-0.69 s
+((1.0, 0, 0.41) m in 0.53 s, (0.95, 0, 0.52) m in 0.43 s) are now this row's and those at 0.85 m at T0 0.75 s ((0.85, 0,
+0.45) m in 0.6 s, (0.85, 0, 0.4) m in 0.62 s) the long row's; nearer or higher ones stay refused. Not done: T0 above 0.76 s (the 0.5 m crouch's damping 0.55 flew short from 0.76
+s, 5 / 8 above; 0.45 fell), boxes above 0.55 m, nearer than 0.65 m (the head on the box's edge in the lean, the previous
+session), T0 0.66-0.67 s (flown long at the 0.5 m crouch).
+
 **The woman down from a box with the landing for a drop: higher boxes at short air times offered (issue 29, thirtieth
 session, 2026-12-07): her box targets 28.4 % -> 31.9 % (down 43.5 % -> 50.5 %; seed 29, `random_requests.box_region_share`).**
 Her `down_settings` had kept the landing's recovery step and never flown the man's landing for a drop (above). Each of

@@ -145,7 +145,9 @@ Fig. 6 with his thrust slowed for his strength, tools/scale_commanded.py and doc
   own crouch pairs (way_body: the man's deep rows with the thrust's damping lowered and the arms' swing smaller, whose
   hands touched a high box's edge in the take-off; docs/jump_to_target.md "The man onto higher boxes"); ``<row>`` may
   also be "tucked" (HIGH_ONTO_ROWS: the tucked row, tucked_onto_body, its landings in the long row's region; the woman's
-  near boxes at a shallower crouch, docs/jump_to_target.md "The woman onto near boxes"); ``target_speed`` (optional,
+  near boxes at a shallower crouch, docs/jump_to_target.md "The woman onto near boxes"), or "shallow_long" (the long row
+  as "long" flies it, a second box over its own pairs: the woman's long row at a 0.5 m crouch below her deepest crouch's
+  lift-off, docs/jump_to_target.md "The woman onto boxes between her long row's onto rows"); ``target_speed`` (optional,
   [low, high] m/s) bounds the target's forward speed x / air_time;
 - ``tucked_onto_region`` (optional, with the long row and ``tucked_onto_settings``): the keys of ``long_onto_region`` for a
   box nearer than it, flown by the long row with ``tucked_onto_settings`` over its settings (tucked_onto_body: the arms held
@@ -367,9 +369,11 @@ SIDEWAYS_WAYS = ("sideways", "sideways_long", "sideways_long_short", "sideways_n
                  "sideways_mid_deep_long", "sideways_near_short", "sideways_far_short")
 # the ways straight to the side: the quarter turn, then the table's own row ("sideways") or the row the turned way
 # "turned_<row>" flies (way_body)
-HIGH_ONTO_ROWS = {**{row: (row, row) for row in STRAIGHT_WAYS}, "tucked": ("tucked_onto", "long")}
+HIGH_ONTO_ROWS = {**{row: (row, row) for row in STRAIGHT_WAYS}, "tucked": ("tucked_onto", "long"),
+                  "shallow_long": ("long", "long")}
 # the rows a ``<row>_high_onto_region`` may fly: the way whose table flies it (way_body) and the row whose flat region its
-# flat equivalent lands in ("tucked": tucked_onto_body, the long row flying with the arms back and the tuck)
+# flat equivalent lands in ("tucked": tucked_onto_body, the long row flying with the arms back and the tuck;
+# "shallow_long": the long row again, a second box of it over its own crouch pairs)
 TURNED_WAYS = ("turned", "turned_long", "turned_long_short", "turned_near_long", "turned_mid_long", "turned_deep_long",
                "turned_far_short", "turned_near_short", "turned_near_deep_long", "turned_mid_deep_long",
                *SIDEWAYS_WAYS)      # the ways commanded_way names that turn first (planning.commanded.plan_turned)
