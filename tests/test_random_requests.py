@@ -87,10 +87,10 @@ def test_box_draws_are_in_range_in_the_region_and_leave_the_other_draws_as_they_
 def test_sideways_draws_are_each_characters_to_either_side_in_its_sideways_regions():
     from sim_core.skills.jump_to_target.commanded import SIDEWAYS_WAYS, commanded_way, table
     plain = draw_requests(1, ["man", "woman"], 2, 1, 1)
-    drawn = draw_requests(1, ["man", "woman"], 2, 1, 1, sideways=6)
+    drawn = draw_requests(1, ["man", "woman"], 2, 1, 1, sideways=7)    # (seed 1's first 6 of the woman all to the left)
     assert drawn[:len(plain)] == plain                       # their own stream: the other draws unchanged
     side = drawn[len(plain):]
-    assert [d.character for d in side] == ["man"] * 6 + ["woman"] * 6 and all(d.skill == "sideways" for d in side)
+    assert [d.character for d in side] == ["man"] * 7 + ["woman"] * 7 and all(d.skill == "sideways" for d in side)
     for d in side:
         x, y, t = d.values
         way = commanded_way(d.character, (x, y), t)

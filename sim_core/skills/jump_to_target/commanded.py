@@ -366,7 +366,7 @@ def mid_deep_long_body(body: dict) -> dict:
 STRAIGHT_WAYS = ("long", "near_long", "deep_long", "far_short", "near_short", "near_deep_long",
                  "mid_deep_long")   # commanded_way's ways beyond ``region``, straight ahead
 SIDEWAYS_WAYS = ("sideways", "sideways_long", "sideways_long_short", "sideways_near_long", "sideways_mid_long",
-                 "sideways_mid_deep_long", "sideways_near_short", "sideways_far_short")
+                 "sideways_mid_deep_long", "sideways_deep_long", "sideways_near_short", "sideways_far_short")
 # the ways straight to the side: the quarter turn, then the table's own row ("sideways") or the row the turned way
 # "turned_<row>" flies (way_body)
 HIGH_ONTO_ROWS = {**{row: (row, row) for row in STRAIGHT_WAYS}, "tucked": ("tucked_onto", "long"),
@@ -591,6 +591,7 @@ FLAT_REGION_WORDS = (       # commanded_limit's words for each region on flat gr
     ("sideways_near_long_region", "turned a quarter first with long air times nearer"),
     ("sideways_mid_long_region", "turned a quarter first with long air times in the middle"),
     ("sideways_mid_deep_long_region", "turned a quarter first with the longest air times in the middle"),
+    ("sideways_deep_long_region", "turned a quarter first with the longest air times"),
     ("sideways_near_short_region", "turned a quarter first with short air times nearer"),
     ("sideways_far_short_region", "turned a quarter first with short air times far ahead"),
     ("long_region", "for long air times (the leap's vertical thrust) on flat ground for"),
