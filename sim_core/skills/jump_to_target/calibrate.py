@@ -3104,7 +3104,11 @@ same jumps). Drawn as the sideways rows before (the scratch script, the side fix
 `random_requests.evaluate`, budget 24; within 5 cm and 0.05 s and balanced), 1.0-1.6 m in 0.44-0.55 s: to the right
 fresh seeds 2913 **11 / 12** (the miss (1.224 m, 0.517 s) 5.3 cm off, 5 cm of it forward, after 24 jumps) and 2915
 **11 / 12** (the miss (1.549 m, 0.44 s) 7 cm forward, flown 0.04 s long, after 14 jumps), to the left fresh seed 2917
-**11 / 12** (the miss (1.578 m, 0.452 s) fell) - **33 / 36 (92 %)**, to the right 22 / 24, a median of ~20 s to a result.
+**11 / 12** (the miss (1.578 m, 0.452 s) fell) - 33 / 36, a median of ~20 s to a result; after the region was chosen, either
+side fresh seed 2921 **11 / 12** (to the right 2 / 3: the miss (1.037 m, 0.446 s) 18 cm long after 14 jumps; to the left 9 / 9)
+and to the right fresh seed 2923 **12 / 12**: **56 / 60 (93 %)**, to the right 36 / 39 (92 %), to the left 20 / 21. The
+misses lie at the shortest air times: below 0.46 s 12 / 15, from 0.46 s 44 / 45 (the long row's shallowest crouch pair
+flies 0.42 s straight ahead, after the quarter turn 0.43-0.5 s).
 (Before it, with `quarter_lines`, the right side 1.2-1.6 m had landed seed 2911 9 / 10; pooled with the earlier draws the
 right side below 0.55 s 13 / 18.) So `sideways_long_short_region` holds both sides (its `side` dropped): distance 1.0-1.6 m,
 bearing 87-90 deg, air_time 0.44-0.55 s. Not offered: 1.2-1.6 m in 0.4-0.44 s (below 0.44 s only the short row's
