@@ -157,7 +157,7 @@ def test_a_target_outside_both_regions_is_refused_naming_both(monkeypatch):
                          "and turned a quarter first with long air times for a distance of 1-1.6 m at a bearing of "
                          "87-90 deg to either side, air_time 0.55-0.7 s, "
                          "and turned a quarter first with the long row at shorter air times for a distance of 1-1.6 m "
-                         "at a bearing of 87-90 deg to the left, air_time 0.44-0.55 s, "
+                         "at a bearing of 87-90 deg to either side, air_time 0.44-0.55 s, "
                          "and for long air times (the leap's vertical thrust) on flat ground for target_x 0.5-1.6 m, "
                          "target_y -0.02-0.02 m, air_time 0.52-0.7 s, and turned first with long air times for a "
                          "distance of 0.5-1.6 m at a bearing of 0-34 deg to either side, air_time 0.52-0.7 s, and turned "
@@ -1101,7 +1101,7 @@ def test_sideways_targets_turn_a_quarter_first_by_the_measured_line_nearest():
     assert commanded_way("woman", (0.0, middle[0]), middle[1]) == commanded_way("woman", (0.0, -middle[0]), middle[1]) \
         == "sideways"
     assert commanded_way("woman", (0.0, region["distance"][1] + 0.05), middle[1]) is None
-    assert commanded_way("woman", (0.0, -middle[0]), region["air_time"][1] + 0.05) is None   # (the left: sideways_long_short)
+    assert commanded_way("woman", (0.0, -middle[0]), region["air_time"][1] + 0.05) == "sideways_long_short"   # its long row
     assert "sideways_region" not in table("man")                            # the man's table has no sideways_region:
     assert commanded_way("man", (0.0, middle[0]), middle[1]) == "sideways_near_short"   # his near short row flies it
     k = random.Random(SEED).choice([i for i, stood in enumerate(rows["stood"]) if stood])     # one seeded row
@@ -1115,11 +1115,12 @@ def test_sideways_targets_turn_a_quarter_first_by_the_measured_line_nearest():
     assert result["passed"], result_line(result)
 
 
-def first_sideways_draw(way, count=40, character="woman"):
-    """The first of the report's sideways draws of ``character`` (seed SEED, the first ``count``) flown ``way``."""
+def first_sideways_draw(way, count=40, character="woman", side=0.0):
+    """The first of the report's sideways draws of ``character`` (seed SEED, the first ``count``) flown ``way`` (``side``
+    +1 / -1: the first to the left / right)."""
     from sim_core.skills.jump_to_target.commanded import commanded_way
     return next(d for d in draw_requests(SEED, [character], 0, 0, 0, sideways=count)
-                if commanded_way(character, d.values[:2], d.values[2]) == way)
+                if commanded_way(character, d.values[:2], d.values[2]) == way and d.values[1] * side >= 0.0)
 
 
 @pytest.mark.slow
@@ -1134,7 +1135,8 @@ def test_sideways_targets_at_longer_air_times_turn_a_quarter_then_fly_the_long_r
     assert region["distance"] == [1.0, 1.6] and region["air_time"][1] == 0.7
     assert way_body(body, "sideways_long") == way_body(body, "turned_long")
     assert commanded_way("woman", (0.0, 1.45), 0.6) == commanded_way("woman", (0.0, -1.45), 0.6) == "sideways_long"
-    assert commanded_way("woman", (0.0, -1.45), 0.5) is None and commanded_way("woman", (0.0, 1.7), 0.6) is None
+    assert commanded_way("woman", (0.0, -1.45), 0.5) == "sideways_long_short"      # below it: the row's shorter air times
+    assert commanded_way("woman", (0.0, -1.45), 0.42) is None and commanded_way("woman", (0.0, 1.7), 0.6) is None
     assert commanded_way("man", (0.0, 1.45), 0.6) == "sideways_mid_long"       # the man: his own row, not the long row
     text = region_refusal("woman", (0.0, 1.7), 0.6)
     assert "\n" not in text and "turned a quarter first with long air times for a distance of 1-1.6 m" in text
@@ -1245,26 +1247,51 @@ def test_a_seeded_sideways_draw_of_the_man_at_short_air_times_is_flown_by_the_qu
     assert_run_as_planned(result, plan)
 
 
+def test_the_long_row_at_shorter_air_times_steers_by_its_own_quarter_map():
+    """The woman's sideways_long_short_lines: each quarter turn of quarter_lines measured with the long row's own jump at
+    shorter air times after it (planning/turn_map.py quarter_line's ``way``; with the short row's jump some turns stood
+    whose long row's landing fell at every placement, docs/jump_to_target.md, "Her right jumps at shorter air times"); the
+    row steers by them (quarter_lines_of), every other sideways row by quarter_lines; a seeded stored row replayed (the
+    same simulation)."""
+    import random
+    from sim_core.planning.turn_map import quarter_line
+    from sim_core.skills.jump_to_target.commanded import quarter_lines_of, table, turn_for_point
+    body = table("woman")
+    rows = body["sideways_long_short_lines"]
+    assert rows["turn_first"] == body["quarter_lines"]["turn_first"]
+    assert quarter_lines_of(body, "sideways_long_short") == "sideways_long_short_lines"
+    assert quarter_lines_of(body, "sideways_long") == quarter_lines_of(body, "sideways") == "quarter_lines"
+    assert quarter_lines_of(table("man"), "sideways_near_short") == "quarter_lines"
+    for side in (-1.0, 1.0):        # turns to either side stood with the row after them
+        assert sum(stood for turn, stood in zip(rows["turn_first"], rows["stood"]) if turn * side > 0.0) >= 20
+    k = random.Random(SEED).choice([i for i, stood in enumerate(rows["stood"]) if stood])     # one seeded row
+    row = quarter_line("woman", rows["turn_first"][k], "sideways_long_short")
+    assert all(abs(row[name] - rows[name][k]) < 1e-4 for name in ("heading", "feet_x", "feet_y", "line", "stood"))
+    ahead = (rows["feet_x"][k] + math.cos(rows["line"][k]), rows["feet_y"][k] + math.sin(rows["line"][k]))
+    assert turn_for_point(body, ahead, lines="sideways_long_short_lines") == rows["turn_first"][k]
+
+
 @pytest.mark.slow
-def test_left_jumps_at_shorter_air_times_turn_a_quarter_then_fly_the_long_row_and_right_ones_are_refused():
-    """Straight to the left 1.0-1.6 m at 0.44-0.55 s (the woman's sideways_long_short_region, ``side`` [1, 1]): the
-    quarter turn, then the long row at its shorter air times (way_body "sideways_long_short" reads the table as
-    "turned_long_short" does); to the right there her landings missed (docs/jump_to_target.md, "Her left jumps at
-    shorter air times"), so a right jump there is refused in one line naming the left; a seeded draw planned and run."""
+@pytest.mark.parametrize("side", (1.0, -1.0))
+def test_left_and_right_jumps_at_shorter_air_times_turn_a_quarter_then_fly_the_long_row(side):
+    """Straight to the left or right 1.0-1.6 m at 0.44-0.55 s (the woman's sideways_long_short_region, either side): the
+    quarter turn steered by the row's own quarter map (sideways_long_short_lines), then the long row at its shorter air
+    times (way_body "sideways_long_short" reads the table as "turned_long_short" does); beyond it refused in one line
+    naming it; the report's first draw to each side planned and run."""
     from sim_core.skills.jump_to_target.commanded import commanded_way, table, way_body
     body = table("woman")
     region = body["sideways_long_short_region"]
-    assert region["side"] == [1.0, 1.0] and region["air_time"] == [0.44, 0.55] and region["distance"] == [1.0, 1.6]
+    assert "side" not in region and region["air_time"] == [0.44, 0.55] and region["distance"] == [1.0, 1.6]
     assert way_body(body, "sideways_long_short") == way_body(body, "turned_long_short")
-    assert commanded_way("woman", (0.0, 1.3), 0.5) == "sideways_long_short"
-    assert commanded_way("woman", (0.0, -1.3), 0.5) is None and commanded_way("woman", (0.0, 1.3), 0.43) is None
-    text = region_refusal("woman", (0.0, -1.3), 0.5)
+    assert commanded_way("woman", (0.0, 1.3), 0.5) == commanded_way("woman", (0.0, -1.3), 0.5) == "sideways_long_short"
+    assert commanded_way("woman", (0.0, side * 1.3), 0.43) is None
+    text = region_refusal("woman", (0.0, side * 1.3), 0.43)
     assert "\n" not in text and ("turned a quarter first with the long row at shorter air times for a distance of "
-                                 "1-1.6 m at a bearing of 87-90 deg to the left, air_time 0.44-0.55 s") in text
-    draw = first_sideways_draw("sideways_long_short")
-    assert draw.values[1] > 0.0
+                                 "1-1.6 m at a bearing of 87-90 deg to either side, air_time 0.44-0.55 s") in text
+    draw = first_sideways_draw("sideways_long_short", side=side)
+    assert draw.values[1] * side > 0.0
     result, plan = planned_and_run(draw)
-    assert plan["settings"]["turn_first"] != 0.0 and plan["settings"]["vertical_thrust"] == 1.0
+    assert plan["settings"]["turn_first"] * side < 0.0 and plan["settings"]["vertical_thrust"] == 1.0   # + turns right
     assert_run_as_planned(result, plan)
 
 

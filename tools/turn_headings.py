@@ -14,6 +14,11 @@ quarter_line), written as ``quarter_lines`` (merged with the rows already stored
     tools/turn_headings.py --character woman --quarter --from 0.95 --to 1.2 --step 0.0025 --write
     tools/turn_headings.py --character woman --quarter --from 1.00125 --to 1.19875 --step 0.0025 --write
 
+``--way sideways_<row>`` with ``--quarter``: each quarter turn of the stored ``quarter_lines`` and that row's own jump
+after it (quarter_line's ``way``), written as ``sideways_<row>_lines`` (the row steers by them, commanded.quarter_lines_of):
+
+    tools/turn_headings.py --character woman --quarter --way sideways_long_short --write
+
 ``--lines``: each hop of the stored ``turn_headings`` whose heading is within ``--max-heading`` deg and the two
 commanded jumps along it after it (planning/turn_map.py hop_line), written as ``turn_lines`` (the turned plan
 chooses its hop by the line of the jump after it, commanded.turn_for_point):
@@ -39,6 +44,7 @@ def main() -> None:
     ap.add_argument("--step", type=float, default=0.005)
     ap.add_argument("--fall-height", type=float, default=0.5, help="m: a hop whose COM went lower fell")
     ap.add_argument("--quarter", action="store_true", help="the quarter turn (turn_first) and the jump after it")
+    ap.add_argument("--way", default="sideways", help="--quarter: the sideways row whose jump follows the turn")
     ap.add_argument("--lines", action="store_true", help="the stored hops and the jumps after them (turn_lines)")
     ap.add_argument("--max-heading", type=float, default=40.0, help="deg: --lines runs the hops turned at most this far")
     ap.add_argument("--write", action="store_true", help="store the map in the character's commanded table")
@@ -95,7 +101,14 @@ def write_lines(character: str, key: str, rows: list[dict], columns, what: str) 
 
 def quarter(args) -> None:
     """--quarter: quarter_line for each scale of the grid, both sides; the rows whose hops stood are kept (merged
-    with the stored ones by scale)."""
+    with the stored ones by scale); --way a sideways row: the stored quarter turns with that row's jump."""
+    if args.way != "sideways":      # a row's own map: the stored quarter turns (their hops stood) with its jump
+        scales = read("jump_commanded", args.character)["quarter_lines"]["turn_first"]
+        rows = measured_lines(scales, lambda scale: quarter_line(args.character, float(scale), args.way),
+                              lambda scale: f"turn_first {scale:+.4f}", lambda row: "stood" if row["stood"] else "fell")
+        if args.write:
+            write_lines(args.character, f"{args.way}_lines", rows, QUARTER_COLUMNS, f"quarter turns with {args.way}")
+        return
     grid = np.round(np.arange(args.low, args.high + 1e-9, args.step), 4)
     rows = measured_lines(np.concatenate([-grid[::-1], grid]), lambda scale: quarter_line(args.character, float(scale)),
                           lambda scale: f"turn_first {scale:+.4f}", lambda row: "stood" if row["stood"] else "fell")

@@ -67,8 +67,8 @@ from ..character.spec import load_character
 from ..control.leap import LEAP_SETTINGS
 from ..errors import ParameterError
 from ..skills.jump_to_target.commanded import (TURNED_WAYS, commanded_settings, commanded_way, line_offset,
-                                               planner_constants, table, turn_for_heading, turn_for_point, turned_settings,
-                                               way_body)
+                                               planner_constants, quarter_lines_of, table, turn_for_heading, turn_for_point,
+                                               turned_settings, way_body)
 from .land import candidates, foot_step
 from .trials import Trials
 
@@ -181,7 +181,7 @@ def plan_turned(character: str, target, air_time: float, trial, budget: int, jud
     aims, reached, headings, bearings, air_aims, flown = [distance], [], [c.turn_gain * bearing], [], [float(air_time)], []
     # the aim stays in its range and its flight target in the leap's (a quarter turn's aim is all target_y)
     top = min(c.aim_range[1], LEAP_SETTINGS.by_name["flight_target_y"].maximum / max(abs(math.sin(bearing)), 1e-3))
-    lines = "quarter_lines" if way.startswith("sideways") else ("turn_lines" if "turn_lines" in body else None)
+    lines = quarter_lines_of(body, way) if way.startswith("sideways") else ("turn_lines" if "turn_lines" in body else None)
     if lines == "turn_lines" or way.startswith("sideways_"):    # a long row after the turn: each turn's line as flown
         return steer_by_lines(character, (x, y), air_time, trials, bound, judge, body, c, way, top, lines)
     shift = 0.0         # by the lines: the landings' misses to the side so far (m, along ``side``)

@@ -20,11 +20,13 @@ from ..control.measure import yaw_of
 from ..control.turn import jump_start, turn_duration
 from ..simulate import RunRequest, run
 from ..skills.jump_to_target.behaviour import leap_params, scene_for
-from ..skills.jump_to_target.commanded import commanded_settings, table, turned_settings
+from ..skills.jump_to_target.commanded import commanded_settings, table, turned_settings, way_body
 
 MAP_TARGET, MAP_AIR_TIME, MAP_WINDUP = (1.0, 0.0, 0.0, 0.0), 0.45, 1.25   # definition: any jump (the hop is the same)
 MAP_FALL_HEIGHT = 0.5                   # m: definition: hops whose COM went lower fell (tools/turn_headings.py's default)
 SIDE_TARGET, SIDE_AIR_TIME = 1.15, 0.44  # definition: the quarter map's jump, in the middle of the sideways region
+# definition: a sideways row's own quarter map's jump (quarter_line's ``way``), in the middle of its region
+SIDE_JUMPS = {"sideways": (SIDE_TARGET, SIDE_AIR_TIME), "sideways_long_short": (1.3, 0.5)}
 LINE_DISTANCES, LINE_AIR_TIME = (0.85, 1.15), 0.44   # definition: the hop line map's two jumps, near and far in the turned region
 
 
@@ -35,15 +37,18 @@ def hop_heading(character: str, angle: float) -> tuple[float, float, bool]:
     return hop_stance(character, angle)[:3]
 
 
-def quarter_line(character: str, scale: float) -> dict:
+def quarter_line(character: str, scale: float, way: str = "sideways") -> dict:
     """The quarter turn of ``turn_first`` ``scale`` (its two hops) and the commanded jump after it, measured:
     the hops' heading, the middle of the feet when the leap's crouch begins (``feet_x``, ``feet_y``) and where
-    a commanded jump straight to that side (SIDE_TARGET m, SIDE_AIR_TIME s) landed, its line's direction from
-    the feet (``line`` rad) and whether it ended balanced (``stood``); None where the hops fell."""
+    a commanded jump straight to that side (SIDE_TARGET m, SIDE_AIR_TIME s; ``way`` a sideways row's: that row's
+    jump, SIDE_JUMPS) landed, its line's direction from the feet (``line`` rad) and whether it ended balanced
+    (``stood``); None where the hops fell."""
     heading, lowest, begun, feet = hop_stance(character, scale, "turn_first")
     if not begun or lowest < MAP_FALL_HEIGHT:
         return None
-    landing, stood = jump_after(character, "turn_first", scale, (0.0, -math.copysign(SIDE_TARGET, scale)), SIDE_AIR_TIME)   # + turns right
+    distance, air_time = SIDE_JUMPS[way]
+    landing, stood = jump_after(character, "turn_first", scale, (0.0, -math.copysign(distance, scale)), air_time,
+                                way)   # + turns right
     return {"turn_first": scale, "heading": heading, "feet_x": feet[0], "feet_y": feet[1],
             "line": math.atan2(landing[1] - feet[1], landing[0] - feet[0]), "stood": stood}
 
@@ -66,15 +71,17 @@ def hop_line(character: str, angle: float) -> dict:
             "stood": float(np.mean([stood for _, stood in jumps]))}
 
 
-def jump_after(character: str, setting: str, turn: float, point, air_time: float) -> tuple:
+def jump_after(character: str, setting: str, turn: float, point, air_time: float, way: str | None = None) -> tuple:
     """A commanded jump aimed at ``point`` (x, y m from the start's feet) in ``air_time`` s after the turn
-    ``setting`` (``turn_angle``: one hop, ``turn_first``: the quarter turn) ``turn``: (where the feet's middle
-    landed (x, y m), 1.0 if it ended balanced having flown (more than half the air time) else 0.0)."""
+    ``setting`` (``turn_angle``: one hop, ``turn_first``: the quarter turn) ``turn`` (``way``: the row a sideways way
+    flies, way_body; none: the table's own): (where the feet's middle landed (x, y m), 1.0 if it ended balanced having
+    flown (more than half the air time) else 0.0)."""
     from .jump import JumpTrial      # the trial's measure; jump.py plans with this module's map
     target = (float(point[0]), float(point[1]), 0.0, 0.0)
+    way = way or ("sideways" if setting == "turn_first" else "turned")
     _, measured = JumpTrial(character, target, air_time, MAP_WINDUP, "human")(
-        turned_settings(table(character), air_time, math.hypot(*target[:2]), math.atan2(target[1], target[0]), turn,
-                        "sideways" if setting == "turn_first" else "turned"))
+        turned_settings(way_body(table(character), way), air_time, math.hypot(*target[:2]),
+                        math.atan2(target[1], target[0]), turn, way))
     return measured["landing"], float(measured["outcome"] in ("success", "stepped") and measured["air_time"] > 0.5 * air_time)
 
 

@@ -3165,6 +3165,43 @@ than 1.3 m and in the mid deep row nearer than 1.3 m (slow). Still refused: 1.0-
 beyond 0.68 s (after the quarter turn his rows' deepest crouches fly ~0.64-0.68 s), and the far short row's left jumps
 at 1.36-1.6 m in 0.4-0.5 s (not drawn again this session).
 
+**Her right jumps at shorter air times: the long row's own quarter map (issue 29, thirty-fifth session, 2026-12-07): the
+woman's `sideways_long_short_region` both sides, her share of issue 29's left and right jumps 73.2 % -> 91.5 %.** (The same
+4000 draws.) Why the right side missed (traced trial by trial, every planner trial printed, the region opened to the right
+in a scratch table): (0.019, -1.072) m in 0.452 s - its lines chose the turns 1.101, 1.021 and 1.103 (their short row's
+jump had stood: `quarter_lines`), and after them the long row fell every time (6 jumps, 1.103 four times); after the
+turn 1.199 it stood 6 of 7 but landed 8.7 cm off at best; (0.008, -1.411) m in 0.539 s - the turn 1.101 landed 1-7 cm
+from the target and fell at all eight foot placements and both leads (11 jumps), the nearest balanced jump after
+another turn 12 cm off.
+Its mirror to the left, (0.019, 1.072) m in 0.452 s, landed in 3 jumps. So the body is not the asymmetry: the quarter map
+is. `quarter_lines` was measured with the short row's jump (1.15 m in 0.44 s) after each turn; after some turns that
+jump stands and the long row's falls, and to the right the planner's lines kept leading to them (1.0212, 1.1012 and
+1.1025: stood in `quarter_lines`, fell in the map below). Kept: a sideways row may have its own quarter map,
+`sideways_<row>_lines` (the columns of `quarter_lines`; `commanded.quarter_lines_of`, read by `plan_turned`), measured
+with that row's jump after each turn (`planning/turn_map.py quarter_line(..., way)`, the row's jump `SIDE_JUMPS`: 1.3 m in
+0.5 s, the middle of the region): `tools/turn_headings.py --character woman --quarter --way sideways_long_short --write`
+(~16 minutes, the 238 stored quarter turns): 116 whose jump stood (43 of the left turns, 73 of the right; with the short
+row's jump 38 / 68, both only 23 / 45 - one jump each: whether a turn's jump stands depends on the jump after it).
+The long row at shorter air times steers by it, every other sideways row by `quarter_lines` as before (their plans are the
+same jumps). Drawn as the sideways rows before (the scratch script, the side fixed, each run by
+`random_requests.evaluate`, budget 24; within 5 cm and 0.05 s and balanced), 1.0-1.6 m in 0.44-0.55 s: to the right
+fresh seeds 2913 **11 / 12** (the miss (1.224 m, 0.517 s) 5.3 cm off, 5 cm of it forward, after 24 jumps) and 2915
+**11 / 12** (the miss (1.549 m, 0.44 s) 7 cm forward, flown 0.04 s long, after 14 jumps), to the left fresh seed 2917
+**11 / 12** (the miss (1.578 m, 0.452 s) fell) - 33 / 36, a median of ~20 s to a result; after the region was chosen, either
+side fresh seed 2921 **11 / 12** (to the right 2 / 3: the miss (1.037 m, 0.446 s) 18 cm long after 14 jumps; to the left 9 / 9)
+and to the right fresh seed 2923 **12 / 12**: **56 / 60 (93 %)**, to the right 36 / 39 (92 %), to the left 20 / 21. The
+misses lie at the shortest air times: below 0.46 s 12 / 15, from 0.46 s 44 / 45 (the long row's shallowest crouch pair
+flies 0.42 s straight ahead, after the quarter turn 0.43-0.5 s).
+(Before it, with `quarter_lines`, the right side 1.2-1.6 m had landed seed 2911 9 / 10; pooled with the earlier draws the
+right side below 0.55 s 13 / 18.) So `sideways_long_short_region` holds both sides (its `side` dropped): distance 1.0-1.6 m,
+bearing 87-90 deg, air_time 0.44-0.55 s. Not offered: 1.2-1.6 m in 0.4-0.44 s (below 0.44 s only the short row's
+1.0-1.2 m): the same row and map drawn there either side, seed 2919 **4 / 8** - three of the four misses at 0.406-0.433 s
+flew 0.46-0.54 s and fell or stepped, one (1.518 m in 0.431 s) did not fly (the long row's shallowest crouch pair is 0.42 s,
+and after the quarter turn it flies ~0.44-0.5 s). The left and right share (4000 draws) is now 100 % of 1.0-1.2 m and of
+0.44-0.7 s each side; the rest, 1.2-1.6 m below 0.44 s, is refused in one line naming the regions.
+Tests: tests/test_jump_region.py replays a seeded row of the map, checks that only this row steers by it, and plans and
+runs the report's first draw to each side in the region (slow).
+
 ![commanded vs achieved landing point](jump_to_target.png)
 
 ![the man's 1.3 m jump to a target, 1.0-2.1 s: crouch, thrust, flight, landing, standing up](jump_to_target_filmstrip.png)

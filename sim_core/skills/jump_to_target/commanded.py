@@ -34,7 +34,9 @@ Fig. 6 with his thrust slowed for his strength, tools/scale_commanded.py and doc
   (optional) replace the row's settings for it (the man's near long row: the landing's arms without their pitch
   feedback, whose deeper landings after the quarter turn fell at every placement, docs/jump_to_target.md);
   a turned region may hold one side only (optional ``side`` [1, 1]: to the left, [-1, -1]: to the right; the target's
-  sign of target_y);
+  sign of target_y); ``sideways_<row>_lines`` (optional, the columns of ``quarter_lines``): the quarter turns measured
+  with that row's own jump after them (planning/turn_map.py quarter_line's ``way``), steering it in place of
+  ``quarter_lines`` (quarter_lines_of: after some turns the row's landing falls where the short row's stood);
 - ``turn_lines`` (optional, with ``turned_region``): the same for the hop's ``turn_angle`` (columns ``turn_angle``,
   ``heading``, ``feet_x``, ``feet_y``, ``line``, ``stood``): each hop of ``turn_headings`` turned up to ~40 deg and two
   commanded jumps along its heading after it (planning/turn_map.py hop_line: ``line`` through the middle of their
@@ -223,8 +225,9 @@ def _rows(body: dict):
                                         if pairs.get("thrust_damping", [None] * (k + 1))[k] is not None else {})}
     for k, angle in enumerate(body.get("turn_headings", {}).get("turn_angle", [])):
         yield f"turn_headings {k}", {"turn_angle": angle}
-    for k, scale in enumerate(body.get("quarter_lines", {}).get("turn_first", [])):
-        yield f"quarter_lines {k}", {"turn_first": scale}
+    for key in (k for k in body if k == "quarter_lines" or (k.startswith("sideways_") and k.endswith("_lines"))):
+        for k, scale in enumerate(body[key].get("turn_first", [])):
+            yield f"{key} {k}", {"turn_first": scale}
     for k, angle in enumerate(body.get("turn_lines", {}).get("turn_angle", [])):
         yield f"turn_lines {k}", {"turn_angle": angle}
     yield from constant_rows(body)
@@ -243,6 +246,17 @@ def turn_for_heading(body: dict, heading: float, avoid=()) -> float:
     return float(pairs["turn_angle"][k])
 
 
+def quarter_lines_of(body: dict, way: str) -> str:
+    """The table's quarter map a sideways ``way`` steers by: its own ``<way>_lines`` where the table has them, else
+    ``quarter_lines`` (the quarter turns measured with the short row's jump after them)."""
+    return f"{way}_lines" if f"{way}_lines" in body else "quarter_lines"
+
+
+def _turn_column(rows: dict) -> str:
+    """A map's turn column: ``turn_first`` (a quarter map) or ``turn_angle`` (the hop's ``turn_lines``)."""
+    return "turn_first" if "turn_first" in rows else "turn_angle"
+
+
 def turn_for_point(body: dict, point, avoid=(), lines: str = "quarter_lines", errors: dict | None = None,
                    error: float = 0.0) -> float:
     """The turn of the table's ``lines`` (``quarter_lines``: the quarter turn's ``turn_first``; ``turn_lines``: the
@@ -253,7 +267,7 @@ def turn_for_point(body: dict, point, avoid=(), lines: str = "quarter_lines", er
     ``error`` to the left of the measured one (none: the lines as measured)."""
     rows = body[lines]
     best, chosen = math.inf, None
-    for turn in rows["turn_first" if lines == "quarter_lines" else "turn_angle"]:
+    for turn in rows[_turn_column(rows)]:
         along, off, stood = line_offset(body, turn, point, lines)
         miss = off - (errors or {}).get(float(turn), error)
         if stood > 0.5 and turn not in avoid and along > 0.0 and abs(miss) < best:
@@ -265,7 +279,7 @@ def line_offset(body: dict, turn: float, point, lines: str = "turn_lines") -> tu
     """Where ``point`` (x, y m) lies from the measured line of ``turn`` in the table's ``lines`` (turn_for_point):
     (along it from the feet the turn left, to its left, m) and the share of its measured jumps that stood."""
     rows = body[lines]
-    k = list(rows["turn_first" if lines == "quarter_lines" else "turn_angle"]).index(turn)
+    k = list(rows[_turn_column(rows)]).index(turn)
     dx, dy = float(point[0]) - rows["feet_x"][k], float(point[1]) - rows["feet_y"][k]
     line = rows["line"][k]
     return (dx * math.cos(line) + dy * math.sin(line), -dx * math.sin(line) + dy * math.cos(line), rows["stood"][k])
