@@ -261,7 +261,8 @@ def test_a_target_down_from_a_box_is_offered_commanded_where_its_flat_equivalent
     assert commanded_way("man", (1.2, 0.0, -0.35), 0.6) == "down"       # T0 0.48 s, flat-ground landing 0.96 m
     assert commanded_way("man", (1.2, 0.0, -0.45), 0.6) == "down"       # from 0.4 m far targets: the landing for a drop
     assert commanded_way("man", (1.0, 0.0, -0.45), 0.6) == "down"       # ... and near ones (high_down_region)
-    assert commanded_way("man", (1.65, 0.0, -0.7), 0.68) is None        # beyond its 1.6 m (flat-ground landing 1.14 m)
+    assert commanded_way("man", (1.65, 0.0, -0.7), 0.645) is None       # beyond its 1.6 m (T0 0.42 s, flat-ground landing 1.08 m)
+    assert commanded_way("man", (1.65, 0.0, -0.7), 0.68) == "long_down"  # beyond it at T0 0.47 s, 2.43 m/s: the long row's second box
 
 
 def test_the_man_down_from_a_higher_box_is_offered_near_and_refused_far_in_one_line():
@@ -272,10 +273,11 @@ def test_the_man_down_from_a_higher_box_is_offered_near_and_refused_far_in_one_l
     from sim_core.skills.jump_to_target.commanded import commanded_way
     assert commanded_way("man", (1.05, 0.0, -0.7), 0.68) == "down"      # T0 0.47 s, flat-ground landing 0.73 m
     assert commanded_way("man", (1.55, 0.0, -0.6), 0.66) == "down"      # T0 0.47 s, flat-ground landing 1.1 m
-    assert commanded_way("man", (1.65, 0.0, -0.6), 0.66) is None        # 5 cm beyond the region's 1.6 m (flat 1.19 m)
+    assert commanded_way("man", (1.65, 0.0, -0.6), 0.62) is None        # 5 cm beyond the region's 1.6 m (T0 0.42 s, flat 1.12 m)
+    assert commanded_way("man", (1.65, 0.0, -0.6), 0.66) == "long_down"  # T0 0.47 s at 2.5 m/s: the long row's second box
     assert commanded_way("man", (1.05, 0.0, -0.76), 0.68) is None       # higher than issue 29's boxes
     assert commanded_way("man", (1.0, 0.0, -0.45), 0.64) is None        # T0 0.497 s: above 0.48 s, flown short
-    text = region_refusal("man", (1.65, 0.0, -0.6), 0.66)
+    text = region_refusal("man", (1.65, 0.0, -0.6), 0.62)
     assert text and "\n" not in text
     assert "down from a box 0.4-0.75 m high at target_x 0.5-1.6 m where the same lift-off on flat ground" in text
 
@@ -320,7 +322,8 @@ def test_a_target_down_from_a_box_with_a_low_lift_off_is_offered_by_the_shallow_
     assert commanded_way("woman", (1.5, 0.0, -0.65), 0.55) is None                # 2.73 m/s: fell forward on the target
     assert commanded_way("man", (1.4, 0.0, -0.35), 0.5) == "low_down"             # T0 0.36 s
     assert commanded_way("man", (1.6, 0.0, -0.35), 0.5) == "far_short_down"       # beyond 1.45 m the aim fell short: at
-    assert commanded_way("man", (1.55, 0.0, -0.3), 0.56) is None                  # 3.2 m/s the far short row's, 2.77 m/s none
+    assert commanded_way("man", (1.55, 0.0, -0.3), 0.54) is None                  # 3.2 m/s the far short row's, 2.87 m/s none
+    assert commanded_way("man", (1.55, 0.0, -0.3), 0.56) == "long_down"           # (T0 0.43 s); at T0 0.45 s the long row's second box
     assert commanded_way("man", (0.9, 0.0, -0.6), 0.55) == "low_down"             # T0 0.33 s from a higher box
     assert commanded_way("man", (0.55, 0.0, -0.6), 0.55) == "low_down"            # near a higher box: the landing for a drop
     assert commanded_way("man", (0.45, 0.0, -0.6), 0.55) is None                  # nearer than 0.5 m: not offered
