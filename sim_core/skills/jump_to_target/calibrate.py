@@ -2918,6 +2918,36 @@ a forward speed of 2.3-3.3 m/s (target_x / air_time) where the lift-off would fl
 row's lift-off, its own forward speed) ..."). Tests: tests/test_jump_region.py checks the row's ways, settings and
 refusal (no simulation) and plans and runs the report's first box draw in it (slow). Not done (of his down targets, seed 29): his far
 targets at T0 0.47-0.49 s (1.5 %: aims 5-9 cm off), slower than 2.3 m/s (1.5 %: overshoot), T0 above 0.6 s (0.2 %).
+**The long row down from a box nearer its shallowest crouch: the man's far targets at T0 0.45-0.49 s (issue 29, 2026-12-07):
+his box targets 44.8 % -> 45.7 % (down 67.7 % -> 69.5 %; seed 29, `random_requests.box_region_share`).** Of his down
+targets refused (seed 29's 9,967 down draws, a scratch map by T0 and x / T) 18 % lay 1.4 m or further ahead; between
+the lean push's second box, the far short row's and the long row's, T0 0.3-0.49 s at 2.3-2.9 m/s held ~7 % of all (T0
+0.45-0.49 s at 2.4-3.0 m/s ~2 %, T0 0.3-0.45 s at 2.6-2.9 m/s ~2 %, from boxes above 0.6 m at 2.2-2.6 m/s ~1 %). The
+neighbouring rows' bounds extended first, each drawn alone as before (a scratch script drawing
+`random_requests.box_target_draw` until `commanded_way` with a scratch table gives the row and `region.mode`
+"commanded", each run by `random_requests.evaluate`, budget 24; within 5 cm and 0.05 s and balanced):
+- `long_down_regions` from T0 0.45 s (the far long row; below its shallowest pair's 0.55 s its 0.6 m crouch held, the
+  air time's secant moving it), 2.3-3.3 m/s, 1.4-1.9 m, drawn below T0 0.49 s: seeds 5201 **10 / 10**, 5202 **11 / 12**,
+  5203 **9 / 12** - the flights run long as T0 falls (+0.04-0.05 s at T0 0.45-0.46 s), and from 3.0 m/s 6 / 8 (the misses
+  flown 0.052-0.055 s long); below 2.9 m/s 22 / 24 (the misses 5.3 and 8.7 cm off at T0 0.451-0.461 s). Kept as a
+  second box of `long_down_regions`: heights **0.25-0.75 m**, target_x **1.4-1.9 m**, T0 **0.45-0.49 s**, target_speed
+  **2.3-2.9 m/s** (the far short row's from 2.9 m/s): fresh seeds 5204 **12 / 12**, 5205 **11 / 12** (the miss (1.661
+  m, a 0.321 m box, 0.582 s: T0 0.470 s, 2.85 m/s) flown 0.053 s long); inside it over 5201-5205 **45 / 48**.
+- the same row lower, T0 0.4-0.45 s at 2.3-2.9 m/s: seed 5206 **7 / 10** (the three misses flown 0.051-0.056 s long or
+  5.8 cm off; every hit 0.013-0.049 s long): not offered.
+- the lean push's first box to T0 0.35 s (1.55-3.6 m/s), drawn from T0 0.3 s: seed 5211 **8 / 10** (a miss at 3.23 m/s
+  7.3 cm off after 20 trials, one at 2.51 m/s flown 0.099 s long): not offered.
+- faster than 3.6 m/s, the lean push's first box (T0 0.1-0.3 s) to 4.0 m/s: seed 5221 **6 / 8** (both misses at
+  1.88-1.89 m: 22 cm short, 6.7 cm), then a third box to target_x 1.8 m: seeds 5222 **7 / 10** (5.6 cm off flown 0.066 s
+  short, 5.5 cm, and 12.5 cm short at 1.751 m from a 0.708 m box), 5223 **10 / 10**: inside it over 5221-5223 **23 /
+  26** (88 %): not offered.
+Of seed 29's down draws the new box offers 185, refused before; every one offered before keeps its way (the box is
+checked after every other way down). A target outside is refused in one line (`commanded_limit`: "... and down from a
+box 0.25-0.75 m high at target_x 1.4-1.9 m at a forward speed of 2.3-2.9 m/s (target_x / air_time) where the lift-off
+would fly 0.45-0.49 s on flat ground (the long row's lift-off, its own forward speed) ..."). Tests:
+tests/test_jump_region.py checks the box's ways and refusal (no simulation) and plans and runs the report's first box
+draw in it (slow). Not done: T0 0.3-0.45 s at 2.6-2.9 m/s (the long row flies long there, the far short row overshoots,
+the push's landings fell), T0 0.47-0.49 s faster than 2.9 m/s, faster than 3.6 m/s (the push: 88 %).
 **The woman down from a box with the lean push: T0 0.1-0.28 s offered (issue 29, thirty-fourth session, 2026-12-07): her
 box targets 33.0 % -> 36.6 % (down 50.5 % -> 57.8 %; seed 29, `random_requests.box_region_share`).** Of her down targets
 (a scratch map of seed 29's 9,967 down draws) 21.4 % asked T0 below 0.25 s, none offered: T0 0.2-0.25 s 8.6 %, 0.1-0.2 s
