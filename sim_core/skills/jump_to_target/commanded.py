@@ -36,7 +36,7 @@ Fig. 6 with his thrust slowed for his strength, tools/scale_commanded.py and doc
   a turned region may hold one side only (optional ``side`` [1, 1]: to the left, [-1, -1]: to the right; the target's
   sign of target_y);
 - ``turn_lines`` (optional, with ``turned_region``): the same for the hop's ``turn_angle`` (columns ``turn_angle``,
-  ``heading``, ``feet_x``, ``feet_y``, ``line``, ``stood``): each hop of ``turn_headings`` turned up to ~40 deg and two
+  ``heading``, ``feet_x``, ``feet_y``, ``line``, ``stood``): each hop of ``turn_headings`` turned up to ~40 deg (the woman's: ~55 deg) and two
   commanded jumps along its heading after it (planning/turn_map.py hop_line: ``line`` through the middle of their
   landings, ``stood`` the share balanced); where it is, a turned plan flies the hop whose line passes nearest the
   target (turn_for_point), not the one whose heading is nearest its bearing;
