@@ -3232,6 +3232,35 @@ and after the quarter turn it flies ~0.44-0.5 s). The left and right share (4000
 Tests: tests/test_jump_region.py replays a seeded row of the map, checks that only this row steers by it, and plans and
 runs the report's first draw to each side in the region (slow).
 
+**Her wide near targets: her hops' lines measured to 55 deg and her turned long row to 40 deg (issue 29, thirty-fifth
+session, 2026-12-07): her share of issue 29's box 82.4 % -> 84.7 %.** The woman's biggest hole was near and wide (x
+0.5-1.1 m, |y| 0.3-0.6 m: bearings 0.45-0.88 rad). What limited the bearing was not the turn's map (`turn_headings`
+reaches 90 deg) nor the landing but the lines she chooses her hop by: `turn_lines` held only the hops turned at most 40
+deg, and the lines of those whose two jumps stood end at +38 / -35 deg, so a target beyond ~35 deg was flown along the
+widest line and landed there (the twenty-first session's 2 / 10 beyond 34 deg, the landings' bearings ending at 32-35
+deg). The 77 hops of her heading map turned 40-55 deg were run with `hop_line` (the two commanded jumps after each, as
+`tools/turn_headings.py --character woman --lines --max-heading 55` runs them; ~8 min, merged into the stored rows, which
+are the same to the last digit): 20 of them with both jumps balanced, their lines -48 ... -36 and +38 ... +48 deg; the
+larger hops' jumps mostly fell (lines of -146 ... +166 deg, stood 0 or 0.5: not chosen). Measured with her turned long row
+(0.52-0.7 s, the hop then the long row, unchanged) on scratch draws uniform in distance 0.5-1.1 m, bearing and air time,
+either side, each run by `random_requests.evaluate` (budget 24; within 5 cm and 0.05 s and balanced):
+- bearing 0.6-0.8 rad (34-46 deg), seed 1: **7 / 12** - every draw to 0.697 rad hit (7 / 7), every one from 0.71 rad
+  missed (5 / 5: 5.7, 6.8 and 7.3 cm off after the plan's jumps, one fell, one flew 0.29 s): a target from the hop's feet
+  (carried 0.1-0.19 m forward) lies wider than from the start, past the widest lines that stood (48 deg);
+- so the row to 0.7 rad (40 deg): fresh seed 2, 0.6-0.7 rad: **15 / 15** (1-15 jumps, 1.3-20 s each); the row's old
+  bearings with the new lines (a target at 0.45-0.6 rad may now choose one), seeds 3 and 4: **9 / 10** and **9 / 10** - both
+  misses chose a new hop first ((0.705, -0.399) m in 0.626 s: 12 cm off after 15 jumps; (0.629, +0.330) m in 0.614 s: 6.6
+  cm off after 24), and both landed with the table before this session (the old lines: 4.6 and 3.0 cm off, 4 and 3
+  jumps). Pooled over the row as kept (seeds 1 to 0.7 rad, 2, 3, 4): **40 / 42 (95 %)**. A new hop's feet land 0.05-0.15 m
+  aside, so its line can pass nearest a target well inside the old bearings: the wide rows used only beyond the old
+  lines' reach would keep those two, not done this session.
+Kept: her `turned_long_region` 0.5-1.6 m, bearing 0-0.7 rad (40 deg; was 0.6), 0.52-0.7 s, and `turn_lines` to 55 deg
+hops (308 rows, 83 that stood). Beyond 40 deg refused in one line ("turned first with long air times for a distance of
+0.5-1.6 m at a bearing of 0-40 deg ..."). Test: tests/test_jump_region.py plans and runs three seeded draws of the row
+beyond 0.6 rad (slow). Her shorter air times' turned rows (`turned_region` 0.4-0.48 s and `turned_long_short_region`
+0.42-0.52 s, 0-26 deg) and the man's rows (all to 0.6 rad; his plan steers by his heading map, which reaches 75 deg
+within 2 deg) were not measured wider this session; his share stays 85.7 %.
+
 ![commanded vs achieved landing point](jump_to_target.png)
 
 ![the man's 1.3 m jump to a target, 1.0-2.1 s: crouch, thrust, flight, landing, standing up](jump_to_target_filmstrip.png)

@@ -38,7 +38,7 @@ Fig. 6 with his thrust slowed for his strength, tools/scale_commanded.py and doc
   with that row's own jump after them (planning/turn_map.py quarter_line's ``way``), steering it in place of
   ``quarter_lines`` (quarter_lines_of: after some turns the row's landing falls where the short row's stood);
 - ``turn_lines`` (optional, with ``turned_region``): the same for the hop's ``turn_angle`` (columns ``turn_angle``,
-  ``heading``, ``feet_x``, ``feet_y``, ``line``, ``stood``): each hop of ``turn_headings`` turned up to ~40 deg and two
+  ``heading``, ``feet_x``, ``feet_y``, ``line``, ``stood``): each hop of ``turn_headings`` turned up to ~40 deg (the woman's: ~55 deg) and two
   commanded jumps along its heading after it (planning/turn_map.py hop_line: ``line`` through the middle of their
   landings, ``stood`` the share balanced); where it is, a turned plan flies the hop whose line passes nearest the
   target (turn_for_point), not the one whose heading is nearest its bearing;
