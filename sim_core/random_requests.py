@@ -487,7 +487,8 @@ def main(argv=None) -> int:
                "and the turn, then the foot placements). " if args.turned else "")
             + ("Sideways targets (--sideways) are drawn straight to the side (target_x 0), left or right, the distance "
                "and air time uniform in the sideways commanded region of each character that has one (the table's "
-               "sideways_region and sideways_<row>_region: the woman's short and long rows (the long row's shorter air times steered by its own quarter map), the man's near and far short rows and near, mid, mid deep and deep long rows): "
+               "sideways_region and each sideways_<row>_region it holds, a row steering by its own quarter map where the table has "
+               "sideways_<row>_lines): "
                "the jump turns a quarter first by two hops (the leap's turn_first, the one whose measured jump's line "
                "passes nearest the target) and flies the commanded take-off or the row forward "
                "(sim_core.planning.commanded.plan_turned). " if args.sideways else "")
