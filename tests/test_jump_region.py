@@ -368,10 +368,46 @@ def test_the_woman_down_from_a_box_between_her_straight_row_and_her_long_row_is_
     assert commanded_way("woman", (0.8, 0.0, -0.4), 0.63) == "low_down"           # T0 0.50 s at 1.27 m/s
     assert commanded_way("woman", (0.52, 0.0, -0.308), 0.608) == "low_down"       # T0 0.505 s at 0.86 m/s: the test's draw
     assert commanded_way("woman", (1.2, 0.0, -0.5), 0.66) is None                 # 1.82 m/s: flown short or fell
-    assert commanded_way("woman", (0.8, 0.0, -0.3), 0.64) is None                 # T0 0.54 s: beyond the damping's pairs
+    assert commanded_way("woman", (0.8, 0.0, -0.3), 0.64) == "low_down"           # T0 0.54 s: the fourth box (the test below)
     text = region_refusal("woman", (1.3, 0.0, -0.45), 0.45)
     assert text and "\n" not in text and "down from a box 0.25-0.75 m high at a forward speed of 0.7-1.6 m/s (target_x / " \
         "air_time) where the lift-off would fly 0.49-0.52 s on flat ground" in text
+
+
+def test_the_woman_down_from_a_box_at_her_long_rows_air_times_is_offered_slowly_by_a_lower_damping_still():
+    """Her fourth low_down box: T0 0.52-0.63 s (issue 29's down targets reach ~0.627 s; her long row down from a box fell
+    on landing) from 0.25-0.75 m boxes at 0.6-1.6 m at 0.7-1.6 m/s, flown by the shallow crouch's deepest crouch (0.45 m)
+    with the thrust's damping lowered further (0.42 at 0.6 s, 0.32 at 0.64 s: on flat ground 0.4 / 0.3 flew 0.595-0.655 /
+    0.645-0.685 s); faster, from ~1.75 m/s, the aims missed or the landings fell, nearer than ~0.55 m she landed long;
+    beyond, refused in one line naming it. No simulation."""
+    from sim_core.skills.jump_to_target.commanded import commanded_settings, commanded_way, table, way_body
+    body = way_body(table("woman"), "low_down")
+    for air_time, damping in ((0.56, 0.5), (0.6, 0.42), (0.64, 0.32)):
+        settings = commanded_settings(body, air_time, 1.0, -0.3)
+        assert settings["crouch_height"] == 0.45 and settings["thrust_damping"] == pytest.approx(damping)
+    assert commanded_way("woman", (1.0, 0.0, -0.25), 0.7) == "low_down"           # T0 0.627 s at 1.43 m/s
+    assert commanded_way("woman", (0.75, 0.0, -0.26), 0.7) == "low_down"          # T0 0.624 s at 1.07 m/s
+    assert commanded_way("woman", (1.15, 0.0, -0.3), 0.7) is None                 # T0 0.613 s at 1.64 m/s: just beyond
+    assert commanded_way("woman", (1.2, 0.0, -0.3), 0.67) is None                 # T0 0.579 s at 1.79 m/s: missed or fell
+    assert commanded_way("woman", (0.58, 0.0, -0.3), 0.66) is None                # T0 0.57 s at 0.58 m: landed long
+    assert commanded_way("woman", (0.52, 0.0, -0.308), 0.608) == "low_down"       # T0 0.505 s: the third box's as before
+    text = region_refusal("woman", (1.15, 0.0, -0.3), 0.7)
+    assert text and "\n" not in text and "down from a box 0.25-0.75 m high at target_x 0.6-1.6 m at a forward speed of " \
+        "0.7-1.6 m/s (target_x / air_time) where the lift-off would fly 0.52-0.63 s on flat ground" in text
+
+
+@pytest.mark.slow
+def test_a_random_target_of_the_woman_down_from_a_box_at_her_long_rows_air_times_lands_balanced():
+    """The first of the report's box draws for the woman (seed SEED) in her fourth low_down box (T0 0.52-0.63 s), planned
+    by the shallow crouch's deepest crouch with the damping lowered and run as a user's request: within 5 cm and 0.05 s
+    and balanced, as its plan was."""
+    box = first_commanded_box_draw("woman", "low_down", lambda values: flat_air_time(values[1], values[2]) > 0.52, count=400)
+    x, z, air_time = box.values
+    assert 0.6 <= x and 0.7 <= x / air_time <= 1.6
+    result, plan = planned_and_run(box)
+    settings = plan["settings"]     # the last aim's crouch and damping (the plan's air time steps either way)
+    assert settings["commanded_takeoff"] == 1.0 and settings["landing_recovery_step"] == 1.0
+    assert_run_as_planned(result, plan)
 
 
 @pytest.mark.slow
@@ -379,7 +415,8 @@ def test_a_random_target_of_the_woman_down_from_a_box_between_her_rows_lands_bal
     """The first of the report's box draws for the woman (seed SEED) in her third low_down box (T0 0.49-0.52 s), planned
     by the shallow crouch's pairs (the deepest crouch, the damping lowered beyond 0.49 s) and run as a user's request:
     within 5 cm and 0.05 s and balanced, as its plan was."""
-    box = first_commanded_box_draw("woman", "low_down", lambda values: flat_air_time(values[1], values[2]) > 0.49, count=400)
+    box = first_commanded_box_draw("woman", "low_down", lambda values: 0.49 < flat_air_time(values[1], values[2]) <= 0.52,
+                                   count=400)
     x, z, air_time = box.values
     assert 0.7 <= x / air_time <= 1.6
     result, plan = planned_and_run(box)
