@@ -3318,7 +3318,13 @@ script drawing uniform in 1.45-1.6 m forward, 0.25-0.6 m aside either side, unti
   every aim fell), 0.6 m lands 1.60-1.67 m in 0.405-0.435 s whatever is aimed (1.5-2.1 m), 3 of 5 fell and 2 stepped. Not
   offered;
 - kept 0.52-0.62 s: fresh seeds 105 **12 / 12** and 109 **11 / 12** ((1.571, +0.344) m in 0.553 s, 6.5 cm off, to the left
-  again); with the tuning seeds' draws inside it **37 / 38 (97 %)**.
+  again); with the tuning seeds' draws inside it **37 / 38 (97 %)**;
+- tried and not kept (the table alone, reverted): the shorter air times from 0.45 s, seed 111 at 0.45-0.52 s 5 / 9 (the four
+  misses at 0.458-0.474 s flown 0.51-0.54 s; with seeds 101 and 107's, 0.48-0.52 s 9 / 11, 82 %); the landing's arms without their pitch
+  feedback (`landing_arm_pitch_gain` 0 in `far_long_settings`, as the man's `turned_long_settings`) for the deeper band:
+  0.62-0.7 s seed 113 **6 / 8** (the misses at 0.684 s 7.4 cm to the left and 0.698 s fell; 0.62-0.67 s 6 / 6), then 0.52-0.67 s
+  seeds 115 **15 / 16** and 117 **9 / 12** (misses at 0.543, 0.644 and 0.647 s, 5.5-7.3 cm off): 30 / 34 (88 %), of them
+  0.62-0.67 s 12 / 15 - so the row stays with her landing as it is and ends at 0.62 s.
 Kept: `turned_far_long_region` **1.6-1.71 m, 0-0.45 rad (26 deg), 0.52-0.62 s**. Outside refused in one line naming it
 ("... turned first with long air times beyond the long row (its own smaller lean push) for a distance of 1.6-1.71 m at a
 bearing of 0-26 deg to either side, air_time 0.52-0.62 s"). Offered share of issue 29's box (`random_requests.region_share
