@@ -184,14 +184,15 @@ def draw_turned(rng, character: str, ways: tuple = ("turned",)) -> tuple:
                          f"{' or '.join(ways)} commanded region outside the region its measured jumps offer")
 
 
-TURNED_LONG_WAYS = ("turned_long", "turned_long_short", "turned_near_long", "turned_deep_long", "turned_far_short",
-                    "turned_near_short", "turned_near_deep_long", "turned_mid_deep_long")   # --turned-long's rows
+TURNED_LONG_WAYS = ("turned_long", "turned_long_short", "turned_near_long", "turned_far_long", "turned_deep_long",
+                    "turned_far_short", "turned_near_short", "turned_near_deep_long", "turned_mid_deep_long")   # --turned-long's rows
 
 
 def draw_turned_long(rng, character: str) -> tuple:
     """draw_turned in the table's turned long air times' regions (``turned_long_region``: the hop, then the long row,
     and ``turned_long_short_region``: the same at shorter air times; ``turned_near_long_region``: the hop, then the near
-    long row; ``turned_deep_long_region``: the hop, then the long row at its deepest crouches; ``turned_far_short_region``
+    long row; ``turned_far_long_region``: the hop, then the far long row (its own smaller lean push);
+    ``turned_deep_long_region``: the hop, then the long row at its deepest crouches; ``turned_far_short_region``
     / ``turned_near_short_region``: the hop, then the long / near long row at its shallowest crouches;
     ``turned_near_deep_long_region`` / ``turned_mid_deep_long_region``: the hop, then the near / mid deep row), uniform
     in issue 29's box where one of them holds it."""

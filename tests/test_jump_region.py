@@ -162,7 +162,9 @@ def test_a_target_outside_both_regions_is_refused_naming_both(monkeypatch):
                          "target_y -0.02-0.02 m, air_time 0.52-0.7 s, and turned first with long air times for a "
                          "distance of 0.5-1.6 m at a bearing of 0-40 deg to either side, air_time 0.52-0.7 s, and turned "
                          "first with the long row at shorter air times for a distance of 0.7-1.6 m at a bearing of 0-26 "
-                         "deg to either side, air_time 0.42-0.52 s")
+                         "deg to either side, air_time 0.42-0.52 s, and turned first with long air times beyond the long "
+                         "row (its own smaller lean push) for a distance of 1.6-1.71 m at a bearing of 0-26 deg to either "
+                         "side, air_time 0.52-0.62 s")
     onto = region_refusal("woman", (0.7, 0.0, 0.6), 0.5)        # onto a box: the flat region and the onto regions
     assert onto.endswith("the commanded take-off is offered on flat ground for target_x 0.5-1.25 m, target_y -0.02-0.02 m, "
                          "air_time 0.4-0.52 s, and onto a box 0.25-0.5 m high at target_x 0.92-1.6 m where the same "
@@ -1588,6 +1590,49 @@ def test_random_targets_turned_wide_near_at_long_air_times_fly_the_hops_lines_be
                and not offered("woman", d.values[:2], d.values[2]) for d in draws)
     plans = turned_long_judged("woman", draws, tmp_path)
     assert len(plans) == TURNED_LONG_TARGETS
+
+
+def test_the_womans_far_long_row_flies_her_long_row_with_its_own_smaller_push_beyond_its_distance():
+    """The woman's turned_far_long_region (docs/jump_to_target.md, "The woman's far long row"): beyond her turned long
+    row's distance (her long row lands at most ~1.5 m at long air times) the hop, then the long row with far_long_settings
+    over it (a smaller lean push) and its own crouch pairs (far_long_body); a target beyond its distance or at shorter air
+    times refused in one line naming it (no simulation)."""
+    from sim_core.control.leap import leap_constants
+    from sim_core.skills.jump_to_target.commanded import commanded_way, far_long_body, long_body, table, way_body
+    body = table("woman")
+    region, long_region = body["turned_far_long_region"], body["turned_long_region"]
+    assert region["distance"][0] == long_region["distance"][1]          # it starts where the turned long row ends
+    settings = far_long_body(body)["settings"]
+    assert settings["lean_push"] == body["far_long_settings"]["lean_push"] < leap_constants("woman").commanded_lean_push
+    assert settings["vertical_thrust"] == long_body(body)["settings"]["vertical_thrust"] == 1.0
+    assert far_long_body(body)["crouch_by_air_time"] == body["far_long_crouch_by_air_time"]
+    assert way_body(body, "turned_far_long") == far_long_body(body)
+    assert commanded_way("woman", (1.55, 0.4), 0.6) == "turned_far_long"       # 1.6 m away, beyond the long row's
+    assert commanded_way("woman", (1.5, 0.3), 0.6) == "turned_long"            # within the long row's distance
+    refusal = region_refusal("woman", (1.6, 0.65), 0.6)                      # 1.73 m away
+    assert "\n" not in refusal and "turned first with long air times beyond the long row (its own smaller lean push) " \
+        f"for a distance of {region['distance'][0]:g}-{region['distance'][1]:g} m" in refusal
+    assert region_refusal("woman", (1.55, 0.4), region["air_time"][0] - 0.03) is not None    # its shorter air times
+
+
+@pytest.mark.slow
+def test_random_far_wide_targets_at_long_air_times_turn_first_and_fly_the_far_long_row(tmp_path):
+    """The woman's turned_far_long_region (docs/jump_to_target.md, "The woman's far long row"): a target to the side
+    1.6-1.71 m away in 0.52-0.7 s, beyond her turned long row's distance and her measured jumps, is planned by
+    plan_turned with far_long_body (the hop, then the long row with its smaller lean push) and run as a user's request;
+    random draws of the report's kind with a fixed seed, judged by TARGETS.md."""
+    import numpy as np
+
+    from sim_core.random_requests import Draw, draw_turned
+    from sim_core.skills.jump_to_target.commanded import commanded_way
+    rng = np.random.default_rng((SEED, 51))
+    draws = [Draw("turned_long", "woman", draw_turned(rng, "woman", ("turned_far_long",)))
+             for _ in range(TURNED_LONG_TARGETS)]
+    assert all(commanded_way("woman", d.values[:2], d.values[2]) == "turned_far_long"
+               and not offered("woman", d.values[:2], d.values[2]) for d in draws)
+    plans = turned_long_judged("woman", draws, tmp_path)
+    assert len(plans) == TURNED_LONG_TARGETS
+    assert all(p["settings"]["lean_push"] == 2.0 for p in plans)
 
 
 def test_the_mans_turned_long_rows_fly_the_long_row_without_the_arms_feedback_and_the_near_row_as_it_is():

@@ -46,7 +46,8 @@ far); in its ``sideways_<row>_region``, the quarter turn and then the row ``turn
 the hop's lines are (steer_by_lines over ``quarter_lines``). A target to the side at a long air time, in its ``turned_long_region``: the same hop and
 aim with the table read by turned_long_body (the long row flown after the hop, with the table's
 ``turned_long_settings`` over it); in its ``turned_near_long_region``, the near long row after the hop
-(near_long_body); in its ``turned_mid_long_region``, the mid long row after the hop (mid_long_body); in its
+(near_long_body); in its ``turned_mid_long_region`` / ``turned_far_long_region``, the mid / far long row after the hop
+(mid_long_body / far_long_body); in its
 ``turned_deep_long_region`` (and straight ahead ``deep_long_region``), the long row at its deepest crouches after the
 hop (deep_long_body); in its ``turned_far_short_region`` / ``turned_near_short_region`` (and straight ahead
 ``far_short_region`` / ``near_short_region``), the long / near long row at its shallowest crouches (short_body).
@@ -169,8 +170,8 @@ def plan_turned(character: str, target, air_time: float, trial, budget: int, jud
                 progress: Callable | None, cancelled: Callable | None, body: dict, c, way: str = "turned") -> dict:
     """plan_commanded for a target to the side (the module's turned plan): turn first, then forward
     (``way`` "sideways": the quarter turn, its map ``quarter_lines``; "turned_long" / "turned_long_short": the hop, then
-    the long row, commanded.turned_long_body; "turned_near_long" / "turned_mid_long": the hop, then the near / mid long row,
-    commanded.near_long_body / mid_long_body; "turned_deep_long": the hop, then the long row at its deepest crouches,
+    the long row, commanded.turned_long_body; "turned_near_long" / "turned_mid_long" / "turned_far_long": the hop, then the near /
+    mid / far long row, commanded.near_long_body / mid_long_body / far_long_body; "turned_deep_long": the hop, then the long row at its deepest crouches,
     commanded.deep_long_body)."""
     body = way_body(body, way)
     x, y = float(target[0]), float(target[1])

@@ -81,6 +81,11 @@ Fig. 6 with his thrust slowed for his strength, tools/scale_commanded.py and doc
   third long row with its own lean push and crouch pairs (mid_long_body: the man's push 5, between the far row's 3 and the
   near row's 10, lands ~1.2-1.5 m); a request in it beyond ``region``'s target_y is planned so (straight ahead the row
   was not offered: docs/jump_to_target.md, "The man's mid long row");
+- ``turned_far_long_region`` (optional, with ``long_settings``, ``far_long_settings``, ``far_long_crouch_by_air_time`` and
+  ``turned_region``): the same keys as ``turned_region``, beyond the turned long row's distance: the hop first, then a long
+  row with its own smaller lean push and crouch pairs (far_long_body: the woman's push 2, her long row's 3 ends at ~1.5 m
+  at long air times, the smaller push leaves faster forward and lands ~1.6-1.75 m); a request in it beyond ``region``'s
+  target_y is planned so (docs/jump_to_target.md, "The woman's far long row");
 - ``low_down_regions`` (optional, with ``low_down_crouch_by_air_time``): boxes with the keys of ``high_down_region``
   (``height``, ``flat_air_time``, ``target_x``) for a jump straight ahead down from a box whose lift-off flies lower
   than ``region``'s air times on flat ground (T0 below them), bounded by the target's own forward distance alone (the
@@ -326,6 +331,12 @@ def mid_long_body(body: dict) -> dict:
     return near_long_body(body, "mid_long")
 
 
+def far_long_body(body: dict) -> dict:
+    """The table as the turned far long air times' plan reads it (``turned_far_long_region``): near_long_body of the far
+    row (``far_long_settings``, ``far_long_crouch_by_air_time``)."""
+    return near_long_body(body, "far_long")
+
+
 def low_down_body(body: dict) -> dict:
     """The table as a low lift-off's plan down from a box reads it (``low_down_regions``): its
     ``low_down_crouch_by_air_time`` as the crouch pairs."""
@@ -388,14 +399,14 @@ HIGH_ONTO_ROWS = {**{row: (row, row) for row in STRAIGHT_WAYS}, "tucked": ("tuck
 # the rows a ``<row>_high_onto_region`` may fly: the way whose table flies it (way_body) and the row whose flat region its
 # flat equivalent lands in ("tucked": tucked_onto_body, the long row flying with the arms back and the tuck;
 # "shallow_long": the long row again, a second box of it over its own crouch pairs)
-TURNED_WAYS = ("turned", "turned_long", "turned_long_short", "turned_near_long", "turned_mid_long", "turned_deep_long",
-               "turned_far_short", "turned_near_short", "turned_near_deep_long", "turned_mid_deep_long",
+TURNED_WAYS = ("turned", "turned_long", "turned_long_short", "turned_near_long", "turned_mid_long", "turned_far_long",
+               "turned_deep_long", "turned_far_short", "turned_near_short", "turned_near_deep_long", "turned_mid_deep_long",
                *SIDEWAYS_WAYS)      # the ways commanded_way names that turn first (planning.commanded.plan_turned)
 
 
 def way_body(body: dict, way: str) -> dict:
     """The table as the plan of a request that commanded_way (or box_way) sends ``way`` reads it: the row that flies it
-    ("<row>_high_onto": that row with its ``<way>_settings`` and ``<way>_crouch_by_air_time``; long_body, near_long_body, mid_long_body, low_down_body, push_down_body, turned_long_body, deep_long_body, short_body,
+    ("<row>_high_onto": that row with its ``<way>_settings`` and ``<way>_crouch_by_air_time``; long_body, near_long_body, mid_long_body, far_long_body, low_down_body, push_down_body, turned_long_body, deep_long_body, short_body,
     near_deep_long_body, mid_deep_long_body; straight ahead a row the table lacks flies as the table's own settings), else
     the table as it is."""
     if way.endswith("_high_onto") and way.removesuffix("_high_onto") in HIGH_ONTO_ROWS:
@@ -427,6 +438,8 @@ def way_body(body: dict, way: str) -> dict:
         return near_long_body(body)
     if way == "turned_mid_long":
         return mid_long_body(body)
+    if way == "turned_far_long":
+        return far_long_body(body)
     if way == "turned_deep_long":
         return deep_long_body(body, turned=True)
     if way in ("far_short", "near_short", "turned_far_short", "turned_near_short"):
@@ -471,7 +484,8 @@ def commanded_way(character: str, target, air_time: float) -> str | None:
     ``turned_long_region`` (the turn first, then the long row; "turned_long_short" inside its ``turned_long_short_region``),
     "turned_near_long" inside its ``turned_near_long_region``
     (the turn first, then the near long row), "turned_mid_long" inside its ``turned_mid_long_region`` (the turn
-    first, then the mid long row), "turned_deep_long" inside its ``turned_deep_long_region`` (the turn first, then the
+    first, then the mid long row), "turned_far_long" inside its ``turned_far_long_region`` (the turn first, then the far
+    long row), "turned_deep_long" inside its ``turned_deep_long_region`` (the turn first, then the
     long row at its deepest crouches), "far_short" / "near_short" inside its ``far_short_region`` / ``near_short_region``
     and "turned_far_short" / "turned_near_short" inside its ``turned_far_short_region`` / ``turned_near_short_region`` (the
     long / near long row at its shallowest crouches, short_body), "near_deep_long" / "turned_near_deep_long" inside its
@@ -619,6 +633,7 @@ FLAT_REGION_WORDS = (       # commanded_limit's words for each region on flat gr
     ("turned_long_short_region", "turned first with the long row at shorter air times"),
     ("turned_near_long_region", "turned first with long air times nearer"),
     ("turned_mid_long_region", "turned first with long air times in the middle"),
+    ("turned_far_long_region", "turned first with long air times beyond the long row (its own smaller lean push)"),
     ("turned_deep_long_region", "turned first with the longest air times"),
     ("turned_far_short_region", "turned first with short air times far ahead"),
     ("turned_near_short_region", "turned first with short air times nearer"),
