@@ -207,19 +207,19 @@ def turned_long_judged(character: str, draws, store) -> list[dict]:
     return plans
 
 
-def turned_row_planned_and_run(way: str, count: int, store):
-    """``count`` random targets uniform in issue 29's box where the man's turned row ``way`` holds them (the report's
-    draw, random_requests.draw_turned, seed SEED) outside his measured jumps, planned and run as a user's requests:
-    the hop, then the vertical thrust, within the planner's trials, landing within the tolerances and balanced (one
-    miss allowed) in at most 60 s each; as (the draws, the stored plans)."""
+def turned_row_planned_and_run(way: str, count: int, store, character: str = "man", stream: int | None = None):
+    """``count`` random targets uniform in issue 29's box where ``character``'s turned row ``way`` holds them (the
+    report's draw, random_requests.draw_turned, seed SEED, or (SEED, ``stream``)) outside the measured jumps, planned
+    and run as a user's requests: the hop, then the vertical thrust, within the planner's trials, landing within the
+    tolerances and balanced (one miss allowed) in at most 60 s each; as (the draws, the stored plans)."""
     import numpy as np
     from sim_core.random_requests import Draw, draw_turned
     from sim_core.skills.jump_to_target.commanded import commanded_way
-    rng = np.random.default_rng(SEED)
-    draws = [Draw("turned_long", "man", draw_turned(rng, "man", (way,))) for _ in range(count)]
-    assert all(commanded_way("man", d.values[:2], d.values[2]) == way
-               and not offered("man", d.values[:2], d.values[2]) for d in draws)
-    return draws, turned_long_judged("man", draws, store)
+    rng = np.random.default_rng(SEED if stream is None else (SEED, stream))
+    draws = [Draw("turned_long", character, draw_turned(rng, character, (way,))) for _ in range(count)]
+    assert all(commanded_way(character, d.values[:2], d.values[2]) == way
+               and not offered(character, d.values[:2], d.values[2]) for d in draws)
+    return draws, turned_long_judged(character, draws, store)
 
 
 def planned_and_run(draw):
@@ -1530,7 +1530,7 @@ def test_random_lateral_targets_at_long_air_times_turn_first_and_fly_the_long_ro
     assert all(commanded_way(character, d.values[:2], d.values[2]) in ("turned_long", "turned_long_short", "turned_near_long",
                                                                        "turned_deep_long", "turned_far_short",
                                                                        "turned_near_short", "turned_near_deep_long",
-                                                                       "turned_mid_deep_long")
+                                                                       "turned_mid_deep_long", "turned_far_long")
                and not offered(character, d.values[:2], d.values[2]) for d in draws)
     plans = turned_long_judged(character, draws, tmp_path)
     assert len(plans) == TURNED_LONG_TARGETS
@@ -1543,22 +1543,14 @@ def test_random_lateral_targets_at_short_air_times_far_turn_first_and_fly_the_lo
     planned by plan_turned with turned_long_body (the hop, then the long row: the leap's vertical thrust, its shallow
     crouches far ahead) and run as a user's request; random draws of the report's kind with a fixed seed, judged by
     TARGETS.md; a target turned wider than the region at those air times is refused naming it."""
-    import numpy as np
-
-    from sim_core.random_requests import Draw, draw_turned
-    from sim_core.skills.jump_to_target.commanded import commanded_way, table
+    from sim_core.skills.jump_to_target.commanded import table
     region = table("woman")["turned_long_short_region"]
     assert region["air_time"][1] <= table("woman")["turned_long_region"]["air_time"][0]
     d, b = region["distance"][1] - 0.05, region["bearing"][1] + 0.05
     refusal = region_refusal("woman", (d * math.cos(b), d * math.sin(b)), region["air_time"][0] + 0.01)
     assert "\n" not in refusal and "turned first with the long row at shorter air times for a distance of " \
         f"{region['distance'][0]:g}-{region['distance'][1]:g} m" in refusal
-    rng = np.random.default_rng((SEED, 36))
-    draws = [Draw("turned_long", "woman", draw_turned(rng, "woman", ("turned_long_short",)))
-             for _ in range(TURNED_LONG_TARGETS)]
-    assert all(commanded_way("woman", d.values[:2], d.values[2]) == "turned_long_short"
-               and not offered("woman", d.values[:2], d.values[2]) for d in draws)
-    plans = turned_long_judged("woman", draws, tmp_path)
+    _, plans = turned_row_planned_and_run("turned_long_short", TURNED_LONG_TARGETS, tmp_path, "woman", 36)
     assert len(plans) == TURNED_LONG_TARGETS
 
 
@@ -1618,19 +1610,10 @@ def test_the_womans_far_long_row_flies_her_long_row_with_its_own_smaller_push_be
 @pytest.mark.slow
 def test_random_far_wide_targets_at_long_air_times_turn_first_and_fly_the_far_long_row(tmp_path):
     """The woman's turned_far_long_region (docs/jump_to_target.md, "The woman's far long row"): a target to the side
-    1.6-1.71 m away in 0.52-0.7 s, beyond her turned long row's distance and her measured jumps, is planned by
+    1.6-1.71 m away in 0.52-0.62 s, beyond her turned long row's distance and her measured jumps, is planned by
     plan_turned with far_long_body (the hop, then the long row with its smaller lean push) and run as a user's request;
     random draws of the report's kind with a fixed seed, judged by TARGETS.md."""
-    import numpy as np
-
-    from sim_core.random_requests import Draw, draw_turned
-    from sim_core.skills.jump_to_target.commanded import commanded_way
-    rng = np.random.default_rng((SEED, 51))
-    draws = [Draw("turned_long", "woman", draw_turned(rng, "woman", ("turned_far_long",)))
-             for _ in range(TURNED_LONG_TARGETS)]
-    assert all(commanded_way("woman", d.values[:2], d.values[2]) == "turned_far_long"
-               and not offered("woman", d.values[:2], d.values[2]) for d in draws)
-    plans = turned_long_judged("woman", draws, tmp_path)
+    _, plans = turned_row_planned_and_run("turned_far_long", TURNED_LONG_TARGETS, tmp_path, "woman", 51)
     assert len(plans) == TURNED_LONG_TARGETS
     assert all(p["settings"]["lean_push"] == 2.0 for p in plans)
 
