@@ -46,8 +46,9 @@ def test_target_params_are_measured_from_the_middle_of_the_feet():
     ({"air_time": -0.2}, ["air_time=-0.2", "allowed range"]),
     ({"target_x": 2.5, "air_time": 0.1}, ["needs a take-off at", "strongest take-off of man"]),
     ({"target_x": -1.0}, ["target_x=-1", "allowed range"]),
-    ({"target_x": 0.0, "target_y": 1.45, "plan_trials": 0}, ["outside the region", "air_time at 0.00 m forward is offered only in"]),
-    # (to the left 1.45 m at the default air time: his far short row flies it to the right only; 1.1 m is his near short row's)
+    ({"target_x": 0.0, "target_y": 1.65, "plan_trials": 0}, ["outside the region", "air_time at 0.00 m forward is offered only in"]),
+    # (to the left 1.65 m at the default air time: beyond his far short row's 1.6 m, which flies either side since it
+    # steers by its own quarter map; 1.1 m is his near short row's)
     ({"target_x": 1.2, "plan_trials": 120}, ["no stored plan", "python -m sim_core plan jump_to_target "
                                              "--character man --set target_x=1.2"]),     # a run never plans
     ({"target_x": 0.0, "target_y": 0.0}, ["target_x=0", "not back or on the spot"]),

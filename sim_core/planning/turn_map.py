@@ -26,7 +26,8 @@ MAP_TARGET, MAP_AIR_TIME, MAP_WINDUP = (1.0, 0.0, 0.0, 0.0), 0.45, 1.25   # defi
 MAP_FALL_HEIGHT = 0.5                   # m: definition: hops whose COM went lower fell (tools/turn_headings.py's default)
 SIDE_TARGET, SIDE_AIR_TIME = 1.15, 0.44  # definition: the quarter map's jump, in the middle of the sideways region
 # definition: a sideways row's own quarter map's jump (quarter_line's ``way``), in the middle of its region
-SIDE_JUMPS = {"sideways": (SIDE_TARGET, SIDE_AIR_TIME), "sideways_long_short": (1.3, 0.5)}
+SIDE_JUMPS = {"sideways": (SIDE_TARGET, SIDE_AIR_TIME), "sideways_long_short": (1.3, 0.5),
+              "sideways_far_short": (1.48, 0.45)}
 LINE_DISTANCES, LINE_AIR_TIME = (0.85, 1.15), 0.44   # definition: the hop line map's two jumps, near and far in the turned region
 
 

@@ -3273,6 +3273,30 @@ and after the quarter turn it flies ~0.44-0.5 s). The left and right share (4000
 Tests: tests/test_jump_region.py replays a seeded row of the map, checks that only this row steers by it, and plans and
 runs the report's first draw to each side in the region (slow).
 
+**His left jumps at short air times far ahead: the far short row's own quarter map (issue 29, thirty-sixth session,
+2026-12-08): the man's `sideways_far_short_region` both sides, his share of issue 29's left and right jumps 77.1 % ->
+84.2 % (to the left 70.1 -> 84.4 %, to the right 84.0 % as before).** (The same 4000 draws.) The far short row
+(1.36-1.6 m in 0.4-0.5 s) was offered to the right only: steered by `quarter_lines` its fresh left draws landed 18 / 22
+(the misses at 1.5-1.52 m in 0.415-0.421 s 5-7 cm off mostly forward, and at 1.36-1.39 m long). As the woman's right
+jumps above, his quarter map was measured with his short row's jump (1.15 m in 0.44 s) after each turn; measured
+again with the far short row's own jump (1.48 m in 0.45 s, the middle of its region, `SIDE_JUMPS`:
+`tools/turn_headings.py --character man --quarter --way sideways_far_short --write`, ~5 minutes, his 82 stored quarter
+turns): 23 whose jump stood, 12 of the left turns (with the short row's jump 18, only 4 of them the same turns: after
+-1.068, -1.06, -1.056, -1.044 ... the short jump stood and the far one fell) and 11 of the right (20 before), the lines
+89.8-105.1 deg to the left. The row steers by it (`sideways_far_short_lines`, `commanded.quarter_lines_of`), his other
+sideways rows by `quarter_lines` as before. Drawn as his other sideways rows (the scratch script, the side fixed, the
+region opened to the left in the table; each run by `random_requests.evaluate`, budget 24; within 5 cm and 0.05 s and
+balanced), 1.36-1.6 m in 0.4-0.5 s: to the left fresh seeds 2931 **11 / 12** (the miss (1.508 m, 0.482 s): no plan
+in 14 jumps, the nearest balanced 5.2 cm off, 4 cm of it forward) and 2935 **12 / 12**; to the right
+(it steers by the new map too) fresh seed 2933 **12 / 12**: **35 / 36 (97 %)**, to the left 23 / 24, 2-21 jumps each,
+a median of ~12 s to a result.
+Kept: `sideways_far_short_region` 1.36-1.6 m, 87-90 deg, 0.4-0.5 s either side (its `side` dropped) with its own map;
+beyond it refused in one line naming it as before. Tests: tests/test_jump_region.py replays a seeded row of the map,
+checks that only this row of the man's steers by it, and plans and runs the report's first draw to the left in the
+region (slow; its first to the right as before). Still refused (issue 29's left and right jumps): 1.0-1.5 m beyond
+0.645 s and 1.5-1.6 m beyond 0.68 s (after the quarter turn his rows' deepest crouches fly ~0.64-0.68 s; not drawn
+this session).
+
 **Her wide near targets: her hops' lines measured to 55 deg and her turned long row to 40 deg (issue 29, thirty-fifth
 session, 2026-12-07): her share of issue 29's box 82.4 % -> 84.7 %.** The woman's biggest hole was near and wide (x
 0.5-1.1 m, |y| 0.3-0.6 m: bearings 0.45-0.88 rad). What limited the bearing was not the turn's map (`turn_headings`
