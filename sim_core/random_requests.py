@@ -510,7 +510,8 @@ def main(argv=None) -> int:
                "flies the long row forward (plan_turned with turned_long_body; in turned_near_long_region the near long "
                "row, near_long_body; in turned_deep_long_region, the man's, the long row at its deepest crouches, "
                "deep_long_body; in turned_near_deep_long_region, the man's, the near long row at its deepest crouches, "
-               "near_deep_long_body; in turned_mid_deep_long_region, the man's, the mid deep row, mid_deep_long_body). "
+               "near_deep_long_body; in turned_mid_deep_long_region, the man's, the mid deep row, mid_deep_long_body; "
+               "in turned_far_long_region, the woman's, the long row with its own smaller lean push, far_long_body). "
                if args.turned_long else "")
             + ("Mid long air time targets (--mid-long) are drawn uniformly in issue 29's box and drawn again until they lie "
                "in the turned mid long row's region of each character that has one (the table's turned_mid_long_region: "
