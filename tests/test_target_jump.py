@@ -265,22 +265,26 @@ def test_the_spin_hold_takes_the_twist_out_of_the_womans_sideways_take_off():
     assert spins[0] < -4.0 and abs(spins[1]) < 1.5
 
 
-def test_a_sideways_target_beyond_the_region_is_searched_turning_as_the_nearest_plan_does():
-    """A target more to the side than ahead, outside the region of the measured jumps (none of which
-    turns), whose nearest found plan to that side turns first (the woman's 1.0 m left): the planner is
-    not refused, searches from that plan turning as it does (its first trial repeats the plan's jump,
-    the prior's sideways lean not added), and the plan it keeps turns too."""
-    from sim_core.planning.jump import plan_and_store, turned_start
-    from sim_core.skills.jump_to_target.behaviour import check_request
+def test_a_sideways_target_beyond_the_region_is_refused_though_the_nearest_plan_to_that_side_turns_first():
+    """A target more to the side than ahead, outside the region offered, whose nearest found plan to that side
+    turns first (the woman's 1.0 m left): refused before anything runs, naming the region, and nothing stored
+    (issue 29: a request outside the region is refused before simulating - before, such a target was searched from
+    that plan for the whole budget, so what the plan store held decided whether a request was refused). That stored
+    request planned again is searched from its plan turning as it does (its first trial repeats the plan's jump)."""
+    from sim_core.planning.jump import planned, plan_and_store, turned_start
     from sim_core.skills.jump_to_target.behaviour import JumpToTarget
-    request = JumpToTarget.schema.validate({"target_y": 1.2, "air_time": 0.4})
-    with pytest.raises(ParameterError, match="outside the region"):
-        check_request(load_character("woman"), request, "human")
-    start = turned_start("woman", (0.0, 1.2, 0.0, 0.0))
+    request = JumpToTarget.schema.validate({"target_x": 1.0, "target_y": 1.2, "air_time": 0.4})
+    start = turned_start("woman", (1.0, 1.2, 0.0, 0.0))
     stored = _stored("woman", dict(target_x=0.0, target_y=1.0, target_z=0.0, air_time=0.3, windup_time=WINDUP_TIME))
     assert stored is not None and stored["found"] and start == stored["settings"] and start["turn_first"] < 0
+    trials = []
+    with pytest.raises(ParameterError, match="outside the region") as refused:
+        plan_and_store("woman", request, budget=1, progress=lambda done, total, best: trials.append(done))
+    assert "\n" not in str(refused.value) and trials == [] and planned("woman", request) is None
+    again = JumpToTarget.schema.validate({"target_x": 0.0, "target_y": 1.0, "air_time": 0.3,
+                                          "windup_time": WINDUP_TIME})
     first = []
-    plan = plan_and_store("woman", request, budget=1,
+    plan = plan_and_store("woman", again, budget=1,
                           progress=lambda done, total, best: first.append(dict(best)) if done == 1 else None)
     assert first[0]["landing"] == pytest.approx(stored["measured"]["landing"], abs=1e-6)
     assert plan["settings"]["turn_first"] == start["turn_first"]

@@ -368,7 +368,7 @@ def plan_and_store(character: str, params: dict, strength="human", budget: int =
     p = JumpToTarget.schema.validate(params)
     strength = strength_name(strength)
     target = tuple(p[k] for k in ("target_x", "target_y", "target_z", "obstacle_height"))
-    check_request(spec, p, strength, turned_search=turned_start(spec.name, target, strength) is not None)
+    check_request(spec, p, strength)
     plan = plan_jump(spec.name, target, p["air_time"], p["windup_time"], strength, budget, progress=progress,
                      cancelled=cancelled, executor=executor)
     store_user_plan(spec.name, request_of(target, p["air_time"], p["windup_time"], strength), plan)

@@ -241,15 +241,14 @@ def crouch_time(windup_time: float) -> float:
     return max(windup_time - WINDUP_OVERHEAD, MIN_CROUCH_TIME)
 
 
-def check_request(character, p: dict, strength: str, turned_search: bool = False) -> None:
+def check_request(character, p: dict, strength: str) -> None:
     """The refusals of a jump that need no simulation (the box to clear, the direction, the
     take-off speed against the character's strongest, and on flat ground or a box (no obstacle) a
-    target outside the region its measured jumps offer, region.region_refusal, unless a stored plan
-    found it), for the
-    behaviour and for the planner before it searches; ``strength``: "human" or "unlimited"
-    (leap.run_strength); ``turned_search``: the planner searches a sideways target from a stored plan that
-    turns first (planning.jump.turned_start), so the region of the measured jumps, none of which turns, is
-    not its limit."""
+    target outside the region offered, region.region_refusal, unless a stored plan found this very
+    request), for the behaviour and for the planner before it searches; ``strength``: "human" or
+    "unlimited" (leap.run_strength). A target to the side beyond the region is refused too where a
+    stored plan to that side turns first (issue 29: refused before simulating, whatever the plan store
+    holds)."""
     require_calibrated("leap", character.name, "leap")        # a jump to a target takes off as the leap does
     if model(character.name) is None:
         raise ParameterError(
@@ -279,7 +278,7 @@ def check_request(character, p: dict, strength: str, turned_search: bool = False
             f"needs a take-off at {speed:.2f} m/s (path estimate: {velocity[0]:.2f} forward, "
             f"{velocity[2]:.2f} up); the strongest take-off of {character.name} is {capacity:.2f} m/s - "
             f"allow a longer or shorter air time, or a nearer target")
-    if p["obstacle_height"] == 0.0 and strength == "human" and not turned_search:
+    if p["obstacle_height"] == 0.0 and strength == "human":
         plan = stored_plan(character.name, {**{k: float(p[k]) for k in REQUEST_KEYS}, "strength": strength})
         refusal = None if plan and plan["found"] else region_refusal(character.name, target[:3], p["air_time"])
         if refusal:        # on flat ground or a box: only where a measured balanced jump does it (region.py)
@@ -451,8 +450,7 @@ class JumpToTarget(Leap):
         """Refuses what no plan can do, then looks the plan up (planning runs above the loop)."""
         p, name = self.params, self.ctx.character.name
         plan = stored_plan(name, self.request())
-        check_request(self.ctx.character, p, run_strength(self.ctx),      # a turned search's plan: found or not, its numbers
-                      turned_search=plan is not None and bool(turn_of(plan["settings"])))
+        check_request(self.ctx.character, p, run_strength(self.ctx))
         if plan is None:
             raise ParameterError(f"no stored plan for this jump of {name}; plan it first with "
                                  f"'{plan_command(name, p)}' (or run it with 'python -m sim_core "
