@@ -1297,15 +1297,29 @@ def test_a_seeded_sideways_draw_of_the_man_at_short_air_times_is_flown_by_the_qu
     assert_run_as_planned(result, plan)
 
 
+def a_seeded_row_of_its_own_quarter_map_replayed(character: str, way: str) -> None:
+    """One seeded row of the sideways row ``way``'s own quarter map (``<way>_lines``) that stood, measured again by
+    turn_map.quarter_line with that row's jump (the same simulation, the same numbers), and its line steering to its
+    own turn (turn_for_point over that map)."""
+    import random
+    from sim_core.planning.turn_map import quarter_line
+    from sim_core.skills.jump_to_target.commanded import table, turn_for_point
+    body = table(character)
+    rows = body[f"{way}_lines"]
+    k = random.Random(SEED).choice([i for i, stood in enumerate(rows["stood"]) if stood])     # one seeded row
+    row = quarter_line(character, rows["turn_first"][k], way)
+    assert all(abs(row[name] - rows[name][k]) < 1e-4 for name in ("heading", "feet_x", "feet_y", "line", "stood"))
+    ahead = (rows["feet_x"][k] + math.cos(rows["line"][k]), rows["feet_y"][k] + math.sin(rows["line"][k]))
+    assert turn_for_point(body, ahead, lines=f"{way}_lines") == rows["turn_first"][k]
+
+
 def test_the_long_row_at_shorter_air_times_steers_by_its_own_quarter_map():
     """The woman's sideways_long_short_lines: each quarter turn of quarter_lines measured with the long row's own jump at
     shorter air times after it (planning/turn_map.py quarter_line's ``way``; with the short row's jump some turns stood
     whose long row's landing fell at every placement, docs/jump_to_target.md, "Her right jumps at shorter air times"); the
     row steers by them (quarter_lines_of), every other sideways row by quarter_lines; a seeded stored row replayed (the
     same simulation)."""
-    import random
-    from sim_core.planning.turn_map import quarter_line
-    from sim_core.skills.jump_to_target.commanded import quarter_lines_of, table, turn_for_point
+    from sim_core.skills.jump_to_target.commanded import quarter_lines_of, table
     body = table("woman")
     rows = body["sideways_long_short_lines"]
     assert rows["turn_first"] == body["quarter_lines"]["turn_first"]
@@ -1314,11 +1328,7 @@ def test_the_long_row_at_shorter_air_times_steers_by_its_own_quarter_map():
     assert quarter_lines_of(table("man"), "sideways_near_short") == "quarter_lines"
     for side in (-1.0, 1.0):        # turns to either side stood with the row after them
         assert sum(stood for turn, stood in zip(rows["turn_first"], rows["stood"]) if turn * side > 0.0) >= 20
-    k = random.Random(SEED).choice([i for i, stood in enumerate(rows["stood"]) if stood])     # one seeded row
-    row = quarter_line("woman", rows["turn_first"][k], "sideways_long_short")
-    assert all(abs(row[name] - rows[name][k]) < 1e-4 for name in ("heading", "feet_x", "feet_y", "line", "stood"))
-    ahead = (rows["feet_x"][k] + math.cos(rows["line"][k]), rows["feet_y"][k] + math.sin(rows["line"][k]))
-    assert turn_for_point(body, ahead, lines="sideways_long_short_lines") == rows["turn_first"][k]
+    a_seeded_row_of_its_own_quarter_map_replayed("woman", "sideways_long_short")
 
 
 def test_the_mans_far_short_row_steers_by_its_own_quarter_map():
@@ -1326,9 +1336,7 @@ def test_the_mans_far_short_row_steers_by_its_own_quarter_map():
     jump after it (1.48 m in 0.45 s, SIDE_JUMPS; with the short row's jump other turns stood: of his left turns 18 stood
     with it, 12 with this jump, 4 of them the same, docs/jump_to_target.md, "His left jumps at short air times far
     ahead"); only this row of his steers by them; a seeded stored row replayed (the same simulation)."""
-    import random
-    from sim_core.planning.turn_map import quarter_line
-    from sim_core.skills.jump_to_target.commanded import quarter_lines_of, table, turn_for_point
+    from sim_core.skills.jump_to_target.commanded import quarter_lines_of, table
     body = table("man")
     rows = body["sideways_far_short_lines"]
     assert rows["turn_first"] == body["quarter_lines"]["turn_first"]
@@ -1337,11 +1345,7 @@ def test_the_mans_far_short_row_steers_by_its_own_quarter_map():
                for row in ("near_short", "near_long", "mid_long", "mid_deep_long", "deep_long"))
     for side in (-1.0, 1.0):        # turns to either side stood with the row after them
         assert sum(stood for turn, stood in zip(rows["turn_first"], rows["stood"]) if turn * side > 0.0) >= 10
-    k = random.Random(SEED).choice([i for i, stood in enumerate(rows["stood"]) if stood])     # one seeded row
-    row = quarter_line("man", rows["turn_first"][k], "sideways_far_short")
-    assert all(abs(row[name] - rows[name][k]) < 1e-4 for name in ("heading", "feet_x", "feet_y", "line", "stood"))
-    ahead = (rows["feet_x"][k] + math.cos(rows["line"][k]), rows["feet_y"][k] + math.sin(rows["line"][k]))
-    assert turn_for_point(body, ahead, lines="sideways_far_short_lines") == rows["turn_first"][k]
+    a_seeded_row_of_its_own_quarter_map_replayed("man", "sideways_far_short")
 
 
 @pytest.mark.slow
